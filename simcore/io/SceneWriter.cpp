@@ -1,0 +1,261 @@
+#include "simcore/io/SceneIO.h"
+#include "simcore/io/detail/SceneReader.h"
+#include "simcore/io/detail/YamlWriter.h"
+
+#include <yaml-cpp/yaml.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <unistd.h>
+
+namespace throng::sim {
+
+namespace detail {
+void writeSceneSet(YamlWriter& w, const Scene& s);
+void writeSceneTraffic(YamlWriter& w, const Scene& s);
+}  // namespace detail
+
+namespace {
+
+// Below this many placed agents the readable list form is written; above it, the table.
+constexpr std::size_t kAgentTableThreshold = 64;
+
+using detail::num;
+using Writer = detail::YamlWriter;
+
+void writeBrainBody(Writer& w, const BrainGraph& b)
+{
+    YAML::Emitter& o = w.out;
+    w.key("nodes");
+    o << YAML::BeginSeq;
+    for (const BrainNode& n : b.nodes) {
+        o << YAML::Flow << YAML::BeginMap;
+        w.kv("id", std::to_string(n.id));
+        w.kv("type", n.type);
+        if (!n.label.empty())
+            o << YAML::Key << "label" << YAML::Value << YAML::DoubleQuoted << n.label;
+        w.key("position");
+        w.vec2(n.position);
+        if (!n.params.empty()) {
+            w.key("params");
+            o << YAML::Flow << YAML::BeginMap;
+            for (const BrainParam& p : n.params) {
+                o << YAML::Key << p.key << YAML::Value;
+                if (!p.text.empty() || p.numbers.empty())
+                    o << YAML::DoubleQuoted << p.text;
+                else if (p.numbers.size() == 1)
+                    o << num(p.numbers[0]);
+                else {
+                    o << YAML::Flow << YAML::BeginSeq;
+                    for (float v : p.numbers)
+                        o << num(v);
+                    o << YAML::EndSeq;
+                }
+            }
+            o << YAML::EndMap;
+        }
+        o << YAML::EndMap;
+    }
+    o << YAML::EndSeq;
+    w.key("links");
+    o << YAML::BeginSeq;
+    for (const BrainLink& l : b.links) {
+        o << YAML::Flow << YAML::BeginMap;
+        w.key("from");
+        o << YAML::Flow << YAML::BeginSeq << l.fromNode << l.fromPort << YAML::EndSeq;
+        w.key("to");
+        o << YAML::Flow << YAML::BeginSeq << l.toNode << l.toPort << YAML::EndSeq;
+        o << YAML::EndMap;
+    }
+    o << YAML::EndSeq;
+}
+
+void writeAgentTypes(Writer& w, const Scene& s)
+{
+    YAML::Emitter& o = w.out;
+    w.key("agent_types");
+    o << YAML::BeginSeq;
+    for (const AgentType& t : s.agentTypes) {
+        o << YAML::BeginMap;
+        w.kv("name", t.name);
+        w.kv("kind", toString(t.kind));
+        w.kvf("radius", t.radiusM);
+        w.kvf("max_speed", t.maxSpeed);
+        w.kvf("max_force", t.maxForce);
+        w.kvf("mass", t.mass);
+        w.kvf("perception", t.perceptionM);
+        w.kvf("view_angle", t.viewAngleDeg);
+        w.kvOpt("brain", t.brain);
+        w.kvOpt("character", t.character);
+        w.key("variation");
+        o << YAML::BeginMap;
+        if (!t.variation.looks.empty()) {
+            w.key("looks");
+            o << YAML::Flow << t.variation.looks;
+        }
+        if (!t.variation.tints.empty()) {
+            w.key("tints");
+            o << YAML::Flow << YAML::BeginSeq;
+            for (const glm::vec3& c : t.variation.tints)
+                w.vec3(c);
+            o << YAML::EndSeq;
+        }
+        w.key("height");
+        w.vec2(t.variation.heightScale);
+        w.key("speed");
+        w.vec2(t.variation.speedFactor);
+        w.key("phase");
+        w.vec2(t.variation.phaseOffset);
+        o << YAML::EndMap;
+        if (!t.behaviours.empty()) {
+            w.key("behaviours");
+            o << YAML::BeginMap;
+            for (const BehaviourWeight& b : t.behaviours)
+                w.kvf(b.behaviour.c_str(), b.weight);
+            o << YAML::EndMap;
+        }
+        o << YAML::EndMap;
+    }
+    o << YAML::EndSeq;
+}
+
+void writeAgents(Writer& w, const Scene& s)
+{
+    YAML::Emitter& o = w.out;
+    w.key("agents");
+    if (s.agents.size() < kAgentTableThreshold) {
+        o << YAML::BeginSeq;
+        for (const Agent& a : s.agents) {
+            o << YAML::Flow << YAML::BeginMap;
+            w.kv("id", std::to_string(a.id));
+            w.kv("type", a.type);
+            w.key("position");
+            w.vec3(a.position);
+            w.kvf("heading", a.headingDeg);
+            w.kvOpt("goal", a.goal);
+            w.kvOpt("path", a.path);
+            o << YAML::EndMap;
+        }
+        o << YAML::EndSeq;
+        return;
+    }
+    std::string rows;
+    rows.reserve(s.agents.size() * 48);
+    for (const Agent& a : s.agents) {
+        rows += std::to_string(a.id) + ' ' + a.type + ' ' + num(a.position.x) + ' ' + num(a.position.y) + ' ' +
+                num(a.position.z) + ' ' + num(a.headingDeg) + ' ' + (a.goal.empty() ? "-" : a.goal) + ' ' +
+                (a.path.empty() ? "-" : a.path) + '\n';
+    }
+    o << YAML::BeginMap;
+    w.key("columns");
+    o << YAML::Flow << std::vector<std::string>{"id", "type", "x", "y", "z", "heading", "goal", "path"};
+    w.key("rows");
+    o << YAML::Literal << rows;
+    o << YAML::EndMap;
+}
+
+}  // namespace
+
+std::string brainToYaml(const BrainGraph& brain)
+{
+    Writer w;
+    w.out << YAML::BeginMap;
+    w.kv("throng_brain", "1");
+    writeBrainBody(w, brain);
+    w.out << YAML::EndMap;
+    return std::string(w.out.c_str()) + "\n";
+}
+
+std::string sceneToYaml(const Scene& s)
+{
+    Writer w;
+    YAML::Emitter& o = w.out;
+    o << YAML::BeginMap;
+    w.kv("throng", std::to_string(Scene::kFormatVersion));
+    w.key("settings");
+    o << YAML::BeginMap;
+    w.kvf("fps", s.settings.fps);
+    w.kvf("duration", s.settings.durationS);
+    w.kv("seed", std::to_string(s.settings.seed));
+    w.key("bounds");
+    o << YAML::Flow << YAML::BeginMap;
+    w.key("min");
+    w.vec2(s.settings.boundsMin);
+    w.key("max");
+    w.vec2(s.settings.boundsMax);
+    o << YAML::EndMap << YAML::EndMap;
+
+    if (!s.brains.empty()) {
+        w.key("brains");
+        o << YAML::BeginSeq;
+        for (const BrainGraph& b : s.brains) {
+            o << YAML::BeginMap;
+            w.kv("name", b.name);
+            if (!b.file.empty())
+                w.kv("file", b.file);
+            else
+                writeBrainBody(w, b);
+            o << YAML::EndMap;
+        }
+        o << YAML::EndSeq;
+    }
+    writeAgentTypes(w, s);
+    detail::writeSceneSet(w, s);
+    detail::writeSceneTraffic(w, s);
+    writeAgents(w, s);
+    o << YAML::EndMap;
+    return std::string(o.c_str()) + "\n";
+}
+
+SaveResult writeFileAtomically(const std::string& path, const std::string& text)
+{
+    namespace fs = std::filesystem;
+    const std::string tmp = path + ".saving~";
+    {
+        std::FILE* f = std::fopen(tmp.c_str(), "wb");
+        if (!f)
+            return {false, "cannot write '" + tmp + "'"};
+        const bool wrote = std::fwrite(text.data(), 1, text.size(), f) == text.size() && std::fflush(f) == 0 &&
+                           ::fsync(fileno(f)) == 0;
+        const bool closed = std::fclose(f) == 0;
+        if (!wrote || !closed) {
+            std::remove(tmp.c_str());
+            return {false, "could not write all of '" + tmp + "' (disk full?)"};
+        }
+    }
+    std::error_code ec;
+    fs::rename(tmp, path, ec);
+    if (ec) {
+        std::remove(tmp.c_str());
+        return {false, "cannot replace '" + path + "': " + ec.message()};
+    }
+    return {true, {}};
+}
+
+SaveResult saveScene(const Scene& scene, const std::string& path)
+{
+    const std::string baseDir = std::filesystem::path(path).parent_path().string();
+    for (const BrainGraph& b : scene.brains) {
+        if (b.file.empty())
+            continue;
+        SaveResult r = writeFileAtomically(detail::resolvePath(baseDir, b.file), brainToYaml(b));
+        if (!r.ok)
+            return r;
+    }
+    // Keyframe files hold one "x y z" line per frame; rewriting them beside the scene
+    // keeps a Save As into another folder complete.
+    for (const Hero& h : scene.heroes) {
+        if (h.keyframesFile.empty())
+            continue;
+        std::string text;
+        for (const Keyframe& k : h.keyframes)
+            text += num(k.position.x) + ' ' + num(k.position.y) + ' ' + num(k.position.z) + '\n';
+        SaveResult r = writeFileAtomically(detail::resolvePath(baseDir, h.keyframesFile), text);
+        if (!r.ok)
+            return r;
+    }
+    return writeFileAtomically(path, sceneToYaml(scene));
+}
+
+}  // namespace throng::sim

@@ -1,0 +1,231 @@
+// Writes the set (goals, paths, walls, obstacles, terrain, flow strokes) and the traffic
+// (lanes, crosswalks, lights, vehicles, heroes) sections of a scene file.
+#include "simcore/io/detail/YamlWriter.h"
+#include "simcore/scene/Scene.h"
+
+namespace throng::sim::detail {
+
+void writeSceneSet(YamlWriter& w, const Scene& s)
+{
+    YAML::Emitter& o = w.out;
+    if (!s.goals.empty()) {
+        w.key("goals");
+        o << YAML::BeginSeq;
+        for (const Goal& g : s.goals) {
+            o << YAML::Flow << YAML::BeginMap;
+            w.kv("name", g.name);
+            w.key("position");
+            w.vec2(g.position);
+            w.kvf("radius", g.radiusM);
+            o << YAML::EndMap;
+        }
+        o << YAML::EndSeq;
+    }
+    if (!s.paths.empty()) {
+        w.key("paths");
+        o << YAML::BeginSeq;
+        for (const Path& p : s.paths) {
+            o << YAML::BeginMap;
+            w.kv("name", p.name);
+            w.kvf("radius", p.radiusM);
+            w.kv("closed", p.closed ? "true" : "false");
+            w.key("points");
+            w.polyline(p.points);
+            o << YAML::EndMap;
+        }
+        o << YAML::EndSeq;
+    }
+    if (!s.walls.empty()) {
+        w.key("walls");
+        o << YAML::BeginSeq;
+        for (const Wall& wall : s.walls) {
+            o << YAML::Flow << YAML::BeginMap;
+            w.kvOpt("name", wall.name);
+            w.key("points");
+            w.polyline(wall.points);
+            o << YAML::EndMap;
+        }
+        o << YAML::EndSeq;
+    }
+    if (!s.obstacles.empty()) {
+        w.key("obstacles");
+        o << YAML::BeginSeq;
+        for (const Obstacle& ob : s.obstacles) {
+            o << YAML::Flow << YAML::BeginMap;
+            w.kvOpt("name", ob.name);
+            w.kv("shape", toString(ob.shape));
+            w.key("center");
+            w.vec2(ob.center);
+            if (ob.shape == ObstacleShape::Circle) {
+                w.kvf("radius", ob.radiusM);
+            } else {
+                w.key("size");
+                w.vec2(ob.size);
+                w.kvf("angle", ob.angleDeg);
+            }
+            o << YAML::EndMap;
+        }
+        o << YAML::EndSeq;
+    }
+    if (!s.terrain.heights.empty()) {
+        w.key("terrain");
+        o << YAML::BeginMap;
+        w.key("origin");
+        w.vec2(s.terrain.origin);
+        w.kvf("cell", s.terrain.cellM);
+        w.kv("cols", std::to_string(s.terrain.cols));
+        w.kv("rows", std::to_string(s.terrain.rows));
+        w.key("heights");
+        o << YAML::Flow << YAML::BeginSeq;
+        for (float h : s.terrain.heights)
+            o << num(h);
+        o << YAML::EndSeq << YAML::EndMap;
+    }
+    if (!s.flowStrokes.empty()) {
+        w.key("flow_strokes");
+        o << YAML::BeginSeq;
+        for (const FlowStroke& f : s.flowStrokes) {
+            o << YAML::Flow << YAML::BeginMap;
+            w.kvf("width", f.widthM);
+            w.key("points");
+            w.polyline(f.points);
+            o << YAML::EndMap;
+        }
+        o << YAML::EndSeq;
+    }
+    if (!s.groups.empty()) {
+        w.key("groups");
+        o << YAML::BeginSeq;
+        for (const SpawnGroup& g : s.groups) {
+            o << YAML::BeginMap;
+            w.kv("name", g.name);
+            w.kv("type", g.type);
+            w.kv("count", std::to_string(g.count));
+            if (g.shape == AreaShape::Rect) {
+                w.key("rect");
+                o << YAML::Flow << YAML::BeginMap;
+                w.key("min");
+                w.vec2(g.min);
+                w.key("max");
+                w.vec2(g.max);
+            } else {
+                w.key("circle");
+                o << YAML::Flow << YAML::BeginMap;
+                w.key("center");
+                w.vec2(g.center);
+                w.kvf("radius", g.radiusM);
+            }
+            o << YAML::EndMap;
+            w.kvOpt("goal", g.goal);
+            w.kvOpt("path", g.path);
+            o << YAML::EndMap;
+        }
+        o << YAML::EndSeq;
+    }
+}
+
+void writeSceneTraffic(YamlWriter& w, const Scene& s)
+{
+    YAML::Emitter& o = w.out;
+    if (!s.lanes.empty()) {
+        w.key("lanes");
+        o << YAML::BeginSeq;
+        for (const Lane& l : s.lanes) {
+            o << YAML::Flow << YAML::BeginMap;
+            w.kv("name", l.name);
+            w.kvf("width", l.widthM);
+            w.kvf("speed_limit", l.speedLimit);
+            w.kv("loop", l.loop ? "true" : "false");
+            w.key("points");
+            w.polyline(l.points);
+            o << YAML::EndMap;
+        }
+        o << YAML::EndSeq;
+    }
+    if (!s.crosswalks.empty()) {
+        w.key("crosswalks");
+        o << YAML::BeginSeq;
+        for (const Crosswalk& c : s.crosswalks) {
+            o << YAML::Flow << YAML::BeginMap;
+            w.kv("name", c.name);
+            w.key("from");
+            w.vec2(c.from);
+            w.key("to");
+            w.vec2(c.to);
+            w.kvf("width", c.widthM);
+            o << YAML::EndMap;
+        }
+        o << YAML::EndSeq;
+    }
+    if (!s.trafficLights.empty()) {
+        w.key("traffic_lights");
+        o << YAML::BeginSeq;
+        for (const TrafficLight& t : s.trafficLights) {
+            o << YAML::BeginMap;
+            w.kv("name", t.name);
+            w.kvf("green", t.greenS);
+            w.kvf("yellow", t.yellowS);
+            w.kvf("red", t.redS);
+            w.kvf("offset", t.offsetS);
+            w.key("position");
+            w.vec2(t.position);
+            w.key("stop_lines");
+            o << YAML::BeginSeq;
+            for (const StopLine& l : t.stopLines) {
+                o << YAML::Flow << YAML::BeginMap;
+                if (!l.lane.empty()) {
+                    w.kv("lane", l.lane);
+                    w.kvf("at", l.atM);
+                } else {
+                    w.kv("crosswalk", l.crosswalk);
+                }
+                o << YAML::EndMap;
+            }
+            o << YAML::EndSeq << YAML::EndMap;
+        }
+        o << YAML::EndSeq;
+    }
+    if (!s.vehicles.empty()) {
+        w.key("vehicles");
+        o << YAML::BeginSeq;
+        for (const Vehicle& v : s.vehicles) {
+            o << YAML::Flow << YAML::BeginMap;
+            w.kv("id", std::to_string(v.id));
+            w.kv("type", v.type);
+            w.kv("lane", v.lane);
+            w.kvf("at", v.atM);
+            w.kvf("speed", v.speed);
+            o << YAML::EndMap;
+        }
+        o << YAML::EndSeq;
+    }
+    if (!s.heroes.empty()) {
+        w.key("heroes");
+        o << YAML::BeginSeq;
+        for (const Hero& h : s.heroes) {
+            o << YAML::BeginMap;
+            w.kv("id", std::to_string(h.id));
+            w.kv("name", h.name);
+            w.kv("type", h.type);
+            w.kvf("clearance", h.clearanceM);
+            if (!h.keyframesFile.empty()) {
+                w.kv("keyframes_file", h.keyframesFile);
+            } else {
+                w.key("keyframes");
+                o << YAML::BeginSeq;
+                for (const Keyframe& k : h.keyframes) {
+                    o << YAML::Flow << YAML::BeginMap;
+                    w.kvf("time", k.timeS);
+                    w.key("position");
+                    w.vec3(k.position);
+                    o << YAML::EndMap;
+                }
+                o << YAML::EndSeq;
+            }
+            o << YAML::EndMap;
+        }
+        o << YAML::EndSeq;
+    }
+}
+
+}  // namespace throng::sim::detail

@@ -1,0 +1,352 @@
+#include "simcore/io/detail/SceneReader.h"
+
+#include <algorithm>
+#include "simcore/io/detail/YamlDocument.h"
+
+#include <filesystem>
+
+namespace throng::sim::detail {
+
+namespace {
+constexpr std::uint32_t kMaxSpawnCount = 10'000'000;
+}
+
+std::string resolvePath(const std::string& baseDir, const std::string& path)
+{
+    std::filesystem::path p(path);
+    if (p.is_absolute() || baseDir.empty())
+        return p.lexically_normal().string();
+    return (std::filesystem::path(baseDir) / p).lexically_normal().string();
+}
+
+void SceneReader::read(const YAML::Node& root, Scene& scene)
+{
+    m_f.checkKeys(root, "", {"throng", "settings", "brains", "agent_types", "agents", "groups", "paths",
+                             "walls", "obstacles", "goals", "terrain", "flow_strokes", "lanes", "crosswalks",
+                             "traffic_lights", "vehicles", "heroes"});
+    std::uint64_t version = 0;
+    if (m_f.readUInt(root, "throng", "", version, true, 1'000'000) && version != Scene::kFormatVersion)
+        m_f.error(root["throng"].Mark(), "throng",
+                  "unsupported format version " + std::to_string(version) + " (this Throng reads version " +
+                      std::to_string(Scene::kFormatVersion) + ")");
+
+    // Sections are read in dependency order, not file order, so references can be
+    // checked as soon as they are read.
+    auto section = [&](const char* name) { return root[name]; };
+    if (auto n = section("settings"); n.IsDefined())
+        readSettings(n, scene.settings);
+    if (auto n = section("brains"); n.IsDefined())
+        readBrains(n, scene);
+    if (auto n = section("agent_types"); n.IsDefined())
+        readAgentTypes(n, scene);
+    if (auto n = section("goals"); n.IsDefined())
+        readGoals(n, scene);
+    if (auto n = section("paths"); n.IsDefined())
+        readPaths(n, scene);
+    if (auto n = section("walls"); n.IsDefined())
+        readWalls(n, scene);
+    if (auto n = section("obstacles"); n.IsDefined())
+        readObstacles(n, scene);
+    if (auto n = section("terrain"); n.IsDefined())
+        readTerrain(n, scene.terrain);
+    if (auto n = section("flow_strokes"); n.IsDefined())
+        readFlowStrokes(n, scene);
+    if (auto n = section("lanes"); n.IsDefined())
+        readLanes(n, scene);
+    if (auto n = section("crosswalks"); n.IsDefined())
+        readCrosswalks(n, scene);
+    if (auto n = section("traffic_lights"); n.IsDefined())
+        readTrafficLights(n, scene);
+    if (auto n = section("agents"); n.IsDefined())
+        readAgents(n, scene);
+    if (auto n = section("groups"); n.IsDefined())
+        readGroups(n, scene);
+    if (auto n = section("vehicles"); n.IsDefined())
+        readVehicles(n, scene);
+    if (auto n = section("heroes"); n.IsDefined())
+        readHeroes(n, scene);
+    assignMissingIds(scene);
+}
+
+void SceneReader::readSettings(const YAML::Node& node, Settings& s)
+{
+    const std::string key = "settings";
+    if (!m_f.expectMap(node, key))
+        return;
+    m_f.checkKeys(node, key, {"fps", "duration", "seed", "bounds"});
+    m_f.readFloat(node, "fps", key, s.fps, false, Range::Positive);
+    m_f.readFloat(node, "duration", key, s.durationS, false, Range::Positive);
+    m_f.readUInt(node, "seed", key, s.seed, false, UINT64_MAX);
+    if (s.fps > 1000.0f)
+        m_f.error(node["fps"].Mark(), key + ".fps", "must be at most 1000");
+    if (YAML::Node b = node["bounds"]; b.IsDefined()) {
+        const std::string bk = key + ".bounds";
+        if (m_f.expectMap(b, bk)) {
+            m_f.checkKeys(b, bk, {"min", "max"});
+            m_f.readVec2(b, "min", bk, s.boundsMin, true);
+            m_f.readVec2(b, "max", bk, s.boundsMax, true);
+            if (s.boundsMin.x >= s.boundsMax.x || s.boundsMin.y >= s.boundsMax.y)
+                m_f.error(b.Mark(), bk, "min must be less than max on both axes");
+        }
+    }
+}
+
+void SceneReader::readBrains(const YAML::Node& node, Scene& scene)
+{
+    if (!m_f.expectSequence(node, "brains"))
+        return;
+    std::set<std::string> names;
+    for (std::size_t i = 0; i < node.size(); ++i) {
+        const std::string key = indexKey("brains", i);
+        const YAML::Node item = node[i];
+        if (!m_f.expectMap(item, key))
+            continue;
+        BrainGraph brain;
+        if (!m_f.readName(item, "name", key, brain.name, true))
+            continue;
+        claimName(names, item, key, brain.name, "brain");
+        if (YAML::Node file = item["file"]; file.IsDefined()) {
+            m_f.checkKeys(item, key, {"name", "file"});
+            if (!m_f.readString(item, "file", key, brain.file, true))
+                continue;
+            const std::string full = resolvePath(m_baseDir, brain.file);
+            // Problems inside the brain file are located in that file, and reported at
+            // the reference so the scene's reader sees them too.
+            std::vector<Diagnostic> sub;
+            YamlFields brainFields(full, sub);
+            std::string text;
+            YAML::Node doc;
+            const std::string name = brain.name;
+            if (readYamlFile(brainFields, text, doc))
+                readBrainGraph(brainFields, doc, "", brain, true);
+            brain.name = name;
+            for (const Diagnostic& d : sub) {
+                if (d.severity == Severity::Error)
+                    m_f.error(file.Mark(), key + ".file", "in brain file: " + d.format());
+                else
+                    m_f.warning(file.Mark(), key + ".file", "in brain file: " + d.format());
+            }
+        } else {
+            readBrainGraph(m_f, item, key, brain, false);
+        }
+        scene.brains.push_back(std::move(brain));
+    }
+}
+
+void SceneReader::readVariation(const YAML::Node& node, const std::string& key, Variation& v)
+{
+    if (!m_f.expectMap(node, key))
+        return;
+    m_f.checkKeys(node, key, {"looks", "tints", "height", "speed", "phase"});
+    m_f.readStringList(node, "looks", key, v.looks, false);
+    if (YAML::Node tints = node["tints"]; tints.IsDefined() && m_f.expectSequence(tints, key + ".tints")) {
+        v.tints.clear();
+        for (std::size_t i = 0; i < tints.size(); ++i) {
+            const YAML::Node t = tints[i];
+            const std::string tk = indexKey(key + ".tints", i);
+            glm::vec3 c;
+            bool ok = t.IsSequence() && t.size() == 3;
+            for (std::size_t j = 0; ok && j < 3; ++j)
+                ok = m_f.toFloat(t[j], indexKey(tk, j), c[int(j)], Range::Unit);
+            if (!t.IsSequence() || t.size() != 3)
+                m_f.error(t.Mark(), tk, "a tint must be [r, g, b] with each in 0..1");
+            if (ok)
+                v.tints.push_back(c);
+        }
+    }
+    auto range = [&](const char* name, glm::vec2& r, Range kind) {
+        if (m_f.readVec2(node, name, key, r, false, kind) && r.x > r.y)
+            m_f.error(node[name].Mark(), childKey(key, name), "range [min, max] has min greater than max");
+    };
+    range("height", v.heightScale, Range::Positive);
+    range("speed", v.speedFactor, Range::Positive);
+    range("phase", v.phaseOffset, Range::Unit);
+}
+
+void SceneReader::readAgentTypes(const YAML::Node& node, Scene& scene)
+{
+    if (!m_f.expectSequence(node, "agent_types"))
+        return;
+    std::set<std::string> names;
+    for (std::size_t i = 0; i < node.size(); ++i) {
+        const std::string key = indexKey("agent_types", i);
+        const YAML::Node item = node[i];
+        if (!m_f.expectMap(item, key))
+            continue;
+        m_f.checkKeys(item, key, {"name", "kind", "radius", "max_speed", "max_force", "mass", "perception",
+                                  "view_angle", "brain", "character", "variation", "behaviours"});
+        AgentType t;
+        if (!m_f.readName(item, "name", key, t.name, true))
+            continue;
+        claimName(names, item, key, t.name, "agent type");
+        std::string kind = "pedestrian";
+        if (m_f.readString(item, "kind", key, kind, false)) {
+            if (kind == "pedestrian") t.kind = AgentKind::Pedestrian;
+            else if (kind == "vehicle") t.kind = AgentKind::Vehicle;
+            else if (kind == "flier") t.kind = AgentKind::Flier;
+            else m_f.error(item["kind"].Mark(), key + ".kind", "must be pedestrian, vehicle or flier, got '" + kind + "'");
+        }
+        if (t.kind == AgentKind::Vehicle) {
+            t.radiusM = 1.0f;
+            t.maxSpeed = 13.9f;
+            t.maxForce = 4000.0f;
+            t.mass = 1200.0f;
+        }
+        m_f.readFloat(item, "radius", key, t.radiusM, false, Range::Positive);
+        m_f.readFloat(item, "max_speed", key, t.maxSpeed, false, Range::NonNegative);
+        m_f.readFloat(item, "max_force", key, t.maxForce, false, Range::NonNegative);
+        m_f.readFloat(item, "mass", key, t.mass, false, Range::Positive);
+        m_f.readFloat(item, "perception", key, t.perceptionM, false, Range::Positive);
+        if (m_f.readFloat(item, "view_angle", key, t.viewAngleDeg, false, Range::Positive) && t.viewAngleDeg > 360.0f)
+            m_f.error(item["view_angle"].Mark(), key + ".view_angle", "must be at most 360 degrees");
+        if (m_f.readName(item, "brain", key, t.brain, false) && !t.brain.empty())
+            checkRef(item, "brain", key, t.brain, scene.findBrain(t.brain) != nullptr, "brain");
+        if (m_f.readString(item, "character", key, t.character, false) && !t.character.empty()) {
+            const auto& builtins = builtinCharacters();
+            const bool builtin = std::find(builtins.begin(), builtins.end(), t.character) != builtins.end();
+            const bool isFile = t.character.ends_with(".glb") || t.character.ends_with(".gltf");
+            if (!builtin && !isFile)
+                m_f.error(item["character"].Mark(), key + ".character",
+                          "'" + t.character + "' is neither a built-in character (man, woman, tall_man, child, "
+                          "car, bird) nor a .glb/.gltf file");
+            else if (isFile && !std::filesystem::exists(resolvePath(m_baseDir, t.character)))
+                m_f.error(item["character"].Mark(), key + ".character",
+                          "character file '" + resolvePath(m_baseDir, t.character) + "' does not exist");
+        }
+        if (YAML::Node v = item["variation"]; v.IsDefined())
+            readVariation(v, key + ".variation", t.variation);
+        if (YAML::Node b = item["behaviours"]; b.IsDefined() && m_f.expectMap(b, key + ".behaviours")) {
+            const auto& known = behaviourNames();
+            m_f.checkDuplicateKeys(b, key + ".behaviours");
+            std::set<std::string> seen;
+            for (auto it = b.begin(); it != b.end(); ++it) {
+                const std::string name = it->first.Scalar();
+                const std::string bk = key + ".behaviours." + name;
+                if (!seen.insert(name).second)
+                    continue;  // checkKeys reported the duplicate
+                if (std::find(known.begin(), known.end(), name) == known.end()) {
+                    m_f.error(it->first.Mark(), bk, "unknown steering behaviour '" + name + "'");
+                    continue;
+                }
+                BehaviourWeight w{name, 1.0f};
+                if (m_f.toFloat(it->second, bk, w.weight, Range::NonNegative))
+                    t.behaviours.push_back(w);
+            }
+        }
+        scene.agentTypes.push_back(std::move(t));
+    }
+}
+
+void SceneReader::readAgents(const YAML::Node& node, Scene& scene)
+{
+    if (node.IsMap()) {
+        readAgentTable(node, "agents", scene);
+        return;
+    }
+    if (!m_f.expectSequence(node, "agents"))
+        return;
+    scene.agents.reserve(scene.agents.size() + node.size());
+    for (std::size_t i = 0; i < node.size(); ++i) {
+        const std::string key = indexKey("agents", i);
+        const YAML::Node item = node[i];
+        if (!m_f.expectMap(item, key))
+            continue;
+        m_f.checkKeys(item, key, {"id", "type", "position", "heading", "goal", "path"});
+        Agent a;
+        if (YAML::Node id = item["id"]; id.IsDefined() && m_f.readU32(item, "id", key, a.id, false))
+            claimId(id, key + ".id", a.id);
+        if (m_f.readName(item, "type", key, a.type, true))
+            checkRef(item, "type", key, a.type, scene.findAgentType(a.type) != nullptr, "agent type");
+        m_f.readPoint3(item, "position", key, a.position, true);
+        m_f.readFloat(item, "heading", key, a.headingDeg, false);
+        if (m_f.readName(item, "goal", key, a.goal, false) && !a.goal.empty())
+            checkRef(item, "goal", key, a.goal, scene.findGoal(a.goal) != nullptr, "goal");
+        if (m_f.readName(item, "path", key, a.path, false) && !a.path.empty())
+            checkRef(item, "path", key, a.path, scene.findPath(a.path) != nullptr, "path");
+        scene.agents.push_back(std::move(a));
+    }
+}
+
+void SceneReader::readGroups(const YAML::Node& node, Scene& scene)
+{
+    if (!m_f.expectSequence(node, "groups"))
+        return;
+    std::set<std::string> names;
+    for (std::size_t i = 0; i < node.size(); ++i) {
+        const std::string key = indexKey("groups", i);
+        const YAML::Node item = node[i];
+        if (!m_f.expectMap(item, key))
+            continue;
+        m_f.checkKeys(item, key, {"name", "type", "count", "rect", "circle", "goal", "path"});
+        SpawnGroup g;
+        if (m_f.readName(item, "name", key, g.name, true))
+            claimName(names, item, key, g.name, "group");
+        if (m_f.readName(item, "type", key, g.type, true))
+            checkRef(item, "type", key, g.type, scene.findAgentType(g.type) != nullptr, "agent type");
+        if (m_f.readU32(item, "count", key, g.count, true) && g.count > kMaxSpawnCount)
+            m_f.error(item["count"].Mark(), key + ".count", "at most 10,000,000 agents per group");
+        const YAML::Node rect = item["rect"], circle = item["circle"];
+        if (rect.IsDefined() == circle.IsDefined()) {
+            m_f.error(item.Mark(), key, "give exactly one spawn area: 'rect' or 'circle'");
+        } else if (rect.IsDefined() && m_f.expectMap(rect, key + ".rect")) {
+            g.shape = AreaShape::Rect;
+            m_f.checkKeys(rect, key + ".rect", {"min", "max"});
+            if (m_f.readVec2(rect, "min", key + ".rect", g.min, true) &&
+                m_f.readVec2(rect, "max", key + ".rect", g.max, true) && (g.min.x > g.max.x || g.min.y > g.max.y))
+                m_f.error(rect.Mark(), key + ".rect", "min must not exceed max");
+        } else if (circle.IsDefined() && m_f.expectMap(circle, key + ".circle")) {
+            g.shape = AreaShape::Circle;
+            m_f.checkKeys(circle, key + ".circle", {"center", "radius"});
+            m_f.readVec2(circle, "center", key + ".circle", g.center, true);
+            m_f.readFloat(circle, "radius", key + ".circle", g.radiusM, true, Range::Positive);
+        }
+        if (m_f.readName(item, "goal", key, g.goal, false) && !g.goal.empty())
+            checkRef(item, "goal", key, g.goal, scene.findGoal(g.goal) != nullptr, "goal");
+        if (m_f.readName(item, "path", key, g.path, false) && !g.path.empty())
+            checkRef(item, "path", key, g.path, scene.findPath(g.path) != nullptr, "path");
+        scene.groups.push_back(std::move(g));
+    }
+}
+
+bool SceneReader::checkRef(const YAML::Node& map, const char* name, const std::string& key, const std::string& value,
+                           bool exists, const char* what)
+{
+    if (exists)
+        return true;
+    m_f.error(map[name].Mark(), childKey(key, name), std::string("no ") + what + " named '" + value + "'");
+    return false;
+}
+
+bool SceneReader::claimName(std::set<std::string>& names, const YAML::Node& map, const std::string& key,
+                            const std::string& name, const char* what)
+{
+    if (names.insert(name).second)
+        return true;
+    m_f.error(map["name"].Mark(), key + ".name", std::string("another ") + what + " is already named '" + name + "'");
+    return false;
+}
+
+bool SceneReader::claimId(const YAML::Node& at, const std::string& key, std::uint32_t id)
+{
+    if (id == 0) {
+        m_f.error(at.Mark(), key, "ids start at 1");
+        return false;
+    }
+    if (m_ids.insert(id).second)
+        return true;
+    m_f.error(at.Mark(), key, "id " + std::to_string(id) + " is already used by another agent, vehicle or hero");
+    return false;
+}
+
+void SceneReader::assignMissingIds(Scene& scene)
+{
+    std::uint32_t next = m_ids.empty() ? 1 : *m_ids.rbegin() + 1;
+    for (Agent& a : scene.agents)
+        if (a.id == 0) a.id = next++;
+    for (Vehicle& v : scene.vehicles)
+        if (v.id == 0) v.id = next++;
+    for (Hero& h : scene.heroes)
+        if (h.id == 0) h.id = next++;
+}
+
+}  // namespace throng::sim::detail

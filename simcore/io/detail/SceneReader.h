@@ -1,0 +1,64 @@
+#pragma once
+// Turns a parsed YAML document into a Scene, section by section, checking types,
+// ranges and references. Reports through YamlFields; never throws.
+
+#include "simcore/io/detail/YamlFields.h"
+#include "simcore/scene/Scene.h"
+
+#include <set>
+#include <string>
+#include <string_view>
+
+namespace throng::sim::detail {
+
+class SceneReader {
+public:
+    // `source` is the document's text, used to locate rows inside agent tables.
+    SceneReader(YamlFields& fields, std::string baseDir, std::string_view source)
+        : m_f(fields), m_baseDir(std::move(baseDir)), m_source(source) {}
+
+    // Reads the whole document into scene.
+    void read(const YAML::Node& root, Scene& scene);
+
+private:
+    void readSettings(const YAML::Node& node, Settings& s);
+    void readBrains(const YAML::Node& node, Scene& scene);
+    void readAgentTypes(const YAML::Node& node, Scene& scene);
+    void readVariation(const YAML::Node& node, const std::string& key, Variation& v);
+    void readAgents(const YAML::Node& node, Scene& scene);
+    void readAgentTable(const YAML::Node& node, const std::string& key, Scene& scene);
+    void readGroups(const YAML::Node& node, Scene& scene);
+    void readPaths(const YAML::Node& node, Scene& scene);
+    void readWalls(const YAML::Node& node, Scene& scene);
+    void readObstacles(const YAML::Node& node, Scene& scene);
+    void readGoals(const YAML::Node& node, Scene& scene);
+    void readTerrain(const YAML::Node& node, Terrain& t);
+    void readFlowStrokes(const YAML::Node& node, Scene& scene);
+    void readLanes(const YAML::Node& node, Scene& scene);
+    void readCrosswalks(const YAML::Node& node, Scene& scene);
+    void readTrafficLights(const YAML::Node& node, Scene& scene);
+    void readVehicles(const YAML::Node& node, Scene& scene);
+    void readHeroes(const YAML::Node& node, Scene& scene);
+    void readHeroKeyframesFile(const YAML::Node& at, const std::string& key, float fps, Hero& hero);
+
+    // Reference checks: report "no X named 'y'" at the value's location.
+    bool checkRef(const YAML::Node& map, const char* name, const std::string& key, const std::string& value,
+                  bool exists, const char* what);
+    bool claimName(std::set<std::string>& names, const YAML::Node& map, const std::string& key,
+                   const std::string& name, const char* what);
+    bool claimId(const YAML::Node& at, const std::string& key, std::uint32_t id);
+    void assignMissingIds(Scene& scene);
+
+    YamlFields& m_f;
+    std::string m_baseDir;
+    std::string_view m_source;
+    std::set<std::uint32_t> m_ids;
+};
+
+// Reads a brain graph map: the inline form in a scene, or (isFile) a .brain.yaml file's
+// root, which must start with `throng_brain: 1`.
+void readBrainGraph(YamlFields& f, const YAML::Node& node, const std::string& key, BrainGraph& brain, bool isFile);
+// Resolves a path relative to a base directory (absolute paths pass through).
+std::string resolvePath(const std::string& baseDir, const std::string& path);
+
+}  // namespace throng::sim::detail

@@ -1,0 +1,58 @@
+#include "simcore/scene/Scene.h"
+
+#include <algorithm>
+
+namespace throng::sim {
+
+namespace {
+template <typename T>
+const T* findByName(const std::vector<T>& items, const std::string& name)
+{
+    auto it = std::find_if(items.begin(), items.end(), [&](const T& t) { return t.name == name; });
+    return it == items.end() ? nullptr : &*it;
+}
+}  // namespace
+
+const AgentType* Scene::findAgentType(const std::string& name) const { return findByName(agentTypes, name); }
+const Goal* Scene::findGoal(const std::string& name) const { return findByName(goals, name); }
+const Path* Scene::findPath(const std::string& name) const { return findByName(paths, name); }
+const Lane* Scene::findLane(const std::string& name) const { return findByName(lanes, name); }
+const Crosswalk* Scene::findCrosswalk(const std::string& name) const { return findByName(crosswalks, name); }
+const BrainGraph* Scene::findBrain(const std::string& name) const { return findByName(brains, name); }
+
+const BrainNode* BrainGraph::findNode(NodeId id) const
+{
+    auto it = std::find_if(nodes.begin(), nodes.end(), [&](const BrainNode& n) { return n.id == id; });
+    return it == nodes.end() ? nullptr : &*it;
+}
+
+const std::vector<std::string>& behaviourNames()
+{
+    static const std::vector<std::string> names{
+        "seek", "flee", "pursuit", "evasion", "offset_pursuit", "arrival",
+        "obstacle_avoidance", "wander", "path_following", "wall_following", "containment",
+        "flow_field_following", "separation", "alignment", "cohesion", "leader_following",
+        "unaligned_collision_avoidance"};
+    return names;
+}
+
+const std::vector<std::string>& builtinCharacters()
+{
+    static const std::vector<std::string> names{"man", "woman", "tall_man", "child", "car", "bird"};
+    return names;
+}
+
+const char* toString(AgentKind kind)
+{
+    switch (kind) {
+    case AgentKind::Pedestrian: return "pedestrian";
+    case AgentKind::Vehicle: return "vehicle";
+    case AgentKind::Flier: return "flier";
+    }
+    return "pedestrian";
+}
+
+const char* toString(AreaShape shape) { return shape == AreaShape::Circle ? "circle" : "rect"; }
+const char* toString(ObstacleShape shape) { return shape == ObstacleShape::Box ? "box" : "circle"; }
+
+}  // namespace throng::sim

@@ -1,0 +1,226 @@
+#pragma once
+// The authoring document as plain data: everything a scene file holds, nothing the
+// simulation derives from it. Never holds runtime arrays, pointers or Qt types.
+
+#include "simcore/scene/BrainGraph.h"
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace throng::sim {
+
+// Ground coordinates: x east, z south, y up (glTF convention). A ground point is (x, z).
+
+struct Settings {
+    float fps = 24.0f;            // frames per second, > 0; one simulation step per frame
+    float durationS = 10.0f;      // seconds, > 0
+    std::uint64_t seed = 1;       // keys every random number of a run
+    glm::vec2 boundsMin{-50.0f};  // world bounds (x, z) in metres
+    glm::vec2 boundsMax{50.0f};
+    bool operator==(const Settings&) const = default;
+};
+
+enum class AgentKind { Pedestrian, Vehicle, Flier };
+
+struct Variation {
+    std::vector<std::string> looks;   // mesh variants of the character, empty = default look
+    std::vector<glm::vec3> tints;     // RGB palette in 0..1, empty = untinted
+    glm::vec2 heightScale{1.0f};      // uniform range [min, max], > 0
+    glm::vec2 speedFactor{0.8f, 1.2f};// uniform range [min, max], > 0
+    glm::vec2 phaseOffset{0.0f, 1.0f};// gait phase offset range in cycles, [0, 1]
+    bool operator==(const Variation&) const = default;
+};
+
+struct BehaviourWeight {
+    std::string behaviour;  // one of behaviourNames()
+    float weight = 1.0f;    // >= 0
+    bool operator==(const BehaviourWeight&) const = default;
+};
+
+struct AgentType {
+    std::string name;
+    AgentKind kind = AgentKind::Pedestrian;
+    float radiusM = 0.3f;       // m, > 0
+    float maxSpeed = 1.4f;      // m/s, >= 0
+    float maxForce = 3.0f;      // N, >= 0
+    float mass = 1.0f;          // kg, > 0
+    float perceptionM = 4.0f;   // neighbour perception radius in m, > 0
+    float viewAngleDeg = 270.0f;// perception cone, full angle in degrees, (0, 360]
+    std::string brain;          // name of a brain in Scene::brains, empty = none
+    std::string character;      // built-in character name or a .glb/.gltf path
+    Variation variation;
+    std::vector<BehaviourWeight> behaviours;
+    bool operator==(const AgentType&) const = default;
+};
+
+struct Agent {
+    std::uint32_t id = 0;       // stable AgentId, unique in the scene, > 0
+    std::string type;
+    glm::vec3 position{0.0f};
+    float headingDeg = 0.0f;    // degrees, 0 = +x, counter-clockwise seen from above
+    std::string goal;           // optional goal name
+    std::string path;           // optional path name
+    bool operator==(const Agent&) const = default;
+};
+
+enum class AreaShape { Rect, Circle };
+
+struct SpawnGroup {
+    std::string name;
+    std::string type;
+    std::uint32_t count = 0;
+    AreaShape shape = AreaShape::Rect;
+    glm::vec2 min{0.0f}, max{0.0f};  // Rect: corners (x, z)
+    glm::vec2 center{0.0f};          // Circle
+    float radiusM = 0.0f;            // Circle, > 0
+    std::string goal;
+    std::string path;
+    bool operator==(const SpawnGroup&) const = default;
+};
+
+struct Path {
+    std::string name;
+    std::vector<glm::vec2> points;  // >= 2 points
+    float radiusM = 1.0f;           // > 0
+    bool closed = false;
+    bool operator==(const Path&) const = default;
+};
+
+struct Wall {
+    std::string name;
+    std::vector<glm::vec2> points;  // polyline, >= 2 points
+    bool operator==(const Wall&) const = default;
+};
+
+enum class ObstacleShape { Circle, Box };
+
+struct Obstacle {
+    std::string name;
+    ObstacleShape shape = ObstacleShape::Circle;
+    glm::vec2 center{0.0f};
+    float radiusM = 0.5f;         // Circle, > 0
+    glm::vec2 size{1.0f};         // Box: full width (x) and depth (z), > 0
+    float angleDeg = 0.0f;        // Box rotation about y
+    bool operator==(const Obstacle&) const = default;
+};
+
+struct Goal {
+    std::string name;
+    glm::vec2 position{0.0f};
+    float radiusM = 1.0f;  // arrival tolerance, > 0
+    bool operator==(const Goal&) const = default;
+};
+
+struct Terrain {
+    glm::vec2 origin{0.0f};      // (x, z) of height sample (0, 0)
+    float cellM = 1.0f;          // spacing between samples, > 0
+    std::uint32_t cols = 0, rows = 0;
+    std::vector<float> heights;  // rows * cols, row-major along x; empty terrain = flat ground
+    bool operator==(const Terrain&) const = default;
+};
+
+struct FlowStroke {
+    std::vector<glm::vec2> points;  // direction of travel = order of points, >= 2
+    float widthM = 2.0f;            // influence width, > 0
+    bool operator==(const FlowStroke&) const = default;
+};
+
+struct Lane {
+    std::string name;
+    std::vector<glm::vec2> points;  // direction of travel = order of points, >= 2
+    float widthM = 3.5f;            // > 0
+    float speedLimit = 13.9f;       // m/s, > 0
+    bool loop = true;               // vehicles reaching the end restart at the start
+    bool operator==(const Lane&) const = default;
+};
+
+struct Crosswalk {
+    std::string name;
+    glm::vec2 from{0.0f}, to{0.0f};  // centre line, pedestrians cross from one end to the other
+    float widthM = 3.0f;             // > 0
+    bool operator==(const Crosswalk&) const = default;
+};
+
+struct StopLine {
+    std::string lane;       // either a lane and a distance along it...
+    float atM = 0.0f;       // m along the lane, >= 0
+    std::string crosswalk;  // ...or a crosswalk whose ends are the pedestrians' stop lines
+    bool operator==(const StopLine&) const = default;
+};
+
+struct TrafficLight {
+    std::string name;
+    float greenS = 20.0f, yellowS = 3.0f, redS = 23.0f;  // phase durations, >= 0, sum > 0
+    float offsetS = 0.0f;                                // cycle offset, s
+    glm::vec2 position{0.0f};                            // where the signal head stands
+    std::vector<StopLine> stopLines;
+    bool operator==(const TrafficLight&) const = default;
+};
+
+struct Vehicle {
+    std::uint32_t id = 0;   // AgentId shared with agents' id space
+    std::string type;       // an agent type of kind vehicle
+    std::string lane;
+    float atM = 0.0f;       // start distance along the lane, >= 0
+    float speed = 0.0f;     // initial speed, m/s, >= 0
+    bool operator==(const Vehicle&) const = default;
+};
+
+struct Keyframe {
+    float timeS = 0.0f;
+    glm::vec3 position{0.0f};
+    bool operator==(const Keyframe&) const = default;
+};
+
+struct Hero {
+    std::uint32_t id = 0;       // AgentId
+    std::string name;
+    std::string type;
+    float clearanceM = 2.0f;    // others are pushed out of this radius, >= 0
+    std::string keyframesFile;  // optional: one "x y z" line per frame, relative to the scene
+    std::vector<Keyframe> keyframes;  // strictly increasing times
+    bool operator==(const Hero&) const = default;
+};
+
+struct Scene {
+    static constexpr int kFormatVersion = 1;
+    Settings settings;
+    std::vector<AgentType> agentTypes;
+    std::vector<Agent> agents;
+    std::vector<SpawnGroup> groups;
+    std::vector<Path> paths;
+    std::vector<Wall> walls;
+    std::vector<Obstacle> obstacles;
+    std::vector<Goal> goals;
+    Terrain terrain;
+    std::vector<FlowStroke> flowStrokes;
+    std::vector<Lane> lanes;
+    std::vector<Crosswalk> crosswalks;
+    std::vector<TrafficLight> trafficLights;
+    std::vector<Vehicle> vehicles;
+    std::vector<Hero> heroes;
+    std::vector<BrainGraph> brains;
+    bool operator==(const Scene&) const = default;
+
+    const AgentType* findAgentType(const std::string& name) const;
+    const Goal* findGoal(const std::string& name) const;
+    const Path* findPath(const std::string& name) const;
+    const Lane* findLane(const std::string& name) const;
+    const Crosswalk* findCrosswalk(const std::string& name) const;
+    const BrainGraph* findBrain(const std::string& name) const;
+};
+
+// Names that may appear in AgentType::behaviours (Reynolds 1999 and boids 1987).
+const std::vector<std::string>& behaviourNames();
+// Built-in characters that export can generate without a file.
+const std::vector<std::string>& builtinCharacters();
+
+const char* toString(AgentKind kind);
+const char* toString(AreaShape shape);
+const char* toString(ObstacleShape shape);
+
+}  // namespace throng::sim
