@@ -1,0 +1,22 @@
+#pragma once
+// Built-in benchmark scenes, generated from a few numbers so the CLI, bench/ and the
+// tests measure the same thing. Plain scenes: they go through the same World as files.
+
+#include "simcore/scene/Scene.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace throng::sim {
+
+// `cross`: agents on a circle walk to the antipodal point (the classic avoidance test).
+Scene makeCrossScenario(std::uint32_t agents, std::uint64_t seed = 1);
+// `corridor`: two groups walk in opposite directions between two long walls.
+Scene makeCorridorScenario(std::uint32_t agents, std::uint64_t seed = 1);
+
+const std::vector<std::string>& benchScenarioNames();
+// Builds the named scenario; false when the name is unknown.
+bool makeBenchScenario(const std::string& name, std::uint32_t agents, Scene& out);
+
+}  // namespace throng::sim

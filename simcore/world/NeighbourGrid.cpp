@@ -1,0 +1,68 @@
+#include "simcore/world/NeighbourGrid.h"
+
+#include <glm/common.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace throng::sim {
+
+namespace {
+constexpr int kMaxCellsPerAxis = 4096;
+}
+
+void NeighbourGrid::configure(glm::vec2 boundsMin, glm::vec2 boundsMax, float cellM)
+{
+    const glm::vec2 size = glm::max(boundsMax - boundsMin, glm::vec2(1.0f));
+    // Cap the grid so a huge world with tiny agents still fits in memory; agents
+    // outside the bounds are clamped into border cells.
+    m_cell = std::max({cellM, size.x / kMaxCellsPerAxis, size.y / kMaxCellsPerAxis, 1e-3f});
+    m_inv = 1.0f / m_cell;
+    m_min = boundsMin;
+    m_cols = std::max(1, int(std::ceil(size.x * m_inv)));
+    m_rows = std::max(1, int(std::ceil(size.y * m_inv)));
+    m_start.assign(std::size_t(m_cols) * std::size_t(m_rows) + 1, 0);
+}
+
+int NeighbourGrid::cellX(float x) const
+{
+    const float c = std::floor((x - m_min.x) * m_inv);
+    return c != c ? 0 : std::clamp(int(std::clamp(c, -1.0f, float(m_cols))), 0, m_cols - 1);
+}
+
+int NeighbourGrid::cellZ(float z) const
+{
+    const float c = std::floor((z - m_min.y) * m_inv);
+    return c != c ? 0 : std::clamp(int(std::clamp(c, -1.0f, float(m_rows))), 0, m_rows - 1);
+}
+
+void NeighbourGrid::rebuild(std::span<const glm::vec3> positions)
+{
+    const std::size_t n = positions.size();
+    m_cellOf.resize(n);
+    m_sorted.resize(n);
+    std::fill(m_start.begin(), m_start.end(), 0u);
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::uint32_t c = std::uint32_t(cellZ(positions[i].z) * m_cols + cellX(positions[i].x));
+        m_cellOf[i] = c;
+        ++m_start[c + 1];
+    }
+    for (std::size_t c = 1; c < m_start.size(); ++c)
+        m_start[c] += m_start[c - 1];
+    // Counting sort, stable: indices stay ascending within a cell, so neighbour order
+    // (and with it every float sum) is the same on every run.
+    std::vector<std::uint32_t>& fill = m_cellOf;
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::uint32_t c = fill[i];
+        fill[i] = m_start[c];  // reuse as the write cursor of the agent's slot
+        ++m_start[c];
+    }
+    for (std::size_t i = 0; i < n; ++i)
+        m_sorted[fill[i]] = std::uint32_t(i);
+    // m_start[c] now holds the end of cell c; shift back to starts.
+    for (std::size_t c = m_start.size() - 1; c > 0; --c)
+        m_start[c] = m_start[c - 1];
+    m_start[0] = 0;
+}
+
+}  // namespace throng::sim
