@@ -1,0 +1,21 @@
+#pragma once
+// Writes a run's recorded frames as one small text file per agent, the format Maya and
+// Houdini scripts read to drive a locator per agent. Reads the FrameCache only; never
+// simulates, and never leaves a partial set of files behind.
+
+#include "export/ExportResult.h"
+#include "simcore/world/FrameCache.h"
+
+#include <string>
+
+namespace throng::exporting {
+
+// Writes `<directory>/agent_<id>.txt` for every agent (AgentId, not dense index), one line
+// `x y z rotYdeg speed` per recorded frame: metres, degrees about +Y (0 = +x,
+// counter-clockwise seen from above, as AgentFrame::headingRad), m/s; floats as the shortest
+// text that reads back exactly. Creates `directory` when missing. All files are written to
+// a staging directory first and renamed into place only when every one is complete.
+ExportResult writeAgentTextCache(const sim::FrameCache& cache, const std::string& directory,
+                                 const ProgressFn& progress = {});
+
+}  // namespace throng::exporting

@@ -1,0 +1,73 @@
+#include "export/TrajectoryCsv.h"
+
+#include "export/detail/AtomicFile.h"
+#include "export/detail/TextFields.h"
+
+namespace throng::exporting {
+
+namespace {
+
+constexpr std::size_t kFlushBytes = 1 << 16;
+
+void appendRow(std::string& out, std::size_t frame, sim::AgentId id, const sim::AgentFrame& a)
+{
+    detail::appendUnsigned(out, frame);
+    out += ',';
+    detail::appendUnsigned(out, id);
+    out += ',';
+    detail::appendFloat(out, a.position.x);
+    out += ',';
+    detail::appendFloat(out, a.position.y);
+    out += ',';
+    detail::appendFloat(out, a.position.z);
+    out += ',';
+    detail::appendFloat(out, detail::headingDegrees(a.headingRad));
+    out += ',';
+    detail::appendFloat(out, a.speed);
+    out += ',';
+    out += sim::toString(a.clip);
+    out += ',';
+    detail::appendFloat(out, a.phase);
+    out += '\n';
+}
+
+}  // namespace
+
+ExportResult writeTrajectoryCsv(const sim::FrameCache& cache, const std::string& path, const ProgressFn& progress)
+{
+    ExportResult result;
+    detail::AtomicFile file(path);
+    if (!file.open()) {
+        result.error = file.error();
+        return result;
+    }
+    std::string text = "frame,agent,x,y,z,heading,speed,clip,phase\n";
+    text.reserve(kFlushBytes + 256);
+    const std::size_t frames = cache.frameCount();
+    const auto& agents = cache.agents();
+    for (std::size_t f = 0; f < frames; ++f) {
+        if (progress && !progress(static_cast<float>(f) / static_cast<float>(frames))) {
+            result.cancelled = true;
+            result.error = "export to '" + path + "' cancelled";
+            return result;
+        }
+        for (std::size_t i = 0; i < agents.size(); ++i) {
+            appendRow(text, f, agents[i].id, cache.at(f, i));
+            if (text.size() >= kFlushBytes) {
+                file.stream().write(text.data(), static_cast<std::streamsize>(text.size()));
+                text.clear();
+            }
+        }
+    }
+    file.stream().write(text.data(), static_cast<std::streamsize>(text.size()));
+    if (!file.commit()) {
+        result.error = file.error();
+        return result;
+    }
+    result.writtenPaths.push_back(path);
+    if (progress)
+        progress(1.0f);
+    return result;
+}
+
+}  // namespace throng::exporting
