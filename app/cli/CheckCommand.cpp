@@ -1,0 +1,35 @@
+#include "CliCommands.h"
+
+#include "simcore/io/SceneIO.h"
+
+#include <ostream>
+
+namespace throng::cli {
+
+int checkCommand(const CliArguments& args, std::ostream& out, std::ostream& err)
+{
+    const sim::LoadResult loaded = sim::loadScene(args.scene);
+    int errors = 0, warnings = 0;
+    for (const sim::Diagnostic& d : loaded.diagnostics) {
+        err << d.format() << '\n';
+        (d.severity == sim::Severity::Error ? errors : warnings) += 1;
+    }
+    if (errors > 0) {
+        out << args.scene << ": invalid: " << errors << (errors == 1 ? " error" : " errors") << ", " << warnings
+            << (warnings == 1 ? " warning" : " warnings") << '\n';
+        return 1;
+    }
+    const sim::Scene& s = loaded.scene;
+    std::uint64_t spawned = 0;
+    for (const sim::SpawnGroup& g : s.groups)
+        spawned += g.count;
+    out << args.scene << ": valid (" << s.agentTypes.size() << " agent types, " << s.agents.size()
+        << " placed agents, " << spawned << " spawned, " << s.walls.size() << " walls, " << s.brains.size()
+        << " brains";
+    if (warnings > 0)
+        out << "; " << warnings << (warnings == 1 ? " warning" : " warnings");
+    out << ")\n";
+    return 0;
+}
+
+}  // namespace throng::cli

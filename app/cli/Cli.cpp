@@ -1,0 +1,33 @@
+#include "Cli.h"
+
+#include "CliArguments.h"
+#include "CliCommands.h"
+
+#include <ostream>
+
+namespace throng::cli {
+
+int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err)
+{
+    const ParseOutcome parsed = parseArguments(args);
+    if (!parsed.error.empty()) {
+        err << "throng-cli: " << parsed.error << "\n\n" << usageText();
+        return 2;
+    }
+    const CliArguments& a = parsed.args;
+    if (a.command == "help") {
+        out << "throng-cli: run Throng crowd scenes headless\n\n" << usageText();
+        return 0;
+    }
+    if (a.command == "version") {
+        out << "throng-cli " << THRONG_VERSION << " (scene format 1)\n";
+        return 0;
+    }
+    if (a.command == "check")
+        return checkCommand(a, out, err);
+    if (a.command == "run")
+        return runCommand(a, out, err);
+    return benchCommand(a, out, err);
+}
+
+}  // namespace throng::cli

@@ -1,0 +1,121 @@
+#include "CliArguments.h"
+
+#include <charconv>
+
+namespace throng::cli {
+
+namespace {
+
+bool parseCount(const std::string& text, std::uint64_t& out)
+{
+    auto [p, ec] = std::from_chars(text.data(), text.data() + text.size(), out);
+    return ec == std::errc() && p == text.data() + text.size() && !text.empty();
+}
+
+}  // namespace
+
+std::string usageText()
+{
+    return "usage: throng-cli <command> [options]\n"
+           "\n"
+           "commands:\n"
+           "  check SCENE                 validate a scene and its brains; errors as file:line:col\n"
+           "  run SCENE [options]         simulate a scene headless\n"
+           "      --frames N              frames to simulate (default: the scene's duration x fps)\n"
+           "      --seed S                override the scene's random seed\n"
+           "      --threads T             worker threads (default: all cores)\n"
+           "      --stats OUT.json        write the run's figures as JSON\n"
+           "      --trajectories OUT.csv  write frame,agent,x,y,z,heading,speed,clip,phase rows\n"
+           "      --export OUT.glb|.gltf  write the animated crowd as glTF 2.0\n"
+           "  bench [--agents N] [--steps S] [--scenario cross|corridor] [--threads T]\n"
+           "                              run a built-in scenario and print figures as JSON\n"
+           "\n"
+           "options for every command:\n"
+           "  --quiet                     no progress on stderr\n"
+           "  --help                      this text\n"
+           "  --version                   the version\n"
+           "\n"
+           "exit status: 0 success, 1 the scene or a run failed, 2 wrong usage\n";
+}
+
+ParseOutcome parseArguments(const std::vector<std::string>& argv)
+{
+    ParseOutcome out;
+    CliArguments& a = out.args;
+    std::vector<std::string> positional;
+    for (std::size_t i = 0; i < argv.size(); ++i) {
+        const std::string& arg = argv[i];
+        auto value = [&](std::string& into) {
+            if (i + 1 >= argv.size() || argv[i + 1].empty()) {
+                out.error = arg + " needs a value";
+                return false;
+            }
+            into = argv[++i];
+            return true;
+        };
+        auto count = [&](std::optional<std::uint64_t>& into, bool allowZero) {
+            std::string text;
+            if (!value(text))
+                return;
+            std::uint64_t v = 0;
+            if (!parseCount(text, v) || (!allowZero && v == 0))
+                out.error = arg + " needs a whole number" + (allowZero ? "" : " >= 1") + ", got '" + text + "'";
+            else
+                into = v;
+        };
+        if (arg == "--help" || arg == "-h") {
+            a.command = "help";
+            return out;
+        }
+        if (arg == "--version") {
+            a.command = "version";
+            return out;
+        }
+        if (arg == "--quiet" || arg == "-q") a.quiet = true;
+        else if (arg == "--json") a.json = true;
+        else if (arg == "--frames") count(a.frames, true);
+        else if (arg == "--seed") count(a.seed, true);
+        else if (arg == "--agents") count(a.agents, false);
+        else if (arg == "--steps") count(a.steps, false);
+        else if (arg == "--threads") {
+            std::optional<std::uint64_t> t;
+            count(t, false);
+            if (t && *t > 1024)
+                out.error = "--threads must be at most 1024";
+            else if (t)
+                a.threads = int(*t);
+        } else if (arg == "--stats") value(a.statsPath);
+        else if (arg == "--trajectories") value(a.trajectoriesPath);
+        else if (arg == "--export") value(a.exportPath);
+        else if (arg == "--scenario") value(a.scenario);
+        else if (arg.size() > 1 && arg[0] == '-') out.error = "unknown option '" + arg + "'";
+        else positional.push_back(arg);
+        if (!out.error.empty())
+            return out;
+    }
+    if (positional.empty()) {
+        out.error = "no command given";
+        return out;
+    }
+    a.command = positional[0];
+    if (a.command == "help" || a.command == "version")
+        return out;
+    if (a.command == "check" || a.command == "run") {
+        if (positional.size() != 2) {
+            out.error = a.command + " takes exactly one SCENE file";
+            return out;
+        }
+        a.scene = positional[1];
+    } else if (a.command == "bench") {
+        if (positional.size() != 1)
+            out.error = "bench takes no file";
+    } else {
+        out.error = "unknown command '" + a.command + "'";
+    }
+    if (out.error.empty() && a.command != "run" &&
+        (!a.statsPath.empty() || !a.trajectoriesPath.empty() || !a.exportPath.empty() || a.frames))
+        out.error = "--frames, --stats, --trajectories and --export belong to 'run'";
+    return out;
+}
+
+}  // namespace throng::cli

@@ -1,0 +1,68 @@
+#include "CliCommands.h"
+#include "Progress.h"
+#include "RunOutputs.h"
+
+#include "simcore/io/SceneIO.h"
+#include "simcore/world/FrameCache.h"
+#include "simcore/world/RunStats.h"
+#include "simcore/world/World.h"
+
+#include <chrono>
+#include <cmath>
+#include <ostream>
+
+namespace throng::cli {
+
+int runCommand(const CliArguments& args, std::ostream& out, std::ostream& err)
+{
+    const sim::LoadResult loaded = sim::loadScene(args.scene);
+    for (const sim::Diagnostic& d : loaded.diagnostics)
+        err << d.format() << '\n';
+    if (!loaded.ok()) {
+        err << "throng-cli: " << args.scene << " is not a valid scene; nothing was run\n";
+        return 1;
+    }
+    const sim::Scene& scene = loaded.scene;
+    const std::uint64_t frames =
+        args.frames ? *args.frames
+                    : std::max<std::uint64_t>(1, std::uint64_t(std::llround(double(scene.settings.durationS) *
+                                                                             double(scene.settings.fps))));
+    if (frames == 0) {
+        err << "throng-cli: --frames must be at least 1 (frame 0 is the initial state)\n";
+        return 2;
+    }
+    sim::WorldOptions options;
+    options.threads = args.threads;
+    if (args.seed) {
+        options.overrideSeed = true;
+        options.seed = *args.seed;
+    }
+    sim::World world(scene, options);
+
+    const bool record = !args.trajectoriesPath.empty() || !args.exportPath.empty();
+    sim::FrameCache cache;
+    if (record)
+        world.startRecording(cache);
+    std::vector<sim::AgentFrame> frame;
+
+    Progress progress(err, "simulating", frames - 1, !args.quiet && world.agentCount() * frames > 2'000'000);
+    const auto start = std::chrono::steady_clock::now();
+    for (std::uint64_t f = 1; f < frames; ++f) {
+        world.step();
+        if (record) {
+            world.snapshot(frame);
+            cache.append(frame);
+        }
+        progress.update(f);
+    }
+    progress.finish();
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const sim::RunStats stats = sim::RunStats::from(world, frames, seconds);
+
+    out << "simulated " << stats.agents << " agents for " << frames << " frames (" << world.timeS()
+        << " s at " << scene.settings.fps << " fps) in " << seconds << " s: " << stats.agentStepsPerSecond
+        << " agent-steps/s\n";
+    return writeRunOutputs(args, scene, cache, stats, out, err) ? 0 : 1;
+}
+
+}  // namespace throng::cli

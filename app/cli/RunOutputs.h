@@ -1,0 +1,19 @@
+#pragma once
+// Writes what `throng-cli run` was asked for (stats JSON, trajectories CSV, glTF) and
+// says where each went. Every file is written atomically.
+
+#include "CliArguments.h"
+
+#include "simcore/scene/Scene.h"
+#include "simcore/world/FrameCache.h"
+#include "simcore/world/RunStats.h"
+
+#include <iosfwd>
+
+namespace throng::cli {
+
+// False when any requested output could not be written (the reason is on `err`).
+bool writeRunOutputs(const CliArguments& args, const sim::Scene& scene, const sim::FrameCache& cache,
+                     const sim::RunStats& stats, std::ostream& out, std::ostream& err);
+
+}  // namespace throng::cli
