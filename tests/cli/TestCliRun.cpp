@@ -1,0 +1,150 @@
+// `throng-cli run` as a pipeline uses it: the stats JSON, the trajectories CSV, the
+// export, --frames/--seed/--threads, and nothing written for an invalid scene.
+#include "CliRunner.h"
+#include "TestRegistry.h"
+
+#include <QDir>
+#include <QFile>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTemporaryDir>
+#include <QTest>
+
+using throng::test::runCli;
+
+namespace {
+
+const char* kScene = R"(throng: 1
+settings: {fps: 10, duration: 3, seed: 4}
+agent_types: [{name: walker, max_speed: 1.5, max_force: 6}]
+goals: [{name: exit, position: [8, 0], radius: 1}]
+walls: [{points: [[4, -20], [4, -1.5]]}, {points: [[4, 1.5], [4, 20]]}]
+groups: [{name: g, type: walker, count: 40, rect: {min: [-6, -5], max: [0, 5]}, goal: exit}]
+)";
+
+QJsonObject readJson(const QString& path)
+{
+    QFile f(path);
+    if (!f.open(QIODevice::ReadOnly))
+        return {};
+    return QJsonDocument::fromJson(f.readAll()).object();
+}
+
+QStringList readLines(const QString& path)
+{
+    QFile f(path);
+    if (!f.open(QIODevice::ReadOnly | QIODevice::Text))
+        return {};
+    return QString::fromUtf8(f.readAll()).split('\n', Qt::SkipEmptyParts);
+}
+
+}  // namespace
+
+class TestCliRun : public QObject {
+    Q_OBJECT
+private slots:
+    void statsCarryTheContractFigures()
+    {
+        QTemporaryDir tmp;
+        const QString scene = throng::test::writeText(tmp.filePath("s.yaml"), kScene);
+        const QString stats = tmp.filePath("stats.json");
+        const auto r = runCli({"run", scene.toStdString(), "--stats", stats.toStdString(), "--quiet"});
+        QCOMPARE(r.status, 0);
+        QVERIFY(r.out.find("stats: " + stats.toStdString()) != std::string::npos);
+        const QJsonObject o = readJson(stats);
+        QCOMPARE(o["agents"].toInt(), 40);
+        QCOMPARE(o["frames"].toInt(), 30);  // duration 3 s x 10 fps
+        QCOMPARE(o["seed"].toInt(), 4);
+        QVERIFY(o["wall_seconds"].toDouble() > 0.0);
+        QVERIFY(o["agent_steps_per_second"].toDouble() > 0.0);
+        QCOMPARE(o["wall_penetrations"].toInt(), 0);
+        QCOMPARE(o["non_finite_values"].toInt(), 0);
+        for (const char* key : {"obstacle_penetrations", "overlapping_pairs", "red_light_violations", "arrived"})
+            QVERIFY2(o.contains(key), key);
+    }
+
+    void framesSeedAndThreads()
+    {
+        QTemporaryDir tmp;
+        const QString scene = throng::test::writeText(tmp.filePath("s.yaml"), kScene);
+        auto csvFor = [&](const char* name, std::vector<std::string> extra) {
+            const QString csv = tmp.filePath(name);
+            std::vector<std::string> args{"run", scene.toStdString(), "--trajectories", csv.toStdString(), "--quiet"};
+            args.insert(args.end(), extra.begin(), extra.end());
+            const auto r = runCli(args);
+            if (r.status != 0)
+                qWarning("%s", r.err.c_str());
+            return readLines(csv);
+        };
+        const QStringList one = csvFor("one.csv", {"--frames", "12", "--threads", "1"});
+        QCOMPARE(one.size(), 1 + 12 * 40);
+        QCOMPARE(one[0], QString("frame,agent,x,y,z,heading,speed,clip,phase"));
+        QVERIFY(one[1].startsWith("0,1,"));
+        QVERIFY(one.last().startsWith("11,40,"));
+        // Same seed, two threads: byte-identical trajectories.
+        QCOMPARE(csvFor("two.csv", {"--frames", "12", "--threads", "2"}), one);
+        // Another seed spawns another crowd.
+        QVERIFY(csvFor("seed.csv", {"--frames", "12", "--seed", "99"}) != one);
+    }
+
+    void exportWritesAGlb()
+    {
+        QTemporaryDir tmp;
+        const QString scene = throng::test::writeText(tmp.filePath("s.yaml"), kScene);
+        const QString glb = tmp.filePath("crowd.glb");
+        const auto r = runCli({"run", scene.toStdString(), "--frames", "20", "--export", glb.toStdString(), "--quiet"});
+        QCOMPARE(r.status, 0);
+        QFile f(glb);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        QCOMPARE(f.read(4), QByteArray("glTF"));
+        QVERIFY(f.size() > 1000);
+    }
+
+    void invalidSceneRunsNothingAndWritesNothing()
+    {
+        QTemporaryDir tmp;
+        const QString scene = throng::test::writeText(tmp.filePath("bad.yaml"), "throng: 1\nagents: [{type: ghost}]\n");
+        const auto r = runCli({"run", scene.toStdString(), "--stats", tmp.filePath("s.json").toStdString()});
+        QCOMPARE(r.status, 1);
+        QVERIFY(r.err.find("bad.yaml:2:") != std::string::npos);
+        QVERIFY(!QFile::exists(tmp.filePath("s.json")));
+    }
+
+    void unwritableOutputFailsClearly()
+    {
+        QTemporaryDir tmp;
+        const QString scene = throng::test::writeText(tmp.filePath("s.yaml"), kScene);
+        const auto r = runCli({"run", scene.toStdString(), "--frames", "2", "--stats", "/no/such/dir/s.json"});
+        QCOMPARE(r.status, 1);
+        QVERIFY2(r.err.find("/no/such/dir/s.json") != std::string::npos, r.err.c_str());
+    }
+
+    void progressOnStderrUnlessQuiet()
+    {
+        QTemporaryDir tmp;
+        const QString scene = throng::test::writeText(tmp.filePath("s.yaml"), kScene);
+        // 40 agents x 60,000 frames passes the "long run" threshold.
+        auto r = runCli({"run", scene.toStdString(), "--frames", "60000", "--threads", "1"});
+        QCOMPARE(r.status, 0);
+        QVERIFY2(r.err.find("simulating") != std::string::npos && r.err.find("100%") != std::string::npos,
+                 r.err.c_str());
+        r = runCli({"run", scene.toStdString(), "--frames", "60000", "--threads", "1", "--quiet"});
+        QVERIFY(r.err.empty());
+    }
+
+    void benchPrintsJson()
+    {
+        const auto r = runCli({"bench", "--agents", "500", "--steps", "20", "--scenario", "corridor", "--quiet"});
+        QCOMPARE(r.status, 0);
+        const QJsonObject o = QJsonDocument::fromJson(QByteArray::fromStdString(r.out)).object();
+        QCOMPARE(o["scenario"].toString(), QString("corridor"));
+        QCOMPARE(o["agents"].toInt(), 500);
+        QCOMPARE(o["steps"].toInt(), 20);
+        for (const char* key : {"seconds", "agent_steps_per_second", "ms_per_step", "peak_memory_bytes_per_agent",
+                                "overlapping_pairs_per_step", "fraction_arrived", "wall_penetrations"})
+            QVERIFY2(o.contains(key), key);
+    }
+};
+
+THRONG_REGISTER_TEST(TestCliRun)
+#include "TestCliRun.moc"

@@ -1,0 +1,22 @@
+#pragma once
+// Loads an exported .gltf/.glb back with tinygltf and reads its animation the way an
+// importer would: accessor floats, and the sampler animating one node's property.
+// Test-only.
+
+#include <tiny_gltf.h>
+
+#include <string>
+#include <vector>
+
+namespace throng::test {
+
+// Loads .glb or .gltf by extension; false with `error` set when tinygltf refuses it.
+bool loadGltf(const std::string& path, tinygltf::Model& model, std::string& error);
+// Every float of a FLOAT accessor, tightly packed (count x components).
+std::vector<float> accessorFloats(const tinygltf::Model& model, int accessor);
+// The sampler of the first animation's channel targeting `node`'s `path`, or nullptr.
+const tinygltf::AnimationSampler* samplerFor(const tinygltf::Model& model, int node, const std::string& path);
+// Index of the node named `name`, or -1.
+int nodeNamed(const tinygltf::Model& model, const std::string& name);
+
+}  // namespace throng::test
