@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages Throng needs that are missing; does nothing (and needs
+# no network) when all are there. Usage: scripts/deps.sh [build|test]
+set -euo pipefail
+
+packages=(g++ cmake ninja-build pkg-config
+          qt6-base-dev qt6-base-dev-tools libqt6opengl6-dev
+          libyaml-cpp-dev libglm-dev libtinygltf-dev
+          libgl-dev libgl1-mesa-dri libglx-mesa0)
+if [ "${1:-build}" = test ]; then
+  packages+=(xvfb xauth)
+fi
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+
+sudo=""
+if [ "$(id -u)" != 0 ]; then
+  command -v sudo >/dev/null || { echo "deps: need root or sudo to install: ${missing[*]}" >&2; exit 1; }
+  sudo=sudo
+fi
+echo "deps: installing ${missing[*]}" >&2
+export DEBIAN_FRONTEND=noninteractive
+$sudo apt-get update -q >&2
+$sudo apt-get install -y -q --no-install-recommends "${missing[@]}" >&2
