@@ -21,34 +21,47 @@ AgentType walker()
 
 Scene makeCrossScenario(std::uint32_t agents, std::uint64_t seed)
 {
+    // The same layout as the DetourCrowd peer's `circle` scenario (shared/peers), so the
+    // two can be compared: concentric rings 3 radii apart, spacing 3 radii along a ring,
+    // goal = the antipodal point, on a square of 400 m for 10,000 agents (same density
+    // for other counts), agent radius 0.5 m, 1.4 m/s.
     Scene s;
     s.settings.seed = seed;
-    // Circumference gives each agent about 1 m of the circle, so density stays fixed as N grows.
-    const float radius = std::max(5.0f, float(agents) * 1.0f / 6.2831853f);
-    s.settings.boundsMin = glm::vec2(-radius - 5.0f);
-    s.settings.boundsMax = glm::vec2(radius + 5.0f);
-    s.settings.durationS = 2.0f * radius / 1.2f + 20.0f;
-    s.agentTypes.push_back(walker());
+    const float agentRadius = 0.5f, spacing = 3.0f * agentRadius;
+    const float half = 200.0f * std::sqrt(std::max(1.0f, float(agents) / 10000.0f));
+    s.settings.boundsMin = glm::vec2(-half);
+    s.settings.boundsMax = glm::vec2(half);
+    AgentType t = walker();
+    t.radiusM = agentRadius;
+    t.variation.speedFactor = {1.0f, 1.0f};
+    s.agentTypes.push_back(t);
     s.agents.reserve(agents);
     s.goals.reserve(agents);
-    for (std::uint32_t i = 0; i < agents; ++i) {
-        const float a = 6.2831853f * float(i) / float(agents);
-        const glm::vec2 p(radius * std::cos(a), radius * std::sin(a));
-        Goal g;
-        // Appending (not "g" + to_string) sidesteps GCC 12's false -Wrestrict warning.
-        g.name = "g";
-        g.name += std::to_string(i);
-        g.position = -p;
-        g.radiusM = 0.5f;
-        s.goals.push_back(g);
-        Agent agent;
-        agent.id = i + 1;
-        agent.type = "walker";
-        agent.position = glm::vec3(p.x, 0.0f, p.y);
-        agent.headingDeg = std::fmod(a * 57.29578f + 180.0f, 360.0f);
-        agent.goal = g.name;
-        s.agents.push_back(agent);
+    float ring = half - 10.0f;
+    std::uint32_t placed = 0;
+    while (placed < agents && ring > spacing) {
+        const auto onRing = std::min<std::uint32_t>(agents - placed, std::uint32_t(std::floor(6.2831853f * ring / spacing)));
+        for (std::uint32_t k = 0; k < onRing; ++k, ++placed) {
+            const float a = 6.2831853f * float(k) / float(onRing) + 0.37f * ring;
+            const glm::vec2 p(ring * std::cos(a), ring * std::sin(a));
+            Goal g;
+            // Appending (not "g" + to_string) sidesteps GCC 12's false -Wrestrict warning.
+            g.name = "g";
+            g.name += std::to_string(placed);
+            g.position = -p;
+            g.radiusM = 0.5f;
+            s.goals.push_back(g);
+            Agent agent;
+            agent.id = placed + 1;
+            agent.type = "walker";
+            agent.position = glm::vec3(p.x, 0.0f, p.y);
+            agent.headingDeg = std::atan2(p.y, -p.x) * 57.2957795f;  // facing the centre
+            agent.goal = g.name;
+            s.agents.push_back(agent);
+        }
+        ring -= spacing;
     }
+    s.settings.durationS = 2.0f * half / 1.4f + 30.0f;
     return s;
 }
 

@@ -10,7 +10,8 @@
 
 namespace throng::sim {
 
-// `cross`: agents on a circle walk to the antipodal point (the classic avoidance test).
+// `cross`: agents on concentric rings walk to the antipodal point (the classic avoidance
+// test), laid out like the DetourCrowd peer's `circle` scenario.
 Scene makeCrossScenario(std::uint32_t agents, std::uint64_t seed = 1);
 // `corridor`: two groups walk in opposite directions between two long walls.
 Scene makeCorridorScenario(std::uint32_t agents, std::uint64_t seed = 1);

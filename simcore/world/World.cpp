@@ -61,9 +61,10 @@ World::World(const Scene& scene, const WorldOptions& options)
                            weightOf(t, "separation", kDefaultSeparation)});
         maxPerception = std::max(maxPerception, std::min(t.perceptionM, 4.0f * t.radiusM + 1.0f));
     }
+    std::vector<Segment> segments;
     for (const Wall& w : scene.walls)
         for (std::size_t k = 0; k + 1 < w.points.size(); ++k)
-            m_walls.push_back({w.points[k], w.points[k + 1]});
+            segments.push_back({w.points[k], w.points[k + 1]});
     for (const Obstacle& o : scene.obstacles) {
         if (o.shape == ObstacleShape::Circle) {
             m_circles.push_back({o.center, o.radiusM});
@@ -75,8 +76,9 @@ World::World(const Scene& scene, const WorldOptions& options)
         const glm::vec2 c[4] = {o.center - ax * h.x - az * h.y, o.center + ax * h.x - az * h.y,
                                 o.center + ax * h.x + az * h.y, o.center - ax * h.x + az * h.y};
         for (int k = 0; k < 4; ++k)
-            m_walls.push_back({c[k], c[(k + 1) % 4]});
+            segments.push_back({c[k], c[(k + 1) % 4]});
     }
+    m_walls.build(segments, 4.0f);
     m_goals = scene.goals;
     m_paths = scene.paths;
     m_lights = scene.trafficLights;

@@ -6,6 +6,7 @@
 #include "simcore/scene/Scene.h"
 #include "simcore/world/FrameCache.h"
 #include "simcore/world/NeighbourGrid.h"
+#include "simcore/world/SegmentGrid.h"
 #include "simcore/world/StepCounters.h"
 
 #include <glm/vec3.hpp>
@@ -75,9 +76,8 @@ private:
         float separation;  // weight of separation, 0 = off
     };
     std::vector<TypeParams> m_types;
-    struct Segment { glm::vec2 a, b; };
     struct CircleObstacle { glm::vec2 c; float r; };
-    std::vector<Segment> m_walls;                // box obstacles are added as their 4 sides
+    SegmentGrid m_walls;  // walls and the 4 sides of box obstacles
     std::vector<CircleObstacle> m_circles;
     std::vector<Goal> m_goals;
     std::vector<Path> m_paths;

@@ -83,19 +83,24 @@ void World::constrain(std::size_t i, glm::vec3 from, glm::vec3& to) const
     glm::vec2 p = xz(to);
     const glm::vec2 p0 = xz(from);
     // A move that would cross a wall stops where it started (no tunnelling at any speed).
-    for (const Segment& s : m_walls)
-        if (segmentsCross(p0, p, s.a, s.b)) {
-            p = p0;
-            break;
-        }
+    const glm::vec2 mid = (p0 + p) * 0.5f;
+    const float reach = 0.5f * glm::length(p - p0) + r + 0.01f;
+    bool crossed = false;
+    m_walls.forEachNear(mid, reach, [&](std::uint32_t k) {
+        const Segment& s = m_walls.segment(k);
+        crossed = crossed || segmentsCross(p0, p, s.a, s.b);
+    });
+    if (crossed)
+        p = p0;
     // Then push the body out of walls and obstacles it overlaps; two passes settle corners.
     for (int pass = 0; pass < 2; ++pass) {
-        for (const Segment& s : m_walls) {
+        m_walls.forEachNear(p, r, [&](std::uint32_t k) {
+            const Segment& s = m_walls.segment(k);
             const glm::vec2 c = closestOnSegment(p, s.a, s.b);
             const glm::vec2 d = p - c;
             const float dist2 = glm::dot(d, d);
             if (dist2 >= r * r)
-                continue;
+                return;
             glm::vec2 n;
             if (dist2 > 1e-12f) {
                 n = d / std::sqrt(dist2);
@@ -108,7 +113,7 @@ void World::constrain(std::size_t i, glm::vec3 from, glm::vec3& to) const
             const glm::vec2 candidate = c + n * r;
             if (!segmentsCross(p0, candidate, s.a, s.b))
                 p = candidate;
-        }
+        });
         for (const CircleObstacle& o : m_circles) {
             const glm::vec2 d = p - o.c;
             const float dist = glm::length(d);
@@ -172,9 +177,12 @@ void World::step()
     std::uint64_t crossings = 0;
 #pragma omp parallel for schedule(static) num_threads(m_threads) reduction(+ : crossings)
     for (std::size_t i = 0; i < n; ++i) {
-        for (const Segment& s : m_walls)
-            if (segmentsCross(xz(m_pos[i]), xz(m_nextPos[i]), s.a, s.b))
+        const glm::vec2 from = xz(m_pos[i]), to = xz(m_nextPos[i]);
+        m_walls.forEachNear((from + to) * 0.5f, 0.5f * glm::length(to - from) + 0.01f, [&](std::uint32_t k) {
+            const Segment& s = m_walls.segment(k);
+            if (segmentsCross(from, to, s.a, s.b))
                 ++crossings;
+        });
         const float moved = glm::length(xz(m_nextPos[i]) - xz(m_pos[i]));
         // Animate: the gait advances by distance over stride length, so feet don't slide.
         m_phase[i] = std::fmod(m_phase[i] + moved / m_stride[i], 1.0f);

@@ -1,0 +1,76 @@
+#pragma once
+// Static line segments (walls, box obstacle sides) bucketed into a uniform grid once,
+// so an agent asks only about the segments near it. Built at World compile time;
+// never changes during a step and never allocates in a query.
+
+#include <glm/vec2.hpp>
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace throng::sim {
+
+struct Segment {
+    glm::vec2 a{0.0f}, b{0.0f};
+};
+
+class SegmentGrid {
+public:
+    // cellM: cell edge in metres, > 0 (a few agent radii works well).
+    void build(std::span<const Segment> segments, float cellM);
+
+    // Calls f(segmentIndex) once for each segment whose cells overlap the square
+    // [p - r, p + r]. Indices come in ascending order, so results never depend on how
+    // segments were bucketed.
+    template <typename F>
+    void forEachNear(glm::vec2 p, float r, F&& f) const
+    {
+        if (m_segments.empty())
+            return;
+        const int x0 = cellX(p.x - r), x1 = cellX(p.x + r), z0 = cellZ(p.y - r), z1 = cellZ(p.y + r);
+        if (x1 < 0 || z1 < 0 || x0 >= m_cols || z0 >= m_rows)
+            return;
+        if (x0 == x1 && z0 == z1) {  // the common case: one cell, already sorted and unique
+            const std::size_t c = std::size_t(z0) * std::size_t(m_cols) + std::size_t(x0);
+            for (std::uint32_t k = m_start[c]; k < m_start[c + 1]; ++k)
+                f(m_items[k]);
+            return;
+        }
+        // Several cells: merge their sorted lists, skipping repeats.
+        std::uint32_t last = UINT32_MAX;
+        for (;;) {
+            std::uint32_t best = UINT32_MAX;
+            for (int z = std::max(z0, 0); z <= std::min(z1, m_rows - 1); ++z)
+                for (int x = std::max(x0, 0); x <= std::min(x1, m_cols - 1); ++x) {
+                    const std::size_t c = std::size_t(z) * std::size_t(m_cols) + std::size_t(x);
+                    for (std::uint32_t k = m_start[c]; k < m_start[c + 1]; ++k)
+                        if (m_items[k] > last || last == UINT32_MAX) {
+                            if (m_items[k] < best)
+                                best = m_items[k];
+                            break;
+                        }
+                }
+            if (best == UINT32_MAX)
+                return;
+            f(best);
+            last = best;
+        }
+    }
+
+    const std::vector<Segment>& segments() const { return m_segments; }
+    const Segment& segment(std::uint32_t i) const { return m_segments[i]; }
+
+private:
+    int cellX(float x) const;
+    int cellZ(float z) const;
+
+    std::vector<Segment> m_segments;
+    glm::vec2 m_min{0.0f};
+    float m_inv = 1.0f;
+    int m_cols = 0, m_rows = 0;
+    std::vector<std::uint32_t> m_start;  // prefix sums, cols*rows + 1
+    std::vector<std::uint32_t> m_items;  // segment indices, ascending within a cell
+};
+
+}  // namespace throng::sim
