@@ -1,5 +1,6 @@
 #include "simcore/world/World.h"
 
+#include "simcore/traffic/LightPhase.h"
 #include "simcore/world/Rng.h"
 
 #include <glm/geometric.hpp>
@@ -197,14 +198,7 @@ std::size_t World::agentsWithGoal() const
 
 int World::lightState(std::size_t light) const
 {
-    const TrafficLight& l = m_lights[light];
-    const double cycle = double(l.greenS) + l.yellowS + l.redS;
-    double t = std::fmod(timeS() + l.offsetS, cycle);
-    if (t < 0.0)
-        t += cycle;
-    if (t < l.greenS)
-        return 0;
-    return t < double(l.greenS) + l.yellowS ? 1 : 2;
+    return int(lightPhaseAt(m_lights[light], timeS()));
 }
 
 void World::snapshot(std::vector<AgentFrame>& out) const

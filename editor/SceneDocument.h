@@ -1,0 +1,52 @@
+#pragma once
+// The open scene: owns the sim::Scene, its undo stack and its file path, and tells views
+// when the scene is replaced or edited. Loading never half-loads; it never draws.
+
+#include "simcore/io/Diagnostic.h"
+#include "simcore/io/SceneIO.h"
+#include "simcore/scene/Scene.h"
+
+#include <QObject>
+#include <QString>
+#include <QUndoStack>
+
+#include <vector>
+
+namespace throng::editor {
+
+class SceneDocument : public QObject {
+    Q_OBJECT
+
+public:
+    explicit SceneDocument(QObject* parent = nullptr);
+
+    const sim::Scene& scene() const { return m_scene; }
+    QUndoStack* undoStack() { return &m_undoStack; }
+    // Absolute path of the scene file; empty for a scene never saved.
+    QString filePath() const { return m_filePath; }
+    bool isModified() const { return !m_undoStack.isClean(); }
+
+    // Reads and validates `path`. Returns every diagnostic (warnings included). With an
+    // error the current scene, path and undo history stay as they were; otherwise the
+    // file replaces them and sceneReset() is emitted.
+    std::vector<sim::Diagnostic> load(const QString& path);
+    // Writes the scene to its file (fails when it has none) or to `path`, atomically;
+    // on success the document takes that path and is no longer modified.
+    sim::SaveResult save();
+    sim::SaveResult saveAs(const QString& path);
+
+signals:
+    // The whole scene was replaced (opened); views rebuild everything.
+    void sceneReset();
+    // Part of the scene was edited through a command.
+    void sceneChanged();
+    void filePathChanged(const QString& path);
+    void modifiedChanged(bool modified);
+
+private:
+    sim::Scene m_scene;
+    QUndoStack m_undoStack;
+    QString m_filePath;
+};
+
+}  // namespace throng::editor

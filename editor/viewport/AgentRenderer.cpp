@@ -1,0 +1,154 @@
+#include "editor/viewport/AgentRenderer.h"
+
+#include "editor/viewport/AgentGlyphMesh.h"
+#include "editor/viewport/ShaderProgram.h"
+#include "editor/viewport/ViewportPalette.h"
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <QOpenGLFunctions_3_3_Core>
+
+#include <cstddef>
+
+namespace throng::editor {
+
+namespace {
+
+// Heading h turns the glyph's +x nose to (cos h, 0, -sin h): counter-clockwise about +y
+// seen from above, as the scene defines headings.
+const char* const kVertexShader = R"(#version 330 core
+layout(location = 0) in vec3 a_position;
+layout(location = 1) in vec3 a_normal;
+layout(location = 2) in float a_part;
+layout(location = 3) in vec4 i_positionHeading;
+layout(location = 4) in vec4 i_radiusColour;
+uniform mat4 u_viewProjection;
+uniform float u_minRadiusAtW1;
+uniform float u_heightScale;
+out vec3 v_colour;
+out vec3 v_normal;
+flat out int v_part;
+void main()
+{
+    vec3 centre = i_positionHeading.xyz;
+    float c = cos(i_positionHeading.w), s = sin(i_positionHeading.w);
+    float w = (u_viewProjection * vec4(centre, 1.0)).w;
+    float radius = max(i_radiusColour.x, u_minRadiusAtW1 * w);
+    float height = u_heightScale * clamp(5.5 * i_radiusColour.x, 0.5, 1.8);
+    vec2 local = a_position.xz * radius;
+    vec3 p = centre + vec3(local.x * c + local.y * s, a_position.y * height, -local.x * s + local.y * c);
+    v_normal = vec3(a_normal.x * c + a_normal.z * s, a_normal.y, -a_normal.x * s + a_normal.z * c);
+    v_colour = i_radiusColour.yzw;
+    v_part = int(a_part + 0.5);
+    gl_Position = u_viewProjection * vec4(p, 1.0);
+}
+)";
+
+const char* const kFragmentShader = R"(#version 330 core
+in vec3 v_colour;
+in vec3 v_normal;
+flat in int v_part;
+uniform bool u_lit;
+uniform vec3 u_noseColour;
+out vec4 o_colour;
+void main()
+{
+    vec3 colour = v_part == 2 ? u_noseColour : (v_part == 1 ? v_colour * 0.55 : v_colour);
+    if (u_lit) {
+        vec3 light = normalize(vec3(0.35, 1.0, 0.25));
+        colour *= 0.45 + 0.55 * max(dot(normalize(v_normal), light), 0.0);
+    }
+    o_colour = vec4(colour, 1.0);
+}
+)";
+
+}  // namespace
+
+bool AgentRenderer::initialize(QOpenGLFunctions_3_3_Core& gl)
+{
+    m_program = buildShaderProgram("agent", kVertexShader, kFragmentShader);
+    if (!m_program)
+        return false;
+    gl.glGenBuffers(1, &m_instances);
+    createShape(gl, m_flat, false);
+    createShape(gl, m_prism, true);
+    return true;
+}
+
+void AgentRenderer::createShape(QOpenGLFunctions_3_3_Core& gl, Shape& shape, bool prism)
+{
+    const std::vector<GlyphVertex> vertices = prism ? AgentGlyphMesh::prism() : AgentGlyphMesh::flat();
+    shape.vertexCount = int(vertices.size());
+    gl.glGenVertexArrays(1, &shape.vao);
+    gl.glGenBuffers(1, &shape.vbo);
+    gl.glBindVertexArray(shape.vao);
+    gl.glBindBuffer(GL_ARRAY_BUFFER, shape.vbo);
+    gl.glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices.size() * sizeof(GlyphVertex)), vertices.data(),
+                    GL_STATIC_DRAW);
+    constexpr GLsizei stride = sizeof(GlyphVertex);
+    gl.glEnableVertexAttribArray(0);
+    gl.glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride,
+                             reinterpret_cast<const void*>(offsetof(GlyphVertex, position)));
+    gl.glEnableVertexAttribArray(1);
+    gl.glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride,
+                             reinterpret_cast<const void*>(offsetof(GlyphVertex, normal)));
+    gl.glEnableVertexAttribArray(2);
+    gl.glVertexAttribPointer(2, 1, GL_FLOAT, GL_FALSE, stride,
+                             reinterpret_cast<const void*>(offsetof(GlyphVertex, part)));
+
+    gl.glBindBuffer(GL_ARRAY_BUFFER, m_instances);
+    constexpr GLsizei instanceStride = sizeof(AgentGlyph);
+    gl.glEnableVertexAttribArray(3);
+    gl.glVertexAttribPointer(3, 4, GL_FLOAT, GL_FALSE, instanceStride,
+                             reinterpret_cast<const void*>(offsetof(AgentGlyph, position)));
+    gl.glVertexAttribDivisor(3, 1);
+    gl.glEnableVertexAttribArray(4);
+    gl.glVertexAttribPointer(4, 4, GL_FLOAT, GL_FALSE, instanceStride,
+                             reinterpret_cast<const void*>(offsetof(AgentGlyph, radiusM)));
+    gl.glVertexAttribDivisor(4, 1);
+    gl.glBindVertexArray(0);
+}
+
+void AgentRenderer::destroy(QOpenGLFunctions_3_3_Core& gl)
+{
+    for (Shape* shape : {&m_flat, &m_prism}) {
+        gl.glDeleteBuffers(1, &shape->vbo);
+        gl.glDeleteVertexArrays(1, &shape->vao);
+        *shape = {};
+    }
+    gl.glDeleteBuffers(1, &m_instances);
+    m_instances = 0;
+    m_instanceCount = 0;
+    m_program.reset();
+}
+
+void AgentRenderer::upload(QOpenGLFunctions_3_3_Core& gl, std::span<const AgentGlyph> glyphs)
+{
+    static_assert(sizeof(AgentGlyph) == 8 * sizeof(float), "the shader reads two vec4 per instance");
+    if (!m_program)
+        return;
+    gl.glBindBuffer(GL_ARRAY_BUFFER, m_instances);
+    gl.glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(glyphs.size_bytes()), glyphs.data(), GL_DYNAMIC_DRAW);
+    m_instanceCount = int(glyphs.size());
+}
+
+void AgentRenderer::draw(QOpenGLFunctions_3_3_Core& gl, const RenderView& view)
+{
+    if (!m_program || m_instanceCount == 0)
+        return;
+    const Shape& shape = view.perspective ? m_prism : m_flat;
+    m_program->bind();
+    gl.glUniformMatrix4fv(m_program->uniformLocation("u_viewProjection"), 1, GL_FALSE,
+                          glm::value_ptr(view.viewProjection));
+    m_program->setUniformValue("u_minRadiusAtW1", kMinRadiusPx * view.metresPerPixel);
+    m_program->setUniformValue("u_heightScale", view.perspective ? 1.0f : 0.0f);
+    m_program->setUniformValue("u_lit", view.perspective);
+    const glm::vec4 nose = palette::kAgentNose;
+    m_program->setUniformValue("u_noseColour", nose.r, nose.g, nose.b);
+    gl.glBindVertexArray(shape.vao);
+    gl.glDrawArraysInstanced(GL_TRIANGLES, 0, shape.vertexCount, m_instanceCount);
+    gl.glBindVertexArray(0);
+    m_program->release();
+}
+
+}  // namespace throng::editor

@@ -1,0 +1,36 @@
+#pragma once
+// Turns the set of a scene (bounds, lanes, crosswalks, paths, goals, obstacles, walls,
+// spawn areas, flow strokes, traffic lights) into ShapeMesh triangles in draw order.
+// Reads plain scene data only; never touches GL or the simulation.
+
+#include "editor/viewport/ShapeMesh.h"
+#include "simcore/scene/Scene.h"
+
+#include <optional>
+#include <span>
+
+namespace throng::editor {
+
+class SetGeometryBuilder {
+public:
+    // The static set, back to front. Traffic lights are not included (see addLights).
+    static void addSet(const sim::Scene& scene, ShapeMesh& mesh);
+    // Signal heads and their stop lines coloured by the phase at `timeS`; grey when the
+    // time is unknown.
+    static void addLights(const sim::Scene& scene, std::optional<double> timeS, ShapeMesh& mesh);
+
+private:
+    static void addBounds(const sim::Settings& settings, ShapeMesh& mesh);
+    static void addLanes(std::span<const sim::Lane> lanes, ShapeMesh& mesh);
+    static void addCrosswalks(std::span<const sim::Crosswalk> crosswalks, ShapeMesh& mesh);
+    static void addSpawnAreas(std::span<const sim::SpawnGroup> groups, ShapeMesh& mesh);
+    static void addFlowStrokes(std::span<const sim::FlowStroke> strokes, ShapeMesh& mesh);
+    static void addPaths(std::span<const sim::Path> paths, ShapeMesh& mesh);
+    static void addGoals(std::span<const sim::Goal> goals, ShapeMesh& mesh);
+    static void addObstacles(std::span<const sim::Obstacle> obstacles, ShapeMesh& mesh);
+    static void addWalls(std::span<const sim::Wall> walls, ShapeMesh& mesh);
+    static void addChevrons(std::span<const glm::vec2> points, bool closed, float sizeM, glm::vec4 colour,
+                            ShapeMesh& mesh);
+};
+
+}  // namespace throng::editor

@@ -1,0 +1,315 @@
+#include "editor/viewport/Viewport.h"
+
+#include "editor/viewport/SetGeometryBuilder.h"
+#include "editor/viewport/ViewportPalette.h"
+#include "simcore/world/World.h"
+
+#include <QDebug>
+#include <QKeyEvent>
+#include <QMouseEvent>
+#include <QOpenGLContext>
+#include <QWheelEvent>
+
+#include <algorithm>
+#include <cmath>
+#include <exception>
+
+namespace throng::editor {
+
+namespace {
+constexpr float kWheelZoomPerDegree = 1.01f;  // one 15-degree notch zooms by about 16 %
+constexpr float kFallbackRadiusM = 0.3f;
+}  // namespace
+
+Viewport::Viewport(QWidget* parent) : QOpenGLWidget(parent)
+{
+    setFormat(surfaceFormat());
+    setFocusPolicy(Qt::StrongFocus);
+    setMinimumSize(160, 120);
+    setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Expanding);
+    setToolTip(tr("Pan: middle or right drag. Zoom: wheel. Orbit (3D): right drag. Frame all: F."));
+}
+
+Viewport::~Viewport()
+{
+    // ~QOpenGLWidget destroys the context after this object is gone: stop listening first.
+    if (context())
+        disconnect(context(), nullptr, this, nullptr);
+    makeCurrent();
+    releaseGl();
+    doneCurrent();
+}
+
+QSurfaceFormat Viewport::surfaceFormat()
+{
+    QSurfaceFormat format;
+    format.setRenderableType(QSurfaceFormat::OpenGL);
+    format.setVersion(3, 3);
+    format.setProfile(QSurfaceFormat::CoreProfile);
+    format.setDepthBufferSize(24);
+    format.setSamples(4);
+    return format;
+}
+
+void Viewport::setScene(const sim::Scene& scene)
+{
+    std::vector<sim::AgentFrame> frames;
+    std::vector<sim::AgentInfo> agents;
+    std::optional<double> timeS;
+    try {
+        const sim::World world(scene);
+        world.snapshot(frames);
+        agents = world.agentInfo();
+        timeS = world.timeS();
+    } catch (const std::exception& e) {
+        // The set still shows; only the agents and light states are missing.
+        qWarning().noquote() << "throng: cannot build the initial state:" << e.what();
+    }
+    setSet(scene);
+    setAgents(frames, agents, timeS, 0);
+}
+
+void Viewport::setScene(const sim::Scene& scene, const sim::World& state)
+{
+    std::vector<sim::AgentFrame> frames;
+    state.snapshot(frames);
+    setSet(scene);
+    setAgents(frames, state.agentInfo(), state.timeS(), std::size_t(state.stepIndex()));
+}
+
+void Viewport::showFrame(const sim::FrameCache& cache, std::size_t frame)
+{
+    if (frame >= cache.frameCount())
+        return;
+    setAgents(cache.frame(frame), cache.agents(), double(frame) / double(cache.fps()), frame);
+}
+
+void Viewport::setSet(const sim::Scene& scene)
+{
+    m_setMesh.clear();
+    SetGeometryBuilder::addSet(scene, m_setMesh);
+    m_setChanged = true;
+    m_traffic = {};
+    m_traffic.lanes = scene.lanes;
+    m_traffic.crosswalks = scene.crosswalks;
+    m_traffic.trafficLights = scene.trafficLights;
+    m_typeRadiusM.clear();
+    for (const sim::AgentType& t : scene.agentTypes)
+        m_typeRadiusM.push_back(t.radiusM);
+    m_boundsMin = scene.settings.boundsMin;
+    m_boundsMax = scene.settings.boundsMax;
+    m_grid.setBounds(m_boundsMin, m_boundsMax);
+    m_setBox = setExtent(scene);
+    m_frameOnNextPaint = true;
+    m_cameraMovedByUser = false;
+}
+
+void Viewport::setAgents(std::span<const sim::AgentFrame> frames, std::span<const sim::AgentInfo> agents,
+                         std::optional<double> timeS, std::size_t frameIndex)
+{
+    m_glyphs.resize(std::min(frames.size(), agents.size()));
+    m_agentBox = {};
+    for (std::size_t i = 0; i < m_glyphs.size(); ++i) {
+        const std::size_t type = agents[i].typeIndex;
+        const float radius = type < m_typeRadiusM.size() ? m_typeRadiusM[type] : kFallbackRadiusM;
+        const glm::vec4 colour = palette::agentColour(type);
+        m_glyphs[i] = {frames[i].position, frames[i].headingRad, radius, glm::vec3(colour)};
+        m_agentBox.include({frames[i].position.x, frames[i].position.z}, radius);
+    }
+    m_agentsChanged = true;
+    m_timeS = timeS;
+    m_frameIndex = frameIndex;
+    m_lightMesh.clear();
+    SetGeometryBuilder::addLights(m_traffic, timeS, m_lightMesh);
+    m_lightsChanged = true;
+    emit agentsChanged();
+    update();
+}
+
+void Viewport::setViewMode(ViewMode mode)
+{
+    if (mode == m_camera.mode())
+        return;
+    m_camera.setMode(mode);
+    emit viewModeChanged(mode);
+    update();
+}
+
+GroundBox Viewport::framingBox() const
+{
+    GroundBox box = m_setBox;
+    box.include(m_agentBox);
+    if (box.empty) {
+        box.include(m_boundsMin);
+        box.include(m_boundsMax);
+    }
+    return box;
+}
+
+void Viewport::frameAll()
+{
+    m_camera.setViewportSize(size());
+    m_camera.frame(framingBox());
+    m_frameOnNextPaint = false;
+    m_cameraMovedByUser = false;
+    update();
+}
+
+QPointF Viewport::worldToPixel(glm::vec3 point) const
+{
+    CameraRig camera = m_camera;
+    camera.setViewportSize(size());
+    const glm::vec4 clip = camera.renderView().viewProjection * glm::vec4(point, 1.0f);
+    const glm::vec2 ndc = glm::vec2(clip) / clip.w;
+    return {(0.5 + 0.5 * double(ndc.x)) * width(), (0.5 - 0.5 * double(ndc.y)) * height()};
+}
+
+void Viewport::initializeGL()
+{
+    m_glReady = false;
+    const QSurfaceFormat got = context()->format();
+    const bool core33 = got.profile() == QSurfaceFormat::CoreProfile && got.version() >= qMakePair(3, 3);
+    if (!core33 || !initializeOpenGLFunctions()) {
+        m_glProblem = tr("OpenGL 3.3 core profile is not available (the context is %1.%2%3)")
+                          .arg(got.majorVersion())
+                          .arg(got.minorVersion())
+                          .arg(got.profile() == QSurfaceFormat::CoreProfile ? " core" : "");
+        qWarning().noquote() << "throng:" << m_glProblem;
+        return;
+    }
+    if (!m_grid.initialize(*this) || !m_setRenderer.initialize(*this) || !m_lightRenderer.initialize(*this) ||
+        !m_agentRenderer.initialize(*this)) {
+        m_glProblem = tr("the viewport's shaders did not compile (see the log)");
+        return;
+    }
+    connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, [this] {
+        makeCurrent();
+        releaseGl();
+        doneCurrent();
+    });
+    m_setChanged = m_lightsChanged = m_agentsChanged = true;
+    m_glReady = true;
+}
+
+void Viewport::releaseGl()
+{
+    if (!m_glReady)
+        return;
+    m_grid.destroy(*this);
+    m_setRenderer.destroy(*this);
+    m_lightRenderer.destroy(*this);
+    m_agentRenderer.destroy(*this);
+    m_glReady = false;
+}
+
+void Viewport::resizeGL(int, int)
+{
+    m_camera.setViewportSize(size());
+    if (!m_cameraMovedByUser)
+        m_frameOnNextPaint = true;
+}
+
+void Viewport::uploadChanged()
+{
+    if (m_setChanged)
+        m_setRenderer.upload(*this, m_setMesh);
+    if (m_lightsChanged)
+        m_lightRenderer.upload(*this, m_lightMesh);
+    if (m_agentsChanged)
+        m_agentRenderer.upload(*this, m_glyphs);
+    m_setChanged = m_lightsChanged = m_agentsChanged = false;
+}
+
+void Viewport::paintGL()
+{
+    const glm::vec4 bg = palette::kBackground;
+    glClearColor(bg.r, bg.g, bg.b, bg.a);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    if (!m_glReady)
+        return;
+    m_camera.setViewportSize(size());
+    if (m_frameOnNextPaint) {
+        m_camera.frame(framingBox());
+        m_frameOnNextPaint = false;
+    }
+    uploadChanged();
+    const RenderView view = m_camera.renderView();
+
+    // The ground layers are flat and drawn back to front; only agents need depth.
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_CULL_FACE);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    m_grid.draw(*this, view);
+    m_setRenderer.draw(*this, view);
+    m_lightRenderer.draw(*this, view);
+    if (view.perspective) {
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(GL_LESS);
+    }
+    m_agentRenderer.draw(*this, view);
+    glDisable(GL_DEPTH_TEST);
+}
+
+void Viewport::mousePressEvent(QMouseEvent* event)
+{
+    if (event->button() == Qt::MiddleButton || event->button() == Qt::RightButton) {
+        m_dragButton = event->button();
+        m_lastMousePos = event->position();
+        event->accept();
+        return;
+    }
+    QOpenGLWidget::mousePressEvent(event);
+}
+
+void Viewport::mouseMoveEvent(QMouseEvent* event)
+{
+    if (m_dragButton == Qt::NoButton) {
+        QOpenGLWidget::mouseMoveEvent(event);
+        return;
+    }
+    const QPointF delta = event->position() - m_lastMousePos;
+    m_lastMousePos = event->position();
+    const bool orbit = m_camera.mode() == ViewMode::Orbit && m_dragButton == Qt::RightButton &&
+                       !(event->modifiers() & Qt::ShiftModifier);
+    if (orbit)
+        m_camera.rotate(delta);
+    else
+        m_camera.pan(delta);
+    m_cameraMovedByUser = true;
+    m_frameOnNextPaint = false;
+    update();
+}
+
+void Viewport::mouseReleaseEvent(QMouseEvent* event)
+{
+    if (event->button() == m_dragButton) {
+        m_dragButton = Qt::NoButton;
+        event->accept();
+        return;
+    }
+    QOpenGLWidget::mouseReleaseEvent(event);
+}
+
+void Viewport::wheelEvent(QWheelEvent* event)
+{
+    const float degrees = float(event->angleDelta().y()) / 8.0f;
+    if (degrees == 0.0f)
+        return;
+    m_camera.setViewportSize(size());
+    m_camera.zoomAt(event->position(), std::pow(kWheelZoomPerDegree, degrees));
+    m_cameraMovedByUser = true;
+    m_frameOnNextPaint = false;
+    update();
+}
+
+void Viewport::keyPressEvent(QKeyEvent* event)
+{
+    if (event->key() == Qt::Key_F && event->modifiers() == Qt::NoModifier) {
+        frameAll();
+        return;
+    }
+    QOpenGLWidget::keyPressEvent(event);
+}
+
+}  // namespace throng::editor

@@ -1,0 +1,115 @@
+#pragma once
+// The OpenGL 3.3 core view of a scene: ground grid, the set (walls, paths, obstacles,
+// lanes, lights, ...) and the agents of one moment, through a top or orbit camera.
+// Shows what it is given (plain scene data and agent frames); never edits the scene.
+
+#include "editor/viewport/AgentRenderer.h"
+#include "editor/viewport/CameraRig.h"
+#include "editor/viewport/GridRenderer.h"
+#include "editor/viewport/GroundBox.h"
+#include "editor/viewport/ShapeMesh.h"
+#include "editor/viewport/ShapeRenderer.h"
+#include "simcore/scene/Scene.h"
+#include "simcore/world/FrameCache.h"
+
+#include <QOpenGLFunctions_3_3_Core>
+#include <QOpenGLWidget>
+#include <QSurfaceFormat>
+
+#include <cstddef>
+#include <optional>
+#include <span>
+#include <vector>
+
+namespace throng::sim {
+class World;
+}
+
+namespace throng::editor {
+
+class Viewport : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
+    Q_OBJECT
+
+public:
+    explicit Viewport(QWidget* parent = nullptr);
+    ~Viewport() override;
+
+    // OpenGL 3.3 core profile, 4x multisampling, 24-bit depth.
+    static QSurfaceFormat surfaceFormat();
+
+    // Shows the scene's set and its initial state (a World built from it, so spawn groups
+    // show), and frames it on the next paint.
+    void setScene(const sim::Scene& scene);
+    // Shows the scene's set and the current state of `state`, a World of that scene.
+    void setScene(const sim::Scene& scene, const sim::World& state);
+    // Shows frame `frame` (< cache.frameCount()) of a recording of the current scene.
+    void showFrame(const sim::FrameCache& cache, std::size_t frame);
+
+    void setViewMode(ViewMode mode);
+    ViewMode viewMode() const { return m_camera.mode(); }
+    // Fits the set and the shown agents into the view.
+    void frameAll();
+
+    std::size_t agentCount() const { return m_glyphs.size(); }
+    std::size_t frameIndex() const { return m_frameIndex; }
+    // Simulation time of the shown agents; empty when no World could be built.
+    std::optional<double> timeS() const { return m_timeS; }
+    // The widget pixel (logical) where a world point appears through the current camera.
+    QPointF worldToPixel(glm::vec3 point) const;
+
+    // False when no OpenGL 3.3 core context could be made; glProblem() says why.
+    bool isGlReady() const { return m_glReady; }
+    QString glProblem() const { return m_glProblem; }
+
+signals:
+    // The shown agents changed: agentCount(), frameIndex() or timeS().
+    void agentsChanged();
+    void viewModeChanged(ViewMode mode);
+
+protected:
+    void initializeGL() override;
+    void resizeGL(int w, int h) override;
+    void paintGL() override;
+    void mousePressEvent(QMouseEvent* event) override;
+    void mouseMoveEvent(QMouseEvent* event) override;
+    void mouseReleaseEvent(QMouseEvent* event) override;
+    void wheelEvent(QWheelEvent* event) override;
+    void keyPressEvent(QKeyEvent* event) override;
+
+private:
+    void setSet(const sim::Scene& scene);
+    void setAgents(std::span<const sim::AgentFrame> frames, std::span<const sim::AgentInfo> agents,
+                   std::optional<double> timeS, std::size_t frameIndex);
+    GroundBox framingBox() const;
+    void uploadChanged();
+    void releaseGl();
+
+    CameraRig m_camera;
+    GridRenderer m_grid;
+    ShapeRenderer m_setRenderer;
+    ShapeRenderer m_lightRenderer;
+    AgentRenderer m_agentRenderer;
+
+    // What is shown, kept on the CPU until the next paint uploads it.
+    ShapeMesh m_setMesh;
+    ShapeMesh m_lightMesh;
+    std::vector<AgentGlyph> m_glyphs;
+    bool m_setChanged = true, m_lightsChanged = true, m_agentsChanged = true;
+
+    sim::Scene m_traffic;               // lanes, crosswalks and lights only: relit every frame
+    std::vector<float> m_typeRadiusM;   // by Scene::agentTypes index
+    glm::vec2 m_boundsMin{-50.0f}, m_boundsMax{50.0f};
+    GroundBox m_setBox, m_agentBox;
+    std::optional<double> m_timeS;
+    std::size_t m_frameIndex = 0;
+
+    bool m_frameOnNextPaint = true;     // until the user moves the camera, resizing re-frames
+    bool m_cameraMovedByUser = false;
+    Qt::MouseButton m_dragButton = Qt::NoButton;
+    QPointF m_lastMousePos;
+
+    bool m_glReady = false;
+    QString m_glProblem;
+};
+
+}  // namespace throng::editor

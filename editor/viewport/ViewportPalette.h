@@ -1,0 +1,38 @@
+#pragma once
+// The viewport's colours in one place (linear 0..1 RGBA, drawn without lighting in the
+// top view), so renderers, the screenshot and the tests agree. Holds no GL state.
+
+#include <glm/vec4.hpp>
+
+#include <cstddef>
+
+namespace throng::editor::palette {
+
+inline constexpr glm::vec4 kBackground{0.145f, 0.153f, 0.165f, 1.0f};   // outside the world bounds
+inline constexpr glm::vec4 kGround{0.212f, 0.224f, 0.239f, 1.0f};       // inside the world bounds
+inline constexpr glm::vec4 kGridMinor{0.290f, 0.302f, 0.322f, 1.0f};
+inline constexpr glm::vec4 kGridMajor{0.345f, 0.357f, 0.380f, 1.0f};
+inline constexpr glm::vec4 kBounds{0.560f, 0.580f, 0.610f, 1.0f};
+inline constexpr glm::vec4 kWall{0.925f, 0.890f, 0.800f, 1.0f};
+inline constexpr glm::vec4 kPathBand{0.224f, 0.290f, 0.380f, 1.0f};     // the radius band, opaque over the ground
+inline constexpr glm::vec4 kPathLine{0.420f, 0.650f, 1.000f, 1.0f};
+inline constexpr glm::vec4 kObstacleFill{0.455f, 0.404f, 0.349f, 1.0f};
+inline constexpr glm::vec4 kObstacleEdge{0.690f, 0.620f, 0.545f, 1.0f};
+inline constexpr glm::vec4 kGoal{0.380f, 0.850f, 0.560f, 1.0f};
+inline constexpr glm::vec4 kLane{0.165f, 0.173f, 0.184f, 1.0f};
+inline constexpr glm::vec4 kLaneEdge{0.420f, 0.435f, 0.455f, 1.0f};
+inline constexpr glm::vec4 kLaneCentre{0.860f, 0.760f, 0.330f, 1.0f};
+inline constexpr glm::vec4 kCrosswalkStripe{0.880f, 0.880f, 0.870f, 1.0f};
+inline constexpr glm::vec4 kLightHousing{0.080f, 0.085f, 0.090f, 1.0f};
+inline constexpr glm::vec4 kLightGreen{0.240f, 0.860f, 0.420f, 1.0f};
+inline constexpr glm::vec4 kLightYellow{1.000f, 0.780f, 0.200f, 1.0f};
+inline constexpr glm::vec4 kLightRed{1.000f, 0.300f, 0.300f, 1.0f};
+inline constexpr glm::vec4 kLightUnknown{0.500f, 0.500f, 0.500f, 1.0f};
+inline constexpr glm::vec4 kSpawnArea{0.700f, 0.700f, 0.720f, 1.0f};
+inline constexpr glm::vec4 kFlowStroke{0.560f, 0.470f, 0.800f, 1.0f};
+inline constexpr glm::vec4 kAgentNose{0.090f, 0.095f, 0.105f, 1.0f};
+
+// Colour of agents of type `typeIndex` (Scene::agentTypes order); repeats after 8 types.
+glm::vec4 agentColour(std::size_t typeIndex);
+
+}  // namespace throng::editor::palette

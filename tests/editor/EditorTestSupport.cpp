@@ -1,0 +1,54 @@
+#include "EditorTestSupport.h"
+
+#include <QFile>
+#include <QTest>
+
+#include <cmath>
+#include <cstdlib>
+
+namespace throng::editor::test {
+
+QString writeScene(const QTemporaryDir& dir, const QString& name, const QByteArray& yaml)
+{
+    const QString path = dir.filePath(name);
+    QFile file(path);
+    if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate) || file.write(yaml) != yaml.size())
+        qFatal("cannot write the test scene %s", qPrintable(path));
+    return path;
+}
+
+QImage renderOffscreen(Viewport& viewport, QSize sizePx)
+{
+    viewport.setAttribute(Qt::WA_DontShowOnScreen);
+    viewport.resize(sizePx);
+    viewport.show();
+    return viewport.grabFramebuffer();
+}
+
+QRgb pixelAt(const QImage& image, const Viewport& viewport, QPointF widgetPos)
+{
+    const double scale = double(image.width()) / double(viewport.width());
+    const int x = int(std::lround(widgetPos.x() * scale)), y = int(std::lround(widgetPos.y() * scale));
+    return image.valid(x, y) ? image.pixel(x, y) : 0;
+}
+
+bool sameColour(QRgb pixel, glm::vec4 colour, int tolerance)
+{
+    auto channel = [](float c) { return int(std::lround(c * 255.0f)); };
+    return std::abs(qRed(pixel) - channel(colour.r)) <= tolerance &&
+           std::abs(qGreen(pixel) - channel(colour.g)) <= tolerance &&
+           std::abs(qBlue(pixel) - channel(colour.b)) <= tolerance;
+}
+
+QString describe(QRgb pixel)
+{
+    return QStringLiteral("rgb(%1, %2, %3)").arg(qRed(pixel)).arg(qGreen(pixel)).arg(qBlue(pixel));
+}
+
+QString describe(glm::vec4 colour)
+{
+    return describe(qRgb(int(std::lround(colour.r * 255.0f)), int(std::lround(colour.g * 255.0f)),
+                         int(std::lround(colour.b * 255.0f))));
+}
+
+}  // namespace throng::editor::test

@@ -1,0 +1,31 @@
+#pragma once
+// Helpers the editor tests share: scene files written into a temporary folder, the
+// viewport rendered offscreen, and colour comparisons with a readable failure text.
+
+#include "editor/viewport/Viewport.h"
+
+#include <glm/vec4.hpp>
+
+#include <QByteArray>
+#include <QImage>
+#include <QPointF>
+#include <QString>
+#include <QTemporaryDir>
+
+namespace throng::editor::test {
+
+// Writes `yaml` to dir/name and returns the file's path.
+QString writeScene(const QTemporaryDir& dir, const QString& name, const QByteArray& yaml);
+
+// Shows `viewport` offscreen at `sizePx` and returns what it draws.
+QImage renderOffscreen(Viewport& viewport, QSize sizePx);
+
+// The image pixel under a logical widget position (rounded).
+QRgb pixelAt(const QImage& image, const Viewport& viewport, QPointF widgetPos);
+
+// True when every channel of `pixel` is within `tolerance` (0..255) of `colour`.
+bool sameColour(QRgb pixel, glm::vec4 colour, int tolerance = 8);
+QString describe(QRgb pixel);
+QString describe(glm::vec4 colour);
+
+}  // namespace throng::editor::test
