@@ -4,6 +4,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -24,6 +25,26 @@ constexpr std::size_t kAgentTableThreshold = 64;
 using detail::num;
 using Writer = detail::YamlWriter;
 
+// A parameter: a number, a list of numbers, or text. Brain text is always quoted so it
+// reads back as text even when it looks like a number; behaviour words are plain.
+void writeParam(Writer& w, const BrainParam& p, bool quoteText = false)
+{
+    YAML::Emitter& o = w.out;
+    o << YAML::Key << p.key << YAML::Value;
+    if (!p.text.empty() || p.numbers.empty()) {
+        if (quoteText)
+            o << YAML::DoubleQuoted;
+        o << p.text;
+    } else if (p.numbers.size() == 1) {
+        o << num(p.numbers[0]);
+    } else {
+        o << YAML::Flow << YAML::BeginSeq;
+        for (float v : p.numbers)
+            o << num(v);
+        o << YAML::EndSeq;
+    }
+}
+
 void writeBrainBody(Writer& w, const BrainGraph& b)
 {
     YAML::Emitter& o = w.out;
@@ -40,19 +61,8 @@ void writeBrainBody(Writer& w, const BrainGraph& b)
         if (!n.params.empty()) {
             w.key("params");
             o << YAML::Flow << YAML::BeginMap;
-            for (const BrainParam& p : n.params) {
-                o << YAML::Key << p.key << YAML::Value;
-                if (!p.text.empty() || p.numbers.empty())
-                    o << YAML::DoubleQuoted << p.text;
-                else if (p.numbers.size() == 1)
-                    o << num(p.numbers[0]);
-                else {
-                    o << YAML::Flow << YAML::BeginSeq;
-                    for (float v : p.numbers)
-                        o << num(v);
-                    o << YAML::EndSeq;
-                }
-            }
+            for (const BrainParam& p : n.params)
+                writeParam(w, p, true);
             o << YAML::EndMap;
         }
         o << YAML::EndMap;
@@ -111,10 +121,26 @@ void writeAgentTypes(Writer& w, const Scene& s)
         if (!t.behaviours.empty()) {
             w.key("behaviours");
             o << YAML::BeginMap;
-            for (const BehaviourWeight& b : t.behaviours)
-                w.kvf(b.behaviour.c_str(), b.weight);
+            for (const BehaviourWeight& b : t.behaviours) {
+                if (b.params.empty()) {
+                    w.kvf(b.behaviour.c_str(), b.weight);
+                    continue;
+                }
+                w.key(b.behaviour.c_str());
+                o << YAML::Flow << YAML::BeginMap;
+                w.kvf("weight", b.weight);
+                for (const BrainParam& p : b.params)
+                    writeParam(w, p);
+                o << YAML::EndMap;
+            }
             o << YAML::EndMap;
         }
+        if (t.priorityCombination)
+            w.kv("combination", "priority");
+        if (t.minSpeed != 0.0f)
+            w.kvf("min_speed", t.minSpeed);
+        if (t.banking != 0.0f)
+            w.kvf("banking", t.banking);
         o << YAML::EndMap;
     }
     o << YAML::EndSeq;
@@ -135,21 +161,30 @@ void writeAgents(Writer& w, const Scene& s)
             w.kvf("heading", a.headingDeg);
             w.kvOpt("goal", a.goal);
             w.kvOpt("path", a.path);
+            if (a.leader != 0)
+                w.kv("leader", std::to_string(a.leader));
             o << YAML::EndMap;
         }
         o << YAML::EndSeq;
         return;
     }
+    const bool leaders = std::any_of(s.agents.begin(), s.agents.end(), [](const Agent& a) { return a.leader != 0; });
     std::string rows;
     rows.reserve(s.agents.size() * 48);
     for (const Agent& a : s.agents) {
         rows += std::to_string(a.id) + ' ' + a.type + ' ' + num(a.position.x) + ' ' + num(a.position.y) + ' ' +
                 num(a.position.z) + ' ' + num(a.headingDeg) + ' ' + (a.goal.empty() ? "-" : a.goal) + ' ' +
-                (a.path.empty() ? "-" : a.path) + '\n';
+                (a.path.empty() ? "-" : a.path);
+        if (leaders)
+            rows += ' ' + (a.leader ? std::to_string(a.leader) : std::string("-"));
+        rows += '\n';
     }
+    std::vector<std::string> columns{"id", "type", "x", "y", "z", "heading", "goal", "path"};
+    if (leaders)
+        columns.push_back("leader");
     o << YAML::BeginMap;
     w.key("columns");
-    o << YAML::Flow << std::vector<std::string>{"id", "type", "x", "y", "z", "heading", "goal", "path"};
+    o << YAML::Flow << columns;
     w.key("rows");
     o << YAML::Literal << rows;
     o << YAML::EndMap;

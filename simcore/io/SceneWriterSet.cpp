@@ -118,6 +118,8 @@ void writeSceneSet(YamlWriter& w, const Scene& s)
             o << YAML::EndMap;
             w.kvOpt("goal", g.goal);
             w.kvOpt("path", g.path);
+            if (g.leader != 0)
+                w.kv("leader", std::to_string(g.leader));
             o << YAML::EndMap;
         }
         o << YAML::EndSeq;

@@ -81,23 +81,106 @@ Scene makeCorridorScenario(std::uint32_t agents, std::uint64_t seed)
     s.goals.push_back({"west", {-length / 2 - 6.0f, 0.0f}, halfWidth});
     const float x0 = -length / 2, x1 = length / 2;
     SpawnGroup east{"eastbound", "walker", agents / 2, AreaShape::Rect, {x0, -halfWidth + 0.5f},
-                    {0.0f, halfWidth - 0.5f}, {}, 0.0f, "east", ""};
+                    {0.0f, halfWidth - 0.5f}, {}, 0.0f, "east", "", 0};
     SpawnGroup west{"westbound", "walker", agents - agents / 2, AreaShape::Rect, {0.0f, -halfWidth + 0.5f},
-                    {x1, halfWidth - 0.5f}, {}, 0.0f, "west", ""};
+                    {x1, halfWidth - 0.5f}, {}, 0.0f, "west", "", 0};
     s.groups = {east, west};
+    return s;
+}
+
+Scene makeFlockScenario(std::uint32_t agents, std::uint64_t seed)
+{
+    // Boids (Reynolds 1987) in 3D: separation, alignment and cohesion, plus a loose pull
+    // along a closed circuit so the flock migrates. Density about one bird per 8 m^3.
+    Scene s;
+    s.settings.seed = seed;
+    const float half = 50.0f * std::cbrt(std::max(1.0f, float(agents) / 10000.0f));
+    s.settings.boundsMin = glm::vec2(-3.0f * half);
+    s.settings.boundsMax = glm::vec2(3.0f * half);
+    AgentType t;
+    t.name = "starling";
+    t.kind = AgentKind::Flier;
+    t.radiusM = 0.2f;
+    t.maxSpeed = 12.0f;
+    t.minSpeed = 4.0f;
+    t.maxForce = 20.0f;
+    t.mass = 1.0f;
+    t.perceptionM = 3.0f;
+    t.viewAngleDeg = 300.0f;
+    t.banking = 0.05f;
+    t.character = "bird";
+    t.behaviours = {{"separation", 2.0f, {{"range", "", {0.6f}}}}, {"alignment", 1.0f, {}},
+                    {"cohesion", 1.0f, {}}, {"path_following", 0.5f, {{"prediction", "", {2.0f}}}},
+                    {"containment", 4.0f, {}}, {"wander", 0.2f, {}}};
+    s.agentTypes.push_back(t);
+    Path circuit;
+    circuit.name = "migration";
+    circuit.closed = true;
+    circuit.radiusM = half;
+    for (int k = 0; k < 8; ++k) {
+        const float a = 6.2831853f * float(k) / 8.0f;
+        circuit.points.push_back(2.0f * half * glm::vec2(std::cos(a), std::sin(a)));
+    }
+    s.paths.push_back(circuit);
+    s.agents.reserve(agents);
+    const auto side = std::uint32_t(std::ceil(std::cbrt(double(agents))));
+    const float spacing = 2.0f * half / float(side);
+    for (std::uint32_t i = 0; i < agents; ++i) {
+        Agent a;
+        a.id = i + 1;
+        a.type = t.name;
+        const float x = float(i % side), y = float((i / side) % side), z = float(i / (side * side));
+        // A lattice, jittered by a fixed pattern so no two birds start in lock-step.
+        const float jx = 0.3f * std::sin(float(i) * 12.9898f), jz = 0.3f * std::cos(float(i) * 78.233f);
+        a.position = glm::vec3(2.0f * half + (x - 0.5f * float(side)) * spacing + jx, 20.0f + y * spacing * 0.5f,
+                               (z - 0.5f * float(side)) * spacing + jz);
+        a.headingDeg = -90.0f;  // along the circuit, counter-clockwise
+        a.path = circuit.name;
+        s.agents.push_back(a);
+    }
+    s.settings.durationS = 60.0f;
+    return s;
+}
+
+Scene makeArmyScenario(std::uint32_t agents, std::uint64_t seed)
+{
+    // Two masses charge each other across a field: the densest head-on crossing.
+    Scene s;
+    s.settings.seed = seed;
+    const float depth = std::max(10.0f, std::sqrt(float(agents)) * 0.9f);
+    const float width = 2.0f * depth;
+    s.settings.boundsMin = {-3.0f * depth, -width};
+    s.settings.boundsMax = {3.0f * depth, width};
+    AgentType t = walker();
+    t.name = "soldier";
+    t.maxSpeed = 2.5f;
+    t.maxForce = 8.0f;
+    s.agentTypes.push_back(t);
+    s.goals.push_back({"east", {2.5f * depth, 0.0f}, 0.6f * width});
+    s.goals.push_back({"west", {-2.5f * depth, 0.0f}, 0.6f * width});
+    SpawnGroup a{"west_army", "soldier", agents / 2, AreaShape::Rect, {-2.0f * depth, -0.5f * width},
+                 {-depth, 0.5f * width}, {}, 0.0f, "east", "", 0};
+    SpawnGroup b{"east_army", "soldier", agents - agents / 2, AreaShape::Rect, {depth, -0.5f * width},
+                 {2.0f * depth, 0.5f * width}, {}, 0.0f, "west", "", 0};
+    s.groups = {a, b};
+    s.settings.durationS = 5.0f * depth / 2.5f + 20.0f;
     return s;
 }
 
 const std::vector<std::string>& benchScenarioNames()
 {
-    static const std::vector<std::string> names{"cross", "corridor"};
+    static const std::vector<std::string> names{"flock", "cross", "army", "corridor"};
     return names;
 }
 
 bool makeBenchScenario(const std::string& name, std::uint32_t agents, Scene& out)
 {
-    if (name == "cross")
+    if (name == "flock")
+        out = makeFlockScenario(agents);
+    else if (name == "cross")
         out = makeCrossScenario(agents);
+    else if (name == "army")
+        out = makeArmyScenario(agents);
     else if (name == "corridor")
         out = makeCorridorScenario(agents);
     else

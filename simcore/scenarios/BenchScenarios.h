@@ -13,6 +13,10 @@ namespace throng::sim {
 // `cross`: agents on concentric rings walk to the antipodal point (the classic avoidance
 // test), laid out like the DetourCrowd peer's `circle` scenario.
 Scene makeCrossScenario(std::uint32_t agents, std::uint64_t seed = 1);
+// `flock`: 3D boids migrating around a closed circuit.
+Scene makeFlockScenario(std::uint32_t agents, std::uint64_t seed = 1);
+// `army`: two masses charge each other across a field.
+Scene makeArmyScenario(std::uint32_t agents, std::uint64_t seed = 1);
 // `corridor`: two groups walk in opposite directions between two long walls.
 Scene makeCorridorScenario(std::uint32_t agents, std::uint64_t seed = 1);
 

@@ -28,11 +28,11 @@ const BrainNode* BrainGraph::findNode(NodeId id) const
 
 const std::vector<std::string>& behaviourNames()
 {
+    // In priority order: the most urgent first (see TypeSteering's Behaviour).
     static const std::vector<std::string> names{
-        "seek", "flee", "pursuit", "evasion", "offset_pursuit", "arrival",
-        "obstacle_avoidance", "wander", "path_following", "wall_following", "containment",
-        "flow_field_following", "separation", "alignment", "cohesion", "leader_following",
-        "unaligned_collision_avoidance"};
+        "containment", "wall_following", "obstacle_avoidance", "separation", "unaligned_collision_avoidance",
+        "evasion", "flee", "leader_following", "offset_pursuit", "pursuit", "path_following",
+        "flow_field_following", "arrival", "seek", "alignment", "cohesion", "wander"};
     return names;
 }
 

@@ -36,8 +36,9 @@ struct Variation {
 };
 
 struct BehaviourWeight {
-    std::string behaviour;  // one of behaviourNames()
-    float weight = 1.0f;    // >= 0
+    std::string behaviour;           // one of behaviourNames()
+    float weight = 1.0f;             // >= 0
+    std::vector<BrainParam> params;  // behaviour parameters (TypeSteering's behaviourParams())
     bool operator==(const BehaviourWeight&) const = default;
 };
 
@@ -53,7 +54,10 @@ struct AgentType {
     std::string brain;          // name of a brain in Scene::brains, empty = none
     std::string character;      // built-in character name or a .glb/.gltf path
     Variation variation;
-    std::vector<BehaviourWeight> behaviours;
+    std::vector<BehaviourWeight> behaviours;  // empty = the defaults for the kind
+    bool priorityCombination = false;         // prioritised allocation instead of weighted blending
+    float minSpeed = 0.0f;                    // m/s, >= 0: fliers never fly slower
+    float banking = 0.0f;                     // s^2/m, >= 0: fliers' bank per m/s^2 of turn
     bool operator==(const AgentType&) const = default;
 };
 
@@ -64,6 +68,7 @@ struct Agent {
     float headingDeg = 0.0f;    // degrees, 0 = +x, counter-clockwise seen from above
     std::string goal;           // optional goal name
     std::string path;           // optional path name
+    std::uint32_t leader = 0;   // optional AgentId pursued, evaded or followed; 0 = none
     bool operator==(const Agent&) const = default;
 };
 
@@ -79,6 +84,7 @@ struct SpawnGroup {
     float radiusM = 0.0f;            // Circle, > 0
     std::string goal;
     std::string path;
+    std::uint32_t leader = 0;        // AgentId the members pursue, evade or follow; 0 = none
     bool operator==(const SpawnGroup&) const = default;
 };
 

@@ -24,18 +24,6 @@ void NeighbourGrid::configure(glm::vec2 boundsMin, glm::vec2 boundsMax, float ce
     m_start.assign(std::size_t(m_cols) * std::size_t(m_rows) + 1, 0);
 }
 
-int NeighbourGrid::cellX(float x) const
-{
-    const float c = std::floor((x - m_min.x) * m_inv);
-    return c != c ? 0 : std::clamp(int(std::clamp(c, -1.0f, float(m_cols))), 0, m_cols - 1);
-}
-
-int NeighbourGrid::cellZ(float z) const
-{
-    const float c = std::floor((z - m_min.y) * m_inv);
-    return c != c ? 0 : std::clamp(int(std::clamp(c, -1.0f, float(m_rows))), 0, m_rows - 1);
-}
-
 void NeighbourGrid::rebuild(std::span<const glm::vec3> positions)
 {
     const std::size_t n = positions.size();
@@ -57,8 +45,11 @@ void NeighbourGrid::rebuild(std::span<const glm::vec3> positions)
         fill[i] = m_start[c];  // reuse as the write cursor of the agent's slot
         ++m_start[c];
     }
-    for (std::size_t i = 0; i < n; ++i)
+    m_sortedPos.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
         m_sorted[fill[i]] = std::uint32_t(i);
+        m_sortedPos[fill[i]] = positions[i];
+    }
     // m_start[c] now holds the end of cell c; shift back to starts.
     for (std::size_t c = m_start.size() - 1; c > 0; --c)
         m_start[c] = m_start[c - 1];

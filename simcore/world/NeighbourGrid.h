@@ -5,8 +5,11 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <span>
+#include <type_traits>
 #include <vector>
 
 namespace throng::sim {
@@ -18,29 +21,51 @@ public:
     // Sorts agent indices into cells by their (x, z). Reuses its buffers.
     void rebuild(std::span<const glm::vec3> positions);
 
-    // Calls f(j) for every agent j whose cell overlaps the square around p of half-size r.
+    // Calls f(j) or f(j, position of j) for every agent j whose cell overlaps the square
+    // around p of half-size r. Positions come from a copy kept in cell order, so a query
+    // reads contiguous memory instead of hopping through the agent arrays.
     template <typename F>
     void forEachNear(glm::vec2 p, float r, F&& f) const
     {
         const int x0 = cellX(p.x - r), x1 = cellX(p.x + r), z0 = cellZ(p.y - r), z1 = cellZ(p.y + r);
-        for (int z = z0; z <= z1; ++z)
-            for (int x = x0; x <= x1; ++x) {
-                const std::size_t c = std::size_t(z) * std::size_t(m_cols) + std::size_t(x);
-                for (std::uint32_t k = m_start[c]; k < m_start[c + 1]; ++k)
+        for (int z = z0; z <= z1; ++z) {
+            // Cells x0..x1 of one row are adjacent in the sorted order: one contiguous run.
+            const std::size_t row = std::size_t(z) * std::size_t(m_cols);
+            const std::uint32_t begin = m_start[row + std::size_t(x0)], end = m_start[row + std::size_t(x1) + 1];
+            for (std::uint32_t k = begin; k < end; ++k) {
+                if constexpr (std::is_invocable_v<F, std::uint32_t, const glm::vec3&>)
+                    f(m_sorted[k], m_sortedPos[k]);
+                else
                     f(m_sorted[k]);
             }
+        }
     }
     float cellM() const { return m_cell; }
+    std::size_t memoryBytes() const
+    {
+        return (m_start.capacity() + m_sorted.capacity() + m_cellOf.capacity()) * sizeof(std::uint32_t) +
+               m_sortedPos.capacity() * sizeof(glm::vec3);
+    }
 
 private:
-    int cellX(float x) const;
-    int cellZ(float z) const;
+    // NaN lands in cell 0; positions outside the bounds clamp into the border cells.
+    int cellX(float x) const
+    {
+        const float c = std::floor((x - m_min.x) * m_inv);
+        return c != c ? 0 : std::clamp(int(std::clamp(c, -1.0f, float(m_cols))), 0, m_cols - 1);
+    }
+    int cellZ(float z) const
+    {
+        const float c = std::floor((z - m_min.y) * m_inv);
+        return c != c ? 0 : std::clamp(int(std::clamp(c, -1.0f, float(m_rows))), 0, m_rows - 1);
+    }
 
     glm::vec2 m_min{0.0f};
     float m_cell = 1.0f, m_inv = 1.0f;
     int m_cols = 1, m_rows = 1;
     std::vector<std::uint32_t> m_start;   // cols*rows + 1 prefix sums
     std::vector<std::uint32_t> m_sorted;  // agent indices by cell
+    std::vector<glm::vec3> m_sortedPos;   // their positions, in the same order
     std::vector<std::uint32_t> m_cellOf;
 };
 

@@ -9,43 +9,26 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 namespace throng::sim {
 
 namespace {
 
 // Random streams: each use of randomness has its own, so adding one never shifts another.
-enum Stream : std::uint64_t { kSpawnX = 1, kSpawnZ, kSpawnHeading, kSpeedFactor, kPhaseOffset, kStride };
+enum Stream : std::uint64_t {
+    kSpawnX = 1, kSpawnZ, kSpawnHeading, kSpeedFactor, kPhaseOffset, kStride, kWanderStart, kSpotR, kSpotA
+};
 
-constexpr float kDefaultSeparation = 1.0f;
-
-float weightOf(const AgentType& t, const char* behaviour, float fallback)
+template <typename T>
+int indexByName(const std::vector<T>& items, const std::string& name)
 {
-    for (const BehaviourWeight& b : t.behaviours)
-        if (b.behaviour == behaviour)
-            return b.weight;
-    return t.behaviours.empty() ? fallback : 0.0f;
-}
-
-// A follower joins its path where it stands: it heads for the end of the nearest segment
-// rather than walking back to the first point.
-int firstWaypoint(const Path& path, glm::vec2 p)
-{
-    int best = 0;
-    float bestDist = 1e30f;
-    const std::size_t segments = path.closed ? path.points.size() : path.points.size() - 1;
-    for (std::size_t k = 0; k < segments; ++k) {
-        const glm::vec2 a = path.points[k], b = path.points[(k + 1) % path.points.size()];
-        const glm::vec2 ab = b - a;
-        const float len2 = glm::dot(ab, ab);
-        const float t = len2 > 0.0f ? std::clamp(glm::dot(p - a, ab) / len2, 0.0f, 1.0f) : 0.0f;
-        const float d = glm::distance(p, a + ab * t);
-        if (d < bestDist) {
-            bestDist = d;
-            best = int((k + 1) % path.points.size());
-        }
-    }
-    return best;
+    if (name.empty())
+        return -1;
+    for (std::size_t k = 0; k < items.size(); ++k)
+        if (items[k].name == name)
+            return int(k);
+    return -1;
 }
 
 }  // namespace
@@ -56,32 +39,61 @@ World::World(const Scene& scene, const WorldOptions& options)
     m_dt = 1.0f / scene.settings.fps;
     m_threads = options.threads > 0 ? options.threads : omp_get_max_threads();
 
-    float maxPerception = 1.0f;
+    // Cells of half the perception radius: a query then scans about 1.6 times the
+    // perception disk's area, against 2.9 times with cells as large as the radius.
+    float cell = 0.0f;
     for (const AgentType& t : scene.agentTypes) {
-        m_types.push_back({t.radiusM, t.maxSpeed, t.maxForce, t.mass, t.perceptionM, t.kind,
-                           weightOf(t, "separation", kDefaultSeparation)});
-        maxPerception = std::max(maxPerception, std::min(t.perceptionM, 4.0f * t.radiusM + 1.0f));
+        const float halfView = glm::radians(std::min(t.viewAngleDeg, 360.0f)) * 0.5f;
+        m_types.push_back({t.radiusM, t.maxSpeed, t.maxForce, t.mass, t.perceptionM,
+                           t.viewAngleDeg >= 360.0f ? -1.0f : std::cos(halfView), t.kind});
+        m_steering.push_back(compileTypeSteering(t));
+        cell = std::max(cell, 0.5f * t.perceptionM);
     }
-    std::vector<Segment> segments;
+    cell = std::clamp(cell, 0.5f, 4.0f);
+    buildStatics(scene);
+    buildAgents(scene);
+    m_grid.configure(scene.settings.boundsMin, scene.settings.boundsMax, cell);
+    m_grid.rebuild(m_pos);
+}
+
+void World::buildStatics(const Scene& scene)
+{
+    std::vector<Segment> walls, obstacleBoxes;
     for (const Wall& w : scene.walls)
         for (std::size_t k = 0; k + 1 < w.points.size(); ++k)
-            segments.push_back({w.points[k], w.points[k + 1]});
-    for (const Obstacle& o : scene.obstacles) {
+            walls.push_back({w.points[k], w.points[k + 1]});
+    for (const Obstacle& o : scene.obstacles)
         if (o.shape == ObstacleShape::Circle) {
-            m_circles.push_back({o.center, o.radiusM});
-            continue;
+            m_circles.push_back({glm::vec3(o.center.x, 0.0f, o.center.y), o.radiusM});
+            obstacleBoxes.push_back({o.center - glm::vec2(o.radiusM), o.center + glm::vec2(o.radiusM)});
         }
+    for (const Obstacle& o : scene.obstacles) {
+        if (o.shape != ObstacleShape::Box)
+            continue;
+        // Scene angles turn counter-clockwise seen from above (+y up, z south).
         const float a = glm::radians(o.angleDeg);
         const glm::vec2 ax(std::cos(a), -std::sin(a)), az(std::sin(a), std::cos(a));
         const glm::vec2 h = o.size * 0.5f;
         const glm::vec2 c[4] = {o.center - ax * h.x - az * h.y, o.center + ax * h.x - az * h.y,
                                 o.center + ax * h.x + az * h.y, o.center - ax * h.x + az * h.y};
         for (int k = 0; k < 4; ++k)
-            segments.push_back({c[k], c[(k + 1) % 4]});
+            walls.push_back({c[k], c[(k + 1) % 4]});
+        m_boxes.push_back({glm::vec3(o.center.x, 0.0f, o.center.y), glm::vec3(ax.x, 0.0f, ax.y), h});
+        const float reach = glm::length(h);
+        obstacleBoxes.push_back({o.center - glm::vec2(reach), o.center + glm::vec2(reach)});
     }
-    m_walls.build(segments, 4.0f);
+    // The wall grid's cells fit a walker's feelers; obstacle boxes are found by their bounds.
+    m_walls.build(walls, 4.0f);
+    m_obstacleGrid.build(obstacleBoxes, 4.0f);
+
     m_goals = scene.goals;
     m_paths = scene.paths;
+    for (const Path& p : scene.paths) {
+        std::vector<glm::vec3> points;
+        for (glm::vec2 q : p.points)
+            points.push_back({q.x, 0.0f, q.y});
+        m_pathPoints.push_back(std::move(points));
+    }
     m_lights = scene.trafficLights;
     for (const Crosswalk& c : scene.crosswalks) {
         int light = -1;
@@ -91,55 +103,47 @@ World::World(const Scene& scene, const WorldOptions& options)
                     light = int(l);
         m_crosswalks.push_back({c.from, c.to, c.widthM * 0.5f, light});
     }
-    buildAgents(scene);
-    m_grid.configure(scene.settings.boundsMin, scene.settings.boundsMax, maxPerception);
-    m_grid.rebuild(m_pos);
+    for (const FlowStroke& s : scene.flowStrokes)
+        for (std::size_t k = 0; k + 1 < s.points.size(); ++k)
+            m_flow.push_back({s.points[k], s.points[k + 1], s.widthM * 0.5f});
+    m_terrain = scene.terrain;
+    const glm::vec2 lo = scene.settings.boundsMin, hi = scene.settings.boundsMax;
+    m_bounds = {glm::vec3(lo.x, -1e4f, lo.y), glm::vec3(hi.x, 1e4f, hi.y)};
 }
 
 void World::buildAgents(const Scene& scene)
 {
-    auto typeIndex = [&](const std::string& name) {
-        for (std::size_t t = 0; t < scene.agentTypes.size(); ++t)
-            if (scene.agentTypes[t].name == name)
-                return std::uint16_t(t);
-        return std::uint16_t(0);
-    };
-    auto indexOf = [](const auto& items, const std::string& name) {
-        for (std::size_t k = 0; k < items.size(); ++k)
-            if (items[k].name == name)
-                return int(k);
-        return -1;
-    };
     std::size_t total = scene.agents.size();
     for (const SpawnGroup& g : scene.groups)
         total += g.count;
     m_info.reserve(total);
 
     for (const Agent& a : scene.agents)
-        addAgent(scene, a.id, typeIndex(a.type), a.position, glm::radians(a.headingDeg), indexOf(scene.goals, a.goal),
-                 indexOf(scene.paths, a.path));
-    for (std::size_t g = 0; g < scene.groups.size(); ++g)
-        spawnGroup(scene, scene.groups[g], g);
-}
-
-void World::spawnGroup(const Scene& scene, const SpawnGroup& group, std::size_t groupIndex)
-{
+        addAgent(scene, a.id, std::uint16_t(std::max(0, indexByName(scene.agentTypes, a.type))), a.position,
+                 glm::radians(a.headingDeg), indexByName(scene.goals, a.goal), indexByName(scene.paths, a.path),
+                 a.leader);
+    // Spawned agents take ids after every id the scene uses.
     AgentId next = 1;
     for (const Agent& a : scene.agents) next = std::max(next, a.id + 1);
     for (const Vehicle& v : scene.vehicles) next = std::max(next, v.id + 1);
     for (const Hero& h : scene.heroes) next = std::max(next, h.id + 1);
-    for (const AgentInfo& info : m_info) next = std::max(next, info.id + 1);
+    for (std::size_t g = 0; g < scene.groups.size(); ++g)
+        spawnGroup(scene, scene.groups[g], g, next);
 
-    std::uint16_t type = 0;
-    for (std::size_t t = 0; t < scene.agentTypes.size(); ++t)
-        if (scene.agentTypes[t].name == group.type)
-            type = std::uint16_t(t);
-    int goal = -1, path = -1;
-    for (std::size_t k = 0; k < scene.goals.size(); ++k)
-        if (scene.goals[k].name == group.goal) goal = int(k);
-    for (std::size_t k = 0; k < scene.paths.size(); ++k)
-        if (scene.paths[k].name == group.path) path = int(k);
+    // Leaders were given as ids; the step reads dense indices.
+    std::map<AgentId, std::int32_t> denseOf;
+    for (std::size_t i = 0; i < m_info.size(); ++i)
+        denseOf[m_info[i].id] = std::int32_t(i);
+    for (std::int32_t& l : m_leader) {
+        auto it = denseOf.find(AgentId(l));
+        l = l > 0 && it != denseOf.end() ? it->second : -1;
+    }
+}
 
+void World::spawnGroup(const Scene& scene, const SpawnGroup& group, std::size_t groupIndex, AgentId& nextId)
+{
+    const auto type = std::uint16_t(std::max(0, indexByName(scene.agentTypes, group.type)));
+    const int goal = indexByName(scene.goals, group.goal), path = indexByName(scene.paths, group.path);
     // Keys are (group, member), not the running id, so editing one group never moves
     // the members of another.
     for (std::uint32_t k = 0; k < group.count; ++k) {
@@ -158,33 +162,76 @@ void World::spawnGroup(const Scene& scene, const SpawnGroup& group, std::size_t 
             if (glm::dot(d, d) > 1e-6f)
                 heading = std::atan2(-d.y, d.x);
         }
-        addAgent(scene, next++, type, glm::vec3(p.x, 0.0f, p.y), heading, goal, path);
+        addAgent(scene, nextId++, type, glm::vec3(p.x, 0.0f, p.y), heading, goal, path, group.leader);
     }
 }
 
 void World::addAgent(const Scene& scene, AgentId id, std::uint16_t type, glm::vec3 pos, float headingRad, int goal,
-                     int path)
+                     int path, AgentId leader)
 {
     const AgentType& t = scene.agentTypes[type];
+    const bool flier = t.kind == AgentKind::Flier;
+    if (!flier)
+        pos.y = groundHeight(pos.x, pos.z);
+    // Heading is counter-clockwise seen from above (+y up, z south): forward = (cos, 0, -sin).
+    const glm::vec3 fwd(std::cos(headingRad), 0.0f, -std::sin(headingRad));
+    const float speedFactor = rngRange(m_seed, id, 0, kSpeedFactor, t.variation.speedFactor.x, t.variation.speedFactor.y);
     m_info.push_back({id, type});
     m_pos.push_back(pos);
-    m_vel.push_back(glm::vec3(0.0f));
-    // Heading is counter-clockwise seen from above (+y up, z south): forward = (cos, 0, -sin).
-    m_fwd.push_back(glm::vec3(std::cos(headingRad), 0.0f, -std::sin(headingRad)));
+    // Fliers start at their stall speed so they never fall out of the sky on frame 1.
+    m_vel.push_back(flier ? fwd * std::max(t.minSpeed, 0.5f * t.maxSpeed * speedFactor) : glm::vec3(0.0f));
+    m_fwd.push_back(fwd);
+    m_side.push_back(glm::normalize(glm::cross(fwd, glm::vec3(0.0f, 1.0f, 0.0f))));
+    m_up.push_back(glm::vec3(0.0f, 1.0f, 0.0f));
     m_radius.push_back(t.radiusM);
-    m_speedFactor.push_back(rngRange(m_seed, id, 0, kSpeedFactor, t.variation.speedFactor.x, t.variation.speedFactor.y));
+    m_maxSpeed.push_back(t.maxSpeed * speedFactor);
     m_phase.push_back(rngRange(m_seed, id, 0, kPhaseOffset, t.variation.phaseOffset.x, t.variation.phaseOffset.y));
     // Stride length scales with body size; 1.4 m is an adult's walking stride.
-    m_stride.push_back(t.kind == AgentKind::Pedestrian ? 1.4f * std::max(0.5f, t.radiusM / 0.3f) *
-                                                             rngRange(m_seed, id, 0, kStride, 0.95f, 1.05f)
-                                                       : 2.0f * t.radiusM * 3.14159265f);
+    m_stride.push_back(t.kind == AgentKind::Pedestrian
+                           ? 1.4f * std::max(0.5f, t.radiusM / 0.3f) * rngRange(m_seed, id, 0, kStride, 0.95f, 1.05f)
+                           : 2.0f * t.radiusM * 3.14159265f);
+    const float wa = 6.28318531f * rngUniform(m_seed, id, 0, kWanderStart);
+    m_wander.push_back({glm::vec3(std::sin(wa), 0.0f, std::cos(wa))});
+    m_arrivalTime.push_back(-1.0f);
     m_goal.push_back(goal);
     m_path.push_back(path);
-    m_waypoint.push_back(path >= 0 ? firstWaypoint(scene.paths[std::size_t(path)], glm::vec2(pos.x, pos.z)) : 0);
+    m_leader.push_back(std::int32_t(leader));
+    // A crowd sharing an exit spreads over it instead of converging on one point, so the
+    // first arrivals do not wall off the rest (uniform over 80 % of the goal's disk).
+    glm::vec2 spot(0.0f);
+    if (goal >= 0) {
+        const Goal& g = scene.goals[std::size_t(goal)];
+        const float r = 0.8f * g.radiusM * std::sqrt(rngUniform(m_seed, id, 0, kSpotR));
+        const float a = 6.28318531f * rngUniform(m_seed, id, 0, kSpotA);
+        spot = g.position + r * glm::vec2(std::cos(a), std::sin(a));
+    }
+    m_goalSpot.push_back(spot);
     m_arrived.push_back(0);
+    m_stopped.push_back(0);
     m_onCrosswalk.push_back(0);
     m_nextPos.push_back(pos);
-    m_nextVel.push_back(glm::vec3(0.0f));
+    m_nextVel.push_back(m_vel.back());
+    m_nextFwd.push_back(fwd);
+    m_nextSide.push_back(m_side.back());
+    m_nextUp.push_back(m_up.back());
+    m_nextWander.push_back(m_wander.back());
+    m_nearIndex.resize(m_nearIndex.size() + kMaxNeighbours);
+    m_nearCount.push_back(0);
+    m_resolvedPos.push_back(pos);
+}
+
+float World::groundHeight(float x, float z) const
+{
+    const Terrain& t = m_terrain;
+    if (t.heights.empty() || t.cols < 2 || t.rows < 2)
+        return 0.0f;
+    // Bilinear between the four samples around (x, z), clamped at the edges.
+    const float fx = std::clamp((x - t.origin.x) / t.cellM, 0.0f, float(t.cols - 1));
+    const float fz = std::clamp((z - t.origin.y) / t.cellM, 0.0f, float(t.rows - 1));
+    const auto x0 = std::min(std::uint32_t(fx), t.cols - 2), z0 = std::min(std::uint32_t(fz), t.rows - 2);
+    const float u = fx - float(x0), v = fz - float(z0);
+    auto h = [&](std::uint32_t cx, std::uint32_t cz) { return t.heights[std::size_t(cz) * t.cols + cx]; };
+    return (h(x0, z0) * (1 - u) + h(x0 + 1, z0) * u) * (1 - v) + (h(x0, z0 + 1) * (1 - u) + h(x0 + 1, z0 + 1) * u) * v;
 }
 
 std::size_t World::agentsWithGoal() const
@@ -222,6 +269,14 @@ void World::startRecording(FrameCache& cache) const
     std::vector<AgentFrame> frame;
     snapshot(frame);
     cache.append(frame);
+}
+
+std::size_t World::memoryBytes() const
+{
+    const std::size_t n = m_pos.capacity();
+    return n * (sizeof(AgentInfo) + 11 * sizeof(glm::vec3) + 2 * sizeof(WanderState) + 5 * sizeof(float) +
+                3 * sizeof(std::int32_t) + sizeof(glm::vec2) + 4 + kMaxNeighbours * sizeof(std::uint32_t)) +
+           m_grid.memoryBytes();
 }
 
 }  // namespace throng::sim

@@ -4,10 +4,12 @@
 // count. Never reads a clock, never allocates inside step(), never draws.
 
 #include "simcore/scene/Scene.h"
+#include "simcore/steering/Steering.h"
 #include "simcore/world/FrameCache.h"
 #include "simcore/world/NeighbourGrid.h"
 #include "simcore/world/SegmentGrid.h"
 #include "simcore/world/StepCounters.h"
+#include "simcore/world/TypeSteering.h"
 
 #include <glm/vec3.hpp>
 
@@ -19,15 +21,18 @@
 namespace throng::sim {
 
 struct WorldOptions {
-    std::uint64_t seed = 0;     // 0 = the scene's seed
+    std::uint64_t seed = 0;     // used when overrideSeed; else the scene's seed
     bool overrideSeed = false;
     int threads = 0;            // 0 = OpenMP's default
 };
 
 class World {
 public:
+    // Most neighbours one agent perceives (the nearest ones in its perception cone).
+    static constexpr std::size_t kMaxNeighbours = 12;
+
     // Builds the runtime from a validated scene: placed agents, spawned groups (seeded),
-    // goals and paths resolved to indices, walls and obstacles into lookup structures.
+    // goals, paths and leaders resolved to indices, walls and obstacles into grids.
     World(const Scene& scene, const WorldOptions& options = {});
 
     // Advances exactly one fixed step of 1 / fps seconds.
@@ -36,17 +41,20 @@ public:
     std::size_t agentCount() const { return m_pos.size(); }
     std::uint64_t stepIndex() const { return m_step; }
     float dt() const { return m_dt; }
-    double timeS() const { return double(m_step) * m_dt; }
+    double timeS() const { return double(m_step) * double(m_dt); }
     std::uint64_t seed() const { return m_seed; }
     int threads() const { return m_threads; }
 
     std::span<const glm::vec3> positions() const { return m_pos; }
     std::span<const glm::vec3> velocities() const { return m_vel; }
     std::span<const glm::vec3> forwards() const { return m_fwd; }
+    std::span<const glm::vec3> ups() const { return m_up; }
     std::span<const float> radii() const { return m_radius; }
     AgentId id(std::size_t i) const { return m_info[i].id; }
     const std::vector<AgentInfo>& agentInfo() const { return m_info; }
     bool hasArrived(std::size_t i) const { return m_arrived[i] != 0; }
+    // Seconds from the start until agent i arrived; negative while it has not.
+    float arrivalTimeS(std::size_t i) const { return m_arrivalTime[i]; }
     // Agents with a goal or an open path to finish.
     std::size_t agentsWithGoal() const;
 
@@ -56,44 +64,73 @@ public:
     void startRecording(FrameCache& cache) const;
     // Running totals of the quality figures since construction.
     const StepCounters& counters() const { return m_counters; }
+    // Bytes held by the per-agent arrays and the neighbour grid.
+    std::size_t memoryBytes() const;
 
     // Light state of a traffic light at the current time: 0 green, 1 yellow, 2 red.
     int lightState(std::size_t light) const;
 
 private:
-    void buildAgents(const Scene& scene);
-    void spawnGroup(const Scene& scene, const SpawnGroup& group, std::size_t groupIndex);
-    void addAgent(const Scene& scene, AgentId id, std::uint16_t type, glm::vec3 pos, float headingRad,
-                  int goal, int path);
-    glm::vec3 desiredVelocity(std::size_t i) const;
-    void constrain(std::size_t i, glm::vec3 from, glm::vec3& to) const;
-    void countStep();
-
-    // Per-type constants (index = AgentInfo::typeIndex).
     struct TypeParams {
         float radius, maxSpeed, maxForce, mass, perception;
+        float cosHalfView;  // view cone: cos(view angle / 2); -1 = all round
         AgentKind kind;
-        float separation;  // weight of separation, 0 = off
     };
+    struct CrosswalkBox { glm::vec2 a, b; float halfWidth; int light; };  // light -1 = uncontrolled
+    struct FlowSegment { glm::vec2 a, b; float halfWidth; };
+
+    void buildStatics(const Scene& scene);
+    void buildAgents(const Scene& scene);
+    void spawnGroup(const Scene& scene, const SpawnGroup& group, std::size_t groupIndex, AgentId& nextId);
+    void addAgent(const Scene& scene, AgentId id, std::uint16_t type, glm::vec3 pos, float headingRad, int goal,
+                  int path, AgentId leader);
+
+    // Step phases, each for one agent; see WorldStep.cpp.
+    SteeringAgent steeringAgent(std::size_t i) const;
+    std::size_t gatherNeighbours(std::size_t i, Neighbour* out, std::uint32_t* indices) const;
+    glm::vec3 separateBodies(std::size_t i) const;
+    glm::vec3 steer(std::size_t i, const SteeringAgent& self, std::span<const Neighbour> near,
+                    WanderState& wanderOut) const;
+    glm::vec3 flowDirection(glm::vec3 p) const;
+    void constrain(std::size_t i, glm::vec3 from, glm::vec3& to) const;
+    float groundHeight(float x, float z) const;
+    void commit(std::size_t i, std::uint64_t& wallCrossings);
+    void countStep();
+
     std::vector<TypeParams> m_types;
-    struct CircleObstacle { glm::vec2 c; float r; };
+    std::vector<TypeSteering> m_steering;  // per type
+
+    // The set, static during a run.
     SegmentGrid m_walls;  // walls and the 4 sides of box obstacles
     std::vector<CircleObstacle> m_circles;
+    std::vector<BoxObstacle> m_boxes;
+    SegmentGrid m_obstacleGrid;  // circles and boxes by their bounding boxes; index < circles = circle
     std::vector<Goal> m_goals;
+    std::vector<std::vector<glm::vec3>> m_pathPoints;
     std::vector<Path> m_paths;
     std::vector<TrafficLight> m_lights;
-    struct CrosswalkBox { glm::vec2 a, b; float halfWidth; int light; };  // light -1 = uncontrolled
     std::vector<CrosswalkBox> m_crosswalks;
+    std::vector<FlowSegment> m_flow;
+    Terrain m_terrain;
+    WalkableBox m_bounds;
 
-    // Structure of arrays, dense agent index.
+    // Structure of arrays, dense agent index; m_next* hold the step being computed.
     std::vector<AgentInfo> m_info;
-    std::vector<glm::vec3> m_pos, m_vel, m_fwd;
-    std::vector<glm::vec3> m_nextPos, m_nextVel;
-    std::vector<float> m_radius, m_speedFactor, m_phase, m_stride;
-    std::vector<int> m_goal, m_path, m_waypoint;
-    std::vector<std::uint8_t> m_arrived, m_onCrosswalk;
+    std::vector<glm::vec3> m_pos, m_vel, m_fwd, m_side, m_up;
+    std::vector<glm::vec3> m_nextPos, m_nextVel, m_nextFwd, m_nextSide, m_nextUp;
+    std::vector<WanderState> m_wander, m_nextWander;
+    std::vector<float> m_radius, m_maxSpeed, m_phase, m_stride, m_arrivalTime;
+    std::vector<std::int32_t> m_goal, m_path, m_leader;
+    std::vector<glm::vec2> m_goalSpot;  // each agent's own point inside its goal's disk
+    // arrived: entered the goal area (or reached the end of its path), for the stats;
+    // stopped: standing on its spot, frozen from then on.
+    std::vector<std::uint8_t> m_arrived, m_stopped, m_onCrosswalk;
+    std::vector<std::uint32_t> m_nearIndex;  // kMaxNeighbours per agent: whom it sensed this step
+    std::vector<std::uint8_t> m_nearCount;
+    std::vector<glm::vec3> m_resolvedPos;
 
     NeighbourGrid m_grid;
+    bool m_gridCurrent = false;  // the grid indexes the current positions
     StepCounters m_counters;
     std::uint64_t m_seed = 1;
     std::uint64_t m_step = 0;

@@ -60,7 +60,13 @@ sim::Scene makeRandomScene(std::uint32_t seed, std::uint32_t agentCount)
         type.variation.heightScale = {0.9f, f(1, 1.2f)};
         type.variation.speedFactor = {0.75f, f(1, 1.5f)};
         type.variation.phaseOffset = {0.0f, f(0.5f, 1)};
-        type.behaviours = {{"seek", f(0, 2)}, {"separation", f(0, 5)}};
+        type.behaviours = {{"seek", f(0, 2), {}},
+                           {"separation", f(0, 5), {{"range", "", {f(0, 2)}}}},
+                           {"obstacle_avoidance", 2.0f, {{"response", "repulsive", {}}, {"margin", "", {f(0, 1)}}}},
+                           {"offset_pursuit", 1.0f, {{"offset", "", {f(-2, 2), 0.0f, f(-3, 0)}}}}};
+        type.priorityCombination = t == 1;
+        type.minSpeed = t == 2 ? f(1, 5) : 0.0f;
+        type.banking = t == 2 ? f(0, 0.2f) : 0.0f;
         s.agentTypes.push_back(type);
     }
     s.goals = {{"exit", pt(), f(0.5f, 3)}, {"door", pt(), 1.0f}};
@@ -95,10 +101,11 @@ sim::Scene makeRandomScene(std::uint32_t seed, std::uint32_t agentCount)
         a.headingDeg = f(-180, 180);
         a.goal = i % 2 ? "exit" : "";
         a.path = i % 5 == 0 ? "main" : "";
+        a.leader = i > 0 && i % 4 == 0 ? 1u : 0u;
         s.agents.push_back(a);
     }
-    s.groups = {{"shoppers", "type0", 25, AreaShape::Rect, {-10, -10}, {f(0, 10), f(0, 10)}, {}, 0.0f, "door", ""},
-                {"circle", "type2", 7, AreaShape::Circle, {}, {}, pt(), f(1, 5), "", "ring"}};
+    s.groups = {{"shoppers", "type0", 25, AreaShape::Rect, {-10, -10}, {f(0, 10), f(0, 10)}, {}, 0.0f, "door", "", agentCount > 0 ? 1u : 0u},
+                {"circle", "type2", 7, AreaShape::Circle, {}, {}, pt(), f(1, 5), "", "ring", 0u}};
     s.vehicles = {{id++, "type1", "east", f(0, 20), f(0, 10)}};
     s.heroes = {{id++, "lead", "type0", f(0, 4), "", {{0.0f, {1, 0, 2}}, {f(0.5f, 2), {3, 0.5f, 4}}, {5.0f, {6, 0, 7}}}}};
     return s;

@@ -47,11 +47,11 @@ std::uint64_t runHash(const Scene& scene, int threads, int steps, std::uint64_t 
 }
 
 const char* kCrowd = R"(throng: 1
-settings: {fps: 24, seed: 5, bounds: {min: [-30, -30], max: [30, 30]}}
+settings: {fps: 24, seed: 5, bounds: {min: [-40, -40], max: [40, 40]}}
 agent_types:
   - {name: walker, radius: 0.3, max_speed: 1.5, max_force: 8}
 goals:
-  - {name: exit, position: [20, 0], radius: 2}
+  - {name: exit, position: [24, 0], radius: 9}
 walls:
   - {points: [[5, -3], [5, 3]]}
 obstacles:

@@ -1,8 +1,9 @@
 #include "simcore/io/detail/SceneReader.h"
 
-#include <algorithm>
 #include "simcore/io/detail/YamlDocument.h"
+#include "simcore/world/TypeSteering.h"
 
+#include <algorithm>
 #include <filesystem>
 
 namespace throng::sim::detail {
@@ -66,6 +67,56 @@ void SceneReader::read(const YAML::Node& root, Scene& scene)
     if (auto n = section("heroes"); n.IsDefined())
         readHeroes(n, scene);
     assignMissingIds(scene);
+    // Leaders are checked last: any placed agent, vehicle or hero may lead.
+    std::set<std::uint32_t> all;
+    for (const Agent& a : scene.agents) all.insert(a.id);
+    for (const Vehicle& v : scene.vehicles) all.insert(v.id);
+    for (const Hero& h : scene.heroes) all.insert(h.id);
+    for (const LeaderRef& r : m_leaderRefs)
+        if (!all.count(r.id))
+            m_f.error(r.at, r.key, "no agent, vehicle or hero with id " + std::to_string(r.id) + " to lead");
+}
+
+bool SceneReader::readBehaviour(const YAML::Node& node, const std::string& key, BehaviourWeight& out)
+{
+    if (!node.IsMap())
+        return m_f.toFloat(node, key, out.weight, Range::NonNegative);
+    m_f.checkDuplicateKeys(node, key);
+    if (!m_f.readFloat(node, "weight", key, out.weight, false, Range::NonNegative))
+        return false;
+    bool ok = true;
+    std::set<std::string> seen;
+    for (auto it = node.begin(); it != node.end(); ++it) {
+        BrainParam p;
+        p.key = it->first.Scalar();
+        if (p.key == "weight" || !seen.insert(p.key).second)
+            continue;
+        const YAML::Node v = it->second;
+        const std::string pk = key + "." + p.key;
+        if (v.IsSequence()) {
+            p.numbers.resize(v.size());
+            for (std::size_t i = 0; ok && i < v.size(); ++i)
+                ok = m_f.toFloat(v[i], indexKey(pk, i), p.numbers[i], Range::Any);
+        } else if (v.IsScalar()) {
+            float number = 0.0f;
+            std::string why;
+            if (parseFiniteFloat(v.Scalar(), number, why))
+                p.numbers = {number};
+            else
+                p.text = v.Scalar();
+        } else {
+            m_f.error(v.Mark(), pk, "must be a number, a list of numbers or a word");
+            ok = false;
+            continue;
+        }
+        if (const std::string problem = checkBehaviourParam(out.behaviour, p); !problem.empty()) {
+            m_f.error(it->first.Mark(), pk, problem);
+            ok = false;
+            continue;
+        }
+        out.params.push_back(std::move(p));
+    }
+    return ok;
 }
 
 void SceneReader::readSettings(const YAML::Node& node, Settings& s)
@@ -174,7 +225,8 @@ void SceneReader::readAgentTypes(const YAML::Node& node, Scene& scene)
         if (!m_f.expectMap(item, key))
             continue;
         m_f.checkKeys(item, key, {"name", "kind", "radius", "max_speed", "max_force", "mass", "perception",
-                                  "view_angle", "brain", "character", "variation", "behaviours"});
+                                  "view_angle", "brain", "character", "variation", "behaviours", "combination",
+                                  "min_speed", "banking"});
         AgentType t;
         if (!m_f.readName(item, "name", key, t.name, true))
             continue;
@@ -215,6 +267,15 @@ void SceneReader::readAgentTypes(const YAML::Node& node, Scene& scene)
         }
         if (YAML::Node v = item["variation"]; v.IsDefined())
             readVariation(v, key + ".variation", t.variation);
+        std::string combination = "blend";
+        if (m_f.readString(item, "combination", key, combination, false)) {
+            if (combination == "priority") t.priorityCombination = true;
+            else if (combination != "blend")
+                m_f.error(item["combination"].Mark(), key + ".combination",
+                          "must be blend or priority, got '" + combination + "'");
+        }
+        m_f.readFloat(item, "min_speed", key, t.minSpeed, false, Range::NonNegative);
+        m_f.readFloat(item, "banking", key, t.banking, false, Range::NonNegative);
         if (YAML::Node b = item["behaviours"]; b.IsDefined() && m_f.expectMap(b, key + ".behaviours")) {
             const auto& known = behaviourNames();
             m_f.checkDuplicateKeys(b, key + ".behaviours");
@@ -228,9 +289,9 @@ void SceneReader::readAgentTypes(const YAML::Node& node, Scene& scene)
                     m_f.error(it->first.Mark(), bk, "unknown steering behaviour '" + name + "'");
                     continue;
                 }
-                BehaviourWeight w{name, 1.0f};
-                if (m_f.toFloat(it->second, bk, w.weight, Range::NonNegative))
-                    t.behaviours.push_back(w);
+                BehaviourWeight w{name, 1.0f, {}};
+                if (readBehaviour(it->second, bk, w))
+                    t.behaviours.push_back(std::move(w));
             }
         }
         scene.agentTypes.push_back(std::move(t));
@@ -251,7 +312,7 @@ void SceneReader::readAgents(const YAML::Node& node, Scene& scene)
         const YAML::Node item = node[i];
         if (!m_f.expectMap(item, key))
             continue;
-        m_f.checkKeys(item, key, {"id", "type", "position", "heading", "goal", "path"});
+        m_f.checkKeys(item, key, {"id", "type", "position", "heading", "goal", "path", "leader"});
         Agent a;
         if (YAML::Node id = item["id"]; id.IsDefined() && m_f.readU32(item, "id", key, a.id, false))
             claimId(id, key + ".id", a.id);
@@ -263,6 +324,8 @@ void SceneReader::readAgents(const YAML::Node& node, Scene& scene)
             checkRef(item, "goal", key, a.goal, scene.findGoal(a.goal) != nullptr, "goal");
         if (m_f.readName(item, "path", key, a.path, false) && !a.path.empty())
             checkRef(item, "path", key, a.path, scene.findPath(a.path) != nullptr, "path");
+        if (m_f.readU32(item, "leader", key, a.leader, false) && item["leader"].IsDefined())
+            m_leaderRefs.push_back({item["leader"].Mark(), key + ".leader", a.leader});
         scene.agents.push_back(std::move(a));
     }
 }
@@ -277,7 +340,7 @@ void SceneReader::readGroups(const YAML::Node& node, Scene& scene)
         const YAML::Node item = node[i];
         if (!m_f.expectMap(item, key))
             continue;
-        m_f.checkKeys(item, key, {"name", "type", "count", "rect", "circle", "goal", "path"});
+        m_f.checkKeys(item, key, {"name", "type", "count", "rect", "circle", "goal", "path", "leader"});
         SpawnGroup g;
         if (m_f.readName(item, "name", key, g.name, true))
             claimName(names, item, key, g.name, "group");
@@ -304,6 +367,8 @@ void SceneReader::readGroups(const YAML::Node& node, Scene& scene)
             checkRef(item, "goal", key, g.goal, scene.findGoal(g.goal) != nullptr, "goal");
         if (m_f.readName(item, "path", key, g.path, false) && !g.path.empty())
             checkRef(item, "path", key, g.path, scene.findPath(g.path) != nullptr, "path");
+        if (m_f.readU32(item, "leader", key, g.leader, false) && item["leader"].IsDefined())
+            m_leaderRefs.push_back({item["leader"].Mark(), key + ".leader", g.leader});
         scene.groups.push_back(std::move(g));
     }
 }

@@ -47,12 +47,20 @@ private:
     bool claimName(std::set<std::string>& names, const YAML::Node& map, const std::string& key,
                    const std::string& name, const char* what);
     bool claimId(const YAML::Node& at, const std::string& key, std::uint32_t id);
+    // A behaviour's value: a weight, or a map of weight and parameters.
+    bool readBehaviour(const YAML::Node& node, const std::string& key, BehaviourWeight& out);
     void assignMissingIds(Scene& scene);
 
     YamlFields& m_f;
     std::string m_baseDir;
     std::string_view m_source;
     std::set<std::uint32_t> m_ids;
+    struct LeaderRef {
+        YAML::Mark at;
+        std::string key;
+        std::uint32_t id;
+    };
+    std::vector<LeaderRef> m_leaderRefs;
 };
 
 // Reads a brain graph map: the inline form in a scene, or (isFile) a .brain.yaml file's

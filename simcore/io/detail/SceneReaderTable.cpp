@@ -9,8 +9,9 @@ namespace throng::sim::detail {
 
 namespace {
 
-enum Column { kId, kType, kX, kY, kZ, kHeading, kGoal, kPath, kColumnCount };
-const std::array<const char*, kColumnCount> kColumnNames{"id", "type", "x", "y", "z", "heading", "goal", "path"};
+enum Column { kId, kType, kX, kY, kZ, kHeading, kGoal, kPath, kLeader, kColumnCount };
+const std::array<const char*, kColumnCount> kColumnNames{"id",      "type", "x",    "y",     "z",
+                                                         "heading", "goal", "path", "leader"};
 
 // Finds a 0-based line of the source text.
 struct LineIndex {
@@ -48,7 +49,7 @@ void SceneReader::readAgentTable(const YAML::Node& node, const std::string& key,
         const std::string ck = indexKey(key + ".columns", i);
         if (found < 0) {
             m_f.error(node["columns"][i].Mark(), ck, "unknown column '" + columns[i] +
-                                                        "' (known: id, type, x, y, z, heading, goal, path)");
+                                                        "' (known: id, type, x, y, z, heading, goal, path, leader)");
             return;
         }
         if (at[found] >= 0) {
@@ -159,6 +160,21 @@ void SceneReader::readAgentTable(const YAML::Node& node, const std::string& key,
             name(kGoal, a.goal, scene.findGoal(std::string(tok[std::size_t(at[kGoal])])) != nullptr, "goal");
         if (at[kPath] >= 0)
             name(kPath, a.path, scene.findPath(std::string(tok[std::size_t(at[kPath])])) != nullptr, "path");
+        if (at[kLeader] >= 0 && ok) {
+            std::string_view t = tok[std::size_t(at[kLeader])];
+            if (t != "-") {
+                auto [p, ec] = std::from_chars(t.data(), t.data() + t.size(), a.leader);
+                if (ec != std::errc() || p != t.data() + t.size() || a.leader == 0) {
+                    m_f.errorAtLine(line1, col1(kLeader), rk + ".leader",
+                                    "must be an agent id >= 1 or '-', got '" + std::string(t) + "'");
+                    ok = false;
+                } else {
+                    m_leaderRefs.push_back({YAML::Mark(), rk + ".leader", a.leader});
+                    m_leaderRefs.back().at.line = line1 - 1;
+                    m_leaderRefs.back().at.column = col1(kLeader) - 1;
+                }
+            }
+        }
         if (ok)
             scene.agents.push_back(std::move(a));
         if (m_f.errorCount() > 200)

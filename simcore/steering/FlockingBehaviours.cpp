@@ -1,0 +1,101 @@
+// Separation, alignment, cohesion (Reynolds 1987, "Flocks, Herds, and Schools"; 1999).
+#include "simcore/steering/FlockingBehaviours.h"
+
+#include "simcore/steering/TargetBehaviours.h"
+#include "simcore/steering/detail/SteeringMath.h"
+#include "simcore/world/Rng.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+
+namespace throng::sim {
+
+using namespace detail;
+
+namespace {
+
+// The separation weight never exceeds this, however close two agents are.
+constexpr float kMaxSeparationWeight = 10.0f;
+
+// A horizontal unit direction fixed by the unordered pair of ids, pointing from the lower id
+// to the higher: two coincident agents compute the same axis and leave it in opposite senses.
+glm::vec3 pairAxis(std::uint32_t lowId, std::uint32_t highId)
+{
+    const std::uint64_t h = mix64((std::uint64_t(lowId) << 32) | highId);
+    // The half offsets keep both components away from zero, so the length is never zero.
+    const float x = float(h & 0xffffu) - 32767.5f;
+    const float z = float((h >> 16) & 0xffffu) - 32767.5f;
+    return glm::normalize(glm::vec3(x, 0.0f, z));
+}
+
+glm::vec3 coincidentAway(std::uint32_t self, std::uint32_t other)
+{
+    if (self == other)
+        return glm::vec3(1.0f, 0.0f, 0.0f);
+    return self > other ? pairAxis(other, self) : -pairAxis(self, other);
+}
+
+}  // namespace
+
+glm::vec3 separate(const SteeringAgent& agent, std::span<const Neighbour> neighbours, const SeparationParams& params)
+{
+    const glm::vec3 p = finiteOrZero(agent.position);
+    const glm::vec3 v = finiteOrZero(agent.velocity);
+    const float range = nonNegative(params.rangeM);
+    const float damping = effectiveMass(agent.mass) / std::max(nonNegative(params.dampingTimeS), kMinResponseTimeS);
+    const float maxForce = nonNegative(agent.maxForce);
+    glm::vec3 push(0.0f);
+    for (const Neighbour& n : neighbours) {
+        const glm::vec3 rel = p - finiteOrZero(n.position);
+        const float d = glm::length(rel);
+        const float contact = nonNegative(agent.radius) + nonNegative(n.radius);
+        const float reach = contact + range;
+        if (!(d < reach))
+            continue;
+        // Reynolds 1999: each neighbour's push is weighted by 1 / distance.
+        const float reference = contact > kTiny ? contact : range;
+        const float w = reference / std::max(d, reference / kMaxSeparationWeight);
+        const float fade = range > kTiny ? std::min(1.0f, (reach - d) / range) : 1.0f;
+        const glm::vec3 away = d > kTiny ? rel / d : coincidentAway(agent.id, n.id);
+        // The damper on the speed along the line between the two lets a squeezed pair settle
+        // instead of bouncing like two springs; side-by-side walkers are not slowed.
+        const float opening = glm::dot(v - finiteOrZero(n.velocity), away);
+        push += away * (fade * (maxForce * w - damping * opening));
+    }
+    return push;
+}
+
+glm::vec3 align(const SteeringAgent& agent, std::span<const Neighbour> neighbours, const AlignmentParams& params)
+{
+    if (neighbours.empty())
+        return glm::vec3(0.0f);
+    glm::vec3 headings(0.0f), velocities(0.0f);
+    for (const Neighbour& n : neighbours) {
+        headings += normalizeOr(n.forward, glm::vec3(0.0f));
+        velocities += finiteOrZero(n.velocity);
+    }
+    glm::vec3 desired(0.0f);
+    if (params.matchSpeed) {
+        desired = truncate(velocities / float(neighbours.size()), agent.maxSpeed);
+    } else {
+        const glm::vec3 dir = normalizeOr(headings, glm::vec3(0.0f));
+        if (dir == glm::vec3(0.0f))
+            return glm::vec3(0.0f);
+        desired = dir * std::min(glm::length(finiteOrZero(agent.velocity)), nonNegative(agent.maxSpeed));
+    }
+    return steerTowards(agent, desired, params.responseTimeS);
+}
+
+glm::vec3 cohere(const SteeringAgent& agent, std::span<const Neighbour> neighbours, const CohesionParams& params)
+{
+    if (neighbours.empty())
+        return glm::vec3(0.0f);
+    glm::vec3 centre(0.0f);
+    for (const Neighbour& n : neighbours)
+        centre += finiteOrZero(n.position);
+    centre /= float(neighbours.size());
+    return arrive(agent, centre, ArrivalParams{params.slowingDistanceM, 0.0f, params.responseTimeS});
+}
+
+}  // namespace throng::sim

@@ -1,0 +1,48 @@
+#pragma once
+// Separation, alignment and cohesion (Reynolds 1987 boids, 1999 steering): the three group
+// behaviours over the neighbours the caller gathered. Pure; zero without neighbours in
+// range; never allocates, never reads the world, never draws random numbers.
+
+#include "simcore/steering/Neighbour.h"
+#include "simcore/steering/SteeringAgent.h"
+
+#include <glm/vec3.hpp>
+
+#include <span>
+
+namespace throng::sim {
+
+struct SeparationParams {
+    float rangeM = 0.5f;         // m, >= 0: body-to-body gap below which a neighbour pushes
+    float dampingTimeS = 0.5f;   // s, > 0: time constant damping how fast a neighbour in range
+                                 // closes or opens the gap
+};
+
+struct AlignmentParams {
+    bool matchSpeed = false;      // false: turn to the neighbours' mean heading at the current speed;
+                                  // true: match their mean velocity
+    float responseTimeS = 0.5f;   // s, > 0: time to reach the desired velocity
+};
+
+struct CohesionParams {
+    float slowingDistanceM = 2.0f;  // m, > 0: the approach to the centre slows inside it
+    float responseTimeS = 0.5f;     // s, > 0
+};
+
+// Sum over neighbours nearer than the two radii plus rangeM of
+//   fade * (maxForce * w - mass / dampingTimeS * opening speed) * away,
+// with the inverse-distance weight w = (r_i + r_j) / d (1 at contact, capped at 10 when nearly
+// coincident) and fade = min(1, (r_i + r_j + rangeM - d) / rangeM), 1 up to contact and 0 at the
+// edge of the range, so a neighbour entering the range adds no jump. Coincident agents part along a direction hashed
+// from their two ids, in opposite senses. Not truncated: a crowded agent may get more than maxForce.
+glm::vec3 separate(const SteeringAgent& agent, std::span<const Neighbour> neighbours,
+                   const SeparationParams& params = {});
+
+// Steers toward the neighbours' mean heading (or mean velocity). Zero without neighbours or when
+// their headings cancel.
+glm::vec3 align(const SteeringAgent& agent, std::span<const Neighbour> neighbours, const AlignmentParams& params = {});
+
+// Arrives at the neighbours' centre. Zero without neighbours.
+glm::vec3 cohere(const SteeringAgent& agent, std::span<const Neighbour> neighbours, const CohesionParams& params = {});
+
+}  // namespace throng::sim

@@ -1,0 +1,30 @@
+#pragma once
+// Leader following (Reynolds 1999): arrive at a point behind the leader, and step aside
+// when standing in the corridor ahead of it. Separation from other followers is the
+// caller's to add. Pure; never allocates, never reads anything but its arguments.
+
+#include "simcore/steering/Neighbour.h"
+#include "simcore/steering/SteeringAgent.h"
+
+#include <glm/vec3.hpp>
+
+namespace throng::sim {
+
+struct LeaderFollowParams {
+    float behindM = 1.5f;             // m, >= 0: the follow point's distance behind the leader's centre
+    float corridorLengthM = 3.0f;     // m, >= 0: length of the region ahead of the leader kept clear
+    float corridorHalfWidthM = 0.8f;  // m, >= 0: its half width, to which the follower's radius is added
+    float slowingDistanceM = 2.0f;    // m, > 0: arrival ramp toward the follow point
+    float responseTimeS = 0.25f;      // s, > 0
+};
+
+// True when the follower's centre lies in the corridor: ahead of the leader's centre by at most
+// corridorLengthM and nearer its heading line than corridorHalfWidthM + the follower's radius.
+bool inLeaderCorridor(const SteeringAgent& follower, const Neighbour& leader, const LeaderFollowParams& params = {});
+
+// In the corridor: steer straight out of it sideways at top speed (away from the leader's line;
+// a follower exactly on the line goes right when its id is odd, left when even). Elsewhere:
+// offset pursuit of the point behindM behind the leader.
+glm::vec3 followLeader(const SteeringAgent& follower, const Neighbour& leader, const LeaderFollowParams& params = {});
+
+}  // namespace throng::sim

@@ -1,0 +1,43 @@
+#pragma once
+// Path following (Reynolds 1999): keep the agent's predicted position inside a path of some
+// radius around a polyline spine, moving along it in one direction. Pure; returns exactly
+// zero while the agent is on the path and progressing, and never allocates.
+
+#include "simcore/steering/SteeringAgent.h"
+#include "simcore/steering/SteeringGeometry.h"
+
+#include <glm/vec3.hpp>
+
+namespace throng::sim {
+
+struct PathFollowParams {
+    float predictionS = 1.0f;       // s, >= 0: the future position is position + velocity * this
+    float aheadM = 1.5f;            // m, >= 0: distance along the spine, past the agent's projection, to seek
+    bool reverse = false;           // true: travel against the order of the points
+    float cruiseFraction = 0.9f;    // [0, 1]: moving along the path slower than this share of
+                                    // maxSpeed counts as not progressing, so the follower speeds up
+    float responseTimeS = 0.25f;    // s, > 0: time to reach the desired velocity
+};
+
+// Steers only when the predicted position lies outside the radius, when the agent is not moving
+// along the path in its direction at cruiseFraction * maxSpeed (for instance standing still), or
+// when the prediction has reached the end of an open path. Then it seeks the spine point aheadM
+// beyond the agent's own projection; when that point is the end of an open path it arrives there
+// (slowing distance max(aheadM, maxSpeed * 1 s)) and stops.
+glm::vec3 followPath(const SteeringAgent& agent, const SteeringPath& path, const PathFollowParams& params = {});
+
+// The nearest point on the spine and its distance along the spine from the first point (m).
+struct PathProjection {
+    glm::vec3 point{0.0f};
+    float distanceAlongM = 0.0f;
+    glm::vec3 tangent{0.0f};  // unit direction of the spine there, in point order; zero for a point path
+};
+PathProjection projectOntoPath(const SteeringPath& path, glm::vec3 p);
+
+// The spine point at a distance along it: wrapped on closed paths, clamped on open ones.
+glm::vec3 pointAlongPath(const SteeringPath& path, float distanceAlongM);
+
+// Total spine length in metres, including the closing segment of a closed path.
+float pathLength(const SteeringPath& path);
+
+}  // namespace throng::sim

@@ -1,0 +1,47 @@
+// Seek, flee and arrival (Reynolds 1999, "Seek and Flee", "Arrival").
+#include "simcore/steering/TargetBehaviours.h"
+
+#include "simcore/steering/detail/SteeringMath.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+
+namespace throng::sim {
+
+using namespace detail;
+
+glm::vec3 seek(const SteeringAgent& agent, glm::vec3 target, const SeekParams& params)
+{
+    return steerTowards(agent, atMaxSpeed(agent, finiteOrZero(target - agent.position)), params.responseTimeS);
+}
+
+glm::vec3 flee(const SteeringAgent& agent, glm::vec3 threat, const FleeParams& params)
+{
+    const glm::vec3 away = finiteOrZero(agent.position - threat);
+    const float panic = nonNegative(params.panicDistanceM);
+    if (panic > 0.0f && glm::length(away) >= panic)
+        return glm::vec3(0.0f);
+    const glm::vec3 dir = normalizeOr(away, heading(agent));
+    return steerTowards(agent, atMaxSpeed(agent, dir), params.responseTimeS);
+}
+
+glm::vec3 arrivalVelocity(const SteeringAgent& agent, glm::vec3 target, float slowingDistanceM, float toleranceM)
+{
+    const glm::vec3 offset = finiteOrZero(target - agent.position);
+    const float dist = glm::length(offset);
+    if (dist <= nonNegative(toleranceM) || dist <= kTiny)
+        return glm::vec3(0.0f);
+    // Reynolds 1999, Arrival: the desired speed falls linearly to zero at the target.
+    const float slowing = std::max(nonNegative(slowingDistanceM), kTiny);
+    const float speed = nonNegative(agent.maxSpeed) * std::min(1.0f, dist / slowing);
+    return offset * (speed / dist);
+}
+
+glm::vec3 arrive(const SteeringAgent& agent, glm::vec3 target, const ArrivalParams& params)
+{
+    return steerTowards(agent, arrivalVelocity(agent, target, params.slowingDistanceM, params.toleranceM),
+                        params.responseTimeS);
+}
+
+}  // namespace throng::sim

@@ -1,0 +1,86 @@
+// The simple vehicle model (Reynolds 1999, "A Simple Vehicle Model"), with banking for
+// fliers as in OpenSteer's SimpleVehicle::applySteeringForce.
+#include "simcore/steering/VehicleModel.h"
+
+#include "simcore/steering/detail/SteeringMath.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace throng::sim {
+
+using namespace detail;
+
+namespace {
+
+// Below this speed (m/s) the velocity no longer says where the agent faces.
+constexpr float kStoppedSpeed = 1e-3f;
+
+SteeringAgent sanitised(const SteeringAgent& s)
+{
+    SteeringAgent out = s;
+    out.position = finiteOrZero(s.position);
+    out.velocity = finiteOrZero(s.velocity);
+    out.forward = normalizeOr(s.forward, glm::vec3(0.0f, 0.0f, 1.0f));
+    out.up = normalizeOr(s.up, kWorldUp);
+    out.side = normalizeOr(s.side, rightOfForward(out.forward));
+    return out;
+}
+
+void groundFrame(SteeringAgent& s)
+{
+    s.velocity.y = 0.0f;
+    const float speed = glm::length(s.velocity);
+    const glm::vec3 flatForward = normalizeOr(glm::vec3(s.forward.x, 0.0f, s.forward.z), glm::vec3(0.0f, 0.0f, 1.0f));
+    s.forward = speed > kStoppedSpeed ? s.velocity / speed : flatForward;
+    s.up = kWorldUp;
+    s.side = rightOfForward(s.forward);
+}
+
+void flyingFrame(SteeringAgent& s, glm::vec3 acceleration, float dt, const VehicleParams& params)
+{
+    const float speed = glm::length(s.velocity);
+    if (speed > kStoppedSpeed)
+        s.forward = s.velocity / speed;
+    // Bank: up leans toward the lateral acceleration, smoothed so a step change of force tilts gradually.
+    const glm::vec3 lateral = acceleration - s.forward * glm::dot(acceleration, s.forward);
+    const glm::vec3 bankedUp = normalizeOr(kWorldUp + lateral * nonNegative(params.bankingGainS2PerM), kWorldUp);
+    const float response = std::max(nonNegative(params.bankingResponseS), kMinResponseTimeS);
+    const float blend = 1.0f - std::exp(-dt / response);
+    const glm::vec3 up = normalizeOr(s.up + (bankedUp - s.up) * blend, kWorldUp);
+    // Orthonormalise; a forward parallel to up keeps the previous side.
+    s.side = normalizeOr(glm::cross(s.forward, up), s.side);
+    s.up = normalizeOr(glm::cross(s.side, s.forward), kWorldUp);
+}
+
+}  // namespace
+
+SteeringAgent integrateVehicle(const SteeringAgent& state, glm::vec3 force, float dt, const VehicleParams& params)
+{
+    SteeringAgent s = sanitised(state);
+    if (!(std::isfinite(dt) && dt > 0.0f))
+        return s;
+    const float maxSpeed = nonNegative(s.maxSpeed);
+    const glm::vec3 f = truncate(finiteOrZero(force), s.maxForce);
+    const glm::vec3 before = s.velocity;
+    glm::vec3 v = truncate(before + f * (dt / effectiveMass(s.mass)), maxSpeed);
+    if (!params.flying) {
+        v.y = 0.0f;
+    } else {
+        const float minSpeed = std::min(nonNegative(params.minSpeed), maxSpeed);
+        const float speed = glm::length(v);
+        if (speed < minSpeed)
+            v = (speed > kStoppedSpeed ? v / speed : s.forward) * minSpeed;
+    }
+    s.velocity = finiteOrZero(v);
+    s.position = finiteOrZero(s.position + s.velocity * dt);
+    if (params.flying)
+        flyingFrame(s, (s.velocity - before) / dt, dt, params);
+    else
+        groundFrame(s);
+    return s;
+}
+
+}  // namespace throng::sim

@@ -1,0 +1,79 @@
+// Wall avoidance / wall following (Reynolds 1999, "Wall Following"; feelers after Buckland 2005).
+#include "simcore/steering/WallAvoidance.h"
+
+#include "simcore/steering/detail/PlanarGeometry.h"
+#include "simcore/steering/detail/SteeringMath.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace throng::sim {
+
+using namespace detail;
+
+namespace {
+
+// The braking term's gap never counts as less than this, so it stays finite at contact.
+constexpr float kMinBrakingGapM = 0.01f;
+
+// The unit normal of wall a-b on the side of p; for p on the wall's line, the side the heading
+// h comes from (and the left normal when h runs along the wall).
+glm::vec2 wallNormalToward(glm::vec2 p, glm::vec2 a, glm::vec2 b, glm::vec2 h)
+{
+    const glm::vec2 along = normalizeOr(b - a, glm::vec2(1.0f, 0.0f));
+    const glm::vec2 n = -rightOf(along);
+    const float side = glm::dot(p - a, n);
+    if (std::abs(side) > kTiny)
+        return side > 0.0f ? n : -n;
+    return glm::dot(h, n) > 0.0f ? -n : n;
+}
+
+}  // namespace
+
+glm::vec3 avoidWalls(const SteeringAgent& agent, std::span<const WallSegment> walls, const WallAvoidanceParams& params)
+{
+    const glm::vec2 p = xz(finiteOrZero(agent.position));
+    const glm::vec2 v = xz(finiteOrZero(agent.velocity));
+    const float r = nonNegative(agent.radius);
+    const float mass = effectiveMass(agent.mass);
+    const glm::vec2 h = planarHeading(agent);
+    const float standoff = std::max(nonNegative(params.standoffM), kTiny);
+    const float standoffForce = nonNegative(params.standoffGain) * nonNegative(agent.maxForce);
+    const float damping = std::max(nonNegative(params.dampingTimeS), kMinResponseTimeS);
+
+    const float length = nonNegative(params.feelerMinM) + glm::length(v) * nonNegative(params.feelerLookaheadS);
+    const float angle = finiteOr(params.sideFeelerAngleRad, 0.0f);
+    const glm::vec2 feelers[3] = {h, h * std::cos(angle) + rightOf(h) * std::sin(angle),
+                                  h * std::cos(angle) - rightOf(h) * std::sin(angle)};
+    const float lengths[3] = {length, 0.5f * length, 0.5f * length};
+
+    glm::vec2 force(0.0f);
+    for (const WallSegment& w : walls) {
+        const glm::vec2 a = xz(finiteOrZero(w.a)), b = xz(finiteOrZero(w.b));
+        const glm::vec2 c = closestOnSegment(p, a, b);
+        const float dist = glm::length(p - c);
+        const glm::vec2 n = dist > kTiny ? (p - c) / dist : wallNormalToward(p, a, b, h);
+        const float gap = dist - r;
+        // Standoff term: push in proportion to how far inside the standoff the body is.
+        // Inside it the motion along the normal is also damped, so a pushed agent settles instead of bouncing.
+        if (gap < standoff) {
+            const float depth = (standoff - gap) / standoff;
+            force += n * (standoffForce * depth - glm::dot(v, n) * mass / damping * std::min(depth, 1.0f));
+        }
+        // Feeler term: a wall a feeler meets and the agent closes on gets the braking force that
+        // stops the approach at contact.
+        const float approach = -glm::dot(v, n);
+        if (!(approach > 0.0f) || h == glm::vec2(0.0f))
+            continue;
+        bool seen = false;
+        for (int f = 0; f < 3 && !seen; ++f)
+            seen = lengths[f] > kTiny && raySegment(p, feelers[f], lengths[f], a, b) >= 0.0f;
+        if (seen)
+            force += n * (mass * approach * approach / (2.0f * std::max(gap, kMinBrakingGapM)));
+    }
+    return fromXz(force);
+}
+
+}  // namespace throng::sim

@@ -1,0 +1,105 @@
+#pragma once
+// Small vector helpers shared by the steering behaviours: safe normalisation, truncation,
+// the planar (x, z) view and the desired-velocity-to-force conversion. Internal to
+// simcore/steering. Every helper returns finite values for finite and non-finite input.
+
+#include "simcore/steering/SteeringAgent.h"
+
+#include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace throng::sim::detail {
+
+inline constexpr float kTiny = 1e-6f;             // lengths below this count as zero
+inline constexpr float kMinMassKg = 1e-3f;        // zero or negative mass is clamped to 1 g
+inline constexpr float kMinResponseTimeS = 1e-3f; // response times are clamped to 1 ms
+inline const glm::vec3 kWorldUp{0.0f, 1.0f, 0.0f};
+
+inline bool isFinite(float x) { return std::isfinite(x); }
+inline bool isFinite(glm::vec2 v) { return std::isfinite(v.x) && std::isfinite(v.y); }
+inline bool isFinite(glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+inline float finiteOr(float x, float fallback) { return std::isfinite(x) ? x : fallback; }
+inline glm::vec3 finiteOrZero(glm::vec3 v) { return isFinite(v) ? v : glm::vec3(0.0f); }
+
+// A limit parameter made usable: non-finite or negative becomes 0.
+inline float nonNegative(float x) { return std::isfinite(x) && x > 0.0f ? x : 0.0f; }
+
+inline float effectiveMass(float massKg) { return std::isfinite(massKg) && massKg > kMinMassKg ? massKg : kMinMassKg; }
+
+inline glm::vec3 normalizeOr(glm::vec3 v, glm::vec3 fallback)
+{
+    const float l = glm::length(v);
+    return std::isfinite(l) && l > kTiny ? v / l : fallback;
+}
+
+inline glm::vec2 normalizeOr(glm::vec2 v, glm::vec2 fallback)
+{
+    const float l = glm::length(v);
+    return std::isfinite(l) && l > kTiny ? v / l : fallback;
+}
+
+// Shortens v to at most maxLength (<= 0 gives zero); keeps its direction.
+inline glm::vec3 truncate(glm::vec3 v, float maxLength)
+{
+    maxLength = nonNegative(maxLength);
+    const float l2 = glm::dot(v, v);
+    if (!std::isfinite(l2))
+        return glm::vec3(0.0f);
+    return l2 > maxLength * maxLength ? v * (maxLength / std::sqrt(l2)) : v;
+}
+
+inline glm::vec2 xz(glm::vec3 v) { return {v.x, v.z}; }
+inline glm::vec3 fromXz(glm::vec2 v) { return {v.x, 0.0f, v.y}; }
+
+// The right-hand horizontal perpendicular of a planar direction (x, z): for heading +z it is -x,
+// the same side as cross(forward, +y).
+inline glm::vec2 rightOf(glm::vec2 d) { return {-d.y, d.x}; }
+
+inline float cross2(glm::vec2 a, glm::vec2 b) { return a.x * b.y - a.y * b.x; }
+
+// The agent's planar heading: its velocity when moving, else its forward; zero when both are
+// vertical or zero.
+inline glm::vec2 planarHeading(const SteeringAgent& agent)
+{
+    const glm::vec2 v = xz(agent.velocity);
+    if (isFinite(v) && glm::length(v) > kTiny)
+        return glm::normalize(v);
+    return normalizeOr(xz(agent.forward), glm::vec2(0.0f));
+}
+
+// The agent's heading in 3D: velocity when moving, else forward, else +z.
+inline glm::vec3 heading(const SteeringAgent& agent)
+{
+    return normalizeOr(agent.velocity, normalizeOr(agent.forward, glm::vec3(0.0f, 0.0f, 1.0f)));
+}
+
+// The right of a 3D forward direction with world up; falls back to -x when forward is vertical.
+inline glm::vec3 rightOfForward(glm::vec3 forward)
+{
+    return normalizeOr(glm::cross(forward, kWorldUp), glm::vec3(-1.0f, 0.0f, 0.0f));
+}
+
+// Reynolds 1999: steering = desired velocity - current velocity, here made a force by the mass
+// and the time the agent should take to reach the desired velocity, truncated to maxForce.
+inline glm::vec3 steerTowards(const SteeringAgent& agent, glm::vec3 desiredVelocity, float responseTimeS)
+{
+    const glm::vec3 v = finiteOrZero(agent.velocity);
+    const glm::vec3 dv = finiteOrZero(desiredVelocity) - v;
+    if (dv == glm::vec3(0.0f))
+        return glm::vec3(0.0f);
+    const float t = std::isfinite(responseTimeS) ? std::max(responseTimeS, kMinResponseTimeS) : kMinResponseTimeS;
+    return truncate(dv * (effectiveMass(agent.mass) / t), agent.maxForce);
+}
+
+// A velocity of the agent's top speed along direction (need not be unit); zero for a zero direction.
+inline glm::vec3 atMaxSpeed(const SteeringAgent& agent, glm::vec3 direction)
+{
+    return normalizeOr(direction, glm::vec3(0.0f)) * nonNegative(agent.maxSpeed);
+}
+
+}  // namespace throng::sim::detail

@@ -1,0 +1,82 @@
+#pragma once
+// An agent type's steering, compiled from the scene: which behaviours run, their
+// weights (or priority order) and parameters, and the vehicle model's settings. Built
+// once per World; read-only during a step.
+
+#include "simcore/scene/Scene.h"
+#include "simcore/steering/Steering.h"
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace throng::sim {
+
+// In the order prioritised allocation serves them (Reynolds 1987: the most urgent first),
+// which is also the order of behaviourNames().
+enum class Behaviour : std::uint8_t {
+    Containment,
+    WallFollowing,
+    ObstacleAvoidance,
+    Separation,
+    UnalignedCollisionAvoidance,
+    Evasion,
+    Flee,
+    LeaderFollowing,
+    OffsetPursuit,
+    Pursuit,
+    PathFollowing,
+    FlowFieldFollowing,
+    Arrival,
+    Seek,
+    Alignment,
+    Cohesion,
+    Wander,
+};
+constexpr std::size_t kBehaviourCount = 17;
+
+const char* behaviourName(Behaviour b);
+
+struct TypeSteering {
+    std::array<float, kBehaviourCount> weight{};  // >= 0; 0 = the behaviour does not run
+    bool priority = false;                        // prioritised allocation instead of blending
+    VehicleParams vehicle;
+    SeekParams seek;
+    FleeParams flee;
+    PursuitParams pursuit;
+    EvasionParams evasion;
+    OffsetPursuitParams offsetPursuit;
+    ArrivalParams arrival;
+    ObstacleAvoidanceParams obstacles;
+    WanderParams wander;
+    PathFollowParams path;
+    WallAvoidanceParams walls;
+    ContainmentParams containment;
+    FlowFollowParams flow;
+    SeparationParams separation;
+    AlignmentParams alignment;
+    CohesionParams cohesion;
+    LeaderFollowParams leader;
+    UnalignedAvoidanceParams unaligned;
+
+    float w(Behaviour b) const { return weight[std::size_t(b)]; }
+    bool on(Behaviour b) const { return weight[std::size_t(b)] > 0.0f; }
+};
+
+// Builds a type's steering from its scene description. A type that names no behaviours
+// gets the defaults for its kind (pedestrians: arrival, path following, separation,
+// unaligned collision avoidance, obstacle and wall avoidance, containment).
+TypeSteering compileTypeSteering(const AgentType& type);
+
+// Parameters a behaviour accepts in the scene file, for the reader's checks and the docs.
+struct BehaviourParamInfo {
+    const char* behaviour;
+    const char* key;
+    const char* meaning;  // with unit and range
+};
+const std::vector<BehaviourParamInfo>& behaviourParams();
+// Checks one behaviour parameter; returns an error message, empty when fine.
+std::string checkBehaviourParam(const std::string& behaviour, const BrainParam& param);
+
+}  // namespace throng::sim
