@@ -20,16 +20,27 @@ enum Stream : std::uint64_t {
     kSpawnX = 1, kSpawnZ, kSpawnHeading, kSpeedFactor, kPhaseOffset, kStride, kWanderStart, kSpotR, kSpotA
 };
 
-template <typename T>
-int indexByName(const std::vector<T>& items, const std::string& name)
-{
-    if (name.empty())
-        return -1;
-    for (std::size_t k = 0; k < items.size(); ++k)
-        if (items[k].name == name)
-            return int(k);
-    return -1;
-}
+// Name -> index for one kind of scene item, built once so that resolving a million
+// agents' references costs O(N log K), not O(N K).
+class NameIndex {
+public:
+    template <typename T>
+    explicit NameIndex(const std::vector<T>& items)
+    {
+        for (std::size_t k = 0; k < items.size(); ++k)
+            m_index.emplace(items[k].name, int(k));
+    }
+    int operator()(const std::string& name) const
+    {
+        if (name.empty())
+            return -1;
+        const auto it = m_index.find(name);
+        return it == m_index.end() ? -1 : it->second;
+    }
+
+private:
+    std::map<std::string, int> m_index;
+};
 
 }  // namespace
 
@@ -118,10 +129,10 @@ void World::buildAgents(const Scene& scene)
         total += g.count;
     m_info.reserve(total);
 
+    const NameIndex types(scene.agentTypes), goals(scene.goals), paths(scene.paths);
     for (const Agent& a : scene.agents)
-        addAgent(scene, a.id, std::uint16_t(std::max(0, indexByName(scene.agentTypes, a.type))), a.position,
-                 glm::radians(a.headingDeg), indexByName(scene.goals, a.goal), indexByName(scene.paths, a.path),
-                 a.leader);
+        addAgent(scene, a.id, std::uint16_t(std::max(0, types(a.type))), a.position, glm::radians(a.headingDeg),
+                 goals(a.goal), paths(a.path), a.leader);
     // Spawned agents take ids after every id the scene uses.
     AgentId next = 1;
     for (const Agent& a : scene.agents) next = std::max(next, a.id + 1);
@@ -142,8 +153,8 @@ void World::buildAgents(const Scene& scene)
 
 void World::spawnGroup(const Scene& scene, const SpawnGroup& group, std::size_t groupIndex, AgentId& nextId)
 {
-    const auto type = std::uint16_t(std::max(0, indexByName(scene.agentTypes, group.type)));
-    const int goal = indexByName(scene.goals, group.goal), path = indexByName(scene.paths, group.path);
+    const auto type = std::uint16_t(std::max(0, NameIndex(scene.agentTypes)(group.type)));
+    const int goal = NameIndex(scene.goals)(group.goal), path = NameIndex(scene.paths)(group.path);
     // Keys are (group, member), not the running id, so editing one group never moves
     // the members of another.
     for (std::uint32_t k = 0; k < group.count; ++k) {

@@ -146,7 +146,6 @@ void SceneReader::readBrains(const YAML::Node& node, Scene& scene)
 {
     if (!m_f.expectSequence(node, "brains"))
         return;
-    std::set<std::string> names;
     for (std::size_t i = 0; i < node.size(); ++i) {
         const std::string key = indexKey("brains", i);
         const YAML::Node item = node[i];
@@ -155,7 +154,7 @@ void SceneReader::readBrains(const YAML::Node& node, Scene& scene)
         BrainGraph brain;
         if (!m_f.readName(item, "name", key, brain.name, true))
             continue;
-        claimName(names, item, key, brain.name, "brain");
+        claimName(item, key, brain.name, "brain");
         if (YAML::Node file = item["file"]; file.IsDefined()) {
             m_f.checkKeys(item, key, {"name", "file"});
             if (!m_f.readString(item, "file", key, brain.file, true))
@@ -218,7 +217,6 @@ void SceneReader::readAgentTypes(const YAML::Node& node, Scene& scene)
 {
     if (!m_f.expectSequence(node, "agent_types"))
         return;
-    std::set<std::string> names;
     for (std::size_t i = 0; i < node.size(); ++i) {
         const std::string key = indexKey("agent_types", i);
         const YAML::Node item = node[i];
@@ -230,7 +228,7 @@ void SceneReader::readAgentTypes(const YAML::Node& node, Scene& scene)
         AgentType t;
         if (!m_f.readName(item, "name", key, t.name, true))
             continue;
-        claimName(names, item, key, t.name, "agent type");
+        claimName(item, key, t.name, "agent type");
         std::string kind = "pedestrian";
         if (m_f.readString(item, "kind", key, kind, false)) {
             if (kind == "pedestrian") t.kind = AgentKind::Pedestrian;
@@ -252,7 +250,7 @@ void SceneReader::readAgentTypes(const YAML::Node& node, Scene& scene)
         if (m_f.readFloat(item, "view_angle", key, t.viewAngleDeg, false, Range::Positive) && t.viewAngleDeg > 360.0f)
             m_f.error(item["view_angle"].Mark(), key + ".view_angle", "must be at most 360 degrees");
         if (m_f.readName(item, "brain", key, t.brain, false) && !t.brain.empty())
-            checkRef(item, "brain", key, t.brain, scene.findBrain(t.brain) != nullptr, "brain");
+            checkRef(item, "brain", key, t.brain, known("brain", t.brain), "brain");
         if (m_f.readString(item, "character", key, t.character, false) && !t.character.empty()) {
             const auto& builtins = builtinCharacters();
             const bool builtin = std::find(builtins.begin(), builtins.end(), t.character) != builtins.end();
@@ -317,13 +315,13 @@ void SceneReader::readAgents(const YAML::Node& node, Scene& scene)
         if (YAML::Node id = item["id"]; id.IsDefined() && m_f.readU32(item, "id", key, a.id, false))
             claimId(id, key + ".id", a.id);
         if (m_f.readName(item, "type", key, a.type, true))
-            checkRef(item, "type", key, a.type, scene.findAgentType(a.type) != nullptr, "agent type");
+            checkRef(item, "type", key, a.type, known("agent type", a.type), "agent type");
         m_f.readPoint3(item, "position", key, a.position, true);
         m_f.readFloat(item, "heading", key, a.headingDeg, false);
         if (m_f.readName(item, "goal", key, a.goal, false) && !a.goal.empty())
-            checkRef(item, "goal", key, a.goal, scene.findGoal(a.goal) != nullptr, "goal");
+            checkRef(item, "goal", key, a.goal, known("goal", a.goal), "goal");
         if (m_f.readName(item, "path", key, a.path, false) && !a.path.empty())
-            checkRef(item, "path", key, a.path, scene.findPath(a.path) != nullptr, "path");
+            checkRef(item, "path", key, a.path, known("path", a.path), "path");
         if (m_f.readU32(item, "leader", key, a.leader, false) && item["leader"].IsDefined())
             m_leaderRefs.push_back({item["leader"].Mark(), key + ".leader", a.leader});
         scene.agents.push_back(std::move(a));
@@ -334,7 +332,6 @@ void SceneReader::readGroups(const YAML::Node& node, Scene& scene)
 {
     if (!m_f.expectSequence(node, "groups"))
         return;
-    std::set<std::string> names;
     for (std::size_t i = 0; i < node.size(); ++i) {
         const std::string key = indexKey("groups", i);
         const YAML::Node item = node[i];
@@ -343,9 +340,9 @@ void SceneReader::readGroups(const YAML::Node& node, Scene& scene)
         m_f.checkKeys(item, key, {"name", "type", "count", "rect", "circle", "goal", "path", "leader"});
         SpawnGroup g;
         if (m_f.readName(item, "name", key, g.name, true))
-            claimName(names, item, key, g.name, "group");
+            claimName(item, key, g.name, "group");
         if (m_f.readName(item, "type", key, g.type, true))
-            checkRef(item, "type", key, g.type, scene.findAgentType(g.type) != nullptr, "agent type");
+            checkRef(item, "type", key, g.type, known("agent type", g.type), "agent type");
         if (m_f.readU32(item, "count", key, g.count, true) && g.count > kMaxSpawnCount)
             m_f.error(item["count"].Mark(), key + ".count", "at most 10,000,000 agents per group");
         const YAML::Node rect = item["rect"], circle = item["circle"];
@@ -364,9 +361,9 @@ void SceneReader::readGroups(const YAML::Node& node, Scene& scene)
             m_f.readFloat(circle, "radius", key + ".circle", g.radiusM, true, Range::Positive);
         }
         if (m_f.readName(item, "goal", key, g.goal, false) && !g.goal.empty())
-            checkRef(item, "goal", key, g.goal, scene.findGoal(g.goal) != nullptr, "goal");
+            checkRef(item, "goal", key, g.goal, known("goal", g.goal), "goal");
         if (m_f.readName(item, "path", key, g.path, false) && !g.path.empty())
-            checkRef(item, "path", key, g.path, scene.findPath(g.path) != nullptr, "path");
+            checkRef(item, "path", key, g.path, known("path", g.path), "path");
         if (m_f.readU32(item, "leader", key, g.leader, false) && item["leader"].IsDefined())
             m_leaderRefs.push_back({item["leader"].Mark(), key + ".leader", g.leader});
         scene.groups.push_back(std::move(g));
@@ -382,13 +379,18 @@ bool SceneReader::checkRef(const YAML::Node& map, const char* name, const std::s
     return false;
 }
 
-bool SceneReader::claimName(std::set<std::string>& names, const YAML::Node& map, const std::string& key,
-                            const std::string& name, const char* what)
+bool SceneReader::claimName(const YAML::Node& map, const std::string& key, const std::string& name, const char* what)
 {
-    if (names.insert(name).second)
+    if (m_names[what].insert(name).second)
         return true;
     m_f.error(map["name"].Mark(), key + ".name", std::string("another ") + what + " is already named '" + name + "'");
     return false;
+}
+
+bool SceneReader::known(const char* what, const std::string& name) const
+{
+    const auto it = m_names.find(what);
+    return it != m_names.end() && it->second.count(name) > 0;
 }
 
 bool SceneReader::claimId(const YAML::Node& at, const std::string& key, std::uint32_t id)

@@ -5,6 +5,7 @@
 #include "simcore/io/detail/YamlFields.h"
 #include "simcore/scene/Scene.h"
 
+#include <map>
 #include <set>
 #include <string>
 #include <string_view>
@@ -44,8 +45,10 @@ private:
     // Reference checks: report "no X named 'y'" at the value's location.
     bool checkRef(const YAML::Node& map, const char* name, const std::string& key, const std::string& value,
                   bool exists, const char* what);
-    bool claimName(std::set<std::string>& names, const YAML::Node& map, const std::string& key,
-                   const std::string& name, const char* what);
+    // Records a name of a kind ("goal", "path", ...); reports a duplicate.
+    bool claimName(const YAML::Node& map, const std::string& key, const std::string& name, const char* what);
+    // Whether a name of that kind was read (O(log n), for million-agent files).
+    bool known(const char* what, const std::string& name) const;
     bool claimId(const YAML::Node& at, const std::string& key, std::uint32_t id);
     // A behaviour's value: a weight, or a map of weight and parameters.
     bool readBehaviour(const YAML::Node& node, const std::string& key, BehaviourWeight& out);
@@ -55,6 +58,7 @@ private:
     std::string m_baseDir;
     std::string_view m_source;
     std::set<std::uint32_t> m_ids;
+    std::map<std::string, std::set<std::string>> m_names;  // kind -> names read
     struct LeaderRef {
         YAML::Mark at;
         std::string key;

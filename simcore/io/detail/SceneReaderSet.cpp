@@ -12,7 +12,6 @@ void SceneReader::readGoals(const YAML::Node& node, Scene& scene)
 {
     if (!m_f.expectSequence(node, "goals"))
         return;
-    std::set<std::string> names;
     for (std::size_t i = 0; i < node.size(); ++i) {
         const std::string key = indexKey("goals", i);
         const YAML::Node item = node[i];
@@ -21,7 +20,7 @@ void SceneReader::readGoals(const YAML::Node& node, Scene& scene)
         m_f.checkKeys(item, key, {"name", "position", "radius"});
         Goal g;
         if (m_f.readName(item, "name", key, g.name, true))
-            claimName(names, item, key, g.name, "goal");
+            claimName(item, key, g.name, "goal");
         m_f.readVec2(item, "position", key, g.position, true);
         m_f.readFloat(item, "radius", key, g.radiusM, false, Range::Positive);
         scene.goals.push_back(std::move(g));
@@ -32,7 +31,6 @@ void SceneReader::readPaths(const YAML::Node& node, Scene& scene)
 {
     if (!m_f.expectSequence(node, "paths"))
         return;
-    std::set<std::string> names;
     for (std::size_t i = 0; i < node.size(); ++i) {
         const std::string key = indexKey("paths", i);
         const YAML::Node item = node[i];
@@ -41,7 +39,7 @@ void SceneReader::readPaths(const YAML::Node& node, Scene& scene)
         m_f.checkKeys(item, key, {"name", "points", "radius", "closed"});
         Path p;
         if (m_f.readName(item, "name", key, p.name, true))
-            claimName(names, item, key, p.name, "path");
+            claimName(item, key, p.name, "path");
         m_f.readPolyline(item, "points", key, p.points, true, 2);
         m_f.readFloat(item, "radius", key, p.radiusM, false, Range::Positive);
         m_f.readBool(item, "closed", key, p.closed, false);
@@ -141,7 +139,6 @@ void SceneReader::readLanes(const YAML::Node& node, Scene& scene)
 {
     if (!m_f.expectSequence(node, "lanes"))
         return;
-    std::set<std::string> names;
     for (std::size_t i = 0; i < node.size(); ++i) {
         const std::string key = indexKey("lanes", i);
         const YAML::Node item = node[i];
@@ -150,7 +147,7 @@ void SceneReader::readLanes(const YAML::Node& node, Scene& scene)
         m_f.checkKeys(item, key, {"name", "points", "width", "speed_limit", "loop"});
         Lane l;
         if (m_f.readName(item, "name", key, l.name, true))
-            claimName(names, item, key, l.name, "lane");
+            claimName(item, key, l.name, "lane");
         m_f.readPolyline(item, "points", key, l.points, true, 2);
         m_f.readFloat(item, "width", key, l.widthM, false, Range::Positive);
         m_f.readFloat(item, "speed_limit", key, l.speedLimit, false, Range::Positive);
@@ -163,7 +160,6 @@ void SceneReader::readCrosswalks(const YAML::Node& node, Scene& scene)
 {
     if (!m_f.expectSequence(node, "crosswalks"))
         return;
-    std::set<std::string> names;
     for (std::size_t i = 0; i < node.size(); ++i) {
         const std::string key = indexKey("crosswalks", i);
         const YAML::Node item = node[i];
@@ -172,7 +168,7 @@ void SceneReader::readCrosswalks(const YAML::Node& node, Scene& scene)
         m_f.checkKeys(item, key, {"name", "from", "to", "width"});
         Crosswalk c;
         if (m_f.readName(item, "name", key, c.name, true))
-            claimName(names, item, key, c.name, "crosswalk");
+            claimName(item, key, c.name, "crosswalk");
         const bool ends = m_f.readVec2(item, "from", key, c.from, true) & m_f.readVec2(item, "to", key, c.to, true);
         m_f.readFloat(item, "width", key, c.widthM, false, Range::Positive);
         if (ends && c.from == c.to)
@@ -185,7 +181,6 @@ void SceneReader::readTrafficLights(const YAML::Node& node, Scene& scene)
 {
     if (!m_f.expectSequence(node, "traffic_lights"))
         return;
-    std::set<std::string> names;
     for (std::size_t i = 0; i < node.size(); ++i) {
         const std::string key = indexKey("traffic_lights", i);
         const YAML::Node item = node[i];
@@ -194,7 +189,7 @@ void SceneReader::readTrafficLights(const YAML::Node& node, Scene& scene)
         m_f.checkKeys(item, key, {"name", "green", "yellow", "red", "offset", "position", "stop_lines"});
         TrafficLight t;
         if (m_f.readName(item, "name", key, t.name, true))
-            claimName(names, item, key, t.name, "traffic light");
+            claimName(item, key, t.name, "traffic light");
         m_f.readFloat(item, "green", key, t.greenS, false, Range::NonNegative);
         m_f.readFloat(item, "yellow", key, t.yellowS, false, Range::NonNegative);
         m_f.readFloat(item, "red", key, t.redS, false, Range::NonNegative);
@@ -263,7 +258,6 @@ void SceneReader::readHeroes(const YAML::Node& node, Scene& scene)
 {
     if (!m_f.expectSequence(node, "heroes"))
         return;
-    std::set<std::string> names;
     for (std::size_t i = 0; i < node.size(); ++i) {
         const std::string key = indexKey("heroes", i);
         const YAML::Node item = node[i];
@@ -274,7 +268,7 @@ void SceneReader::readHeroes(const YAML::Node& node, Scene& scene)
         if (YAML::Node id = item["id"]; id.IsDefined() && m_f.readU32(item, "id", key, h.id, false))
             claimId(id, key + ".id", h.id);
         if (m_f.readName(item, "name", key, h.name, true))
-            claimName(names, item, key, h.name, "hero");
+            claimName(item, key, h.name, "hero");
         if (m_f.readName(item, "type", key, h.type, true))
             checkRef(item, "type", key, h.type, scene.findAgentType(h.type) != nullptr, "agent type");
         m_f.readFloat(item, "clearance", key, h.clearanceM, false, Range::NonNegative);

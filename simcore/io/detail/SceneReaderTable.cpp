@@ -151,15 +151,15 @@ void SceneReader::readAgentTable(const YAML::Node& node, const std::string& key,
             }
         }
         std::string_view typeTok = tok[std::size_t(at[kType])];
-        name(kType, a.type, scene.findAgentType(std::string(typeTok)) != nullptr, "agent type");
+        name(kType, a.type, known("agent type", std::string(typeTok)), "agent type");
         number(kX, a.position.x);
         number(kY, a.position.y);
         number(kZ, a.position.z);
         number(kHeading, a.headingDeg);
         if (at[kGoal] >= 0)
-            name(kGoal, a.goal, scene.findGoal(std::string(tok[std::size_t(at[kGoal])])) != nullptr, "goal");
+            name(kGoal, a.goal, known("goal", std::string(tok[std::size_t(at[kGoal])])), "goal");
         if (at[kPath] >= 0)
-            name(kPath, a.path, scene.findPath(std::string(tok[std::size_t(at[kPath])])) != nullptr, "path");
+            name(kPath, a.path, known("path", std::string(tok[std::size_t(at[kPath])])), "path");
         if (at[kLeader] >= 0 && ok) {
             std::string_view t = tok[std::size_t(at[kLeader])];
             if (t != "-") {
