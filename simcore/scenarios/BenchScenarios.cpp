@@ -90,52 +90,64 @@ Scene makeCorridorScenario(std::uint32_t agents, std::uint64_t seed)
 
 Scene makeFlockScenario(std::uint32_t agents, std::uint64_t seed)
 {
-    // Boids (Reynolds 1987) in 3D: separation, alignment and cohesion, plus a loose pull
-    // along a closed circuit so the flock migrates. Density about one bird per 8 m^3.
+    // Boids (Reynolds 1987) in 3D: separation, alignment and cohesion, and a loose pursuit
+    // of a lead bird that flies a closed circuit, so the flock migrates. Density about
+    // one bird per 8 m^3.
     Scene s;
     s.settings.seed = seed;
     const float half = 50.0f * std::cbrt(std::max(1.0f, float(agents) / 10000.0f));
     s.settings.boundsMin = glm::vec2(-3.0f * half);
     s.settings.boundsMax = glm::vec2(3.0f * half);
-    AgentType t;
-    t.name = "starling";
-    t.kind = AgentKind::Flier;
-    t.radiusM = 0.2f;
-    t.maxSpeed = 12.0f;
-    t.minSpeed = 4.0f;
-    t.maxForce = 20.0f;
-    t.mass = 1.0f;
-    t.perceptionM = 3.0f;
-    t.viewAngleDeg = 300.0f;
-    t.banking = 0.05f;
-    t.character = "bird";
-    t.behaviours = {{"separation", 2.0f, {{"range", "", {0.6f}}}}, {"alignment", 1.0f, {}},
-                    {"cohesion", 1.0f, {}}, {"path_following", 0.5f, {{"prediction", "", {2.0f}}}},
-                    {"containment", 4.0f, {}}, {"wander", 0.2f, {}}};
-    s.agentTypes.push_back(t);
+    AgentType bird;
+    bird.name = "starling";
+    bird.kind = AgentKind::Flier;
+    bird.radiusM = 0.2f;
+    bird.maxSpeed = 12.0f;
+    bird.minSpeed = 4.0f;
+    bird.maxForce = 20.0f;
+    bird.mass = 1.0f;
+    bird.perceptionM = 3.0f;
+    bird.viewAngleDeg = 300.0f;
+    bird.banking = 0.05f;
+    bird.character = "bird";
+    bird.behaviours = {{"separation", 2.0f, {{"range", "", {0.6f}}}}, {"alignment", 1.0f, {}},
+                       {"cohesion", 1.0f, {}}, {"pursuit", 0.3f, {}}, {"containment", 4.0f, {}},
+                       {"wander", 0.2f, {}}};
+    AgentType lead = bird;
+    lead.name = "lead";
+    lead.maxSpeed = 10.0f;  // a little slower than the flock, so it can be caught up with
+    lead.behaviours = {{"path_following", 1.0f, {}}, {"containment", 4.0f, {}}};
+    s.agentTypes = {bird, lead};
     Path circuit;
     circuit.name = "migration";
     circuit.closed = true;
-    circuit.radiusM = half;
+    circuit.radiusM = 5.0f;
     for (int k = 0; k < 8; ++k) {
         const float a = 6.2831853f * float(k) / 8.0f;
         circuit.points.push_back(2.0f * half * glm::vec2(std::cos(a), std::sin(a)));
     }
     s.paths.push_back(circuit);
     s.agents.reserve(agents);
+    Agent leader;
+    leader.id = 1;
+    leader.type = lead.name;
+    leader.position = glm::vec3(2.0f * half, 30.0f, -10.0f);
+    leader.headingDeg = 90.0f;
+    leader.path = circuit.name;
+    s.agents.push_back(leader);
     const auto side = std::uint32_t(std::ceil(std::cbrt(double(agents))));
     const float spacing = 2.0f * half / float(side);
-    for (std::uint32_t i = 0; i < agents; ++i) {
+    for (std::uint32_t i = 1; i < agents; ++i) {
         Agent a;
         a.id = i + 1;
-        a.type = t.name;
+        a.type = bird.name;
         const float x = float(i % side), y = float((i / side) % side), z = float(i / (side * side));
         // A lattice, jittered by a fixed pattern so no two birds start in lock-step.
         const float jx = 0.3f * std::sin(float(i) * 12.9898f), jz = 0.3f * std::cos(float(i) * 78.233f);
         a.position = glm::vec3(2.0f * half + (x - 0.5f * float(side)) * spacing + jx, 20.0f + y * spacing * 0.5f,
                                (z - 0.5f * float(side)) * spacing + jz);
-        a.headingDeg = -90.0f;  // along the circuit, counter-clockwise
-        a.path = circuit.name;
+        a.headingDeg = 90.0f;
+        a.leader = leader.id;
         s.agents.push_back(a);
     }
     s.settings.durationS = 60.0f;

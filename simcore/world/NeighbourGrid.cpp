@@ -24,7 +24,7 @@ void NeighbourGrid::configure(glm::vec2 boundsMin, glm::vec2 boundsMax, float ce
     m_start.assign(std::size_t(m_cols) * std::size_t(m_rows) + 1, 0);
 }
 
-void NeighbourGrid::rebuild(std::span<const glm::vec3> positions)
+void NeighbourGrid::rebuild(std::span<const glm::vec3> positions, bool sortByHeight)
 {
     const std::size_t n = positions.size();
     m_cellOf.resize(n);
@@ -54,6 +54,24 @@ void NeighbourGrid::rebuild(std::span<const glm::vec3> positions)
     for (std::size_t c = m_start.size() - 1; c > 0; --c)
         m_start[c] = m_start[c - 1];
     m_start[0] = 0;
+    m_byHeight = sortByHeight;
+    if (!sortByHeight)
+        return;
+    // Within each cell by height, ties by index: the order is fully determined.
+    std::vector<std::pair<float, std::uint32_t>>& scratch = m_heightScratch;
+    for (std::size_t c = 0; c + 1 < m_start.size(); ++c) {
+        const std::uint32_t b = m_start[c], e = m_start[c + 1];
+        if (e - b < 2)
+            continue;
+        scratch.clear();
+        for (std::uint32_t k = b; k < e; ++k)
+            scratch.push_back({m_sortedPos[k].y, m_sorted[k]});
+        std::sort(scratch.begin(), scratch.end());
+        for (std::uint32_t k = b; k < e; ++k) {
+            m_sorted[k] = scratch[k - b].second;
+            m_sortedPos[k] = positions[m_sorted[k]];
+        }
+    }
 }
 
 }  // namespace throng::sim

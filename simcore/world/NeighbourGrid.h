@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <span>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace throng::sim {
@@ -18,8 +19,10 @@ class NeighbourGrid {
 public:
     // cellM: cell edge in metres (> 0), usually the largest perception radius.
     void configure(glm::vec2 boundsMin, glm::vec2 boundsMax, float cellM);
-    // Sorts agent indices into cells by their (x, z). Reuses its buffers.
-    void rebuild(std::span<const glm::vec3> positions);
+    // Sorts agent indices into cells by their (x, z); with sortByHeight, each cell is also
+    // ordered by y so forEachNear3D can skip the agents far above or below. Reuses its
+    // buffers.
+    void rebuild(std::span<const glm::vec3> positions, bool sortByHeight = false);
 
     // Calls f(j) or f(j, position of j) for every agent j whose cell overlaps the square
     // around p of half-size r. Positions come from a copy kept in cell order, so a query
@@ -40,6 +43,29 @@ public:
             }
         }
     }
+    // For 3D queries (fliers): like forEachNear with f(j, position), but only agents
+    // whose height is within [p.y - r, p.y + r]. Needs rebuild(..., true).
+    template <typename F>
+    void forEachNear3D(glm::vec3 p, float r, F&& f) const
+    {
+        const int x0 = cellX(p.x - r), x1 = cellX(p.x + r), z0 = cellZ(p.z - r), z1 = cellZ(p.z + r);
+        const float yLo = p.y - r, yHi = p.y + r;
+        for (int z = z0; z <= z1; ++z)
+            for (int x = x0; x <= x1; ++x) {
+                const std::size_t c = std::size_t(z) * std::size_t(m_cols) + std::size_t(x);
+                std::uint32_t lo = m_start[c], hi = m_start[c + 1];
+                while (lo < hi) {  // first agent at or above yLo
+                    const std::uint32_t mid = lo + (hi - lo) / 2;
+                    if (m_sortedPos[mid].y < yLo)
+                        lo = mid + 1;
+                    else
+                        hi = mid;
+                }
+                for (std::uint32_t k = lo; k < m_start[c + 1] && m_sortedPos[k].y <= yHi; ++k)
+                    f(m_sorted[k], m_sortedPos[k]);
+            }
+    }
+    bool sortedByHeight() const { return m_byHeight; }
     float cellM() const { return m_cell; }
     std::size_t memoryBytes() const
     {
@@ -66,6 +92,8 @@ private:
     std::vector<std::uint32_t> m_start;   // cols*rows + 1 prefix sums
     std::vector<std::uint32_t> m_sorted;  // agent indices by cell
     std::vector<glm::vec3> m_sortedPos;   // their positions, in the same order
+    bool m_byHeight = false;
+    std::vector<std::pair<float, std::uint32_t>> m_heightScratch;
     std::vector<std::uint32_t> m_cellOf;
 };
 

@@ -1,6 +1,7 @@
 #include "simcore/world/TypeSteering.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 
 namespace throng::sim {
@@ -150,10 +151,15 @@ std::string apply(TypeSteering& t, Behaviour b, const BrainParam& p)
         else if (p.text == "repulsive") t.obstacles.response = AvoidanceResponse::Repulsive;
         else return "response must be lateral or repulsive";
         return {};
-    case Kind::Flag:
-        if (p.text != "true" && p.text != "false") return std::string(slot->key) + " must be true or false";
-        t.alignment.matchSpeed = p.text == "true";
+    case Kind::Flag: {
+        std::string v = p.text;
+        std::transform(v.begin(), v.end(), v.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+        const bool yes = v == "true" || v == "yes" || v == "on", no = v == "false" || v == "no" || v == "off";
+        if (!yes && !no)
+            return std::string(slot->key) + " must be true or false";
+        t.alignment.matchSpeed = yes;
         return {};
+    }
     case Kind::Vector3:
         if (!p.text.empty() || p.numbers.size() != 3) return std::string(slot->key) + " must be [x, y, z]";
         t.offsetPursuit.offsetM = {p.numbers[0], p.numbers[1], p.numbers[2]};
@@ -162,7 +168,7 @@ std::string apply(TypeSteering& t, Behaviour b, const BrainParam& p)
     case Kind::AngleDeg:
         if (!p.text.empty() || p.numbers.size() != 1) return std::string(slot->key) + " must be a number";
         if (p.numbers[0] < slot->lo || p.numbers[0] > slot->hi)
-            return std::string(slot->key) + " is out of range (" + slot->meaning + ")";
+            return "must be within [" + std::to_string(slot->lo) + ", " + std::to_string(slot->hi) + "] (" + slot->meaning + ")";
         slot->number(t) = slot->kind == Kind::AngleDeg ? p.numbers[0] * 0.017453292f : p.numbers[0];
         return {};
     }
@@ -187,13 +193,25 @@ TypeSteering compileTypeSteering(const AgentType& type)
     t.priority = type.priorityCombination;
     if (type.behaviours.empty()) {
         using B = Behaviour;
-        for (auto [b, w] : {std::pair{B::Arrival, 1.0f}, {B::PathFollowing, 1.0f}, {B::Separation, 1.0f},
-                            {B::UnalignedCollisionAvoidance, 1.0f}, {B::ObstacleAvoidance, 2.0f},
-                            {B::WallFollowing, 2.0f}, {B::Containment, 2.0f}})
-            t.weight[std::size_t(b)] = w;
-        // A short separation range keeps a crowd moving; the world's body collision pass
-        // removes what overlap remains (measured on a 300-agent crossing: 0.3 % overlap).
-        t.separation.rangeM = 0.2f;
+        auto set = [&](std::initializer_list<std::pair<B, float>> weights) {
+            for (auto [b, w] : weights)
+                t.weight[std::size_t(b)] = w;
+        };
+        if (type.kind == AgentKind::Flier) {
+            // Boids (Reynolds 1987), kept inside the world, heading for a goal or path if given.
+            set({{B::Separation, 2.0f}, {B::Alignment, 1.0f}, {B::Cohesion, 1.0f}, {B::Containment, 4.0f},
+                 {B::Arrival, 0.5f}, {B::PathFollowing, 0.5f}, {B::Wander, 0.2f}});
+        } else if (type.kind == AgentKind::Vehicle) {
+            set({{B::Arrival, 1.0f}, {B::PathFollowing, 1.0f}, {B::Separation, 1.0f}, {B::ObstacleAvoidance, 2.0f},
+                 {B::WallFollowing, 2.0f}, {B::Containment, 2.0f}});
+        } else {
+            set({{B::Arrival, 1.0f}, {B::PathFollowing, 1.0f}, {B::Separation, 1.0f},
+                 {B::UnalignedCollisionAvoidance, 1.0f}, {B::ObstacleAvoidance, 2.0f}, {B::WallFollowing, 2.0f},
+                 {B::Containment, 2.0f}});
+            // A short separation range keeps a crowd moving; the world's body collision pass
+            // removes what overlap remains (measured on a 300-agent crossing: 0.3 % overlap).
+            t.separation.rangeM = 0.2f;
+        }
     }
     for (const BehaviourWeight& bw : type.behaviours) {
         Behaviour b;

@@ -65,8 +65,10 @@ struct TypeSteering {
 };
 
 // Builds a type's steering from its scene description. A type that names no behaviours
-// gets the defaults for its kind (pedestrians: arrival, path following, separation,
-// unaligned collision avoidance, obstacle and wall avoidance, containment).
+// gets the defaults for its kind: pedestrians arrival, path following, separation,
+// unaligned collision avoidance, obstacle and wall avoidance, containment; vehicles the
+// same without unaligned avoidance; fliers boids (separation, alignment, cohesion) with
+// containment, a light pull to their goal or path, and a little wander.
 TypeSteering compileTypeSteering(const AgentType& type);
 
 // Parameters a behaviour accepts in the scene file, for the reader's checks and the docs.

@@ -131,6 +131,7 @@ private:
 
     NeighbourGrid m_grid;
     bool m_gridCurrent = false;  // the grid indexes the current positions
+    bool m_hasFliers = false;    // then the grid also sorts by height for 3D queries
     StepCounters m_counters;
     std::uint64_t m_seed = 1;
     std::uint64_t m_step = 0;

@@ -118,7 +118,7 @@ std::size_t World::gatherNeighbours(std::size_t i, Neighbour* out, std::uint32_t
     };
     std::array<Candidate, kMaxNeighbours> best;
     std::size_t count = 0;
-    m_grid.forEachNear(xz(p), t.perception, [&](std::uint32_t j, const glm::vec3& q) {
+    auto consider = [&](std::uint32_t j, const glm::vec3& q) {
         if (j == i)
             return;
         const glm::vec3 d = q - p;
@@ -141,7 +141,11 @@ std::size_t World::gatherNeighbours(std::size_t i, Neighbour* out, std::uint32_t
         for (; k > 0 && c < best[k - 1]; --k)
             best[k] = best[k - 1];
         best[k] = c;
-    });
+    };
+    if (m_grid.sortedByHeight())
+        m_grid.forEachNear3D(p, t.perception, consider);
+    else
+        m_grid.forEachNear(xz(p), t.perception, consider);
     for (std::size_t k = 0; k < count; ++k) {
         const std::uint32_t j = best[k].index;
         out[k] = {m_pos[j], m_vel[j], m_fwd[j], m_radius[j], m_info[j].id};
@@ -188,7 +192,13 @@ glm::vec3 World::steer(std::size_t i, const SteeringAgent& self, std::span<const
         leader = {m_pos[j], m_vel[j], m_fwd[j], m_radius[j], m_info[j].id};
     }
 
-    request(B::Containment, [&] { return stayInside(self, m_bounds, s.containment); });
+    if (s.on(B::Containment)) {
+        // Only agents whose probes can reach the bounds ask; the rest are far inside.
+        const float probe = s.containment.probeMinM + s.containment.probeLookaheadS * self.speed() + self.radius;
+        const glm::vec3 lo = p - m_bounds.min, hi = m_bounds.max - p;
+        if (std::min({lo.x, lo.y, lo.z, hi.x, hi.y, hi.z}) < probe)
+            requests.add(stayInside(self, m_bounds, s.containment), s.w(B::Containment));
+    }
     if (s.on(B::WallFollowing)) {
         std::array<WallSegment, kMaxNearWalls> walls;
         std::size_t n = 0;
@@ -264,7 +274,7 @@ void World::step()
     // Grid: index agents by cell for neighbour queries (the last step's count left it
     // current for these positions).
     if (!m_gridCurrent)
-        m_grid.rebuild(m_pos);
+        m_grid.rebuild(m_pos, m_hasFliers);
     m_gridCurrent = false;
 
 #pragma omp parallel for schedule(static, 256) num_threads(m_threads)
@@ -318,13 +328,12 @@ void World::step()
         }
         m_resolvedPos[i] = p;
     }
+    // The correction is a nudge, not motion the agent chose: its velocity (heading, gait
+    // speed) stays what steering made it.
 #pragma omp parallel for schedule(static, 256) num_threads(m_threads)
-    for (std::size_t i = 0; i < n; ++i) {
-        if (m_stopped[i])
-            continue;
-        m_nextVel[i] += (m_resolvedPos[i] - m_nextPos[i]) / m_dt;
-        m_nextPos[i] = m_resolvedPos[i];
-    }
+    for (std::size_t i = 0; i < n; ++i)
+        if (!m_stopped[i])
+            m_nextPos[i] = m_resolvedPos[i];
 
     // Commit: swap in the new state, animate, and note arrivals.
     std::uint64_t crossings = 0;
@@ -367,8 +376,9 @@ glm::vec3 World::separateBodies(std::size_t i) const
         const float share = m_stopped[j] ? 1.0f : 0.5f;
         push += dir * ((contact - dist) * share);
     }
-    // Cap the correction so a squeezed agent is nudged, never thrown.
-    const float cap = 0.5f * m_radius[i];
+    // Cap the correction so a squeezed agent is nudged, never thrown: at most half its
+    // body and half what it could walk in the step.
+    const float cap = std::min(0.5f * m_radius[i], 0.5f * m_maxSpeed[i] * m_dt);
     const float len = glm::length(push);
     return len > cap ? push * (cap / len) : push;
 }
@@ -376,7 +386,9 @@ glm::vec3 World::separateBodies(std::size_t i) const
 void World::commit(std::size_t i, std::uint64_t& wallCrossings)
 {
     const glm::vec2 from = xz(m_pos[i]), to = xz(m_nextPos[i]);
-    m_walls.forEachNear((from + to) * 0.5f, 0.5f * glm::length(to - from) + 0.01f, [&](std::uint32_t k) {
+    // Fliers pass over walls; only walkers and vehicles can penetrate one.
+    if (!m_steering[m_info[i].typeIndex].vehicle.flying)
+        m_walls.forEachNear((from + to) * 0.5f, 0.5f * glm::length(to - from) + 0.01f, [&](std::uint32_t k) {
         const Segment& s = m_walls.segment(k);
         if (segmentsCross(from, to, s.a, s.b))
             ++wallCrossings;
@@ -472,7 +484,7 @@ void World::countStep()
 {
     const std::size_t n = m_pos.size();
     std::uint64_t overlaps = 0, nonFinite = 0, inObstacle = 0, red = 0;
-    m_grid.rebuild(m_pos);
+    m_grid.rebuild(m_pos, m_hasFliers);
     m_gridCurrent = true;
 #pragma omp parallel for schedule(static, 256) num_threads(m_threads) reduction(+ : overlaps, nonFinite, inObstacle, red)
     for (std::size_t i = 0; i < n; ++i) {
@@ -480,14 +492,18 @@ void World::countStep()
             ++nonFinite;
         const glm::vec2 p = xz(m_pos[i]);
         const float r = m_radius[i];
-        m_grid.forEachNear(p, 2.0f * r + 1.0f, [&](std::uint32_t j, const glm::vec3& q) {
+        auto overlap = [&](std::uint32_t j, const glm::vec3& q) {
             if (j <= i)
                 return;
             const float contact = r + m_radius[j] - kOverlapToleranceM;
             const glm::vec3 d = m_pos[i] - q;
             if (glm::dot(d, d) < contact * contact)
                 ++overlaps;
-        });
+        };
+        if (m_hasFliers)
+            m_grid.forEachNear3D(m_pos[i], 2.0f * r + 1.0f, overlap);
+        else
+            m_grid.forEachNear(p, 2.0f * r + 1.0f, overlap);
         if (m_types[m_info[i].typeIndex].kind == AgentKind::Flier)
             continue;
         m_obstacleGrid.forEachNear(p, r, [&](std::uint32_t k) {

@@ -65,7 +65,7 @@ sim::Scene makeRandomScene(std::uint32_t seed, std::uint32_t agentCount)
                            {"obstacle_avoidance", 2.0f, {{"response", "repulsive", {}}, {"margin", "", {f(0, 1)}}}},
                            {"offset_pursuit", 1.0f, {{"offset", "", {f(-2, 2), 0.0f, f(-3, 0)}}}}};
         type.priorityCombination = t == 1;
-        type.minSpeed = t == 2 ? f(1, 5) : 0.0f;
+        type.minSpeed = t == 2 ? f(0, type.maxSpeed) : 0.0f;
         type.banking = t == 2 ? f(0, 0.2f) : 0.0f;
         s.agentTypes.push_back(type);
     }

@@ -272,8 +272,13 @@ void SceneReader::readAgentTypes(const YAML::Node& node, Scene& scene)
                 m_f.error(item["combination"].Mark(), key + ".combination",
                           "must be blend or priority, got '" + combination + "'");
         }
-        m_f.readFloat(item, "min_speed", key, t.minSpeed, false, Range::NonNegative);
+        if (m_f.readFloat(item, "min_speed", key, t.minSpeed, false, Range::NonNegative) && t.minSpeed > t.maxSpeed)
+            m_f.error(item["min_speed"].Mark(), key + ".min_speed", "is above max_speed");
         m_f.readFloat(item, "banking", key, t.banking, false, Range::NonNegative);
+        for (const char* flierOnly : {"min_speed", "banking"})
+            if (t.kind != AgentKind::Flier && item[flierOnly].IsDefined())
+                m_f.warning(item[flierOnly].Mark(), key + "." + flierOnly,
+                            std::string("'") + flierOnly + "' only affects fliers and is ignored here");
         if (YAML::Node b = item["behaviours"]; b.IsDefined() && m_f.expectMap(b, key + ".behaviours")) {
             const auto& known = behaviourNames();
             m_f.checkDuplicateKeys(b, key + ".behaviours");
@@ -322,8 +327,11 @@ void SceneReader::readAgents(const YAML::Node& node, Scene& scene)
             checkRef(item, "goal", key, a.goal, known("goal", a.goal), "goal");
         if (m_f.readName(item, "path", key, a.path, false) && !a.path.empty())
             checkRef(item, "path", key, a.path, known("path", a.path), "path");
-        if (m_f.readU32(item, "leader", key, a.leader, false) && item["leader"].IsDefined())
+        if (m_f.readU32(item, "leader", key, a.leader, false) && item["leader"].IsDefined()) {
+            if (a.id != 0 && a.leader == a.id)
+                m_f.error(item["leader"].Mark(), key + ".leader", "an agent cannot lead itself");
             m_leaderRefs.push_back({item["leader"].Mark(), key + ".leader", a.leader});
+        }
         scene.agents.push_back(std::move(a));
     }
 }

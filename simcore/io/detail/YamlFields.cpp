@@ -75,7 +75,8 @@ bool isValidName(const std::string& name)
 {
     if (name.empty() || name == "-")
         return false;
-    return std::none_of(name.begin(), name.end(), [](unsigned char c) { return std::isspace(c) || c < 32; });
+    // '#' starts a comment in agent tables, so it cannot be part of a name.
+    return std::none_of(name.begin(), name.end(), [](unsigned char c) { return std::isspace(c) || c < 32 || c == '#'; });
 }
 
 std::string indexKey(const std::string& key, std::size_t index) { return key + "[" + std::to_string(index) + "]"; }
@@ -305,7 +306,7 @@ bool YamlFields::readName(const YAML::Node& map, const char* name, const std::st
     if (!readString(map, name, key, s, required))
         return false;
     if (!isValidName(s)) {
-        error(node.Mark(), childKey(key, name), "'" + s + "' is not a valid name (non-empty, no spaces, not '-')");
+        error(node.Mark(), childKey(key, name), "'" + s + "' is not a valid name (non-empty, no spaces or '#', not '-')");
         return false;
     }
     out = s;
