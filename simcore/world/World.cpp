@@ -121,7 +121,8 @@ void World::buildStatics(const Scene& scene)
             m_flow.push_back({s.points[k], s.points[k + 1], s.widthM * 0.5f});
     m_terrain = scene.terrain;
     const glm::vec2 lo = scene.settings.boundsMin, hi = scene.settings.boundsMax;
-    m_bounds = {glm::vec3(lo.x, -1e4f, lo.y), glm::vec3(hi.x, 1e4f, hi.y)};
+    // Containment keeps fliers above the ground plane too (terrain is enforced per step).
+    m_bounds = {glm::vec3(lo.x, 0.0f, lo.y), glm::vec3(hi.x, 1e4f, hi.y)};
 }
 
 void World::buildAgents(const Scene& scene)
@@ -192,12 +193,13 @@ void World::addAgent(const Scene& scene, AgentId id, std::uint16_t type, glm::ve
     m_info.push_back({id, type});
     m_pos.push_back(pos);
     // Fliers start at their stall speed so they never fall out of the sky on frame 1.
-    m_vel.push_back(flier ? fwd * std::max(t.minSpeed, 0.5f * t.maxSpeed * speedFactor) : glm::vec3(0.0f));
+    const float maxSpeed = t.maxSpeed * speedFactor;
+    m_vel.push_back(flier ? fwd * std::min(maxSpeed, std::max(t.minSpeed, 0.5f * maxSpeed)) : glm::vec3(0.0f));
     m_fwd.push_back(fwd);
     m_side.push_back(glm::normalize(glm::cross(fwd, glm::vec3(0.0f, 1.0f, 0.0f))));
     m_up.push_back(glm::vec3(0.0f, 1.0f, 0.0f));
     m_radius.push_back(t.radiusM);
-    m_maxSpeed.push_back(t.maxSpeed * speedFactor);
+    m_maxSpeed.push_back(maxSpeed);
     m_phase.push_back(rngRange(m_seed, id, 0, kPhaseOffset, t.variation.phaseOffset.x, t.variation.phaseOffset.y));
     // Stride length scales with body size; 1.4 m is an adult's walking stride.
     m_stride.push_back(t.kind == AgentKind::Pedestrian
@@ -221,6 +223,7 @@ void World::addAgent(const Scene& scene, AgentId id, std::uint16_t type, glm::ve
     m_goalSpot.push_back(spot);
     m_arrived.push_back(0);
     m_stopped.push_back(0);
+    m_stoppedBefore.push_back(0);
     m_onCrosswalk.push_back(0);
     m_nextPos.push_back(pos);
     m_nextVel.push_back(m_vel.back());

@@ -122,9 +122,10 @@ private:
     std::vector<float> m_radius, m_maxSpeed, m_phase, m_stride, m_arrivalTime;
     std::vector<std::int32_t> m_goal, m_path, m_leader;
     std::vector<glm::vec2> m_goalSpot;  // each agent's own point inside its goal's disk
-    // arrived: entered the goal area (or reached the end of its path), for the stats;
-    // stopped: standing on its spot, frozen from then on.
-    std::vector<std::uint8_t> m_arrived, m_stopped, m_onCrosswalk;
+    // arrived: entered its goal's area or reached its path's end (the stats' figure);
+    // stopped: frozen for good (see commit); m_stoppedBefore: m_stopped as the commit
+    // phase began.
+    std::vector<std::uint8_t> m_arrived, m_stopped, m_stoppedBefore, m_onCrosswalk;
     std::vector<std::uint32_t> m_nearIndex;  // kMaxNeighbours per agent: whom it sensed this step
     std::vector<std::uint8_t> m_nearCount;
     std::vector<glm::vec3> m_resolvedPos;

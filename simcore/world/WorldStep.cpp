@@ -45,6 +45,8 @@ bool isFinite(glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && 
 constexpr std::size_t kMaxNearWalls = 16, kMaxNearObstacles = 8;
 // How near its own spot in the goal area an agent stops for good.
 constexpr float kSpotToleranceM = 0.1f;
+// Inside its goal, an agent this near (body to body) a stopped agent settles too.
+constexpr float kSettleGapM = 0.05f;
 // Overlap tolerance: touching within 1 cm is contact, not overlap.
 constexpr float kOverlapToleranceM = 0.01f;
 
@@ -71,9 +73,14 @@ glm::vec3 slideAlongWall(const SteeringAgent& self, std::span<const WallSegment>
         const glm::vec2 along = b - a;
         if (d >= nearest || glm::dot(along, along) < 1e-8f || d < 1e-6f)
             continue;
-        const glm::vec2 normal = (p - c) / d;  // from the wall toward the agent
-        if (glm::dot(way, normal) > -0.2f)
-            continue;  // the way does not lead into this wall
+        // Only a wall that the way actually runs into (a ray from the body's centre
+        // widened by its radius) counts; door jambs beside the way do not.
+        const glm::vec2 sideways(-way.y, way.x);
+        bool blocked = false;
+        for (float offset : {-self.radius, 0.0f, self.radius})
+            blocked = blocked || segmentsCross(p + sideways * offset, p + sideways * offset + way * reach, a, b);
+        if (!blocked)
+            continue;
         glm::vec2 t = glm::normalize(along);
         float side = glm::dot(way, t);
         if (std::fabs(side) < 0.2f)  // nearly head-on: go round the nearer end
@@ -307,6 +314,15 @@ void World::step()
             next.position.y = groundHeight(next.position.x, next.position.z);
             next.velocity = (next.position - self.position) / m_dt;
             next.velocity.y = 0.0f;
+        } else if (const float floor = groundHeight(next.position.x, next.position.z) + self.radius;
+                   next.position.y < floor) {
+            // Fliers may skim the ground but never pass through it; the dive turns into
+            // level flight at no less than the stall speed.
+            next.position.y = floor;
+            next.velocity.y = std::max(next.velocity.y, 0.0f);
+            const float stall = std::min(s.vehicle.minSpeed, m_maxSpeed[i]), v = glm::length(next.velocity);
+            if (v < stall)
+                next.velocity = v > 1e-6f ? next.velocity * (stall / v) : next.forward * stall;
         }
         m_nextPos[i] = next.position;
         m_nextVel[i] = next.velocity;
@@ -322,20 +338,32 @@ void World::step()
 #pragma omp parallel for schedule(static, 256) num_threads(m_threads)
     for (std::size_t i = 0; i < n; ++i) {
         glm::vec3 p = m_nextPos[i] + separateBodies(i);
-        if (!m_steering[m_info[i].typeIndex].vehicle.flying) {
-            constrain(i, m_nextPos[i], p);
+        const bool flying = m_steering[m_info[i].typeIndex].vehicle.flying;
+        // Nobody moves faster than its max speed, nudges included, so what the viewer
+        // sees and the gait it is animated with always agree.
+        const glm::vec3 move = p - m_pos[i];
+        const float maxMove = m_maxSpeed[i] * m_dt, moved = glm::length(move);
+        if (moved > maxMove && moved > 0.0f)
+            p = m_pos[i] + move * (maxMove / moved);
+        if (!flying) {
+            constrain(i, m_pos[i], p);
             p.y = m_nextPos[i].y;
         }
         m_resolvedPos[i] = p;
     }
-    // The correction is a nudge, not motion the agent chose: its velocity (heading, gait
-    // speed) stays what steering made it.
 #pragma omp parallel for schedule(static, 256) num_threads(m_threads)
-    for (std::size_t i = 0; i < n; ++i)
-        if (!m_stopped[i])
-            m_nextPos[i] = m_resolvedPos[i];
+    for (std::size_t i = 0; i < n; ++i) {
+        if (m_stopped[i])
+            continue;
+        if (!m_steering[m_info[i].typeIndex].vehicle.flying) {
+            m_nextVel[i] = (m_resolvedPos[i] - m_pos[i]) / m_dt;
+            m_nextVel[i].y = 0.0f;
+        }
+        m_nextPos[i] = m_resolvedPos[i];
+    }
 
     // Commit: swap in the new state, animate, and note arrivals.
+    m_stoppedBefore = m_stopped;
     std::uint64_t crossings = 0;
 #pragma omp parallel for schedule(static, 256) num_threads(m_threads) reduction(+ : crossings)
     for (std::size_t i = 0; i < n; ++i)
@@ -403,24 +431,44 @@ void World::commit(std::size_t i, std::uint64_t& wallCrossings)
     m_wander[i] = m_nextWander[i];
     if (m_stopped[i])
         return;
-    // Arrived: inside the goal's area (counted once), stopped on its own spot, or at the
-    // end of an open path.
+    // Arrived (the stats' figure) = entered the goal's area, or joined the pile of those
+    // who stopped at it; counted once. Stopped = frozen for good: at the end of an open
+    // path, on its own spot in the goal, or against someone with the same goal who already
+    // stopped between it and its spot, so a shared goal fills like sand from the inside
+    // out and the last comers settle at the edge of the pile.
     bool stop = false;
+    auto arrive = [&] {
+        if (!m_arrived[i]) {
+            m_arrived[i] = 1;
+            m_arrivalTime[i] = float(double(m_step + 1) * double(m_dt));
+        }
+    };
     if (m_path[i] >= 0) {
         const Path& path = m_paths[std::size_t(m_path[i])];
         const float tolerance = std::max(0.1f, 0.25f * path.radiusM);
         stop = !path.closed && glm::distance(to, path.points.back()) < tolerance;
-        if (stop && !m_arrived[i]) {
-            m_arrived[i] = 1;
-            m_arrivalTime[i] = float(double(m_step + 1) * double(m_dt));
-        }
+        if (stop)
+            arrive();
     } else if (m_goal[i] >= 0) {
         const Goal& g = m_goals[std::size_t(m_goal[i])];
-        if (!m_arrived[i] && glm::distance(to, g.position) < g.radiusM) {
-            m_arrived[i] = 1;
-            m_arrivalTime[i] = float(double(m_step + 1) * double(m_dt));
+        if (glm::distance(to, g.position) < g.radiusM) {
+            arrive();
+            stop = glm::distance(to, m_goalSpot[i]) < kSpotToleranceM;
         }
-        stop = glm::distance(to, m_goalSpot[i]) < kSpotToleranceM;
+        // Against the pile: a stopped agent with the same goal, between this one and its
+        // spot. Flags as they were when this phase began, and j's next position (which a
+        // stopped agent shares with its current one): nothing another thread writes in
+        // this phase is read here.
+        const std::uint32_t* near = &m_nearIndex[i * kMaxNeighbours];
+        for (std::size_t k = 0; !stop && k < m_nearCount[i]; ++k) {
+            const std::uint32_t j = near[k];
+            const float contact = m_radius[i] + m_radius[j] + kSettleGapM;
+            const glm::vec2 q = xz(m_nextPos[j]);
+            stop = m_stoppedBefore[j] && m_goal[j] == m_goal[i] && glm::distance(to, q) < contact &&
+                   glm::dot(q - to, m_goalSpot[i] - to) > 0.0f;
+        }
+        if (stop)
+            arrive();
     }
     if (stop) {
         m_stopped[i] = 1;
