@@ -63,8 +63,10 @@ World::World(const Scene& scene, const WorldOptions& options)
     cell = std::clamp(cell, 0.5f, 4.0f);
     buildStatics(scene);
     buildAgents(scene);
-    for (const TypeParams& t : m_types)
+    for (const TypeParams& t : m_types) {
         m_hasFliers = m_hasFliers || t.kind == AgentKind::Flier;
+        m_maxRadius = std::max(m_maxRadius, t.radius);
+    }
     m_grid.configure(scene.settings.boundsMin, scene.settings.boundsMax, cell);
     m_grid.rebuild(m_pos, m_hasFliers);
 }

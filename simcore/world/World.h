@@ -28,8 +28,9 @@ struct WorldOptions {
 
 class World {
 public:
-    // Most neighbours one agent perceives (the nearest ones in its perception cone).
-    static constexpr std::size_t kMaxNeighbours = 12;
+    // Most neighbours one agent perceives (the nearest ones in its perception cone);
+    // DetourCrowd uses 6.
+    static constexpr std::size_t kMaxNeighbours = 8;
 
     // Builds the runtime from a validated scene: placed agents, spawned groups (seeded),
     // goals, paths and leaders resolved to indices, walls and obstacles into grids.
@@ -133,6 +134,7 @@ private:
     NeighbourGrid m_grid;
     bool m_gridCurrent = false;  // the grid indexes the current positions
     bool m_hasFliers = false;    // then the grid also sorts by height for 3D queries
+    float m_maxRadius = 0.0f;    // the largest body radius, m
     StepCounters m_counters;
     std::uint64_t m_seed = 1;
     std::uint64_t m_step = 0;

@@ -203,7 +203,9 @@ glm::vec3 World::steer(std::size_t i, const SteeringAgent& self, std::span<const
         // Only agents whose probes can reach the bounds ask; the rest are far inside.
         const float probe = s.containment.probeMinM + s.containment.probeLookaheadS * self.speed() + self.radius;
         const glm::vec3 lo = p - m_bounds.min, hi = m_bounds.max - p;
-        if (std::min({lo.x, lo.y, lo.z, hi.x, hi.y, hi.z}) < probe)
+        const float nearest = s.vehicle.flying ? std::min({lo.x, lo.y, lo.z, hi.x, hi.y, hi.z})
+                                               : std::min({lo.x, lo.z, hi.x, hi.z});  // walkers ignore height
+        if (nearest < probe)
             requests.add(stayInside(self, m_bounds, s.containment), s.w(B::Containment));
     }
     if (s.on(B::WallFollowing)) {
@@ -217,8 +219,10 @@ glm::vec3 World::steer(std::size_t i, const SteeringAgent& self, std::span<const
                 walls[n++] = {glm::vec3(seg.a.x, 0.0f, seg.a.y), glm::vec3(seg.b.x, 0.0f, seg.b.y)};
             }
         });
-        request(B::WallFollowing, [&] { return avoidWalls(self, {walls.data(), n}, s.walls); });
-        request(B::WallFollowing, [&] { return slideAlongWall(self, {walls.data(), n}, goal, s.walls); });
+        if (n > 0) {
+            request(B::WallFollowing, [&] { return avoidWalls(self, {walls.data(), n}, s.walls); });
+            request(B::WallFollowing, [&] { return slideAlongWall(self, {walls.data(), n}, goal, s.walls); });
+        }
     }
     if (s.on(B::ObstacleAvoidance) && (!m_circles.empty() || !m_boxes.empty())) {
         std::array<CircleObstacle, kMaxNearObstacles> circles;
@@ -548,10 +552,11 @@ void World::countStep()
             if (glm::dot(d, d) < contact * contact)
                 ++overlaps;
         };
+        // Only a body within r + the largest radius can overlap this one.
         if (m_hasFliers)
-            m_grid.forEachNear3D(m_pos[i], 2.0f * r + 1.0f, overlap);
+            m_grid.forEachNear3D(m_pos[i], r + m_maxRadius, overlap);
         else
-            m_grid.forEachNear(p, 2.0f * r + 1.0f, overlap);
+            m_grid.forEachNear(p, r + m_maxRadius, overlap);
         if (m_types[m_info[i].typeIndex].kind == AgentKind::Flier)
             continue;
         m_obstacleGrid.forEachNear(p, r, [&](std::uint32_t k) {
