@@ -45,6 +45,8 @@ bool isFinite(glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && 
 constexpr std::size_t kMaxNearWalls = 16, kMaxNearObstacles = 8;
 // How near its own spot in the goal area an agent stops for good.
 constexpr float kSpotToleranceM = 0.1f;
+// How quickly an agent with nowhere to go brakes to a stand, s.
+constexpr float kStandStillResponseS = 0.5f;
 // Inside its goal, an agent this near (body to body) a stopped agent settles too.
 constexpr float kSettleGapM = 0.05f;
 // Overlap tolerance: touching within 1 cm is contact, not overlap.
@@ -275,6 +277,12 @@ glm::vec3 World::steer(std::size_t i, const SteeringAgent& self, std::span<const
         wanderOut = w.state;
         requests.add(w.force, s.w(B::Wander));
     }
+    // A walker or vehicle with nowhere to go comes to rest instead of coasting on what
+    // separation or a collision gave it (the lowest priority: anything else comes first).
+    const bool goesSomewhere = hasGoal || m_path[i] >= 0 || leaderIndex >= 0 || s.on(B::Wander) ||
+                               (!m_flow.empty() && s.on(B::FlowFieldFollowing));
+    if (!goesSomewhere && !s.vehicle.flying)
+        requests.add(-self.velocity * (self.mass / kStandStillResponseS), 1.0f);
     return s.priority ? allocateByPriority(requests, self.maxForce) : blendWeighted(requests, self.maxForce);
 }
 
