@@ -27,7 +27,7 @@ std::string usageText()
            "      --stats OUT.json        write the run's figures as JSON\n"
            "      --trajectories OUT.csv  write frame,agent,x,y,z,heading,speed,clip,phase rows\n"
            "      --export OUT.glb|.gltf  write the animated crowd as glTF 2.0\n"
-           "  bench [--agents N] [--steps S] [--scenario cross|corridor] [--threads T]\n"
+           "  bench [--agents N] [--steps S] [--scenario flock|cross|army|corridor] [--threads T]\n"
            "                              run a built-in scenario and print figures as JSON\n"
            "\n"
            "options for every command:\n"
