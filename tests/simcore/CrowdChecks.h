@@ -95,6 +95,27 @@ inline std::size_t overlapsBeyond(const sim::World& world, float toleranceM)
 
 inline bool finite(glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
+// Runs `steps` steps and returns the recorded frames' hash: equal hashes = identical runs.
+inline std::uint64_t runHash(const sim::Scene& scene, int threads, int steps, std::uint64_t seed = 0)
+{
+    sim::WorldOptions o;
+    o.threads = threads;
+    if (seed) {
+        o.overrideSeed = true;
+        o.seed = seed;
+    }
+    sim::World world(scene, o);
+    sim::FrameCache cache;
+    world.startRecording(cache);
+    std::vector<sim::AgentFrame> frame;
+    for (int s = 0; s < steps; ++s) {
+        world.step();
+        world.snapshot(frame);
+        cache.append(frame);
+    }
+    return cache.hash();
+}
+
 inline std::vector<glm::vec3> copyPositions(const sim::World& world)
 {
     return {world.positions().begin(), world.positions().end()};

@@ -17,25 +17,6 @@ namespace {
 
 constexpr int kFps = 24;
 
-std::uint64_t runHash(const Scene& scene, int threads, int steps, std::uint64_t seed = 0)
-{
-    WorldOptions o;
-    o.threads = threads;
-    if (seed) {
-        o.overrideSeed = true;
-        o.seed = seed;
-    }
-    World world(scene, o);
-    FrameCache cache;
-    world.startRecording(cache);
-    std::vector<AgentFrame> frame;
-    for (int s = 0; s < steps; ++s) {
-        world.step();
-        world.snapshot(frame);
-        cache.append(frame);
-    }
-    return cache.hash();
-}
 
 // 600 placed fliers (more than two of the step's 256-agent chunks, so two threads share the
 // work) with no spawn or speed variation: the seed reaches the run only through wander.

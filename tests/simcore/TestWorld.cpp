@@ -1,5 +1,6 @@
 // The runtime as a user checks it: arrivals stop, walls and obstacles hold, spawning is
 // seeded, and a run is bit-identical for any thread count.
+#include "CrowdChecks.h"
 #include "TestRegistry.h"
 
 #include "simcore/io/SceneIO.h"
@@ -15,36 +16,10 @@
 #include <cmath>
 
 using namespace throng::sim;
+using throng::test::crowd::parse;
+using throng::test::crowd::runHash;
 
 namespace {
-
-Scene parse(const std::string& yaml)
-{
-    const LoadResult r = parseScene(yaml, "test.yaml", "");
-    if (!r.ok())
-        qFatal("%s", r.diagnostics[0].format().c_str());
-    return r.scene;
-}
-
-std::uint64_t runHash(const Scene& scene, int threads, int steps, std::uint64_t seed = 0)
-{
-    WorldOptions o;
-    o.threads = threads;
-    if (seed) {
-        o.overrideSeed = true;
-        o.seed = seed;
-    }
-    World world(scene, o);
-    FrameCache cache;
-    world.startRecording(cache);
-    std::vector<AgentFrame> frame;
-    for (int s = 0; s < steps; ++s) {
-        world.step();
-        world.snapshot(frame);
-        cache.append(frame);
-    }
-    return cache.hash();
-}
 
 const char* kCrowd = R"(throng: 1
 settings: {fps: 24, seed: 5, bounds: {min: [-40, -40], max: [40, 40]}}

@@ -1,0 +1,257 @@
+// The sense and steer phases of World::step: who an agent perceives, and what its type's
+// behaviours ask of it. Both read only the previous state.
+#include "simcore/world/World.h"
+
+#include "simcore/world/Rng.h"
+#include "simcore/world/detail/StepGeometry.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace throng::sim {
+
+using namespace detail;
+
+namespace {
+
+enum StepStream : std::uint64_t { kWanderX = 101, kWanderY, kWanderZ };
+
+// Wall following (Reynolds 1999): an agent whose way leads into a nearby wall travels
+// along it toward the end nearer its way, instead of pressing against its face (the
+// local minimum a goal straight behind a wall makes). Zero when no wall is in the way.
+glm::vec3 slideAlongWall(const SteeringAgent& self, std::span<const WallSegment> walls, glm::vec3 target,
+                         const WallAvoidanceParams& params)
+{
+    const glm::vec2 p(self.position.x, self.position.z);
+    glm::vec2 way(target.x - p.x, target.z - p.y);
+    if (glm::dot(way, way) < 1e-8f)
+        way = glm::vec2(self.forward.x, self.forward.z);
+    if (glm::dot(way, way) < 1e-8f)
+        return glm::vec3(0.0f);
+    way = glm::normalize(way);
+    const float reach = self.radius + params.standoffM + 0.5f;
+    float nearest = reach;
+    glm::vec2 tangent(0.0f);
+    for (const WallSegment& w : walls) {
+        const glm::vec2 a(w.a.x, w.a.z), b(w.b.x, w.b.z);
+        const glm::vec2 c = closestOnSegment(p, a, b);
+        const float d = glm::distance(p, c);
+        const glm::vec2 along = b - a;
+        if (d >= nearest || glm::dot(along, along) < 1e-8f || d < 1e-6f)
+            continue;
+        // Only a wall that the way actually runs into (a ray from the body's centre
+        // widened by its radius) counts; door jambs beside the way do not.
+        const glm::vec2 sideways(-way.y, way.x);
+        bool blocked = false;
+        for (float offset : {-self.radius, 0.0f, self.radius})
+            blocked = blocked || segmentsCross(p + sideways * offset, p + sideways * offset + way * reach, a, b);
+        if (!blocked)
+            continue;
+        glm::vec2 t = glm::normalize(along);
+        float side = glm::dot(way, t);
+        if (std::fabs(side) < 0.2f)  // nearly head-on: go round the nearer end
+            side = glm::distance(c, a) < glm::distance(c, b) ? -1.0f : 1.0f;
+        tangent = side < 0.0f ? -t : t;
+        nearest = d;
+    }
+    return glm::vec3(tangent.x, 0.0f, tangent.y) * self.maxForce;
+}
+
+
+}  // namespace
+
+SteeringAgent World::steeringAgent(std::size_t i) const
+{
+    const TypeParams& t = m_types[m_info[i].typeIndex];
+    SteeringAgent a;
+    a.position = m_pos[i];
+    a.velocity = m_vel[i];
+    a.forward = m_fwd[i];
+    a.side = m_side[i];
+    a.up = m_up[i];
+    a.radius = m_radius[i];
+    a.maxSpeed = m_maxSpeed[i];
+    a.maxForce = t.maxForce;
+    a.mass = t.mass;
+    a.id = m_info[i].id;
+    return a;
+}
+
+// Sense: the nearest kMaxNeighbours agents within the perception radius and view cone
+// (Reynolds 1987), nearest first, ties by id, so the choice never depends on grid order.
+std::size_t World::gatherNeighbours(std::size_t i, Neighbour* out, std::uint32_t* indices) const
+{
+    const TypeParams& t = m_types[m_info[i].typeIndex];
+    const glm::vec3 p = m_pos[i], fwd = m_fwd[i];
+    const float r2 = t.perception * t.perception;
+    struct Candidate {
+        float d2;
+        AgentId id;
+        std::uint32_t index;
+        bool operator<(const Candidate& o) const { return d2 != o.d2 ? d2 < o.d2 : id < o.id; }
+    };
+    std::array<Candidate, kMaxNeighbours> best;
+    std::size_t count = 0;
+    auto consider = [&](std::uint32_t j, const glm::vec3& q) {
+        if (j == i)
+            return;
+        const glm::vec3 d = q - p;
+        const float d2 = glm::dot(d, d);
+        if (d2 > r2)
+            return;
+        // Outside the view cone (but a touching neighbour is always felt). The test
+        // dot(d, fwd) < c |d| is done on squares to avoid a square root per candidate.
+        if (t.cosHalfView > -1.0f) {
+            const float c = t.cosHalfView, dot = glm::dot(d, fwd);
+            const bool outside = c >= 0.0f ? (dot < 0.0f || dot * dot < c * c * d2) : (dot < 0.0f && dot * dot > c * c * d2);
+            const float contact = m_radius[i] + m_radius[j];
+            if (outside && d2 > contact * contact)
+                return;
+        }
+        const Candidate c{d2, m_info[j].id, j};
+        if (count == kMaxNeighbours && !(c < best[count - 1]))
+            return;
+        std::size_t k = count < kMaxNeighbours ? count++ : count - 1;
+        for (; k > 0 && c < best[k - 1]; --k)
+            best[k] = best[k - 1];
+        best[k] = c;
+    };
+    if (m_grid.sortedByHeight())
+        m_grid.forEachNear3D(p, t.perception, consider);
+    else
+        m_grid.forEachNear(xz(p), t.perception, consider);
+    for (std::size_t k = 0; k < count; ++k) {
+        const std::uint32_t j = best[k].index;
+        out[k] = {m_pos[j], m_vel[j], m_fwd[j], m_radius[j], m_info[j].id};
+        indices[k] = j;
+    }
+    return count;
+}
+
+glm::vec3 World::flowDirection(glm::vec3 p) const
+{
+    // The nearest stroke segment whose band holds p gives the direction.
+    const glm::vec2 q = xz(p);
+    float bestD = INFINITY;
+    glm::vec2 dir(0.0f);
+    for (const FlowSegment& s : m_flow) {
+        const float d = glm::distance(q, closestOnSegment(q, s.a, s.b));
+        if (d <= s.halfWidth && d < bestD && s.a != s.b) {
+            bestD = d;
+            dir = glm::normalize(s.b - s.a);
+        }
+    }
+    return {dir.x, 0.0f, dir.y};
+}
+
+// Steer: every behaviour the type runs, in priority order, combined by blending or by
+// prioritised allocation. Pure in the previous state; the new wander state goes out.
+glm::vec3 World::steer(std::size_t i, const SteeringAgent& self, std::span<const Neighbour> near,
+                       WanderState& wanderOut) const
+{
+    const TypeSteering& s = m_steering[m_info[i].typeIndex];
+    using B = Behaviour;
+    SteeringRequestList requests;
+    auto request = [&](B b, auto&& force) {
+        if (s.on(b))
+            requests.add(force(), s.w(b));
+    };
+    const glm::vec3 p = self.position;
+    const bool hasGoal = m_goal[i] >= 0;
+    const glm::vec3 goal = hasGoal ? glm::vec3(m_goalSpot[i].x, p.y, m_goalSpot[i].y) : p + self.forward;
+    const std::int32_t leaderIndex = m_leader[i];
+    Neighbour leader;
+    if (leaderIndex >= 0) {
+        const auto j = std::size_t(leaderIndex);
+        leader = {m_pos[j], m_vel[j], m_fwd[j], m_radius[j], m_info[j].id};
+    }
+
+    if (s.on(B::Containment)) {
+        // Only agents whose probes can reach the bounds ask; the rest are far inside.
+        const float probe = s.containment.probeMinM + s.containment.probeLookaheadS * self.speed() + self.radius;
+        const glm::vec3 lo = p - m_bounds.min, hi = m_bounds.max - p;
+        const float nearest = s.vehicle.flying ? std::min({lo.x, lo.y, lo.z, hi.x, hi.y, hi.z})
+                                               : std::min({lo.x, lo.z, hi.x, hi.z});  // walkers ignore height
+        if (nearest < probe)
+            requests.add(stayInside(self, m_bounds, s.containment), s.w(B::Containment));
+    }
+    if (s.on(B::WallFollowing)) {
+        std::array<WallSegment, kMaxNearWalls> walls;
+        std::size_t n = 0;
+        const float reach = s.walls.feelerMinM + s.walls.feelerLookaheadS * self.speed() + s.walls.standoffM +
+                            self.radius;
+        m_walls.forEachNear(xz(p), reach, [&](std::uint32_t k) {
+            if (n < walls.size()) {
+                const Segment& seg = m_walls.segment(k);
+                walls[n++] = {glm::vec3(seg.a.x, 0.0f, seg.a.y), glm::vec3(seg.b.x, 0.0f, seg.b.y)};
+            }
+        });
+        if (n > 0) {
+            request(B::WallFollowing, [&] { return avoidWalls(self, {walls.data(), n}, s.walls); });
+            request(B::WallFollowing, [&] { return slideAlongWall(self, {walls.data(), n}, goal, s.walls); });
+        }
+    }
+    if (s.on(B::ObstacleAvoidance) && (!m_circles.empty() || !m_boxes.empty())) {
+        std::array<CircleObstacle, kMaxNearObstacles> circles;
+        std::array<BoxObstacle, kMaxNearObstacles> boxes;
+        std::size_t nc = 0, nb = 0;
+        const float reach = s.obstacles.minLengthM + s.obstacles.lookaheadS * self.speed() + self.radius +
+                            s.obstacles.marginM;
+        m_obstacleGrid.forEachNear(xz(p), reach, [&](std::uint32_t k) {
+            if (k < m_circles.size()) {
+                if (nc < circles.size())
+                    circles[nc++] = m_circles[k];
+            } else if (nb < boxes.size()) {
+                boxes[nb++] = m_boxes[k - m_circles.size()];
+            }
+        });
+        request(B::ObstacleAvoidance,
+                [&] { return avoidObstacles(self, {circles.data(), nc}, {boxes.data(), nb}, goal, s.obstacles); });
+    }
+    request(B::Separation, [&] { return separate(self, near, s.separation); });
+    request(B::UnalignedCollisionAvoidance, [&] { return avoidUnalignedCollisions(self, near, s.unaligned); });
+    if (leaderIndex >= 0) {
+        request(B::Evasion, [&] { return evade(self, leader, s.evasion); });
+        request(B::Flee, [&] { return flee(self, leader.position, s.flee); });
+        request(B::LeaderFollowing, [&] { return followLeader(self, leader, s.leader); });
+        request(B::OffsetPursuit, [&] { return pursueOffset(self, leader, s.offsetPursuit); });
+        request(B::Pursuit, [&] { return pursue(self, leader, s.pursuit); });
+    } else if (hasGoal) {
+        request(B::Flee, [&] { return flee(self, goal, s.flee); });
+    }
+    if (m_path[i] >= 0) {
+        const auto k = std::size_t(m_path[i]);
+        const SteeringPath path{m_pathPoints[k], m_paths[k].radiusM, m_paths[k].closed};
+        request(B::PathFollowing, [&] { return followPath(self, path, s.path); });
+    }
+    if (!m_flow.empty())
+        request(B::FlowFieldFollowing, [&] { return followFlow(self, flowDirection(flowSamplePoint(self, s.flow)), s.flow); });
+    if (hasGoal && m_path[i] < 0) {
+        request(B::Arrival, [&] { return arrive(self, goal, s.arrival); });
+        request(B::Seek, [&] { return seek(self, goal, s.seek); });
+    }
+    request(B::Alignment, [&] { return align(self, near, s.alignment); });
+    request(B::Cohesion, [&] { return cohere(self, near, s.cohesion); });
+    wanderOut = m_wander[i];
+    if (s.on(B::Wander)) {
+        const AgentId id = m_info[i].id;
+        const glm::vec3 random(rngRange(m_seed, id, m_step, kWanderX, -1.0f, 1.0f),
+                               rngRange(m_seed, id, m_step, kWanderY, -1.0f, 1.0f),
+                               rngRange(m_seed, id, m_step, kWanderZ, -1.0f, 1.0f));
+        const WanderResult w = wander(self, m_wander[i], random, s.wander);
+        wanderOut = w.state;
+        requests.add(w.force, s.w(B::Wander));
+    }
+    // A walker or vehicle with nowhere to go comes to rest instead of coasting on what
+    // separation or a collision gave it (the lowest priority: anything else comes first).
+    const bool goesSomewhere = hasGoal || m_path[i] >= 0 || leaderIndex >= 0 || s.on(B::Wander) ||
+                               (!m_flow.empty() && s.on(B::FlowFieldFollowing));
+    if (!goesSomewhere && !s.vehicle.flying)
+        requests.add(-self.velocity * (self.mass / kStandStillResponseS), 1.0f);
+    return s.priority ? allocateByPriority(requests, self.maxForce) : blendWeighted(requests, self.maxForce);
+}
+
+}  // namespace throng::sim
