@@ -143,8 +143,11 @@ void World::buildAgents(const Scene& scene)
     for (const Agent& a : scene.agents) next = std::max(next, a.id + 1);
     for (const Vehicle& v : scene.vehicles) next = std::max(next, v.id + 1);
     for (const Hero& h : scene.heroes) next = std::max(next, h.id + 1);
-    for (std::size_t g = 0; g < scene.groups.size(); ++g)
-        spawnGroup(scene, scene.groups[g], g, next);
+    for (std::size_t g = 0; g < scene.groups.size(); ++g) {
+        const SpawnGroup& group = scene.groups[g];
+        spawnGroup(scene, group, g, std::uint16_t(std::max(0, types(group.type))), goals(group.goal),
+                   paths(group.path), next);
+    }
 
     // Leaders were given as ids; the step reads dense indices.
     std::map<AgentId, std::int32_t> denseOf;
@@ -156,10 +159,9 @@ void World::buildAgents(const Scene& scene)
     }
 }
 
-void World::spawnGroup(const Scene& scene, const SpawnGroup& group, std::size_t groupIndex, AgentId& nextId)
+void World::spawnGroup(const Scene& scene, const SpawnGroup& group, std::size_t groupIndex, std::uint16_t type,
+                       int goal, int path, AgentId& nextId)
 {
-    const auto type = std::uint16_t(std::max(0, NameIndex(scene.agentTypes)(group.type)));
-    const int goal = NameIndex(scene.goals)(group.goal), path = NameIndex(scene.paths)(group.path);
     // Keys are (group, member), not the running id, so editing one group never moves
     // the members of another.
     for (std::uint32_t k = 0; k < group.count; ++k) {

@@ -82,7 +82,8 @@ private:
 
     void buildStatics(const Scene& scene);
     void buildAgents(const Scene& scene);
-    void spawnGroup(const Scene& scene, const SpawnGroup& group, std::size_t groupIndex, AgentId& nextId);
+    void spawnGroup(const Scene& scene, const SpawnGroup& group, std::size_t groupIndex, std::uint16_t type,
+                    int goal, int path, AgentId& nextId);
     void addAgent(const Scene& scene, AgentId id, std::uint16_t type, glm::vec3 pos, float headingRad, int goal,
                   int path, AgentId leader);
 

@@ -341,25 +341,6 @@ bool YamlFields::readPoint3(const YAML::Node& map, const char* name, const std::
     return true;
 }
 
-bool YamlFields::readVec3(const YAML::Node& map, const char* name, const std::string& key, glm::vec3& out,
-                          bool required, Range range)
-{
-    YAML::Node node = find(map, name, key, required);
-    if (!node.IsDefined())
-        return !required;
-    const std::string k = childKey(key, name);
-    if (!node.IsSequence() || node.size() != 3) {
-        error(node.Mark(), k, "must be a list of 3 numbers");
-        return false;
-    }
-    glm::vec3 v;
-    for (std::size_t i = 0; i < 3; ++i)
-        if (!toFloat(node[i], indexKey(k, i), v[int(i)], range))
-            return false;
-    out = v;
-    return true;
-}
-
 bool YamlFields::readPolyline(const YAML::Node& map, const char* name, const std::string& key,
                               std::vector<glm::vec2>& out, bool required, std::size_t minPoints)
 {

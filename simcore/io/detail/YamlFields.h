@@ -54,8 +54,6 @@ public:
     // Accepts [x, z] (y = 0) or [x, y, z].
     bool readPoint3(const YAML::Node& map, const char* name, const std::string& key, glm::vec3& out,
                     bool required);
-    bool readVec3(const YAML::Node& map, const char* name, const std::string& key, glm::vec3& out,
-                  bool required, Range range = Range::Any);
     bool readPolyline(const YAML::Node& map, const char* name, const std::string& key,
                       std::vector<glm::vec2>& out, bool required, std::size_t minPoints);
     bool readFloatList(const YAML::Node& map, const char* name, const std::string& key,
