@@ -32,7 +32,7 @@ const std::vector<std::string>& behaviourNames()
     static const std::vector<std::string> names{
         "containment", "wall_following", "obstacle_avoidance", "separation", "unaligned_collision_avoidance",
         "evasion", "flee", "leader_following", "offset_pursuit", "pursuit", "path_following",
-        "flow_field_following", "arrival", "seek", "alignment", "cohesion", "wander"};
+        "flow_field_following", "arrival", "seek", "alignment", "cohesion", "wander", "reciprocal_avoidance"};
     return names;
 }
 

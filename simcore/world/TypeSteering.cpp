@@ -111,6 +111,10 @@ const std::vector<ParamSlot>& slots()
          kBig, [](TypeSteering& t) -> float& { return t.unaligned.marginM; }},
         {B::UnalignedCollisionAvoidance, "brake_fraction", "0..1: share of force spent braking head-on",
          Kind::Number, 0, 1, [](TypeSteering& t) -> float& { return t.unaligned.brakeFraction; }},
+        {B::ReciprocalAvoidance, "time_horizon", "s, > 0: collisions further ahead are ignored", Kind::Number,
+         1e-3f, kBig, [](TypeSteering& t) -> float& { return t.reciprocal.timeHorizonS; }},
+        {B::ReciprocalAvoidance, "keep_right", "degrees, 0..90: turn right of the way while walkers come the other way",
+         Kind::AngleDeg, 0, 90, [](TypeSteering& t) -> float& { return t.reciprocal.keepRightRad; }},
     };
     return table;
 }
@@ -207,7 +211,7 @@ TypeSteering compileTypeSteering(const AgentType& type)
         } else {
             set({{B::Arrival, 1.0f}, {B::PathFollowing, 1.0f}, {B::Separation, 1.0f},
                  {B::UnalignedCollisionAvoidance, 1.0f}, {B::ObstacleAvoidance, 2.0f}, {B::WallFollowing, 2.0f},
-                 {B::Containment, 2.0f}});
+                 {B::Containment, 2.0f}, {B::ReciprocalAvoidance, 1.0f}});
             // A short separation range keeps a crowd moving; the world's body collision pass
             // removes what overlap remains (measured on a 300-agent crossing: 0.3 % overlap).
             t.separation.rangeM = 0.2f;

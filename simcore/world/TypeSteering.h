@@ -4,6 +4,7 @@
 // once per World; read-only during a step.
 
 #include "simcore/scene/Scene.h"
+#include "simcore/steering/ReciprocalAvoidance.h"
 #include "simcore/steering/Steering.h"
 
 #include <array>
@@ -33,8 +34,11 @@ enum class Behaviour : std::uint8_t {
     Alignment,
     Cohesion,
     Wander,
+    // Not a force in the list: it replaces the velocity the others ask for by the nearest
+    // one that avoids the neighbours (ORCA). Last, because it filters their result.
+    ReciprocalAvoidance,
 };
-constexpr std::size_t kBehaviourCount = 17;
+constexpr std::size_t kBehaviourCount = 18;
 
 const char* behaviourName(Behaviour b);
 
@@ -59,6 +63,7 @@ struct TypeSteering {
     CohesionParams cohesion;
     LeaderFollowParams leader;
     UnalignedAvoidanceParams unaligned;
+    ReciprocalAvoidanceParams reciprocal;
 
     float w(Behaviour b) const { return weight[std::size_t(b)]; }
     bool on(Behaviour b) const { return weight[std::size_t(b)] > 0.0f; }
@@ -66,9 +71,10 @@ struct TypeSteering {
 
 // Builds a type's steering from its scene description. A type that names no behaviours
 // gets the defaults for its kind: pedestrians arrival, path following, separation,
-// unaligned collision avoidance, obstacle and wall avoidance, containment; vehicles the
-// same without unaligned avoidance; fliers boids (separation, alignment, cohesion) with
-// containment, a light pull to their goal or path, and a little wander.
+// unaligned collision avoidance, obstacle and wall avoidance, containment, reciprocal
+// avoidance; vehicles the force behaviours without unaligned avoidance; fliers boids
+// (separation, alignment, cohesion) with containment, a light pull to their goal or path,
+// and a little wander.
 TypeSteering compileTypeSteering(const AgentType& type);
 
 // Parameters a behaviour accepts in the scene file, for the reader's checks and the docs.

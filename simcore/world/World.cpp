@@ -55,9 +55,12 @@ World::World(const Scene& scene, const WorldOptions& options)
     float cell = 0.0f;
     for (const AgentType& t : scene.agentTypes) {
         const float halfView = glm::radians(std::min(t.viewAngleDeg, 360.0f)) * 0.5f;
-        m_types.push_back({t.radiusM, t.maxSpeed, t.maxForce, t.mass, t.perceptionM,
-                           t.viewAngleDeg >= 360.0f ? -1.0f : std::cos(halfView), t.kind});
         m_steering.push_back(compileTypeSteering(t));
+        // Reciprocal avoidance needs both sides of a pair to see each other: such a type
+        // perceives all round, whatever its view angle.
+        const bool allRound = t.viewAngleDeg >= 360.0f || m_steering.back().on(Behaviour::ReciprocalAvoidance);
+        m_types.push_back({t.radiusM, t.maxSpeed, t.maxForce, t.mass, t.perceptionM,
+                           allRound ? -1.0f : std::cos(halfView), t.kind});
         cell = std::max(cell, 0.5f * t.perceptionM);
     }
     cell = std::clamp(cell, 0.5f, 4.0f);

@@ -93,6 +93,8 @@ private:
     glm::vec3 separateBodies(std::size_t i) const;
     glm::vec3 steer(std::size_t i, const SteeringAgent& self, std::span<const Neighbour> near,
                     WanderState& wanderOut) const;
+    glm::vec3 avoidReciprocally(std::size_t i, const SteeringAgent& self, glm::vec3 force,
+                                std::span<const Neighbour> near, const TypeSteering& s) const;
     glm::vec3 flowDirection(glm::vec3 p) const;
     void constrain(std::size_t i, glm::vec3 from, glm::vec3& to) const;
     float groundHeight(float x, float z) const;

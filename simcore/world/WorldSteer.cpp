@@ -254,4 +254,39 @@ glm::vec3 World::steer(std::size_t i, const SteeringAgent& self, std::span<const
     return s.priority ? allocateByPriority(requests, self.maxForce) : blendWeighted(requests, self.maxForce);
 }
 
+// Reciprocal avoidance (ORCA) on the ground: the velocity the blend asks for becomes the
+// nearest one that touches no neighbour within the horizon; an agent that has stopped
+// will not move, so the mover takes all of that avoidance.
+glm::vec3 World::avoidReciprocally(std::size_t i, const SteeringAgent& self, glm::vec3 force,
+                                   std::span<const Neighbour> near, const TypeSteering& s) const
+{
+    if (self.mass <= 0.0f || m_dt <= 0.0f)
+        return force;
+    const glm::vec3 wanted = self.velocity + force * (m_dt / self.mass);
+    glm::vec2 preferred(wanted.x, wanted.z);
+    const float speed = glm::length(preferred);
+    if (speed > self.maxSpeed && speed > 0.0f)
+        preferred *= self.maxSpeed / speed;
+    std::array<PlanarNeighbour, kMaxNeighbours> others;
+    const std::uint32_t* index = &m_nearIndex[i * kMaxNeighbours];
+    const glm::vec2 fwd = xz(self.forward);
+    std::size_t oncoming = 0;
+    for (std::size_t k = 0; k < near.size(); ++k) {
+        others[k] = {xz(near[k].position), xz(near[k].velocity), near[k].radius, m_stopped[index[k]] ? 1.0f : 0.5f};
+        if (!m_stopped[index[k]] && glm::dot(xz(near[k].forward), fwd) < -0.5f &&
+            glm::dot(others[k].position - xz(self.position), fwd) > 0.0f)
+            ++oncoming;
+    }
+    // Keep to the right of oncoming walkers (the pedestrians' convention), more the more
+    // of them come: opposing streams then pass side by side instead of meeting head-on.
+    if (oncoming > 0 && s.reciprocal.keepRightRad > 0.0f) {
+        const float angle = s.reciprocal.keepRightRad * std::min(1.0f, float(oncoming) / 3.0f);
+        const glm::vec2 right(-preferred.y, preferred.x);
+        preferred = preferred * std::cos(angle) + right * std::sin(angle);
+    }
+    const PlanarBody body{xz(self.position), xz(self.velocity), self.radius, self.maxSpeed};
+    const glm::vec2 v = sim::avoidReciprocally(body, preferred, {others.data(), near.size()}, m_dt, s.reciprocal);
+    return (glm::vec3(v.x, 0.0f, v.y) - glm::vec3(self.velocity.x, 0.0f, self.velocity.z)) * (self.mass / m_dt);
+}
+
 }  // namespace throng::sim

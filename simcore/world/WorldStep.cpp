@@ -48,7 +48,9 @@ void World::step()
         m_nearCount[i] = std::uint8_t(count);
         // Steer: the type's behaviours, combined.
         WanderState wanderNext;
-        const glm::vec3 force = steer(i, self, {near.data(), count}, wanderNext);
+        glm::vec3 force = steer(i, self, {near.data(), count}, wanderNext);
+        if (s.on(Behaviour::ReciprocalAvoidance) && !s.vehicle.flying)
+            force = avoidReciprocally(i, self, force, {near.data(), count}, s);
         // Integrate: the simple vehicle model (Reynolds 1999).
         SteeringAgent next = integrateVehicle(self, force, m_dt, s.vehicle);
         // Constrain: no agent ends a step inside a wall or obstacle; walkers stand on the ground.

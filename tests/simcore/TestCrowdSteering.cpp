@@ -232,6 +232,64 @@ goals:
         QVERIFY2(through == seekers,
                  qPrintable(QString("only %1 of %2 seekers passed the doorway in 30 s").arg(through).arg(seekers)));
     }
+
+    void reciprocalAvoidanceKeepsACrossingCrowdApart()
+    {
+        // 120 walkers on two rings (12 and 13.5 m) cross to the antipodal point, once with
+        // the force behaviours alone and once adding reciprocal_avoidance (ORCA). Users
+        // check that bodies do not press into each other where the crowd meets, and that
+        // everybody still gets across.
+        auto scene = [](bool orca) {
+            std::string yaml = R"(throng: 1
+settings: {fps: 24, seed: 5, bounds: {min: [-20, -20], max: [20, 20]}}
+agent_types:
+  - name: walker
+    radius: 0.3
+    max_speed: 1.4
+    max_force: 6
+)";
+            // The walkers' default behaviours, with and without reciprocal avoidance.
+            yaml += R"(    behaviours:
+      arrival: {weight: 1, slowing_distance: 1}
+      separation: {weight: 1, range: 0.2}
+      unaligned_collision_avoidance: 1
+      containment: 2
+)";
+            if (orca)
+                yaml += "      reciprocal_avoidance: 1\n";
+            std::string goals = "goals:\n", agents = "agents:\n";
+            for (int k = 0; k < 120; ++k) {
+                const float r = k < 60 ? 12.0f : 13.5f, a = 6.2831853f * float(k % 60) / 60.0f + (k < 60 ? 0.0f : 0.05f);
+                const float x = r * std::cos(a), z = r * std::sin(a);
+                goals += "  - {name: g" + std::to_string(k) + ", position: [" + std::to_string(-x) + ", " +
+                         std::to_string(-z) + "], radius: 0.4}\n";
+                agents += "  - {id: " + std::to_string(k + 1) + ", type: walker, position: [" + std::to_string(x) + ", " +
+                          std::to_string(z) + "], heading: 0, goal: g" + std::to_string(k) + "}\n";
+            }
+            return parse(yaml + goals + agents);
+        };
+        double overlapsPerStep[2] = {0, 0}, arrivedShare[2] = {0, 0};
+        for (int orca = 0; orca < 2; ++orca) {
+            World world(scene(orca == 1), kSerial);
+            const int steps = kFps * 60;
+            for (int step = 0; step < steps; ++step)
+                world.step();
+            std::size_t arrived = 0;
+            for (std::size_t i = 0; i < world.agentCount(); ++i)
+                arrived += world.hasArrived(i);
+            overlapsPerStep[orca] = double(world.counters().overlappingPairs) / steps;
+            arrivedShare[orca] = double(arrived) / double(world.agentCount());
+            QCOMPARE(world.counters().nonFiniteValues, 0u);
+        }
+        qInfo("crossing 120: forces only %.2f overlapping pairs per step, %.3f arrived; with ORCA %.2f, %.3f arrived",
+              overlapsPerStep[0], arrivedShare[0], overlapsPerStep[1], arrivedShare[1]);
+        QVERIFY2(arrivedShare[1] >= 0.95, qPrintable(QString("with ORCA only %1 arrived in 60 s").arg(arrivedShare[1])));
+        QVERIFY2(overlapsPerStep[1] < 1.2, qPrintable(QString("with ORCA %1 overlapping pairs per step (1 %% of the agents "
+                                                              "is 1.2)").arg(overlapsPerStep[1])));
+        QVERIFY2(overlapsPerStep[1] <= 0.5 * overlapsPerStep[0],
+                 qPrintable(QString("ORCA did not halve the overlaps: %1 against %2 per step")
+                                .arg(overlapsPerStep[1]).arg(overlapsPerStep[0])));
+    }
 };
 
 THRONG_REGISTER_TEST(TestCrowdSteering)

@@ -1,0 +1,41 @@
+#pragma once
+// Reciprocal velocity obstacles on the ground plane (ORCA: van den Berg, Guy, Lin and
+// Manocha, "Reciprocal n-Body Collision Avoidance", 2011). Each neighbour closes a
+// half-plane of velocities that would touch it within the time horizon; the agent takes
+// its share of the avoidance (half for a neighbour that avoids too, all of it for one
+// that stands still) and picks the allowed velocity nearest the one it prefers, by a
+// small linear program. Where no velocity is allowed, the one that least violates the
+// worst half-plane. Pure, deterministic for a given neighbour order; no allocation.
+
+#include <glm/vec2.hpp>
+
+#include <span>
+
+namespace throng::sim {
+
+struct ReciprocalAvoidanceParams {
+    float timeHorizonS = 1.0f;  // s, > 0: collisions further ahead than this are ignored
+    float keepRightRad = 0.5f;  // rad, >= 0: turn right of the preferred way when walkers come the other way
+};
+
+struct PlanarNeighbour {
+    glm::vec2 position{0.0f};
+    glm::vec2 velocity{0.0f};
+    float radius = 0.0f;
+    float share = 0.5f;  // of the avoidance this agent takes: 0.5 reciprocal, 1 for a standing body
+};
+
+struct PlanarBody {
+    glm::vec2 position{0.0f};
+    glm::vec2 velocity{0.0f};
+    float radius = 0.0f;
+    float maxSpeed = 0.0f;
+};
+
+// The new velocity: within maxSpeed, outside every neighbour's half-plane when that is
+// possible, nearest to `preferred`. dt is the step, used for bodies already overlapping
+// (they part within one step). At most 16 neighbours are considered (the nearest first).
+glm::vec2 avoidReciprocally(const PlanarBody& self, glm::vec2 preferred, std::span<const PlanarNeighbour> neighbours,
+                            float dt, const ReciprocalAvoidanceParams& params = {});
+
+}  // namespace throng::sim
