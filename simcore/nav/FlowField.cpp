@@ -127,9 +127,7 @@ void FlowField::march(std::span<const int> seeds)
 
 bool FlowField::clearAhead(glm::vec2 p, glm::vec2 d) const
 {
-    const float h = m_grid.cellM();
-    return m_grid.walkable(m_grid.cellOf(p + d * (0.25f * h))) && m_grid.walkable(m_grid.cellOf(p + d * (0.5f * h)))
-        && reachable(m_grid.cellOf(p + d * (0.5f * h)));
+    return m_grid.clearAhead(p, d) && reachable(m_grid.cellOf(p + d * (0.5f * m_grid.cellM())));
 }
 
 void FlowField::buildDirections()

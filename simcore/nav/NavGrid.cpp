@@ -122,6 +122,11 @@ NavCell NavGrid::nearestWalkable(NavCell c) const
     return best;
 }
 
+bool NavGrid::clearAhead(glm::vec2 p, glm::vec2 d) const
+{
+    return walkable(cellOf(p + d * (0.25f * m_cellM))) && walkable(cellOf(p + d * (0.5f * m_cellM)));
+}
+
 void NavGrid::setWalkable(NavCell c, bool walkable)
 {
     if (!inside(c))

@@ -53,6 +53,10 @@ public:
     // c itself when walkable; {-1, -1} when the grid has no walkable cell.
     NavCell nearestWalkable(NavCell c) const;
 
+    // True when the points a quarter and a half cell from p along the unit direction d lie
+    // in walkable cells: d does not lead into a blocked cell (the test every field passes).
+    bool clearAhead(glm::vec2 p, glm::vec2 d) const;
+
     // Marks one cell; a change bumps generation() so cached plans and fields know to
     // re-plan (the scene changed).
     void setWalkable(NavCell c, bool walkable);
