@@ -34,15 +34,13 @@ bool SketchField::solve(std::span<const VectorSample> strokes, std::span<const B
     // Gram matrix of the constraints under a positive definite kernel: symmetric positive
     // definite, factorised by Cholesky. Order: x weights, z weights, boundary weights.
     const Eigen::Index s = Eigen::Index(m_strokes.size()), b = Eigen::Index(m_boundary.size()), n = 2 * s + b;
-    Eigen::MatrixXd a(n, n);
+    Eigen::MatrixXd a = Eigen::MatrixXd::Zero(n, n);  // the x-z coupling blocks stay zero
     Eigen::VectorXd rhs(n);
     for (Eigen::Index i = 0; i < s; ++i) {
         for (Eigen::Index j = 0; j <= i; ++j) {
             const double k = kernel(m_strokes[std::size_t(i)].position, m_strokes[std::size_t(j)].position);
             a(i, j) = k;
             a(s + i, s + j) = k;
-            a(s + i, j) = 0.0;
-            a(i, s + j) = 0.0;
         }
         rhs(i) = double(m_strokes[std::size_t(i)].direction.x);
         rhs(s + i) = double(m_strokes[std::size_t(i)].direction.y);
