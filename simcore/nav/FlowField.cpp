@@ -58,71 +58,72 @@ void FlowField::build(const NavGrid& grid, std::span<const NavCell> goalCells)
 
 void FlowField::march(std::span<const int> seeds)
 {
-    const int n = m_grid.cellCount(), cols = m_grid.cols();
-    const double h = double(m_grid.cellM());
-    std::vector<double> t(std::size_t(n), std::numeric_limits<double>::infinity());
-    std::vector<std::uint8_t> frozen(std::size_t(n), 0);
+    // Padded copies (one blocked cell of border all round) so neighbour reads need no
+    // bounds checks: w = padded width, cell (x, z) sits at (z + 1) * w + x + 1.
+    const int cols = m_grid.cols(), rows = m_grid.rows(), w = cols + 2;
+    const std::size_t padded = std::size_t(w) * std::size_t(rows + 2);
+    const double h = double(m_grid.cellM()), hd = h * 1.4142135623730951;
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    std::vector<std::uint8_t> walk(padded, 0);
+    for (int z = 0; z < rows; ++z)
+        for (int x = 0; x < cols; ++x)
+            walk[std::size_t((z + 1) * w + x + 1)] = m_grid.walkable({x, z}) ? 1 : 0;
+    std::vector<double> t(padded, inf);       // tentative arrival times
+    std::vector<double> frozenT(padded, inf); // arrival times of frozen cells only
     std::vector<Front> heap;
-    heap.reserve(std::size_t(n) / 4 + seeds.size());
+    heap.reserve(padded / 4 + seeds.size());
     for (int s : seeds) {
-        t[std::size_t(s)] = 0.0;
-        heap.push_back({0.0, s});
+        const int p = (s / cols + 1) * w + s % cols + 1;
+        t[std::size_t(p)] = 0.0;
+        heap.push_back({0.0, p});
     }
     std::make_heap(heap.begin(), heap.end(), later);
-    // The smaller frozen time of the two neighbours of c at c +- (dx, dz) (inf if none);
-    // a diagonal neighbour counts only where both cells beside the step are walkable.
-    const auto upwind = [&](NavCell c, int dx, int dz) {
-        double best = std::numeric_limits<double>::infinity();
-        for (int s = -1; s <= 1; s += 2) {
-            const NavCell nb{c.x + s * dx, c.z + s * dz};
-            if (!m_grid.inside(nb) || frozen[std::size_t(m_grid.index(nb))] == 0)
-                continue;
-            if (dx != 0 && dz != 0 && (!m_grid.walkable({nb.x, c.z}) || !m_grid.walkable({c.x, nb.z})))
-                continue;
-            best = std::min(best, t[std::size_t(m_grid.index(nb))]);
-        }
-        return best;
-    };
     // First-order upwind solve of |grad T| = 1 from two orthogonal stencil arms of spacing step.
     const auto solve = [](double a, double b, double step) {
-        if (std::abs(a - b) >= step || !std::isfinite(a) || !std::isfinite(b))
+        if (std::abs(a - b) >= step || a == inf || b == inf)
             return std::min(a, b) + step;
         return 0.5 * (a + b + std::sqrt(2.0 * step * step - (a - b) * (a - b)));
     };
+    // A diagonal neighbour's time counts only where both cells beside the step are walkable.
+    const auto diagonal = [&](int p, int dx, int dz) {
+        return walk[std::size_t(p + dx)] != 0 && walk[std::size_t(p + dz * w)] != 0 ? frozenT[std::size_t(p + dx + dz * w)] : inf;
+    };
+    constexpr int kDx[8] = {1, -1, 0, 0, 1, -1, 1, -1}, kDz[8] = {0, 0, 1, -1, 1, 1, -1, -1};
     m_settled = 0;
     while (!heap.empty()) {
         std::pop_heap(heap.begin(), heap.end(), later);
         const Front f = heap.back();
         heap.pop_back();
-        if (frozen[std::size_t(f.cell)] != 0 || f.t > t[std::size_t(f.cell)])
+        if (frozenT[std::size_t(f.cell)] != inf || f.t > t[std::size_t(f.cell)])
             continue;
-        frozen[std::size_t(f.cell)] = 1;
+        frozenT[std::size_t(f.cell)] = f.t;
         ++m_settled;
-        const NavCell c{f.cell % cols, f.cell / cols};
-        for (int dz = -1; dz <= 1; ++dz)
-            for (int dx = -1; dx <= 1; ++dx) {
-                const NavCell nb{c.x + dx, c.z + dz};
-                if ((dx == 0 && dz == 0) || !m_grid.walkable(nb))
-                    continue;
-                const int i = m_grid.index(nb);
-                if (frozen[std::size_t(i)] != 0)
-                    continue;
-                // Multi-stencil marching (Hassouna & Farag 2007): the axis stencil and the
-                // diagonal one (spacing h * sqrt 2), whichever arrives first. The diagonal
-                // stencil removes the axis stencil's 20 % overestimate along diagonals.
-                const double axis = solve(upwind(nb, 1, 0), upwind(nb, 0, 1), h);
-                const double diag = solve(upwind(nb, 1, 1), upwind(nb, 1, -1), h * 1.4142135623730951);
-                const double u = std::min(axis, diag);
-                if (u < t[std::size_t(i)]) {
-                    t[std::size_t(i)] = u;
-                    heap.push_back({u, i});
-                    std::push_heap(heap.begin(), heap.end(), later);
-                }
+        const int c = f.cell;
+        for (int k = 0; k < 8; ++k) {
+            const int p = c + kDx[k] + kDz[k] * w;
+            if (walk[std::size_t(p)] == 0 || frozenT[std::size_t(p)] != inf)
+                continue;
+            if (k >= 4 && (walk[std::size_t(c + kDx[k])] == 0 || walk[std::size_t(c + kDz[k] * w)] == 0))
+                continue;  // no corner cutting: the front does not leak through a diagonal gap
+            // Multi-stencil marching (Hassouna & Farag 2007): the axis stencil and the
+            // diagonal one (spacing h * sqrt 2), whichever arrives first. The diagonal
+            // stencil removes the axis stencil's 20 % overestimate along diagonals.
+            const double ax = std::min(frozenT[std::size_t(p - 1)], frozenT[std::size_t(p + 1)]);
+            const double az = std::min(frozenT[std::size_t(p - w)], frozenT[std::size_t(p + w)]);
+            const double d1 = std::min(diagonal(p, 1, 1), diagonal(p, -1, -1));
+            const double d2 = std::min(diagonal(p, 1, -1), diagonal(p, -1, 1));
+            const double u = std::min(solve(ax, az, h), solve(d1, d2, hd));
+            if (u < t[std::size_t(p)]) {
+                t[std::size_t(p)] = u;
+                heap.push_back({u, p});
+                std::push_heap(heap.begin(), heap.end(), later);
             }
+        }
     }
-    m_distance.resize(std::size_t(n));
-    for (int i = 0; i < n; ++i)
-        m_distance[std::size_t(i)] = float(t[std::size_t(i)]);
+    m_distance.resize(std::size_t(m_grid.cellCount()));
+    for (int z = 0; z < rows; ++z)
+        for (int x = 0; x < cols; ++x)
+            m_distance[std::size_t(z * cols + x)] = float(frozenT[std::size_t((z + 1) * w + x + 1)]);
 }
 
 bool FlowField::clearAhead(glm::vec2 p, glm::vec2 d) const

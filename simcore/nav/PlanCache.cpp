@@ -28,4 +28,12 @@ void PlanCache::clear()
     m_plans.clear();
 }
 
+std::shared_ptr<const NavPlan> planBetween(PlanCache& cache, const NavGrid& grid, glm::vec2 from, glm::vec2 to, AStar& astar)
+{
+    const NavCell start = grid.nearestWalkable(grid.cellOf(from)), goal = grid.nearestWalkable(grid.cellOf(to));
+    if (!grid.walkable(start) || !grid.walkable(goal))
+        return nullptr;
+    return cache.plan(grid, start, goal, astar);
+}
+
 }  // namespace throng::sim

@@ -32,4 +32,10 @@ private:
     std::size_t m_hits = 0, m_misses = 0, m_invalidations = 0;
 };
 
+// What the World calls for an agent at `from` heading for `to`: both points snap to their
+// cell, or to the nearest walkable cell when that is blocked (an agent brushing a wall
+// stands in its inflated margin), then the cache answers. Null when the grid has no
+// walkable cell at all.
+std::shared_ptr<const NavPlan> planBetween(PlanCache& cache, const NavGrid& grid, glm::vec2 from, glm::vec2 to, AStar& astar);
+
 }  // namespace throng::sim

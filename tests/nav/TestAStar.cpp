@@ -161,6 +161,37 @@ private slots:
         QVERIFY(p1->waypoints.size() == 1);  // holders of the old plan keep it intact
     }
 
+    void planBetweenPointsSnapsToWalkableCells()
+    {
+        NavGrid grid;
+        grid.build(fieldTestScene(1), {0.5f, 0.3f});  // a room with a door in its east wall
+        AStar astar;
+        PlanCache cache;
+        // From a point on the room's west wall (inside its inflated margin) to a goal outside.
+        const auto plan = planBetween(cache, grid, {5.0f, 10.0f}, {26.0f, 10.0f}, astar);
+        QVERIFY(plan && plan->found());
+        QVERIFY(grid.walkable(plan->cells.front()));
+        QVERIFY(glm::distance(grid.centre(plan->cells.front()), glm::vec2(5.0f, 10.0f)) < 0.8f);
+        QVERIFY(glm::distance(plan->waypoints.back(), glm::vec2(26.0f, 10.0f)) < 0.5f);
+        // It leaves by the door: some waypoint lies in the doorway (x near 20, z between 9 and 11).
+        bool door = false;
+        for (std::size_t k = 0; k + 1 < plan->corners.size(); ++k) {
+            const glm::vec2 a = grid.centre(plan->corners[k]), b = grid.centre(plan->corners[k + 1]);
+            if ((a.x - 20.0f) * (b.x - 20.0f) <= 0.0f && a.x != b.x) {
+                const float z = a.y + (b.y - a.y) * (20.0f - a.x) / (b.x - a.x);
+                door = door || (z > 9.0f && z < 11.0f);
+            }
+        }
+        QVERIFY(door);
+        QVERIFY(polylineStaysWalkable(grid, plan->corners, 0.02f));
+        QCOMPARE(planBetween(cache, grid, {5.1f, 10.1f}, {26.0f, 10.0f}, astar).get(), plan.get());
+        QCOMPARE(planBetween(cache, NavGrid(2, 2, {0, 0}, 1.0f), {0.5f, 0.5f}, {1.5f, 1.5f}, astar)->found(), true);
+        NavGrid solid(2, 1, {0, 0}, 1.0f);
+        solid.setWalkable({0, 0}, false);
+        solid.setWalkable({1, 0}, false);
+        QVERIFY(planBetween(cache, solid, {0.5f, 0.5f}, {1.5f, 0.5f}, astar) == nullptr);
+    }
+
     void followerHelpers()
     {
         float lo = 1e9f, hi = 0.0f;
