@@ -20,9 +20,10 @@ namespace throng::sim {
 struct SketchParams {
     float sampleSpacingM = 1.0f;    // m, > 0: direction samples along strokes
     float boundarySpacingM = 1.0f;  // m, > 0: normal samples along walls and obstacles
-    float kernelLengthM = 3.0f;     // m, > 0: the inverse multiquadric's scale, 1 / sqrt(1 + (r / l)^2)
+    float kernelLengthM = 2.0f;     // m, > 0: the inverse multiquadric's scale, 1 / sqrt(1 + (r / l)^2)
     float wallReachM = 12.0f;       // m, >= 0: boundary samples farther from every stroke sample are left out
-    float ridge = 1e-6f;            // >= 0: Tikhonov term relative to the kernel's peak (smooths noisy strokes)
+    float ridge = 1e-3f;            // >= 0: Tikhonov term relative to the kernel's peak (1): keeps dense
+                                    // samples well conditioned; 1e-6 lets a 0.25 m spacing ring by 60 degrees
 };
 
 class SketchField {

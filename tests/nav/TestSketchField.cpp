@@ -14,6 +14,7 @@
 
 #include <omp.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <random>
@@ -47,8 +48,16 @@ Scene corridor()
 class TestSketchField : public QObject {
     Q_OBJECT
 private slots:
+    void fieldFollowsTheStrokes_data()
+    {
+        QTest::addColumn<float>("spacingM");
+        QTest::newRow("a sample a metre") << 1.0f;
+        QTest::newRow("dense samples, 0.25 m") << 0.25f;
+    }
+
     void fieldFollowsTheStrokes()
     {
+        QFETCH(float, spacingM);
         Scene scene;
         scene.settings.boundsMin = {0.0f, 0.0f};
         scene.settings.boundsMax = {40.0f, 30.0f};
@@ -62,9 +71,11 @@ private slots:
         scene.flowStrokes.push_back({{{5.0f, 28.0f}, {35.0f, 28.0f}}, 2.0f});
         NavGrid grid;
         grid.build(scene, {0.5f, 0.3f});
+        SketchParams params;
+        params.sampleSpacingM = spacingM;
         SketchField field;
-        QVERIFY2(field.build(scene, grid), field.error().c_str());
-        const std::vector<VectorSample> samples = strokeSamples(scene.flowStrokes, 1.0f);
+        QVERIFY2(field.build(scene, grid, params), field.error().c_str());
+        const std::vector<VectorSample> samples = strokeSamples(scene.flowStrokes, spacingM);
         QCOMPARE(field.strokeSampleCount(), samples.size());
         float worstExact = 0.0f, worstBaked = 0.0f;
         for (const VectorSample& s : samples) {
@@ -73,8 +84,20 @@ private slots:
         }
         qInfo("%zu stroke samples: worst angle error %.3f deg (RBF), %.2f deg (baked grid, bilinear)", samples.size(),
               double(worstExact), double(worstBaked));
-        QVERIFY(worstExact < 1.0f);
+        QVERIFY(worstExact < 3.0f);
         QVERIFY(worstBaked < 5.0f);
+        // Smooth: neighbouring cells turn by little (dense samples must not make it ring).
+        std::vector<float> turn;
+        for (int z = 0; z < grid.rows(); ++z)
+            for (int x = 0; x + 1 < grid.cols(); ++x) {
+                const glm::vec2 a = field.direction({x, z}), b = field.direction({x + 1, z});
+                if (glm::length(a) > 0.0f && glm::length(b) > 0.0f)
+                    turn.push_back(angleDeg(a, b));
+            }
+        std::sort(turn.begin(), turn.end());
+        const float turn99 = turn[turn.size() * 99 / 100];
+        qInfo("99 %% of neighbouring cells differ by less than %.2f deg", double(turn99));
+        QVERIFY(turn99 < 10.0f);
         // Between the strokes the field blends them: still heading east-ish at the arc's end.
         QVERIFY(angleDeg(field.sample({31.0f, 20.0f}), {1.0f, 0.0f}) < 60.0f);
     }
