@@ -173,6 +173,8 @@ NavPlan AStar::plan(const NavGrid& grid, NavCell start, NavCell goal)
     std::reverse(result.cells.begin(), result.cells.end());
     result.lengthM = float(m_g[std::size_t(t)] * double(grid.cellM()));
     result.corners = smoothPath(grid, result.cells);
+    if (result.corners.size() == 1)  // start == goal: the one waypoint is where the agent stands
+        result.waypoints.push_back(grid.centre(result.corners[0]));
     for (std::size_t k = 1; k < result.corners.size(); ++k) {
         result.waypoints.push_back(grid.centre(result.corners[k]));
         result.smoothedLengthM += glm::distance(grid.centre(result.corners[k - 1]), result.waypoints.back());

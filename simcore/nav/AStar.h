@@ -20,7 +20,8 @@ struct NavPlan {
     PlanStatus status = PlanStatus::Unreachable;
     std::vector<NavCell> cells;         // the A* path, start to goal inclusive (Found only)
     std::vector<NavCell> corners;       // smoothed: start, the corners, goal
-    std::vector<glm::vec2> waypoints;   // centres of corners after the start, in metres
+    std::vector<glm::vec2> waypoints;   // centres of corners after the start, in metres; never
+                                        // empty when found (start == goal: the start's centre)
     float lengthM = 0.0f;               // length of the A* path (cells), m
     float smoothedLengthM = 0.0f;       // length through the corners, m, <= lengthM
     std::uint64_t generation = 0;       // the grid generation the plan was made on

@@ -109,6 +109,8 @@ private slots:
         QVERIFY(astar.expandedLast() <= 900 - 121);  // only the outside was searched
         QCOMPARE(astar.plan(grid, {15, 15}, {2, 2}).status, PlanStatus::Unreachable);
         QVERIFY(astar.expandedLast() <= 81);
+        const NavPlan here = astar.plan(grid, {3, 4}, {3, 4});
+        QVERIFY(here.found() && here.cells.size() == 1 && here.waypoints.size() == 1 && here.lengthM == 0.0f);
         QCOMPARE(astar.plan(grid, {10, 10}, {2, 2}).status, PlanStatus::StartBlocked);
         QCOMPARE(astar.plan(grid, {2, 2}, {40, 2}).status, PlanStatus::GoalBlocked);
         // A gap the width of a diagonal does not count: no corner cutting.

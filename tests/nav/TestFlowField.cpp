@@ -175,6 +175,12 @@ private slots:
         QCOMPARE(field.sample({23.0f, 16.5f}), glm::vec2(0.0f));
         QCOMPARE(field.sample({-5.0f, 3.0f}), glm::vec2(0.0f));  // outside the grid
         QVERIFY(glm::length(field.sample({10.0f, 10.0f})) > 0.99f);
+
+        FlowField none;  // no goal at all: nowhere to flow, everywhere unreachable
+        none.build(grid, std::span<const NavCell>());
+        QVERIFY(!none.reachable(grid.cellOf({10.0f, 10.0f})));
+        QCOMPARE(none.sample({10.0f, 10.0f}), glm::vec2(0.0f));
+        QCOMPARE(FlowField().sample({10.0f, 10.0f}), glm::vec2(0.0f));  // never built
     }
 
     void buildsAreBitIdentical()
