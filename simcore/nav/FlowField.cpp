@@ -12,13 +12,77 @@ namespace {
 
 constexpr float kInf = std::numeric_limits<float>::infinity();
 
-struct Front {
-    double t;
-    int cell;
-};
+// The marching front: a binary min-heap of cells keyed by their tentative arrival time,
+// each cell at most once (decrease-key), so the heap stays as small as the front. Equal
+// times pop in cell order, so the march is deterministic.
+class NarrowBand {
+public:
+    NarrowBand(const std::vector<double>& t, std::size_t cells)
+        : m_t(t)
+        , m_pos(cells, -1)
+    {
+    }
+    bool empty() const { return m_heap.empty(); }
+    // Inserts the cell, or moves it up after its time dropped.
+    void update(int cell)
+    {
+        int i = m_pos[std::size_t(cell)];
+        if (i < 0) {
+            i = int(m_heap.size());
+            m_heap.push_back(cell);
+        }
+        siftUp(i, cell);
+    }
+    int pop()
+    {
+        const int top = m_heap.front(), last = m_heap.back();
+        m_heap.pop_back();
+        m_pos[std::size_t(top)] = -1;
+        if (!m_heap.empty())
+            siftDown(0, last);
+        return top;
+    }
 
-// Min-heap on arrival time; equal times pop in cell order, so the march is deterministic.
-bool later(const Front& a, const Front& b) { return a.t != b.t ? a.t > b.t : a.cell > b.cell; }
+private:
+    bool before(int a, int b) const
+    {
+        const double ta = m_t[std::size_t(a)], tb = m_t[std::size_t(b)];
+        return ta != tb ? ta < tb : a < b;
+    }
+    void place(int i, int cell)
+    {
+        m_heap[std::size_t(i)] = cell;
+        m_pos[std::size_t(cell)] = i;
+    }
+    void siftUp(int i, int cell)
+    {
+        while (i > 0 && before(cell, m_heap[std::size_t((i - 1) / 2)])) {
+            place(i, m_heap[std::size_t((i - 1) / 2)]);
+            i = (i - 1) / 2;
+        }
+        place(i, cell);
+    }
+    void siftDown(int i, int cell)
+    {
+        const int n = int(m_heap.size());
+        for (;;) {
+            int child = 2 * i + 1;
+            if (child >= n)
+                break;
+            if (child + 1 < n && before(m_heap[std::size_t(child + 1)], m_heap[std::size_t(child)]))
+                ++child;
+            if (!before(m_heap[std::size_t(child)], cell))
+                break;
+            place(i, m_heap[std::size_t(child)]);
+            i = child;
+        }
+        place(i, cell);
+    }
+
+    const std::vector<double>& m_t;
+    std::vector<int> m_pos;  // index in m_heap per cell, -1 when not in the front
+    std::vector<int> m_heap;
+};
 
 }  // namespace
 
@@ -70,14 +134,12 @@ void FlowField::march(std::span<const int> seeds)
             walk[std::size_t((z + 1) * w + x + 1)] = m_grid.walkable({x, z}) ? 1 : 0;
     std::vector<double> t(padded, inf);       // tentative arrival times
     std::vector<double> frozenT(padded, inf); // arrival times of frozen cells only
-    std::vector<Front> heap;
-    heap.reserve(padded / 4 + seeds.size());
+    NarrowBand front(t, padded);
     for (int s : seeds) {
         const int p = (s / cols + 1) * w + s % cols + 1;
         t[std::size_t(p)] = 0.0;
-        heap.push_back({0.0, p});
+        front.update(p);
     }
-    std::make_heap(heap.begin(), heap.end(), later);
     // First-order upwind solve of |grad T| = 1 from two orthogonal stencil arms of spacing step.
     const auto solve = [](double a, double b, double step) {
         if (std::abs(a - b) >= step || a == inf || b == inf)
@@ -90,15 +152,10 @@ void FlowField::march(std::span<const int> seeds)
     };
     constexpr int kDx[8] = {1, -1, 0, 0, 1, -1, 1, -1}, kDz[8] = {0, 0, 1, -1, 1, 1, -1, -1};
     m_settled = 0;
-    while (!heap.empty()) {
-        std::pop_heap(heap.begin(), heap.end(), later);
-        const Front f = heap.back();
-        heap.pop_back();
-        if (frozenT[std::size_t(f.cell)] != inf || f.t > t[std::size_t(f.cell)])
-            continue;
-        frozenT[std::size_t(f.cell)] = f.t;
+    while (!front.empty()) {
+        const int c = front.pop();
+        frozenT[std::size_t(c)] = t[std::size_t(c)];
         ++m_settled;
-        const int c = f.cell;
         for (int k = 0; k < 8; ++k) {
             const int p = c + kDx[k] + kDz[k] * w;
             if (walk[std::size_t(p)] == 0 || frozenT[std::size_t(p)] != inf)
@@ -115,8 +172,7 @@ void FlowField::march(std::span<const int> seeds)
             const double u = std::min(solve(ax, az, h), solve(d1, d2, hd));
             if (u < t[std::size_t(p)]) {
                 t[std::size_t(p)] = u;
-                heap.push_back({u, p});
-                std::push_heap(heap.begin(), heap.end(), later);
+                front.update(p);
             }
         }
     }
