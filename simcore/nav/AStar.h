@@ -63,4 +63,11 @@ private:
     int m_expanded = 0;
 };
 
+// The re-plan for a stuck agent (no progress for a while, see NavFollow's StallWatch): as
+// astar.plan(), but cells whose centres lie within avoidRadiusM of avoidAt (the jam or the
+// obstacle it keeps pushing against) count as blocked, start and goal excepted. The plan
+// carries the grid's own generation; it is not for sharing through a PlanCache.
+// Unreachable means there is no way round: side-step or wait instead.
+NavPlan planAround(AStar& astar, const NavGrid& grid, NavCell start, NavCell goal, glm::vec2 avoidAt, float avoidRadiusM);
+
 }  // namespace throng::sim

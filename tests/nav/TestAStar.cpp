@@ -194,6 +194,42 @@ private slots:
         QVERIFY(planBetween(cache, solid, {0.5f, 0.5f}, {1.5f, 0.5f}, astar) == nullptr);
     }
 
+    void stuckAgentsReplanAroundTheJam()
+    {
+        // Two ways from west to east round a central block (rows 4 to 13): the passage north
+        // of it is a row nearer the start's row 8 than the one south of it.
+        NavGrid grid(30, 20, {0, 0}, 1.0f);
+        for (int z = 4; z < 14; ++z)
+            for (int x = 8; x < 22; ++x)
+                grid.setWalkable({x, z}, false);
+        AStar astar;
+        const NavCell start{2, 8}, goal{27, 8};
+        const NavPlan usual = astar.plan(grid, start, goal);
+        QVERIFY(usual.found());
+        bool north = false;
+        for (const NavCell& c : usual.cells)
+            north = north || c.z < 4;
+        QVERIFY(north);
+        // Stuck in the north passage: the re-plan goes south and never through the jam.
+        const glm::vec2 jam(15.0f, 2.0f);
+        const NavPlan detour = planAround(astar, grid, start, goal, jam, 2.5f);
+        QVERIFY(detour.found());
+        QCOMPARE(detour.generation, grid.generation());
+        for (const NavCell& c : detour.cells) {
+            QVERIFY(c.z < 4 ? glm::distance(grid.centre(c), jam) > 2.5f : true);
+            QVERIFY(!(c.x >= 13 && c.x <= 17 && c.z < 4));
+        }
+        QVERIFY(detour.lengthM > usual.lengthM);
+        QVERIFY(polylineStaysWalkable(grid, detour.corners, 0.02f));
+        // Block the south way too: no way round is reported, and the grid itself is untouched.
+        for (int z = 14; z < 20; ++z)
+            grid.setWalkable({15, z}, false);
+        const auto generation = grid.generation();
+        QCOMPARE(planAround(astar, grid, start, goal, jam, 2.5f).status, PlanStatus::Unreachable);
+        QCOMPARE(grid.generation(), generation);
+        QVERIFY(astar.plan(grid, start, goal).found());
+    }
+
     void followerHelpers()
     {
         float lo = 1e9f, hi = 0.0f;
