@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 
 namespace throng::sim {
 
@@ -67,6 +68,44 @@ bool lineOfSight(const NavGrid& grid, NavCell a, NavCell b)
         } else {
             c.z += sz;
             ++iz;
+        }
+        if (!grid.walkable(c))
+            return false;
+    }
+    return true;
+}
+
+bool lineOfSight(const NavGrid& grid, glm::vec2 a, glm::vec2 b)
+{
+    // Amanatides & Woo: step to whichever cell boundary the segment reaches first.
+    NavCell c = grid.cellOf(a);
+    const NavCell last = grid.cellOf(b);
+    if (!grid.walkable(c) || !grid.walkable(last))
+        return false;
+    const glm::vec2 d = b - a, q = (a - grid.origin()) / grid.cellM();
+    const int sx = d.x > 0.0f ? 1 : -1, sz = d.y > 0.0f ? 1 : -1;
+    constexpr float inf = std::numeric_limits<float>::infinity();
+    // Parameter t in [0, 1] along the segment at which the next x / z boundary is crossed.
+    const float dx = d.x / grid.cellM(), dz = d.y / grid.cellM();
+    float tx = dx != 0.0f ? ((sx > 0 ? std::floor(q.x) + 1.0f : std::floor(q.x)) - q.x) / dx : inf;
+    float tz = dz != 0.0f ? ((sz > 0 ? std::floor(q.y) + 1.0f : std::floor(q.y)) - q.y) / dz : inf;
+    const float stepX = dx != 0.0f ? std::abs(1.0f / dx) : inf, stepZ = dz != 0.0f ? std::abs(1.0f / dz) : inf;
+    const int steps = std::abs(last.x - c.x) + std::abs(last.z - c.z);
+    for (int k = 0; k < steps && !(c == last); ++k) {
+        if (std::abs(tx - tz) <= 1e-5f) {  // through a corner, give or take rounding: both sides
+            if (!grid.walkable({c.x + sx, c.z}) || !grid.walkable({c.x, c.z + sz}))
+                return false;
+            c.x += sx;
+            c.z += sz;
+            tx += stepX;
+            tz += stepZ;
+            ++k;
+        } else if (tx < tz) {
+            c.x += sx;
+            tx += stepX;
+        } else {
+            c.z += sz;
+            tz += stepZ;
         }
         if (!grid.walkable(c))
             return false;

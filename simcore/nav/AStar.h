@@ -36,6 +36,11 @@ double octileCells(NavCell a, NavCell b);
 // cells (every cell it enters; where it passes exactly through a corner, both side cells).
 bool lineOfSight(const NavGrid& grid, NavCell a, NavCell b);
 
+// The same for any two points (an agent's own position to a waypoint, say): true when the
+// segment from a to b touches only walkable cells; where it passes exactly through a cell
+// corner both side cells must be walkable.
+bool lineOfSight(const NavGrid& grid, glm::vec2 a, glm::vec2 b);
+
 // Greedy string pulling: keeps a cell only where the next cell is not visible from the
 // last kept one. First and last cells are always kept.
 std::vector<NavCell> smoothPath(const NavGrid& grid, const std::vector<NavCell>& cells);

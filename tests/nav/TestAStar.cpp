@@ -95,6 +95,39 @@ private slots:
         QVERIFY(std::abs(straight.smoothedLengthM - glm::distance(glm::vec2(2, 3), glm::vec2(45, 31))) < 1e-3f);
     }
 
+    void lineOfSightBetweenPointsMatchesDenseSampling()
+    {
+        std::mt19937 gen(31);
+        std::uniform_real_distribution<float> u(0.0f, 1.0f);
+        int clear = 0, blocked = 0;
+        for (int map = 0; map < 40; ++map) {
+            NavGrid grid = randomGrid(gen, 20, 15, 0.12f);
+            for (int q = 0; q < 100; ++q) {
+                // Half the queries start and end on cell edges or corners, the hard cases.
+                glm::vec2 a(u(gen) * 20.0f, u(gen) * 15.0f), b(u(gen) * 20.0f, u(gen) * 15.0f);
+                if (q % 2 == 0) {
+                    a = glm::floor(a * 2.0f) * 0.5f;
+                    b = glm::floor(b * 2.0f) * 0.5f;
+                }
+                bool sampledClear = true;
+                for (int i = 0; i <= 4000 && sampledClear; ++i) {
+                    const glm::vec2 p = a + (b - a) * (float(i) / 4000.0f);
+                    sampledClear = grid.walkable(grid.cellOf(p));
+                }
+                const bool los = lineOfSight(grid, a, b);
+                // The exact test is conservative: every sampled point clear whenever it says clear.
+                if (los)
+                    QVERIFY2(sampledClear, "line of sight through a blocked cell");
+                (los ? clear : blocked) += 1;
+                // Between cell centres it agrees with the integer walk.
+                const NavCell ca = grid.cellOf(a), cb = grid.cellOf(b);
+                QCOMPARE(lineOfSight(grid, grid.centre(ca), grid.centre(cb)), lineOfSight(grid, ca, cb));
+            }
+        }
+        qInfo("%d clear and %d blocked sight lines", clear, blocked);
+        QVERIFY(clear > 400 && blocked > 400);
+    }
+
     void unreachableGoalsAreReportedNotLooped()
     {
         NavGrid grid(30, 30, {0, 0}, 1.0f);
