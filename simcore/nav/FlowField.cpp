@@ -211,6 +211,22 @@ void FlowField::buildDirections()
                 }
             }
         }
+        if (fall == glm::vec2(0.0f)) {
+            // Reached only along a diagonal (both side cells higher): head for the lowest
+            // legal 8-neighbour, so no reachable cell is left without a way down.
+            float best = ti;
+            for (int dz = -1; dz <= 1; ++dz)
+                for (int dx = -1; dx <= 1; ++dx) {
+                    const NavCell nb{c.x + dx, c.z + dz};
+                    const bool legal = (dx == 0 || dz == 0) || (m_grid.walkable({nb.x, c.z}) && m_grid.walkable({c.x, nb.z}));
+                    if ((dx != 0 || dz != 0) && legal && reachable(nb) && distanceM(nb) < best) {
+                        best = distanceM(nb);
+                        fall = glm::normalize(glm::vec2(float(dx), float(dz)));
+                    }
+                }
+            m_dir[std::size_t(i)] = fall;
+            continue;
+        }
         glm::vec2 d = glm::normalize(fall);
         // A diagonal is kept only where the diagonal cell is lower still: at a watershed
         // between two routes the upwind gradient can point at a higher cell, and two such
