@@ -99,25 +99,34 @@ NavCell NavGrid::nearestWalkable(NavCell c) const
     if (walkable(c))
         return c;
     // Rings of growing Chebyshev radius r hold cells at least r away, so once a ring
-    // can no longer beat the best squared distance the search is over.
-    const int limit = std::max(m_cols, m_rows) + std::max(std::abs(c.x), std::abs(c.z)) + 1;
+    // can no longer beat the best squared distance the search is over. Only the part of a
+    // ring inside the grid is visited, and rings wholly outside it are skipped.
     NavCell best{-1, -1};
     long bestD2 = -1;
-    for (int r = 1; r <= limit; ++r) {
+    const auto consider = [&](int x, int z) {
+        if (!walkable({x, z}))
+            return;
+        const long d2 = long(x - c.x) * (x - c.x) + long(z - c.z) * (z - c.z);
+        if (bestD2 < 0 || d2 < bestD2 || (d2 == bestD2 && (z < best.z || (z == best.z && x < best.x)))) {
+            best = {x, z};
+            bestD2 = d2;
+        }
+    };
+    const int first = std::max({1, -c.x, c.x - (m_cols - 1), -c.z, c.z - (m_rows - 1)});
+    const int last = first + std::max(m_cols, m_rows);
+    for (int r = first; r <= last; ++r) {
         if (bestD2 >= 0 && long(r) * r > bestD2)
             break;
-        for (int z = c.z - r; z <= c.z + r; ++z)
-            for (int x = c.x - r; x <= c.x + r; ++x) {
-                if (std::max(std::abs(x - c.x), std::abs(z - c.z)) != r || !walkable({x, z}))
-                    continue;
-                const long d2 = long(x - c.x) * (x - c.x) + long(z - c.z) * (z - c.z);
-                const bool better = bestD2 < 0 || d2 < bestD2
-                    || (d2 == bestD2 && (z < best.z || (z == best.z && x < best.x)));
-                if (better) {
-                    best = {x, z};
-                    bestD2 = d2;
-                }
-            }
+        const int x0 = std::max(c.x - r, 0), x1 = std::min(c.x + r, m_cols - 1);
+        const int z0 = std::max(c.z - r + 1, 0), z1 = std::min(c.z + r - 1, m_rows - 1);
+        for (int x = x0; x <= x1; ++x) {  // the top and bottom rows of the ring
+            consider(x, c.z - r);
+            consider(x, c.z + r);
+        }
+        for (int z = z0; z <= z1; ++z) {  // its left and right columns, corners excluded
+            consider(c.x - r, z);
+            consider(c.x + r, z);
+        }
     }
     return best;
 }
