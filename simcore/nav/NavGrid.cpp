@@ -3,11 +3,20 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 
 namespace throng::sim {
 
 namespace {
+
+// Generations are unique across all grids, so a plan or field made on one grid is never
+// mistaken for current on another. Only compared for equality: the values never affect results.
+std::uint64_t nextGeneration()
+{
+    static std::atomic<std::uint64_t> counter{0};
+    return ++counter;
+}
 
 float pointSegmentDistance(glm::vec2 p, glm::vec2 a, glm::vec2 b)
 {
@@ -58,6 +67,7 @@ NavGrid::NavGrid(int cols, int rows, glm::vec2 origin, float cellM)
     , m_origin(origin)
     , m_cellM(cellM)
     , m_walkable(std::size_t(m_cols) * std::size_t(m_rows), 1)
+    , m_generation(nextGeneration())
 {
 }
 
@@ -81,7 +91,7 @@ void NavGrid::build(const NavShapes& shapes, glm::vec2 boundsMin, glm::vec2 boun
         blockNearCircle(c, r);
     for (const NavBox& b : shapes.boxes)
         blockNearBox(b, r);
-    ++m_generation;
+    m_generation = nextGeneration();
 }
 
 NavCell NavGrid::cellOf(glm::vec2 p) const
@@ -143,7 +153,7 @@ void NavGrid::setWalkable(NavCell c, bool walkable)
     auto& v = m_walkable[std::size_t(index(c))];
     if ((v != 0) != walkable) {
         v = walkable ? 1 : 0;
-        ++m_generation;
+        m_generation = nextGeneration();
     }
 }
 

@@ -57,8 +57,9 @@ public:
     // in walkable cells: d does not lead into a blocked cell (the test every field passes).
     bool clearAhead(glm::vec2 p, glm::vec2 d) const;
 
-    // Marks one cell; a change bumps generation() so cached plans and fields know to
-    // re-plan (the scene changed).
+    // Marks one cell; a change gives the grid a new generation() so cached plans and fields
+    // know to re-plan (the scene changed). Generations are unique across grids; copies share
+    // theirs until either changes.
     void setWalkable(NavCell c, bool walkable);
     std::uint64_t generation() const { return m_generation; }
 
