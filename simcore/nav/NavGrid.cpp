@@ -1,0 +1,199 @@
+#include "simcore/nav/NavGrid.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+
+namespace throng::sim {
+
+namespace {
+
+// Generations are unique across all grids, so a plan or field made on one grid is never
+// mistaken for current on another. Only compared for equality: the values never affect results.
+std::uint64_t nextGeneration()
+{
+    static std::atomic<std::uint64_t> counter{0};
+    return ++counter;
+}
+
+float pointSegmentDistance(glm::vec2 p, glm::vec2 a, glm::vec2 b)
+{
+    const glm::vec2 ab = b - a;
+    const float len2 = glm::dot(ab, ab);
+    const float t = len2 > 0.0f ? std::clamp(glm::dot(p - a, ab) / len2, 0.0f, 1.0f) : 0.0f;
+    return glm::distance(p, a + ab * t);
+}
+
+float pointRectDistance(glm::vec2 p, glm::vec2 lo, glm::vec2 hi)
+{
+    const glm::vec2 d = glm::max(glm::max(lo - p, p - hi), glm::vec2(0.0f));
+    return glm::length(d);
+}
+
+float cross(glm::vec2 a, glm::vec2 b) { return a.x * b.y - a.y * b.x; }
+
+bool segmentsCross(glm::vec2 a, glm::vec2 b, glm::vec2 c, glm::vec2 d)
+{
+    const float d1 = cross(b - a, c - a), d2 = cross(b - a, d - a);
+    const float d3 = cross(d - c, a - c), d4 = cross(d - c, b - c);
+    return ((d1 <= 0.0f && d2 >= 0.0f) || (d1 >= 0.0f && d2 <= 0.0f))
+        && ((d3 <= 0.0f && d4 >= 0.0f) || (d3 >= 0.0f && d4 <= 0.0f));
+}
+
+// Distance between a segment and a closed rectangle: zero when they meet, otherwise
+// attained at a vertex of one of the two convex shapes.
+float segmentRectDistance(glm::vec2 a, glm::vec2 b, glm::vec2 lo, glm::vec2 hi)
+{
+    const glm::vec2 corners[4] = {lo, {hi.x, lo.y}, hi, {lo.x, hi.y}};
+    auto in = [&](glm::vec2 p) { return p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y; };
+    if (in(a) || in(b))
+        return 0.0f;
+    for (int k = 0; k < 4; ++k)
+        if (segmentsCross(a, b, corners[k], corners[(k + 1) % 4]))
+            return 0.0f;
+    float d = std::min(pointRectDistance(a, lo, hi), pointRectDistance(b, lo, hi));
+    for (const glm::vec2& c : corners)
+        d = std::min(d, pointSegmentDistance(c, a, b));
+    return d;
+}
+
+}  // namespace
+
+NavGrid::NavGrid(int cols, int rows, glm::vec2 origin, float cellM)
+    : m_cols(std::max(cols, 0))
+    , m_rows(std::max(rows, 0))
+    , m_origin(origin)
+    , m_cellM(cellM)
+    , m_walkable(std::size_t(m_cols) * std::size_t(m_rows), 1)
+    , m_generation(nextGeneration())
+{
+}
+
+void NavGrid::build(const Scene& scene, const NavGridParams& params)
+{
+    build(navShapes(scene), scene.settings.boundsMin, scene.settings.boundsMax, params);
+}
+
+void NavGrid::build(const NavShapes& shapes, glm::vec2 boundsMin, glm::vec2 boundsMax, const NavGridParams& params)
+{
+    m_cellM = params.cellM > 0.0f ? params.cellM : 1.0f;
+    m_origin = boundsMin;
+    const glm::vec2 extent = glm::max(boundsMax - boundsMin, glm::vec2(0.0f));
+    m_cols = std::max(1, int(std::ceil(extent.x / m_cellM)));
+    m_rows = std::max(1, int(std::ceil(extent.y / m_cellM)));
+    m_walkable.assign(std::size_t(m_cols) * std::size_t(m_rows), 1);
+    const float r = std::max(params.agentRadiusM, 0.0f);
+    for (const Segment& s : shapes.walls)
+        blockNearSegment(s, r);
+    for (const NavCircle& c : shapes.circles)
+        blockNearCircle(c, r);
+    for (const NavBox& b : shapes.boxes)
+        blockNearBox(b, r);
+    m_generation = nextGeneration();
+}
+
+NavCell NavGrid::cellOf(glm::vec2 p) const
+{
+    const glm::vec2 q = (p - m_origin) / m_cellM;
+    return {int(std::floor(q.x)), int(std::floor(q.y))};
+}
+
+glm::vec2 NavGrid::cellMin(NavCell c) const { return m_origin + glm::vec2(float(c.x), float(c.z)) * m_cellM; }
+
+glm::vec2 NavGrid::centre(NavCell c) const { return cellMin(c) + glm::vec2(0.5f * m_cellM); }
+
+NavCell NavGrid::nearestWalkable(NavCell c) const
+{
+    if (walkable(c))
+        return c;
+    // Rings of growing Chebyshev radius r hold cells at least r away, so once a ring
+    // can no longer beat the best squared distance the search is over. Only the part of a
+    // ring inside the grid is visited, and rings wholly outside it are skipped.
+    NavCell best{-1, -1};
+    long bestD2 = -1;
+    const auto consider = [&](int x, int z) {
+        if (!walkable({x, z}))
+            return;
+        const long d2 = long(x - c.x) * (x - c.x) + long(z - c.z) * (z - c.z);
+        if (bestD2 < 0 || d2 < bestD2 || (d2 == bestD2 && (z < best.z || (z == best.z && x < best.x)))) {
+            best = {x, z};
+            bestD2 = d2;
+        }
+    };
+    const int first = std::max({1, -c.x, c.x - (m_cols - 1), -c.z, c.z - (m_rows - 1)});
+    const int last = first + std::max(m_cols, m_rows);
+    for (int r = first; r <= last; ++r) {
+        if (bestD2 >= 0 && long(r) * r > bestD2)
+            break;
+        const int x0 = std::max(c.x - r, 0), x1 = std::min(c.x + r, m_cols - 1);
+        const int z0 = std::max(c.z - r + 1, 0), z1 = std::min(c.z + r - 1, m_rows - 1);
+        for (int x = x0; x <= x1; ++x) {  // the top and bottom rows of the ring
+            consider(x, c.z - r);
+            consider(x, c.z + r);
+        }
+        for (int z = z0; z <= z1; ++z) {  // its left and right columns, corners excluded
+            consider(c.x - r, z);
+            consider(c.x + r, z);
+        }
+    }
+    return best;
+}
+
+bool NavGrid::clearAhead(glm::vec2 p, glm::vec2 d) const
+{
+    return walkable(cellOf(p + d * (0.25f * m_cellM))) && walkable(cellOf(p + d * (0.5f * m_cellM)));
+}
+
+void NavGrid::setWalkable(NavCell c, bool walkable)
+{
+    if (!inside(c))
+        return;
+    auto& v = m_walkable[std::size_t(index(c))];
+    if ((v != 0) != walkable) {
+        v = walkable ? 1 : 0;
+        m_generation = nextGeneration();
+    }
+}
+
+void NavGrid::blockNearSegment(const Segment& s, float r)
+{
+    const glm::vec2 lo = glm::min(s.a, s.b) - glm::vec2(r), hi = glm::max(s.a, s.b) + glm::vec2(r);
+    const NavCell c0 = cellOf(lo), c1 = cellOf(hi);
+    for (int z = std::max(c0.z, 0); z <= std::min(c1.z, m_rows - 1); ++z)
+        for (int x = std::max(c0.x, 0); x <= std::min(c1.x, m_cols - 1); ++x) {
+            const glm::vec2 cmin = cellMin({x, z});
+            if (segmentRectDistance(s.a, s.b, cmin, cmin + glm::vec2(m_cellM)) <= r)
+                m_walkable[std::size_t(index({x, z}))] = 0;
+        }
+}
+
+void NavGrid::blockNearCircle(const NavCircle& c, float r)
+{
+    const float reach = c.radiusM + r;
+    const NavCell c0 = cellOf(c.centre - glm::vec2(reach)), c1 = cellOf(c.centre + glm::vec2(reach));
+    for (int z = std::max(c0.z, 0); z <= std::min(c1.z, m_rows - 1); ++z)
+        for (int x = std::max(c0.x, 0); x <= std::min(c1.x, m_cols - 1); ++x) {
+            const glm::vec2 cmin = cellMin({x, z});
+            if (pointRectDistance(c.centre, cmin, cmin + glm::vec2(m_cellM)) <= reach)
+                m_walkable[std::size_t(index({x, z}))] = 0;
+        }
+}
+
+void NavGrid::blockNearBox(const NavBox& b, float r)
+{
+    Segment sides[4];
+    boxSides(b, sides);
+    for (const Segment& s : sides)
+        blockNearSegment(s, r);
+    // Cells wholly inside the box touch no side.
+    const float reach = glm::length(b.halfSize);
+    const NavCell c0 = cellOf(b.centre - glm::vec2(reach)), c1 = cellOf(b.centre + glm::vec2(reach));
+    for (int z = std::max(c0.z, 0); z <= std::min(c1.z, m_rows - 1); ++z)
+        for (int x = std::max(c0.x, 0); x <= std::min(c1.x, m_cols - 1); ++x)
+            if (b.contains(centre({x, z})))
+                m_walkable[std::size_t(index({x, z}))] = 0;
+}
+
+}  // namespace throng::sim
