@@ -67,7 +67,13 @@ float gapTimeAcceleration(const FollowingParams& p, float speed, float gapM, flo
 {
     const Clean c = clean(speed, gapM, leaderSpeed);
     const float v0 = std::max(p.desiredSpeed, 0.0f);
-    const float target = c.free ? v0 : std::clamp((c.gap - p.minGapM) / p.timeHeadwayS, 0.0f, v0);
+    if (c.free)
+        return bound(p, (v0 - c.v) / p.relaxS);
+    // The gap divided by the time constant, but never faster than a speed that can
+    // still stop within the gap at the comfortable rate if the leader stopped at it too:
+    // without that cap the model overshoots a standing obstacle (it needs v / T m/s^2).
+    const float room = std::max(0.0f, c.gap - p.minGapM);
+    const float target = std::min({v0, room / p.timeHeadwayS, std::sqrt(c.vl * c.vl + 2.0f * p.comfortDecel * room)});
     return bound(p, (target - c.v) / p.relaxS);
 }
 

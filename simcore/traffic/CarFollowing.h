@@ -9,7 +9,8 @@ namespace throng::sim {
 
 enum class FollowingModel {
     Idm,      // Intelligent Driver Model (Treiber, Hennecke, Helbing 2000)
-    GapTime,  // target speed = (gap - minimum gap) / time constant, relaxed towards
+    GapTime,  // target speed = (gap - minimum gap) / time constant (capped to one that can
+              // stop in the gap), relaxed towards
     Fuzzy,    // accelerate / keep / brake rules on gap and closing speed
 };
 
@@ -25,7 +26,7 @@ struct FollowingParams {
     float maxDecel = 8.0f;       // m/s^2, >= comfortDecel: what the brakes can do
     float yellowDecel = 3.5f;    // m/s^2: on yellow, stop if that needs at most this, else go on
     float delta = 4.0f;          // IDM acceleration exponent, > 0
-    float relaxS = 1.0f;         // s, > 0: GapTime and Fuzzy speed relaxation time
+    float relaxS = 0.5f;         // s, > 0: GapTime's speed relaxation time
 };
 
 inline constexpr float kFreeRoad = std::numeric_limits<float>::infinity();

@@ -111,6 +111,8 @@ public:
     float radius(std::size_t i) const { return m_radius[i]; }
     // False while a vehicle that left an open lane waits off stage to re-enter.
     bool active(std::size_t i) const { return m_active[i] != 0; }
+    // Times vehicle i has re-entered its open lane after leaving it at the end.
+    std::uint32_t respawns(std::size_t i) const { return m_respawns[i]; }
     glm::vec2 position(std::size_t i) const { return m_pos[i]; }
     glm::vec2 forward(std::size_t i) const { return m_fwd[i]; }
     const FollowingParams& params(std::size_t i) const { return m_params[m_paramIndex[i]]; }
