@@ -66,9 +66,16 @@ LaneNetwork::LaneNetwork(const Scene& scene)
         m_crosswalkStopLine.push_back(strip.light >= 0 ? int(m_stopLineCount++) : -1);
         addCrosswalkStretches(int(c));
     }
-    for (LaneGeometry& g : m_lanes)
+    for (LaneGeometry& g : m_lanes) {
         std::stable_sort(g.stretches.begin(), g.stretches.end(),
                          [](const LaneStretch& a, const LaneStretch& b) { return a.s0 < b.s0; });
+        for (LaneStretch& st : g.stretches) {
+            st.boxEntryS = st.s0;
+            for (const LaneStopLine& line : g.stopLines)  // ascending: the last match is the nearest
+                if (line.s <= st.s0 && st.s0 - line.s <= kBoxM)
+                    st.boxEntryS = line.s;
+        }
+    }
     for (const LaneGeometry& g : m_lanes)
         m_stretches.insert(m_stretches.end(), g.stretches.begin(), g.stretches.end());
 }

@@ -29,6 +29,10 @@ struct LaneStretch {
     int lane = -1;
     int crosswalk = -1;
     float s0 = 0.0f, s1 = 0.0f;
+    // The stop line before the stretch (within kBoxM), where a vehicle commits to it: a
+    // vehicle between there and s0 is in the junction box and must be let through.
+    // s0 itself when no stop line precedes the stretch.
+    float boxEntryS = 0.0f;
 };
 
 // A crosswalk strip: centre line a -> b, its unit direction, length and half width (m).
@@ -50,6 +54,8 @@ struct LaneStopLine {
 
 class LaneNetwork {
 public:
+    static constexpr float kBoxM = 40.0f;  // m: farthest a stop line may be before a crosswalk it guards
+
     LaneNetwork() = default;
     // Lanes, crosswalks and the stop lines of every traffic light. The scene must be
     // validated (references resolved by name); unknown names are skipped.

@@ -12,8 +12,10 @@
 namespace throng::sim {
 
 namespace {
+bool inRange(float x, float lo, float hi) { return x >= lo && x <= hi; }
 constexpr float kApproachM = 3.0f;     // m before a crosswalk end where a walker counts as approaching
 constexpr float kStopBackM = 0.1f;     // m between a waiting walker's body and the end line
+constexpr float kAlongCos = 0.5f;      // heading within 60 degrees of a crosswalk's axis: walking along it
 constexpr float kBusyMarginM = 0.5f;   // m around a crosswalk strip where a vehicle still blocks it
 constexpr std::uint64_t kStreamPedGo = 0x706564676full;
 glm::vec2 leftOf(glm::vec2 t) { return {t.y, -t.x}; }
@@ -60,19 +62,21 @@ PedestrianSignal TrafficSystem::pedestrianSignal(glm::vec2 p, glm::vec2 heading,
             continue;
         const LightPhase phase =
             s.light >= 0 ? lightPhaseAt(m_lights[std::size_t(s.light)], timeS()) : LightPhase::Green;
-        if (u >= 0.0f && u <= s.lengthM) {
-            best = PedestrianSignal{int(c), true, false, phase, p, 0.0f};
-            return best;
-        }
+        const float headingLength = glm::length(heading);
+        const float alignment = headingLength > 0.0f ? glm::dot(heading, s.dir) / headingLength : 0.0f;
+        // On a strip and walking along it; strips that meet at a corner may overlap, and
+        // a walker crossing one sideways there is not on that crossing.
+        if (u >= 0.0f && u <= s.lengthM && std::abs(alignment) >= kAlongCos)
+            return PedestrianSignal{int(c), true, false, phase, p, 0.0f};
         const float wClamped = std::clamp(w, -std::max(0.0f, s.halfWidthM - radiusM), std::max(0.0f, s.halfWidthM - radiusM));
-        const float along = glm::dot(heading, s.dir);
+        const float along = alignment;
         float dist = kFreeRoad;
         glm::vec2 in{0.0f}, at{0.0f};
-        if (u < 0.0f && u >= -(kApproachM + radiusM) && along > 0.0f) {
+        if (u < 0.0f && u >= -(kApproachM + radiusM) && along >= kAlongCos) {
             dist = -u;
             in = s.dir;
             at = s.a + side * wClamped;
-        } else if (u > s.lengthM && u <= s.lengthM + kApproachM + radiusM && along < 0.0f) {
+        } else if (u > s.lengthM && u <= s.lengthM + kApproachM + radiusM && along <= -kAlongCos) {
             dist = u - s.lengthM;
             in = -s.dir;
             at = s.b + side * wClamped;
@@ -129,10 +133,14 @@ void TrafficSystem::markBusyCrosswalks()
         for (const LaneStretch& st : m_net.stretchesOn(lane)) {
             const float past = aheadM(lane, st.s0 - kBusyMarginM, front);  // front beyond the strip's start
             const bool on = past >= 0.0f && past <= st.s1 - st.s0 + 2.0f * (r + kBusyMarginM);
+            // In the junction box (past the stop line guarding the strip): it will cross, so
+            // walkers let it clear instead of stranding it in the junction.
+            const bool inBox = st.boxEntryS < st.s0 &&
+                               inRange(aheadM(lane, st.boxEntryS, front), 0.0f, st.s0 - st.boxEntryS);
             const float d = aheadM(lane, front, st.s0);
             const bool committed = v > 0.1f && d >= 0.0f && d <= m_opt.lookaheadM &&
                                    !canStopWithin(v, std::max(0.0f, d - 1.0f), q.comfortDecel);
-            if (on || committed)
+            if (on || committed || inBox)
                 m_crosswalkBusy[std::size_t(st.crosswalk)] = 1;
         }
     }

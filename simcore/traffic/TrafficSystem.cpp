@@ -90,9 +90,10 @@ void TrafficSystem::step(std::span<const PedestrianView> pedestrians)
     sortByLane();
     // Pedestrians near crosswalks and inside lane corridors, in index order.
     collectPedestrians(pedestrians);
-    // Each vehicle's next speed and position from the previous state only.
+    // Each vehicle's next speed and position from the previous state only (threads pay
+    // off only for a few hundred vehicles; the result is the same either way).
     const std::ptrdiff_t n = std::ptrdiff_t(m_s.size());
-#pragma omp parallel for schedule(static, 64) num_threads(m_threads)
+#pragma omp parallel for schedule(static, 64) num_threads(m_threads) if (n >= 256)
     for (std::ptrdiff_t i = 0; i < n; ++i) {
         const std::size_t k = std::size_t(i);
         m_next[k] = m_active[k] ? advanceVehicle(k, pedestrians)

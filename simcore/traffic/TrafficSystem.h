@@ -92,7 +92,8 @@ public:
     // on yellow when it can still stop, on green until its own reaction delay is over,
     // and whenever a vehicle is on the strip or can no longer stop before it.
     // heading: the direction it wants to go (toward its next waypoint; any length, not
-    // its velocity, which is zero while it waits); speedMps: its current speed, for the
+    // its velocity, which is zero while it waits; within 60 degrees of a crosswalk's
+    // axis counts as walking along it); speedMps: its current speed, for the
     // yellow decision; pedId keys its own reaction delay after green. Thread-safe.
     PedestrianSignal pedestrianSignal(glm::vec2 p, glm::vec2 heading, float speedMps, float radiusM,
                                       std::uint32_t pedId) const;
@@ -138,7 +139,9 @@ private:
     NextState advanceVehicle(std::size_t i, std::span<const PedestrianView> peds) const;
     float stopLineLimit(std::size_t i, const FollowingParams& q, NextState& next) const;
     float yieldLimit(std::size_t i, const FollowingParams& p, std::span<const PedestrianView> peds) const;
-    bool crosswalkConflict(int crosswalk, float uLane, float corridorM, std::span<const PedestrianView> peds) const;
+    // approachingCount: also walkers about to step onto the strip, not only those on it.
+    bool crosswalkConflict(int crosswalk, float uLane, float corridorM, bool approachingCount,
+                           std::span<const PedestrianView> peds) const;
     void commit(double t0);
     void respawn();
     float entrySpeed(int lane, std::size_t i) const;

@@ -10,6 +10,7 @@
 namespace throng::sim {
 
 namespace {
+bool inRange(float x, float lo, float hi) { return x >= lo && x <= hi; }
 constexpr float kStandingSpeed = 0.1f;  // m/s: below this a vehicle counts as standing
 constexpr float kGoAccel = 0.2f;        // m/s^2: a standing driver moves off only for more than this
 constexpr float kYieldBeforeM = 1.0f;   // m: where a yielding vehicle waits before a crosswalk strip
@@ -122,8 +123,11 @@ float TrafficSystem::yieldLimit(std::size_t i, const FollowingParams& q, std::sp
             continue;
         const CrosswalkStrip& strip = m_net.crosswalk(st.crosswalk);
         const float uLane = glm::dot(m_net.positionAt(lane, 0.5f * (st.s0 + st.s1)) - strip.a, strip.dir);
-        const float corridor = 0.5f * m_net.widthM(lane) + r + kPedBufferM;
-        if (crosswalkConflict(st.crosswalk, uLane, corridor, peds))
+        const float corridor = r + kPedBufferM;  // the body's half width and a buffer around the centre line
+        // Past the stop line guarding the crosswalk, walkers wait for this vehicle (see
+        // markBusyCrosswalks): it yields only to those already on the strip.
+        const bool inBox = st.boxEntryS < st.s0 && inRange(aheadM(lane, st.boxEntryS, front), 0.0f, st.s0 - st.boxEntryS);
+        if (crosswalkConflict(st.crosswalk, uLane, corridor, !inBox, peds))
             a = std::min(a, followingAcceleration(q, v, d - kYieldBeforeM + q.minGapM, 0.0f));
     }
     // Anyone inside the vehicle's own corridor ahead, on a crosswalk or not.
@@ -139,12 +143,12 @@ float TrafficSystem::yieldLimit(std::size_t i, const FollowingParams& q, std::sp
     return a;
 }
 
-bool TrafficSystem::crosswalkConflict(int crosswalk, float uLane, float corridorM,
+bool TrafficSystem::crosswalkConflict(int crosswalk, float uLane, float corridorM, bool approachingCount,
                                       std::span<const PedestrianView> peds) const
 {
     const CrosswalkStrip& strip = m_net.crosswalk(crosswalk);
-    const bool walkGreen =
-        strip.light < 0 || lightPhaseAt(m_lights[std::size_t(strip.light)], timeS()) == LightPhase::Green;
+    const bool walkGreen = approachingCount && (strip.light < 0 || lightPhaseAt(m_lights[std::size_t(strip.light)],
+                                                                                timeS()) == LightPhase::Green);
     for (std::uint32_t k : m_crosswalkPeds[std::size_t(crosswalk)]) {
         const PedestrianView& p = peds[k];
         const float u = glm::dot(p.position - strip.a, strip.dir);
