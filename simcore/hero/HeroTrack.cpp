@@ -9,6 +9,7 @@ namespace throng::sim {
 
 namespace {
 constexpr float kMovingSpeed = 1e-4f;  // m/s: slower counts as standing for the heading
+constexpr double kSnapS = 1e-5;        // s: this close to a keyframe's time is that keyframe
 glm::vec2 ground(glm::vec3 v) { return {v.x, v.z}; }
 }  // namespace
 
@@ -53,10 +54,14 @@ glm::vec3 HeroTrack::positionAt(double t) const
         return m_keys.back().position;
     const std::size_t k = segmentAt(t);
     const Keyframe &k0 = m_keys[k], &k1 = m_keys[k + 1];
+    // Exactly the keyframe near its time, whether the caller computed frame / fps in
+    // float or in double.
+    if (t - double(k0.timeS) <= kSnapS)
+        return k0.position;
+    if (double(k1.timeS) - t <= kSnapS)
+        return k1.position;
     const double h = double(k1.timeS) - double(k0.timeS);
     const float u = float((t - double(k0.timeS)) / h);
-    if (u <= 0.0f)
-        return k0.position;  // exactly the keyframe, whatever the tangents
     if (m_mode == HeroInterpolation::Linear)
         return k0.position + (k1.position - k0.position) * u;
     // Cubic Hermite basis with Catmull-Rom tangents scaled to the segment's duration.

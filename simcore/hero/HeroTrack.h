@@ -31,6 +31,7 @@ public:
     static std::vector<Keyframe> fromFrames(const std::vector<glm::vec3>& positions, float fps);
 
     // Before the first keyframe the hero waits at it, after the last it stays there.
+    // Within 10 microseconds of a keyframe's time the result is that keyframe, bit for bit.
     glm::vec3 positionAt(double timeS) const;
     glm::vec3 velocityAt(double timeS) const;  // m/s; zero outside the keyed range
     // Ground direction (x, z) of travel, unit; while standing, the last one it moved in
