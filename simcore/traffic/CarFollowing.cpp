@@ -101,10 +101,13 @@ float fuzzyAcceleration(const FollowingParams& p, float speed, float gapM, float
 
     // Rules: AND = min, OR = max (Mamdani); defuzzified as a weighted average of the
     // candidate accelerations.
-    const float accelerate = std::min(std::max(gapFar, std::min(gapOk, opening)), std::min(under, 1.0f - ramp(need, 0.0f, 0.3f)));
-    const float keep = std::max(std::min(gapOk, steady), std::min(gapFar, 1.0f - under));
-    const float brake = std::max({ramp(need, 0.3f, 0.8f), std::min(gapOk, closingFast), over, gapClose});
+    // An emergency overrides the milder rules (they carry AND NOT hardBrake), so the
+    // weighted average cannot dilute full braking when the kinematics demand it.
     const float hardBrake = std::max(ramp(need, 1.0f, 1.5f), std::min(gapClose, ramp(closing, 0.0f, 1.0f)));
+    const float calm = 1.0f - hardBrake;
+    const float accelerate = std::min({std::max(gapFar, std::min(gapOk, opening)), under, 1.0f - ramp(need, 0.0f, 0.3f), calm});
+    const float keep = std::min(std::max(std::min(gapOk, steady), std::min(gapFar, 1.0f - under)), calm);
+    const float brake = std::min(std::max({ramp(need, 0.3f, 0.8f), std::min(gapOk, closingFast), over, gapClose}), calm);
 
     const float sum = accelerate + keep + brake + hardBrake;
     if (!(sum > 0.0f))

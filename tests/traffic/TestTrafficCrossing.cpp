@@ -57,6 +57,33 @@ private slots:
             QVERIFY(t.perGreen() >= 3.0);
     }
 
+    void everyCarFollowingModelRunsTheCrossingSafely_data()
+    {
+        QTest::addColumn<int>("model");
+        QTest::newRow("idm") << int(FollowingModel::Idm);
+        QTest::newRow("gap_time") << int(FollowingModel::GapTime);
+        QTest::newRow("fuzzy") << int(FollowingModel::Fuzzy);
+    }
+    void everyCarFollowingModelRunsTheCrossingSafely()
+    {
+        QFETCH(int, model);
+        CrossingSetup setup;
+        setup.model = FollowingModel(model);
+        setup.carsPerLane = 10;
+        const CrossingRun run = throng::test::runCrossing(setup, 15.0 * 60.0, 0);
+        double perGreen = 0.0;
+        for (const StopLineThroughput& t : run.throughput)
+            if (t.lane >= 0)
+                perGreen += t.perGreen() / 4.0;
+        qInfo("%s: %.1f cars per green per lane, violations %llu, car-walker contacts %llu, car-car contacts %llu",
+              toString(setup.model), perGreen, (unsigned long long)run.counters.redLightViolations(),
+              (unsigned long long)run.counters.carPedestrianCollisions, (unsigned long long)run.counters.vehicleCollisions);
+        QCOMPARE(run.counters.redLightViolations(), std::uint64_t(0));
+        QCOMPARE(run.counters.carPedestrianCollisions, std::uint64_t(0));
+        QCOMPARE(run.counters.vehicleCollisions, std::uint64_t(0));
+        QVERIFY(perGreen >= 3.0);
+    }
+
     void sameResultForOneAndTwoThreads()
     {
         CrossingSetup setup;

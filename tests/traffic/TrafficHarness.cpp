@@ -123,6 +123,9 @@ CrossingRun runCrossing(const CrossingSetup& setup, double seconds, int threads)
     const Scene scene = crossingScene(setup);
     TrafficOptions opt;
     opt.threads = threads;
+    FollowingParams params;
+    params.model = setup.model;
+    opt.modelByType.push_back({"car", params});
     TrafficSystem traffic(scene, opt);
     WalkerStream walkers(traffic.lanes(), setup.walkersPerCrosswalk, setup.seed);
     CrossingRun run;

@@ -17,6 +17,7 @@ struct CrossingSetup {
     float laneLengthM = 200.0f;  // each arm is laneLength / 2 long
     bool loopLanes = false;      // false: vehicles leave at the far end and re-enter (random arrivals)
     std::uint64_t seed = 7;
+    sim::FollowingModel model = sim::FollowingModel::Idm;  // every car's car-following model
 };
 
 // Two roads crossing at the origin, one lane each way (east, west, south, north bound),
