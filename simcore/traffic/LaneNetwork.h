@@ -52,6 +52,11 @@ struct LaneStopLine {
     int index = -1;  // dense index over every stop line of every light (throughput counters)
 };
 
+// A straight piece of kerb pedestrians may not cross (ground plane, m).
+struct BarrierSegment {
+    glm::vec2 a{0.0f}, b{0.0f};
+};
+
 class LaneNetwork {
 public:
     static constexpr float kBoxM = 40.0f;  // m: farthest a stop line may be before a crosswalk it guards
@@ -93,6 +98,14 @@ public:
     // The pedestrian rule: true when a body of radius radiusM centred at p overlaps a
     // lane's carriageway and p is not on a crosswalk strip.
     bool forbiddenForPedestrian(glm::vec2 p, float radiusM = 0.0f) const;
+
+    // Kerbs as wall segments: each lane's two carriageway edges except where a
+    // crosswalk strip or another lane's carriageway covers them, and both sides of each
+    // crosswalk strip where it lies over a carriageway. Added to a World's walls they
+    // make "no pedestrian in a lane except on a crosswalk" a hard constraint: every way
+    // from the pavement into a lane crosses one, except along a crosswalk. (Straight
+    // pieces per lane segment; the outside of a sharp bend may leave a small wedge.)
+    std::vector<BarrierSegment> pedestrianBarriers() const;
 
     // Vehicles' stop lines, all lights; and those on one lane ordered by s.
     const std::vector<LaneStopLine>& stopLines() const { return m_stopLines; }

@@ -131,6 +131,51 @@ private slots:
         QCOMPARE(net.crosswalkAt({-9, 0}), -1);
         QCOMPARE(net.carriagewayAt({0, 1.0f}).lane >= 0, true);
     }
+
+    void kerbBarriersLeaveOnlyTheCrosswalksOpen()
+    {
+        const Scene scene = throng::test::crossingScene({});
+        const LaneNetwork net(scene);
+        const std::vector<BarrierSegment> kerbs = net.pedestrianBarriers();
+        auto crosses = [&](glm::vec2 p, glm::vec2 q) {
+            auto cross = [](glm::vec2 a, glm::vec2 b) { return a.x * b.y - a.y * b.x; };
+            for (const BarrierSegment& k : kerbs) {
+                const glm::vec2 r = q - p, s = k.b - k.a;
+                const float den = cross(r, s);
+                if (den == 0.0f)
+                    continue;
+                const float t = cross(k.a - p, s) / den, u = cross(k.a - p, r) / den;
+                if (t >= 0.0f && t <= 1.0f && u >= 0.0f && u <= 1.0f)
+                    return true;
+            }
+            return false;
+        };
+        QVERIFY(kerbs.size() >= 16);
+        // Along every crosswalk, kerb to kerb: nothing in the way.
+        for (std::size_t c = 0; c < net.crosswalkCount(); ++c) {
+            const CrosswalkStrip& s = net.crosswalk(int(c));
+            const glm::vec2 side{s.dir.y, -s.dir.x};
+            for (float w : {-1.2f, 0.0f, 1.2f})
+                QVERIFY(!crosses(s.a - s.dir * 2.0f + side * w, s.b + s.dir * 2.0f + side * w));
+        }
+        QVERIFY(crosses({-30, 6}, {-30, 1.75f}));     // off the pavement into the road
+        QVERIFY(crosses({-6, 1.75f}, {-9, 1.75f}));   // sideways off a crosswalk into the road
+        QVERIFY(!crosses({-30, 1.0f}, {-30, -1.0f})); // between two lanes: no kerb on the road
+        QVERIFY(!crosses({-2, -2}, {2, 2}));          // across the junction box
+        // Every small step from where a walker may be to where it may not crosses a kerb.
+        std::mt19937 gen(17);
+        std::uniform_real_distribution<float> u(-20.0f, 20.0f), step(-0.5f, 0.5f);
+        int entries = 0;
+        for (int k = 0; k < 200000; ++k) {
+            const glm::vec2 p{u(gen), u(gen)}, q = p + glm::vec2(step(gen), step(gen));
+            if (net.forbiddenForPedestrian(p) || !net.forbiddenForPedestrian(q))
+                continue;
+            ++entries;
+            QVERIFY2(crosses(p, q), "a way into a lane other than a crosswalk");
+        }
+        qInfo("%zu kerb segments; %d random steps into a lane, each across a kerb", kerbs.size(), entries);
+        QVERIFY(entries > 1000);
+    }
 };
 
 THRONG_REGISTER_TEST(TestLaneNetwork)
