@@ -91,6 +91,7 @@ PedestrianSignal TrafficSystem::pedestrianSignal(glm::vec2 p, glm::vec2 heading,
     if (best.crosswalk < 0 || best.onCrosswalk)
         return best;
     best.stopPoint = linePoint - inward * (radiusM + kStopBackM);
+    best.inward = inward;
     best.vehicleCrossing = m_crosswalkBusy[std::size_t(best.crosswalk)] != 0;
     const CrosswalkStrip& strip = m_net.crosswalk(best.crosswalk);
     if (strip.light < 0) {
@@ -119,6 +120,14 @@ PedestrianSignal TrafficSystem::pedestrianSignal(glm::vec2 p, glm::vec2 heading,
     }
     best.mustStop = best.mustStop || best.vehicleCrossing;
     return best;
+}
+
+glm::vec2 holdBehindStopLine(const PedestrianSignal& signal, glm::vec2 to)
+{
+    if (!signal.mustStop || signal.onCrosswalk || signal.crosswalk < 0)
+        return to;
+    const float past = glm::dot(to - signal.stopPoint, signal.inward);
+    return past > 0.0f ? to - signal.inward * past : to;
 }
 
 void TrafficSystem::markBusyCrosswalks()

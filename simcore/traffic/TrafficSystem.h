@@ -74,7 +74,14 @@ struct PedestrianSignal {
     glm::vec2 stopPoint{0.0f};
     float distanceToLineM = 0.0f;  // from its centre to the crosswalk end line
     bool vehicleCrossing = false;  // a vehicle is on the strip or too close to stop before it
+    glm::vec2 inward{0.0f};        // unit: the direction onto the crosswalk at its end line
 };
+
+// Where a waiting walker, pushed by others from its place to `to`, may end up: anywhere
+// but past its stop point toward the crosswalk (that component of the push is removed;
+// sideways and backwards nudges stay). The caller keeps the walker's forward axis: a
+// nudge is not a turn. Returns `to` unchanged when the signal does not say stop.
+glm::vec2 holdBehindStopLine(const PedestrianSignal& signal, glm::vec2 to);
 
 class TrafficSystem {
 public:

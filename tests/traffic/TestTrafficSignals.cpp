@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 #include <vector>
 
 using namespace throng::sim;
@@ -168,6 +169,25 @@ private slots:
         sig = t.pedestrianSignal({7.5f, -6.2f}, -east, 1.3f, 0.3f, 2);  // from the other end
         QVERIFY(sig.mustStop);
         QVERIFY(glm::distance(sig.stopPoint, glm::vec2(5.9f, -6.2f)) < 1e-4f);
+        // Pushed about by the crowd while it waits: nudged sideways or back, never over the line.
+        {
+            std::mt19937 gen(2);
+            std::uniform_real_distribution<float> push(-0.15f, 0.15f);
+            const PedestrianSignal waiting = t.pedestrianSignal(kerb, east, 0.0f, 0.3f, 1);
+            glm::vec2 p = waiting.stopPoint;
+            float sideways = 0.0f;
+            for (int k = 0; k < 2000; ++k) {
+                const PedestrianSignal here = t.pedestrianSignal(p, east, 0.0f, 0.3f, 1);
+                // The crowd leans toward the road; the walker keeps near its own spot sideways.
+                const glm::vec2 to = p + glm::vec2(push(gen) + 0.05f, push(gen) - 0.2f * (p.y - waiting.stopPoint.y));
+                const glm::vec2 held = holdBehindStopLine(here, to);
+                QVERIFY2(held.x <= -5.9f + 1e-5f, "never past the stop point");
+                QVERIFY(held.y == to.y);  // sideways part of the push kept
+                sideways = std::max(sideways, std::abs(held.y - p.y));
+                p = held;
+            }
+            QVERIFY(sideways > 0.1f);
+        }
         sig = t.pedestrianSignal({0.0f, -6.0f}, east, 1.3f, 0.3f, 1);
         QVERIFY2(sig.onCrosswalk && !sig.mustStop, "on the crosswalk at red: keep going");
         sig = t.pedestrianSignal(kerb, -east, 1.3f, 0.3f, 1);
