@@ -3,6 +3,15 @@
 // structure of arrays and advances it by fixed steps, each vehicle reading only the
 // previous state (identical results for any thread count). Never moves a pedestrian; it
 // answers the questions a World asks about them and counts what they did.
+//
+// A World's step, in this order (both advance 1 / fps; keep their step counts equal):
+//   1. pedsBefore = the walkers' state (PedestrianView per walker)
+//   2. traffic.step(pedsBefore)              vehicles move, yielding to walkers
+//   3. per walker, in its sense phase:       traffic.pedestrianSignal(...) -> stop or go;
+//      when stopping, steer to stopPoint and clamp crowd pushes with holdBehindStopLine
+//   4. the World moves its walkers           (kerbs: LaneNetwork::pedestrianBarriers as walls)
+//   5. traffic.observePedestrians(pedsBefore, pedsAfter)   red-light entries, contacts
+// Stats: counters().redLightViolations(), carPedestrianCollisions; throughput().
 
 #include "simcore/scene/Scene.h"
 #include "simcore/traffic/CarFollowing.h"
@@ -185,6 +194,7 @@ private:
     std::vector<std::uint32_t> m_order;
     std::vector<std::uint32_t> m_laneBegin;  // lanes + 1 offsets into m_order
     std::vector<std::int32_t> m_leader;
+    std::vector<std::uint32_t> m_sweep;  // active vehicles by x, for the contact count
     std::vector<std::vector<LanePed>> m_lanePeds;          // per lane
     std::vector<std::vector<std::uint32_t>> m_crosswalkPeds;// per crosswalk
     std::vector<std::uint8_t> m_crosswalkBusy;  // per crosswalk: a vehicle on it or committed to it

@@ -86,17 +86,21 @@ private slots:
 
     void sameResultForOneAndTwoThreads()
     {
+        // 320 vehicles, enough for the step to run on both threads.
         CrossingSetup setup;
-        setup.carsPerLane = 10;
-        const CrossingRun one = throng::test::runCrossing(setup, 300.0, 1);
-        const CrossingRun two = throng::test::runCrossing(setup, 300.0, 2);
-        const CrossingRun again = throng::test::runCrossing(setup, 300.0, 2);
+        setup.carsPerLane = 80;
+        setup.laneLengthM = 1200.0f;
+        const CrossingRun one = throng::test::runCrossing(setup, 60.0, 1);
+        const CrossingRun two = throng::test::runCrossing(setup, 60.0, 2);
+        const CrossingRun again = throng::test::runCrossing(setup, 60.0, 2);
         QCOMPARE(one.stateHash, two.stateHash);
         QCOMPARE(two.stateHash, again.stateHash);
         QCOMPARE(one.counters.vehicleSteps, two.counters.vehicleSteps);
         QCOMPARE(one.walkerCrossings, two.walkerCrossings);
         setup.seed = 8;
-        QVERIFY2(throng::test::runCrossing(setup, 300.0, 2).stateHash != one.stateHash, "the seed matters");
+        QCOMPARE(one.counters.redLightViolations(), std::uint64_t(0));
+        QCOMPARE(one.counters.vehicleCollisions, std::uint64_t(0));
+        QVERIFY2(throng::test::runCrossing(setup, 60.0, 2).stateHash != one.stateHash, "the seed matters");
     }
 };
 
