@@ -183,14 +183,8 @@ void TrafficSystem::observePedestrians(std::span<const PedestrianView> before, s
                 ++m_counters.pedestrianRedLightViolations;
             ++m_throughput[std::size_t(k)].crossings;
         }
-        // Contacts with vehicles where they stand now.
-        for (std::size_t j = 0; j < m_s.size(); ++j) {
-            const float r = m_radius[j] + after[i].radiusM;
-            const glm::vec2 d = after[i].position - m_pos[j];
-            if (m_active[j] && glm::dot(d, d) < r * r)
-                ++m_counters.carPedestrianCollisions;
-        }
     }
+    countPedestrianContacts(after.subspan(0, n));
 }
 
 }  // namespace throng::sim

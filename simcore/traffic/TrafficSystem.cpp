@@ -60,7 +60,6 @@ TrafficSystem::TrafficSystem(const Scene& scene, const TrafficOptions& options)
     m_next.resize(n);
     m_leader.assign(n, -1);
     m_order.reserve(n);
-    m_sweep.reserve(n);
     m_laneBegin.assign(m_net.laneCount() + 1, 0);
     m_lanePeds.resize(m_net.laneCount());
     m_crosswalkPeds.resize(m_net.crosswalkCount());
@@ -77,6 +76,7 @@ TrafficSystem::TrafficSystem(const Scene& scene, const TrafficOptions& options)
             t.greenPhases = 1;
     updatePositions();
     markBusyCrosswalks();
+    buildVehicleGrid();
 }
 
 LightPhase TrafficSystem::lightPhase(int light) const
@@ -108,6 +108,7 @@ void TrafficSystem::step(std::span<const PedestrianView> pedestrians)
     updatePositions();
     markBusyCrosswalks();
     countGreenOnsets(t0, timeS());
+    buildVehicleGrid();
     countVehicleContacts();
 }
 
@@ -278,27 +279,6 @@ void TrafficSystem::countGreenOnsets(double t0, double t1)
         const TrafficLight& light = m_lights[std::size_t(t.light)];
         if (lightPhaseAt(light, t1) == LightPhase::Green && lightPhaseAt(light, t0) != LightPhase::Green)
             ++t.greenPhases;
-    }
-}
-
-void TrafficSystem::countVehicleContacts()
-{
-    // Sweep and prune along x: only vehicles closer in x than two largest radii can touch.
-    m_sweep.clear();
-    for (std::uint32_t i = 0; i < m_s.size(); ++i)
-        if (m_active[i])
-            m_sweep.push_back(i);
-    std::sort(m_sweep.begin(), m_sweep.end(), [&](std::uint32_t a, std::uint32_t b) {
-        return m_pos[a].x != m_pos[b].x ? m_pos[a].x < m_pos[b].x : a < b;
-    });
-    for (std::size_t a = 0; a < m_sweep.size(); ++a) {
-        const std::uint32_t i = m_sweep[a];
-        for (std::size_t b = a + 1; b < m_sweep.size() && m_pos[m_sweep[b]].x - m_pos[i].x < 2.0f * m_maxRadius; ++b) {
-            const std::uint32_t j = m_sweep[b];
-            const float r = m_radius[i] + m_radius[j];
-            if (glm::dot(m_pos[i] - m_pos[j], m_pos[i] - m_pos[j]) < r * r)
-                ++m_counters.vehicleCollisions;
-        }
     }
 }
 

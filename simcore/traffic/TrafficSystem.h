@@ -165,7 +165,10 @@ private:
     float goDelayS(std::size_t i, std::uint32_t stops) const;
     void updatePositions();
     void countGreenOnsets(double t0, double t1);
+    void buildVehicleGrid();
+    template <class Fn> void forEachVehicleNear(glm::vec2 p, float radiusM, Fn&& fn) const;
     void countVehicleContacts();
+    void countPedestrianContacts(std::span<const PedestrianView> peds);
     void markBusyCrosswalks();
 
     TrafficOptions m_opt;
@@ -194,7 +197,11 @@ private:
     std::vector<std::uint32_t> m_order;
     std::vector<std::uint32_t> m_laneBegin;  // lanes + 1 offsets into m_order
     std::vector<std::int32_t> m_leader;
-    std::vector<std::uint32_t> m_sweep;  // active vehicles by x, for the contact count
+    // Active vehicles binned on a hashed uniform grid after each step (contact counts):
+    // per vehicle its cell key and bucket; per bucket a range of m_cellItems.
+    std::vector<std::uint64_t> m_cellKey;
+    std::vector<std::uint32_t> m_cellStart, m_cellItems, m_cellOf, m_cellCursor;
+    float m_cellM = 2.0f;
     std::vector<std::vector<LanePed>> m_lanePeds;          // per lane
     std::vector<std::vector<std::uint32_t>> m_crosswalkPeds;// per crosswalk
     std::vector<std::uint8_t> m_crosswalkBusy;  // per crosswalk: a vehicle on it or committed to it

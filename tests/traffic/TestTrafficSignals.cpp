@@ -259,6 +259,30 @@ private slots:
         QVERIFY2(t.s(0) + t.radius(0) > 95.5f, "the car drove on over the crosswalk");
         QCOMPARE(t.counters().vehicleRedLightViolations, std::uint64_t(0));
     }
+
+    void contactCountersSeeContacts()
+    {
+        // The zero counts above mean something only if a contact is counted when it
+        // happens: a walker stands in the lane 8 m ahead of a car at 50 km/h (it needs
+        // 12 m to stop), and two cars on crossing lanes meet in the junction.
+        throng::test::CrossingSetup setup;
+        setup.carsPerLane = 0;
+        Scene scene = throng::test::crossingScene(setup);
+        scene.vehicles.push_back({1, "car", "eastbound", 60.0f, 13.9f});
+        scene.vehicles.push_back({2, "car", "southbound", 101.75f, 0.0f});  // at (-1.75, 1.75)
+        scene.vehicles.push_back({3, "car", "eastbound", 98.25f, 0.0f});    // at (-1.75, 1.75) too
+        TrafficSystem t(scene);
+        const std::vector<PedestrianView> walker{{{-40.0f + 1.1f + 8.0f + 0.3f, 1.75f}, {0, 0}, 0.3f}};
+        t.step(walker);
+        t.observePedestrians(walker, walker);
+        QVERIFY2(t.counters().vehicleCollisions > 0, "two cars in one place are counted");
+        while (t.timeS() < 3.0) {
+            t.step(walker);
+            t.observePedestrians(walker, walker);
+        }
+        qInfo("car-walker contact steps: %llu", (unsigned long long)t.counters().carPedestrianCollisions);
+        QVERIFY2(t.counters().carPedestrianCollisions > 0, "a car that cannot stop for a walker is counted");
+    }
 };
 
 THRONG_REGISTER_TEST(TestTrafficSignals)
