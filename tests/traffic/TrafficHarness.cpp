@@ -49,11 +49,16 @@ Scene crossingScene(const CrossingSetup& setup)
     ns.stopLines = {{"southbound", stopAt, ""}, {"northbound", stopAt, ""}, {"", 0, "west"}, {"", 0, "east"}};
     scene.trafficLights = {ew, ns};
 
+    // Cars spread over the approach with random speeds, each slow enough to stop
+    // comfortably (2 m/s^2) short of where the car ahead stands: a feasible start.
+    const float spacing = (stopAt - 20.0f) / float(std::max(1, setup.carsPerLane));
+    const float startSpeed = std::sqrt(2.0f * 2.0f * std::max(0.0f, spacing - 2.0f * car.radiusM - 2.0f));
     std::uint32_t id = 1;
     for (const Lane& l : scene.lanes)
         for (int k = 0; k < setup.carsPerLane; ++k) {
-            const float at = 5.0f + float(k) * (stopAt - 20.0f) / float(std::max(1, setup.carsPerLane));
-            scene.vehicles.push_back({id, "car", l.name, at, rngRange(setup.seed, id, 0, 11, 0.0f, 10.0f)});
+            const float at = 5.0f + float(k) * spacing;
+            const float speed = std::min(startSpeed, rngRange(setup.seed, id, 0, 11, 0.0f, 10.0f));
+            scene.vehicles.push_back({id, "car", l.name, at, speed});
             ++id;
         }
     return scene;
