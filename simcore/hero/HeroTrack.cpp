@@ -135,8 +135,8 @@ HeroPush heroPush(glm::vec2 heroPos, glm::vec2 heroVelocity, float clearanceM, g
     push.displacement = n * (need - d) * (1.0f + 1e-5f) + n * 1e-5f;
     // Make room sideways off a moving hero's line; straight away from a standing one.
     if (heroSpeed > kMovingSpeed) {
-        const float side = glm::dot(away, left) >= 0.0f && d > 1e-6f ? 1.0f : (d > 1e-6f ? -1.0f : glm::dot(n, left));
-        push.velocity = left * (side >= 0.0f ? 1.0f : -1.0f) * std::max(heroSpeed, 1.0f);
+        const float side = glm::dot(n, left) >= 0.0f ? 1.0f : -1.0f;  // the walker's side of the hero's line
+        push.velocity = left * side * std::max(heroSpeed, 1.0f);
         if (glm::dot(away, heroDir) > 0.0f)
             push.velocity += heroDir * heroSpeed;  // keep ahead of it meanwhile
     } else {
