@@ -42,8 +42,10 @@ struct TrafficOptions {
     // Car-following model and parameters per vehicle agent type name; a type not listed
     // gets the IDM defaults with desiredSpeed = the type's max speed.
     std::vector<std::pair<std::string, FollowingParams>> modelByType;
-    float goDelayMinS = 0.3f, goDelayMaxS = 1.5f;        // s: a standing driver's reaction when free to go
-    float pedGoDelayMinS = 0.0f, pedGoDelayMaxS = 2.0f;  // s: a pedestrian's reaction after green
+    // s: a standing driver's reaction once free to go; drawn from rng(seed, vehicle id,
+    // its count of stops so far), so each queue it waits in gives it a new delay.
+    float goDelayMinS = 0.3f, goDelayMaxS = 1.5f;
+    float pedGoDelayMinS = 0.0f, pedGoDelayMaxS = 2.0f;  // s: a pedestrian's reaction after green, per (id, light cycle)
     float respawnDelayMinS = 0.5f, respawnDelayMaxS = 6.0f;  // s: off-stage time at an open lane's end
     float stopMarginM = 0.5f;    // m: a vehicle waits with its front this far before a stop line
     float yieldHorizonS = 3.0f;  // s: yield to a pedestrian reaching the lane within this time
