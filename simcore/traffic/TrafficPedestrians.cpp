@@ -1,0 +1,190 @@
+// The pedestrian side of traffic: who is near a crosswalk or inside a lane (for the
+// vehicles' step), the stop answer a walker asks for, and the counts of what walkers did.
+#include "simcore/traffic/TrafficSystem.h"
+
+#include "simcore/world/Rng.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace throng::sim {
+
+namespace {
+bool inRange(float x, float lo, float hi) { return x >= lo && x <= hi; }
+constexpr float kApproachM = 3.0f;     // m before a crosswalk end where a walker counts as approaching
+constexpr float kStopBackM = 0.1f;     // m between a waiting walker's body and the end line
+constexpr float kAlongCos = 0.5f;      // heading within 60 degrees of a crosswalk's axis: walking along it
+constexpr float kBusyMarginM = 0.5f;   // m around a crosswalk strip where a vehicle still blocks it
+constexpr std::uint64_t kStreamPedGo = 0x706564676full;
+glm::vec2 leftOf(glm::vec2 t) { return {t.y, -t.x}; }
+}  // namespace
+
+void TrafficSystem::collectPedestrians(std::span<const PedestrianView> peds)
+{
+    for (auto& list : m_crosswalkPeds)
+        list.clear();
+    for (auto& list : m_lanePeds)
+        list.clear();
+    if (m_s.empty())
+        return;
+    for (std::uint32_t k = 0; k < peds.size(); ++k) {
+        const PedestrianView& p = peds[k];
+        for (std::size_t c = 0; c < m_net.crosswalkCount(); ++c) {
+            const CrosswalkStrip& s = m_net.crosswalk(int(c));
+            const glm::vec2 d = p.position - s.a;
+            const float u = glm::dot(d, s.dir), w = glm::dot(d, leftOf(s.dir));
+            const float reach = kApproachM + p.radiusM;
+            if (std::abs(w) <= s.halfWidthM + p.radiusM && u >= -reach && u <= s.lengthM + reach)
+                m_crosswalkPeds[c].push_back(k);
+        }
+        for (std::size_t l = 0; l < m_net.laneCount(); ++l) {
+            const LaneProjection pr = m_net.project(int(l), p.position);
+            if (pr.distanceM <= m_maxRadius + p.radiusM + 0.5f)
+                m_lanePeds[l].push_back({k, pr.s, pr.lateralM});
+        }
+    }
+}
+
+PedestrianSignal TrafficSystem::pedestrianSignal(glm::vec2 p, glm::vec2 heading, float speed, float radiusM,
+                                                 std::uint32_t pedId) const
+{
+    PedestrianSignal best;
+    float bestDist = kFreeRoad;
+    glm::vec2 inward{0.0f}, linePoint{0.0f};
+    for (std::size_t c = 0; c < m_net.crosswalkCount(); ++c) {
+        const CrosswalkStrip& s = m_net.crosswalk(int(c));
+        const glm::vec2 side = leftOf(s.dir);
+        const glm::vec2 d = p - s.a;
+        const float u = glm::dot(d, s.dir), w = glm::dot(d, side);
+        if (std::abs(w) > s.halfWidthM)
+            continue;
+        const LightPhase phase =
+            s.light >= 0 ? lightPhaseAt(m_lights[std::size_t(s.light)], timeS()) : LightPhase::Green;
+        const float headingLength = glm::length(heading);
+        const float alignment = headingLength > 0.0f ? glm::dot(heading, s.dir) / headingLength : 0.0f;
+        // On a strip and walking along it; strips that meet at a corner may overlap, and
+        // a walker crossing one sideways there is not on that crossing.
+        if (u >= 0.0f && u <= s.lengthM && std::abs(alignment) >= kAlongCos)
+            return PedestrianSignal{int(c), true, false, phase, p, 0.0f};
+        const float wClamped = std::clamp(w, -std::max(0.0f, s.halfWidthM - radiusM), std::max(0.0f, s.halfWidthM - radiusM));
+        const float along = alignment;
+        float dist = kFreeRoad;
+        glm::vec2 in{0.0f}, at{0.0f};
+        if (u < 0.0f && u >= -(kApproachM + radiusM) && along >= kAlongCos) {
+            dist = -u;
+            in = s.dir;
+            at = s.a + side * wClamped;
+        } else if (u > s.lengthM && u <= s.lengthM + kApproachM + radiusM && along <= -kAlongCos) {
+            dist = u - s.lengthM;
+            in = -s.dir;
+            at = s.b + side * wClamped;
+        }
+        if (dist < bestDist) {
+            bestDist = dist;
+            best = PedestrianSignal{int(c), false, false, phase, {}, dist};
+            inward = in;
+            linePoint = at;
+        }
+    }
+    if (best.crosswalk < 0 || best.onCrosswalk)
+        return best;
+    best.stopPoint = linePoint - inward * (radiusM + kStopBackM);
+    best.inward = inward;
+    best.vehicleCrossing = m_crosswalkBusy[std::size_t(best.crosswalk)] != 0;
+    const CrosswalkStrip& strip = m_net.crosswalk(best.crosswalk);
+    if (strip.light < 0) {
+        best.mustStop = best.vehicleCrossing;
+        return best;
+    }
+    const TrafficLight& light = m_lights[std::size_t(strip.light)];
+    switch (best.phase) {
+    case LightPhase::Green: {
+        // Each walker steps off its own reaction delay after the green begins.
+        const double cycle = double(light.greenS) + double(light.yellowS) + double(light.redS);
+        const double shifted = timeS() + double(light.offsetS);
+        const double cycleIndex = std::floor(shifted / cycle);
+        const double sinceGreen = shifted - cycleIndex * cycle;
+        const float delay = rngRange(m_seed, pedId, std::uint64_t(std::int64_t(cycleIndex)), kStreamPedGo,
+                                     m_opt.pedGoDelayMinS, m_opt.pedGoDelayMaxS);
+        best.mustStop = sinceGreen < double(delay);
+        break;
+    }
+    case LightPhase::Yellow:
+        best.mustStop = canStopWithin(speed, best.distanceToLineM - radiusM - kStopBackM, m_opt.pedestrianDecel);
+        break;
+    case LightPhase::Red:
+        best.mustStop = true;
+        break;
+    }
+    best.mustStop = best.mustStop || best.vehicleCrossing;
+    return best;
+}
+
+glm::vec2 holdBehindStopLine(const PedestrianSignal& signal, glm::vec2 to)
+{
+    if (!signal.mustStop || signal.onCrosswalk || signal.crosswalk < 0)
+        return to;
+    const float past = glm::dot(to - signal.stopPoint, signal.inward);
+    return past > 0.0f ? to - signal.inward * past : to;
+}
+
+void TrafficSystem::markBusyCrosswalks()
+{
+    std::fill(m_crosswalkBusy.begin(), m_crosswalkBusy.end(), std::uint8_t(0));
+    for (std::size_t i = 0; i < m_s.size(); ++i) {
+        if (!m_active[i])
+            continue;
+        const int lane = m_lane[i];
+        const float r = m_radius[i], front = m_s[i] + r, v = m_speed[i];
+        const FollowingParams& q = m_params[m_paramIndex[i]];
+        for (const LaneStretch& st : m_net.stretchesOn(lane)) {
+            const float past = aheadM(lane, st.s0 - kBusyMarginM, front);  // front beyond the strip's start
+            const bool on = past >= 0.0f && past <= st.s1 - st.s0 + 2.0f * (r + kBusyMarginM);
+            // In the junction box (past the stop line guarding the strip): it will cross, so
+            // walkers let it clear instead of stranding it in the junction.
+            const bool inBox = st.boxEntryS < st.s0 &&
+                               inRange(aheadM(lane, st.boxEntryS, front), 0.0f, st.s0 - st.boxEntryS);
+            const float d = aheadM(lane, front, st.s0);
+            const bool committed = v > 0.1f && d >= 0.0f && d <= m_opt.lookaheadM &&
+                                   !canStopWithin(v, std::max(0.0f, d - 1.0f), q.comfortDecel);
+            if (on || committed || inBox)
+                m_crosswalkBusy[std::size_t(st.crosswalk)] = 1;
+        }
+    }
+}
+
+void TrafficSystem::observePedestrians(std::span<const PedestrianView> before, std::span<const PedestrianView> after)
+{
+    const std::size_t n = std::min(before.size(), after.size());
+    const double t1 = timeS(), t0 = t1 - double(m_dt);
+    for (std::size_t i = 0; i < n; ++i) {
+        // Stepping onto a controlled crosswalk across one of its end lines.
+        for (std::size_t c = 0; c < m_net.crosswalkCount(); ++c) {
+            const int k = m_net.crosswalkStopLineIndex(int(c));
+            if (k < 0)
+                continue;
+            const CrosswalkStrip& s = m_net.crosswalk(int(c));
+            const float ub = glm::dot(before[i].position - s.a, s.dir);
+            const float ua = glm::dot(after[i].position - s.a, s.dir);
+            const float wa = glm::dot(after[i].position - s.a, leftOf(s.dir));
+            if (std::abs(wa) > s.halfWidthM)
+                continue;
+            float frac = -1.0f;
+            if (ub < 0.0f && ua >= 0.0f)
+                frac = -ub / (ua - ub);
+            else if (ub > s.lengthM && ua <= s.lengthM)
+                frac = (ub - s.lengthM) / (ub - ua);
+            if (frac < 0.0f)
+                continue;
+            const double tc = t0 + double(m_dt) * double(frac);
+            if (lightPhaseAt(m_lights[std::size_t(s.light)], tc) == LightPhase::Red)
+                ++m_counters.pedestrianRedLightViolations;
+            ++m_throughput[std::size_t(k)].crossings;
+        }
+    }
+    countPedestrianContacts(after.subspan(0, n));
+}
+
+}  // namespace throng::sim

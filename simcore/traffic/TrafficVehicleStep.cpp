@@ -1,0 +1,168 @@
+// One vehicle's step: the smallest of the accelerations its leader, the next stop line
+// and the pedestrians ahead allow, then a reaction delay before a standing car moves off.
+#include "simcore/traffic/TrafficSystem.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace throng::sim {
+
+namespace {
+bool inRange(float x, float lo, float hi) { return x >= lo && x <= hi; }
+constexpr float kStandingSpeed = 0.1f;  // m/s: below this a vehicle counts as standing
+constexpr float kGoAccel = 0.2f;        // m/s^2: a standing driver moves off only for more than this
+constexpr float kYieldBeforeM = 1.0f;   // m: where a yielding vehicle waits before a crosswalk strip
+constexpr float kPedBufferM = 0.5f;     // m: kept clear around a pedestrian, beyond both radii
+}  // namespace
+
+TrafficSystem::NextState TrafficSystem::advanceVehicle(std::size_t i, std::span<const PedestrianView> peds) const
+{
+    const int lane = m_lane[i];
+    const float v = m_speed[i], r = m_radius[i];
+    FollowingParams q = m_params[m_paramIndex[i]];
+    q.desiredSpeed = std::min(q.desiredSpeed, m_net.speedLimit(lane));
+    NextState next{m_s[i], v, m_goTimer[i], m_stops[i], m_decision[i], m_decisionLine[i]};
+
+    // Leader on the same lane; on a looping lane through the wrap (itself when alone).
+    float gap = kFreeRoad, leaderSpeed = 0.0f;
+    if (const std::int32_t ld = m_leader[i]; ld >= 0) {
+        const std::size_t l = std::size_t(ld);
+        const float d = l == i ? m_net.length(lane) : aheadM(lane, m_s[i], m_s[l]);
+        gap = d - r - m_radius[l];
+        leaderSpeed = m_speed[l];
+    }
+    float a = followingAcceleration(q, v, gap, leaderSpeed);
+    a = std::min(a, stopLineLimit(i, q, next));
+    a = std::min(a, yieldLimit(i, q, peds));
+
+    // Start-up delay: a standing driver moves off only after being free to go for its
+    // own random delay, so a queue leaves one car after another, not as one block.
+    if (v < kStandingSpeed) {
+        if (a > std::min(kGoAccel, 0.5f * q.maxAccel)) {
+            next.goTimer += m_dt;
+            if (next.goTimer < goDelayS(i, m_stops[i]))
+                a = std::min(a, 0.0f);
+        } else {
+            next.goTimer = 0.0f;
+            a = std::min(a, 0.0f);
+        }
+    } else {
+        next.goTimer = 0.0f;
+    }
+    const SpeedStep st = advanceSpeed(v, a, m_dt);
+    next.s = m_s[i] + st.distanceM;
+    next.speed = st.speed;
+    if (v >= kStandingSpeed && st.speed < kStandingSpeed)
+        ++next.stops;
+    return next;
+}
+
+float TrafficSystem::stopLineLimit(std::size_t i, const FollowingParams& q, NextState& next) const
+{
+    const int lane = m_lane[i];
+    const float front = m_s[i] + m_radius[i];
+    const LaneStopLine* nearest = nullptr;
+    float dist = 0.0f;
+    for (const LaneStopLine& line : m_net.stopLinesOn(lane)) {
+        const float d = aheadM(lane, front, line.s);
+        if (d >= 0.0f && d <= m_opt.lookaheadM && (!nearest || d < dist)) {
+            nearest = &line;
+            dist = d;
+        }
+    }
+    if (!nearest) {
+        next.decision = kNone;
+        next.decisionLine = -1;
+        return kFreeRoad;
+    }
+    if (next.decisionLine != nearest->index) {
+        next.decision = kNone;
+        next.decisionLine = nearest->index;
+    }
+    const float v = m_speed[i];
+    const float toWait = dist - m_opt.stopMarginM;
+    switch (lightPhaseAt(m_lights[std::size_t(nearest->light)], timeS())) {
+    case LightPhase::Green:
+        next.decision = kNone;
+        return kFreeRoad;
+    case LightPhase::Yellow:
+        // The dilemma zone: stop only when that needs no more than the yellow deceleration.
+        if (next.decision == kNone)
+            next.decision = canStopWithin(v, toWait, q.yellowDecel) ? kStop : kGo;
+        break;
+    case LightPhase::Red:
+        // A driver committed on yellow keeps going unless full braking still stops it.
+        if (next.decision != kGo || canStopWithin(v, toWait, q.maxDecel))
+            next.decision = kStop;
+        break;
+    }
+    if (next.decision != kStop)
+        return kFreeRoad;
+    // The waiting point acts as a standing leader: the model halts minGap behind a
+    // leader, so the obstacle is placed minGap beyond the waiting point.
+    return followingAcceleration(q, v, toWait + q.minGapM, 0.0f);
+}
+
+float TrafficSystem::yieldLimit(std::size_t i, const FollowingParams& q, std::span<const PedestrianView> peds) const
+{
+    float a = kFreeRoad;
+    if (peds.empty())
+        return a;
+    const int lane = m_lane[i];
+    const float v = m_speed[i], r = m_radius[i], s = m_s[i];
+    const float front = s + r;
+    // Crosswalks ahead: wait before one a pedestrian is on, or about to step into our path.
+    for (const LaneStretch& st : m_net.stretchesOn(lane)) {
+        const float d = aheadM(lane, front, st.s0);
+        const float onIt = aheadM(lane, st.s0, front);  // how far the front is past the strip's start
+        if (onIt >= 0.0f && onIt <= st.s1 - st.s0 + 2.0f * r)
+            continue;  // on the strip already: the pedestrian check below brakes if needed
+        if (d < 0.0f || d > m_opt.lookaheadM)
+            continue;
+        const CrosswalkStrip& strip = m_net.crosswalk(st.crosswalk);
+        const float uLane = glm::dot(m_net.positionAt(lane, 0.5f * (st.s0 + st.s1)) - strip.a, strip.dir);
+        const float corridor = r + kPedBufferM;  // the body's half width and a buffer around the centre line
+        // Past the stop line guarding the crosswalk, walkers wait for this vehicle (see
+        // markBusyCrosswalks): it yields only to those already on the strip.
+        const bool inBox = st.boxEntryS < st.s0 && inRange(aheadM(lane, st.boxEntryS, front), 0.0f, st.s0 - st.boxEntryS);
+        if (crosswalkConflict(st.crosswalk, uLane, corridor, !inBox, peds))
+            a = std::min(a, followingAcceleration(q, v, d - kYieldBeforeM + q.minGapM, 0.0f));
+    }
+    // Anyone inside the vehicle's own corridor ahead, on a crosswalk or not.
+    for (const LanePed& lp : m_lanePeds[std::size_t(lane)]) {
+        const PedestrianView& p = peds[lp.ped];
+        if (std::abs(lp.lateralM) > r + p.radiusM + kPedBufferM)
+            continue;
+        const float d = aheadM(lane, s, lp.s);
+        if (d < 0.0f || d > m_opt.lookaheadM)
+            continue;
+        a = std::min(a, followingAcceleration(q, v, d - r - p.radiusM - kPedBufferM, 0.0f));
+    }
+    return a;
+}
+
+bool TrafficSystem::crosswalkConflict(int crosswalk, float uLane, float corridorM, bool approachingCount,
+                                      std::span<const PedestrianView> peds) const
+{
+    const CrosswalkStrip& strip = m_net.crosswalk(crosswalk);
+    const bool walkGreen = approachingCount && (strip.light < 0 || lightPhaseAt(m_lights[std::size_t(strip.light)],
+                                                                                timeS()) == LightPhase::Green);
+    for (std::uint32_t k : m_crosswalkPeds[std::size_t(crosswalk)]) {
+        const PedestrianView& p = peds[k];
+        const float u = glm::dot(p.position - strip.a, strip.dir);
+        const bool onStrip = u >= 0.0f && u <= strip.lengthM;
+        if (!onStrip && !walkGreen)
+            continue;  // waiting at the kerb for its own green
+        const float apart = std::abs(u - uLane) - (corridorM + p.radiusM);
+        if (apart <= 0.0f)
+            return true;
+        const float toward = glm::dot(p.velocity, strip.dir) * (uLane > u ? 1.0f : -1.0f);
+        if (toward > 0.05f && apart < toward * m_opt.yieldHorizonS)
+            return true;
+    }
+    return false;
+}
+
+}  // namespace throng::sim
