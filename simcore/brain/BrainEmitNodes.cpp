@@ -62,7 +62,8 @@ struct EmitPass {
         in.op = op;
         in.node = n.origin;
         in.argBegin = std::uint32_t(p.operands.size());
-        const std::size_t args = n.pass ? 1 : std::max(n.inputs.size(), op == BrainOp::Latch ? 2u : n.spec->variadic ? 0u : n.spec->inputs.size());
+        // A memory node reads its input only after the step (MemoryWrite), not here.
+        const std::size_t args = op == BrainOp::MemoryRead ? 0 : std::max(n.inputs.size(), n.spec->variadic ? 0u : n.spec->inputs.size());
         bool allConstant = true;
         for (std::size_t a = 0; a < args; ++a) {
             const std::uint32_t s = operand(n, a);

@@ -151,6 +151,14 @@ BrainOutputs BrainEvaluator::outputs() const
     return o;
 }
 
+const float* BrainEvaluator::nodeValues(NodeId node, std::uint32_t port) const
+{
+    for (const BrainNodeSlot& ns : m_program->nodeSlots)
+        if (ns.node == node && ns.port == port)
+            return m_program->slots[ns.slot].source == SlotSource::Sensor ? nullptr : column(ns.slot);
+    return nullptr;
+}
+
 std::vector<std::pair<std::string, float>> BrainEvaluator::pickedProbes() const
 {
     std::vector<std::pair<std::string, float>> out;

@@ -63,6 +63,9 @@ public:
     // inputs do not match the program (a missing column); nothing is evaluated then.
     bool evaluate(const BrainInputs& inputs, std::string* error = nullptr);
     BrainOutputs outputs() const;
+    // Every agent's value of a node's output after the last evaluate (agentCount values,
+    // or × kBrainNeighbours when per-neighbour); null for a sensor node or an unknown port.
+    const float* nodeValues(NodeId node, std::uint32_t port) const;
 
     // The agent whose node values are kept after each evaluate (-1 = none).
     void setPickedAgent(std::ptrdiff_t agent) { m_picked = agent; }
