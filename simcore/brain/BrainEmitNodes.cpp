@@ -30,15 +30,15 @@ struct EmitPass {
         BrainSlot s;
         s.source = SlotSource::Constant;
         s.constant = v;
-        p.slots.push_back(s);
-        return constants[bits] = std::uint32_t(p.slots.size() - 1);
+        p.valueSlots.push_back(s);
+        return constants[bits] = std::uint32_t(p.valueSlots.size() - 1);
     }
     std::uint32_t computed(bool perNeighbour)
     {
         BrainSlot s;
         s.perNeighbour = perNeighbour;
-        p.slots.push_back(s);
-        return std::uint32_t(p.slots.size() - 1);
+        p.valueSlots.push_back(s);
+        return std::uint32_t(p.valueSlots.size() - 1);
     }
     std::uint32_t state(float initial)
     {
@@ -67,7 +67,7 @@ struct EmitPass {
         bool allConstant = true;
         for (std::size_t a = 0; a < args; ++a) {
             const std::uint32_t s = operand(n, a);
-            allConstant = allConstant && p.slots[s].source == SlotSource::Constant;
+            allConstant = allConstant && p.valueSlots[s].source == SlotSource::Constant;
             p.operands.push_back(s);
         }
         in.argCount = std::uint32_t(args);
@@ -82,7 +82,7 @@ struct EmitPass {
             fold(i, in);
             return;
         }
-        in.out = std::uint32_t(p.slots.size());
+        in.out = std::uint32_t(p.valueSlots.size());
         for (std::size_t o = 0; o < outputs; ++o)
             slotOf[std::size_t(i)].push_back(computed(in.perNeighbour));
         p.code.push_back(in);
@@ -91,16 +91,16 @@ struct EmitPass {
     // Runs the instruction once for one agent, through the evaluator's own kernel.
     void fold(int i, BrainInstr in)
     {
-        std::vector<float> values(p.slots.size() + in.outCount, 0.0f);
+        std::vector<float> values(p.valueSlots.size() + in.outCount, 0.0f);
         std::vector<const float*> reads(values.size());
         std::vector<float*> writes(values.size());
         for (std::size_t s = 0; s < values.size(); ++s) {
-            if (s < p.slots.size())
-                values[s] = p.slots[s].constant;
+            if (s < p.valueSlots.size())
+                values[s] = p.valueSlots[s].constant;
             reads[s] = &values[s];
             writes[s] = &values[s];
         }
-        in.out = std::uint32_t(p.slots.size());
+        in.out = std::uint32_t(p.valueSlots.size());
         BrainFrame f;
         f.in = reads.data();
         f.out = writes.data();
@@ -139,10 +139,10 @@ void emitNode(EmitPass& e, int i)
             s.source = SlotSource::Sensor;
             s.perNeighbour = use.perNeighbour;
             s.sensor = std::uint32_t(e.p.sensors.size());
-            e.p.slots.push_back(s);
+            e.p.valueSlots.push_back(s);
             e.p.sensors.push_back(use);
             e.p.usesNeighbours = e.p.usesNeighbours || use.perNeighbour;
-            e.sensors[key] = std::uint32_t(e.p.slots.size() - 1);
+            e.sensors[key] = std::uint32_t(e.p.valueSlots.size() - 1);
         }
         slots.push_back(e.sensors[key]);
         return;

@@ -23,18 +23,18 @@ void BrainEvaluator::resize(std::size_t agentCount)
 {
     const BrainProgram& p = *m_program;
     m_agents = agentCount;
-    m_offset.assign(p.slots.size(), 0);
+    m_offset.assign(p.valueSlots.size(), 0);
     std::size_t total = 0;
-    for (std::size_t s = 0; s < p.slots.size(); ++s) {
-        if (p.slots[s].source == SlotSource::Sensor)
+    for (std::size_t s = 0; s < p.valueSlots.size(); ++s) {
+        if (p.valueSlots[s].source == SlotSource::Sensor)
             continue;
         m_offset[s] = total;
-        total += p.slots[s].perNeighbour ? agentCount * kBrainNeighbours : agentCount;
+        total += p.valueSlots[s].perNeighbour ? agentCount * kBrainNeighbours : agentCount;
     }
     m_values.assign(total, 0.0f);
-    for (std::size_t s = 0; s < p.slots.size(); ++s)
-        if (p.slots[s].source == SlotSource::Constant)
-            std::fill_n(m_values.begin() + std::ptrdiff_t(m_offset[s]), agentCount, p.slots[s].constant);
+    for (std::size_t s = 0; s < p.valueSlots.size(); ++s)
+        if (p.valueSlots[s].source == SlotSource::Constant)
+            std::fill_n(m_values.begin() + std::ptrdiff_t(m_offset[s]), agentCount, p.valueSlots[s].constant);
     for (std::size_t c = 0; c < m_state.size(); ++c)
         m_state[c].resize(agentCount, p.stateInitial[c]);
 }
@@ -75,11 +75,11 @@ bool BrainEvaluator::evaluate(const BrainInputs& inputs, std::string* error)
     if (p.usesRandomKeys && !inputs.agentKey && m_agents > 0)
         return fail("random and noise nodes need agent keys");
 
-    m_reads.assign(p.slots.size(), nullptr);
-    m_writes.assign(p.slots.size(), nullptr);
-    for (std::size_t s = 0; s < p.slots.size(); ++s) {
-        if (p.slots[s].source == SlotSource::Sensor) {
-            m_reads[s] = inputs.sensors[p.slots[s].sensor];
+    m_reads.assign(p.valueSlots.size(), nullptr);
+    m_writes.assign(p.valueSlots.size(), nullptr);
+    for (std::size_t s = 0; s < p.valueSlots.size(); ++s) {
+        if (p.valueSlots[s].source == SlotSource::Sensor) {
+            m_reads[s] = inputs.sensors[p.valueSlots[s].sensor];
         } else {
             m_writes[s] = m_values.data() + m_offset[s];
             m_reads[s] = m_writes[s];
@@ -115,7 +115,7 @@ bool BrainEvaluator::evaluate(const BrainInputs& inputs, std::string* error)
         for (const BrainNodeSlot& ns : p.nodeSlots) {
             BrainNodeValue v{ns.node, ns.port, {}};
             const float* col = m_reads[ns.slot];
-            if (p.slots[ns.slot].perNeighbour)
+            if (p.valueSlots[ns.slot].perNeighbour)
                 v.values.assign(col + i * kBrainNeighbours, col + i * kBrainNeighbours + count);
             else
                 v.values.push_back(col[i]);
@@ -155,7 +155,7 @@ const float* BrainEvaluator::nodeValues(NodeId node, std::uint32_t port) const
 {
     for (const BrainNodeSlot& ns : m_program->nodeSlots)
         if (ns.node == node && ns.port == port)
-            return m_program->slots[ns.slot].source == SlotSource::Sensor ? nullptr : column(ns.slot);
+            return m_program->valueSlots[ns.slot].source == SlotSource::Sensor ? nullptr : column(ns.slot);
     return nullptr;
 }
 
@@ -165,11 +165,11 @@ std::vector<std::pair<std::string, float>> BrainEvaluator::pickedProbes() const
     if (m_picked < 0 || std::size_t(m_picked) >= m_agents)
         return out;
     for (const BrainProbe& probe : m_program->probes) {
-        const bool sensor = m_program->slots[probe.slot].source == SlotSource::Sensor;
+        const bool sensor = m_program->valueSlots[probe.slot].source == SlotSource::Sensor;
         // Sensor columns belong to the caller; a probe on a sensor reads the kept copy.
         float v = 0.0f;
         if (!sensor)
-            v = column(probe.slot)[std::size_t(m_picked) * (m_program->slots[probe.slot].perNeighbour ? kBrainNeighbours : 1)];
+            v = column(probe.slot)[std::size_t(m_picked) * (m_program->valueSlots[probe.slot].perNeighbour ? kBrainNeighbours : 1)];
         else
             for (const BrainNodeSlot& ns : m_program->nodeSlots)
                 if (ns.slot == probe.slot)

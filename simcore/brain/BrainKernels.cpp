@@ -29,7 +29,7 @@ struct Ctx {
     Col arg(std::uint32_t k) const
     {
         const std::uint32_t s = prog.operands[I.argBegin + k];
-        return {f.in[s], prog.slots[s].perNeighbour};
+        return {f.in[s], prog.valueSlots[s].perNeighbour};
     }
     float param(std::uint32_t k) const { return prog.params[I.paramBegin + k]; }
     float* out(std::uint32_t k = 0) const { return f.out[I.out + k]; }

@@ -78,7 +78,7 @@ struct BrainProbe {
 
 struct BrainProgram {
     std::string name;
-    std::vector<BrainSlot> slots;
+    std::vector<BrainSlot> valueSlots;  // not "slots": Qt defines that as a macro
     std::vector<BrainInstr> code;
     std::vector<std::uint32_t> operands;
     std::vector<float> params;
