@@ -151,8 +151,9 @@ void emitNode(EmitPass& e, int i)
         return slots.push_back(e.constant(num("value")));
     if (t == "input.random" || t == "input.noise")
         e.p.usesRandomKeys = true;
+    const float nan = std::numeric_limits<float>::quiet_NaN();
     if (t == "input.random")
-        return e.emit(i, BrainOp::Random, {num("min"), num("max")});
+        return e.emit(i, BrainOp::Random, {num("min"), num("max")}, 1, e.state(nan));
     if (t == "input.noise")
         return e.emit(i, BrainOp::Noise, {num("frequency"), num("min"), num("max")});
     if (t == "fuzz.triangle")
@@ -209,7 +210,6 @@ void emitNode(EmitPass& e, int i)
         e.memoryWrites.emplace_back(column, i);
         return e.emit(i, BrainOp::MemoryRead, {}, 1, column);
     }
-    const float nan = std::numeric_limits<float>::quiet_NaN();
     if (t == "state.timer")
         return e.emit(i, BrainOp::Timer, {}, 1, e.state(0.0f));
     if (t == "state.latch")

@@ -8,9 +8,9 @@
 namespace throng::sim {
 
 namespace {
-// Agents per block: a block's columns (a few dozen × 256 floats) stay in L1/L2 while
+// Agents per block: a block's columns (a few dozen × 1024 floats) stay in L2 while
 // every instruction runs over it. Blocks are fixed, so results never depend on threads.
-constexpr std::size_t kBlock = 256;
+constexpr std::size_t kBlock = 1024;
 }  // namespace
 
 BrainEvaluator::BrainEvaluator(std::shared_ptr<const BrainProgram> program) : m_program(std::move(program))
@@ -99,7 +99,7 @@ bool BrainEvaluator::evaluate(const BrainInputs& inputs, std::string* error)
 
     // Evaluate: every instruction over one block of agents, blocks in parallel.
     const auto blocks = std::int64_t((m_agents + kBlock - 1) / kBlock);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (blocks > 1)
     for (std::int64_t blk = 0; blk < blocks; ++blk) {
         const std::size_t b = std::size_t(blk) * kBlock, e = std::min(m_agents, b + kBlock);
         for (const BrainInstr& in : p.code)

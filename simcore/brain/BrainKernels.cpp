@@ -44,9 +44,15 @@ void unary(const Ctx& c, Col a, float* o, F fn)
             o[i] = fn(ap[i]);
         return;
     }
+    if (a.pn) {
+        const float* ap = a.p;
+        for (std::size_t j = c.b * K; j < c.e * K; ++j)
+            o[j] = fn(ap[j]);
+        return;
+    }
     for (std::size_t i = c.b; i < c.e; ++i)
         for (std::size_t k = 0; k < K; ++k)
-            o[i * K + k] = fn(a.pn ? a.p[i * K + k] : a.p[i]);
+            o[i * K + k] = fn(a.p[i]);
 }
 
 template <class F>
@@ -57,6 +63,13 @@ void binary(const Ctx& c, Col a, Col b, float* o, F fn)
         const float* bp = b.p;
         for (std::size_t i = c.b; i < c.e; ++i)
             o[i] = fn(ap[i], bp[i]);
+        return;
+    }
+    if (a.pn && b.pn) {
+        const float* ap = a.p;
+        const float* bp = b.p;
+        for (std::size_t j = c.b * K; j < c.e * K; ++j)
+            o[j] = fn(ap[j], bp[j]);
         return;
     }
     for (std::size_t i = c.b; i < c.e; ++i)
@@ -243,22 +256,26 @@ void runInstr(const BrainProgram& prog, const BrainInstr& I, const BrainFrame& f
     case BrainOp::Time: std::fill(c.out() + b, c.out() + e, f.timeS); break;
     case BrainOp::Random: {
         const float lo = c.param(0), hi = c.param(1);
-        for (std::size_t i = b; i < e; ++i)
-            c.out()[i] = lo + (hi - lo) * uniform(f.agentKey[i], I.node, 0);
+        float* s = f.state[I.state];  // drawn once per agent, then kept
+        for (std::size_t i = b; i < e; ++i) {
+            if (std::isnan(s[i]))
+                s[i] = lo + (hi - lo) * uniform(f.agentKey[i], I.node, 0);
+            c.out()[i] = s[i];
+        }
         break;
     }
     case BrainOp::Noise: noise(c); break;
-    case BrainOp::Triangle: {
-        const float p0 = c.param(0), p1 = c.param(1), p2 = c.param(2);
+    case BrainOp::Triangle: case BrainOp::Trapezoid: {
+        // min(rising edge, falling edge) clamped to [0, 1], branch-free so it vectorises;
+        // a vertical edge (a == b or c == d) is a step.
+        const float a = c.param(0), b1 = c.param(1);
+        const float c1 = I.op == BrainOp::Triangle ? c.param(1) : c.param(2), d = c.param(I.op == BrainOp::Triangle ? 2 : 3);
+        const bool stepUp = !(b1 > a), stepDown = !(d > c1);
+        const float up = stepUp ? 0.0f : 1.0f / (b1 - a), down = stepDown ? 0.0f : 1.0f / (d - c1);
         unary(c, c.arg(0), c.out(), [=](float x) {
-            return x < p0 || x > p2 ? 0.0f : x < p1 ? (x - p0) / (p1 - p0) : x > p1 ? (p2 - x) / (p2 - p1) : 1.0f;
-        });
-        break;
-    }
-    case BrainOp::Trapezoid: {
-        const float p0 = c.param(0), p1 = c.param(1), p2 = c.param(2), p3 = c.param(3);
-        unary(c, c.arg(0), c.out(), [=](float x) {
-            return x < p0 || x > p3 ? 0.0f : x < p1 ? (x - p0) / (p1 - p0) : x <= p2 ? 1.0f : (p3 - x) / (p3 - p2);
+            const float r = stepUp ? (x >= a ? 1.0f : 0.0f) : (x - a) * up;
+            const float f = stepDown ? (x <= d ? 1.0f : 0.0f) : (d - x) * down;
+            return std::min(std::max(std::min(r, f), 0.0f), 1.0f);
         });
         break;
     }
