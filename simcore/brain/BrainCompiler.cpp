@@ -124,6 +124,8 @@ public:
             } else if (bn.type == "macro" && !m_out[std::size_t(i)].badParams) {
                 m_out[std::size_t(i)].inert = true;
                 macros[i] = expand(i, top ? bn.id : origin, where);
+                for (const auto& [port, node] : macros[i].outs)
+                    m_out[std::size_t(i)].macroOutputs.emplace_back(port, node);
             }
         }
         for (std::size_t li = 0; li < g.links.size(); ++li)

@@ -260,6 +260,12 @@ std::shared_ptr<BrainProgram> emitAll(std::vector<FlatNode>& nodes, const std::v
             for (std::size_t o = 0; o < e.slotOf[std::size_t(i)].size(); ++o)
                 program->nodeSlots.push_back({n.node->id, std::uint32_t(o), e.slotOf[std::size_t(i)][o]});
     }
+    // A macro node shows the values of its macro.out nodes.
+    for (const FlatNode& n : nodes)
+        if (n.where.empty() && n.node->type == "macro")
+            for (const auto& [port, out] : n.macroOutputs)
+                if (!e.slotOf[std::size_t(out)].empty())
+                    program->nodeSlots.push_back({n.node->id, port, e.slotOf[std::size_t(out)][0]});
     // Memory nodes store their input after everything else has read last step's value.
     for (auto [column, i] : e.memoryWrites) {
         BrainInstr in;

@@ -158,6 +158,8 @@ private slots:
             if (v.node == x)
                 sawSensor = v.values == std::vector<float>{-1.0f};
         QVERIFY(sawSensor);
+        QCOMPARE(rig.value(m1, 0, 0), 3.0f);  // a macro node shows its outputs
+        QCOMPARE(rig.value(m2, 0, 0), 6.0f);
     }
 };
 

@@ -6,6 +6,7 @@
 #include "simcore/brain/NodeCatalogue.h"
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace throng::sim::detail {
@@ -24,6 +25,7 @@ struct FlatNode {
     bool pass = false;      // macro.in / macro.out: its output is its input 0
     bool inert = false;     // computes nothing: macro nodes (expanded), notes, bad nodes
     bool badParams = false;
+    std::vector<std::pair<std::uint32_t, int>> macroOutputs;  // a macro node: port -> its macro.out node
 };
 
 // Collects errors, located through the top-level graph's source map.
