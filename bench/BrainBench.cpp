@@ -126,7 +126,8 @@ int main(int argc, char** argv)
         counts[i] = std::uint8_t(gen() % (kBrainNeighbours + 1));
         keys[i] = gen();
     }
-    in.neighbourCount = counts.data();
+    for (std::size_t s = 0; s < program.itemSets.size(); ++s)
+        in.itemCounts.push_back(counts.data());
     in.agentKey = keys.data();
     in.dtS = 1.0f / 24.0f;
 

@@ -13,12 +13,6 @@ namespace throng::sim::detail {
 
 namespace {
 
-bool perNeighbourSensor(const FlatNode& n)
-{
-    const SensorSpec* s = findSensorSpec(textParam(n, "sensor"));
-    return s && s->perNeighbour;
-}
-
 const PortSpec& inputSpec(const FlatNode& n, std::size_t port)
 {
     return n.spec->inputs[std::min(port, n.spec->inputs.size() - 1)];
@@ -136,7 +130,8 @@ std::vector<int> order(const std::vector<FlatNode>& nodes, BrainErrorList& error
 struct EmitPass;
 void emitNode(EmitPass& pass, int index);
 std::shared_ptr<BrainProgram> emitAll(std::vector<FlatNode>& nodes, const std::vector<int>& sorted,
-                                      const std::vector<std::vector<bool>>& pn, const std::string& name);
+                                      const std::vector<std::vector<int>>& kinds, const std::vector<std::string>& sets,
+                                      const std::string& name);
 
 std::shared_ptr<BrainProgram> emitBrain(std::vector<FlatNode>& nodes, const std::string& name, BrainErrorList& errors)
 {
@@ -145,40 +140,57 @@ std::shared_ptr<BrainProgram> emitBrain(std::vector<FlatNode>& nodes, const std:
         if (!n.inert && !n.badParams)
             checkInputs(n, errors);
     const std::vector<int> sorted = order(nodes, errors);
-    // Port kinds, in order: a per-neighbour value may not reach a scalar input.
-    std::vector<std::vector<bool>> pn(nodes.size());
+    // Port kinds, in order: -1 = one value per agent, else the item set (neighbours, or
+    // the sources of a sound channel) the per-item values belong to. A per-item value may
+    // not reach a per-agent input, and one node may not mix two item sets.
+    std::vector<std::string> sets;
+    std::vector<std::vector<int>> kinds(nodes.size());
+    const auto setName = [&](int k) {
+        return sets[std::size_t(k)] == "neighbours" ? std::string("neighbour") : "source heard on '" + sets[std::size_t(k)].substr(6) + "'";
+    };
     for (int i : sorted) {
         FlatNode& n = nodes[std::size_t(i)];
-        bool anyPn = false;
+        int set = -1;
         for (std::size_t p = 0; p < n.inputs.size(); ++p) {
             const FlatSource& s = n.inputs[p];
             if (s.node < 0)
                 continue;
-            const std::vector<bool>& kinds = pn[std::size_t(s.node)];
-            const bool srcPn = s.port < kinds.size() && kinds[s.port];
-            anyPn = anyPn || srcPn;
+            const std::vector<int>& from = kinds[std::size_t(s.node)];
+            const int srcSet = s.port < from.size() ? from[s.port] : -1;
+            const std::string id = std::to_string(nodes[std::size_t(s.node)].node->id);
+            if (srcSet >= 0 && set >= 0 && srcSet != set)
+                errors.at(n, "input " + std::to_string(p) + " gives one value per " + setName(srcSet) +
+                                 " (node " + id + ") but another input one per " + setName(set) + "; filter one of them first");
+            if (srcSet >= 0 && set < 0)
+                set = srcSet;
             if (n.pass)
                 continue;
             const PortKind want = inputSpec(n, p).kind;
-            const std::string from = std::to_string(nodes[std::size_t(s.node)].node->id);
-            if (want == PortKind::Scalar && srcPn)
+            if (want == PortKind::Scalar && srcSet >= 0)
                 errors.at(n, "type mismatch: input " + std::to_string(p) + " '" + inputSpec(n, p).name +
-                                 "' takes one value per agent but node " + from +
-                                 " gives one per neighbour; collapse it with a filter node");
-            else if (want == PortKind::PerNeighbour && !srcPn)
+                                 "' takes one value per agent but node " + id + " gives one per " + setName(srcSet) +
+                                 "; collapse it with a filter node");
+            else if (want == PortKind::PerNeighbour && srcSet < 0)
                 errors.at(n, "type mismatch: input " + std::to_string(p) + " '" + inputSpec(n, p).name +
-                                 "' takes per-neighbour values but node " + from + " gives one value per agent");
+                                 "' takes per-neighbour values but node " + id + " gives one value per agent");
         }
-        std::vector<bool>& out = pn[std::size_t(i)];
-        out.assign(outputCount(n), false);
-        for (std::size_t p = 0; p < out.size(); ++p) {
-            if (n.pass)
-                out[p] = anyPn;
-            else if (n.node->type == "input")
-                out[p] = perNeighbourSensor(n);
-            else
-                out[p] = n.spec->outputs[std::min(p, n.spec->outputs.size() - 1)].kind == PortKind::Any && anyPn;
+        if (n.node->type == "input" && !n.badParams) {
+            const SensorSpec* spec = findSensorSpec(textParam(n, "sensor"));
+            if (spec && spec->perNeighbour) {
+                const std::string key = spec->itemSet == "sound" ? "sound:" + textParam(n, "channel") : spec->itemSet;
+                set = int(std::find(sets.begin(), sets.end(), key) - sets.begin());
+                if (std::size_t(set) == sets.size())
+                    sets.push_back(key);
+            }
         }
+        std::vector<int>& out = kinds[std::size_t(i)];
+        out.assign(outputCount(n), -1);
+        for (std::size_t p = 0; p < out.size(); ++p)
+            if (n.pass || n.node->type == "input" ||
+                n.spec->outputs[std::min(p, n.spec->outputs.size() - 1)].kind == PortKind::Any)
+                out[p] = set;
+        if (n.node->type == "filter")
+            n.filterSet = set;
     }
     // One node per output channel.
     std::map<std::string, const FlatNode*> channels;
@@ -204,7 +216,11 @@ std::shared_ptr<BrainProgram> emitBrain(std::vector<FlatNode>& nodes, const std:
     }
     if (errors.errors().size() != before || std::any_of(nodes.begin(), nodes.end(), [](const FlatNode& n) { return n.badParams; }))
         return nullptr;
-    return emitAll(nodes, sorted, pn, name);
+    if (sets.size() > 255) {
+        errors.node(0, "more than 255 sets of per-item values");
+        return nullptr;
+    }
+    return emitAll(nodes, sorted, kinds, sets, name);
 }
 
 }  // namespace throng::sim::detail

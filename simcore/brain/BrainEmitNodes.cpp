@@ -14,7 +14,7 @@ namespace throng::sim::detail {
 
 struct EmitPass {
     std::vector<FlatNode>& nodes;
-    const std::vector<std::vector<bool>>& pn;
+    const std::vector<std::vector<int>>& kinds;  // per node output: -1 per agent, else item set
     BrainProgram& p;
     std::vector<std::vector<std::uint32_t>> slotOf;  // per flat node, per output port
     std::map<std::uint32_t, std::uint32_t> constants;  // value bits -> slot
@@ -33,10 +33,11 @@ struct EmitPass {
         p.valueSlots.push_back(s);
         return constants[bits] = std::uint32_t(p.valueSlots.size() - 1);
     }
-    std::uint32_t computed(bool perNeighbour)
+    std::uint32_t computed(int set)
     {
         BrainSlot s;
-        s.perNeighbour = perNeighbour;
+        s.perNeighbour = set >= 0;
+        s.itemSet = std::uint8_t(std::max(set, 0));
         p.valueSlots.push_back(s);
         return std::uint32_t(p.valueSlots.size() - 1);
     }
@@ -75,8 +76,9 @@ struct EmitPass {
         in.paramCount = std::uint32_t(params.size());
         p.params.insert(p.params.end(), params.begin(), params.end());
         in.state = stateColumn;
-        const std::vector<bool>& kinds = pn[std::size_t(i)];
-        in.perNeighbour = !kinds.empty() && kinds[0] && op != BrainOp::Filter;
+        const int set = op == BrainOp::Filter ? n.filterSet : kinds[std::size_t(i)].empty() ? -1 : kinds[std::size_t(i)][0];
+        in.perNeighbour = set >= 0 && op != BrainOp::Filter;
+        in.itemSet = std::uint8_t(std::max(set, 0));
         in.outCount = std::uint32_t(outputs);
         if (allConstant && isFoldable(op) && !in.perNeighbour) {
             fold(i, in);
@@ -84,7 +86,7 @@ struct EmitPass {
         }
         in.out = std::uint32_t(p.valueSlots.size());
         for (std::size_t o = 0; o < outputs; ++o)
-            slotOf[std::size_t(i)].push_back(computed(in.perNeighbour));
+            slotOf[std::size_t(i)].push_back(computed(in.perNeighbour ? set : -1));
         p.code.push_back(in);
     }
 
@@ -132,16 +134,19 @@ void emitNode(EmitPass& e, int i)
         if (sensor == "time")
             return e.emit(i, BrainOp::Time, {});
         const SensorSpec* spec = findSensorSpec(sensor);
-        BrainSensorUse use{sensor, spec->argument.empty() ? std::string() : textParam(n, spec->argument), spec->perNeighbour};
+        BrainSensorUse use{sensor, spec->argument.empty() ? std::string() : textParam(n, spec->argument), spec->perNeighbour, {}};
+        const int set = e.kinds[std::size_t(i)][0];
+        if (set >= 0)
+            use.itemSet = e.p.itemSets[std::size_t(set)];
         const std::string key = use.sensor + "/" + use.argument;
         if (!e.sensors.count(key)) {
             BrainSlot s;
             s.source = SlotSource::Sensor;
             s.perNeighbour = use.perNeighbour;
+            s.itemSet = std::uint8_t(std::max(set, 0));
             s.sensor = std::uint32_t(e.p.sensors.size());
             e.p.valueSlots.push_back(s);
             e.p.sensors.push_back(use);
-            e.p.usesNeighbours = e.p.usesNeighbours || use.perNeighbour;
             e.sensors[key] = std::uint32_t(e.p.valueSlots.size() - 1);
         }
         slots.push_back(e.sensors[key]);
@@ -246,11 +251,13 @@ void emitNode(EmitPass& e, int i)
 }
 
 std::shared_ptr<BrainProgram> emitAll(std::vector<FlatNode>& nodes, const std::vector<int>& sorted,
-                                      const std::vector<std::vector<bool>>& pn, const std::string& name)
+                                      const std::vector<std::vector<int>>& kinds, const std::vector<std::string>& sets,
+                                      const std::string& name)
 {
     auto program = std::make_shared<BrainProgram>();
     program->name = name;
-    EmitPass e{nodes, pn, *program, std::vector<std::vector<std::uint32_t>>(nodes.size()), {}, {}, {}};
+    program->itemSets = sets;
+    EmitPass e{nodes, kinds, *program, std::vector<std::vector<std::uint32_t>>(nodes.size()), {}, {}, {}};
     for (int i : sorted) {
         emitNode(e, i);
         const FlatNode& n = nodes[std::size_t(i)];

@@ -70,8 +70,12 @@ bool BrainEvaluator::evaluate(const BrainInputs& inputs, std::string* error)
     for (std::size_t s = 0; s < p.sensors.size(); ++s)
         if (!inputs.sensors[s] && m_agents > 0)
             return fail("no column for sensor '" + p.sensors[s].sensor + "'");
-    if (p.usesNeighbours && !inputs.neighbourCount && m_agents > 0)
-        return fail("per-neighbour sensors need neighbour counts");
+    if (inputs.itemCounts.size() != p.itemSets.size())
+        return fail("expected " + std::to_string(p.itemSets.size()) + " item count columns, got " +
+                    std::to_string(inputs.itemCounts.size()));
+    for (std::size_t s = 0; s < p.itemSets.size(); ++s)
+        if (!inputs.itemCounts[s] && m_agents > 0)
+            return fail("no item counts for '" + p.itemSets[s] + "'");
     if (p.usesRandomKeys && !inputs.agentKey && m_agents > 0)
         return fail("random and noise nodes need agent keys");
 
@@ -92,7 +96,7 @@ bool BrainEvaluator::evaluate(const BrainInputs& inputs, std::string* error)
     frame.in = m_reads.data();
     frame.out = m_writes.data();
     frame.state = state.data();
-    frame.neighbourCount = inputs.neighbourCount;
+    frame.itemCounts = inputs.itemCounts.data();
     frame.agentKey = inputs.agentKey;
     frame.timeS = inputs.timeS;
     frame.dtS = inputs.dtS;
@@ -110,12 +114,13 @@ bool BrainEvaluator::evaluate(const BrainInputs& inputs, std::string* error)
     m_pickedValues.clear();
     if (m_picked >= 0 && std::size_t(m_picked) < m_agents) {
         const auto i = std::size_t(m_picked);
-        const std::size_t count =
-            inputs.neighbourCount ? std::min<std::size_t>(inputs.neighbourCount[i], kBrainNeighbours) : 0;
         for (const BrainNodeSlot& ns : p.nodeSlots) {
             BrainNodeValue v{ns.node, ns.port, {}};
             const float* col = m_reads[ns.slot];
-            if (p.valueSlots[ns.slot].perNeighbour)
+            const BrainSlot& slot = p.valueSlots[ns.slot];
+            const std::size_t count =
+                slot.perNeighbour ? std::min<std::size_t>(inputs.itemCounts[slot.itemSet][i], kBrainNeighbours) : 0;
+            if (slot.perNeighbour)
                 v.values.assign(col + i * kBrainNeighbours, col + i * kBrainNeighbours + count);
             else
                 v.values.push_back(col[i]);

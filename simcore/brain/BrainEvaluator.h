@@ -17,10 +17,12 @@ namespace throng::sim {
 
 struct BrainInputs {
     // One column per entry of program().sensors, in that order: agentCount values for a
-    // scalar sensor, agentCount × kBrainNeighbours for a per-neighbour one (agent i's
-    // neighbours at [i*K, i*K + neighbourCount[i]), nearest first). Not owned.
+    // scalar sensor, agentCount × kBrainNeighbours for a per-item one (agent i's items at
+    // [i*K, i*K + count[i]): its nearest neighbours, or the loudest sources). Not owned.
     std::vector<const float*> sensors;
-    const std::uint8_t* neighbourCount = nullptr;  // per agent; needed when program().usesNeighbours
+    // One column per entry of program().itemSets ("neighbours", "sound:<channel>"): how
+    // many items (<= kBrainNeighbours) each agent has in that set. Not owned.
+    std::vector<const std::uint8_t*> itemCounts;
     const std::uint64_t* agentKey = nullptr;       // per agent, stable (e.g. rng(seed, AgentId, 0, s));
                                                    // needed when program().usesRandomKeys
     float timeS = 0.0f;  // simulation time, s
@@ -43,7 +45,7 @@ struct BrainOutputs {
 struct BrainNodeValue {
     NodeId node = 0;
     std::uint32_t port = 0;
-    std::vector<float> values;  // one value, or one per neighbour (neighbourCount of them)
+    std::vector<float> values;  // one value, or one per item the agent has
 };
 
 class BrainEvaluator {

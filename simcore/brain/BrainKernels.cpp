@@ -176,9 +176,10 @@ void filter(const Ctx& c)
     const int mode = int(c.param(0));
     const float threshold = c.param(1), empty = c.param(2);
     const float* x = c.arg(0).p;
+    const std::uint8_t* counts = c.f.itemCounts[c.I.itemSet];
     float* o = c.out();
     for (std::size_t i = c.b; i < c.e; ++i) {
-        const std::size_t n = c.f.neighbourCount ? std::min<std::size_t>(c.f.neighbourCount[i], K) : 0;
+        const std::size_t n = std::min<std::size_t>(counts[i], K);
         const float* v = x + i * K;
         float r = n ? v[0] : empty;
         switch (mode) {

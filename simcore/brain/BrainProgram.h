@@ -26,6 +26,7 @@ enum class SlotSource : std::uint8_t { Computed, Constant, Sensor };
 
 struct BrainSlot {
     bool perNeighbour = false;  // the column holds agentCount × kBrainNeighbours values
+    std::uint8_t itemSet = 0;   // perNeighbour: index into BrainProgram::itemSets
     SlotSource source = SlotSource::Computed;
     float constant = 0.0f;      // Constant: the value of every agent
     std::uint32_t sensor = 0;   // Sensor: index into BrainProgram::sensors
@@ -34,6 +35,7 @@ struct BrainSlot {
 struct BrainInstr {
     BrainOp op = BrainOp::Add;
     bool perNeighbour = false;     // runs over every neighbour value of every agent
+    std::uint8_t itemSet = 0;      // per-neighbour (and filter) instructions: whose items
     std::uint32_t out = 0;         // first output slot; outputs are out, out+1, ...
     std::uint32_t outCount = 1;
     std::uint32_t argBegin = 0;    // operand slots: operands[argBegin, argBegin + argCount)
@@ -49,6 +51,7 @@ struct BrainSensorUse {
     std::string sensor;    // a name from sensorCatalogue()
     std::string argument;  // channel / attribute / tag name, empty when the sensor takes none
     bool perNeighbour = false;
+    std::string itemSet;   // per-item sensors: "neighbours" or "sound:<channel>"
 };
 
 // Where a graph node's output lives, for the live view.
@@ -92,7 +95,9 @@ struct BrainProgram {
     BrainChoiceSlot goal;
     std::vector<BrainProbe> probes;
     std::uint32_t graphNodes = 0;    // nodes of the graph that compute (notes excluded, macros expanded)
-    bool usesNeighbours = false;     // reads a per-neighbour sensor (needs neighbour counts)
+    // Item sets the per-item values come from ("neighbours", "sound:<channel>"); the
+    // caller gives one count column per entry.
+    std::vector<std::string> itemSets;
     bool usesRandomKeys = false;     // input.random / input.noise: needs per-agent keys
 };
 

@@ -140,9 +140,9 @@ std::vector<NodeSpec> makeCatalogue()
                      {choice("mode", {"lt", "le", "gt", "ge", "eq", "ne"}, "a < b, a <= b, a > b, a >= b, a == b, a != b"),
                       num("value", 0.0f, "b when the b input is free")}));
     // filter
-    c.push_back(node("filter", "filter", "Collapses a per-neighbour value to one value per agent.", {in("x", PN)}, {out("value", S)},
+    c.push_back(node("filter", "filter", "Collapses a per-neighbour (or per-source) value to one value per agent.", {in("x", PN)}, {out("value", S)},
                      {choice("mode", {"nearest", "least", "most", "average", "count"},
-                             "the nearest neighbour's value, the least, the most, the average, or how many exceed the threshold"),
+                             "the first item's value (the nearest neighbour, the loudest source), the least, the most, the average, or how many exceed the threshold"),
                       num("threshold", 0.5f, "count: values above this count"), num("empty", 0.0f, "the result with no neighbours")}));
     // state
     NodeSpec memory = node("state.memory", "state", "The input's value at the previous step: the only way to close a loop.",
@@ -184,7 +184,8 @@ std::vector<NodeSpec> makeCatalogue()
 
 SensorSpec sensor(std::string name, std::string unit, std::string what, std::string argument = {}, bool pn = false)
 {
-    return {std::move(name), pn, std::move(argument), std::move(unit), std::move(what)};
+    std::string set = pn ? (name.rfind("sound", 0) == 0 ? "sound" : "neighbours") : "";
+    return {std::move(name), pn, std::move(set), std::move(argument), std::move(unit), std::move(what)};
 }
 
 }  // namespace
@@ -237,6 +238,9 @@ const std::vector<SensorSpec>& sensorCatalogue()
         sensor("neighbour_speed", "m/s", "speed of each neighbour", {}, true),
         sensor("neighbour_heading", "degrees", "each neighbour's heading relative to the agent's, + = left", {}, true),
         sensor("neighbour_tag", "", "each neighbour's value of a tag (set by its output node)", "tag", true),
+        sensor("sound_source_bearing", "degrees", "direction of each source heard on the channel, loudest first, + = left", "channel", true),
+        sensor("sound_source_distance", "m", "distance to each source heard on the channel, loudest first", "channel", true),
+        sensor("sound_source_strength", "0..1", "loudness of each source heard on the channel, loudest first", "channel", true),
     };
     return sensors;
 }

@@ -9,12 +9,13 @@
 
 namespace throng::sim {
 
-// How many neighbours a per-neighbour value holds per agent (the nearest, in order).
+// How many items a per-neighbour value holds per agent: the nearest neighbours, or the
+// loudest sound sources of a channel, in order.
 constexpr int kBrainNeighbours = 8;
 
 enum class PortKind {
     Scalar,        // one value per agent
-    PerNeighbour,  // one value per perceived neighbour (up to kBrainNeighbours per agent)
+    PerNeighbour,  // one value per perceived neighbour or heard source (up to kBrainNeighbours)
     Any,           // input: either; output: per-neighbour when any input is
 };
 
@@ -59,7 +60,8 @@ struct NodeSpec {
 
 struct SensorSpec {
     std::string name;
-    bool perNeighbour = false;
+    bool perNeighbour = false;  // one value per item of `itemSet`
+    std::string itemSet;        // per-item sensors: "neighbours", or "sound" (sources heard on the channel)
     std::string argument;  // the parameter naming a channel/attribute/tag, empty = none
     std::string unit;
     std::string description;

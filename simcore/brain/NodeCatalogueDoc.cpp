@@ -111,7 +111,7 @@ std::string brainCatalogueMarkdown()
     o << "### Sensors\n\nThe `sensor` parameter of an `input` node names one of these.\n\n";
     o << "| Sensor | Kind | Unit | Parameter | Meaning |\n|---|---|---|---|---|\n";
     for (const SensorSpec& s : sensorCatalogue())
-        o << "| `" << s.name << "` | " << (s.perNeighbour ? "per-neighbour" : "scalar") << " | " << s.unit << " | "
+        o << "| `" << s.name << "` | " << (s.itemSet == "sound" ? "per-source" : s.perNeighbour ? "per-neighbour" : "scalar") << " | " << s.unit << " | "
           << (s.argument.empty() ? "" : "`" + s.argument + "`") << " | " << s.description << " |\n";
     return o.str();
 }

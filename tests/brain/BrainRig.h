@@ -71,7 +71,11 @@ public:
             c.resize(eval->agentCount() * (s.perNeighbour ? sim::kBrainNeighbours : 1), 0.0f);
             in.sensors.push_back(c.data());
         }
-        in.neighbourCount = counts.data();
+        for (const std::string& set : eval->program().itemSets) {
+            std::vector<std::uint8_t>& c = set == "neighbours" ? counts : sourceCounts[set];
+            c.resize(eval->agentCount(), 0);
+            in.itemCounts.push_back(c.data());
+        }
         in.agentKey = keys.data();
         in.timeS = timeS;
         in.dtS = dtS;
@@ -88,7 +92,8 @@ public:
 
     std::unique_ptr<sim::BrainEvaluator> eval;
     std::map<std::string, std::vector<float>> columns;
-    std::vector<std::uint8_t> counts;
+    std::vector<std::uint8_t> counts;  // neighbours per agent
+    std::map<std::string, std::vector<std::uint8_t>> sourceCounts;  // "sound:<channel>" -> sources per agent
     std::vector<std::uint64_t> keys;
     float timeS = 0.0f;
     std::string errors;

@@ -82,6 +82,51 @@ private slots:
         QCOMPARE(perNeighbour[1], 0.0f);
         QCOMPARE(perNeighbour[2], 0.5f);
     }
+
+    void soundSourcesAreItemsToo()
+    {
+        // The loudest bell is 0.9 at 20 m; the distance of sources louder than 0.5 averages 15 m.
+        GraphBuilder b;
+        const auto strength = b.sensor("sound_source_strength", {txt("channel", "bell")});
+        const auto dist = b.sensor("sound_source_distance", {txt("channel", "bell")});
+        const auto loud = b.add("math.compare", {txt("mode", "gt"), num("value", 0.5f)});
+        const auto loudDist = b.add("math.multiply");
+        const auto loudest = b.add("filter", {txt("mode", "most")});
+        const auto heard = b.add("filter", {txt("mode", "count"), num("threshold", 0.5f)});
+        const auto sumDist = b.add("filter", {txt("mode", "average")});
+        b.link(strength, 0, loud, 0);
+        b.link(strength, 0, loudest, 0);
+        b.link(strength, 0, heard, 0);
+        b.link(loud, 0, loudDist, 0);
+        b.link(dist, 0, loudDist, 1);
+        b.link(loudDist, 0, sumDist, 0);
+        BrainRig rig(b.g, 1);
+        QVERIFY2(rig.ok(), rig.errors.c_str());
+        QCOMPARE(rig.eval->program().itemSets, (std::vector<std::string>{"sound:bell"}));
+        std::vector<float> s(K, 0.0f), d(K, 0.0f);
+        s[0] = 0.9f, d[0] = 20;
+        s[1] = 0.6f, d[1] = 10;
+        s[2] = 0.1f, d[2] = 5;
+        s[3] = 1.0f;  // past the count: ignored
+        rig.set("sound_source_strength", s, "bell");
+        rig.set("sound_source_distance", d, "bell");
+        rig.sourceCounts["sound:bell"] = {3};
+        rig.step();
+        QCOMPARE(rig.value(loudest), 0.9f);
+        QCOMPARE(rig.value(heard), 2.0f);
+        QCOMPARE(rig.value(sumDist), 10.0f);  // (20 + 10 + 0) / 3
+        // Neighbours and sound sources cannot meet in one node unfiltered.
+        GraphBuilder m;
+        const auto nd = m.sensor("neighbour_distance");
+        const auto sd = m.sensor("sound_source_distance", {txt("channel", "bell")});
+        const auto add = m.add("math.add");
+        m.link(nd, 0, add, 0);
+        m.link(sd, 0, add, 1);
+        const sim::BrainCompileResult r = sim::compileBrain(m.g);
+        QVERIFY(!r.ok());
+        QCOMPARE(r.errors[0].message, std::string("node 3 (math.add): input 1 gives one value per source heard on 'bell' "
+                                                  "(node 2) but another input one per neighbour; filter one of them first"));
+    }
 };
 
 THRONG_REGISTER_TEST(TestBrainNeighbours)

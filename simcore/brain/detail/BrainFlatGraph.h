@@ -25,6 +25,7 @@ struct FlatNode {
     bool pass = false;      // macro.in / macro.out: its output is its input 0
     bool inert = false;     // computes nothing: macro nodes (expanded), notes, bad nodes
     bool badParams = false;
+    int filterSet = -1;  // a filter node: the item set of its input
     std::vector<std::pair<std::uint32_t, int>> macroOutputs;  // a macro node: port -> its macro.out node
 };
 

@@ -13,7 +13,7 @@ struct BrainFrame {
     const float* const* in = nullptr;  // per slot: the column to read
     float* const* out = nullptr;       // per slot: the column to write (computed slots)
     float* const* state = nullptr;     // per state column
-    const std::uint8_t* neighbourCount = nullptr;  // per agent, <= kBrainNeighbours
+    const std::uint8_t* const* itemCounts = nullptr;  // per item set: per agent, <= kBrainNeighbours
     const std::uint64_t* agentKey = nullptr;       // per agent, for random and noise
     float timeS = 0.0f;
     float dtS = 0.0f;
