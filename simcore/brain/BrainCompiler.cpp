@@ -175,8 +175,10 @@ private:
             return;
         }
         const FlatNode& fn = m_out[std::size_t(from->second)];
-        const FlatNode& tn = m_out[std::size_t(to->second)];
-        if (!fn.spec || !tn.spec || fn.badParams || tn.badParams)
+        FlatNode& tn = m_out[std::size_t(to->second)];
+        if (!fn.spec)
+            tn.fedByUnknown = true;  // its free input is a consequence, not news
+        if (!fn.spec || !tn.spec)
             return;  // already reported
         FlatSource src{from->second, l.fromPort};
         if (auto m = macros.find(from->second); m != macros.end()) {

@@ -34,7 +34,7 @@ bool checkInputs(FlatNode& n, BrainErrorList& errors)
         n.inputs.resize(n.spec->inputs.size());
     bool ok = true;
     for (std::size_t p = 0; p < n.inputs.size(); ++p)
-        if (n.inputs[p].node < 0 && inputSpec(n, p).required) {
+        if (n.inputs[p].node < 0 && inputSpec(n, p).required && !n.fedByUnknown) {
             errors.at(n, "input " + std::to_string(p) + " '" + inputSpec(n, p).name + "' is not connected");
             ok = false;
         }

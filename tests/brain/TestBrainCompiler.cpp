@@ -52,8 +52,11 @@ private slots:
     {
         EXPECT_ERROR(single("fuzz.bogus", {}), 1, "node 1 (fuzz.bogus): unknown node type 'fuzz.bogus'");
         GraphBuilder b;
-        b.sensor("smell");
+        const auto smell = b.sensor("smell");
+        const auto fz = b.add("fuzz.sigmoid");
+        b.link(smell, 0, fz, 0);
         EXPECT_ERROR(b.g, 1, "unknown sensor 'smell'");
+        QCOMPARE(sim::compileBrain(b.g).errors.size(), std::size_t(1));  // no follow-on error on node 2
         GraphBuilder s;
         s.sensor("sound_strength");
         EXPECT_ERROR(s.g, 1, "sensor 'sound_strength' needs parameter 'channel'");

@@ -26,6 +26,7 @@ struct FlatNode {
     bool inert = false;     // computes nothing: macro nodes (expanded), notes, bad nodes
     bool badParams = false;
     int filterSet = -1;  // a filter node: the item set of its input
+    bool fedByUnknown = false;  // a link from a node of unknown type was dropped
     std::vector<std::pair<std::uint32_t, int>> macroOutputs;  // a macro node: port -> its macro.out node
 };
 
