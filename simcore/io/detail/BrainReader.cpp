@@ -91,6 +91,8 @@ void readBrainGraph(YamlFields& f, const YAML::Node& node, const std::string& ke
         f.checkKeys(node, key, {"name", "nodes", "links"});
     }
     std::set<NodeId> ids;
+    brain.source.file = f.file();
+    const auto at = [](const YAML::Node& n) { return BrainSourcePos{n.Mark().line + 1, n.Mark().column + 1}; };
     if (const YAML::Node nodes = node["nodes"]; nodes.IsDefined() && f.expectSequence(nodes, childKey(key, "nodes"))) {
         for (std::size_t i = 0; i < nodes.size(); ++i) {
             const std::string nk = indexKey(childKey(key, "nodes"), i);
@@ -113,6 +115,7 @@ void readBrainGraph(YamlFields& f, const YAML::Node& node, const std::string& ke
             f.readVec2(item, "position", nk, n.position, false);
             if (const YAML::Node params = item["params"]; params.IsDefined())
                 readParams(f, params, nk + ".params", n);
+            brain.source.nodes.emplace_back(n.id, at(item));
             brain.nodes.push_back(std::move(n));
         }
     }
@@ -132,8 +135,10 @@ void readBrainGraph(YamlFields& f, const YAML::Node& node, const std::string& ke
                     f.error(item[end].Mark(), lk + "." + end, "no node with id " + std::to_string(id) + " in this brain");
                     ok = false;
                 }
-            if (ok)
+            if (ok) {
                 brain.links.push_back(l);
+                brain.source.links.push_back(at(item));
+            }
         }
     }
 }

@@ -1,0 +1,175 @@
+// Brain evaluation throughput: a 40-node pedestrian-style brain (fuzz, rules, defuzz,
+// per-neighbour logic and a filter, state, outputs) over N agents with random sensor
+// values, for 1 and 2 threads, next to the World step of a built-in scenario of the same
+// size. Prints one JSON object. Usage: throng-bench-brain [AGENTS] [SCENARIO]
+#include "simcore/brain/BrainCompiler.h"
+#include "simcore/brain/BrainEvaluator.h"
+#include "simcore/brain/NodeCatalogue.h"
+#include "simcore/scenarios/BenchScenarios.h"
+#include "simcore/world/World.h"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <random>
+#include <string>
+#include <vector>
+
+using namespace throng::sim;
+
+namespace {
+
+struct Builder {
+    BrainGraph g;
+    NodeId add(std::string type, std::vector<BrainParam> params = {}, std::vector<NodeId> inputs = {})
+    {
+        const NodeId id = NodeId(g.nodes.size() + 1);
+        g.nodes.push_back({id, std::move(type), {}, {}, std::move(params)});
+        for (std::size_t p = 0; p < inputs.size(); ++p)
+            g.links.push_back({inputs[p], 0, id, std::uint32_t(p)});
+        return id;
+    }
+    NodeId sensor(const std::string& s, std::vector<BrainParam> extra = {})
+    {
+        extra.insert(extra.begin(), {"sensor", s, {}});
+        return add("input", std::move(extra));
+    }
+};
+
+BrainParam n(std::string k, float v) { return {std::move(k), {}, {v}}; }
+BrainParam pts(std::vector<float> v) { return {"points", {}, std::move(v)}; }
+BrainParam t(std::string k, std::string v) { return {std::move(k), std::move(v), {}}; }
+
+BrainGraph fortyNodeBrain()
+{
+    Builder b;
+    const NodeId gd = b.sensor("goal_distance"), gb = b.sensor("goal_bearing"), light = b.sensor("light_state");
+    const NodeId line = b.sensor("stop_line_distance"), nearest = b.sensor("nearest_distance"), speed = b.sensor("speed");
+    const NodeId nd = b.sensor("neighbour_distance"), nb = b.sensor("neighbour_bearing");
+    const NodeId maxSpeed = b.sensor("attribute", {t("name", "max_speed")});
+    const NodeId far = b.add("fuzz.trapezoid", {pts({0.2f, 1.5f, 1e6f, 1e6f})}, {gd});
+    const NodeId red = b.add("fuzz.trapezoid", {pts({0.25f, 0.5f, 2, 2})}, {light});
+    const NodeId atLine = b.add("fuzz.trapezoid", {pts({-0.05f, 0, 1.5f, 3.5f})}, {line});
+    const NodeId crowded = b.add("fuzz.trapezoid", {pts({-1, 0, 0.5f, 1.2f})}, {nearest});
+    const NodeId left = b.add("fuzz.sigmoid", {n("centre", 10), n("slope", 0.1f)}, {gb});
+    const NodeId right = b.add("fuzz.sigmoid", {n("centre", -10), n("slope", -0.1f)}, {gb});
+    const NodeId straight = b.add("fuzz.gaussian", {n("centre", 0), n("width", 15)}, {gb});
+    const NodeId close = b.add("fuzz.trapezoid", {pts({-1, 0, 1, 3})}, {nd});
+    const NodeId ahead = b.add("fuzz.triangle", {pts({-45, 0, 45})}, {nb});
+    const NodeId threatEach = b.add("rule.and", {}, {close, ahead});
+    const NodeId threat = b.add("filter", {t("mode", "most")}, {threatEach});
+    const NodeId mustStop = b.add("rule.and", {}, {red, atLine});
+    const NodeId stop = b.add("rule.or", {}, {mustStop, threat});
+    const NodeId go = b.add("rule.not", {}, {stop});
+    const NodeId walk = b.add("rule.and", {t("mode", "product")}, {go, far});
+    const NodeId polite = b.add("rule.hedge", {t("mode", "weak")}, {crowded});
+    const NodeId ease = b.add("math.remap", {{"from", {}, {0, 1}}, {"to", {}, {1, 0.6f}}}, {polite});
+    const NodeId noise = b.add("input.noise", {n("frequency", 0.3f), n("min", 0.9f), n("max", 1.0f)});
+    const NodeId want = b.add("math.multiply", {}, {walk, maxSpeed, ease, noise});
+    const NodeId smooth = b.add("state.smooth", {n("tau", 0.3f)}, {want});
+    b.add("output", {t("channel", "speed")}, {smooth});
+    const NodeId turn = b.add("defuzz.average", {{"values", {}, {90, -90, 0}}}, {left, right, straight});
+    b.add("output", {t("channel", "turn")}, {turn});
+    const NodeId sep = b.add("math.remap", {{"from", {}, {0, 1}}, {"to", {}, {1, 4}}}, {crowded});
+    b.add("output", {t("channel", "weight"), t("behaviour", "separation")}, {sep});
+    b.add("output", {t("channel", "weight"), t("behaviour", "arrival")}, {go});
+    const NodeId arrived = b.add("rule.not", {}, {far});
+    b.add("output.action", {t("actions", "idle walk wait"), {"durations", {}, {1, 0, 0.5f}}}, {arrived, walk, stop});
+    const NodeId before = b.add("state.memory", {}, {speed});
+    const NodeId change = b.add("math.subtract", {}, {speed, before});
+    b.add("math.abs", {}, {change});
+    return b.g;
+}
+
+double since(std::chrono::steady_clock::time_point t0)
+{
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+double median(std::vector<double> v)
+{
+    std::sort(v.begin(), v.end());
+    return v[v.size() / 2];
+}
+
+}  // namespace
+
+int main(int argc, char** argv)
+{
+    const std::size_t agents = argc > 1 ? std::stoul(argv[1]) : 100'000;
+    const std::string scenario = argc > 2 ? argv[2] : "corridor";
+    const BrainGraph graph = fortyNodeBrain();
+    const BrainCompileResult compiled = compileBrain(graph);
+    if (!compiled.ok()) {
+        for (const BrainError& e : compiled.errors)
+            std::fprintf(stderr, "%s\n", e.format().c_str());
+        return 1;
+    }
+    const BrainProgram& program = *compiled.program;
+
+    std::mt19937 gen(7);
+    std::uniform_real_distribution<float> u(-5.0f, 30.0f);
+    std::vector<std::vector<float>> columns;
+    BrainInputs in;
+    for (const BrainSensorUse& s : program.sensors) {
+        columns.emplace_back(agents * (s.perNeighbour ? kBrainNeighbours : 1));
+        for (float& v : columns.back())
+            v = u(gen);
+    }
+    for (const std::vector<float>& c : columns)
+        in.sensors.push_back(c.data());
+    std::vector<std::uint8_t> counts(agents);
+    std::vector<std::uint64_t> keys(agents);
+    for (std::size_t i = 0; i < agents; ++i) {
+        counts[i] = std::uint8_t(gen() % (kBrainNeighbours + 1));
+        keys[i] = gen();
+    }
+    for (std::size_t s = 0; s < program.itemSets.size(); ++s)
+        in.itemCounts.push_back(counts.data());
+    in.agentKey = keys.data();
+    in.dtS = 1.0f / 24.0f;
+
+    double brainMs[2] = {0, 0}, stepMs[2] = {0, 0};
+    for (int threads = 1; threads <= 2; ++threads) {
+        omp_set_num_threads(threads);
+        BrainEvaluator eval(compiled.program);
+        eval.resize(agents);
+        std::vector<double> times;
+        for (int s = 0; s < 23; ++s) {
+            in.timeS = float(s) * in.dtS;
+            const auto t0 = std::chrono::steady_clock::now();
+            eval.evaluate(in);
+            if (s >= 3)
+                times.push_back(since(t0));
+        }
+        brainMs[threads - 1] = median(times);
+
+        Scene scene;
+        if (!makeBenchScenario(scenario, std::uint32_t(agents), scene)) {
+            std::fprintf(stderr, "unknown scenario '%s'\n", scenario.c_str());
+            return 2;
+        }
+        WorldOptions options;
+        options.threads = threads;
+        World world(scene, options);
+        world.step();
+        times.clear();
+        for (int s = 0; s < 5; ++s) {
+            const auto t0 = std::chrono::steady_clock::now();
+            world.step();
+            times.push_back(since(t0));
+        }
+        stepMs[threads - 1] = median(times);
+    }
+    const double nodes = double(program.graphNodes);
+    std::printf("{\"agents\": %zu, \"brain_nodes\": %u, \"instructions\": %zu, \"scenario\": \"%s\",\n", agents,
+                program.graphNodes, program.code.size(), scenario.c_str());
+    for (int t = 0; t < 2; ++t)
+        std::printf(" \"threads_%d\": {\"brain_ms_per_step\": %.3f, \"node_evaluations_per_second\": %.4g, "
+                    "\"world_step_ms\": %.3f, \"brain_share_of_step\": %.3f}%s\n",
+                    t + 1, brainMs[t], nodes * double(agents) / (brainMs[t] / 1000.0), stepMs[t],
+                    brainMs[t] / (brainMs[t] + stepMs[t]), t == 0 ? "," : "}");
+    return 0;
+}

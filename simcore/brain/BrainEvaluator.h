@@ -1,0 +1,92 @@
+#pragma once
+// Runs a compiled brain for all agents of a type: instruction by instruction over
+// contiguous float columns, in blocks of agents spread over OpenMP threads, with the
+// state nodes' per-agent state kept between steps. Knows nothing of the World: the caller
+// fills BrainInputs and reads BrainOutputs. Identical results for any thread count.
+
+#include "simcore/brain/BrainProgram.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace throng::sim {
+
+struct BrainInputs {
+    // One column per entry of program().sensors, in that order: agentCount values for a
+    // scalar sensor, agentCount × kBrainNeighbours for a per-item one (agent i's items at
+    // [i*K, i*K + count[i]): its nearest neighbours, or the loudest sources). Not owned.
+    std::vector<const float*> sensors;
+    // One column per entry of program().itemSets ("neighbours", "sound:<channel>"): how
+    // many items (<= kBrainNeighbours) each agent has in that set. Not owned.
+    std::vector<const std::uint8_t*> itemCounts;
+    const std::uint64_t* agentKey = nullptr;       // per agent, stable (e.g. rng(seed, AgentId, 0, s));
+                                                   // needed when program().usesRandomKeys
+    float timeS = 0.0f;  // simulation time, s
+    float dtS = 0.0f;    // step length, s, > 0
+};
+
+// Views into the evaluator's columns, valid until the next evaluate or resize.
+struct BrainOutputs {
+    const float* speed = nullptr;  // desired speed, m/s; null when the brain has no speed output
+    const float* turn = nullptr;   // desired turn rate, degrees/s, + = left; null when none
+    std::vector<std::pair<std::string, const float*>> weights;  // steering behaviour -> weight
+    std::vector<std::pair<std::string, const float*>> tags;     // tag name -> value others sense
+    const float* action = nullptr;  // index into actionNames, as a float; null when none
+    std::vector<std::string> actionNames;
+    const float* goal = nullptr;    // index into goalNames, as a float; null when none
+    std::vector<std::string> goalNames;
+};
+
+// One node output of the picked agent, for the brain editor's live view.
+struct BrainNodeValue {
+    NodeId node = 0;
+    std::uint32_t port = 0;
+    std::vector<float> values;  // one value, or one per item the agent has
+};
+
+class BrainEvaluator {
+public:
+    explicit BrainEvaluator(std::shared_ptr<const BrainProgram> program);
+
+    const BrainProgram& program() const { return *m_program; }
+    std::size_t agentCount() const { return m_agents; }
+
+    // Sets the agent count. Existing agents keep their state; new ones start fresh.
+    void resize(std::size_t agentCount);
+    // Gives agent `to` the state of agent `from` (for a swap-and-pop removal).
+    void moveAgentState(std::size_t from, std::size_t to);
+    void resetAgentState(std::size_t agent);
+
+    // Runs one step for every agent. Returns false and says why in `error` when the
+    // inputs do not match the program (a missing column); nothing is evaluated then.
+    bool evaluate(const BrainInputs& inputs, std::string* error = nullptr);
+    BrainOutputs outputs() const;
+    // Every agent's value of a node's output after the last evaluate (agentCount values,
+    // or × kBrainNeighbours when per-neighbour); null for a sensor node or an unknown port.
+    const float* nodeValues(NodeId node, std::uint32_t port) const;
+
+    // The agent whose node values are kept after each evaluate (-1 = none).
+    void setPickedAgent(std::ptrdiff_t agent) { m_picked = agent; }
+    const std::vector<BrainNodeValue>& pickedValues() const { return m_pickedValues; }
+    // The picked agent's probe values: probe name (or "node <id>") and value.
+    std::vector<std::pair<std::string, float>> pickedProbes() const;
+
+private:
+    const float* column(std::uint32_t slot) const;
+
+    std::shared_ptr<const BrainProgram> m_program;
+    std::size_t m_agents = 0;
+    std::vector<std::size_t> m_offset;  // per slot: offset into m_values (computed and constant slots)
+    std::vector<float> m_values;
+    std::vector<std::vector<float>> m_state;
+    std::vector<const float*> m_reads;
+    std::vector<float*> m_writes;
+    std::ptrdiff_t m_picked = -1;
+    std::vector<BrainNodeValue> m_pickedValues;
+};
+
+}  // namespace throng::sim
