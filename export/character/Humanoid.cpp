@@ -23,7 +23,7 @@ Character makeHumanoid(const std::string& name, const HumanoidBody& body)
         {"hips", -1, {0.0f, legRootY + 0.05f, 0.0f}},
         {"spine", kHips, {0.0f, 0.12f, 0.0f}},
         {"chest", kSpine, {0.0f, 0.2f, 0.0f}},
-        {"neck", kChest, {0.0f, 0.22f, 0.0f}},
+        {"neck", kChest, {0.0f, 0.2f, 0.0f}},
         {"head", kNeck, {0.0f, 0.08f, 0.0f}},
         {"upper_arm_l", kChest, {0.0f, 0.18f, -sw}},
         {"lower_arm_l", kUpperArmL, {0.0f, -0.29f, 0.0f}},
@@ -60,13 +60,13 @@ Character makeHumanoid(const std::string& name, const HumanoidBody& body)
     seg(kChest, {-0.12f, 0.0f, -sw + 0.02f}, {0.12f, 0.22f, sw - 0.02f}, {0.9f, 1.0f});
     seg(kNeck, {-0.04f, 0.0f, -0.04f}, {0.04f, 0.08f, 0.04f});
     const float hs = body.headScale;
-    seg(kHead, glm::vec3(-0.1f, 0.0f, -0.085f) * hs, glm::vec3(0.11f, 0.24f, 0.085f) * hs, {0.9f, 0.9f});
+    seg(kHead, glm::vec3(-0.1f, 0.0f, -0.085f) * hs, glm::vec3(0.11f, 0.19f, 0.085f) * hs, {0.9f, 0.9f});
     mb.box(kHead, at[kHead] + glm::vec3(0.11f, 0.08f, -0.02f) * hs * s, at[kHead] + glm::vec3(0.14f, 0.13f, 0.02f) * hs * s);
     if (body.longHair)
-        seg(kHead, glm::vec3(-0.13f, -0.1f, -0.095f) * hs, glm::vec3(-0.04f, 0.25f, 0.095f) * hs);
+        seg(kHead, glm::vec3(-0.13f, -0.1f, -0.095f) * hs, glm::vec3(-0.04f, 0.2f, 0.095f) * hs);
     if (body.hat) {
-        mb.prism(kHead, at[kHead] + glm::vec3(0.0f, 0.25f, 0.0f) * hs * s, 1, 0.2f * hs * s, 0.012f * s, 10);
-        mb.prism(kHead, at[kHead] + glm::vec3(0.0f, 0.32f, 0.0f) * hs * s, 1, 0.11f * hs * s, 0.06f * s, 10);
+        mb.prism(kHead, at[kHead] + glm::vec3(0.0f, 0.2f, 0.0f) * hs * s, 1, 0.2f * hs * s, 0.012f * s, 10);
+        mb.prism(kHead, at[kHead] + glm::vec3(0.0f, 0.27f, 0.0f) * hs * s, 1, 0.11f * hs * s, 0.06f * s, 10);
     }
     if (body.skirt)
         seg(kHips, {-0.16f, -0.38f, -hw - 0.1f}, {0.16f, -0.05f, hw + 0.1f}, {0.7f, 0.8f});
