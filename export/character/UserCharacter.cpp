@@ -102,8 +102,20 @@ std::optional<Character> loadCharacterFile(const std::string& path, const ClipNa
         for (int child : model.nodes[n].children)
             parentOf[child] = static_cast<int>(n);
     auto depth = [&](int n) { int d = 0; while (parentOf[n] >= 0) { n = parentOf[n]; ++d; } return d; };
+    // Keep the file's joint order when parents already come first, else order by depth.
     std::vector<int> nodes = skin.joints;
-    std::stable_sort(nodes.begin(), nodes.end(), [&](int a, int b) { return depth(a) < depth(b); });
+    std::set<int> seen;
+    bool parentsFirst = true;
+    for (int n : nodes) {
+        for (int up = parentOf[n]; up >= 0; up = parentOf[up])
+            if (std::find(nodes.begin(), nodes.end(), up) != nodes.end()) {
+                parentsFirst = parentsFirst && seen.count(up);
+                break;
+            }
+        seen.insert(n);
+    }
+    if (!parentsFirst)
+        std::stable_sort(nodes.begin(), nodes.end(), [&](int a, int b) { return depth(a) < depth(b); });
     std::map<int, int> jointOfNode;
     const glm::mat4 turn = glm::rotate(glm::mat4(1.0f), glm::radians(90.0f), glm::vec3(0.0f, 1.0f, 0.0f));
     std::set<int> inSkin(nodes.begin(), nodes.end());
