@@ -18,6 +18,7 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
+#include <system_error>
 
 namespace throng::exporting {
 
@@ -54,9 +55,10 @@ tinygltf::Value agentExtras(const sim::AgentInfo& info, const std::string& type,
     extras["type"] = tinygltf::Value(type);
     extras["character"] = tinygltf::Value(look.name);
     extras["tint"] = tinygltf::Value(v.tint);
-    extras["heightScale"] = tinygltf::Value(static_cast<double>(v.heightScale));
-    extras["speedFactor"] = tinygltf::Value(static_cast<double>(v.speedFactor));
-    extras["phaseOffset"] = tinygltf::Value(static_cast<double>(v.phaseOffset));
+    auto r4 = [](float x) { return tinygltf::Value(std::round(static_cast<double>(x) * 1e4) / 1e4); };
+    extras["heightScale"] = r4(v.heightScale);  // the node's scale carries the exact value
+    extras["speedFactor"] = r4(v.speedFactor);
+    extras["phaseOffset"] = r4(v.phaseOffset);
     return tinygltf::Value(std::move(extras));
 }
 
@@ -117,7 +119,7 @@ int materialFor(tinygltf::Model& model, std::map<std::pair<std::size_t, int>, in
 }  // namespace
 
 ExportResult exportGltf(const sim::Scene& scene, const sim::FrameCache& cache, const GltfOptions& options,
-                        const ProgressFn& progress)
+                        const ProgressFn& progress, GltfExportStats* stats)
 {
     if (std::string error = checkInput(scene, cache, options); !error.empty())
         return failedExport(std::move(error));
@@ -151,6 +153,7 @@ ExportResult exportGltf(const sim::Scene& scene, const sim::FrameCache& cache, c
     std::map<std::pair<std::size_t, int>, int> materials;
 
     builder.beginAnimationData();
+    builder.setUse(detail::GltfBuilder::Use::Clocks);
     std::vector<float> allTimes(frames);
     for (std::size_t f = 0; f < frames; ++f)
         allTimes[f] = frameTime(f, fps);
@@ -203,6 +206,7 @@ ExportResult exportGltf(const sim::Scene& scene, const sim::FrameCache& cache, c
     std::vector<detail::CompactPlan> plans;
     if (compact) {
         plans.reserve(agents);
+        builder.setUse(detail::GltfBuilder::Use::Joints);
         for (std::size_t i = 0; i < agents; ++i) {
             gather(i);
             const AgentVariation v = variationOf(i);
@@ -226,8 +230,10 @@ ExportResult exportGltf(const sim::Scene& scene, const sim::FrameCache& cache, c
         const AgentVariation v = variationOf(i);
         const std::size_t ci = characterOf(i, v);
         const Character& character = library.character(ci);
-        if (!assets.count(ci))
+        if (!assets.count(ci)) {
+            builder.setUse(detail::GltfBuilder::Use::Geometry);
             assets[ci] = detail::writeCharacterAssets(builder, character);
+        }
         const std::vector<GaitFrame> gait = computeGait(character, positions, speeds, v);
 
         detail::AgentRigSpec spec;
@@ -240,8 +246,10 @@ ExportResult exportGltf(const sim::Scene& scene, const sim::FrameCache& cache, c
         const detail::AgentRig rig = detail::addAgentRig(model, character, assets[ci], spec, gaitPose(character, gait[0]));
 
         channels.nextAgent();
+        builder.setUse(detail::GltfBuilder::Use::RootMotion);
         channels.vec3Channel(rig.root, "translation", frameClock, positions, options.positionToleranceM);
         channels.rotationChannel(rig.root, yaw, frameClock, options.rootRotationToleranceDeg * kDegToRad);
+        builder.setUse(detail::GltfBuilder::Use::Joints);
         if (compact)
             cycles.bakeAgent(channels, plans[i], rig, pairClock.accessor);
         else
@@ -252,7 +260,22 @@ ExportResult exportGltf(const sim::Scene& scene, const sim::FrameCache& cache, c
     if (detail::cancelledAt(progress, 0.8f))
         return detail::cancelledExport(options.path);
 
+    if (stats) {
+        *stats = {};
+        stats->geometryBytes = builder.bytesFor(detail::GltfBuilder::Use::Geometry);
+        stats->clockBytes = builder.bytesFor(detail::GltfBuilder::Use::Clocks);
+        stats->rootMotionBytes = builder.bytesFor(detail::GltfBuilder::Use::RootMotion);
+        stats->jointBytes = builder.bytesFor(detail::GltfBuilder::Use::Joints);
+        for (const tinygltf::AnimationSampler& s : model.animations[0].samplers)
+            stats->animationKeys += model.accessors[s.output].count;
+    }
     ExportResult result = detail::writeModel(model, options.path, options.prettyJson, progress);
+    if (result.ok() && stats)
+        for (const std::string& p : result.writtenPaths) {
+            std::error_code ec;
+            const std::uintmax_t size = std::filesystem::file_size(p, ec);
+            stats->fileBytes += ec ? 0 : static_cast<std::size_t>(size);
+        }
     if (result.ok() && progress)
         progress(1.0f);
     return result;

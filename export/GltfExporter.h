@@ -31,6 +31,16 @@ struct GltfOptions {
     bool prettyJson = false;             // .gltf only: indented JSON
 };
 
+// Where an export's bytes went (binary buffer only; the JSON is the file's remainder).
+struct GltfExportStats {
+    std::size_t fileBytes = 0;          // .glb, or .gltf + .bin
+    std::size_t geometryBytes = 0;      // meshes, skins' inverse bind matrices
+    std::size_t clockBytes = 0;         // the shared time accessors
+    std::size_t rootMotionBytes = 0;    // agents' root translation and rotation keys
+    std::size_t jointBytes = 0;         // joint animation: baked keys, or cycle banks and agents' time maps
+    std::size_t animationKeys = 0;      // output elements of all samplers, shared windows counted once per agent
+};
+
 // Nodes `agent_<id>_<type>` (AgentId, type name) in the cache's dense order: translation
 // (m) and rotation (about +Y by headingRad, the character's nose on +X) keyed from frame
 // f at f / fps, static scale = the agent's height scale; children `<agent>__<joint>`; a
@@ -42,6 +52,6 @@ struct GltfOptions {
 // index the scene lacks, a character that cannot be built or loaded, a .glb over 4 GiB,
 // any I/O failure. Files go to temporaries beside the target and are renamed in.
 ExportResult exportGltf(const sim::Scene& scene, const sim::FrameCache& cache, const GltfOptions& options,
-                        const ProgressFn& progress = {});
+                        const ProgressFn& progress = {}, GltfExportStats* stats = nullptr);
 
 }  // namespace throng::exporting

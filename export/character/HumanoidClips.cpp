@@ -13,7 +13,7 @@ namespace throng::exporting {
 namespace {
 
 constexpr float kPi = 3.14159265358979f;
-constexpr int kSamplesPerCycle = 40;
+constexpr int kSamplesPerCycle = 24;
 
 struct GaitShape {
     float strideM;       // per cycle

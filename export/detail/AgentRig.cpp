@@ -1,10 +1,20 @@
 #include "export/detail/AgentRig.h"
 
+#include <cmath>
+
 namespace throng::exporting::detail {
 
 namespace {
 
-std::vector<double> quat4(const glm::quat& q) { return {q.x, q.y, q.z, q.w}; }
+// Static TRS in micrometres and millionths: the JSON carries "0.97748", not
+// "0.97748005390167236", which for a 10,000-agent crowd is megabytes.
+double r6(double v) { return std::round(v * 1e6) / 1e6 + 0.0; }
+std::vector<double> vec3(const glm::vec3& v) { return {r6(v.x), r6(v.y), r6(v.z)}; }
+std::vector<double> quat4(const glm::quat& q)
+{
+    const glm::dquat d = glm::normalize(glm::dquat(q));
+    return {r6(d.x), r6(d.y), r6(d.z), r6(d.w)};
+}
 
 }  // namespace
 
@@ -18,10 +28,10 @@ AgentRig addAgentRig(tinygltf::Model& model, const Character& c, const Character
 
     tinygltf::Node root;
     root.name = spec.name;
-    root.translation = {spec.translation.x, spec.translation.y, spec.translation.z};
+    root.translation = vec3(spec.translation);
     root.rotation = quat4(spec.rotation);
     if (spec.heightScale != 1.0f)
-        root.scale = {spec.heightScale, spec.heightScale, spec.heightScale};
+        root.scale = vec3(glm::vec3(spec.heightScale));
     root.children = {rig.firstJoint};
     root.extras = spec.extras;
     model.nodes.push_back(std::move(root));
@@ -31,7 +41,7 @@ AgentRig addAgentRig(tinygltf::Model& model, const Character& c, const Character
         tinygltf::Node node;
         node.name = spec.name + "__" + joint.name;
         const glm::vec3 t = j == 0 ? firstPose.rootTranslation : joint.restTranslation;
-        node.translation = {t.x, t.y, t.z};
+        node.translation = vec3(t);
         node.rotation = quat4(firstPose.rotations[j]);
         if (joint.restScale != glm::vec3(1.0f))
             node.scale = {joint.restScale.x, joint.restScale.y, joint.restScale.z};

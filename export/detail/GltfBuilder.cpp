@@ -18,6 +18,7 @@ std::size_t GltfBuilder::append(const void* data, std::size_t bytes)
     std::vector<unsigned char>& buffer = m_model.buffers[0].data;
     const std::size_t offset = buffer.size();
     buffer.resize(offset + ((bytes + 3) & ~std::size_t(3)), 0);
+    m_bytes[static_cast<int>(m_use)] += (bytes + 3) & ~std::size_t(3);
     if (bytes > 0)
         std::memcpy(buffer.data() + offset, data, bytes);
     return offset;

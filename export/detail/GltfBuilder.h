@@ -19,6 +19,10 @@ public:
     explicit GltfBuilder(tinygltf::Model& model);
 
     tinygltf::Model& model() { return m_model; }
+    // What the bytes appended from now on are for, so an export can say where its size goes.
+    enum class Use { Geometry, Clocks, RootMotion, Joints, Count };
+    void setUse(Use use) { m_use = use; }
+    std::size_t bytesFor(Use use) const { return m_bytes[static_cast<int>(use)]; }
     // Appends `bytes` bytes (zero-padded to a multiple of 4) and returns their offset in the buffer.
     std::size_t append(const void* data, std::size_t bytes);
     int addView(std::size_t offset, std::size_t length, int stride, int target);
@@ -47,6 +51,8 @@ public:
 
 private:
     tinygltf::Model& m_model;
+    Use m_use = Use::Geometry;
+    std::size_t m_bytes[static_cast<int>(Use::Count)] = {};
     int m_animationView = -1;
     std::size_t m_animationStart = 0;
 };
