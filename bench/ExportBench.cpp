@@ -1,9 +1,10 @@
 // throng-bench-export: export time and size of skinned glTF crowds, exact and compact,
 // against a naive float bake of the same data. Prints one JSON object. Not a test.
 //
-// usage: throng-bench-export [OUT_DIR] [--quick]
+// usage: throng-bench-export [OUT_DIR] [--quick] [--only NAME]
 //   OUT_DIR (default: the system's temp folder) receives the .glb files, removed after.
 //   --quick: 200 agents x 120 frames only, to check the program runs.
+//   --only NAME: just that case (e.g. a10000_f240_compact).
 #include "export/GltfExporter.h"
 
 #include <chrono>
@@ -61,9 +62,13 @@ std::size_t naiveFloatAnimationBytes(std::size_t agents, std::size_t frames)
     return agents * frames * (12 + 16 + 17 * 16 + 12) + frames * 4;
 }
 
+std::string g_only;
+
 void run(const char* name, std::size_t agents, std::size_t frames, exporting::GltfMode mode, int jointStep,
          const std::filesystem::path& dir, bool& first)
 {
+    if (!g_only.empty() && g_only != name)
+        return;
     sim::Scene scene;
     sim::FrameCache cache;
     makeCrowd(agents, frames, scene, cache);
@@ -108,8 +113,10 @@ int main(int argc, char** argv)
         const std::string arg = argv[i];
         if (arg == "--quick")
             quick = true;
+        else if (arg == "--only" && i + 1 < argc)
+            g_only = argv[++i];
         else if (arg == "--help" || arg == "-h") {
-            std::printf("usage: throng-bench-export [OUT_DIR] [--quick]\n");
+            std::printf("usage: throng-bench-export [OUT_DIR] [--quick] [--only NAME]\n");
             return 0;
         } else
             dir = arg;

@@ -14,6 +14,7 @@
 
 #include <glm/common.hpp>
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <filesystem>
@@ -176,6 +177,17 @@ ExportResult exportGltf(const sim::Scene& scene, const sim::FrameCache& cache, c
 
     model.animations.emplace_back();
     model.animations[0].name = "crowd";
+    // tinygltf's types copy when a vector grows: size the big vectors once.
+    std::size_t maxJoints = 0;
+    for (std::size_t c = 0; c < library.characterCount(); ++c)
+        maxJoints = std::max(maxJoints, library.character(c).joints.size());
+    model.nodes.reserve(agents * (maxJoints + 2));
+    model.meshes.reserve(agents);
+    model.skins.reserve(agents);
+    model.accessors.reserve(agents * (maxJoints + 6) + 64);
+    model.scenes[0].nodes.reserve(2 * agents);
+    model.animations[0].samplers.reserve(agents * (maxJoints + 3));
+    model.animations[0].channels.reserve(agents * (maxJoints + 3));
     detail::AnimationChannels channels(builder, model.animations[0], pairClock);
     detail::CompactCycles cycles(builder, library);
 

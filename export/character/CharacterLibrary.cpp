@@ -47,11 +47,13 @@ std::string CharacterLibrary::resolve(const sim::Scene& scene, const std::string
         std::ptrdiff_t baseIndex = builtin(base);
         if (baseIndex < 0) {
             const std::filesystem::path file = std::filesystem::path(sceneDirectory.empty() ? "." : sceneDirectory) / base;
-            const std::string key = "file:" + file.lexically_normal().string();
+            const std::string key = "file:" + file.lexically_normal().string() + "#" + type.clips.idle + "," +
+                                    type.clips.walk + "," + type.clips.run;
             baseIndex = find(key);
             if (baseIndex < 0) {
                 std::string error;
-                std::optional<Character> loaded = loadCharacterFile(file.string(), ClipNames{}, error);
+                const ClipNames clips{type.clips.idle, type.clips.walk, type.clips.run};
+                std::optional<Character> loaded = loadCharacterFile(file.string(), clips, error);
                 if (!loaded)
                     return "agent type '" + type.name + "': " + error;
                 baseIndex = static_cast<std::ptrdiff_t>(add(std::move(*loaded), key));

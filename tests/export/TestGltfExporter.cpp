@@ -300,6 +300,22 @@ private slots:
         }
     }
 
+    // The same recording exports to the same bytes, in both modes.
+    void sameInputSameBytes()
+    {
+        const CrowdFixture fx = CrowdFixture::make();
+        QTemporaryDir dir;
+        for (exporting::GltfMode mode : {exporting::GltfMode::Exact, exporting::GltfMode::Compact}) {
+            QVERIFY(exportTo(fx, dir.filePath("a.glb"), {}, mode).ok());
+            QVERIFY(exportTo(fx, dir.filePath("b.glb"), {}, mode).ok());
+            QFile a(dir.filePath("a.glb")), b(dir.filePath("b.glb"));
+            QVERIFY(a.open(QIODevice::ReadOnly) && b.open(QIODevice::ReadOnly));
+            const QByteArray bytes = a.readAll();
+            QVERIFY(bytes.size() > 10000);
+            QVERIFY(bytes == b.readAll());
+        }
+    }
+
     void cancelLeavesNothing_data()
     {
         QTest::addColumn<QString>("name");

@@ -9,6 +9,7 @@
 #include "export/GltfExporter.h"
 #include "export/character/BuiltinCharacters.h"
 #include "export/character/UserCharacter.h"
+#include "simcore/io/SceneIO.h"
 
 #include <QFile>
 #include <QTemporaryDir>
@@ -86,6 +87,43 @@ private slots:
         QVERIFY(!c);
         QVERIFY2(error.find("no walk clip named 'Jog'") != std::string::npos, error.c_str());
         QVERIFY2(error.find("'Sprint'") != std::string::npos, error.c_str());  // lists what there is
+    }
+
+    // The scene file names the clips: `clips: {walk: ..., run: ...}` under the agent type
+    // reaches the loader, and survives a save and a load.
+    void sceneNamesTheClips()
+    {
+        QTemporaryDir dir;
+        std::string error;
+        test::CharacterFileSpec spec;
+        spec.clips = {"Loiter", "Amble", "Dash"};
+        QVERIFY2(test::writeCharacterFile(*makeBuiltinCharacter("man"), spec, dir.filePath("hero.glb").toStdString(), error),
+                 error.c_str());
+        const std::string yaml = "throng: 1\n"
+                                 "agent_types:\n"
+                                 "  - name: hero\n"
+                                 "    character: hero.glb\n"
+                                 "    clips: {idle: Loiter, walk: Amble, run: Dash}\n"
+                                 "agents:\n"
+                                 "  - {id: 1, type: hero, position: [0, 0, 0]}\n";
+        const sim::LoadResult loaded = sim::parseScene(yaml, "scene.yaml", dir.path().toStdString());
+        QVERIFY(loaded.ok());
+        const sim::CharacterClips& clips = loaded.scene.agentTypes.at(0).clips;
+        QCOMPARE(clips.walk, std::string("Amble"));
+        QCOMPARE(clips.run, std::string("Dash"));
+        const sim::LoadResult again = sim::parseScene(sim::sceneToYaml(loaded.scene), "scene.yaml", dir.path().toStdString());
+        QVERIFY(again.ok());
+        QCOMPARE(again.scene.agentTypes.at(0).clips, clips);
+
+        test::CrowdFixture fx = test::CrowdFixture::make();
+        fx.scene.agentTypes[0].character = "hero.glb";
+        GltfOptions options;
+        options.path = dir.filePath("crowd.glb").toStdString();
+        options.sceneDirectory = dir.path().toStdString();
+        QVERIFY(!exportGltf(fx.scene, fx.cache, options).ok());  // no clip is called walk
+        fx.scene.agentTypes[0].clips = clips;
+        const ExportResult result = exportGltf(fx.scene, fx.cache, options);
+        QVERIFY2(result.ok(), result.error.c_str());
     }
 
     void refusesBadFiles_data()
