@@ -168,6 +168,38 @@ private slots:
         QVERIFY2(error.find("missing.gltf") != std::string::npos, error.c_str());
     }
 
+    // A character a DCC tool exported (Blender, from Debian's minetest-data: 6 bones, clips
+    // Stand, Walk, Mine, ...) loads with Walk as walk, Stand as idle, and exports cleanly.
+    void loadsTheSharedSampleCharacter()
+    {
+        if (!QFile::exists(test::externalReaderPath("make-sample-character-glb")))
+            QSKIP("../shared/tools/make-sample-character-glb is not beside the repository");
+        QTemporaryDir dir;
+        const QString file = dir.filePath("sample.glb");
+        const test::ExternalReaderRun made = test::runExternalReader("make-sample-character-glb", {file});
+        if (made.exitCode == 2 || !QFile::exists(file))
+            QSKIP(qPrintable("no sample character on this machine: " + made.output.right(300)));
+        std::string error;
+        const std::optional<Character> c = loadCharacterFile(file.toStdString(), {}, error);
+        QVERIFY2(c, error.c_str());
+        QCOMPARE(c->joints.size(), std::size_t(6));
+        QCOMPARE(c->joints[0].name, std::string("Body"));
+        QVERIFY(c->walk.samples.size() >= 8);
+        QCOMPARE(c->idle.samples.size(), std::size_t(1));
+        QCOMPARE(checkCharacter(*c), std::string());
+        test::CrowdFixture fx = test::CrowdFixture::make();
+        fx.scene.agentTypes[0].character = "sample.glb";
+        GltfOptions options;
+        options.path = dir.filePath("crowd.glb").toStdString();
+        options.sceneDirectory = dir.path().toStdString();
+        const ExportResult result = exportGltf(fx.scene, fx.cache, options);
+        QVERIFY2(result.ok(), result.error.c_str());
+        if (QFile::exists(test::externalReaderPath("gltf-validate"))) {
+            const test::ExternalReaderRun run = test::runExternalReader("gltf-validate", {dir.filePath("crowd.glb")});
+            QVERIFY2(run.exitCode == 0 && run.summary["warnings"].toInt(-1) == 0, qPrintable(run.output));
+        }
+    }
+
     // A crowd wearing the file, found relative to the scene's folder, exports in both
     // modes and the Khronos validator finds nothing.
     void crowdWearsIt()
