@@ -44,7 +44,7 @@ struct GltfExportStats {
 // Nodes `agent_<id>_<type>` (AgentId, type name) in the cache's dense order: translation
 // (m) and rotation (about +Y by headingRad, the character's nose on +X) keyed from frame
 // f at f / fps, static scale = the agent's height scale; children `<agent>__<joint>`; a
-// scene-root node `<agent>__body` with the agent's own mesh entry and skin. One animation,
+// scene-root node `<agent>_body` with the agent's own mesh entry and skin. One animation,
 // "crowd". Rotations are normalised int16. Asset and scene extras carry generator
 // "Throng", fps, frameCount, agentCount, mode, seed; each root's extras its variation.
 // writtenPaths: {path} for .glb, {path, <stem>.bin} for .gltf (the .bin name keeps only

@@ -162,7 +162,7 @@ std::optional<Character> loadCharacterFile(const std::string& path, const ClipNa
     }
     c.mesh.inverseBindMatrices = ibm;
 
-    if (!sampleUserClips(model, c, jointOfNode, turn, clipNames, error)) {
+    if (!sampleUserClips(model, c, jointOfNode, clipNames, error)) {
         error = where + ": " + error;
         return std::nullopt;
     }

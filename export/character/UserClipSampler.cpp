@@ -155,7 +155,7 @@ bool readSkinnedMesh(const tinygltf::Model& model, const tinygltf::Node& node, c
 }
 
 bool sampleUserClips(const tinygltf::Model& model, Character& c, const std::map<int, int>& jointOfNode,
-                     const glm::mat4& turn, const ClipNames& names, std::string& error)
+                     const ClipNames& names, std::string& error)
 {
     std::vector<int> nodeOfJoint(c.joints.size(), -1);
     for (const auto& [node, joint] : jointOfNode)
@@ -178,7 +178,6 @@ bool sampleUserClips(const tinygltf::Model& model, Character& c, const std::map<
                                      glm::mat4_cast(c.joints[j].restRotation) * glm::scale(glm::mat4(1.0f), c.joints[j].restScale);
         prefix[j] = jointLocal * glm::inverse(restNodeLocal[j]);
     }
-    (void)turn;
 
     float lowY = 1e9f, highY = -1e9f;
     for (const glm::vec3& p : c.mesh.positions) {

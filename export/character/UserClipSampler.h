@@ -21,6 +21,6 @@ bool readSkinnedMesh(const tinygltf::Model& model, const tinygltf::Node& node, c
                      const std::map<int, int>& jointOfNode, CharacterMesh& mesh, std::string& error);
 // Fills idle, walk and run (see loadCharacterFile for the rules); false with error.
 bool sampleUserClips(const tinygltf::Model& model, Character& character, const std::map<int, int>& jointOfNode,
-                     const glm::mat4& turn, const ClipNames& names, std::string& error);
+                     const ClipNames& names, std::string& error);
 
 }  // namespace throng::exporting

@@ -69,7 +69,7 @@ AgentRig addAgentRig(tinygltf::Model& model, const Character& c, const Character
     model.skins.push_back(std::move(skin));
 
     tinygltf::Node bodyNode;
-    bodyNode.name = spec.name + "__body";
+    bodyNode.name = spec.name + "_body";
     bodyNode.mesh = static_cast<int>(model.meshes.size()) - 1;
     bodyNode.skin = static_cast<int>(model.skins.size()) - 1;
     model.nodes.push_back(std::move(bodyNode));

@@ -144,6 +144,34 @@ private slots:
         QCOMPARE(checked, 600);
     }
 
+    // three.js skins the compact file's shared-cycle windows to the same bodies as the
+    // exact bake for agents in a steady walk: skinned centroids within 5 mm.
+    void compactSkinsLikeExactInThree()
+    {
+        if (!QFile::exists(test::externalReaderPath("three-gltf-check")))
+            QSKIP("../shared/tools/three-gltf-check is not beside the repository");
+        const test::CrowdFixture fx = test::CrowdFixture::make();
+        QJsonObject centroids[2];
+        for (int compact = 0; compact < 2; ++compact) {
+            exporting::GltfOptions options;
+            options.path = m_dir.filePath(compact ? "steady-compact.glb" : "steady-exact.glb").toStdString();
+            options.mode = compact ? exporting::GltfMode::Compact : exporting::GltfMode::Exact;
+            QVERIFY(exporting::exportGltf(fx.scene, fx.cache, options).ok());
+            const test::ExternalReaderRun run = test::runExternalReader(
+                "three-gltf-check", {"--agent-regex", kAgentRegex, "--times", "0.5,1,1.5", QString::fromStdString(options.path)});
+            QVERIFY2(run.started && run.exitCode == 0, qPrintable(run.output.right(2000)));
+            centroids[compact] = run.summary["centroids"].toObject();
+        }
+        for (const char* body : {"agent_7_walker_body", "agent_1000_walker_body"}) {
+            for (const char* t : {"t=0.5", "t=1", "t=1.5"}) {
+                const QJsonArray a = centroids[0][body].toObject()[t].toArray(), b = centroids[1][body].toObject()[t].toArray();
+                QVERIFY2(a.size() == 3 && b.size() == 3, body);
+                const glm::vec3 d(a[0].toDouble() - b[0].toDouble(), a[1].toDouble() - b[1].toDouble(), a[2].toDouble() - b[2].toDouble());
+                QVERIFY2(glm::length(d) < 0.005f, qPrintable(QString("%1 %2: %3 m apart").arg(body, t).arg(glm::length(d))));
+            }
+        }
+    }
+
     void bigCrowdInThreeAndAssimp_data()
     {
         QTest::addColumn<bool>("compact");

@@ -26,7 +26,7 @@ using throng::test::CrowdFixture;
 
 namespace {
 
-// Agent roots only: not their joints (agent_7_walker__hips) nor bodies (agent_7_walker__body).
+// Agent roots only: not their joints (agent_7_walker__hips) nor bodies (agent_7_walker_body).
 const char* const kAgentRegex = "^agent_\\d+_[a-z]+$";
 
 exporting::ExportResult exportTo(const CrowdFixture& fx, const QString& path, const exporting::ProgressFn& progress = {},
@@ -88,8 +88,8 @@ private slots:
         QCOMPARE(model.nodes[n7].mesh, -1);
         QCOMPARE(model.nodes[n7].children, std::vector<int>{test::nodeNamed(model, "agent_7_walker__hips")});
         QVERIFY(test::nodeNamed(model, "agent_42_runner__foot_r") >= 0);
-        const int body7 = test::nodeNamed(model, "agent_7_walker__body");
-        const int body1000 = test::nodeNamed(model, "agent_1000_walker__body");
+        const int body7 = test::nodeNamed(model, "agent_7_walker_body");
+        const int body1000 = test::nodeNamed(model, "agent_1000_walker_body");
         QVERIFY(body7 >= 0 && body1000 >= 0);
         // Own mesh entries (assimp binds one skin per mesh), one set of vertex accessors.
         QCOMPARE(model.meshes.size(), std::size_t(3));
@@ -197,14 +197,14 @@ private slots:
         if (QTest::currentTestFailed())
             return;
         const tinygltf::Primitive& body =
-            model.meshes.at(model.nodes.at(test::nodeNamed(model, "agent_7_walker__body")).mesh).primitives.at(0);
+            model.meshes.at(model.nodes.at(test::nodeNamed(model, "agent_7_walker_body")).mesh).primitives.at(0);
         QVERIFY(body.attributes.count("NORMAL") && body.attributes.count("JOINTS_0") && body.attributes.count("WEIGHTS_0"));
         const tinygltf::Accessor& position = model.accessors.at(body.attributes.at("POSITION"));
         QVERIFY(std::abs(position.minValues[1]) < 0.02);
         QVERIFY2(position.maxValues[1] > 1.65 && position.maxValues[1] < 1.85, qPrintable(QString::number(position.maxValues[1])));
         QVERIFY(model.bufferViews.at(position.bufferView).byteStride > 0);  // interleaved
         const tinygltf::Primitive& runner =
-            model.meshes.at(model.nodes.at(test::nodeNamed(model, "agent_42_runner__body")).mesh).primitives.at(0);
+            model.meshes.at(model.nodes.at(test::nodeNamed(model, "agent_42_runner_body")).mesh).primitives.at(0);
         const std::vector<double> colour = model.materials.at(runner.material).pbrMetallicRoughness.baseColorFactor;
         QVERIFY(std::abs(colour[2] - 0.9) < 1e-6);
     }
