@@ -28,7 +28,7 @@ std::string usageText()
            "      --trajectories OUT.csv  write frame,agent,x,y,z,heading,speed,clip,phase rows\n"
            "      --export OUT.glb|.gltf  write the animated crowd as glTF 2.0 (skinned characters)\n"
            "      --export-mode exact|compact  bake every agent's joints (default), or share one\n"
-           "                              walk cycle per look (about 10x smaller; docs/export.md)\n"
+           "                              cycle per look (joint data ~13x smaller; docs/export.md)\n"
            "      --export-joint-step N   exact: bake joints every N-th frame (default 1)\n"
            "  bench [--agents N] [--steps S] [--scenario flock|cross|army|corridor] [--threads T]\n"
            "                              run a built-in scenario and print figures as JSON\n"
