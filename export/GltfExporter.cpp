@@ -182,6 +182,9 @@ ExportResult exportGltf(const sim::Scene& scene, const sim::FrameCache& cache, c
     for (std::size_t c = 0; c < library.characterCount(); ++c)
         maxJoints = std::max(maxJoints, library.character(c).joints.size());
     model.nodes.reserve(agents * (maxJoints + 2));
+    // The buffer's bound without key reduction: untouched capacity costs no memory, and
+    // the buffer never moves hundreds of megabytes to grow.
+    model.buffers[0].data.reserve(model.buffers[0].data.size() + (1u << 20) + agents * frames * (32 + 8 * maxJoints));
     model.meshes.reserve(agents);
     model.skins.reserve(agents);
     model.accessors.reserve(agents * (maxJoints + 6) + 64);

@@ -2,6 +2,7 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace throng::exporting::detail {
@@ -28,9 +29,21 @@ std::vector<std::uint32_t> greedy(std::size_t n, Fits&& fits)
 
 }  // namespace
 
+// A channel that holds still needs its ends only; checked in one pass, since the greedy
+// search costs a window's square on long still stretches.
+std::vector<std::uint32_t> endsOnly(std::size_t n)
+{
+    if (n <= 1)
+        return std::vector<std::uint32_t>(n, 0);
+    return {0, static_cast<std::uint32_t>(n - 1)};
+}
+
 std::vector<std::uint32_t> keepVec3Keys(std::span<const float> times, std::span<const glm::vec3> keys, float toleranceM)
 {
     const float tol2 = toleranceM * toleranceM;
+    // Within half the tolerance of the first key, every key is within it of the line between the ends.
+    if (std::all_of(keys.begin(), keys.end(), [&](const glm::vec3& k) { return glm::dot(k - keys[0], k - keys[0]) <= 0.25f * tol2; }))
+        return endsOnly(keys.size());
     return greedy(keys.size(), [&](std::size_t a, std::size_t c) {
         const float span = times[c] - times[a];
         for (std::size_t k = a + 1; k < c; ++k) {
@@ -48,6 +61,9 @@ std::vector<std::uint32_t> keepRotationKeys(std::span<const float> times, std::s
 {
     // |dot| of unit quaternions is the cosine of half the angle between them.
     const float minDot = std::cos(0.5f * toleranceRad);
+    const float stillDot = std::cos(0.25f * toleranceRad);
+    if (std::all_of(keys.begin(), keys.end(), [&](const glm::quat& k) { return std::abs(glm::dot(k, keys[0])) >= stillDot; }))
+        return endsOnly(keys.size());
     return greedy(keys.size(), [&](std::size_t a, std::size_t c) {
         const float span = times[c] - times[a];
         glm::quat end = keys[c];
