@@ -36,9 +36,12 @@ CompactPlan CompactCycles::plan(std::size_t character, std::span<const glm::vec3
     const double perMetre = samples / (static_cast<double>(cycle.strideM) * static_cast<double>(v.heightScale));
     for (std::size_t f = 1; f < positions.size(); ++f)
         at[f] = at[f - 1] + glm::length(glm::dvec3(positions[f]) - glm::dvec3(positions[f - 1])) * perMetre;
-    const auto first = static_cast<std::size_t>(std::ceil(at.front() - 1e-9));
-    const auto last = static_cast<std::size_t>(std::floor(at.back() + 1e-9));
-    if (last < first + 1)
+    // The window reaches one sample past each end of the agent's phase range, keyed at
+    // the first and last frame: between them and their neighbours the cycle runs a little
+    // fast, where holding the pose would let a planted foot slide with the body.
+    const auto first = static_cast<std::size_t>(std::floor(at.front() + 1e-9));
+    const auto last = static_cast<std::size_t>(std::ceil(at.back() - 1e-9));
+    if (last < first + 2)
         return p;
     p.clip = clip;
     p.first = first;
