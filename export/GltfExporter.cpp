@@ -9,6 +9,7 @@
 #include "export/detail/ExactBake.h"
 #include "export/detail/GltfBuilder.h"
 #include "export/detail/GltfFiles.h"
+#include "export/detail/KeyReduction.h"
 
 #include <tiny_gltf.h>
 
@@ -34,6 +35,18 @@ constexpr double kPalette[][3] = {{0.85, 0.33, 0.26}, {0.22, 0.55, 0.85}, {0.35,
                                   {0.92, 0.70, 0.20}, {0.60, 0.40, 0.78}, {0.25, 0.75, 0.75}};
 
 using detail::failedExport;
+
+// What one agent needs before it is written (see prepare() below).
+struct AgentWork {
+    std::vector<glm::vec3> positions;
+    std::vector<glm::quat> yaw;
+    AgentVariation variation;
+    std::size_t character = 0;
+    std::vector<GaitFrame> gait;
+    Pose firstPose;
+    std::vector<std::uint32_t> positionKept, yawKept;
+    detail::BakedJoints joints;  // exact mode
+};
 
 tinygltf::Value runExtras(const sim::FrameCache& cache, const GltfOptions& options, std::uint64_t seed)
 {
@@ -194,82 +207,98 @@ ExportResult exportGltf(const sim::Scene& scene, const sim::FrameCache& cache, c
     detail::AnimationChannels channels(builder, model.animations[0], pairClock);
     detail::CompactCycles cycles(builder, library);
 
-    std::vector<glm::vec3> positions(frames);
-    std::vector<float> speeds(frames);
-    std::vector<glm::quat> yaw(frames);
-    auto gather = [&](std::size_t i) {
-        for (std::size_t f = 0; f < frames; ++f) {
-            const sim::AgentFrame& a = cache.at(f, i);
-            positions[f] = a.position;
-            speeds[f] = a.speed;
-            // Rotation about +Y by the heading: the character's +X nose turns to (cos h, 0, -sin h).
-            const double half = 0.5 * static_cast<double>(a.headingRad);
-            yaw[f] = glm::quat(static_cast<float>(std::cos(half)), 0.0f, static_cast<float>(std::sin(half)), 0.0f);
-            if (f > 0 && glm::dot(yaw[f], yaw[f - 1]) < 0.0f)
-                yaw[f] = -yaw[f];
-        }
-    };
     auto variationOf = [&](std::size_t i) {
         const sim::AgentInfo& info = cache.agents()[i];
         const sim::AgentType& type = scene.agentTypes[info.typeIndex];
         return drawVariation(type.variation, seed, info.id, library.looksOf(info.typeIndex).size());
     };
-    auto characterOf = [&](std::size_t i, const AgentVariation& v) {
-        return library.looksOf(cache.agents()[i].typeIndex)[v.look];
+    // One agent's motion, gait and (exact) baked joints: pure, so blocks of agents run on
+    // all threads, and the model is then appended to in agent order, whatever the count.
+    auto prepare = [&](std::size_t i, AgentWork& w, bool bakeJoints) {
+        w.positions.resize(frames);
+        w.yaw.resize(frames);
+        std::vector<float> speeds(frames);
+        for (std::size_t f = 0; f < frames; ++f) {
+            const sim::AgentFrame& a = cache.at(f, i);
+            w.positions[f] = a.position;
+            speeds[f] = a.speed;
+            // Rotation about +Y by the heading: the character's +X nose turns to (cos h, 0, -sin h).
+            const double half = 0.5 * static_cast<double>(a.headingRad);
+            w.yaw[f] = glm::quat(static_cast<float>(std::cos(half)), 0.0f, static_cast<float>(std::sin(half)), 0.0f);
+            if (f > 0 && glm::dot(w.yaw[f], w.yaw[f - 1]) < 0.0f)
+                w.yaw[f] = -w.yaw[f];
+        }
+        w.variation = variationOf(i);
+        w.character = library.looksOf(cache.agents()[i].typeIndex)[w.variation.look];
+        const Character& character = library.character(w.character);
+        w.gait = computeGait(character, w.positions, speeds, w.variation);
+        w.firstPose = gaitPose(character, w.gait[0]);
+        if (!bakeJoints)
+            return;
+        w.positionKept = detail::keepVec3Keys(frameClock.times, w.positions, options.positionToleranceM);
+        w.yawKept = detail::keepRotationKeys(frameClock.times, w.yaw, options.rootRotationToleranceDeg * kDegToRad);
+        if (!compact)
+            w.joints = detail::bakeJoints(jointClock, character, w.gait, options.positionToleranceM,
+                                          options.rotationToleranceDeg * kDegToRad);
     };
+    auto forBlock = [&](std::size_t begin, std::size_t count, std::vector<AgentWork>& work, bool bakeJoints) {
+#pragma omp parallel for schedule(dynamic, 4)
+        for (std::ptrdiff_t k = 0; k < static_cast<std::ptrdiff_t>(count); ++k)
+            prepare(begin + static_cast<std::size_t>(k), work[static_cast<std::size_t>(k)], bakeJoints);
+    };
+    constexpr std::size_t kBlock = 256;
+    std::vector<AgentWork> work(kBlock);
 
     std::vector<detail::CompactPlan> plans;
     if (compact) {
         plans.reserve(agents);
         builder.setUse(detail::GltfBuilder::Use::Joints);
-        for (std::size_t i = 0; i < agents; ++i) {
-            gather(i);
-            const AgentVariation v = variationOf(i);
-            const std::size_t ci = characterOf(i, v);
-            const std::vector<GaitFrame> gait = computeGait(library.character(ci), positions, speeds, v);
-            plans.push_back(cycles.plan(ci, positions, gait, v, fps));
-            if (i % 256 == 0 && detail::cancelledAt(progress, 0.2f * static_cast<float>(i) / static_cast<float>(agents)))
+        for (std::size_t begin = 0; begin < agents; begin += kBlock) {
+            if (detail::cancelledAt(progress, 0.2f * static_cast<float>(begin) / static_cast<float>(agents)))
                 return detail::cancelledExport(options.path);
+            const std::size_t count = std::min(kBlock, agents - begin);
+            forBlock(begin, count, work, false);
+            for (std::size_t k = 0; k < count; ++k)
+                plans.push_back(cycles.plan(work[k].character, work[k].positions, work[k].gait, work[k].variation, fps));
         }
         cycles.writeBanks();
     }
 
-    const float first = compact ? 0.2f : 0.0f;
-    for (std::size_t i = 0; i < agents; ++i) {
-        if (i % 64 == 0 &&
-            detail::cancelledAt(progress, first + (0.8f - first) * static_cast<float>(i) / static_cast<float>(agents)))
+    const float start = compact ? 0.2f : 0.0f;
+    for (std::size_t begin = 0; begin < agents; begin += kBlock) {
+        if (detail::cancelledAt(progress, start + (0.8f - start) * static_cast<float>(begin) / static_cast<float>(agents)))
             return detail::cancelledExport(options.path);
-        gather(i);
-        const sim::AgentInfo& info = cache.agents()[i];
-        const sim::AgentType& type = scene.agentTypes[info.typeIndex];
-        const AgentVariation v = variationOf(i);
-        const std::size_t ci = characterOf(i, v);
-        const Character& character = library.character(ci);
-        if (!assets.count(ci)) {
-            builder.setUse(detail::GltfBuilder::Use::Geometry);
-            assets[ci] = detail::writeCharacterAssets(builder, character);
+        const std::size_t count = std::min(kBlock, agents - begin);
+        forBlock(begin, count, work, true);
+        for (std::size_t k = 0; k < count; ++k) {
+            const std::size_t i = begin + k;
+            const AgentWork& w = work[k];
+            const sim::AgentInfo& info = cache.agents()[i];
+            const sim::AgentType& type = scene.agentTypes[info.typeIndex];
+            const Character& character = library.character(w.character);
+            if (!assets.count(w.character)) {
+                builder.setUse(detail::GltfBuilder::Use::Geometry);
+                assets[w.character] = detail::writeCharacterAssets(builder, character);
+            }
+            detail::AgentRigSpec spec;
+            spec.name = "agent_" + std::to_string(info.id) + "_" + type.name;
+            spec.material = materialFor(model, materials, type, info.typeIndex, w.variation.tint);
+            spec.heightScale = w.variation.heightScale;
+            spec.translation = w.positions[0];
+            spec.rotation = w.yaw[0];
+            spec.extras = agentExtras(info, type.name, character, w.variation);
+            const detail::AgentRig rig = detail::addAgentRig(model, character, assets[w.character], spec, w.firstPose);
+
+            channels.nextAgent();
+            builder.setUse(detail::GltfBuilder::Use::RootMotion);
+            channels.vec3Channel(rig.root, "translation", frameClock, w.positions, w.positionKept);
+            channels.rotationChannel(rig.root, w.yaw, frameClock, w.yawKept);
+            builder.setUse(detail::GltfBuilder::Use::Joints);
+            if (compact)
+                cycles.bakeAgent(channels, plans[i], rig, pairClock.accessor);
+            else
+                detail::writeJoints(channels, jointClock, w.joints, rig);
         }
-        const std::vector<GaitFrame> gait = computeGait(character, positions, speeds, v);
-
-        detail::AgentRigSpec spec;
-        spec.name = "agent_" + std::to_string(info.id) + "_" + type.name;
-        spec.material = materialFor(model, materials, type, info.typeIndex, v.tint);
-        spec.heightScale = v.heightScale;
-        spec.translation = positions[0];
-        spec.rotation = yaw[0];
-        spec.extras = agentExtras(info, type.name, character, v);
-        const detail::AgentRig rig = detail::addAgentRig(model, character, assets[ci], spec, gaitPose(character, gait[0]));
-
-        channels.nextAgent();
-        builder.setUse(detail::GltfBuilder::Use::RootMotion);
-        channels.vec3Channel(rig.root, "translation", frameClock, positions, options.positionToleranceM);
-        channels.rotationChannel(rig.root, yaw, frameClock, options.rootRotationToleranceDeg * kDegToRad);
-        builder.setUse(detail::GltfBuilder::Use::Joints);
-        if (compact)
-            cycles.bakeAgent(channels, plans[i], rig, pairClock.accessor);
-        else
-            detail::bakeJointsExact(channels, jointClock, character, gait, rig, options.positionToleranceM,
-                                    options.rotationToleranceDeg * kDegToRad);
     }
     builder.endAnimationData();
     if (detail::cancelledAt(progress, 0.8f))

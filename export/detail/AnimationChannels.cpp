@@ -49,7 +49,17 @@ int AnimationChannels::inputFor(const Clock& clock, const std::vector<std::uint3
 void AnimationChannels::vec3Channel(int node, const char* path, const Clock& clock, std::span<const glm::vec3> keys,
                                     float toleranceM)
 {
-    const std::vector<std::uint32_t> kept = keepVec3Keys(clock.times, keys, toleranceM);
+    vec3Channel(node, path, clock, keys, keepVec3Keys(clock.times, keys, toleranceM));
+}
+
+void AnimationChannels::rotationChannel(int node, std::span<const glm::quat> keys, const Clock& clock, float toleranceRad)
+{
+    rotationChannel(node, keys, clock, keepRotationKeys(clock.times, keys, toleranceRad));
+}
+
+void AnimationChannels::vec3Channel(int node, const char* path, const Clock& clock, std::span<const glm::vec3> keys,
+                                    const std::vector<std::uint32_t>& kept)
+{
     bool subset = false;
     const int input = inputFor(clock, kept, sizeof(glm::vec3), subset);
     if (!subset) {
@@ -63,9 +73,9 @@ void AnimationChannels::vec3Channel(int node, const char* path, const Clock& clo
     addSampler(node, path, input, m_builder.addVec3Keys(values));
 }
 
-void AnimationChannels::rotationChannel(int node, std::span<const glm::quat> keys, const Clock& clock, float toleranceRad)
+void AnimationChannels::rotationChannel(int node, std::span<const glm::quat> keys, const Clock& clock,
+                                        const std::vector<std::uint32_t>& kept)
 {
-    const std::vector<std::uint32_t> kept = keepRotationKeys(clock.times, keys, toleranceRad);
     bool subset = false;
     const int input = inputFor(clock, kept, 8, subset);
     if (!subset) {

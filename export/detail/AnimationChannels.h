@@ -25,6 +25,11 @@ public:
     // Keys on `clock`, reduced within the tolerance (m or rad); rotations as int16.
     void vec3Channel(int node, const char* path, const Clock& clock, std::span<const glm::vec3> keys, float toleranceM);
     void rotationChannel(int node, std::span<const glm::quat> keys, const Clock& clock, float toleranceRad);
+    // The same with the keys to keep already chosen (KeyReduction), e.g. on worker threads.
+    void vec3Channel(int node, const char* path, const Clock& clock, std::span<const glm::vec3> keys,
+                     const std::vector<std::uint32_t>& kept);
+    void rotationChannel(int node, std::span<const glm::quat> keys, const Clock& clock,
+                         const std::vector<std::uint32_t>& kept);
     // A sampler of already-written input and output accessors.
     void addSampler(int node, const char* path, int input, int output);
     // Forgets the own-times accessors kept for reuse (call between agents).
