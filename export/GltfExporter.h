@@ -1,32 +1,57 @@
 #pragma once
-// Writes a run's recorded frames as one animated glTF 2.0 scene: one shared stand-in body
-// mesh per agent type, one node per agent, one "crowd" animation sharing one time
-// accessor. Reads Scene and FrameCache only; never simulates, never leaves partial files.
+// Writes a run's recorded frames as one animated glTF 2.0 scene of skinned characters:
+// per agent a root node with root motion, its own joints with baked (or, in compact mode,
+// shared) walk cycles, and its own mesh entry over the shared geometry. Reads Scene and
+// FrameCache only; never simulates, never leaves partial files.
 
 #include "export/ExportResult.h"
 #include "simcore/scene/Scene.h"
 #include "simcore/world/FrameCache.h"
 
+#include <cstdint>
+#include <optional>
 #include <string>
 
 namespace throng::exporting {
 
-struct GltfOptions {
-    std::string path;                         // ends in .glb: one binary file; else .gltf + .bin beside it
-    float bodyHeightPerRadius = 1.7f / 0.3f;  // stand-in body height = type radius x this, > 0
-    float maxBodyHeightM = 2.5f;              // caps it, so vehicle-sized radii stay plausible; m, > 0
-    bool prettyJson = true;                   // .gltf only: indented JSON
+enum class GltfMode {
+    Exact,    // every joint of every agent baked from its own gait, frame by frame
+    Compact,  // one stored cycle per look and clip; each agent a window into it (docs/export.md)
 };
 
-// Node `agent_<id>_<type>` per agent (AgentId, type name), in the cache's dense order, its
-// translation (m) and rotation (about +Y by AgentFrame::headingRad, body nose on +X)
-// keyed at time frame / fps for every recorded frame, starting at frame 0's pose.
-// Scene and asset extras carry generator "Throng", fps, frameCount and agentCount.
+struct GltfOptions {
+    std::string path;                    // ends in .glb: one binary file; else .gltf + .bin beside it
+    GltfMode mode = GltfMode::Exact;
+    std::string sceneDirectory;          // where relative character file paths are resolved; empty = cwd
+    std::optional<std::uint64_t> seed;   // variation seed; default: the scene's settings.seed
+    int jointFrameStep = 1;              // exact: bake joints every N-th frame (and the last), >= 1
+    float positionToleranceM = 0.0005f;  // keys this close to their interpolation are dropped, m, >= 0
+    float rotationToleranceDeg = 0.2f;   // joint rotations, degrees, >= 0
+    float rootRotationToleranceDeg = 0.05f;
+    bool prettyJson = false;             // .gltf only: indented JSON
+};
+
+// Where an export's bytes went (binary buffer only; the JSON is the file's remainder).
+struct GltfExportStats {
+    std::size_t fileBytes = 0;          // .glb, or .gltf + .bin
+    std::size_t geometryBytes = 0;      // meshes, skins' inverse bind matrices
+    std::size_t clockBytes = 0;         // the shared time accessors
+    std::size_t rootMotionBytes = 0;    // agents' root translation and rotation keys
+    std::size_t jointBytes = 0;         // joint animation: baked keys, or cycle banks and agents' time maps
+    std::size_t animationKeys = 0;      // output elements of all samplers, shared windows counted once per agent
+};
+
+// Nodes `agent_<id>_<type>` (AgentId, type name) in the cache's dense order: translation
+// (m) and rotation (about +Y by headingRad, the character's nose on +X) keyed from frame
+// f at f / fps, static scale = the agent's height scale; children `<agent>__<joint>`; a
+// scene-root node `<agent>_body` with the agent's own mesh entry and skin. One animation,
+// "crowd". Rotations are normalised int16. Asset and scene extras carry generator
+// "Throng", fps, frameCount, agentCount, mode, seed; each root's extras its variation.
 // writtenPaths: {path} for .glb, {path, <stem>.bin} for .gltf (the .bin name keeps only
-// [A-Za-z0-9._~-], others become '_', so its URI needs no escaping).
-// Errors (naming the file): empty cache, an agent type index the scene lacks, a .glb over
-// 4 GiB, any I/O failure. Files go to temporaries beside the target and are renamed in.
+// [A-Za-z0-9._~-], others become '_'). Errors name the file: empty cache, an agent type
+// index the scene lacks, a character that cannot be built or loaded, a .glb over 4 GiB,
+// any I/O failure. Files go to temporaries beside the target and are renamed in.
 ExportResult exportGltf(const sim::Scene& scene, const sim::FrameCache& cache, const GltfOptions& options,
-                        const ProgressFn& progress = {});
+                        const ProgressFn& progress = {}, GltfExportStats* stats = nullptr);
 
 }  // namespace throng::exporting

@@ -9,6 +9,10 @@ packages=(g++ cmake ninja-build pkg-config
           libgl-dev libgl1-mesa-dri libglx-mesa0)
 if [ "${1:-build}" = test ]; then
   packages+=(xvfb xauth)
+  # The external glTF readers the export tests run (../shared/tools): the Khronos
+  # validator and three.js need node and npm, assimp-info-check assimp, the Blender
+  # import check Blender with numpy.
+  packages+=(nodejs npm assimp-utils blender python3-numpy)
 fi
 
 missing=()

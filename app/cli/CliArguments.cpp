@@ -26,7 +26,10 @@ std::string usageText()
            "      --threads T             worker threads (default: all cores)\n"
            "      --stats OUT.json        write the run's figures as JSON\n"
            "      --trajectories OUT.csv  write frame,agent,x,y,z,heading,speed,clip,phase rows\n"
-           "      --export OUT.glb|.gltf  write the animated crowd as glTF 2.0\n"
+           "      --export OUT.glb|.gltf  write the animated crowd as glTF 2.0 (skinned characters)\n"
+           "      --export-mode exact|compact  bake every agent's joints (default), or share one\n"
+           "                              cycle per look (joint data ~13x smaller; docs/export.md)\n"
+           "      --export-joint-step N   exact: bake joints every N-th frame (default 1)\n"
            "  bench [--agents N] [--steps S] [--scenario flock|cross|army|corridor] [--threads T]\n"
            "                              run a built-in scenario and print figures as JSON\n"
            "\n"
@@ -87,6 +90,14 @@ ParseOutcome parseArguments(const std::vector<std::string>& argv)
         } else if (arg == "--stats") value(a.statsPath);
         else if (arg == "--trajectories") value(a.trajectoriesPath);
         else if (arg == "--export") value(a.exportPath);
+        else if (arg == "--export-mode") {
+            if (value(a.exportMode) && a.exportMode != "exact" && a.exportMode != "compact")
+                out.error = "--export-mode is exact or compact, got '" + a.exportMode + "'";
+        } else if (arg == "--export-joint-step") {
+            count(a.exportJointStep, false);
+            if (a.exportJointStep && *a.exportJointStep > 1000)
+                out.error = "--export-joint-step must be at most 1000";
+        }
         else if (arg == "--scenario") value(a.scenario);
         else if (arg.size() > 1 && arg[0] == '-') out.error = "unknown option '" + arg + "'";
         else positional.push_back(arg);
@@ -113,8 +124,9 @@ ParseOutcome parseArguments(const std::vector<std::string>& argv)
         out.error = "unknown command '" + a.command + "'";
     }
     if (out.error.empty() && a.command != "run" &&
-        (!a.statsPath.empty() || !a.trajectoriesPath.empty() || !a.exportPath.empty() || a.frames))
-        out.error = "--frames, --stats, --trajectories and --export belong to 'run'";
+        (!a.statsPath.empty() || !a.trajectoriesPath.empty() || !a.exportPath.empty() || a.frames ||
+         !a.exportMode.empty() || a.exportJointStep))
+        out.error = "--frames, --stats, --trajectories and --export options belong to 'run'";
     return out;
 }
 

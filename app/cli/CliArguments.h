@@ -15,6 +15,8 @@ struct CliArguments {
     std::optional<std::uint64_t> frames, seed, agents, steps;
     int threads = 0;
     std::string statsPath, trajectoriesPath, exportPath, scenario;
+    std::string exportMode;                        // exact | compact; empty = exact
+    std::optional<std::uint64_t> exportJointStep;  // >= 1
     bool quiet = false;
     bool json = false;  // check: diagnostics as JSON lines
 };

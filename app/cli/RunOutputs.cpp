@@ -4,6 +4,7 @@
 #include "export/TrajectoryCsv.h"
 #include "simcore/io/SceneIO.h"
 
+#include <filesystem>
 #include <ostream>
 
 namespace throng::cli {
@@ -27,6 +28,11 @@ bool writeRunOutputs(const CliArguments& args, const sim::Scene& scene, const si
     if (!args.exportPath.empty()) {
         exporting::GltfOptions options;
         options.path = args.exportPath;
+        options.mode = args.exportMode == "compact" ? exporting::GltfMode::Compact : exporting::GltfMode::Exact;
+        options.sceneDirectory = std::filesystem::path(args.scene).parent_path().string();
+        options.seed = args.seed;
+        if (args.exportJointStep)
+            options.jointFrameStep = static_cast<int>(*args.exportJointStep);
         const exporting::ExportResult r = exporting::exportGltf(scene, cache, options);
         std::string written;
         for (const std::string& p : r.writtenPaths)

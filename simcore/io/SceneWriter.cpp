@@ -98,6 +98,14 @@ void writeAgentTypes(Writer& w, const Scene& s)
         w.kvf("view_angle", t.viewAngleDeg);
         w.kvOpt("brain", t.brain);
         w.kvOpt("character", t.character);
+        if (t.clips != CharacterClips{}) {
+            w.key("clips");
+            o << YAML::BeginMap;
+            w.kvOpt("idle", t.clips.idle);
+            w.kvOpt("walk", t.clips.walk);
+            w.kvOpt("run", t.clips.run);
+            o << YAML::EndMap;
+        }
         w.key("variation");
         o << YAML::BeginMap;
         if (!t.variation.looks.empty()) {

@@ -35,6 +35,12 @@ struct Variation {
     bool operator==(const Variation&) const = default;
 };
 
+// Names of a character file's clips to use; empty = found by name (idle/stand, walk, run).
+struct CharacterClips {
+    std::string idle, walk, run;
+    bool operator==(const CharacterClips&) const = default;
+};
+
 struct BehaviourWeight {
     std::string behaviour;           // one of behaviourNames()
     float weight = 1.0f;             // >= 0
@@ -53,6 +59,7 @@ struct AgentType {
     float viewAngleDeg = 270.0f;// perception cone, full angle in degrees, (0, 360]
     std::string brain;          // name of a brain in Scene::brains, empty = none
     std::string character;      // built-in character name or a .glb/.gltf path
+    CharacterClips clips;       // a character file's clips for idle, walk and run
     Variation variation;
     std::vector<BehaviourWeight> behaviours;  // empty = the defaults for the kind
     bool priorityCombination = false;         // prioritised allocation instead of weighted blending

@@ -73,4 +73,38 @@ CrowdFixture CrowdFixture::make()
     return fixture;
 }
 
+CrowdFixture CrowdFixture::makeCrowd(std::size_t agents, std::size_t frames)
+{
+    CrowdFixture fixture;
+    sim::AgentType walker;
+    walker.name = "walker";
+    walker.variation.looks = {"man", "woman", "tall_man", "child"};
+    walker.variation.tints = {{0.8f, 0.25f, 0.2f}, {0.2f, 0.45f, 0.8f}, {0.9f, 0.75f, 0.3f}};
+    walker.variation.heightScale = {0.92f, 1.08f};
+    fixture.scene.agentTypes = {walker};
+    fixture.scene.settings.fps = kFps;
+    std::vector<sim::AgentInfo> infos;
+    for (std::size_t i = 0; i < agents; ++i)
+        infos.push_back({static_cast<sim::AgentId>(i + 1), 0});
+    fixture.cache.reset(infos, kFps);
+    const float paces[] = {0.0f, 0.8f, 1.3f, 2.4f, 3.6f};
+    const auto side = static_cast<std::size_t>(std::ceil(std::sqrt(static_cast<double>(agents))));
+    std::vector<sim::AgentFrame> frame(agents);
+    for (std::size_t f = 0; f < frames; ++f) {
+        for (std::size_t i = 0; i < agents; ++i) {
+            const float heading = 0.37f * static_cast<float>(i);
+            const float pace = paces[i % std::size(paces)];
+            const bool stops = i % 3 == 0 && f > frames / 2;
+            const float t = static_cast<float>(stops ? frames / 2 : f) / kFps;
+            sim::AgentFrame& a = frame[i];
+            a.position = glm::vec3(2.0f * static_cast<float>(i % side), 0.0f, 2.0f * static_cast<float>(i / side)) +
+                         pace * t * glm::vec3(std::cos(heading), 0.0f, -std::sin(heading));
+            a.headingRad = heading;
+            a.speed = stops ? 0.0f : pace;
+        }
+        fixture.cache.append(frame);
+    }
+    return fixture;
+}
+
 }  // namespace throng::test

@@ -21,6 +21,10 @@ struct CrowdFixture {
     sim::FrameCache cache; // agents 7 (walker, +x), 42 (runner, -z), 1000 (walker, +x+z, climbing)
 
     static CrowdFixture make();
+    // A big synthetic crowd of one type "walker" wearing the four humanoid looks: agents
+    // on a 2 m grid, each its own heading and pace (standing, strolling, walking, jogging,
+    // running), every third stopping half-way. Deterministic.
+    static CrowdFixture makeCrowd(std::size_t agents, std::size_t frames);
     // Where dense agent `agent` truly is at `frame`: start + velocity * frame / fps.
     static glm::vec3 truePosition(std::size_t agent, std::size_t frame);
     // Its direction of travel on the ground, unit length (x, 0, z).

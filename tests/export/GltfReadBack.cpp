@@ -1,5 +1,8 @@
 #include "GltfReadBack.h"
 
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <cstring>
 
 namespace throng::test {
@@ -21,17 +24,63 @@ bool loadGltf(const std::string& path, tinygltf::Model& model, std::string& erro
 std::vector<float> accessorFloats(const tinygltf::Model& model, int accessorIndex)
 {
     const tinygltf::Accessor& accessor = model.accessors.at(accessorIndex);
-    if (accessor.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT)
+    const bool isFloat = accessor.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT;
+    const bool isShort = accessor.componentType == TINYGLTF_COMPONENT_TYPE_SHORT && accessor.normalized;
+    if (!isFloat && !isShort)
         return {};
     const tinygltf::BufferView& view = model.bufferViews.at(accessor.bufferView);
     const tinygltf::Buffer& buffer = model.buffers.at(view.buffer);
     const std::size_t components = tinygltf::GetNumComponentsInType(accessor.type);
-    const std::size_t stride = view.byteStride ? view.byteStride : components * sizeof(float);
+    const std::size_t size = isFloat ? sizeof(float) : sizeof(std::int16_t);
+    const std::size_t stride = view.byteStride ? view.byteStride : components * size;
     std::vector<float> values(accessor.count * components);
     for (std::size_t i = 0; i < accessor.count; ++i)
-        std::memcpy(&values[i * components], buffer.data.data() + view.byteOffset + accessor.byteOffset + i * stride,
-                    components * sizeof(float));
+        for (std::size_t c = 0; c < components; ++c) {
+            const unsigned char* p = buffer.data.data() + view.byteOffset + accessor.byteOffset + i * stride + c * size;
+            if (isFloat) {
+                std::memcpy(&values[i * components + c], p, sizeof(float));
+            } else {
+                std::int16_t v;
+                std::memcpy(&v, p, sizeof v);
+                values[i * components + c] = std::max(-1.0f, static_cast<float>(v) / 32767.0f);
+            }
+        }
     return values;
+}
+
+std::vector<float> evaluateChannel(const tinygltf::Model& model, int node, const std::string& path, float t)
+{
+    const tinygltf::AnimationSampler* sampler = samplerFor(model, node, path);
+    if (!sampler)
+        return {};
+    const std::vector<float> times = accessorFloats(model, sampler->input);
+    const std::vector<float> values = accessorFloats(model, sampler->output);
+    const std::size_t n = values.size() / times.size();
+    std::size_t hi = std::upper_bound(times.begin(), times.end(), t) - times.begin();
+    if (hi == 0)
+        return {values.begin(), values.begin() + n};
+    if (hi == times.size())
+        return {values.end() - n, values.end()};
+    const std::size_t lo = hi - 1;
+    const float u = (t - times[lo]) / (times[hi] - times[lo]);
+    float sign = 1.0f;
+    if (n == 4) {
+        float dot = 0.0f;
+        for (std::size_t c = 0; c < 4; ++c)
+            dot += values[lo * 4 + c] * values[hi * 4 + c];
+        sign = dot < 0.0f ? -1.0f : 1.0f;
+    }
+    std::vector<float> out(n);
+    for (std::size_t c = 0; c < n; ++c)
+        out[c] = values[lo * n + c] + (sign * values[hi * n + c] - values[lo * n + c]) * u;
+    if (n == 4) {
+        float len = 0.0f;
+        for (float v : out)
+            len += v * v;
+        for (float& v : out)
+            v /= std::sqrt(len);
+    }
+    return out;
 }
 
 const tinygltf::AnimationSampler* samplerFor(const tinygltf::Model& model, int node, const std::string& path)

@@ -12,10 +12,13 @@ namespace throng::test {
 
 // Loads .glb or .gltf by extension; false with `error` set when tinygltf refuses it.
 bool loadGltf(const std::string& path, tinygltf::Model& model, std::string& error);
-// Every float of a FLOAT accessor, tightly packed (count x components).
+// Every value of a FLOAT or normalised SHORT accessor as float, tightly packed (count x components).
 std::vector<float> accessorFloats(const tinygltf::Model& model, int accessor);
 // The sampler of the first animation's channel targeting `node`'s `path`, or nullptr.
 const tinygltf::AnimationSampler* samplerFor(const tinygltf::Model& model, int node, const std::string& path);
+// The value of `node`'s `path` channel at time t (s), interpolated linearly (rotations:
+// normalised, the short way), as a reader would; empty when there is no such channel.
+std::vector<float> evaluateChannel(const tinygltf::Model& model, int node, const std::string& path, float t);
 // Index of the node named `name`, or -1.
 int nodeNamed(const tinygltf::Model& model, const std::string& name);
 

@@ -223,7 +223,7 @@ void SceneReader::readAgentTypes(const YAML::Node& node, Scene& scene)
         if (!m_f.expectMap(item, key))
             continue;
         m_f.checkKeys(item, key, {"name", "kind", "radius", "max_speed", "max_force", "mass", "perception",
-                                  "view_angle", "brain", "character", "variation", "behaviours", "combination",
+                                  "view_angle", "brain", "character", "clips", "variation", "behaviours", "combination",
                                   "min_speed", "banking"});
         AgentType t;
         if (!m_f.readName(item, "name", key, t.name, true))
@@ -262,6 +262,12 @@ void SceneReader::readAgentTypes(const YAML::Node& node, Scene& scene)
             else if (isFile && !std::filesystem::exists(resolvePath(m_baseDir, t.character)))
                 m_f.error(item["character"].Mark(), key + ".character",
                           "character file '" + resolvePath(m_baseDir, t.character) + "' does not exist");
+        }
+        if (YAML::Node c = item["clips"]; c.IsDefined() && m_f.expectMap(c, key + ".clips")) {
+            m_f.checkKeys(c, key + ".clips", {"idle", "walk", "run"});
+            m_f.readString(c, "idle", key + ".clips", t.clips.idle, false);
+            m_f.readString(c, "walk", key + ".clips", t.clips.walk, false);
+            m_f.readString(c, "run", key + ".clips", t.clips.run, false);
         }
         if (YAML::Node v = item["variation"]; v.IsDefined())
             readVariation(v, key + ".variation", t.variation);

@@ -1,0 +1,26 @@
+#pragma once
+// How one agent differs from the others of its type: look, tint, height, speed, gait phase.
+// Drawn from a counter-based hash of (seed, agent id), so it is the same on every run and
+// thread count and independent of the order agents are visited. Never stores state.
+
+#include "simcore/scene/Scene.h"
+
+#include <cstddef>
+#include <cstdint>
+
+namespace throng::exporting {
+
+struct AgentVariation {
+    std::size_t look = 0;      // index into the type's looks (0 when it has one)
+    int tint = -1;             // index into Variation::tints, -1 = untinted
+    float heightScale = 1.0f;  // uniform scale of the whole character, > 0
+    float speedFactor = 1.0f;  // the simulation's per-agent speed factor, > 0
+    float phaseOffset = 0.0f;  // gait cycles added at frame 0, in [0, 1]
+};
+
+// speedFactor and phaseOffset use the simulation's own draws (World), so the exported gait
+// agrees with the recorded run; look, tint and height come from export streams.
+AgentVariation drawVariation(const sim::Variation& variation, std::uint64_t seed, std::uint32_t agentId,
+                             std::size_t lookCount);
+
+}  // namespace throng::exporting

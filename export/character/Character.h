@@ -1,0 +1,73 @@
+#pragma once
+// A rigged character as plain data: skeleton, one skinned mesh, and looping clips stored
+// as joint poses sampled evenly over one cycle. Built by code or loaded from a file;
+// never writes files and never knows which agent wears it.
+
+#include <glm/gtc/quaternion.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace throng::exporting {
+
+struct Joint {
+    std::string name;
+    int parent = -1;                  // index of an earlier joint, -1 for the skeleton root (joint 0)
+    glm::vec3 restTranslation{0.0f};  // local, m
+    glm::quat restRotation{1.0f, 0.0f, 0.0f, 0.0f};
+    glm::vec3 restScale{1.0f};
+};
+
+// Indexed triangles in bind space (the agent root's space: feet at y = 0, facing +X, up +Y).
+struct CharacterMesh {
+    std::vector<glm::vec3> positions;                 // m
+    std::vector<glm::vec3> normals;                   // unit length
+    std::vector<std::array<std::uint16_t, 4>> joints; // influence joints; unused slots are 0
+    std::vector<glm::vec4> weights;                   // sum to 1 in float32; unused slots are 0
+    std::vector<std::uint32_t> indices;               // counter-clockwise seen from outside
+    std::vector<glm::mat4> inverseBindMatrices;       // one per joint
+};
+
+// One pose: every joint's local rotation (absolute, not relative to rest) and the local
+// translation of joint 0 (the hips bob; other joints keep their rest translation).
+struct Pose {
+    std::vector<glm::quat> rotations;
+    glm::vec3 rootTranslation{0.0f};
+};
+
+// A looping clip: `samples` poses evenly spaced over one cycle (sample k at phase k / n).
+struct CycleClip {
+    std::string name;
+    float strideM = 1.0f;  // distance the character covers in one cycle at scale 1, m, > 0
+    std::vector<Pose> samples;
+};
+
+struct Character {
+    std::string name;
+    std::vector<Joint> joints;  // joint 0 is the root of the skeleton
+    CharacterMesh mesh;
+    CycleClip idle, walk, run;  // idle is one pose held still; walk and run loop
+    bool hasIdle = true;        // false: a stopped agent holds the moving clip (wheels, wings)
+    // Speeds (m/s at scale 1) the gait blends between: idle below idleSpeed, all walk from
+    // walkSpeed, walk turning into run between runStartSpeed and runSpeed.
+    float idleSpeed = 0.05f, walkSpeed = 0.4f, runStartSpeed = 2.2f, runSpeed = 3.0f;
+};
+
+// The pose of `clip` at `phase` cycles (any real; wraps), interpolating neighbouring samples.
+Pose sampleClip(const CycleClip& clip, double phase);
+// Joint by joint: rotations nlerp'd in the shorter arc, root translations lerp'd; t in [0, 1].
+Pose blendPoses(const Pose& a, const Pose& b, float t);
+// Each joint's transform in the character's space for `pose` (rest translation, pose rotation).
+std::vector<glm::mat4> jointGlobalTransforms(const Character& character, const Pose& pose);
+// The rest pose: rest rotations and the rest translation of joint 0.
+Pose restPose(const Character& character);
+// Inverse bind matrices of the rest pose, in the character's space.
+std::vector<glm::mat4> restInverseBindMatrices(const std::vector<Joint>& joints);
+// Empty when the character is consistent; else what is wrong (joint order, weights, sizes).
+std::string checkCharacter(const Character& character);
+
+}  // namespace throng::exporting

@@ -1,0 +1,22 @@
+#pragma once
+// Writes one character's geometry once (interleaved vertices with byteStride, joints,
+// indices, inverse bind matrices) and hands back the accessors every agent wearing it
+// shares. Never writes per-agent data.
+
+#include "export/character/Character.h"
+#include "export/detail/GltfBuilder.h"
+
+#include <map>
+#include <string>
+
+namespace throng::exporting::detail {
+
+struct CharacterAccessors {
+    std::map<std::string, int> attributes;  // POSITION, NORMAL, WEIGHTS_0, JOINTS_0
+    int indices = -1;
+    int inverseBindMatrices = -1;
+};
+
+CharacterAccessors writeCharacterAssets(GltfBuilder& builder, const Character& character);
+
+}  // namespace throng::exporting::detail

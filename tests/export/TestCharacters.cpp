@@ -1,0 +1,238 @@
+// Throng's own characters are well-formed rigs whose clips do what a user would check by
+// eye: feet stay put on the ground while the body walks or runs over them, walk turns
+// into run with speed and into idle at a stop, car wheels roll with the road, birds flap.
+#include "TestRegistry.h"
+
+#include "export/character/BuiltinCharacters.h"
+#include "export/character/Gait.h"
+
+#include <QTest>
+
+#include <glm/gtc/quaternion.hpp>
+#include <glm/mat4x4.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+using namespace throng;
+using namespace throng::exporting;
+
+namespace {
+
+Character builtin(const char* name)
+{
+    std::optional<Character> c = makeBuiltinCharacter(name);
+    return c ? *c : Character{};
+}
+
+int jointNamed(const Character& c, const char* name)
+{
+    for (std::size_t j = 0; j < c.joints.size(); ++j)
+        if (c.joints[j].name == name)
+            return static_cast<int>(j);
+    return -1;
+}
+
+// World position of joint `j` for an agent at `root` facing +X, scaled by `scale`.
+glm::vec3 jointWorld(const Character& c, const Pose& pose, int j, glm::vec3 root, float scale)
+{
+    return root + scale * glm::vec3(jointGlobalTransforms(c, pose)[static_cast<std::size_t>(j)][3]);
+}
+
+float maxHeight(const Character& c)
+{
+    float y = -1e9f;
+    for (const glm::vec3& p : c.mesh.positions)
+        y = std::max(y, p.y);
+    return y;
+}
+
+}  // namespace
+
+class TestCharacters : public QObject {
+    Q_OBJECT
+
+private slots:
+    void builtinsAreWellFormed_data()
+    {
+        QTest::addColumn<QString>("name");
+        QTest::addColumn<int>("joints");
+        for (const char* n : {"man", "woman", "tall_man", "child"})
+            QTest::newRow(n) << n << 17;
+        QTest::newRow("car") << "car" << 5;
+        QTest::newRow("bird") << "bird" << 7;
+    }
+
+    // Consistent rigs; every vertex's weights sum to exactly 1 in float32, and unused
+    // influence slots name joint 0 with weight 0 (what the Khronos validator demands).
+    void builtinsAreWellFormed()
+    {
+        QFETCH(QString, name);
+        QFETCH(int, joints);
+        const Character c = builtin(qPrintable(name));
+        QCOMPARE(checkCharacter(c), std::string());
+        QCOMPARE(static_cast<int>(c.joints.size()), joints);
+        for (std::size_t v = 0; v < c.mesh.weights.size(); ++v) {
+            const glm::vec4 w = c.mesh.weights[v];
+            QCOMPARE(w.x + w.y + w.z + w.w, 1.0f);
+            for (int k = 0; k < 4; ++k)
+                if (w[k] == 0.0f)
+                    QCOMPARE(int(c.mesh.joints[v][k]), 0);
+        }
+        QVERIFY(c.walk.strideM > 0.0f && c.run.strideM > 0.0f);
+        QVERIFY(c.walk.samples.size() >= 8);
+        QVERIFY(!makeBuiltinCharacter("zombie"));
+    }
+
+    // The humanoid skeleton has the joints the issue lists; looks differ in size, and the
+    // child wears a hat (extra geometry on the head).
+    void humanoidLooks()
+    {
+        const Character man = builtin("man"), woman = builtin("woman"), tall = builtin("tall_man"), child = builtin("child");
+        for (const char* j : {"hips", "spine", "chest", "neck", "head", "upper_arm_l", "lower_arm_l", "hand_l",
+                              "upper_arm_r", "lower_arm_r", "hand_r", "upper_leg_l", "lower_leg_l", "foot_l",
+                              "upper_leg_r", "lower_leg_r", "foot_r"})
+            QVERIFY2(jointNamed(man, j) >= 0, j);
+        QVERIFY(std::abs(maxHeight(man) - 1.75f) < 0.08f);
+        QVERIFY(maxHeight(tall) > maxHeight(man) + 0.1f);
+        QVERIFY(maxHeight(woman) < maxHeight(man));
+        QVERIFY(maxHeight(child) < 1.3f);
+        auto headVertices = [](const Character& c) {
+            return std::count_if(c.mesh.joints.begin(), c.mesh.joints.end(), [](const auto& j) { return j[0] == kHead; });
+        };
+        QVERIFY(headVertices(child) > headVertices(man) + 40);
+        QVERIFY(man.mesh.positions.size() != woman.mesh.positions.size());  // skirt and hair
+    }
+
+    void feetStayPlanted_data()
+    {
+        QTest::addColumn<QString>("name");
+        QTest::addColumn<float>("speed");
+        QTest::addColumn<float>("heightScale");
+        QTest::newRow("man walking") << "man" << 1.3f << 1.0f;
+        QTest::newRow("tall man walking, scaled") << "tall_man" << 1.5f << 1.08f;
+        QTest::newRow("child walking") << "child" << 0.8f << 0.95f;
+        QTest::newRow("man running") << "man" << 3.6f << 1.0f;
+        QTest::newRow("woman running, scaled") << "woman" << 3.6f << 0.92f;
+    }
+
+    // An agent walks or runs straight on at constant speed for 3 s. Whenever a foot is down
+    // (within 3 mm of its lowest point) it stays within 1 cm of where it touched down,
+    // and feet are down a fair share of the time, so the check cannot pass vacuously.
+    void feetStayPlanted()
+    {
+        QFETCH(QString, name);
+        QFETCH(float, speed);
+        QFETCH(float, heightScale);
+        const Character c = builtin(qPrintable(name));
+        constexpr float kFps = 60.0f;
+        const std::size_t frames = 180;
+        std::vector<glm::vec3> positions(frames);
+        std::vector<float> speeds(frames, speed);
+        for (std::size_t f = 0; f < frames; ++f)
+            positions[f] = {speed * static_cast<float>(f) / kFps, 0.0f, 0.0f};
+        AgentVariation v;
+        v.heightScale = heightScale;
+        v.phaseOffset = 0.37f;
+        const std::vector<GaitFrame> gait = computeGait(c, positions, speeds, v);
+        QVERIFY(gait.back().moveWeight == 1.0f);
+        QVERIFY(gait.back().runWeight == 0.0f || gait.back().runWeight == 1.0f);  // one clip, no blend
+        for (const char* footName : {"foot_l", "foot_r"}) {
+            const int foot = jointNamed(c, footName);
+            std::vector<glm::vec3> world(frames);
+            for (std::size_t f = 0; f < frames; ++f)
+                world[f] = jointWorld(c, gaitPose(c, gait[f]), foot, positions[f], heightScale);
+            float lowest = 1e9f;
+            for (const glm::vec3& p : world)
+                lowest = std::min(lowest, p.y);
+            std::size_t planted = 0;
+            float worstSlideM = 0.0f;
+            glm::vec3 touchdown(0.0f);
+            for (std::size_t f = 0; f < frames; ++f) {
+                const bool down = world[f].y < lowest + 0.003f;
+                if (down && (f == 0 || world[f - 1].y >= lowest + 0.003f))
+                    touchdown = world[f];
+                if (down) {
+                    ++planted;
+                    worstSlideM = std::max(worstSlideM, glm::length(glm::vec2(world[f].x - touchdown.x, world[f].z - touchdown.z)));
+                }
+            }
+            const QString what = QString("%1: %2 of %3 frames down, slid %4 m").arg(footName).arg(planted).arg(frames).arg(worstSlideM);
+            QVERIFY2(planted > frames / 4, qPrintable(what));
+            QVERIFY2(worstSlideM < 0.01f, qPrintable(what));
+            // The body really travelled over the planted foot: 3 s at speed.
+            QVERIFY(positions.back().x > 2.0f);
+        }
+    }
+
+    // Stopped: idle, arms hanging (hands under the shoulders); walking pace: walk;
+    // fast: run. The phase advances by distance over stride, and not at all standing still.
+    void gaitFollowsSpeed()
+    {
+        const Character man = builtin("man");
+        const std::vector<glm::vec3> still(10, glm::vec3(3.0f, 0.0f, 4.0f));
+        const std::vector<float> zero(10, 0.0f);
+        AgentVariation v;
+        v.phaseOffset = 0.25f;
+        const std::vector<GaitFrame> standing = computeGait(man, still, zero, v);
+        QCOMPARE(standing.back().moveWeight, 0.0f);
+        QCOMPARE(standing.back().phase, 0.25);
+        const Pose idle = gaitPose(man, standing.back());
+        for (auto [shoulder, hand] : {std::pair(kUpperArmL, kHandL), std::pair(kUpperArmR, kHandR)}) {
+            const glm::vec3 s = jointWorld(man, idle, shoulder, {}, 1.0f), h = jointWorld(man, idle, hand, {}, 1.0f);
+            QVERIFY(std::abs(h.x - s.x) < 0.05f && h.y < s.y - 0.4f);
+        }
+        std::vector<glm::vec3> line(2);
+        line[1] = {10.0f, 0.0f, 0.0f};
+        for (auto [speed, run] : {std::pair(1.3f, 0.0f), std::pair(3.6f, 1.0f)}) {
+            const std::vector<float> speeds(2, speed);
+            const std::vector<GaitFrame> g = computeGait(man, line, speeds, v);
+            QCOMPARE(g[1].moveWeight, 1.0f);
+            QCOMPARE(g[1].runWeight, run);
+            const double stride = run > 0.0f ? man.run.strideM : man.walk.strideM;
+            QVERIFY(std::abs((g[1].phase - g[0].phase) - 10.0 / stride) < 1e-6);
+        }
+        QVERIFY(man.run.strideM > 1.8f * man.walk.strideM);
+        const std::vector<float> between(2, 2.6f);
+        const float blend = computeGait(man, line, between, v)[1].runWeight;
+        QVERIFY(blend > 0.1f && blend < 0.9f);
+    }
+
+    // One wheel turn per 2 pi r of road, forward: after a quarter of it the point that was
+    // on top of the wheel is at its front.
+    void carWheelsRoll()
+    {
+        const Character car = builtin("car");
+        const float r = car.joints[0].restTranslation.y;  // the body sits at axle height
+        QVERIFY(std::abs(car.walk.strideM - 2.0f * 3.14159265f * r) < 1e-4f);
+        const Pose quarter = sampleClip(car.walk, 0.25);
+        const glm::vec3 top = glm::mat4_cast(quarter.rotations[1]) * glm::vec4(0.0f, r, 0.0f, 0.0f);
+        QVERIFY2(std::abs(top.x - r) < 1e-3f && std::abs(top.y) < 1e-3f, qPrintable(QString("%1 %2").arg(top.x).arg(top.y)));
+        const glm::quat full = sampleClip(car.walk, 3.0).rotations[2];
+        QVERIFY(std::abs(std::abs(glm::dot(full, glm::quat(1.0f, 0.0f, 0.0f, 0.0f))) - 1.0f) < 1e-4f);
+    }
+
+    // Flapping wingtips sweep up and down by decimetres; gliding ones hold still.
+    void birdFlapsAndGlides()
+    {
+        const Character bird = builtin("bird");
+        const int tip = jointNamed(bird, "wingtip_l");
+        auto sweep = [&](const CycleClip& clip) {
+            float lo = 1e9f, hi = -1e9f;
+            for (double p = 0.0; p < 1.0; p += 0.05) {
+                const float y = jointWorld(bird, sampleClip(clip, p), tip, {}, 1.0f).y;
+                lo = std::min(lo, y);
+                hi = std::max(hi, y);
+            }
+            return hi - lo;
+        };
+        QVERIFY(sweep(bird.walk) > 0.15f);
+        QCOMPARE(sweep(bird.run), 0.0f);
+        std::vector<glm::vec3> line{{0.0f, 5.0f, 0.0f}, {1.0f, 5.0f, 0.0f}};
+        QCOMPARE(computeGait(bird, line, std::vector<float>(2, 7.0f), AgentVariation{})[1].runWeight, 1.0f);
+        QCOMPARE(computeGait(bird, line, std::vector<float>(2, 3.0f), AgentVariation{})[1].runWeight, 0.0f);
+    }
+};
+
+THRONG_REGISTER_TEST(TestCharacters)
+#include "TestCharacters.moc"

@@ -1,0 +1,229 @@
+// A user's own rigged glTF character loads in place of a built-in: its skeleton, mesh and
+// walk cycle come through (turned from glTF's +Z forward to Throng's +X), a crowd wearing
+// it exports cleanly, and files without a skin or without clips are refused clearly.
+#include "CharacterFile.h"
+#include "CrowdFixture.h"
+#include "ExternalReader.h"
+#include "TestRegistry.h"
+
+#include "export/GltfExporter.h"
+#include "export/character/BuiltinCharacters.h"
+#include "export/character/UserCharacter.h"
+#include "simcore/io/SceneIO.h"
+
+#include <QFile>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <glm/mat4x4.hpp>
+
+using namespace throng;
+using namespace throng::exporting;
+
+namespace {
+
+std::optional<Character> writeAndLoad(const QTemporaryDir& dir, const char* name, const test::CharacterFileSpec& spec,
+                                      std::string& error, const ClipNames& clips = {})
+{
+    const std::string path = dir.filePath(name).toStdString();
+    if (!test::writeCharacterFile(*makeBuiltinCharacter("man"), spec, path, error))
+        return std::nullopt;
+    return loadCharacterFile(path, clips, error);
+}
+
+glm::vec3 jointAt(const Character& c, const Pose& p, std::size_t j) { return glm::vec3(jointGlobalTransforms(c, p)[j][3]); }
+
+}  // namespace
+
+class TestUserCharacter : public QObject {
+    Q_OBJECT
+
+private slots:
+    // The man, written as a DCC would and loaded back, walks as Throng's own man does.
+    void loadsARiggedCharacter()
+    {
+        QTemporaryDir dir;
+        std::string error;
+        const std::optional<Character> loaded = writeAndLoad(dir, "hero.glb", {}, error);
+        QVERIFY2(loaded, error.c_str());
+        const Character man = *makeBuiltinCharacter("man");
+        QCOMPARE(loaded->joints.size(), man.joints.size());
+        QCOMPARE(loaded->joints[kFootL].name, std::string("foot_l"));
+        QCOMPARE(loaded->mesh.positions.size(), man.mesh.positions.size());
+        QCOMPARE(checkCharacter(*loaded), std::string());
+        QCOMPARE(loaded->walk.samples.size(), std::size_t(30));  // a 1 s clip sampled at 30 per second
+        QCOMPARE(loaded->idle.samples.size(), std::size_t(1));
+        // No root motion in the clip: the stride is 0.8 x the character's height.
+        QVERIFY(std::abs(loaded->walk.strideM - 0.8f * 1.766f) < 0.02f);
+        // Feet and hands where the built-in puts them, facing +X again, through the cycle.
+        for (int k = 0; k < 30; k += 7) {
+            const double phase = k / 30.0;
+            for (std::size_t j : {std::size_t(kFootL), std::size_t(kFootR), std::size_t(kHandL), std::size_t(kHead)}) {
+                const glm::vec3 a = jointAt(*loaded, sampleClip(loaded->walk, phase), j);
+                const glm::vec3 b = jointAt(man, sampleClip(man.walk, phase), j);
+                QVERIFY2(glm::length(a - b) < 2e-3f, qPrintable(QString("joint %1 phase %2: off by %3 m")
+                                                                     .arg(j).arg(phase).arg(glm::length(a - b))));
+            }
+        }
+    }
+
+    // Clips named otherwise are mapped by name; without run, the walk serves.
+    void mapsClipsByName()
+    {
+        QTemporaryDir dir;
+        std::string error;
+        test::CharacterFileSpec spec;
+        spec.clips = {"Stand", "Walk_Slow", "Walk", "Sprint"};
+        std::optional<Character> c = writeAndLoad(dir, "named.gltf", spec, error);
+        QVERIFY2(c, error.c_str());
+        QCOMPARE(c->run.samples.size(), c->walk.samples.size());  // no clip called *run*: walk serves
+        ClipNames names;
+        names.run = "Sprint";
+        names.walk = "Walk_Slow";
+        c = writeAndLoad(dir, "named2.gltf", spec, error, names);
+        QVERIFY2(c, error.c_str());
+        names.walk = "Jog";
+        c = writeAndLoad(dir, "named3.gltf", spec, error, names);
+        QVERIFY(!c);
+        QVERIFY2(error.find("no walk clip named 'Jog'") != std::string::npos, error.c_str());
+        QVERIFY2(error.find("'Sprint'") != std::string::npos, error.c_str());  // lists what there is
+    }
+
+    // The scene file names the clips: `clips: {walk: ..., run: ...}` under the agent type
+    // reaches the loader, and survives a save and a load.
+    void sceneNamesTheClips()
+    {
+        QTemporaryDir dir;
+        std::string error;
+        test::CharacterFileSpec spec;
+        spec.clips = {"Loiter", "Amble", "Dash"};
+        QVERIFY2(test::writeCharacterFile(*makeBuiltinCharacter("man"), spec, dir.filePath("hero.glb").toStdString(), error),
+                 error.c_str());
+        const std::string yaml = "throng: 1\n"
+                                 "agent_types:\n"
+                                 "  - name: hero\n"
+                                 "    character: hero.glb\n"
+                                 "    clips: {idle: Loiter, walk: Amble, run: Dash}\n"
+                                 "agents:\n"
+                                 "  - {id: 1, type: hero, position: [0, 0, 0]}\n";
+        const sim::LoadResult loaded = sim::parseScene(yaml, "scene.yaml", dir.path().toStdString());
+        QVERIFY(loaded.ok());
+        const sim::CharacterClips& clips = loaded.scene.agentTypes.at(0).clips;
+        QCOMPARE(clips.walk, std::string("Amble"));
+        QCOMPARE(clips.run, std::string("Dash"));
+        const sim::LoadResult again = sim::parseScene(sim::sceneToYaml(loaded.scene), "scene.yaml", dir.path().toStdString());
+        QVERIFY(again.ok());
+        QCOMPARE(again.scene.agentTypes.at(0).clips, clips);
+
+        test::CrowdFixture fx = test::CrowdFixture::make();
+        fx.scene.agentTypes[0].character = "hero.glb";
+        GltfOptions options;
+        options.path = dir.filePath("crowd.glb").toStdString();
+        options.sceneDirectory = dir.path().toStdString();
+        QVERIFY(!exportGltf(fx.scene, fx.cache, options).ok());  // no clip is called walk
+        fx.scene.agentTypes[0].clips = clips;
+        const ExportResult result = exportGltf(fx.scene, fx.cache, options);
+        QVERIFY2(result.ok(), result.error.c_str());
+    }
+
+    void refusesBadFiles_data()
+    {
+        QTest::addColumn<bool>("skin");
+        QTest::addColumn<QStringList>("clips");
+        QTest::addColumn<QString>("message");
+        QTest::newRow("no skin") << false << QStringList{"Walk"} << "has no skin";
+        QTest::newRow("no clips") << true << QStringList{} << "has no animation clips";
+        QTest::newRow("no walk") << true << QStringList{"Dance"} << "no walk clip (no clip name contains 'walk'); its clips are 'Dance'";
+    }
+
+    void refusesBadFiles()
+    {
+        QFETCH(bool, skin);
+        QFETCH(QStringList, clips);
+        QFETCH(QString, message);
+        QTemporaryDir dir;
+        test::CharacterFileSpec spec;
+        spec.skin = skin;
+        spec.clips.clear();
+        for (const QString& c : clips)
+            spec.clips.push_back(c.toStdString());
+        std::string error;
+        QVERIFY(!writeAndLoad(dir, "bad.glb", spec, error));
+        QVERIFY2(error.find(message.toStdString()) != std::string::npos, error.c_str());
+        QVERIFY2(error.find(dir.filePath("bad.glb").toStdString()) != std::string::npos, error.c_str());
+    }
+
+    void refusesWhatIsNotGltf()
+    {
+        QTemporaryDir dir;
+        QFile junk(dir.filePath("junk.glb"));
+        QVERIFY(junk.open(QIODevice::WriteOnly));
+        junk.write("this is not a character\n");
+        junk.close();
+        std::string error;
+        QVERIFY(!loadCharacterFile(dir.filePath("junk.glb").toStdString(), {}, error));
+        QVERIFY2(error.find("cannot load character file '" + dir.filePath("junk.glb").toStdString() + "'") != std::string::npos,
+                 error.c_str());
+        QVERIFY(!loadCharacterFile(dir.filePath("missing.gltf").toStdString(), {}, error));
+        QVERIFY2(error.find("missing.gltf") != std::string::npos, error.c_str());
+    }
+
+    // A character a DCC tool exported (Blender, from Debian's minetest-data: 6 bones, clips
+    // Stand, Walk, Mine, ...) loads with Walk as walk, Stand as idle, and exports cleanly.
+    void loadsTheSharedSampleCharacter()
+    {
+        if (!QFile::exists(test::externalReaderPath("make-sample-character-glb")))
+            QSKIP("../shared/tools/make-sample-character-glb is not beside the repository");
+        QTemporaryDir dir;
+        const QString file = dir.filePath("sample.glb");
+        const test::ExternalReaderRun made = test::runExternalReader("make-sample-character-glb", {file});
+        if (made.exitCode == 2 || !QFile::exists(file))
+            QSKIP(qPrintable("no sample character on this machine: " + made.output.right(300)));
+        std::string error;
+        const std::optional<Character> c = loadCharacterFile(file.toStdString(), {}, error);
+        QVERIFY2(c, error.c_str());
+        QCOMPARE(c->joints.size(), std::size_t(6));
+        QCOMPARE(c->joints[0].name, std::string("Body"));
+        QVERIFY(c->walk.samples.size() >= 8);
+        QCOMPARE(c->idle.samples.size(), std::size_t(1));
+        QCOMPARE(checkCharacter(*c), std::string());
+        test::CrowdFixture fx = test::CrowdFixture::make();
+        fx.scene.agentTypes[0].character = "sample.glb";
+        GltfOptions options;
+        options.path = dir.filePath("crowd.glb").toStdString();
+        options.sceneDirectory = dir.path().toStdString();
+        const ExportResult result = exportGltf(fx.scene, fx.cache, options);
+        QVERIFY2(result.ok(), result.error.c_str());
+        if (QFile::exists(test::externalReaderPath("gltf-validate"))) {
+            const test::ExternalReaderRun run = test::runExternalReader("gltf-validate", {dir.filePath("crowd.glb")});
+            QVERIFY2(run.exitCode == 0 && run.summary["warnings"].toInt(-1) == 0, qPrintable(run.output));
+        }
+    }
+
+    // A crowd wearing the file, found relative to the scene's folder, exports in both
+    // modes and the Khronos validator finds nothing.
+    void crowdWearsIt()
+    {
+        QTemporaryDir dir;
+        std::string error;
+        QVERIFY2(test::writeCharacterFile(*makeBuiltinCharacter("woman"), {}, dir.filePath("hero.glb").toStdString(), error),
+                 error.c_str());
+        test::CrowdFixture fx = test::CrowdFixture::make();
+        fx.scene.agentTypes[0].character = "hero.glb";
+        for (GltfMode mode : {GltfMode::Exact, GltfMode::Compact}) {
+            GltfOptions options;
+            options.path = dir.filePath(mode == GltfMode::Exact ? "exact.glb" : "compact.glb").toStdString();
+            options.sceneDirectory = dir.path().toStdString();
+            options.mode = mode;
+            const ExportResult result = exportGltf(fx.scene, fx.cache, options);
+            QVERIFY2(result.ok(), result.error.c_str());
+            if (!QFile::exists(test::externalReaderPath("gltf-validate")))
+                continue;
+            const test::ExternalReaderRun run = test::runExternalReader("gltf-validate", {QString::fromStdString(options.path)});
+            QVERIFY2(run.exitCode == 0 && run.summary["warnings"].toInt(-1) == 0, qPrintable(run.output));
+        }
+    }
+};
+
+THRONG_REGISTER_TEST(TestUserCharacter)
+#include "TestUserCharacter.moc"
