@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs what is missing, builds everything and runs every test: the GUI suites under
-# xvfb-run, then the simcore and export suites again under AddressSanitizer and
-# UndefinedBehaviorSanitizer. Exits non-zero on any failure.
+# xvfb-run, then the simcore, nav, traffic, brain and export suites again under
+# AddressSanitizer and UndefinedBehaviorSanitizer. Exits non-zero on any failure.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$root/scripts/deps.sh" test
@@ -10,12 +10,12 @@ jobs="$(nproc)"
 echo "== all tests (Release)"
 xvfb-run -a -s "-screen 0 1920x1080x24" ctest --test-dir "$root/build" --output-on-failure -j"$jobs"
 
-echo "== simcore and export under ASan + UBSan"
+echo "== simcore, nav, traffic, brain and export under ASan + UBSan"
 san="$root/build-sanitize"
 if [ ! -f "$san/build.ninja" ]; then
   cmake -S "$root" -B "$san" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTHRONG_SANITIZE=ON \
     -DTHRONG_BUILD_EDITOR=OFF >/dev/null
 fi
-cmake --build "$san" --target test_simcore test_export -- -j"$jobs"
+cmake --build "$san" --target test_simcore test_nav test_traffic test_brain test_export -- -j"$jobs"
 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
-  ctest --test-dir "$san" --output-on-failure -j"$jobs" -L 'simcore|export'
+  ctest --test-dir "$san" --output-on-failure -j"$jobs" -L 'simcore|nav|traffic|brain|export'
