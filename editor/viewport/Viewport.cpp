@@ -1,6 +1,8 @@
 #include "editor/viewport/Viewport.h"
 
+#include "editor/tools/TerrainHeight.h"
 #include "editor/viewport/SetGeometryBuilder.h"
+#include "editor/viewport/ToolOverlay.h"
 #include "editor/viewport/ViewportPalette.h"
 #include "simcore/world/World.h"
 
@@ -8,11 +10,16 @@
 #include <QKeyEvent>
 #include <QMouseEvent>
 #include <QOpenGLContext>
+#include <QResizeEvent>
 #include <QWheelEvent>
 
 #include <algorithm>
 #include <cmath>
 #include <exception>
+
+#include <glm/geometric.hpp>
+#include <glm/mat4x4.hpp>
+#include <glm/matrix.hpp>
 
 namespace throng::editor {
 
@@ -28,6 +35,86 @@ Viewport::Viewport(QWidget* parent) : QOpenGLWidget(parent)
     setMinimumSize(160, 120);
     setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Expanding);
     setToolTip(tr("Pan: middle or right drag. Zoom: wheel. Orbit (3D): right drag. Frame all: F."));
+    setMouseTracking(true);
+    m_overlay = new ToolOverlay(this);
+    m_overlay->resize(size());
+}
+
+void Viewport::setTool(ViewportTool* tool)
+{
+    if (tool == m_tool)
+        return;
+    if (m_tool) {
+        m_tool->deactivate();
+        disconnect(m_tool, nullptr, m_overlay, nullptr);
+    }
+    m_tool = tool;
+    m_toolDragging = false;
+    if (m_tool) {
+        m_tool->activate();
+        connect(m_tool, &ViewportTool::overlayChanged, m_overlay, qOverload<>(&QWidget::update));
+    }
+    m_overlay->setTool(m_tool);
+}
+
+void Viewport::updateScene(const sim::Scene& scene)
+{
+    const bool frameOnNextPaint = m_frameOnNextPaint, movedByUser = m_cameraMovedByUser;
+    setScene(scene);
+    m_frameOnNextPaint = frameOnNextPaint;
+    m_cameraMovedByUser = movedByUser;
+}
+
+std::optional<glm::vec3> Viewport::pixelToGround(QPointF pixel) const
+{
+    CameraRig camera = m_camera;
+    camera.setViewportSize(size());
+    const glm::mat4 inverse = glm::inverse(camera.renderView().viewProjection);
+    const float ndcX = float(2.0 * pixel.x() / std::max(1, width()) - 1.0);
+    const float ndcY = float(1.0 - 2.0 * pixel.y() / std::max(1, height()));
+    const glm::vec4 nearH = inverse * glm::vec4(ndcX, ndcY, -1.0f, 1.0f);
+    const glm::vec4 farH = inverse * glm::vec4(ndcX, ndcY, 1.0f, 1.0f);
+    const glm::vec3 from = glm::vec3(nearH) / nearH.w, to = glm::vec3(farH) / farH.w;
+    const glm::vec3 dir = to - from;
+    if (m_terrain.heights.empty()) {
+        if (std::abs(dir.y) < 1e-9f)
+            return std::nullopt;
+        const float t = -from.y / dir.y;
+        if (t < 0.0f || t > 1.0f)
+            return std::nullopt;
+        return from + t * dir;
+    }
+    // March the ray in short steps until it passes under the terrain, then bisect.
+    constexpr int kSteps = 512, kBisections = 24;
+    auto above = [&](float t) {
+        const glm::vec3 p = from + t * dir;
+        return p.y - terrainHeight(m_terrain, p.x, p.z);
+    };
+    float previous = 0.0f;
+    if (above(previous) < 0.0f)
+        return std::nullopt;
+    for (int i = 1; i <= kSteps; ++i) {
+        const float t = float(i) / float(kSteps);
+        if (above(t) >= 0.0f) {
+            previous = t;
+            continue;
+        }
+        float lo = previous, hi = t;
+        for (int k = 0; k < kBisections; ++k) {
+            const float mid = 0.5f * (lo + hi);
+            (above(mid) >= 0.0f ? lo : hi) = mid;
+        }
+        const glm::vec3 p = from + hi * dir;
+        return glm::vec3(p.x, terrainHeight(m_terrain, p.x, p.z), p.z);
+    }
+    return std::nullopt;
+}
+
+void Viewport::forwardToTool(QMouseEvent* event, void (ViewportTool::*handler)(const ToolMouse&))
+{
+    const ToolMouse mouse{event->position(), pixelToGround(event->position()), event->modifiers()};
+    (m_tool->*handler)(mouse);
+    event->accept();
 }
 
 Viewport::~Viewport()
@@ -93,6 +180,7 @@ void Viewport::setSet(const sim::Scene& scene)
     m_traffic.lanes = scene.lanes;
     m_traffic.crosswalks = scene.crosswalks;
     m_traffic.trafficLights = scene.trafficLights;
+    m_terrain = scene.terrain;
     m_typeRadiusM.clear();
     for (const sim::AgentType& t : scene.agentTypes)
         m_typeRadiusM.push_back(t.radiusM);
@@ -253,6 +341,11 @@ void Viewport::paintGL()
 
 void Viewport::mousePressEvent(QMouseEvent* event)
 {
+    if (event->button() == Qt::LeftButton && m_tool && m_dragButton == Qt::NoButton) {
+        m_toolDragging = true;
+        forwardToTool(event, &ViewportTool::mousePressed);
+        return;
+    }
     if (event->button() == Qt::MiddleButton || event->button() == Qt::RightButton) {
         m_dragButton = event->button();
         m_lastMousePos = event->position();
@@ -265,7 +358,10 @@ void Viewport::mousePressEvent(QMouseEvent* event)
 void Viewport::mouseMoveEvent(QMouseEvent* event)
 {
     if (m_dragButton == Qt::NoButton) {
-        QOpenGLWidget::mouseMoveEvent(event);
+        if (m_tool)
+            forwardToTool(event, &ViewportTool::mouseMoved);
+        else
+            QOpenGLWidget::mouseMoveEvent(event);
         return;
     }
     const QPointF delta = event->position() - m_lastMousePos;
@@ -283,12 +379,32 @@ void Viewport::mouseMoveEvent(QMouseEvent* event)
 
 void Viewport::mouseReleaseEvent(QMouseEvent* event)
 {
+    if (event->button() == Qt::LeftButton && m_tool && m_toolDragging) {
+        m_toolDragging = false;
+        forwardToTool(event, &ViewportTool::mouseReleased);
+        return;
+    }
     if (event->button() == m_dragButton) {
         m_dragButton = Qt::NoButton;
         event->accept();
         return;
     }
     QOpenGLWidget::mouseReleaseEvent(event);
+}
+
+void Viewport::mouseDoubleClickEvent(QMouseEvent* event)
+{
+    if (event->button() == Qt::LeftButton && m_tool) {
+        forwardToTool(event, &ViewportTool::mouseDoubleClicked);
+        return;
+    }
+    QOpenGLWidget::mouseDoubleClickEvent(event);
+}
+
+void Viewport::resizeEvent(QResizeEvent* event)
+{
+    QOpenGLWidget::resizeEvent(event);
+    m_overlay->resize(event->size());
 }
 
 void Viewport::wheelEvent(QWheelEvent* event)
@@ -305,6 +421,8 @@ void Viewport::wheelEvent(QWheelEvent* event)
 
 void Viewport::keyPressEvent(QKeyEvent* event)
 {
+    if (m_tool && m_tool->keyPressed(event))
+        return;
     if (event->key() == Qt::Key_F && event->modifiers() == Qt::NoModifier) {
         frameAll();
         return;
