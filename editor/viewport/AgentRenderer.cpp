@@ -8,6 +8,7 @@
 
 #include <QOpenGLFunctions_3_3_Core>
 
+#include <algorithm>
 #include <cstddef>
 
 namespace throng::editor {
@@ -70,14 +71,16 @@ bool AgentRenderer::initialize(QOpenGLFunctions_3_3_Core& gl)
     if (!m_program)
         return false;
     gl.glGenBuffers(1, &m_instances);
-    createShape(gl, m_flat, false);
-    createShape(gl, m_prism, true);
+    createShape(gl, m_flat, false, AgentGlyphMesh::kDetailed);
+    createShape(gl, m_prism, true, AgentGlyphMesh::kDetailed);
+    createShape(gl, m_coarseFlat, false, AgentGlyphMesh::kCoarse);
+    createShape(gl, m_coarsePrism, true, AgentGlyphMesh::kCoarse);
     return true;
 }
 
-void AgentRenderer::createShape(QOpenGLFunctions_3_3_Core& gl, Shape& shape, bool prism)
+void AgentRenderer::createShape(QOpenGLFunctions_3_3_Core& gl, Shape& shape, bool prism, int segments)
 {
-    const std::vector<GlyphVertex> vertices = prism ? AgentGlyphMesh::prism() : AgentGlyphMesh::flat();
+    const std::vector<GlyphVertex> vertices = prism ? AgentGlyphMesh::prism(segments) : AgentGlyphMesh::flat(segments);
     shape.vertexCount = int(vertices.size());
     gl.glGenVertexArrays(1, &shape.vao);
     gl.glGenBuffers(1, &shape.vbo);
@@ -111,7 +114,7 @@ void AgentRenderer::createShape(QOpenGLFunctions_3_3_Core& gl, Shape& shape, boo
 
 void AgentRenderer::destroy(QOpenGLFunctions_3_3_Core& gl)
 {
-    for (Shape* shape : {&m_flat, &m_prism}) {
+    for (Shape* shape : {&m_flat, &m_prism, &m_coarseFlat, &m_coarsePrism}) {
         gl.glDeleteBuffers(1, &shape->vbo);
         gl.glDeleteVertexArrays(1, &shape->vao);
         *shape = {};
@@ -130,13 +133,18 @@ void AgentRenderer::upload(QOpenGLFunctions_3_3_Core& gl, std::span<const AgentG
     gl.glBindBuffer(GL_ARRAY_BUFFER, m_instances);
     gl.glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(glyphs.size_bytes()), glyphs.data(), GL_DYNAMIC_DRAW);
     m_instanceCount = int(glyphs.size());
+    m_maxRadiusM = 0.0f;
+    for (const AgentGlyph& g : glyphs)
+        m_maxRadiusM = std::max(m_maxRadiusM, g.radiusM);
 }
 
 void AgentRenderer::draw(QOpenGLFunctions_3_3_Core& gl, const RenderView& view)
 {
     if (!m_program || m_instanceCount == 0)
         return;
-    const Shape& shape = view.perspective ? m_prism : m_flat;
+    const bool tiny = !view.perspective && m_maxRadiusM < kCoarseBelowPx * view.metresPerPixel;
+    const bool coarse = m_instanceCount > kDetailedLimit || tiny;
+    const Shape& shape = view.perspective ? (coarse ? m_coarsePrism : m_prism) : (coarse ? m_coarseFlat : m_flat);
     m_program->bind();
     gl.glUniformMatrix4fv(m_program->uniformLocation("u_viewProjection"), 1, GL_FALSE,
                           glm::value_ptr(view.viewProjection));
