@@ -17,6 +17,7 @@ class QTimer;
 
 namespace throng::editor {
 
+class ExportDialog;
 class MessagesPanel;
 class OutlinerPanel;
 class RecentFiles;
@@ -48,6 +49,8 @@ public:
     SimulationController& simulation() { return *m_simulation; }
     OutlinerPanel& outliner() { return *m_outliner; }
     TimelinePanel& timeline() { return *m_timeline; }
+    // Opens File > Export (window-modal, not blocking) and returns it.
+    ExportDialog* showExportDialog();
 
 protected:
     void closeEvent(QCloseEvent* event) override;

@@ -4,6 +4,7 @@
 
 #include "editor/MessagesPanel.h"
 #include "editor/RecentFiles.h"
+#include "editor/exporting/ExportDialog.h"
 
 #include <QAction>
 #include <QCloseEvent>
@@ -85,8 +86,19 @@ void MainWindow::createFileMenu()
     add(tr("Save &As..."), QKeySequence::SaveAs, tr("Save the scene to a new file"), &MainWindow::saveAsWithDialog);
     add(tr("Re&vert"), QKeySequence(), tr("Throw away the changes and read the file again"), &MainWindow::revert);
     menu->addSeparator();
+    add(tr("&Export..."), QKeySequence(tr("Ctrl+Shift+E")), tr("Export the simulation as glTF or CSV"),
+        &MainWindow::showExportDialog);
+    menu->addSeparator();
     add(tr("&Quit"), QKeySequence::Quit, tr("Close Throng"), &QWidget::close);
     menu->setToolTipsVisible(true);
+}
+
+ExportDialog* MainWindow::showExportDialog()
+{
+    auto* dialog = new ExportDialog(m_document, *m_simulation, this);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    dialog->open();
+    return dialog;
 }
 
 void MainWindow::newScene()

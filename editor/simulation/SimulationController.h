@@ -10,6 +10,7 @@
 #include <QObject>
 #include <QTimer>
 
+#include <algorithm>
 #include <cstddef>
 
 namespace throng::editor {
@@ -35,6 +36,8 @@ public:
     void seek(std::size_t frame);
     // Records every frame of the scene's duration in the background.
     void simulateToEnd();
+    // Records frames in the background until `frameCount` exist (export asks for these).
+    void requestFrames(std::size_t frameCount) { m_runner.setTarget(std::min(frameCount, m_totalFrames)); }
 
     bool isPlaying() const { return m_playing; }
     bool loops() const { return m_loop; }

@@ -1,15 +1,21 @@
 // Playing, stepping and scrubbing the live simulation with the timeline's buttons and
-// scrub bar, and saving an edited scene with Ctrl+S and opening it again, as a user does.
+// scrub bar, saving an edited scene with Ctrl+S and opening it again, and exporting
+// through File > Export, as a user does.
 #include "EditorUiDriver.h"
 #include "TestRegistry.h"
 
+#include "editor/exporting/ExportDialog.h"
 #include "editor/panels/TimelinePanel.h"
 #include "editor/simulation/SimulationController.h"
 #include "editor/viewport/Viewport.h"
 
 #include <glm/geometric.hpp>
 
+#include <QFile>
 #include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QSpinBox>
 #include <QSlider>
 #include <QStandardPaths>
 #include <QTest>
@@ -133,6 +139,48 @@ private slots:
             QVERIFY(std::abs(b.agents[i].headingDeg - a.agents[i].headingDeg) < 1e-2f);
         }
         QVERIFY(b.walls.back().points == a.walls.back().points);
+    }
+
+    void exportWritesAGlbOfTheChosenFrames()
+    {
+        MainWindow window;
+        QVERIFY(showWithScene(window, m_dir, "crossroads.yaml"));
+        QTest::keyClick(&window.viewport(), Qt::Key_E, Qt::ControlModifier | Qt::ShiftModifier);
+        auto* dialog = window.findChild<ExportDialog*>("exportDialog");
+        QVERIFY(dialog);
+        QTRY_VERIFY(dialog->isVisible());
+        auto* path = dialog->findChild<QLineEdit*>("exportPath");
+        const QString out = m_dir.filePath("crowd.glb");
+        path->selectAll();
+        QTest::keyClicks(path, out);
+        auto* last = dialog->findChild<QSpinBox*>("exportLastFrame");
+        last->selectAll();
+        QTest::keyClicks(last, "24");
+        QTest::keyClick(last, Qt::Key_Tab);
+        QCOMPARE(last->value(), 24);
+        QTest::mouseClick(dialog->findChild<QPushButton*>("exportButton"), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(!dialog->isBusy(), 60000);
+        QVERIFY2(dialog->outcome().startsWith("Wrote"), qPrintable(dialog->outcome()));
+        QFile file(out);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        QCOMPARE(file.read(4), QByteArray("glTF"));
+        QVERIFY(file.size() > 10000);
+    }
+
+    void exportCanBeCancelledAndLeavesNoFile()
+    {
+        MainWindow window;
+        QVERIFY(showWithScene(window, m_dir, "crossroads.yaml"));
+        ExportDialog* dialog = window.showExportDialog();
+        auto* path = dialog->findChild<QLineEdit*>("exportPath");
+        const QString out = m_dir.filePath("never.glb");
+        path->setText(out);
+        QTest::mouseClick(dialog->findChild<QPushButton*>("exportButton"), Qt::LeftButton);
+        QVERIFY(dialog->isBusy());
+        QTest::mouseClick(dialog->findChild<QPushButton*>("cancelButton"), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(!dialog->isBusy(), 30000);
+        QVERIFY2(dialog->outcome().startsWith("Cancelled"), qPrintable(dialog->outcome()));
+        QVERIFY(!QFile::exists(out));
     }
 
     void unsavedChangesAreAskedAbout()
