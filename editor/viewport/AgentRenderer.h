@@ -29,7 +29,7 @@ public:
     static constexpr float kMinRadiusPx = 2.0f;
     // Coarse glyphs above this many agents, or when agents are under kCoarseBelowPx in
     // radius on screen (top view): their detail would not show, their vertices would cost.
-    static constexpr int kDetailedLimit = 20000;
+    static constexpr int kDetailedLimit = 5000;
     static constexpr float kCoarseBelowPx = 6.0f;
 
     bool initialize(QOpenGLFunctions_3_3_Core& gl);
