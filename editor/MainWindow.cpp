@@ -1,5 +1,6 @@
 #include "editor/MainWindow.h"
 
+#include "editor/AutosaveRecovery.h"
 #include "editor/MessagesPanel.h"
 #include "editor/RecentFiles.h"
 #include "editor/panels/OutlinerPanel.h"
@@ -31,6 +32,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
     setCentralWidget(m_viewport);
     m_tools = new ToolManager(m_document, *m_viewport, this);
     m_simulation = new SimulationController(this);
+    m_autosave = new AutosaveRecovery(m_document, this);
     m_editTimer = new QTimer(this);
     m_editTimer->setSingleShot(true);
     m_editTimer->setInterval(0);

@@ -17,6 +17,7 @@ class QTimer;
 
 namespace throng::editor {
 
+class AutosaveRecovery;
 class ExportDialog;
 class MessagesPanel;
 class OutlinerPanel;
@@ -41,6 +42,10 @@ public:
     bool maybeKeepChanges();
     // Replaces the question maybeKeepChanges() asks (tests answer it without a dialog).
     void setUnsavedChangesPrompt(std::function<QMessageBox::StandardButton()> prompt);
+    // When the last session left unsaved changes behind (a crash), asks whether to
+    // recover them (`ask` replaces the dialog) and loads them. True when recovered.
+    bool offerRecovery(std::function<bool()> ask = {});
+    AutosaveRecovery& autosave() { return *m_autosave; }
 
     SceneDocument& document() { return m_document; }
     Viewport& viewport() { return *m_viewport; }
@@ -87,6 +92,7 @@ private:
     OutlinerPanel* m_outliner = nullptr;
     TimelinePanel* m_timeline = nullptr;
     RecentFiles* m_recent = nullptr;
+    AutosaveRecovery* m_autosave = nullptr;
     QDockWidget* m_messagesDock = nullptr;
     QList<QDockWidget*> m_docks;
     QLabel* m_agentCountLabel = nullptr;

@@ -2,6 +2,7 @@
 // before unsaved changes are lost.
 #include "editor/MainWindow.h"
 
+#include "editor/AutosaveRecovery.h"
 #include "editor/MessagesPanel.h"
 #include "editor/RecentFiles.h"
 #include "editor/exporting/ExportDialog.h"
@@ -52,6 +53,29 @@ bool MainWindow::openScene(const QString& path)
 void MainWindow::setUnsavedChangesPrompt(std::function<QMessageBox::StandardButton()> prompt)
 {
     m_prompt = std::move(prompt);
+}
+
+bool MainWindow::offerRecovery(std::function<bool()> ask)
+{
+    if (!m_autosave->hasRecovery())
+        return false;
+    const QString forFile = m_autosave->recoveredFor();
+    const QString question = tr("Throng closed without saving the changes to %1. Recover them?")
+                                 .arg(forFile.isEmpty() ? tr("an untitled scene") : QFileInfo(forFile).fileName());
+    const bool yes = ask ? ask()
+                         : QMessageBox::question(this, tr("Recover unsaved changes"), question,
+                                                 QMessageBox::Yes | QMessageBox::No) == QMessageBox::Yes;
+    if (!yes) {
+        m_autosave->discard();
+        return false;
+    }
+    if (!m_autosave->restore()) {
+        m_messages->showNote(tr("The recovery file could not be read: %1").arg(AutosaveRecovery::recoveryPath()));
+        return false;
+    }
+    m_messages->showNote(tr("Recovered unsaved changes to %1; save them to keep them.")
+                             .arg(forFile.isEmpty() ? tr("an untitled scene") : forFile));
+    return true;
 }
 
 bool MainWindow::maybeKeepChanges()
@@ -153,6 +177,7 @@ bool MainWindow::reportSave(const sim::SaveResult& result)
         return false;
     }
     m_recent->add(m_document.filePath());
+    m_autosave->discard();
     statusBar()->showMessage(tr("Saved %1").arg(m_document.filePath()), kStatusMessageMs);
     return true;
 }
@@ -186,6 +211,7 @@ void MainWindow::closeEvent(QCloseEvent* event)
         event->ignore();
         return;
     }
+    m_autosave->discard();
     QSettings settings;
     settings.setValue("mainWindow/geometry", saveGeometry());
     settings.setValue("mainWindow/state", saveState());

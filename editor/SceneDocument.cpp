@@ -47,6 +47,13 @@ sim::SaveResult SceneDocument::saveAs(const QString& path)
     return result;
 }
 
+void SceneDocument::adoptRecovered(const QString& path)
+{
+    m_filePath = path.isEmpty() ? QString() : QFileInfo(path).absoluteFilePath();
+    emit filePathChanged(m_filePath);
+    m_undoStack.resetClean();
+}
+
 void SceneDocument::reset()
 {
     m_scene = {};

@@ -36,6 +36,9 @@ public:
     // on success the document takes that path and is no longer modified.
     sim::SaveResult save();
     sim::SaveResult saveAs(const QString& path);
+    // After loading a recovery copy: the scene belongs to `path` (empty = untitled) and
+    // counts as unsaved.
+    void adoptRecovered(const QString& path);
     // Replaces the scene with an empty one without a file; clears the history.
     void reset();
 
