@@ -31,6 +31,9 @@ public:
     // radius on screen (top view): their detail would not show, their vertices would cost.
     static constexpr int kDetailedLimit = 5000;
     static constexpr float kCoarseBelowPx = 6.0f;
+    // Below this radius on screen (top view) an agent is one round point sprite: one
+    // vertex instead of a mesh, as its heading could not be seen anyway.
+    static constexpr float kSpriteBelowPx = 3.0f;
 
     bool initialize(QOpenGLFunctions_3_3_Core& gl);
     void destroy(QOpenGLFunctions_3_3_Core& gl);
@@ -44,7 +47,11 @@ private:
     };
     void createShape(QOpenGLFunctions_3_3_Core& gl, Shape& shape, bool prism, int segments);
 
+    void drawSprites(QOpenGLFunctions_3_3_Core& gl, const RenderView& view);
+
     std::unique_ptr<QOpenGLShaderProgram> m_program;
+    std::unique_ptr<QOpenGLShaderProgram> m_spriteProgram;
+    unsigned m_spriteVao = 0;
     Shape m_flat, m_prism, m_coarseFlat, m_coarsePrism;
     float m_maxRadiusM = 0.0f;
     unsigned m_instances = 0;
