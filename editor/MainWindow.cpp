@@ -58,6 +58,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
     connect(m_viewport, &Viewport::agentsChanged, this, &MainWindow::updateAgentStatus);
     connect(m_simulation, &SimulationController::frameChanged, this,
             [this](std::size_t frame) { m_viewport->showFrame(m_simulation->cache(), frame); });
+    connect(m_messages, &MessagesPanel::itemRequested, this, [this](SceneItem item) {
+        if (item.index < itemCount(m_document.scene(), item.kind))
+            m_document.setSelection({item});
+    });
     connect(m_simulation, &SimulationController::problem, this, [this](const QString& text) {
         m_messages->showNote(text);
         m_messagesDock->show();

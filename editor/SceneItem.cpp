@@ -81,4 +81,25 @@ QString itemLabel(const sim::Scene& s, SceneItem item)
     return {};
 }
 
+std::optional<SceneItem> itemForKey(const std::string& key)
+{
+    static const std::pair<const char*, ItemKind> kLists[] = {
+        {"agent_types", ItemKind::AgentType}, {"groups", ItemKind::Group},   {"agents", ItemKind::Agent},
+        {"paths", ItemKind::Path},             {"walls", ItemKind::Wall},     {"obstacles", ItemKind::Obstacle},
+        {"goals", ItemKind::Goal},             {"traffic_lights", ItemKind::TrafficLight},
+        {"lanes", ItemKind::Lane},             {"heroes", ItemKind::Hero},    {"brains", ItemKind::Brain}};
+    if (key.rfind("settings", 0) == 0)
+        return SceneItem{ItemKind::Settings, 0};
+    const std::size_t open = key.find('['), close = key.find(']');
+    if (open == std::string::npos || close == std::string::npos || close <= open + 1)
+        return std::nullopt;
+    const std::string list = key.substr(0, open), digits = key.substr(open + 1, close - open - 1);
+    if (digits.find_first_not_of("0123456789") != std::string::npos || digits.size() > 9)
+        return std::nullopt;
+    for (const auto& [name, kind] : kLists)
+        if (list == name)
+            return SceneItem{kind, std::size_t(std::stoul(digits))};
+    return std::nullopt;
+}
+
 }  // namespace throng::editor

@@ -7,6 +7,8 @@
 #include <QString>
 
 #include <cstddef>
+#include <optional>
+#include <string>
 #include <vector>
 
 namespace throng::editor {
@@ -27,5 +29,8 @@ std::size_t itemCount(const sim::Scene& scene, ItemKind kind);
 QString itemLabel(const sim::Scene& scene, SceneItem item);
 // The plural heading of a kind in the outliner ("Walls").
 QString kindTitle(ItemKind kind);
+// The item a diagnostic's key path names ("obstacles[3].radius" = obstacle 3); empty
+// when the key names no item.
+std::optional<SceneItem> itemForKey(const std::string& key);
 
 }  // namespace throng::editor

@@ -4,12 +4,14 @@
 #include "EditorUiDriver.h"
 #include "TestRegistry.h"
 
+#include "editor/MessagesPanel.h"
 #include "editor/panels/OutlinerPanel.h"
 #include "editor/tools/ToolManager.h"
 #include "editor/viewport/Viewport.h"
 
 #include <glm/geometric.hpp>
 
+#include <QDoubleSpinBox>
 #include <QLabel>
 #include <QStandardPaths>
 #include <QTest>
@@ -151,6 +153,54 @@ private slots:
         QCOMPARE(window.outliner().kindRow(ItemKind::TrafficLight)->text(0), QString("Traffic Lights (3)"));
         QTest::keyClick(&window.viewport(), Qt::Key_Z, Qt::ControlModifier);
         QCOMPARE(lights.size(), std::size_t(2));
+    }
+
+    void doubleClickingAMessageSelectsItsItem()
+    {
+        MainWindow window;
+        QVERIFY(showWithScene(window, m_dir, "crossroads.yaml"));
+        sim::Diagnostic about{sim::Severity::Warning, "crossroads.yaml", 33, 5, "walls[1].points", "a sharp corner"};
+        window.messages().showDiagnostics("Checked.", {about});
+        QListWidgetItem* row = window.messages().item(1);
+        QVERIFY(row && row->text().contains("crossroads.yaml:33:5"));
+        QWidget* list = window.messages().viewport();
+        const QPoint at = window.messages().visualItemRect(row).center();
+        QTest::mouseClick(list, Qt::LeftButton, Qt::NoModifier, at);
+        QTest::mouseDClick(list, Qt::LeftButton, Qt::NoModifier, at);
+        QCOMPARE(window.document().selection().size(), std::size_t(1));
+        QVERIFY(window.document().selection().front() == (SceneItem{ItemKind::Wall, 1}));
+        QTreeWidgetItem* wall = window.outliner().kindRow(ItemKind::Wall)->child(1);
+        QVERIFY(wall->isSelected());
+    }
+
+    void propertiesEditTheSelectedItemsAsOneUndoStep()
+    {
+        MainWindow window;
+        QVERIFY(showWithScene(window, m_dir, "crossroads.yaml"));
+        // Pick two obstacles in the outliner, the second with Ctrl held.
+        QTreeWidgetItem* obstacles = window.outliner().kindRow(ItemKind::Obstacle);
+        obstacles->setExpanded(true);
+        QWidget* tree = window.outliner().viewport();
+        QTest::mouseClick(tree, Qt::LeftButton, Qt::NoModifier,
+                          window.outliner().visualItemRect(obstacles->child(0)).center());
+        QTest::mouseClick(tree, Qt::LeftButton, Qt::ControlModifier,
+                          window.outliner().visualItemRect(obstacles->child(2)).center());
+        QCOMPARE(window.document().selection().size(), std::size_t(2));
+
+        auto* radius = window.findChild<QWidget*>("properties")->findChild<QDoubleSpinBox*>("radius");
+        QVERIFY(radius);
+        QCOMPARE(radius->value(), 0.4);
+        radius->selectAll();
+        QTest::keyClicks(radius, "1.25");
+        QTest::keyClick(radius, Qt::Key_Return);
+        const auto& scene = window.document().scene();
+        QCOMPARE(scene.obstacles[0].radiusM, 1.25f);
+        QCOMPARE(scene.obstacles[2].radiusM, 1.25f);
+        QCOMPARE(scene.obstacles[1].radiusM, 0.4f);
+        QCOMPARE(window.document().undoStack()->count(), 1);
+        QTest::keyClick(&window.viewport(), Qt::Key_Z, Qt::ControlModifier);
+        QCOMPARE(scene.obstacles[0].radiusM, 0.4f);
+        QCOMPARE(scene.obstacles[2].radiusM, 0.4f);
     }
 
     void toolShortcutsPickTools()
