@@ -203,6 +203,25 @@ private slots:
         QCOMPARE(scene.obstacles[2].radiusM, 0.4f);
     }
 
+    void selectToolPicksAndDragsAnObstacleInOneStep()
+    {
+        MainWindow window;
+        QVERIFY(showWithScene(window, m_dir, "crossroads.yaml"));
+        QVERIFY(clickToolButton(window, "select"));
+        // The lamp post at (-7.5, -20) on the north-west sidewalk, dragged 10 m west.
+        dragOnGround(window, {{-7.5f, -20.0f}, {-17.5f, -20.0f}});
+        const auto& scene = window.document().scene();
+        QVERIFY(window.document().selection() == (Selection{{ItemKind::Obstacle, 0}}));
+        QVERIFY2(glm::length(scene.obstacles[0].center - glm::vec2(-17.5f, -20.0f)) < 0.3f,
+                 qPrintable(QString("at %1, %2").arg(scene.obstacles[0].center.x).arg(scene.obstacles[0].center.y)));
+        QCOMPARE(window.document().undoStack()->count(), 1);
+        QTest::keyClick(&window.viewport(), Qt::Key_Z, Qt::ControlModifier);
+        QCOMPARE(scene.obstacles[0].center, glm::vec2(-7.5f, -20.0f));
+        // A click on empty ground clears the selection.
+        clickOnGround(window, {-30, -30});
+        QVERIFY(window.document().selection().empty());
+    }
+
     void toolShortcutsPickTools()
     {
         MainWindow window;
