@@ -25,12 +25,13 @@ QString EditorArguments::usage()
 {
     return QStringLiteral(
         "usage: throng [SCENE.yaml]\n"
-        "       throng --screenshot OUT.png SCENE.yaml [--frame N] [--size WxH] [--view top|3d]\n"
+        "       throng --screenshot OUT.png SCENE.yaml [--frame N] [--size WxH] [--camera top|persp]\n"
         "\n"
         "  --screenshot OUT.png  render the scene to an image and exit (needs a display: xvfb-run -a)\n"
         "  --frame N             simulate N steps first (default 0, the initial state)\n"
         "  --size WxH            image size in pixels (default 1280x720)\n"
-        "  --view top|3d         top orthographic view (default) or the perspective view\n"
+        "  --camera top|persp    top orthographic view (default) or the perspective view\n"
+        "                        (also --view top|3d)\n"
         "  -h, --help            show this help\n");
 }
 
@@ -67,15 +68,16 @@ EditorArguments EditorArguments::parse(const QStringList& args)
                               .arg(kMaxSidePx)
                               .arg(value);
             a.screenshot.sizePx = {w, h};
-        } else if (arg == "--view") {
+        } else if (arg == "--view" || arg == "--camera") {
+            // --camera top|persp is the spelling; --view top|3d the first one.
             screenshotOnly = true;
             const QString value = takeValue(args, i, a.error);
             if (value == "top")
                 a.screenshot.view = ViewMode::Top;
-            else if (value == "3d")
+            else if (value == "3d" || value == "persp")
                 a.screenshot.view = ViewMode::Orbit;
             else if (a.error.isEmpty())
-                a.error = QStringLiteral("--view must be top or 3d, got '%1'").arg(value);
+                a.error = QStringLiteral("%1 must be top, persp or 3d, got '%2'").arg(arg, value);
         } else if (arg.startsWith('-') && arg != "-") {
             a.error = QStringLiteral("unknown option '%1'").arg(arg);
         } else {

@@ -1,103 +1,127 @@
 #include "editor/MainWindow.h"
 
+#include "editor/AutosaveRecovery.h"
 #include "editor/MessagesPanel.h"
+#include "editor/RecentFiles.h"
+#include "editor/panels/OutlinerPanel.h"
+#include "editor/panels/PropertiesPanel.h"
+#include "editor/panels/TimelinePanel.h"
+#include "editor/simulation/SimulationController.h"
+#include "editor/tools/ToolManager.h"
 #include "editor/viewport/Viewport.h"
 
 #include <QAction>
 #include <QActionGroup>
-#include <QCloseEvent>
 #include <QDockWidget>
-#include <QFileDialog>
-#include <QFileInfo>
 #include <QLabel>
 #include <QMenuBar>
-#include <QMessageBox>
 #include <QSettings>
 #include <QStatusBar>
+#include <QTimer>
+#include <QToolBar>
+#include <QUndoView>
 
 namespace throng::editor {
-
-namespace {
-constexpr int kStatusMessageMs = 5000;
-const char* const kSceneFilter = "Throng scenes (*.yaml *.yml);;All files (*)";
-}  // namespace
 
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
 {
     setObjectName("mainWindow");
+    setAcceptDrops(true);
     m_viewport = new Viewport(this);
     m_viewport->setObjectName("viewport");
     setCentralWidget(m_viewport);
+    m_tools = new ToolManager(m_document, *m_viewport, this);
+    m_simulation = new SimulationController(this);
+    m_autosave = new AutosaveRecovery(m_document, this);
+    m_editTimer = new QTimer(this);
+    m_editTimer->setSingleShot(true);
+    m_editTimer->setInterval(0);
 
-    m_messages = new MessagesPanel(this);
-    m_messagesDock = new QDockWidget(tr("Messages"), this);
-    m_messagesDock->setObjectName("messagesDock");
-    m_messagesDock->setWidget(m_messages);
-    addDockWidget(Qt::BottomDockWidgetArea, m_messagesDock);
-
+    createDocks();
     createFileMenu();
     createEditMenu();
     createViewMenu();
+    createSimulationMenu();
+    createToolBars();
     createStatusBar();
 
-    connect(&m_document, &SceneDocument::sceneReset, this, [this] { m_viewport->setScene(m_document.scene()); });
+    connect(&m_document, &SceneDocument::sceneReset, this, [this] {
+        m_editTimer->stop();
+        m_viewport->setScene(m_document.scene());
+        m_simulation->setScene(m_document.scene());
+    });
+    // A brush stroke edits many times between two paints: refresh once per burst.
+    connect(&m_document, &SceneDocument::sceneChanged, m_editTimer, qOverload<>(&QTimer::start));
+    connect(m_editTimer, &QTimer::timeout, this, &MainWindow::refreshAfterEdit);
     connect(&m_document, &SceneDocument::filePathChanged, this, &MainWindow::updateTitle);
     connect(&m_document, &SceneDocument::modifiedChanged, this, &QWidget::setWindowModified);
     connect(m_viewport, &Viewport::agentsChanged, this, &MainWindow::updateAgentStatus);
+    connect(m_simulation, &SimulationController::frameChanged, this,
+            [this](std::size_t frame) { m_viewport->showFrame(m_simulation->cache(), frame); });
+    connect(m_messages, &MessagesPanel::itemRequested, this, [this](SceneItem item) {
+        if (item.index < itemCount(m_document.scene(), item.kind))
+            m_document.setSelection({item});
+    });
+    connect(m_simulation, &SimulationController::problem, this, [this](const QString& text) {
+        m_messages->showNote(text);
+        m_messagesDock->show();
+    });
 
     m_viewport->setScene(m_document.scene());
+    m_simulation->setScene(m_document.scene());
     m_messages->showNote(tr("No scene open. Open one with File > Open (Ctrl+O)."));
     updateTitle();
     restoreWindowState();
 }
 
-bool MainWindow::openScene(const QString& path)
+MainWindow::~MainWindow()
 {
-    const std::vector<sim::Diagnostic> diagnostics = m_document.load(path);
-    const QString name = QFileInfo(path).fileName();
-    if (sim::hasErrors(diagnostics)) {
-        const QString failed = tr("Could not open %1; the current scene stays open.").arg(name);
-        m_messages->showDiagnostics(failed, diagnostics);
-        m_messagesDock->show();
-        m_messagesDock->raise();
-        statusBar()->showMessage(failed, kStatusMessageMs);
-        return false;
-    }
-    m_messages->showDiagnostics(tr("Opened %1.").arg(m_document.filePath()), diagnostics);
-    statusBar()->showMessage(tr("Opened %1").arg(name), kStatusMessageMs);
-    return true;
+    // The tools refer to the viewport; let go of them before the widgets go.
+    m_viewport->setTool(nullptr);
 }
 
-void MainWindow::createFileMenu()
+QDockWidget* MainWindow::addDock(const QString& title, const QString& name, QWidget* widget, Qt::DockWidgetArea area)
 {
-    QMenu* menu = menuBar()->addMenu(tr("&File"));
-    QAction* open = menu->addAction(tr("&Open..."), this, &MainWindow::openWithDialog);
-    open->setShortcut(QKeySequence::Open);
-    open->setToolTip(tr("Open a scene file (.yaml)"));
-    QAction* save = menu->addAction(tr("&Save"), this, &MainWindow::save);
-    save->setShortcut(QKeySequence::Save);
-    save->setToolTip(tr("Save the scene to its file"));
-    QAction* saveAs = menu->addAction(tr("Save &As..."), this, &MainWindow::saveAsWithDialog);
-    saveAs->setShortcut(QKeySequence::SaveAs);
-    saveAs->setToolTip(tr("Save the scene to a new file"));
-    menu->addSeparator();
-    QAction* quit = menu->addAction(tr("&Quit"), this, &QWidget::close);
-    quit->setShortcut(QKeySequence::Quit);
-    quit->setToolTip(tr("Close Throng"));
-    menu->setToolTipsVisible(true);
+    auto* dock = new QDockWidget(title, this);
+    dock->setObjectName(name);
+    dock->setWidget(widget);
+    addDockWidget(area, dock);
+    m_docks << dock;
+    return dock;
+}
+
+void MainWindow::createDocks()
+{
+    m_outliner = new OutlinerPanel(m_document, this);
+    addDock(tr("Outliner"), "outlinerDock", m_outliner, Qt::LeftDockWidgetArea);
+    addDock(tr("Properties"), "propertiesDock", new PropertiesPanel(m_document, this), Qt::RightDockWidgetArea);
+    auto* history = new QUndoView(m_document.undoStack(), this);
+    history->setObjectName("historyView");
+    history->setEmptyLabel(tr("<opened>"));
+    addDock(tr("History"), "historyDock", history, Qt::RightDockWidgetArea);
+    m_timeline = new TimelinePanel(*m_simulation, this);
+    addDock(tr("Timeline"), "timelineDock", m_timeline, Qt::BottomDockWidgetArea);
+    m_messages = new MessagesPanel(this);
+    m_messagesDock = addDock(tr("Messages"), "messagesDock", m_messages, Qt::BottomDockWidgetArea);
 }
 
 void MainWindow::createEditMenu()
 {
     QMenu* menu = menuBar()->addMenu(tr("&Edit"));
     QAction* undo = m_document.undoStack()->createUndoAction(this, tr("&Undo"));
+    undo->setObjectName("undoAction");
     undo->setShortcut(QKeySequence::Undo);
     undo->setToolTip(tr("Undo the last edit"));
     QAction* redo = m_document.undoStack()->createRedoAction(this, tr("&Redo"));
-    redo->setShortcut(QKeySequence::Redo);
+    redo->setObjectName("redoAction");
+    redo->setShortcuts({QKeySequence::Redo, QKeySequence(tr("Ctrl+Y"))});
     redo->setToolTip(tr("Redo the last undone edit"));
     menu->addAction(undo);
     menu->addAction(redo);
+    menu->addSeparator();
+    QMenu* toolMenu = menu->addMenu(tr("&Tools"));
+    toolMenu->addActions(m_tools->actions()->actions());
+    toolMenu->setToolTipsVisible(true);
     menu->setToolTipsVisible(true);
 }
 
@@ -123,8 +147,37 @@ void MainWindow::createViewMenu()
     frame->setShortcut(Qt::Key_F);
     frame->setToolTip(tr("Fit the whole scene into the viewport"));
     menu->addSeparator();
-    menu->addAction(m_messagesDock->toggleViewAction());
+    for (QDockWidget* dock : m_docks)
+        menu->addAction(dock->toggleViewAction());
     menu->setToolTipsVisible(true);
+}
+
+void MainWindow::createSimulationMenu()
+{
+    QMenu* menu = menuBar()->addMenu(tr("&Simulation"));
+    auto add = [&](const QString& text, const QKeySequence& key, const QString& tip, auto slot) {
+        QAction* a = menu->addAction(text, m_simulation, slot);
+        a->setShortcut(key);
+        a->setToolTip(tip);
+        return a;
+    };
+    add(tr("&Play / Pause"), QKeySequence(Qt::Key_Space), tr("Play or pause the simulation"),
+        &SimulationController::togglePlay);
+    add(tr("&Step"), QKeySequence(Qt::Key_Period), tr("Advance one frame"), &SimulationController::stepForward);
+    add(tr("&Restart"), QKeySequence(Qt::Key_Home), tr("Back to frame 0"), &SimulationController::restart);
+    add(tr("Simulate to &End"), QKeySequence(tr("Ctrl+E")), tr("Record every frame in the background"),
+        &SimulationController::simulateToEnd);
+    menu->setToolTipsVisible(true);
+}
+
+void MainWindow::createToolBars()
+{
+    QToolBar* tools = addToolBar(tr("Tools"));
+    tools->setObjectName("toolsToolBar");
+    tools->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    QToolBar* options = addToolBar(tr("Tool Options"));
+    options->setObjectName("toolOptionsToolBar");
+    m_tools->populate(tools, options);
 }
 
 void MainWindow::createStatusBar()
@@ -133,48 +186,25 @@ void MainWindow::createStatusBar()
     m_agentCountLabel->setObjectName("agentCountLabel");
     m_frameLabel = new QLabel(this);
     m_frameLabel->setObjectName("frameLabel");
+    m_speedLabel = new QLabel(this);
+    m_speedLabel->setObjectName("speedLabel");
+    m_speedLabel->setToolTip(tr("Simulation speed: steps computed per second"));
     statusBar()->addPermanentWidget(m_agentCountLabel);
     statusBar()->addPermanentWidget(m_frameLabel);
+    statusBar()->addPermanentWidget(m_speedLabel);
+    auto* speedTimer = new QTimer(this);
+    connect(speedTimer, &QTimer::timeout, this, [this] {
+        m_speedLabel->setText(tr("%1 steps/s").arg(m_simulation->stepsPerSecond(), 0, 'f', 0));
+    });
+    speedTimer->start(500);
+    m_speedLabel->setText(tr("0 steps/s"));
     updateAgentStatus();
 }
 
-void MainWindow::openWithDialog()
+void MainWindow::refreshAfterEdit()
 {
-    const QString dir = m_document.filePath().isEmpty() ? QString() : QFileInfo(m_document.filePath()).path();
-    const QString path = QFileDialog::getOpenFileName(this, tr("Open Scene"), dir, tr(kSceneFilter));
-    if (!path.isEmpty())
-        openScene(path);
-}
-
-bool MainWindow::save()
-{
-    if (m_document.filePath().isEmpty())
-        return saveAsWithDialog();
-    return reportSave(m_document.save());
-}
-
-bool MainWindow::saveAsWithDialog()
-{
-    const QString path = QFileDialog::getSaveFileName(this, tr("Save Scene As"), m_document.filePath(),
-                                                      tr(kSceneFilter));
-    return !path.isEmpty() && reportSave(m_document.saveAs(path));
-}
-
-bool MainWindow::reportSave(const sim::SaveResult& result)
-{
-    if (!result.ok) {
-        QMessageBox::warning(this, tr("Save failed"), QString::fromStdString(result.error));
-        return false;
-    }
-    statusBar()->showMessage(tr("Saved %1").arg(m_document.filePath()), kStatusMessageMs);
-    return true;
-}
-
-void MainWindow::updateTitle()
-{
-    const QString path = m_document.filePath();
-    const QString name = path.isEmpty() ? tr("Untitled") : QFileInfo(path).fileName();
-    setWindowTitle(tr("%1[*] - Throng").arg(name));
+    m_viewport->updateScene(m_document.scene());
+    m_simulation->setScene(m_document.scene());
 }
 
 void MainWindow::updateAgentStatus()
@@ -190,14 +220,6 @@ void MainWindow::restoreWindowState()
     if (!restoreGeometry(settings.value("mainWindow/geometry").toByteArray()))
         resize(1280, 800);
     restoreState(settings.value("mainWindow/state").toByteArray());
-}
-
-void MainWindow::closeEvent(QCloseEvent* event)
-{
-    QSettings settings;
-    settings.setValue("mainWindow/geometry", saveGeometry());
-    settings.setValue("mainWindow/state", saveState());
-    QMainWindow::closeEvent(event);
 }
 
 }  // namespace throng::editor

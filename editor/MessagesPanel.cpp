@@ -12,7 +12,12 @@ MessagesPanel::MessagesPanel(QWidget* parent) : QListWidget(parent)
     setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Preferred);
     setWordWrap(true);
     setSelectionMode(QAbstractItemView::ExtendedSelection);
-    setToolTip(tr("What the last open or save reported, as file:line:column: message"));
+    setToolTip(tr("What the last open or save reported, as file:line:column: message; "
+                  "double-click a message to select its item"));
+    connect(this, &QListWidget::itemActivated, this, [this](QListWidgetItem* row) {
+        if (const std::optional<SceneItem> item = itemForKey(row->data(Qt::UserRole).toString().toStdString()))
+            emit itemRequested(*item);
+    });
 }
 
 QSize MessagesPanel::sizeHint() const
@@ -29,8 +34,10 @@ void MessagesPanel::showDiagnostics(const QString& headline, const std::vector<s
         auto* item = new QListWidgetItem(
             style->standardIcon(error ? QStyle::SP_MessageBoxCritical : QStyle::SP_MessageBoxWarning),
             QString::fromStdString(d.format()), this);
-        if (!d.key.empty())
+        if (!d.key.empty()) {
             item->setToolTip(QString::fromStdString(d.key));
+            item->setData(Qt::UserRole, QString::fromStdString(d.key));
+        }
     }
 }
 

@@ -1,7 +1,9 @@
 #pragma once
 // The "Messages" list: what the last load reported, one "file:line:col: message" row
-// per diagnostic, errors marked as such. Shows messages; never reads files itself.
+// per diagnostic, errors marked as such; activating a row that names an item (by its key)
+// asks for that item to be selected. Shows messages; never reads files itself.
 
+#include "editor/SceneItem.h"
 #include "simcore/io/Diagnostic.h"
 
 #include <QListWidget>
@@ -23,6 +25,10 @@ public:
 
     // A few rows high, so the dock leaves the viewport most of the window.
     QSize sizeHint() const override;
+
+signals:
+    // The user activated (double-clicked, Enter) a message about this item.
+    void itemRequested(SceneItem item);
 };
 
 }  // namespace throng::editor

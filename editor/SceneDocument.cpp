@@ -3,6 +3,8 @@
 #include <QFile>
 #include <QFileInfo>
 
+#include <algorithm>
+
 namespace throng::editor {
 
 SceneDocument::SceneDocument(QObject* parent) : QObject(parent)
@@ -17,6 +19,7 @@ std::vector<sim::Diagnostic> SceneDocument::load(const QString& path)
         return std::move(result.diagnostics);
     m_scene = std::move(result.scene);
     m_undoStack.clear();
+    setSelection({});
     m_filePath = QFileInfo(path).absoluteFilePath();
     emit filePathChanged(m_filePath);
     emit sceneReset();
@@ -42,6 +45,55 @@ sim::SaveResult SceneDocument::saveAs(const QString& path)
         emit filePathChanged(m_filePath);
     }
     return result;
+}
+
+void SceneDocument::adoptRecovered(const QString& path)
+{
+    m_filePath = path.isEmpty() ? QString() : QFileInfo(path).absoluteFilePath();
+    emit filePathChanged(m_filePath);
+    m_undoStack.resetClean();
+}
+
+void SceneDocument::reset()
+{
+    m_scene = {};
+    m_undoStack.clear();
+    setSelection({});
+    m_filePath.clear();
+    emit filePathChanged(m_filePath);
+    emit sceneReset();
+}
+
+void SceneDocument::setSelection(Selection selection)
+{
+    if (selection == m_selection)
+        return;
+    m_selection = std::move(selection);
+    emit selectionChanged();
+}
+
+void SceneDocument::modify(const std::function<void(sim::Scene&)>& edit)
+{
+    edit(m_scene);
+    // Undoing an addition may remove a selected item.
+    Selection kept;
+    for (const SceneItem& item : m_selection)
+        if (item.index < itemCount(m_scene, item.kind))
+            kept.push_back(item);
+    emit sceneChanged();
+    setSelection(std::move(kept));
+}
+
+std::uint32_t SceneDocument::nextAgentId() const
+{
+    std::uint32_t highest = 0;
+    for (const sim::Agent& a : m_scene.agents)
+        highest = std::max(highest, a.id);
+    for (const sim::Vehicle& v : m_scene.vehicles)
+        highest = std::max(highest, v.id);
+    for (const sim::Hero& h : m_scene.heroes)
+        highest = std::max(highest, h.id);
+    return highest + 1;
 }
 
 }  // namespace throng::editor

@@ -2,6 +2,7 @@
 // The open scene: owns the sim::Scene, its undo stack and its file path, and tells views
 // when the scene is replaced or edited. Loading never half-loads; it never draws.
 
+#include "editor/SceneItem.h"
 #include "simcore/io/Diagnostic.h"
 #include "simcore/io/SceneIO.h"
 #include "simcore/scene/Scene.h"
@@ -10,6 +11,7 @@
 #include <QString>
 #include <QUndoStack>
 
+#include <functional>
 #include <vector>
 
 namespace throng::editor {
@@ -34,6 +36,21 @@ public:
     // on success the document takes that path and is no longer modified.
     sim::SaveResult save();
     sim::SaveResult saveAs(const QString& path);
+    // After loading a recovery copy: the scene belongs to `path` (empty = untitled) and
+    // counts as unsaved.
+    void adoptRecovered(const QString& path);
+    // Replaces the scene with an empty one without a file; clears the history.
+    void reset();
+
+    // The one mutator commands use: applies `edit` to the scene, then emits
+    // sceneChanged(). Only QUndoCommands call it, so every edit is undoable.
+    void modify(const std::function<void(sim::Scene&)>& edit);
+    // A stable id not yet used by any placed agent, vehicle or hero (> 0).
+    std::uint32_t nextAgentId() const;
+
+    // What the user picked (outliner, select tool); the properties panel edits it.
+    const Selection& selection() const { return m_selection; }
+    void setSelection(Selection selection);
 
 signals:
     // The whole scene was replaced (opened); views rebuild everything.
@@ -42,11 +59,13 @@ signals:
     void sceneChanged();
     void filePathChanged(const QString& path);
     void modifiedChanged(bool modified);
+    void selectionChanged();
 
 private:
     sim::Scene m_scene;
     QUndoStack m_undoStack;
     QString m_filePath;
+    Selection m_selection;
 };
 
 }  // namespace throng::editor

@@ -38,8 +38,9 @@ int main(int argc, char** argv)
         return ScreenshotCommand(parsed.screenshot, std::cout, std::cerr).run();
 
     MainWindow window;
-    if (!parsed.scenePath.isEmpty())
-        window.openScene(parsed.scenePath);
     window.show();
+    // Changes a crash left behind come first; the scene named on the command line otherwise.
+    if (!window.offerRecovery() && !parsed.scenePath.isEmpty())
+        window.openScene(parsed.scenePath);
     return QApplication::exec();
 }

@@ -24,11 +24,16 @@ public:
     static constexpr float kNoseFrom = 0.30f;
     static constexpr float kNoseTo = 0.96f;
 
-    static std::vector<GlyphVertex> flat();
-    static std::vector<GlyphVertex> prism();
+    // Segments around the circle: kDetailed for close-ups, kCoarse (no rim) for crowds
+    // of many small glyphs, where vertex work dominates the frame.
+    static constexpr int kDetailed = 28;
+    static constexpr int kCoarse = 6;
+
+    static std::vector<GlyphVertex> flat(int segments = kDetailed);
+    static std::vector<GlyphVertex> prism(int segments = kDetailed);
 
 private:
-    static void addCap(std::vector<GlyphVertex>& out, float y, float noseLiftY);
+    static void addCap(std::vector<GlyphVertex>& out, float y, float noseLiftY, int segments);
 };
 
 }  // namespace throng::editor

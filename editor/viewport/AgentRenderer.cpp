@@ -8,6 +8,7 @@
 
 #include <QOpenGLFunctions_3_3_Core>
 
+#include <algorithm>
 #include <cstddef>
 
 namespace throng::editor {
@@ -62,6 +63,34 @@ void main()
 }
 )";
 
+// One point per agent; the fragment shader cuts the square point into a disc.
+const char* const kSpriteVertexShader = R"(#version 330 core
+layout(location = 3) in vec4 i_positionHeading;
+layout(location = 4) in vec4 i_radiusColour;
+uniform mat4 u_viewProjection;
+uniform float u_pixelsPerMetre;
+uniform float u_minRadiusPx;
+out vec3 v_colour;
+void main()
+{
+    gl_Position = u_viewProjection * vec4(i_positionHeading.xyz, 1.0);
+    gl_PointSize = 2.0 * max(i_radiusColour.x * u_pixelsPerMetre, u_minRadiusPx);
+    v_colour = i_radiusColour.yzw;
+}
+)";
+
+const char* const kSpriteFragmentShader = R"(#version 330 core
+in vec3 v_colour;
+out vec4 o_colour;
+void main()
+{
+    vec2 d = gl_PointCoord * 2.0 - 1.0;
+    if (dot(d, d) > 1.0)
+        discard;
+    o_colour = vec4(v_colour, 1.0);
+}
+)";
+
 }  // namespace
 
 bool AgentRenderer::initialize(QOpenGLFunctions_3_3_Core& gl)
@@ -70,14 +99,29 @@ bool AgentRenderer::initialize(QOpenGLFunctions_3_3_Core& gl)
     if (!m_program)
         return false;
     gl.glGenBuffers(1, &m_instances);
-    createShape(gl, m_flat, false);
-    createShape(gl, m_prism, true);
+    createShape(gl, m_flat, false, AgentGlyphMesh::kDetailed);
+    createShape(gl, m_prism, true, AgentGlyphMesh::kDetailed);
+    createShape(gl, m_coarseFlat, false, AgentGlyphMesh::kCoarse);
+    createShape(gl, m_coarsePrism, true, AgentGlyphMesh::kCoarse);
+    m_spriteProgram = buildShaderProgram("agent sprite", kSpriteVertexShader, kSpriteFragmentShader);
+    if (!m_spriteProgram)
+        return false;
+    gl.glGenVertexArrays(1, &m_spriteVao);
+    gl.glBindVertexArray(m_spriteVao);
+    gl.glBindBuffer(GL_ARRAY_BUFFER, m_instances);
+    gl.glEnableVertexAttribArray(3);
+    gl.glVertexAttribPointer(3, 4, GL_FLOAT, GL_FALSE, sizeof(AgentGlyph),
+                             reinterpret_cast<const void*>(offsetof(AgentGlyph, position)));
+    gl.glEnableVertexAttribArray(4);
+    gl.glVertexAttribPointer(4, 4, GL_FLOAT, GL_FALSE, sizeof(AgentGlyph),
+                             reinterpret_cast<const void*>(offsetof(AgentGlyph, radiusM)));
+    gl.glBindVertexArray(0);
     return true;
 }
 
-void AgentRenderer::createShape(QOpenGLFunctions_3_3_Core& gl, Shape& shape, bool prism)
+void AgentRenderer::createShape(QOpenGLFunctions_3_3_Core& gl, Shape& shape, bool prism, int segments)
 {
-    const std::vector<GlyphVertex> vertices = prism ? AgentGlyphMesh::prism() : AgentGlyphMesh::flat();
+    const std::vector<GlyphVertex> vertices = prism ? AgentGlyphMesh::prism(segments) : AgentGlyphMesh::flat(segments);
     shape.vertexCount = int(vertices.size());
     gl.glGenVertexArrays(1, &shape.vao);
     gl.glGenBuffers(1, &shape.vbo);
@@ -111,11 +155,14 @@ void AgentRenderer::createShape(QOpenGLFunctions_3_3_Core& gl, Shape& shape, boo
 
 void AgentRenderer::destroy(QOpenGLFunctions_3_3_Core& gl)
 {
-    for (Shape* shape : {&m_flat, &m_prism}) {
+    for (Shape* shape : {&m_flat, &m_prism, &m_coarseFlat, &m_coarsePrism}) {
         gl.glDeleteBuffers(1, &shape->vbo);
         gl.glDeleteVertexArrays(1, &shape->vao);
         *shape = {};
     }
+    gl.glDeleteVertexArrays(1, &m_spriteVao);
+    m_spriteVao = 0;
+    m_spriteProgram.reset();
     gl.glDeleteBuffers(1, &m_instances);
     m_instances = 0;
     m_instanceCount = 0;
@@ -130,13 +177,22 @@ void AgentRenderer::upload(QOpenGLFunctions_3_3_Core& gl, std::span<const AgentG
     gl.glBindBuffer(GL_ARRAY_BUFFER, m_instances);
     gl.glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(glyphs.size_bytes()), glyphs.data(), GL_DYNAMIC_DRAW);
     m_instanceCount = int(glyphs.size());
+    m_maxRadiusM = 0.0f;
+    for (const AgentGlyph& g : glyphs)
+        m_maxRadiusM = std::max(m_maxRadiusM, g.radiusM);
 }
 
 void AgentRenderer::draw(QOpenGLFunctions_3_3_Core& gl, const RenderView& view)
 {
     if (!m_program || m_instanceCount == 0)
         return;
-    const Shape& shape = view.perspective ? m_prism : m_flat;
+    if (!view.perspective && m_maxRadiusM < kSpriteBelowPx * view.metresPerPixel) {
+        drawSprites(gl, view);
+        return;
+    }
+    const bool tiny = !view.perspective && m_maxRadiusM < kCoarseBelowPx * view.metresPerPixel;
+    const bool coarse = m_instanceCount > kDetailedLimit || tiny;
+    const Shape& shape = view.perspective ? (coarse ? m_coarsePrism : m_prism) : (coarse ? m_coarseFlat : m_flat);
     m_program->bind();
     gl.glUniformMatrix4fv(m_program->uniformLocation("u_viewProjection"), 1, GL_FALSE,
                           glm::value_ptr(view.viewProjection));
@@ -149,6 +205,21 @@ void AgentRenderer::draw(QOpenGLFunctions_3_3_Core& gl, const RenderView& view)
     gl.glDrawArraysInstanced(GL_TRIANGLES, 0, shape.vertexCount, m_instanceCount);
     gl.glBindVertexArray(0);
     m_program->release();
+}
+
+void AgentRenderer::drawSprites(QOpenGLFunctions_3_3_Core& gl, const RenderView& view)
+{
+    m_spriteProgram->bind();
+    gl.glUniformMatrix4fv(m_spriteProgram->uniformLocation("u_viewProjection"), 1, GL_FALSE,
+                          glm::value_ptr(view.viewProjection));
+    m_spriteProgram->setUniformValue("u_pixelsPerMetre", 1.0f / std::max(view.metresPerPixel, 1e-6f));
+    m_spriteProgram->setUniformValue("u_minRadiusPx", kMinRadiusPx);
+    gl.glEnable(GL_PROGRAM_POINT_SIZE);
+    gl.glBindVertexArray(m_spriteVao);
+    gl.glDrawArrays(GL_POINTS, 0, m_instanceCount);
+    gl.glBindVertexArray(0);
+    gl.glDisable(GL_PROGRAM_POINT_SIZE);
+    m_spriteProgram->release();
 }
 
 }  // namespace throng::editor

@@ -27,6 +27,13 @@ struct AgentGlyph {
 class AgentRenderer {
 public:
     static constexpr float kMinRadiusPx = 2.0f;
+    // Coarse glyphs above this many agents, or when agents are under kCoarseBelowPx in
+    // radius on screen (top view): their detail would not show, their vertices would cost.
+    static constexpr int kDetailedLimit = 5000;
+    static constexpr float kCoarseBelowPx = 6.0f;
+    // Below this radius on screen (top view) an agent is one round point sprite: one
+    // vertex instead of a mesh, as its heading could not be seen anyway.
+    static constexpr float kSpriteBelowPx = 3.0f;
 
     bool initialize(QOpenGLFunctions_3_3_Core& gl);
     void destroy(QOpenGLFunctions_3_3_Core& gl);
@@ -38,10 +45,15 @@ private:
         unsigned vao = 0, vbo = 0;
         int vertexCount = 0;
     };
-    void createShape(QOpenGLFunctions_3_3_Core& gl, Shape& shape, bool prism);
+    void createShape(QOpenGLFunctions_3_3_Core& gl, Shape& shape, bool prism, int segments);
+
+    void drawSprites(QOpenGLFunctions_3_3_Core& gl, const RenderView& view);
 
     std::unique_ptr<QOpenGLShaderProgram> m_program;
-    Shape m_flat, m_prism;
+    std::unique_ptr<QOpenGLShaderProgram> m_spriteProgram;
+    unsigned m_spriteVao = 0;
+    Shape m_flat, m_prism, m_coarseFlat, m_coarsePrism;
+    float m_maxRadiusM = 0.0f;
     unsigned m_instances = 0;
     int m_instanceCount = 0;
 };

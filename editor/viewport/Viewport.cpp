@@ -1,6 +1,8 @@
 #include "editor/viewport/Viewport.h"
 
+#include "editor/viewport/GroundRay.h"
 #include "editor/viewport/SetGeometryBuilder.h"
+#include "editor/viewport/ToolOverlay.h"
 #include "editor/viewport/ViewportPalette.h"
 #include "simcore/world/World.h"
 
@@ -8,11 +10,13 @@
 #include <QKeyEvent>
 #include <QMouseEvent>
 #include <QOpenGLContext>
+#include <QResizeEvent>
 #include <QWheelEvent>
 
 #include <algorithm>
 #include <cmath>
 #include <exception>
+
 
 namespace throng::editor {
 
@@ -28,6 +32,48 @@ Viewport::Viewport(QWidget* parent) : QOpenGLWidget(parent)
     setMinimumSize(160, 120);
     setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Expanding);
     setToolTip(tr("Pan: middle or right drag. Zoom: wheel. Orbit (3D): right drag. Frame all: F."));
+    setMouseTracking(true);
+    m_overlay = new ToolOverlay(this);
+    m_overlay->resize(size());
+}
+
+void Viewport::setTool(ViewportTool* tool)
+{
+    if (tool == m_tool)
+        return;
+    if (m_tool) {
+        m_tool->deactivate();
+        disconnect(m_tool, nullptr, m_overlay, nullptr);
+    }
+    m_tool = tool;
+    m_toolDragging = false;
+    if (m_tool) {
+        m_tool->activate();
+        connect(m_tool, &ViewportTool::overlayChanged, m_overlay, qOverload<>(&QWidget::update));
+    }
+    m_overlay->setTool(m_tool);
+}
+
+void Viewport::updateScene(const sim::Scene& scene)
+{
+    const bool frameOnNextPaint = m_frameOnNextPaint, movedByUser = m_cameraMovedByUser;
+    setScene(scene);
+    m_frameOnNextPaint = frameOnNextPaint;
+    m_cameraMovedByUser = movedByUser;
+}
+
+std::optional<glm::vec3> Viewport::pixelToGround(QPointF pixel) const
+{
+    CameraRig camera = m_camera;
+    camera.setViewportSize(size());
+    return castToGround(camera.renderView().viewProjection, size(), pixel, m_terrain);
+}
+
+void Viewport::forwardToTool(QMouseEvent* event, void (ViewportTool::*handler)(const ToolMouse&))
+{
+    const ToolMouse mouse{event->position(), pixelToGround(event->position()), event->modifiers()};
+    (m_tool->*handler)(mouse);
+    event->accept();
 }
 
 Viewport::~Viewport()
@@ -93,6 +139,7 @@ void Viewport::setSet(const sim::Scene& scene)
     m_traffic.lanes = scene.lanes;
     m_traffic.crosswalks = scene.crosswalks;
     m_traffic.trafficLights = scene.trafficLights;
+    m_terrain = scene.terrain;
     m_typeRadiusM.clear();
     for (const sim::AgentType& t : scene.agentTypes)
         m_typeRadiusM.push_back(t.radiusM);
@@ -253,6 +300,11 @@ void Viewport::paintGL()
 
 void Viewport::mousePressEvent(QMouseEvent* event)
 {
+    if (event->button() == Qt::LeftButton && m_tool && m_dragButton == Qt::NoButton) {
+        m_toolDragging = true;
+        forwardToTool(event, &ViewportTool::mousePressed);
+        return;
+    }
     if (event->button() == Qt::MiddleButton || event->button() == Qt::RightButton) {
         m_dragButton = event->button();
         m_lastMousePos = event->position();
@@ -265,7 +317,10 @@ void Viewport::mousePressEvent(QMouseEvent* event)
 void Viewport::mouseMoveEvent(QMouseEvent* event)
 {
     if (m_dragButton == Qt::NoButton) {
-        QOpenGLWidget::mouseMoveEvent(event);
+        if (m_tool)
+            forwardToTool(event, &ViewportTool::mouseMoved);
+        else
+            QOpenGLWidget::mouseMoveEvent(event);
         return;
     }
     const QPointF delta = event->position() - m_lastMousePos;
@@ -283,12 +338,32 @@ void Viewport::mouseMoveEvent(QMouseEvent* event)
 
 void Viewport::mouseReleaseEvent(QMouseEvent* event)
 {
+    if (event->button() == Qt::LeftButton && m_tool && m_toolDragging) {
+        m_toolDragging = false;
+        forwardToTool(event, &ViewportTool::mouseReleased);
+        return;
+    }
     if (event->button() == m_dragButton) {
         m_dragButton = Qt::NoButton;
         event->accept();
         return;
     }
     QOpenGLWidget::mouseReleaseEvent(event);
+}
+
+void Viewport::mouseDoubleClickEvent(QMouseEvent* event)
+{
+    if (event->button() == Qt::LeftButton && m_tool) {
+        forwardToTool(event, &ViewportTool::mouseDoubleClicked);
+        return;
+    }
+    QOpenGLWidget::mouseDoubleClickEvent(event);
+}
+
+void Viewport::resizeEvent(QResizeEvent* event)
+{
+    QOpenGLWidget::resizeEvent(event);
+    m_overlay->resize(event->size());
 }
 
 void Viewport::wheelEvent(QWheelEvent* event)
@@ -305,6 +380,8 @@ void Viewport::wheelEvent(QWheelEvent* event)
 
 void Viewport::keyPressEvent(QKeyEvent* event)
 {
+    if (m_tool && m_tool->keyPressed(event))
+        return;
     if (event->key() == Qt::Key_F && event->modifiers() == Qt::NoModifier) {
         frameAll();
         return;

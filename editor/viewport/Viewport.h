@@ -3,6 +3,7 @@
 // lanes, lights, ...) and the agents of one moment, through a top or orbit camera.
 // Shows what it is given (plain scene data and agent frames); never edits the scene.
 
+#include "editor/tools/ViewportTool.h"
 #include "editor/viewport/AgentRenderer.h"
 #include "editor/viewport/CameraRig.h"
 #include "editor/viewport/GridRenderer.h"
@@ -27,6 +28,8 @@ class World;
 
 namespace throng::editor {
 
+class ToolOverlay;
+
 class Viewport : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
     Q_OBJECT
 
@@ -42,6 +45,8 @@ public:
     void setScene(const sim::Scene& scene);
     // Shows the scene's set and the current state of `state`, a World of that scene.
     void setScene(const sim::Scene& scene, const sim::World& state);
+    // Like setScene(scene) after an edit: the camera stays where the user left it.
+    void updateScene(const sim::Scene& scene);
     // Shows frame `frame` (< cache.frameCount()) of a recording of the current scene.
     void showFrame(const sim::FrameCache& cache, std::size_t frame);
 
@@ -56,6 +61,13 @@ public:
     std::optional<double> timeS() const { return m_timeS; }
     // The widget pixel (logical) where a world point appears through the current camera.
     QPointF worldToPixel(glm::vec3 point) const;
+    // The point of the terrain (or the ground plane y = 0) under a widget pixel, found by
+    // casting the camera ray; empty when the ray misses the ground.
+    std::optional<glm::vec3> pixelToGround(QPointF pixel) const;
+
+    // The tool that receives left-button input and draws the overlay; null = navigation only.
+    void setTool(ViewportTool* tool);
+    ViewportTool* tool() const { return m_tool; }
 
     // False when no OpenGL 3.3 core context could be made; glProblem() says why.
     bool isGlReady() const { return m_glReady; }
@@ -73,6 +85,8 @@ protected:
     void mousePressEvent(QMouseEvent* event) override;
     void mouseMoveEvent(QMouseEvent* event) override;
     void mouseReleaseEvent(QMouseEvent* event) override;
+    void mouseDoubleClickEvent(QMouseEvent* event) override;
+    void resizeEvent(QResizeEvent* event) override;
     void wheelEvent(QWheelEvent* event) override;
     void keyPressEvent(QKeyEvent* event) override;
 
@@ -81,6 +95,7 @@ private:
     void setAgents(std::span<const sim::AgentFrame> frames, std::span<const sim::AgentInfo> agents,
                    std::optional<double> timeS, std::size_t frameIndex);
     GroundBox framingBox() const;
+    void forwardToTool(QMouseEvent* event, void (ViewportTool::*handler)(const ToolMouse&));
     void uploadChanged();
     void releaseGl();
 
@@ -97,6 +112,7 @@ private:
     bool m_setChanged = true, m_lightsChanged = true, m_agentsChanged = true;
 
     sim::Scene m_traffic;               // lanes, crosswalks and lights only: relit every frame
+    sim::Terrain m_terrain;
     std::vector<float> m_typeRadiusM;   // by Scene::agentTypes index
     glm::vec2 m_boundsMin{-50.0f}, m_boundsMax{50.0f};
     GroundBox m_setBox, m_agentBox;
@@ -107,6 +123,10 @@ private:
     bool m_cameraMovedByUser = false;
     Qt::MouseButton m_dragButton = Qt::NoButton;
     QPointF m_lastMousePos;
+
+    ViewportTool* m_tool = nullptr;
+    ToolOverlay* m_overlay = nullptr;
+    bool m_toolDragging = false;
 
     bool m_glReady = false;
     QString m_glProblem;

@@ -44,6 +44,17 @@ private slots:
         QCOMPARE(a.screenshot.view, ViewMode::Orbit);
     }
 
+    void cameraPerspIsTheIssueSpellingOfThe3dView()
+    {
+        const EditorArguments a =
+            EditorArguments::parse({"--screenshot", "o.png", "crossroads.yaml", "--camera", "persp"});
+        QVERIFY2(a.error.isEmpty(), qPrintable(a.error));
+        QCOMPARE(a.screenshot.view, ViewMode::Orbit);
+        QCOMPARE(EditorArguments::parse({"--screenshot", "o.png", "s.yaml", "--camera", "top"}).screenshot.view,
+                 ViewMode::Top);
+        QVERIFY(EditorArguments::parse({"--screenshot", "o.png", "s.yaml", "--camera", "side"}).error.contains("side"));
+    }
+
     void helpWins()
     {
         QCOMPARE(EditorArguments::parse({"--frame", "x", "--help"}).mode, EditorArguments::Mode::Help);

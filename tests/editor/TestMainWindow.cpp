@@ -10,6 +10,7 @@
 
 #include <QAction>
 #include <QDockWidget>
+#include <QFileInfo>
 #include <QLabel>
 #include <QMenuBar>
 #include <QStandardPaths>
@@ -124,6 +125,26 @@ private slots:
         }
         QCOMPARE(menuAction(window, "Open...")->shortcut(), QKeySequence(QKeySequence::Open));
         QCOMPARE(menuAction(window, "Save")->shortcut(), QKeySequence(QKeySequence::Save));
+    }
+
+    void openedScenesAreRememberedInOpenRecent()
+    {
+        const QString first = writeScene(m_dir, "first.yaml", kSevenAgents);
+        const QString second = writeScene(m_dir, "second.yaml", kSevenAgents);
+        {
+            MainWindow window;
+            QVERIFY(window.openScene(first));
+            QVERIFY(window.openScene(second));
+        }
+        MainWindow later;
+        QAction* recent = menuAction(later, "Open Recent");
+        QVERIFY(recent && recent->menu());
+        const QList<QAction*> entries = recent->menu()->actions();
+        QVERIFY(entries.size() >= 2);
+        QCOMPARE(entries[0]->toolTip(), QFileInfo(second).absoluteFilePath());
+        QCOMPARE(entries[1]->toolTip(), QFileInfo(first).absoluteFilePath());
+        entries[1]->trigger();
+        QCOMPARE(later.document().filePath(), QFileInfo(first).absoluteFilePath());
     }
 
     void windowComesBackWhereItWasLeft()

@@ -1,0 +1,105 @@
+#include "editor/SceneItem.h"
+
+#include <QCoreApplication>
+
+namespace throng::editor {
+
+namespace {
+
+QString tr(const char* text)
+{
+    return QCoreApplication::translate("SceneItem", text);
+}
+
+template <class T>
+QString named(const std::vector<T>& list, std::size_t i, const QString& kind)
+{
+    if (i < list.size() && !list[i].name.empty())
+        return QString::fromStdString(list[i].name);
+    return QStringLiteral("%1 %2").arg(kind).arg(i + 1);
+}
+
+}  // namespace
+
+std::size_t itemCount(const sim::Scene& s, ItemKind kind)
+{
+    switch (kind) {
+    case ItemKind::Settings: return 1;
+    case ItemKind::AgentType: return s.agentTypes.size();
+    case ItemKind::Group: return s.groups.size();
+    case ItemKind::Agent: return s.agents.size();
+    case ItemKind::Path: return s.paths.size();
+    case ItemKind::Wall: return s.walls.size();
+    case ItemKind::Obstacle: return s.obstacles.size();
+    case ItemKind::Goal: return s.goals.size();
+    case ItemKind::TrafficLight: return s.trafficLights.size();
+    case ItemKind::Lane: return s.lanes.size();
+    case ItemKind::Hero: return s.heroes.size();
+    case ItemKind::Brain: return s.brains.size();
+    }
+    return 0;
+}
+
+QString kindTitle(ItemKind kind)
+{
+    switch (kind) {
+    case ItemKind::Settings: return tr("Settings");
+    case ItemKind::AgentType: return tr("Agent Types");
+    case ItemKind::Group: return tr("Groups");
+    case ItemKind::Agent: return tr("Agents");
+    case ItemKind::Path: return tr("Paths");
+    case ItemKind::Wall: return tr("Walls");
+    case ItemKind::Obstacle: return tr("Obstacles");
+    case ItemKind::Goal: return tr("Goals");
+    case ItemKind::TrafficLight: return tr("Traffic Lights");
+    case ItemKind::Lane: return tr("Lanes");
+    case ItemKind::Hero: return tr("Heroes");
+    case ItemKind::Brain: return tr("Brains");
+    }
+    return {};
+}
+
+QString itemLabel(const sim::Scene& s, SceneItem item)
+{
+    const std::size_t i = item.index;
+    switch (item.kind) {
+    case ItemKind::Settings: return tr("Simulation Settings");
+    case ItemKind::AgentType: return named(s.agentTypes, i, tr("Type"));
+    case ItemKind::Group: return named(s.groups, i, tr("Group"));
+    case ItemKind::Agent:
+        return i < s.agents.size() ? tr("Agent %1 (%2)").arg(s.agents[i].id).arg(QString::fromStdString(s.agents[i].type))
+                                   : QString();
+    case ItemKind::Path: return named(s.paths, i, tr("Path"));
+    case ItemKind::Wall: return named(s.walls, i, tr("Wall"));
+    case ItemKind::Obstacle: return named(s.obstacles, i, tr("Obstacle"));
+    case ItemKind::Goal: return named(s.goals, i, tr("Goal"));
+    case ItemKind::TrafficLight: return named(s.trafficLights, i, tr("Light"));
+    case ItemKind::Lane: return named(s.lanes, i, tr("Lane"));
+    case ItemKind::Hero: return named(s.heroes, i, tr("Hero"));
+    case ItemKind::Brain: return named(s.brains, i, tr("Brain"));
+    }
+    return {};
+}
+
+std::optional<SceneItem> itemForKey(const std::string& key)
+{
+    static const std::pair<const char*, ItemKind> kLists[] = {
+        {"agent_types", ItemKind::AgentType}, {"groups", ItemKind::Group},   {"agents", ItemKind::Agent},
+        {"paths", ItemKind::Path},             {"walls", ItemKind::Wall},     {"obstacles", ItemKind::Obstacle},
+        {"goals", ItemKind::Goal},             {"traffic_lights", ItemKind::TrafficLight},
+        {"lanes", ItemKind::Lane},             {"heroes", ItemKind::Hero},    {"brains", ItemKind::Brain}};
+    if (key.rfind("settings", 0) == 0)
+        return SceneItem{ItemKind::Settings, 0};
+    const std::size_t open = key.find('['), close = key.find(']');
+    if (open == std::string::npos || close == std::string::npos || close <= open + 1)
+        return std::nullopt;
+    const std::string list = key.substr(0, open), digits = key.substr(open + 1, close - open - 1);
+    if (digits.find_first_not_of("0123456789") != std::string::npos || digits.size() > 9)
+        return std::nullopt;
+    for (const auto& [name, kind] : kLists)
+        if (list == name)
+            return SceneItem{kind, std::size_t(std::stoul(digits))};
+    return std::nullopt;
+}
+
+}  // namespace throng::editor

@@ -1,0 +1,104 @@
+#include "editor/panels/OutlinerPanel.h"
+
+#include "editor/SceneDocument.h"
+
+#include <QHeaderView>
+#include <QSignalBlocker>
+
+namespace throng::editor {
+
+namespace {
+constexpr int kKindRole = Qt::UserRole;
+constexpr int kIndexRole = Qt::UserRole + 1;
+constexpr ItemKind kListed[] = {ItemKind::Settings, ItemKind::AgentType, ItemKind::Group,    ItemKind::Agent,
+                                ItemKind::Path,     ItemKind::Wall,      ItemKind::Obstacle, ItemKind::Goal,
+                                ItemKind::TrafficLight, ItemKind::Lane,  ItemKind::Hero,     ItemKind::Brain};
+}  // namespace
+
+OutlinerPanel::OutlinerPanel(SceneDocument& document, QWidget* parent) : QTreeWidget(parent), m_document(document)
+{
+    setObjectName("outliner");
+    setHeaderHidden(true);
+    setSelectionMode(QAbstractItemView::ExtendedSelection);
+    setToolTip(tr("Everything in the scene; select rows to edit them in Properties"));
+    connect(&m_document, &SceneDocument::sceneReset, this, &OutlinerPanel::rebuild);
+    connect(&m_document, &SceneDocument::sceneChanged, this, &OutlinerPanel::rebuild);
+    connect(&m_document, &SceneDocument::selectionChanged, this, &OutlinerPanel::showSelection);
+    connect(this, &QTreeWidget::itemSelectionChanged, this, &OutlinerPanel::takeSelection);
+    rebuild();
+}
+
+QTreeWidgetItem* OutlinerPanel::kindRow(ItemKind kind) const
+{
+    for (int i = 0; i < topLevelItemCount(); ++i)
+        if (topLevelItem(i)->data(0, kKindRole).toInt() == int(kind))
+            return topLevelItem(i);
+    return nullptr;
+}
+
+void OutlinerPanel::rebuild()
+{
+    const QSignalBlocker block(this);
+    m_updating = true;
+    QSet<int> expanded;
+    for (int i = 0; i < topLevelItemCount(); ++i)
+        if (topLevelItem(i)->isExpanded())
+            expanded.insert(topLevelItem(i)->data(0, kKindRole).toInt());
+    clear();
+    const sim::Scene& scene = m_document.scene();
+    for (ItemKind kind : kListed) {
+        const std::size_t count = itemCount(scene, kind);
+        if (kind == ItemKind::Settings) {
+            auto* row = new QTreeWidgetItem(this, {itemLabel(scene, {kind, 0})});
+            row->setData(0, kKindRole, int(kind));
+            row->setData(0, kIndexRole, 0);
+            continue;
+        }
+        auto* heading = new QTreeWidgetItem(this, {QStringLiteral("%1 (%2)").arg(kindTitle(kind)).arg(count)});
+        heading->setData(0, kKindRole, int(kind));
+        heading->setData(0, kIndexRole, -1);
+        heading->setFlags(heading->flags() & ~Qt::ItemIsSelectable);
+        if (kind == ItemKind::Agent && count > kMaxListedAgents)
+            continue;
+        for (std::size_t i = 0; i < count; ++i) {
+            auto* row = new QTreeWidgetItem(heading, {itemLabel(scene, {kind, i})});
+            row->setData(0, kKindRole, int(kind));
+            row->setData(0, kIndexRole, qlonglong(i));
+        }
+        heading->setExpanded(expanded.contains(int(kind)));
+    }
+    m_updating = false;
+    showSelection();
+}
+
+void OutlinerPanel::showSelection()
+{
+    const QSignalBlocker block(this);
+    clearSelection();
+    for (const SceneItem& item : m_document.selection()) {
+        QTreeWidgetItem* heading = kindRow(item.kind);
+        if (item.kind == ItemKind::Settings && heading) {
+            heading->setSelected(true);
+            continue;
+        }
+        if (heading && int(item.index) < heading->childCount()) {
+            heading->child(int(item.index))->setSelected(true);
+            heading->setExpanded(true);
+        }
+    }
+}
+
+void OutlinerPanel::takeSelection()
+{
+    if (m_updating)
+        return;
+    Selection selection;
+    for (QTreeWidgetItem* row : selectedItems()) {
+        const qlonglong index = row->data(0, kIndexRole).toLongLong();
+        if (index >= 0)
+            selection.push_back({ItemKind(row->data(0, kKindRole).toInt()), std::size_t(index)});
+    }
+    m_document.setSelection(selection);
+}
+
+}  // namespace throng::editor

@@ -1,0 +1,25 @@
+#pragma once
+// The editable number fields of each kind of scene item: label, unit range and where the
+// value lives. Plain data used by the properties panel; edits nothing itself.
+
+#include "editor/SceneItem.h"
+
+#include <QString>
+
+#include <functional>
+#include <vector>
+
+namespace throng::editor {
+
+struct PropertyField {
+    QString key;      // stable id, also the spin box's object name ("radius")
+    QString label;    // "Radius (m)"
+    double min = 0.0, max = 1e6, step = 0.1;
+    int decimals = 2;
+    // The value of item `index` in the scene.
+    std::function<float&(sim::Scene&, std::size_t index)> locate;
+};
+
+const std::vector<PropertyField>& propertyFields(ItemKind kind);
+
+}  // namespace throng::editor

@@ -1,0 +1,127 @@
+#include "editor/simulation/SimulationController.h"
+
+#include <QMetaObject>
+
+#include <algorithm>
+#include <cmath>
+
+namespace throng::editor {
+
+SimulationController::SimulationController(QObject* parent)
+    : QObject(parent),
+      m_runner([this] { QMetaObject::invokeMethod(this, &SimulationController::takeFrames, Qt::QueuedConnection); })
+{
+    connect(&m_timer, &QTimer::timeout, this, &SimulationController::tick);
+}
+
+SimulationController::~SimulationController()
+{
+    m_runner.stop();
+}
+
+void SimulationController::setScene(const sim::Scene& scene)
+{
+    pause();
+    m_stepPending = false;
+    m_cache = {};
+    m_current = 0;
+    const float fps = scene.settings.fps > 0.0f ? scene.settings.fps : 24.0f;
+    m_totalFrames = std::size_t(std::lround(double(scene.settings.durationS) * double(fps))) + 1;
+    m_timer.setInterval(std::max(1, int(std::lround(1000.0 / double(fps)))));
+    m_runner.start(scene);
+    emit recordedChanged(0);
+}
+
+void SimulationController::takeFrames()
+{
+    SimulationRunner::Batch batch = m_runner.takeFrames();
+    if (!batch.error.empty()) {
+        pause();
+        emit problem(tr("Cannot simulate the scene: %1").arg(QString::fromStdString(batch.error)));
+        return;
+    }
+    if (!batch.agents.empty())
+        m_cache.reset(std::move(batch.agents), batch.fps);
+    const std::size_t n = m_cache.agentCount();
+    if (n > 0)
+        for (std::size_t f = 0; f < batch.frameCount; ++f)
+            m_cache.append(std::span(batch.frames).subspan(f * n, n));
+    emit recordedChanged(m_cache.frameCount());
+    if (m_stepPending && m_current + 1 < m_cache.frameCount()) {
+        m_stepPending = false;
+        setCurrent(m_current + 1);
+    }
+}
+
+void SimulationController::play()
+{
+    if (m_playing)
+        return;
+    if (!m_loop && m_current + 1 >= m_totalFrames)
+        setCurrent(0);
+    m_playing = true;
+    m_runner.setTarget(m_totalFrames);
+    m_timer.start();
+    emit playingChanged(true);
+}
+
+void SimulationController::pause()
+{
+    if (!m_playing)
+        return;
+    m_playing = false;
+    m_timer.stop();
+    emit playingChanged(false);
+}
+
+void SimulationController::tick()
+{
+    if (m_current + 1 < m_cache.frameCount()) {
+        setCurrent(m_current + 1);
+    } else if (m_current + 1 >= m_totalFrames) {
+        if (m_loop)
+            setCurrent(0);
+        else
+            pause();
+    }
+    // Otherwise the runner has not caught up yet: wait for it.
+}
+
+void SimulationController::stepForward()
+{
+    pause();
+    if (m_current + 1 >= m_totalFrames)
+        return;
+    if (m_current + 1 < m_cache.frameCount()) {
+        setCurrent(m_current + 1);
+        return;
+    }
+    m_stepPending = true;
+    m_runner.setTarget(m_current + 2);
+}
+
+void SimulationController::restart()
+{
+    setCurrent(0);
+}
+
+void SimulationController::seek(std::size_t frame)
+{
+    if (m_cache.frameCount() == 0)
+        return;
+    setCurrent(std::min(frame, m_cache.frameCount() - 1));
+}
+
+void SimulationController::simulateToEnd()
+{
+    m_runner.setTarget(m_totalFrames);
+}
+
+void SimulationController::setCurrent(std::size_t frame)
+{
+    m_current = frame;
+    if (frame < m_cache.frameCount())
+        emit frameChanged(frame);
+}
+
+}  // namespace throng::editor

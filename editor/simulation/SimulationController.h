@@ -1,0 +1,74 @@
+#pragma once
+// Live simulation for the editor: runs the document's scene on a SimulationRunner
+// thread into a FrameCache and plays, pauses, steps, loops and scrubs it. Editing the
+// scene (setScene) throws the recorded frames away. Never draws and never edits the scene.
+
+#include "editor/simulation/SimulationRunner.h"
+#include "simcore/scene/Scene.h"
+#include "simcore/world/FrameCache.h"
+
+#include <QObject>
+#include <QTimer>
+
+#include <algorithm>
+#include <cstddef>
+
+namespace throng::editor {
+
+class SimulationController : public QObject {
+    Q_OBJECT
+
+public:
+    explicit SimulationController(QObject* parent = nullptr);
+    ~SimulationController() override;
+
+    // The scene to simulate from now on: every recorded frame is dropped, playback
+    // pauses at frame 0.
+    void setScene(const sim::Scene& scene);
+
+    void play();
+    void pause();
+    void togglePlay() { m_playing ? pause() : play(); }
+    void stepForward();
+    void restart();
+    void setLoop(bool loop) { m_loop = loop; }
+    // Shows recorded frame `frame` (clamped to what is recorded).
+    void seek(std::size_t frame);
+    // Records every frame of the scene's duration in the background.
+    void simulateToEnd();
+    // Records frames in the background until `frameCount` exist (export asks for these).
+    void requestFrames(std::size_t frameCount) { m_runner.setTarget(std::min(frameCount, m_totalFrames)); }
+
+    bool isPlaying() const { return m_playing; }
+    bool loops() const { return m_loop; }
+    std::size_t currentFrame() const { return m_current; }
+    std::size_t recordedFrames() const { return m_cache.frameCount(); }
+    // Frames of the whole duration, frame 0 included.
+    std::size_t totalFrames() const { return m_totalFrames; }
+    const sim::FrameCache& cache() const { return m_cache; }
+    double stepsPerSecond() const { return m_runner.stepsPerSecond(); }
+
+signals:
+    // Frame `frame` of cache() is the one to show.
+    void frameChanged(std::size_t frame);
+    void recordedChanged(std::size_t recordedFrames);
+    void playingChanged(bool playing);
+    // The scene could not be simulated (a World could not be built from it).
+    void problem(const QString& message);
+
+private:
+    void takeFrames();
+    void tick();
+    void setCurrent(std::size_t frame);
+
+    SimulationRunner m_runner;
+    sim::FrameCache m_cache;
+    QTimer m_timer;
+    std::size_t m_current = 0;
+    std::size_t m_totalFrames = 1;
+    bool m_playing = false;
+    bool m_loop = false;
+    bool m_stepPending = false;
+};
+
+}  // namespace throng::editor

@@ -1,0 +1,61 @@
+#pragma once
+// Steps a World on its own thread and hands the frames over: the GUI thread takes them
+// with takeFrames(). Knows nothing of widgets; the World never leaves its thread.
+
+#include "simcore/scene/Scene.h"
+#include "simcore/world/FrameCache.h"
+
+#include <atomic>
+#include <condition_variable>
+#include <cstddef>
+#include <functional>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace throng::editor {
+
+class SimulationRunner {
+public:
+    // `notify` is called on the runner's thread whenever frames wait to be taken (it
+    // must only post to the GUI thread).
+    explicit SimulationRunner(std::function<void()> notify);
+    ~SimulationRunner();
+
+    // Stops any run, then builds a World of `scene` on the runner thread and records
+    // frame 0. Frames are computed up to the target (setTarget).
+    void start(const sim::Scene& scene);
+    void stop();
+    // Computes frames until `frameCount` frames exist (including frame 0).
+    void setTarget(std::size_t frameCount);
+
+    struct Batch {
+        std::vector<sim::AgentInfo> agents;  // set with frame 0 only
+        float fps = 24.0f;
+        std::vector<sim::AgentFrame> frames; // frame-major, agents.size() per frame
+        std::size_t frameCount = 0;
+        std::string error;                   // the World could not be built
+    };
+    // Moves out what was computed since the last call.
+    Batch takeFrames();
+    // Steps per second over the last run of steps; 0 when idle.
+    double stepsPerSecond() const { return m_stepsPerSecond.load(); }
+    bool isComputing() const { return m_computing.load(); }
+
+private:
+    void run(sim::Scene scene);
+
+    std::function<void()> m_notify;
+    std::thread m_thread;
+    std::mutex m_mutex;
+    std::condition_variable m_wake;
+    std::size_t m_target = 1;
+    bool m_stop = false;
+    Batch m_pending;
+    bool m_notified = false;
+    std::atomic<double> m_stepsPerSecond{0.0};
+    std::atomic<bool> m_computing{false};
+};
+
+}  // namespace throng::editor

@@ -1,0 +1,81 @@
+#include "editor/tools/ToolManager.h"
+
+#include "editor/tools/CrowdBrushTool.h"
+#include "editor/tools/EraseBrushTool.h"
+#include "editor/tools/ObstacleTool.h"
+#include "editor/tools/PathTool.h"
+#include "editor/tools/SelectTool.h"
+#include "editor/tools/TrafficLightTool.h"
+#include "editor/tools/WallTool.h"
+#include "editor/viewport/Viewport.h"
+
+#include <QAction>
+#include <QActionGroup>
+#include <QLabel>
+#include <QToolBar>
+
+namespace throng::editor {
+
+ToolManager::ToolManager(SceneDocument& document, Viewport& viewport, QObject* parent)
+    : QObject(parent), m_viewport(viewport)
+{
+    m_tools = {new SelectTool(document, viewport, this),   new CrowdBrushTool(document, viewport, this),
+               new EraseBrushTool(document, viewport, this), new WallTool(document, viewport, this),
+               new PathTool(document, viewport, this),       new ObstacleTool(document, viewport, this),
+               new TrafficLightTool(document, viewport, this)};
+    m_group = new QActionGroup(this);
+    m_group->setExclusive(true);
+    for (ViewportTool* t : m_tools) {
+        QAction* action = m_group->addAction(t->name());
+        action->setObjectName(t->objectKey() + "Action");
+        action->setCheckable(true);
+        action->setShortcut(t->shortcut());
+        action->setToolTip(t->toolTip());
+        action->setStatusTip(t->toolTip());
+        connect(action, &QAction::triggered, this, [this, t] { activate(t); });
+    }
+    activate(m_tools.front());
+}
+
+ViewportTool* ToolManager::tool(const QString& key) const
+{
+    for (ViewportTool* t : m_tools)
+        if (t->objectKey() == key)
+            return t;
+    return nullptr;
+}
+
+void ToolManager::activate(ViewportTool* tool)
+{
+    if (tool == m_active)
+        return;
+    m_active = tool;
+    m_viewport.setTool(tool);
+    for (QAction* a : m_group->actions())
+        if (a->objectName() == tool->objectKey() + "Action")
+            a->setChecked(true);
+    showOptions();
+    emit activeToolChanged(tool);
+}
+
+void ToolManager::populate(QToolBar* tools, QToolBar* options)
+{
+    tools->addActions(m_group->actions());
+    for (QAction* a : m_group->actions())
+        if (QWidget* button = tools->widgetForAction(a))
+            button->setObjectName(a->objectName().chopped(6) + "Button");
+    m_optionsBar = options;
+    showOptions();
+}
+
+void ToolManager::showOptions()
+{
+    if (!m_optionsBar)
+        return;
+    m_optionsBar->clear();
+    m_optionsBar->addWidget(new QLabel(m_active->name() + "  ", m_optionsBar));
+    if (QWidget* widget = m_active->createOptionsWidget(m_optionsBar))
+        m_optionsBar->addWidget(widget);
+}
+
+}  // namespace throng::editor

@@ -1,0 +1,143 @@
+// editor_figures: the editor's figures as JSON on stdout (never a test; timings are not
+// asserted anywhere). Start-up time to a shown window with the crossroads demo, viewport
+// frame time with 10,000 and 100,000 agents, crowd-brush stroke latency per mouse move.
+// Run under a display: xvfb-run -a -s "-screen 0 1920x1080x24" editor_figures [WINDOW.png]
+#include "EditorUiDriver.h"
+
+#include "editor/simulation/SimulationController.h"
+#include "editor/viewport/Viewport.h"
+
+#include <QApplication>
+#include <QElapsedTimer>
+#include <QOpenGLContext>
+#include <QOpenGLFunctions>
+#include <QSurfaceFormat>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <vector>
+
+using namespace throng;
+using namespace throng::editor;
+
+namespace {
+
+double median(std::vector<double> v)
+{
+    std::sort(v.begin(), v.end());
+    return v.empty() ? 0.0 : v[v.size() / 2];
+}
+
+// A square crowd of `count` placed agents, 1 m apart, in bounds that hold them.
+sim::Scene crowdOf(std::size_t count)
+{
+    sim::Scene s;
+    sim::AgentType walker;
+    walker.name = "walker";
+    s.agentTypes.push_back(walker);
+    const auto side = std::size_t(std::ceil(std::sqrt(double(count))));
+    const float half = float(side) * 0.5f + 2.0f;
+    s.settings.boundsMin = glm::vec2(-half);
+    s.settings.boundsMax = glm::vec2(half);
+    for (std::size_t i = 0; i < count; ++i) {
+        sim::Agent a;
+        a.id = std::uint32_t(i + 1);
+        a.type = "walker";
+        a.position = {float(i % side) - half + 2.0f, 0.0f, float(i / side) - half + 2.0f};
+        a.headingDeg = float(i % 360);
+        s.agents.push_back(a);
+    }
+    return s;
+}
+
+// Milliseconds per synchronous repaint of the viewport, the camera moving every frame.
+double frameTimeMs(Viewport& viewport, ViewMode mode, int frames)
+{
+    viewport.setViewMode(mode);
+    viewport.frameAll();
+    viewport.repaint();
+    std::vector<double> times;
+    for (int i = 0; i < frames; ++i) {
+        QElapsedTimer t;
+        t.start();
+        viewport.frameAll();
+        viewport.repaint();
+        viewport.makeCurrent();
+        viewport.context()->functions()->glFinish();
+        viewport.doneCurrent();
+        times.push_back(double(t.nsecsElapsed()) / 1e6);
+    }
+    return median(times);
+}
+
+}  // namespace
+
+int main(int argc, char** argv)
+{
+    QElapsedTimer sinceStart;
+    sinceStart.start();
+    QSurfaceFormat::setDefaultFormat(Viewport::surfaceFormat());
+    QApplication app(argc, argv);
+    QApplication::setOrganizationName("ThrongFigures");
+    QTemporaryDir dir;
+
+    // Start-up: QApplication to a shown, exposed window with the crossroads demo open.
+    auto* window = new MainWindow;
+    if (!test::showWithScene(*window, dir, "crossroads.yaml")) {
+        std::cerr << "editor_figures: cannot show the window\n";
+        return 1;
+    }
+    QApplication::processEvents();
+    const double startupMs = double(sinceStart.nsecsElapsed()) / 1e6;
+    window->viewport().makeCurrent();
+    const std::string gl = reinterpret_cast<const char*>(window->viewport().context()->functions()->glGetString(GL_RENDERER));
+    window->viewport().doneCurrent();
+
+    // Brush latency: each mouse move of a stroke, dab and command included, then the
+    // refresh of the viewport and the simulation that follows the burst.
+    test::clickToolButton(*window, "crowdBrush");
+    QWidget* vp = &window->viewport();
+    std::vector<double> moveMs;
+    QTest::mousePress(vp, Qt::LeftButton, Qt::NoModifier, test::pixelOf(*window, {-35, -25}));
+    for (int k = 1; k <= 40; ++k) {
+        QElapsedTimer t;
+        t.start();
+        QTest::mouseMove(vp, test::pixelOf(*window, {-35.0f + 0.5f * float(k), -25.0f}));
+        QApplication::processEvents();  // the deferred refresh of viewport and simulation
+        window->viewport().repaint();
+        moveMs.push_back(double(t.nsecsElapsed()) / 1e6);
+    }
+    QTest::mouseRelease(vp, Qt::LeftButton, Qt::NoModifier, test::pixelOf(*window, {-15, -25}));
+    const std::size_t painted = window->document().scene().agents.size();
+    if (argc > 1)
+        window->grab().save(QString::fromLocal8Bit(argv[1]));
+    delete window;
+
+    std::cout << "{\n  \"renderer\": \"" << gl << "\",\n"
+              << "  \"startup_to_shown_window_ms\": " << startupMs << ",\n"
+              << "  \"brush_move_latency_ms_median\": " << median(moveMs) << ",\n"
+              << "  \"brush_move_latency_ms_max\": " << *std::max_element(moveMs.begin(), moveMs.end()) << ",\n"
+              << "  \"brush_stroke_agents\": " << painted << ",\n";
+    Viewport viewport;
+    viewport.resize(1280, 720);
+    viewport.show();
+    if (!QTest::qWaitForWindowExposed(&viewport))
+        return 1;
+    // 0 agents: the cost of the ground, grid and window alone.
+    const std::size_t counts[] = {0, 10000, 100000};
+    for (std::size_t n : counts) {
+        QElapsedTimer t;
+        t.start();
+        viewport.setScene(crowdOf(n));
+        const double setMs = double(t.nsecsElapsed()) / 1e6;
+        std::cout << "  \"agents_" << n << "\": {\"set_scene_ms\": " << setMs
+                  << ", \"frame_ms_top\": " << frameTimeMs(viewport, ViewMode::Top, 10)
+                  << ", \"frame_ms_3d\": " << frameTimeMs(viewport, ViewMode::Orbit, 10) << "}"
+                  << (n == counts[2] ? "\n" : ",\n");
+    }
+    std::cout << "}\n";
+    return 0;
+}

@@ -1,0 +1,63 @@
+#include "EditorUiDriver.h"
+
+#include "editor/viewport/Viewport.h"
+
+#include <QFile>
+#include <QTest>
+#include <QToolButton>
+
+namespace throng::editor::test {
+
+bool showWithScene(MainWindow& window, const QTemporaryDir& dir, const QString& name)
+{
+    const QString source = QStringLiteral(THRONG_SOURCE_DIR "/resources/scenes/") + name;
+    const QString copy = dir.filePath(name);
+    QFile::remove(copy);
+    if (!QFile::copy(source, copy))
+        return false;
+    QFile(copy).setPermissions(QFile::ReadOwner | QFile::WriteOwner);
+    window.resize(1400, 900);
+    window.show();
+    window.activateWindow();
+    if (!QTest::qWaitForWindowExposed(&window) || !QTest::qWaitForWindowActive(&window))
+        return false;
+    if (!window.openScene(copy))
+        return false;
+    QCoreApplication::processEvents();
+    window.viewport().frameAll();
+    return true;
+}
+
+QPoint pixelOf(MainWindow& window, glm::vec2 ground)
+{
+    return window.viewport().worldToPixel({ground.x, 0.0f, ground.y}).toPoint();
+}
+
+bool clickToolButton(MainWindow& window, const QString& key)
+{
+    auto* button = window.findChild<QToolButton*>(key + "Button");
+    if (!button)
+        return false;
+    QTest::mouseClick(button, Qt::LeftButton);
+    return window.viewport().tool() && window.viewport().tool()->objectKey() == key;
+}
+
+void dragOnGround(MainWindow& window, const std::vector<glm::vec2>& points)
+{
+    QWidget* viewport = &window.viewport();
+    constexpr int kMovesPerLeg = 10;
+    QTest::mousePress(viewport, Qt::LeftButton, Qt::NoModifier, pixelOf(window, points.front()));
+    for (std::size_t i = 1; i < points.size(); ++i)
+        for (int k = 1; k <= kMovesPerLeg; ++k) {
+            const glm::vec2 p = points[i - 1] + (points[i] - points[i - 1]) * (float(k) / kMovesPerLeg);
+            QTest::mouseMove(viewport, pixelOf(window, p));
+        }
+    QTest::mouseRelease(viewport, Qt::LeftButton, Qt::NoModifier, pixelOf(window, points.back()));
+}
+
+void clickOnGround(MainWindow& window, glm::vec2 point)
+{
+    QTest::mouseClick(&window.viewport(), Qt::LeftButton, Qt::NoModifier, pixelOf(window, point));
+}
+
+}  // namespace throng::editor::test

@@ -1,0 +1,27 @@
+#pragma once
+// Drives the real main window as a user does in the UI tests: shows it, opens a copy of
+// a scene, clicks tool buttons and clicks or drags on the viewport at ground points.
+
+#include "editor/MainWindow.h"
+
+#include <glm/vec2.hpp>
+
+#include <QString>
+#include <QTemporaryDir>
+
+#include <vector>
+
+namespace throng::editor::test {
+
+// Shows the window, waits until it is exposed and active, opens a copy of
+// resources/scenes/<name> in `dir` and frames it. False when any step fails.
+bool showWithScene(MainWindow& window, const QTemporaryDir& dir, const QString& name);
+// The widget pixel of a ground point (x, z).
+QPoint pixelOf(MainWindow& window, glm::vec2 ground);
+// Clicks the tool bar button of the tool with this key ("crowdBrush").
+bool clickToolButton(MainWindow& window, const QString& key);
+// A left drag on the viewport through these ground points, with moves between them.
+void dragOnGround(MainWindow& window, const std::vector<glm::vec2>& points);
+void clickOnGround(MainWindow& window, glm::vec2 point);
+
+}  // namespace throng::editor::test

@@ -1,0 +1,212 @@
+// Playing, stepping and scrubbing the live simulation with the timeline's buttons and
+// scrub bar, saving an edited scene with Ctrl+S and opening it again, and exporting
+// through File > Export, as a user does.
+#include "EditorUiDriver.h"
+#include "TestRegistry.h"
+
+#include "editor/exporting/ExportDialog.h"
+#include "editor/panels/TimelinePanel.h"
+#include "editor/simulation/SimulationController.h"
+#include "editor/viewport/Viewport.h"
+
+#include <glm/geometric.hpp>
+
+#include <QFile>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QSlider>
+#include <QStandardPaths>
+#include <QTest>
+#include <QToolButton>
+
+using namespace throng;
+using namespace throng::editor;
+using namespace throng::editor::test;
+
+namespace {
+
+QString frameText(MainWindow& window)
+{
+    return window.findChild<QLabel*>("frameLabel")->text();
+}
+
+void click(MainWindow& window, const char* name)
+{
+    auto* button = window.findChild<QToolButton*>(name);
+    QVERIFY2(button, name);
+    QTest::mouseClick(button, Qt::LeftButton);
+}
+
+}  // namespace
+
+class TestPlaybackAndFilesUi : public QObject {
+    Q_OBJECT
+
+private:
+    QTemporaryDir m_dir;
+
+private slots:
+    void initTestCase()
+    {
+        QStandardPaths::setTestModeEnabled(true);
+        QCoreApplication::setOrganizationName("ThrongTests");
+        QCoreApplication::setApplicationName("TestPlaybackAndFilesUi");
+    }
+
+    void playAdvancesFramesAndMovesAgentsAndScrubbingGoesBack()
+    {
+        MainWindow window;
+        QVERIFY(showWithScene(window, m_dir, "crossroads.yaml"));
+        SimulationController& sim = window.simulation();
+        QCOMPARE(frameText(window), QString("Frame 0"));
+
+        click(window, "playButton");
+        QVERIFY(sim.isPlaying());
+        QTRY_VERIFY_WITH_TIMEOUT(window.viewport().frameIndex() >= 24, 20000);
+        QVERIFY(frameText(window) != QString("Frame 0"));
+        click(window, "playButton");  // pause
+        QVERIFY(!sim.isPlaying());
+
+        // A second of walking moves most pedestrians by more than 0.3 m.
+        const std::size_t shown = window.viewport().frameIndex();
+        const auto start = sim.cache().frame(0), now = sim.cache().frame(shown);
+        std::size_t moved = 0;
+        for (std::size_t i = 0; i < start.size(); ++i)
+            moved += glm::length(now[i].position - start[i].position) > 0.3f;
+        QVERIFY2(moved > start.size() / 2, qPrintable(QString("%1 of %2 moved").arg(moved).arg(start.size())));
+
+        // Scrub back with the keyboard on the scrub bar: Home is frame 0.
+        QSlider* scrub = window.timeline().scrubBar();
+        QCOMPARE(scrub->maximum() + 1, int(sim.recordedFrames()));
+        scrub->setFocus();
+        QTest::keyClick(scrub, Qt::Key_Home);
+        QCOMPARE(window.viewport().frameIndex(), std::size_t(0));
+        QCOMPARE(frameText(window), QString("Frame 0"));
+        QTest::keyClick(scrub, Qt::Key_Right);
+        QCOMPARE(window.viewport().frameIndex(), std::size_t(1));
+
+        // Step computes or shows the next frame.
+        click(window, "stepButton");
+        QTRY_COMPARE(window.viewport().frameIndex(), std::size_t(2));
+        click(window, "restartButton");
+        QCOMPARE(window.viewport().frameIndex(), std::size_t(0));
+    }
+
+    void anEditThrowsTheRecordedFramesAway()
+    {
+        MainWindow window;
+        QVERIFY(showWithScene(window, m_dir, "crossroads.yaml"));
+        SimulationController& sim = window.simulation();
+        click(window, "stepButton");
+        QTRY_COMPARE(window.viewport().frameIndex(), std::size_t(1));
+        QVERIFY(clickToolButton(window, "obstacle"));
+        clickOnGround(window, {-30, -30});
+        QCOMPARE(window.document().scene().obstacles.size(), std::size_t(5));
+        QTRY_COMPARE(window.viewport().frameIndex(), std::size_t(0));
+        QTRY_VERIFY(sim.recordedFrames() <= 1);
+        QCOMPARE(sim.currentFrame(), std::size_t(0));
+    }
+
+    void savedSceneOpensAgainTheSame()
+    {
+        MainWindow window;
+        QVERIFY(showWithScene(window, m_dir, "crossroads.yaml"));
+        QVERIFY(clickToolButton(window, "crowdBrush"));
+        dragOnGround(window, {{25, 25}, {35, 30}});
+        QVERIFY(clickToolButton(window, "wall"));
+        clickOnGround(window, {20, 40});
+        clickOnGround(window, {40, 40});
+        QTest::keyClick(&window.viewport(), Qt::Key_Return);
+        QVERIFY(window.isWindowModified());
+        QVERIFY(window.document().scene().agents.size() > 10);
+
+        QTest::keyClick(&window.viewport(), Qt::Key_S, Qt::ControlModifier);
+        QVERIFY(!window.isWindowModified());
+        QVERIFY(!window.document().isModified());
+
+        MainWindow reopened;
+        reopened.show();
+        QVERIFY(reopened.openScene(window.document().filePath()));
+        const sim::Scene& a = window.document().scene();
+        const sim::Scene& b = reopened.document().scene();
+        QCOMPARE(b.agents.size(), a.agents.size());
+        QCOMPARE(b.walls.size(), a.walls.size());
+        for (std::size_t i = 0; i < a.agents.size(); ++i) {
+            QCOMPARE(b.agents[i].id, a.agents[i].id);
+            QVERIFY(glm::length(b.agents[i].position - a.agents[i].position) < 1e-3f);
+            QVERIFY(std::abs(b.agents[i].headingDeg - a.agents[i].headingDeg) < 1e-2f);
+        }
+        QVERIFY(b.walls.back().points == a.walls.back().points);
+    }
+
+    void exportWritesAGlbOfTheChosenFrames()
+    {
+        MainWindow window;
+        QVERIFY(showWithScene(window, m_dir, "crossroads.yaml"));
+        QTest::keyClick(&window.viewport(), Qt::Key_E, Qt::ControlModifier | Qt::ShiftModifier);
+        auto* dialog = window.findChild<ExportDialog*>("exportDialog");
+        QVERIFY(dialog);
+        QTRY_VERIFY(dialog->isVisible());
+        auto* path = dialog->findChild<QLineEdit*>("exportPath");
+        const QString out = m_dir.filePath("crowd.glb");
+        path->selectAll();
+        QTest::keyClicks(path, out);
+        auto* last = dialog->findChild<QSpinBox*>("exportLastFrame");
+        last->selectAll();
+        QTest::keyClicks(last, "24");
+        QTest::keyClick(last, Qt::Key_Tab);
+        QCOMPARE(last->value(), 24);
+        QTest::mouseClick(dialog->findChild<QPushButton*>("exportButton"), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(!dialog->isBusy(), 60000);
+        QVERIFY2(dialog->outcome().startsWith("Wrote"), qPrintable(dialog->outcome()));
+        QFile file(out);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        QCOMPARE(file.read(4), QByteArray("glTF"));
+        QVERIFY(file.size() > 10000);
+    }
+
+    void exportCanBeCancelledAndLeavesNoFile()
+    {
+        MainWindow window;
+        QVERIFY(showWithScene(window, m_dir, "crossroads.yaml"));
+        ExportDialog* dialog = window.showExportDialog();
+        auto* path = dialog->findChild<QLineEdit*>("exportPath");
+        const QString out = m_dir.filePath("never.glb");
+        path->setText(out);
+        QTest::mouseClick(dialog->findChild<QPushButton*>("exportButton"), Qt::LeftButton);
+        QVERIFY(dialog->isBusy());
+        QTest::mouseClick(dialog->findChild<QPushButton*>("cancelButton"), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(!dialog->isBusy(), 30000);
+        QVERIFY2(dialog->outcome().startsWith("Cancelled"), qPrintable(dialog->outcome()));
+        QVERIFY(!QFile::exists(out));
+    }
+
+    void unsavedChangesAreAskedAbout()
+    {
+        MainWindow window;
+        QVERIFY(showWithScene(window, m_dir, "crossroads.yaml"));
+        QVERIFY(clickToolButton(window, "trafficLight"));
+        clickOnGround(window, {20, -12});
+        int asked = 0;
+        window.setUnsavedChangesPrompt([&asked] {
+            ++asked;
+            return QMessageBox::Cancel;
+        });
+        QTest::keyClick(&window.viewport(), Qt::Key_N, Qt::ControlModifier);
+        QCOMPARE(asked, 1);
+        QCOMPARE(window.document().scene().trafficLights.size(), std::size_t(3));
+        window.setUnsavedChangesPrompt([&asked] {
+            ++asked;
+            return QMessageBox::Discard;
+        });
+        QTest::keyClick(&window.viewport(), Qt::Key_N, Qt::ControlModifier);
+        QCOMPARE(asked, 2);
+        QVERIFY(window.document().scene().trafficLights.empty());
+        QVERIFY(window.document().filePath().isEmpty());
+    }
+};
+
+THRONG_REGISTER_TEST(TestPlaybackAndFilesUi)
+#include "TestPlaybackAndFilesUi.moc"
