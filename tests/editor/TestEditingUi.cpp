@@ -83,10 +83,10 @@ private slots:
         QTRY_COMPARE(agentLabel(window), QString("%1 agents").arg(kCrossroadsAgents + painted));
 
         QTest::keyClick(&window.viewport(), Qt::Key_Z, Qt::ControlModifier);
-        QCOMPARE(window.document().scene().agents.size(), std::size_t(0));
+        QTRY_COMPARE(window.document().scene().agents.size(), std::size_t(0));
         QTRY_COMPARE(agentLabel(window), QString("%1 agents").arg(kCrossroadsAgents));
         QTest::keyClick(&window.viewport(), Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
-        QCOMPARE(window.document().scene().agents.size(), painted);
+        QTRY_COMPARE(window.document().scene().agents.size(), painted);
         QTRY_COMPARE(agentLabel(window), QString("%1 agents").arg(kCrossroadsAgents + painted));
     }
 
@@ -105,7 +105,7 @@ private slots:
         for (const sim::Agent& a : left)
             QVERIFY(segmentDistance({a.position.x, a.position.z}, {-35, -25}, {-30, -25}) > 2.0f - 0.2f);
         QTest::keyClick(&window.viewport(), Qt::Key_Z, Qt::ControlModifier);
-        QCOMPARE(window.document().scene().agents.size(), painted);
+        QTRY_COMPARE(window.document().scene().agents.size(), painted);
     }
 
     void wallDrawnWithClicksShowsInTheOutliner()
