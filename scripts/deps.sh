@@ -9,10 +9,8 @@ packages=(g++ cmake ninja-build pkg-config
           libgl-dev libgl1-mesa-dri libglx-mesa0)
 if [ "${1:-build}" = test ]; then
   packages+=(xvfb xauth)
-  # The external glTF readers the export tests run (../shared/tools): the Khronos
-  # validator and three.js need node and npm, assimp-info-check assimp, the Blender
-  # import check Blender with numpy.
-  packages+=(nodejs npm assimp-utils blender python3-numpy)
+  # The external glTF readers the export tests run (../shared/tools: the Khronos
+  # validator, Blender, three.js, assimp) install what they need on first use.
 fi
 
 missing=()
