@@ -101,6 +101,7 @@ private slots:
         QCOMPARE(traffic->counters().pedestrianRedLightViolations, std::uint64_t(0));
         QCOMPARE(stats.carPedestrianCollisions, std::uint64_t(0));
         QCOMPARE(stats.counters.wallPenetrations, std::uint64_t(0));
+        QCOMPARE(stats.counters.obstaclePenetrations, std::uint64_t(0));
         QCOMPARE(stats.counters.nonFiniteValues, std::uint64_t(0));
         QCOMPARE(inLane, std::uint64_t(0));
         // Queues form at the crosswalks, and both cars and pedestrians flow on green.
