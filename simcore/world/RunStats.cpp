@@ -16,6 +16,18 @@ std::string number(double v)
     auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v);
     return ec == std::errc() ? std::string(buf, end) : "null";
 }
+// A JSON string literal (scene names may hold quotes or backslashes).
+std::string quoted(const std::string& text)
+{
+    std::string out = "\"";
+    for (char c : text) {
+        if (c == '"' || c == '\\')
+            out += '\\';
+        if (static_cast<unsigned char>(c) >= 0x20)
+            out += c;
+    }
+    return out + "\"";
+}
 }  // namespace
 
 RunStats RunStats::from(const World& world, std::uint64_t frames, double wallSeconds)
@@ -33,6 +45,29 @@ RunStats RunStats::from(const World& world, std::uint64_t frames, double wallSec
         if (world.hasArrived(i))
             ++s.arrived;
     s.withGoal = world.agentsWithGoal();
+    s.heroes = world.heroTracks().size();
+    if (const TrafficSystem* traffic = world.trafficSystem()) {
+        const WorldTraffic& names = world.traffic();
+        s.vehicles = traffic->vehicleCount();
+        s.vehicleRedLightViolations = traffic->counters().vehicleRedLightViolations;
+        s.carPedestrianCollisions = traffic->counters().carPedestrianCollisions;
+        s.vehicleCollisions = traffic->counters().vehicleCollisions;
+        s.counters.nonFiniteValues += traffic->counters().nonFiniteValues;
+        for (const StopLineThroughput& t : traffic->throughput()) {
+            StopLineFlow f;
+            auto name = [](const std::vector<std::string>& list, int k) {
+                return k >= 0 && std::size_t(k) < list.size() ? list[std::size_t(k)] : std::string();
+            };
+            f.light = name(names.lightNames, t.light);
+            f.lane = name(names.laneNames, t.lane);
+            f.crosswalk = name(names.crosswalkNames, t.crosswalk);
+            f.crossings = t.crossings;
+            f.greenPhases = t.greenPhases;
+            f.perGreen = t.perGreen();
+            (t.lane >= 0 ? s.vehicleCrossings : s.pedestrianCrossings) += t.crossings;
+            s.throughput.push_back(std::move(f));
+        }
+    }
     return s;
 }
 
@@ -57,7 +92,24 @@ std::string RunStats::toJson() const
     field("overlapping_pairs", std::to_string(counters.overlappingPairs));
     field("overlapping_pairs_per_step",
           number(frames > 1 ? double(counters.overlappingPairs) / double(frames - 1) : 0.0));
-    field("red_light_violations", std::to_string(counters.redLightViolations));
+    field("red_light_violations", std::to_string(counters.redLightViolations + vehicleRedLightViolations));
+    field("pedestrian_red_light_violations", std::to_string(counters.redLightViolations));
+    field("vehicle_red_light_violations", std::to_string(vehicleRedLightViolations));
+    field("car_pedestrian_collisions", std::to_string(carPedestrianCollisions));
+    field("vehicle_collisions", std::to_string(vehicleCollisions));
+    field("vehicles", std::to_string(vehicles));
+    field("heroes", std::to_string(heroes));
+    field("vehicle_crossings", std::to_string(vehicleCrossings));
+    field("pedestrian_crossings", std::to_string(pedestrianCrossings));
+    std::string flows = "[";
+    for (std::size_t k = 0; k < throughput.size(); ++k) {
+        const StopLineFlow& f = throughput[k];
+        flows += std::string(k ? "," : "") + "\n    {\"light\": " + quoted(f.light) + ", " +
+                 (f.lane.empty() ? "\"crosswalk\": " + quoted(f.crosswalk) : "\"lane\": " + quoted(f.lane)) +
+                 ", \"crossings\": " + std::to_string(f.crossings) +
+                 ", \"green_phases\": " + std::to_string(f.greenPhases) + ", \"per_green\": " + number(f.perGreen) + "}";
+    }
+    field("throughput_per_green", flows + (throughput.empty() ? "]" : "\n  ]"));
     field("non_finite_values", std::to_string(counters.nonFiniteValues), true);
     return j + "}\n";
 }

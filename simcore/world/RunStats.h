@@ -5,10 +5,20 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace throng::sim {
 
 class World;
+
+// Crossings of one stop line per green phase of its light: vehicles over a lane's stop
+// line, or pedestrians stepping onto a controlled crosswalk.
+struct StopLineFlow {
+    std::string light, lane, crosswalk;  // lane or crosswalk is empty
+    std::uint64_t crossings = 0;
+    std::uint64_t greenPhases = 0;
+    double perGreen = 0.0;
+};
 
 struct RunStats {
     std::uint64_t agents = 0;
@@ -20,7 +30,14 @@ struct RunStats {
     double agentStepsPerSecond = 0.0;
     std::uint64_t arrived = 0;
     std::uint64_t withGoal = 0;
-    StepCounters counters;
+    StepCounters counters;  // counters.redLightViolations: pedestrians only
+    // Traffic (zero without lanes, vehicles or heroes).
+    std::uint64_t vehicles = 0, heroes = 0;
+    std::uint64_t vehicleRedLightViolations = 0;
+    std::uint64_t carPedestrianCollisions = 0;  // vehicle-pedestrian pairs in contact, summed over steps
+    std::uint64_t vehicleCollisions = 0;        // vehicle pairs in contact, summed over steps
+    std::uint64_t vehicleCrossings = 0, pedestrianCrossings = 0;  // over all stop lines
+    std::vector<StopLineFlow> throughput;
 
     static RunStats from(const World& world, std::uint64_t frames, double wallSeconds);
     std::string toJson() const;

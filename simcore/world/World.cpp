@@ -64,8 +64,10 @@ World::World(const Scene& scene, const WorldOptions& options)
         cell = std::max(cell, 0.5f * t.perceptionM);
     }
     cell = std::clamp(cell, 0.5f, 4.0f);
+    buildTraffic(scene);
     buildStatics(scene);
     buildAgents(scene);
+    addTrafficAgents(scene);
     for (const TypeParams& t : m_types) {
         m_hasFliers = m_hasFliers || t.kind == AgentKind::Flier;
         m_maxRadius = std::max(m_maxRadius, t.radius);
@@ -100,6 +102,7 @@ void World::buildStatics(const Scene& scene)
         const float reach = glm::length(h);
         obstacleBoxes.push_back({o.center - glm::vec2(reach), o.center + glm::vec2(reach)});
     }
+    appendKerbs(walls);
     // The wall grid's cells fit a walker's feelers; obstacle boxes are found by their bounds.
     m_walls.build(walls, 4.0f);
     m_obstacleGrid.build(obstacleBoxes, 4.0f);

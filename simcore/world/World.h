@@ -10,6 +10,7 @@
 #include "simcore/world/SegmentGrid.h"
 #include "simcore/world/StepCounters.h"
 #include "simcore/world/TypeSteering.h"
+#include "simcore/world/WorldTraffic.h"
 
 #include <glm/vec3.hpp>
 
@@ -71,6 +72,13 @@ public:
     // Light state of a traffic light at the current time: 0 green, 1 yellow, 2 red.
     int lightState(std::size_t light) const;
 
+    // Vehicles and heroes are agents too (after every walker and flier, in the scene's
+    // order): driven by traffic or keyframes, never steered or pushed. See WorldTraffic.cpp.
+    const TrafficSystem* trafficSystem() const { return m_traffic.system ? &*m_traffic.system : nullptr; }
+    const std::vector<HeroTrack>& heroTracks() const { return m_traffic.heroes; }
+    const WorldTraffic& traffic() const { return m_traffic; }
+    bool isDriven(std::size_t i) const { return m_traffic.isDriven(i); }
+
 private:
     struct TypeParams {
         float radius, maxSpeed, maxForce, mass, perception;
@@ -100,6 +108,19 @@ private:
     float groundHeight(float x, float z) const;
     void commit(std::size_t i, std::uint64_t& wallCrossings);
     void countStep();
+
+    // Traffic phases; see WorldTraffic.cpp.
+    void buildTraffic(const Scene& scene);
+    void addTrafficAgents(const Scene& scene);
+    void appendKerbs(std::vector<Segment>& walls) const;
+    void trafficBeforeStep();
+    glm::vec3 obeySignal(std::size_t i, const SteeringAgent& self, glm::vec3 force);
+    void holdAtSignal(std::size_t i, glm::vec3& p) const;
+    void driveTrafficAgents();
+    void trafficAfterCollide();
+    void keepOffRedCrosswalks(std::size_t i, glm::vec3& p) const;
+    void trafficAfterStep();
+    glm::vec2 wantedHeading(std::size_t i) const;
 
     std::vector<TypeParams> m_types;
     std::vector<TypeSteering> m_steering;  // per type
@@ -143,6 +164,7 @@ private:
     std::uint64_t m_step = 0;
     float m_dt = 1.0f / 24.0f;
     int m_threads = 1;
+    WorldTraffic m_traffic;
 };
 
 }  // namespace throng::sim

@@ -26,6 +26,7 @@ void World::step()
     if (!m_gridCurrent)
         m_grid.rebuild(m_pos, m_hasFliers);
     m_gridCurrent = false;
+    trafficBeforeStep();
 
 #pragma omp parallel for schedule(static, 256) num_threads(m_threads)
     for (std::size_t i = 0; i < n; ++i) {
@@ -51,8 +52,10 @@ void World::step()
         glm::vec3 force = steer(i, self, {near.data(), count}, wanderNext);
         if (s.on(Behaviour::ReciprocalAvoidance) && !s.vehicle.flying)
             force = avoidReciprocally(i, self, force, {near.data(), count}, s);
+        force = obeySignal(i, self, force);
         // Integrate: the simple vehicle model (Reynolds 1999).
         SteeringAgent next = integrateVehicle(self, force, m_dt, s.vehicle);
+        holdAtSignal(i, next.position);
         // Constrain: no agent ends a step inside a wall or obstacle; walkers stand on the ground.
         if (!s.vehicle.flying) {
             constrain(i, self.position, next.position);
@@ -76,6 +79,7 @@ void World::step()
         m_nextUp[i] = next.up;
         m_nextWander[i] = wanderNext;
     }
+    driveTrafficAgents();
 
     // Collide: bodies still overlapping after steering move apart, each by its share of
     // the overlap (DetourCrowd's collision handling, done Jacobi-style: every agent reads
@@ -106,6 +110,7 @@ void World::step()
         }
         m_nextPos[i] = m_resolvedPos[i];
     }
+    trafficAfterCollide();
 
     // Commit: swap in the new state, animate, and note arrivals.
     m_stoppedBefore = m_stopped;
@@ -116,6 +121,7 @@ void World::step()
     m_counters.wallPenetrations += crossings;
     ++m_step;
     countStep();
+    trafficAfterStep();
 }
 
 glm::vec3 World::separateBodies(std::size_t i) const
@@ -160,7 +166,8 @@ void World::commit(std::size_t i, std::uint64_t& wallCrossings)
 {
     const glm::vec2 from = xz(m_pos[i]), to = xz(m_nextPos[i]);
     // Fliers pass over walls; only walkers and vehicles can penetrate one.
-    if (!m_steering[m_info[i].typeIndex].vehicle.flying)
+    // Vehicles and heroes go where traffic and keyframes say (a car crosses a crosswalk's kerb).
+    if (!m_steering[m_info[i].typeIndex].vehicle.flying && !m_traffic.isDriven(i))
         m_walls.forEachNear((from + to) * 0.5f, 0.5f * glm::length(to - from) + 0.01f, [&](std::uint32_t k) {
         const Segment& s = m_walls.segment(k);
         if (segmentsCross(from, to, s.a, s.b))
@@ -318,6 +325,7 @@ void World::countStep()
             }
         }
         if (on && !m_onCrosswalk[i] && light >= 0 && m_types[m_info[i].typeIndex].kind == AgentKind::Pedestrian &&
+            !m_traffic.isDriven(i) &&
             lightState(std::size_t(light)) == 2)
             ++red;
         m_onCrosswalk[i] = on;

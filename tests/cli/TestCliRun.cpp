@@ -5,6 +5,7 @@
 
 #include <QDir>
 #include <QFile>
+#include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QTemporaryDir>
@@ -61,6 +62,40 @@ private slots:
         QCOMPARE(o["non_finite_values"].toInt(), 0);
         for (const char* key : {"obstacle_penetrations", "overlapping_pairs", "red_light_violations", "arrived"})
             QVERIFY2(o.contains(key), key);
+    }
+
+    void crossroadsStatsCarryTrafficFigures()
+    {
+        // The demo's first 50 s: two cycles of each light.
+        QTemporaryDir tmp;
+        const std::string scene = std::string(THRONG_SOURCE_DIR) + "/resources/scenes/crossroads.yaml";
+        const QString stats = tmp.filePath("stats.json"), csv = tmp.filePath("t.csv");
+        const auto r = runCli({"run", scene, "--frames", "1200", "--stats", stats.toStdString(), "--trajectories",
+                               csv.toStdString(), "--quiet"});
+        QCOMPARE(r.status, 0);
+        const QJsonObject o = readJson(stats);
+        QCOMPARE(o["vehicles"].toInt(), 16);
+        QCOMPARE(o["heroes"].toInt(), 1);
+        for (const char* key : {"red_light_violations", "pedestrian_red_light_violations", "vehicle_red_light_violations",
+                                "car_pedestrian_collisions", "wall_penetrations", "non_finite_values"})
+            QVERIFY2(o.contains(key) && o[key].toInt() == 0, key);
+        QVERIFY(o["vehicle_crossings"].toInt() > 0);
+        QVERIFY(o["pedestrian_crossings"].toInt() > 0);
+        const QJsonArray flows = o["throughput_per_green"].toArray();
+        QCOMPARE(flows.size(), 8);  // four lanes' stop lines, four crosswalks
+        int laneLines = 0;
+        for (const QJsonValue& v : flows) {
+            const QJsonObject f = v.toObject();
+            QVERIFY(!f["light"].toString().isEmpty());
+            QVERIFY(f["green_phases"].toInt() >= 1);
+            QCOMPARE(f["per_green"].toDouble(), f["crossings"].toDouble() / f["green_phases"].toDouble());
+            laneLines += f.contains("lane") ? 1 : 0;
+        }
+        QCOMPARE(laneLines, 4);
+        // Vehicles and the hero are rows of the trajectories, like every other agent.
+        const QStringList rows = readLines(csv);
+        QCOMPARE(rows.size(), 1 + 1200 * o["agents"].toInt());
+        QCOMPARE(o["agents"].toInt(), 200 + 16 + 1);
     }
 
     void framesSeedAndThreads()

@@ -1,0 +1,293 @@
+// The World's traffic phases: vehicles driven by the TrafficSystem and heroes by their
+// keyframes are agents that others perceive and steer round but never push; walkers obey
+// the crosswalk signals and keep off the carriageway (kerbs are walls). The call order is
+// the one TrafficSystem.h gives; every per-agent loop writes only its own agent.
+#include "simcore/world/World.h"
+
+#include "simcore/steering/TargetBehaviours.h"
+#include "simcore/traffic/LightPhase.h"
+#include "simcore/world/detail/StepGeometry.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace throng::sim {
+
+using namespace detail;
+
+namespace {
+constexpr float kHeadingLookaheadM = 2.0f;  // m along its path: where a walker "wants to go"
+constexpr float kEndLineMarginM = 1e-3f;    // m: how far behind a crosswalk's end line a held walker stays
+
+glm::vec3 onGround(glm::vec2 p, float y) { return {p.x, y, p.y}; }
+}  // namespace
+
+void World::buildTraffic(const Scene& scene)
+{
+    if (!scene.lanes.empty() || !scene.vehicles.empty()) {
+        TrafficOptions options;
+        options.seed = m_seed;
+        options.overrideSeed = true;
+        options.threads = m_threads;
+        m_traffic.system.emplace(scene, options);
+    }
+    for (const Hero& h : scene.heroes)
+        if (!h.keyframes.empty())
+            m_traffic.heroes.emplace_back(h);
+    for (const Lane& l : scene.lanes)
+        m_traffic.laneNames.push_back(l.name);
+    for (const Crosswalk& c : scene.crosswalks)
+        m_traffic.crosswalkNames.push_back(c.name);
+    for (const TrafficLight& l : scene.trafficLights)
+        m_traffic.lightNames.push_back(l.name);
+}
+
+void World::appendKerbs(std::vector<Segment>& walls) const
+{
+    if (!m_traffic.system)
+        return;
+    const LaneNetwork& net = m_traffic.system->lanes();
+    for (const BarrierSegment& b : net.pedestrianBarriers())
+        walls.push_back({b.a, b.b});
+    // Both sides of each crosswalk strip in full, the stretch over the pavement too: a
+    // walker then steps onto a crossing only over an end line, where the signal answers
+    // it, never sideways from the pavement beside it.
+    for (std::size_t c = 0; c < net.crosswalkCount(); ++c) {
+        const CrosswalkStrip& s = net.crosswalk(int(c));
+        const glm::vec2 side = glm::vec2(-s.dir.y, s.dir.x) * s.halfWidthM;
+        walls.push_back({s.a + side, s.b + side});
+        walls.push_back({s.a - side, s.b - side});
+    }
+}
+
+void World::addTrafficAgents(const Scene& scene)
+{
+    auto typeOf = [&](const std::string& name) {
+        for (std::size_t t = 0; t < scene.agentTypes.size(); ++t)
+            if (scene.agentTypes[t].name == name)
+                return std::uint16_t(t);
+        return std::uint16_t(0);
+    };
+    const std::size_t walkers = m_pos.size();
+    if (m_traffic.system) {
+        const TrafficSystem& ts = *m_traffic.system;
+        std::map<std::uint32_t, std::string> typeById;
+        for (const Vehicle& v : scene.vehicles)
+            typeById[v.id] = v.type;
+        for (std::size_t v = 0; v < ts.vehicleCount(); ++v) {
+            const glm::vec2 p = ts.position(v), f = ts.forward(v);
+            m_traffic.vehicleAgent.push_back(std::uint32_t(m_pos.size()));
+            addAgent(scene, ts.id(v), typeOf(typeById[ts.id(v)]), onGround(p, 0.0f), std::atan2(-f.y, f.x), -1, -1, 0);
+            m_vel.back() = glm::vec3(f.x, 0.0f, f.y) * ts.speed(v);
+            m_radius.back() = ts.radius(v);
+        }
+    }
+    std::size_t k = 0;
+    for (const Hero& h : scene.heroes) {
+        if (h.keyframes.empty())
+            continue;
+        const HeroTrack& track = m_traffic.heroes[k++];
+        const glm::vec2 f = track.forwardAt(0.0);
+        m_traffic.heroAgent.push_back(std::uint32_t(m_pos.size()));
+        addAgent(scene, h.id, typeOf(h.type), glm::vec3(0.0f), std::atan2(-f.y, f.x), -1, -1, 0);
+        m_pos.back() = m_nextPos.back() = m_resolvedPos.back() = track.positionAt(0.0);
+        m_vel.back() = track.velocityAt(0.0);
+    }
+    const std::size_t n = m_pos.size();
+    m_traffic.driven.assign(n, 0);
+    for (std::size_t i = walkers; i < n; ++i) {
+        m_traffic.driven[i] = 1;
+        // A driven agent counts as standing for the step's phases: it is never steered,
+        // and a walker that overlaps it takes the whole correction.
+        m_stopped[i] = 1;
+        m_stoppedBefore[i] = 1;
+    }
+    for (std::size_t i = 0; i < walkers; ++i)
+        if (m_types[m_info[i].typeIndex].kind == AgentKind::Pedestrian)
+            m_traffic.pedestrians.push_back(std::uint32_t(i));
+    for (std::uint32_t h : m_traffic.heroAgent)
+        m_traffic.pedestrians.push_back(h);
+    m_traffic.before.resize(m_traffic.pedestrians.size());
+    m_traffic.after.resize(m_traffic.pedestrians.size());
+    m_traffic.signal.assign(m_traffic.system ? n : 0, PedestrianSignal{});
+}
+
+void World::trafficBeforeStep()
+{
+    if (!m_traffic.system)
+        return;
+    for (std::size_t k = 0; k < m_traffic.pedestrians.size(); ++k) {
+        const std::uint32_t i = m_traffic.pedestrians[k];
+        m_traffic.before[k] = {xz(m_pos[i]), xz(m_vel[i]), m_radius[i]};
+    }
+    m_traffic.system->step(m_traffic.before);
+}
+
+glm::vec2 World::wantedHeading(std::size_t i) const
+{
+    const glm::vec2 p = xz(m_pos[i]);
+    if (m_path[i] >= 0) {
+        // The point a little ahead of the nearest point of its path: where it is heading
+        // even while it stands still or rounds a corner.
+        const Path& path = m_paths[std::size_t(m_path[i])];
+        const std::size_t count = path.points.size(), segments = path.closed ? count : count - 1;
+        float best = 1e30f;
+        std::size_t seg = 0;
+        float along = 0.0f;
+        for (std::size_t k = 0; k < segments; ++k) {
+            const glm::vec2 a = path.points[k], b = path.points[(k + 1) % count];
+            const glm::vec2 c = closestOnSegment(p, a, b);
+            const float d = glm::distance(p, c);
+            if (d < best) {
+                best = d;
+                seg = k;
+                along = glm::distance(a, c);
+            }
+        }
+        float ahead = kHeadingLookaheadM;
+        for (std::size_t step = 0; step < segments; ++step) {
+            const glm::vec2 a = path.points[seg], b = path.points[(seg + 1) % count];
+            const float len = glm::distance(a, b);
+            if (along + ahead <= len || (!path.closed && seg + 1 == segments))
+                return a + (b - a) * (std::min(along + ahead, len) / std::max(len, 1e-6f)) - p;
+            ahead -= len - along;
+            along = 0.0f;
+            seg = (seg + 1) % segments;
+        }
+    }
+    if (m_goal[i] >= 0)
+        return m_goalSpot[i] - p;
+    const glm::vec2 v = xz(m_vel[i]);
+    return glm::dot(v, v) > 1e-4f ? v : xz(m_fwd[i]);
+}
+
+glm::vec3 World::obeySignal(std::size_t i, const SteeringAgent& self, glm::vec3 force)
+{
+    if (m_traffic.signal.empty() || m_types[m_info[i].typeIndex].kind != AgentKind::Pedestrian)
+        return force;
+    PedestrianSignal& sig = m_traffic.signal[i];
+    sig = m_traffic.system->pedestrianSignal(xz(m_pos[i]), wantedHeading(i), glm::length(xz(m_vel[i])),
+                                             m_radius[i], m_info[i].id);
+    if (!sig.mustStop || sig.onCrosswalk || sig.crosswalk < 0)
+        return force;
+    // Stop at the stop point instead of following the path onto the crosswalk.
+    ArrivalParams arrival;
+    arrival.slowingDistanceM = 1.0f;
+    return arrive(self, onGround(sig.stopPoint, self.position.y), arrival);
+}
+
+void World::holdAtSignal(std::size_t i, glm::vec3& p) const
+{
+    if (m_traffic.signal.empty())
+        return;
+    const glm::vec2 q = holdBehindStopLine(m_traffic.signal[i], xz(p));
+    p.x = q.x;
+    p.z = q.y;
+}
+
+void World::driveTrafficAgents()
+{
+    if (m_traffic.system) {
+        const TrafficSystem& ts = *m_traffic.system;
+        for (std::size_t v = 0; v < m_traffic.vehicleAgent.size(); ++v) {
+            const std::size_t i = m_traffic.vehicleAgent[v];
+            const glm::vec2 p = ts.position(v), f = ts.forward(v);
+            m_nextPos[i] = onGround(p, groundHeight(p.x, p.y));
+            m_nextVel[i] = glm::vec3(f.x, 0.0f, f.y) * (ts.active(v) ? ts.speed(v) : 0.0f);
+            m_nextFwd[i] = glm::vec3(f.x, 0.0f, f.y);
+            m_nextSide[i] = glm::vec3(-f.y, 0.0f, f.x);
+        }
+    }
+    const double t1 = double(m_step + 1) * double(m_dt);
+    for (std::size_t h = 0; h < m_traffic.heroAgent.size(); ++h) {
+        const std::size_t i = m_traffic.heroAgent[h];
+        const HeroTrack& track = m_traffic.heroes[h];
+        const glm::vec2 f = track.forwardAt(t1);
+        m_nextPos[i] = track.positionAt(t1);
+        m_nextVel[i] = track.velocityAt(t1);
+        m_nextFwd[i] = glm::vec3(f.x, 0.0f, f.y);
+        m_nextSide[i] = glm::vec3(-f.y, 0.0f, f.x);
+    }
+}
+
+void World::trafficAfterCollide()
+{
+    if (m_traffic.heroAgent.empty() && m_traffic.signal.empty())
+        return;
+    const std::size_t n = m_pos.size();
+#pragma omp parallel for schedule(static, 256) num_threads(m_threads)
+    for (std::size_t i = 0; i < n; ++i) {
+        if (m_stopped[i] || m_types[m_info[i].typeIndex].kind == AgentKind::Flier)
+            continue;
+        glm::vec3 p = m_nextPos[i];
+        // Heroes are never pushed; a walker inside a hero's clearance steps out of it.
+        bool moved = false;
+        for (std::size_t h = 0; h < m_traffic.heroAgent.size(); ++h) {
+            const std::size_t j = m_traffic.heroAgent[h];
+            const HeroPush push = heroPush(xz(m_nextPos[j]), xz(m_nextVel[j]), m_traffic.heroes[h].clearanceM(),
+                                           xz(p), m_radius[i], m_info[i].id);
+            if (push.inside) {
+                p.x += push.displacement.x;
+                p.z += push.displacement.y;
+                moved = true;
+            }
+        }
+        if (moved)
+            constrain(i, m_pos[i], p);
+        // Crowd pushes and hero pushes may nudge a waiting walker, never past its stop point.
+        holdAtSignal(i, p);
+        keepOffRedCrosswalks(i, p);
+        if (!moved && p == m_nextPos[i])
+            continue;
+        m_nextPos[i] = p;
+        m_nextVel[i] = (p - m_pos[i]) / m_dt;
+        m_nextVel[i].y = 0.0f;
+    }
+}
+
+void World::keepOffRedCrosswalks(std::size_t i, glm::vec3& p) const
+{
+    // A hard constraint like the walls: whoever is off a crosswalk stays off it while its
+    // light is red, however the crowd or a hero pushes (the signal answer already stops
+    // those who walk up to it; this catches a walker shoved over the end line, or one that
+    // just left the far end and is pushed back).
+    if (!m_traffic.system)
+        return;
+    const LaneNetwork& net = m_traffic.system->lanes();
+    // Red at either end of the step: the counters time a crossing within the step.
+    const double t0 = double(m_step) * double(m_dt), t1 = double(m_step + 1) * double(m_dt);
+    for (std::size_t c = 0; c < net.crosswalkCount(); ++c) {
+        const CrosswalkStrip& s = net.crosswalk(int(c));
+        if (s.light < 0 || (lightPhaseAt(m_lights[std::size_t(s.light)], t0) != LightPhase::Red &&
+                            lightPhaseAt(m_lights[std::size_t(s.light)], t1) != LightPhase::Red))
+            continue;
+        const glm::vec2 side(-s.dir.y, s.dir.x);
+        const glm::vec2 from = xz(m_pos[i]) - s.a, to = glm::vec2(p.x, p.z) - s.a;
+        const float ub = glm::dot(from, s.dir), ua = glm::dot(to, s.dir);
+        if (std::abs(glm::dot(to, side)) > s.halfWidthM || ua < 0.0f || ua > s.lengthM)
+            continue;
+        float back = 0.0f;
+        if (ub < 0.0f)
+            back = ua + kEndLineMarginM;
+        else if (ub > s.lengthM)
+            back = ua - s.lengthM - kEndLineMarginM;
+        p.x -= s.dir.x * back;
+        p.z -= s.dir.y * back;
+    }
+}
+
+void World::trafficAfterStep()
+{
+    if (!m_traffic.system)
+        return;
+    for (std::size_t k = 0; k < m_traffic.pedestrians.size(); ++k) {
+        const std::uint32_t i = m_traffic.pedestrians[k];
+        m_traffic.after[k] = {xz(m_pos[i]), xz(m_vel[i]), m_radius[i]};
+    }
+    m_traffic.system->observePedestrians(m_traffic.before, m_traffic.after);
+}
+
+}  // namespace throng::sim
