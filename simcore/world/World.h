@@ -14,11 +14,18 @@
 #include <glm/vec3.hpp>
 
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
 
 namespace throng::sim {
+
+class BrainEvaluator;
+namespace detail {
+struct TypeBrain;
+struct WorldBrains;
+}  // namespace detail
 
 struct WorldOptions {
     std::uint64_t seed = 0;     // used when overrideSeed; else the scene's seed
@@ -71,6 +78,16 @@ public:
     // Light state of a traffic light at the current time: 0 green, 1 yellow, 2 red.
     int lightState(std::size_t light) const;
 
+    // Brains (WorldBrain.cpp). The action agent i's brain chose at the last step, as an
+    // index into its program's action names, or -1 (no brain, or no action output).
+    int brainAction(std::size_t i) const;
+    std::string brainActionName(std::size_t i) const;
+    // Why a type's brain does not run (compile errors, sensors the World cannot fill);
+    // such a type steers without its brain. Empty when every brain runs.
+    const std::vector<std::string>& brainErrors() const;
+    // The evaluator of a type's brain (for the live view), null when the type has none.
+    const BrainEvaluator* brainEvaluator(std::size_t typeIndex) const;
+
 private:
     struct TypeParams {
         float radius, maxSpeed, maxForce, mass, perception;
@@ -100,6 +117,15 @@ private:
     float groundHeight(float x, float z) const;
     void commit(std::size_t i, std::uint64_t& wallCrossings);
     void countStep();
+    // Brain phase and its effect on steering (WorldBrain.cpp, WorldBrainSense.cpp).
+    void buildBrains(const Scene& scene);
+    void runBrains();
+    void senseForBrain(detail::TypeBrain& brain) const;
+    float brainSpeedCap(std::size_t i) const;            // m/s: max speed, or less when the brain asks
+    void capToBrainSpeed(std::size_t i, const SteeringAgent& self, SteeringAgent& next) const;
+    float brainWeight(std::size_t i, Behaviour b) const; // multiplies the type's weight; 1 without a brain
+    glm::vec3 brainTurnForce(std::size_t i, const SteeringAgent& self) const;
+    Clip brainClip(std::size_t i, Clip bySpeed) const;
 
     std::vector<TypeParams> m_types;
     std::vector<TypeSteering> m_steering;  // per type
@@ -143,6 +169,7 @@ private:
     std::uint64_t m_step = 0;
     float m_dt = 1.0f / 24.0f;
     int m_threads = 1;
+    std::shared_ptr<detail::WorldBrains> m_brains;  // null when no type has a brain
 };
 
 }  // namespace throng::sim

@@ -26,6 +26,9 @@ void World::step()
     if (!m_gridCurrent)
         m_grid.rebuild(m_pos, m_hasFliers);
     m_gridCurrent = false;
+    // Brain: sensors from this (previous) state, then each type's program.
+    if (m_brains)
+        runBrains();
 
 #pragma omp parallel for schedule(static, 256) num_threads(m_threads)
     for (std::size_t i = 0; i < n; ++i) {
@@ -48,11 +51,12 @@ void World::step()
         m_nearCount[i] = std::uint8_t(count);
         // Steer: the type's behaviours, combined.
         WanderState wanderNext;
-        glm::vec3 force = steer(i, self, {near.data(), count}, wanderNext);
+        glm::vec3 force = steer(i, self, {near.data(), count}, wanderNext) + brainTurnForce(i, self);
         if (s.on(Behaviour::ReciprocalAvoidance) && !s.vehicle.flying)
             force = avoidReciprocally(i, self, force, {near.data(), count}, s);
         // Integrate: the simple vehicle model (Reynolds 1999).
         SteeringAgent next = integrateVehicle(self, force, m_dt, s.vehicle);
+        capToBrainSpeed(i, self, next);
         // Constrain: no agent ends a step inside a wall or obstacle; walkers stand on the ground.
         if (!s.vehicle.flying) {
             constrain(i, self.position, next.position);
@@ -87,7 +91,7 @@ void World::step()
         // Nobody moves faster than its max speed, nudges included, so what the viewer
         // sees and the gait it is animated with always agree.
         const glm::vec3 move = p - m_pos[i];
-        const float maxMove = m_maxSpeed[i] * m_dt, moved = glm::length(move);
+        const float maxMove = brainSpeedCap(i) * m_dt, moved = glm::length(move);
         if (moved > maxMove && moved > 0.0f)
             p = m_pos[i] + move * (maxMove / moved);
         if (!flying) {
