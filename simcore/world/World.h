@@ -120,7 +120,9 @@ private:
     // Brain phase and its effect on steering (WorldBrain.cpp, WorldBrainSense.cpp).
     void buildBrains(const Scene& scene);
     void runBrains();
-    void senseForBrain(detail::TypeBrain& brain) const;
+    void senseForBrain(detail::TypeBrain& brain);
+    // Agent i's neighbours from the brain's sense phase of this step, or from the grid.
+    std::size_t neighboursThisStep(std::size_t i, Neighbour* out);
     float brainSpeedCap(std::size_t i) const;            // m/s: max speed, or less when the brain asks
     void capToBrainSpeed(std::size_t i, const SteeringAgent& self, SteeringAgent& next) const;
     float brainWeight(std::size_t i, Behaviour b) const; // multiplies the type's weight; 1 without a brain

@@ -239,6 +239,22 @@ void World::runBrains()
     }
 }
 
+std::size_t World::neighboursThisStep(std::size_t i, Neighbour* out)
+{
+    std::uint32_t* index = &m_nearIndex[i * kMaxNeighbours];
+    if (!m_brains || m_brains->local[i] < 0 || !m_brains->types[m_info[i].typeIndex].gathersNeighbours) {
+        const std::size_t count = gatherNeighbours(i, out, index);
+        m_nearCount[i] = std::uint8_t(count);
+        return count;
+    }
+    const std::size_t count = m_nearCount[i];
+    for (std::size_t k = 0; k < count; ++k) {
+        const std::uint32_t j = index[k];
+        out[k] = {m_pos[j], m_vel[j], m_fwd[j], m_radius[j], m_info[j].id};
+    }
+    return count;
+}
+
 float World::brainSpeedCap(std::size_t i) const
 {
     if (!m_brains || m_brains->local[i] < 0)

@@ -62,7 +62,7 @@ glm::vec2 rotated(glm::vec2 v, float rad)
 
 }  // namespace
 
-void World::senseForBrain(TypeBrain& tb) const
+void World::senseForBrain(TypeBrain& tb)
 {
     bool needNeighbours = false, needFeelers = false;
     for (SensorFill f : tb.fills) {
@@ -70,6 +70,7 @@ void World::senseForBrain(TypeBrain& tb) const
                          f >= SensorFill::NeighbourDistance;
         needFeelers = needFeelers || (f >= SensorFill::FeelerLeft && f <= SensorFill::FeelerRight);
     }
+    tb.gathersNeighbours = needNeighbours;
     const std::size_t n = tb.agents.size(), sensors = tb.fills.size();
     const float time = float(timeS());
     const float third = tb.viewDeg / 6.0f;
@@ -82,9 +83,12 @@ void World::senseForBrain(TypeBrain& tb) const
         glm::vec2 f = xz(m_fwd[i]);
         f = glm::dot(f, f) > 1e-12f ? glm::normalize(f) : glm::vec2(1.0f, 0.0f);
         const float speed = glm::length(m_vel[i]);
+        // The neighbours go into the agent's own m_nearIndex row, where the steer phase
+        // of this step finds them instead of querying the grid a second time.
         std::array<Neighbour, kMaxNeighbours> near;
-        std::array<std::uint32_t, kMaxNeighbours> nearIndex;
-        const std::size_t count = needNeighbours ? gatherNeighbours(i, near.data(), nearIndex.data()) : 0;
+        const std::size_t count = needNeighbours ? gatherNeighbours(i, near.data(), &m_nearIndex[i * kMaxNeighbours]) : 0;
+        if (needNeighbours)
+            m_nearCount[i] = std::uint8_t(count);
         tb.neighbourCount[k] = std::uint8_t(std::min<std::size_t>(count, kBrainNeighbours));
         std::array<float, 3> feeler{};  // left, centre, right
         if (needFeelers) {

@@ -47,8 +47,7 @@ void World::step()
         const SteeringAgent self = steeringAgent(i);
         // Sense: nearby agents in the perception cone.
         std::array<Neighbour, kMaxNeighbours> near;
-        const std::size_t count = gatherNeighbours(i, near.data(), &m_nearIndex[i * kMaxNeighbours]);
-        m_nearCount[i] = std::uint8_t(count);
+        const std::size_t count = neighboursThisStep(i, near.data());
         // Steer: the type's behaviours, combined.
         WanderState wanderNext;
         glm::vec3 force = steer(i, self, {near.data(), count}, wanderNext) + brainTurnForce(i, self);

@@ -32,6 +32,7 @@ struct TypeBrain {
     std::vector<std::uint8_t> neighbourCount;     // per agent of the type
     std::vector<std::uint64_t> keys;              // per agent: stable random key
     float viewDeg = 360.0f;                       // the type's full view angle
+    bool gathersNeighbours = false;               // the sense phase fills m_nearIndex for its agents
     // Outputs of the last evaluate, by the type's agent index; null = not driven.
     const float* speed = nullptr;
     const float* turn = nullptr;
