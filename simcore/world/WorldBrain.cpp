@@ -41,6 +41,7 @@ std::optional<SensorFill> fillFor(const BrainSensorUse& use)
         {"terrain_slope", SensorFill::TerrainSlope}, {"time", SensorFill::Time},
         {"neighbour_distance", SensorFill::NeighbourDistance}, {"neighbour_bearing", SensorFill::NeighbourBearing},
         {"neighbour_speed", SensorFill::NeighbourSpeed}, {"neighbour_heading", SensorFill::NeighbourHeading},
+        {"neighbour_tag", SensorFill::NeighbourTag},
     };
     static const std::map<std::string, SensorFill> attributes{
         {"max_speed", SensorFill::AttrMaxSpeed}, {"radius", SensorFill::AttrRadius},
@@ -73,6 +74,15 @@ const BrainNode* inputNodeFor(const BrainGraph& g, const BrainSensorUse& use)
     return nullptr;
 }
 
+std::uint32_t tagIndex(std::vector<std::string>& tags, const std::string& name)
+{
+    const auto it = std::find(tags.begin(), tags.end(), name);
+    if (it != tags.end())
+        return std::uint32_t(it - tags.begin());
+    tags.push_back(name);
+    return std::uint32_t(tags.size() - 1);
+}
+
 }  // namespace
 
 std::string worldSensorProblem(const BrainSensorUse& use, const Scene& scene)
@@ -81,7 +91,7 @@ std::string worldSensorProblem(const BrainSensorUse& use, const Scene& scene)
         return "attribute '" + use.argument +
                "' is not an agent attribute (max_speed, radius, mass, max_force, perception, speed_factor)";
     if (!fillFor(use))
-        return "sensor '" + use.sensor + "' is not provided by the World yet (sound channels and tags are not wired)";
+        return "sensor '" + use.sensor + "' is not provided by the World yet (sound channels are not wired)";
     if ((use.sensor == "hero_distance" || use.sensor == "hero_bearing") && !scene.heroes.empty())
         return "sensor '" + use.sensor + "' is not provided by the World yet (heroes do not run in the World)";
     return {};
@@ -146,11 +156,16 @@ void World::buildBrains(const Scene& scene)
                 usable = false;
             }
             tb.fills.push_back(fillFor(use).value_or(SensorFill::Time));
+            tb.fillTag.push_back(use.sensor == "neighbour_tag" ? tagIndex(wb.tags, use.argument) : 0);
         }
         if (!usable) {
             tb.fills.clear();
+            tb.fillTag.clear();
             continue;
         }
+        for (const BrainOutputSlot& o : r.program->outputs)
+            if (o.channel == "tag")
+                tagIndex(wb.tags, o.name);
         tb.program = r.program;
         tb.viewDeg = std::min(type.viewAngleDeg, 360.0f);
         for (const std::string& name : r.program->goal.names) {
@@ -171,6 +186,7 @@ void World::buildBrains(const Scene& scene)
         tb.agents.push_back(std::uint32_t(i));
         tb.keys.push_back(rng(m_seed, m_info[i].id, 0, kBrainKey));
     }
+    wb.tagValues.assign(wb.tags.size(), std::vector<float>(m_pos.size(), 0.0f));
     for (detail::TypeBrain& tb : wb.types) {
         if (!tb.program)
             continue;
@@ -211,6 +227,10 @@ void World::runBrains()
         tb.turn = out.turn;
         tb.action = out.action;
         tb.goal = out.goal;
+        tb.tagOutputs.clear();
+        for (const auto& [name, column] : out.tags)
+            tb.tagOutputs.emplace_back(std::uint32_t(std::find(wb.tags.begin(), wb.tags.end(), name) - wb.tags.begin()),
+                                       column);
         tb.weight.fill(nullptr);
         for (const auto& [name, column] : out.weights)
             for (std::size_t b = 0; b < kBehaviourCount; ++b)
@@ -235,6 +255,16 @@ void World::runBrains()
             const float r = 0.8f * goal.radiusM * std::sqrt(rngUniform(m_seed, id, std::uint64_t(g) + 1, kGoalSpotR));
             const float a = 6.28318531f * rngUniform(m_seed, id, std::uint64_t(g) + 1, kGoalSpotA);
             m_goalSpot[i] = goal.position + r * glm::vec2(std::cos(a), std::sin(a));
+        }
+    }
+    // Tags are published only once every type has sensed, so all read last step's values.
+    for (detail::TypeBrain& tb : wb.types) {
+        if (!tb.program)
+            continue;
+        for (const auto& [tag, column] : tb.tagOutputs) {
+            std::vector<float>& values = wb.tagValues[tag];
+            for (std::size_t k = 0; k < tb.agents.size(); ++k)
+                values[tb.agents[k]] = column[k];
         }
     }
 }

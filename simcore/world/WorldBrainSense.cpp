@@ -228,6 +228,7 @@ void World::senseForBrain(TypeBrain& tb)
             case SensorFill::NeighbourBearing:
             case SensorFill::NeighbourSpeed:
             case SensorFill::NeighbourHeading:
+            case SensorFill::NeighbourTag:
                 for (std::size_t j = 0; j < kBrainNeighbours; ++j) {
                     float x = 0.0f;
                     if (j < count) {
@@ -236,6 +237,9 @@ void World::senseForBrain(TypeBrain& tb)
                         case SensorFill::NeighbourDistance: x = glm::distance(p, q); break;
                         case SensorFill::NeighbourBearing: x = bearingDeg(f, q - p); break;
                         case SensorFill::NeighbourSpeed: x = glm::length(near[j].velocity); break;
+                        case SensorFill::NeighbourTag:
+                            x = m_brains->tagValues[tb.fillTag[s]][m_nearIndex[i * kMaxNeighbours + j]];
+                            break;
                         default: x = bearingDeg(f, xz(near[j].forward)); break;
                         }
                     }

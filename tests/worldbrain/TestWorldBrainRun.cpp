@@ -259,6 +259,50 @@ brains:
         QVERIFY2(world.positions()[0].x < -8.0f, qPrintable(QString::number(world.positions()[0].x)));
     }
 
+    void walkerStopsWhenItSeesATaggedNeighbour()
+    {
+        // A standing "guard" publishes the tag "halt" = 1; a walker whose brain stops for
+        // any neighbour with that tag walks toward the guard and stops once it perceives
+        // it (4 m), far short of its goal beyond.
+        const char* yaml = R"(throng: 1
+settings: {fps: 24, seed: 4, bounds: {min: [-30, -30], max: [30, 30]}}
+agent_types:
+  - {name: guard, max_speed: 1, brain: guard}
+  - {name: walker, max_speed: 1.4, perception: 4, view_angle: 360, brain: obey}
+goals: [{name: far, position: [20, 0], radius: 1}]
+agents:
+  - {id: 1, type: guard, position: [10, 0, 1.5]}
+  - {id: 2, type: walker, position: [0, 0, 0], goal: far}
+brains:
+  - name: guard
+    nodes:
+      - {id: 1, type: input.constant, params: {value: 1}}
+      - {id: 2, type: output, params: {channel: tag, tag: halt}}
+    links:
+      - {from: [1, 0], to: [2, 0]}
+  - name: obey
+    nodes:
+      - {id: 1, type: input, params: {sensor: neighbour_tag, tag: halt}}
+      - {id: 2, type: filter, params: {mode: most}}
+      - {id: 3, type: rule.not}
+      - {id: 4, type: output, params: {channel: speed, scale: 1.4}}
+    links:
+      - {from: [1, 0], to: [2, 0]}
+      - {from: [2, 0], to: [3, 0]}
+      - {from: [3, 0], to: [4, 0]}
+)";
+        const Scene s = load(yaml);
+        World world(s, kSerial);
+        QVERIFY(world.brainErrors().empty());
+        while (world.timeS() < 20.0)
+            world.step();
+        const glm::vec2 walker = xz(world.positions()[1]);
+        const float toGuard = glm::distance(walker, glm::vec2(10, 1.5));
+        QVERIFY2(toGuard < 4.2f && toGuard > 3.0f, qPrintable(QString::number(toGuard)));
+        QVERIFY(!world.hasArrived(1));
+        QVERIFY(glm::length(world.velocities()[1]) < 0.05f);
+    }
+
     void identicalOnOneAndTwoThreads()
     {
         for (const char* yaml : {kCrossing, kFlock, kArrive}) {

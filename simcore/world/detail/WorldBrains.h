@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace throng::sim::detail {
@@ -20,7 +21,7 @@ enum class SensorFill : std::uint8_t {
     NearestDistance, NearestBearing, VisionLeft, VisionCentre, VisionRight, FeelerLeft, FeelerCentre,
     FeelerRight, WallDistance, LightState, StopLineDistance, HeroDistance, HeroBearing, TerrainSlope, Time,
     AttrMaxSpeed, AttrRadius, AttrMass, AttrMaxForce, AttrPerception, AttrSpeedFactor,
-    NeighbourDistance, NeighbourBearing, NeighbourSpeed, NeighbourHeading,
+    NeighbourDistance, NeighbourBearing, NeighbourSpeed, NeighbourHeading, NeighbourTag,  // per neighbour: last
 };
 
 struct TypeBrain {
@@ -28,6 +29,8 @@ struct TypeBrain {
     std::unique_ptr<BrainEvaluator> evaluator;
     std::vector<std::uint32_t> agents;            // World indices of this type's agents
     std::vector<SensorFill> fills;                // parallel to program->sensors
+    std::vector<std::uint32_t> fillTag;           // parallel to fills: NeighbourTag's index into WorldBrains::tags
+    std::vector<std::pair<std::uint32_t, const float*>> tagOutputs;  // tag index -> last evaluate's column
     std::vector<std::vector<float>> columns;      // parallel to program->sensors
     std::vector<std::uint8_t> neighbourCount;     // per agent of the type
     std::vector<std::uint64_t> keys;              // per agent: stable random key
@@ -48,6 +51,8 @@ struct WorldBrains {
     std::vector<std::int32_t> local;   // per agent: index among its type's agents, -1 = no brain
     std::vector<std::int16_t> action;  // per agent: the chosen action index, -1 = none
     std::vector<std::string> errors;   // why a brain does not run (the type then steers without it)
+    std::vector<std::string> tags;                 // every tag a brain publishes or senses
+    std::vector<std::vector<float>> tagValues;     // per tag, per agent: published at the last step (0 = none)
 };
 
 }  // namespace throng::sim::detail
