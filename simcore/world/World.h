@@ -87,6 +87,9 @@ public:
     const std::vector<std::string>& brainErrors() const;
     // The evaluator of a type's brain (for the live view), null when the type has none.
     const BrainEvaluator* brainEvaluator(std::size_t typeIndex) const;
+    // Keeps agent i's node values (its type's evaluator's pickedValues) after each step;
+    // -1 picks nobody. Agent i's index among its type's agents is what the evaluator sees.
+    void pickBrainAgent(std::ptrdiff_t i);
 
 private:
     struct TypeParams {

@@ -367,4 +367,16 @@ const BrainEvaluator* World::brainEvaluator(std::size_t typeIndex) const
     return m_brains->types[typeIndex].evaluator.get();
 }
 
+void World::pickBrainAgent(std::ptrdiff_t i)
+{
+    if (!m_brains)
+        return;
+    for (detail::TypeBrain& tb : m_brains->types)
+        if (tb.evaluator)
+            tb.evaluator->setPickedAgent(-1);
+    if (i < 0 || std::size_t(i) >= m_pos.size() || m_brains->local[std::size_t(i)] < 0)
+        return;
+    m_brains->types[m_info[std::size_t(i)].typeIndex].evaluator->setPickedAgent(m_brains->local[std::size_t(i)]);
+}
+
 }  // namespace throng::sim

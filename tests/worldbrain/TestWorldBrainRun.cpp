@@ -3,6 +3,7 @@
 // goal distance arrives and stops, and every run is identical on 1 and 2 threads.
 #include "TestRegistry.h"
 
+#include "simcore/brain/BrainEvaluator.h"
 #include "simcore/io/SceneIO.h"
 #include "simcore/traffic/LightPhase.h"
 #include "simcore/world/RunStats.h"
@@ -301,6 +302,20 @@ brains:
         QVERIFY2(toGuard < 4.2f && toGuard > 3.0f, qPrintable(QString::number(toGuard)));
         QVERIFY(!world.hasArrived(1));
         QVERIFY(glm::length(world.velocities()[1]) < 0.05f);
+        // The live view of the walker's brain shows why: the tag it sees, and "go" = 0.
+        world.pickBrainAgent(1);
+        world.step();
+        const BrainEvaluator* live = world.brainEvaluator(1);
+        QVERIFY(live);
+        bool sawTag = false, sawStop = false;
+        for (const BrainNodeValue& v : live->pickedValues()) {
+            if (v.node == 2)
+                sawTag = v.values.size() == 1 && v.values[0] == 1.0f;
+            if (v.node == 3)
+                sawStop = v.values.size() == 1 && v.values[0] == 0.0f;
+        }
+        QVERIFY(sawTag);
+        QVERIFY(sawStop);
     }
 
     void identicalOnOneAndTwoThreads()
