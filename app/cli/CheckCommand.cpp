@@ -1,16 +1,24 @@
 #include "CliCommands.h"
 
 #include "simcore/io/SceneIO.h"
+#include "simcore/world/WorldBrain.h"
 
 #include <ostream>
+#include <utility>
+#include <vector>
 
 namespace throng::cli {
 
 int checkCommand(const CliArguments& args, std::ostream& out, std::ostream& err)
 {
     const sim::LoadResult loaded = sim::loadScene(args.scene);
+    std::vector<sim::Diagnostic> diagnostics = loaded.diagnostics;
+    // Brains compile only once the scene around them is whole.
+    if (loaded.ok())
+        for (sim::Diagnostic& d : sim::checkSceneBrains(loaded.scene))
+            diagnostics.push_back(std::move(d));
     int errors = 0, warnings = 0;
-    for (const sim::Diagnostic& d : loaded.diagnostics) {
+    for (const sim::Diagnostic& d : diagnostics) {
         err << d.format() << '\n';
         (d.severity == sim::Severity::Error ? errors : warnings) += 1;
     }

@@ -38,6 +38,12 @@ int runCommand(const CliArguments& args, std::ostream& out, std::ostream& err)
         options.seed = *args.seed;
     }
     sim::World world(scene, options);
+    if (!world.brainErrors().empty()) {
+        for (const std::string& e : world.brainErrors())
+            err << e << '\n';
+        err << "throng-cli: a brain of " << args.scene << " cannot run; nothing was run\n";
+        return 1;
+    }
 
     const bool record = !args.trajectoriesPath.empty() || !args.exportPath.empty();
     sim::FrameCache cache;

@@ -68,6 +68,7 @@ World::World(const Scene& scene, const WorldOptions& options)
     buildStatics(scene);
     buildAgents(scene);
     addTrafficAgents(scene);
+    buildBrains(scene);
     for (const TypeParams& t : m_types) {
         m_hasFliers = m_hasFliers || t.kind == AgentKind::Flier;
         m_maxRadius = std::max(m_maxRadius, t.radius);
@@ -285,7 +286,7 @@ void World::snapshot(std::vector<AgentFrame>& out) const
         f.speed = speed;
         f.phase = m_phase[i];
         // Clip thresholds relative to a walker: below 0.1 m/s stand, above 2.5 m/s run.
-        f.clip = speed < 0.1f ? Clip::Idle : (speed < 2.5f ? Clip::Walk : Clip::Run);
+        f.clip = brainClip(i, speed < 0.1f ? Clip::Idle : (speed < 2.5f ? Clip::Walk : Clip::Run));
     }
 }
 

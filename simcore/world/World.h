@@ -15,11 +15,18 @@
 #include <glm/vec3.hpp>
 
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
 
 namespace throng::sim {
+
+class BrainEvaluator;
+namespace detail {
+struct TypeBrain;
+struct WorldBrains;
+}  // namespace detail
 
 struct WorldOptions {
     std::uint64_t seed = 0;     // used when overrideSeed; else the scene's seed
@@ -78,6 +85,18 @@ public:
     const std::vector<HeroTrack>& heroTracks() const { return m_traffic.heroes; }
     const WorldTraffic& traffic() const { return m_traffic; }
     bool isDriven(std::size_t i) const { return m_traffic.isDriven(i); }
+    // Brains (WorldBrain.cpp). The action agent i's brain chose at the last step, as an
+    // index into its program's action names, or -1 (no brain, or no action output).
+    int brainAction(std::size_t i) const;
+    std::string brainActionName(std::size_t i) const;
+    // Why a type's brain does not run (compile errors, sensors the World cannot fill);
+    // such a type steers without its brain. Empty when every brain runs.
+    const std::vector<std::string>& brainErrors() const;
+    // The evaluator of a type's brain (for the live view), null when the type has none.
+    const BrainEvaluator* brainEvaluator(std::size_t typeIndex) const;
+    // Keeps agent i's node values (its type's evaluator's pickedValues) after each step;
+    // -1 picks nobody. Agent i's index among its type's agents is what the evaluator sees.
+    void pickBrainAgent(std::ptrdiff_t i);
 
 private:
     struct TypeParams {
@@ -108,6 +127,17 @@ private:
     float groundHeight(float x, float z) const;
     void commit(std::size_t i, std::uint64_t& wallCrossings);
     void countStep();
+    // Brain phase and its effect on steering (WorldBrain.cpp, WorldBrainSense.cpp).
+    void buildBrains(const Scene& scene);
+    void runBrains();
+    void senseForBrain(detail::TypeBrain& brain);
+    // Agent i's neighbours from the brain's sense phase of this step, or from the grid.
+    std::size_t neighboursThisStep(std::size_t i, Neighbour* out);
+    float brainSpeedCap(std::size_t i) const;            // m/s: max speed, or less when the brain asks
+    void capToBrainSpeed(std::size_t i, const SteeringAgent& self, SteeringAgent& next) const;
+    float brainWeight(std::size_t i, Behaviour b) const; // multiplies the type's weight; 1 without a brain
+    glm::vec3 brainTurnForce(std::size_t i, const SteeringAgent& self) const;
+    Clip brainClip(std::size_t i, Clip bySpeed) const;
 
     // Traffic phases; see WorldTraffic.cpp.
     void buildTraffic(const Scene& scene);
@@ -165,6 +195,7 @@ private:
     float m_dt = 1.0f / 24.0f;
     int m_threads = 1;
     WorldTraffic m_traffic;
+    std::shared_ptr<detail::WorldBrains> m_brains;  // null when no type has a brain
 };
 
 }  // namespace throng::sim

@@ -157,7 +157,7 @@ glm::vec3 World::steer(std::size_t i, const SteeringAgent& self, std::span<const
     SteeringRequestList requests;
     auto request = [&](B b, auto&& force) {
         if (s.on(b))
-            requests.add(force(), s.w(b));
+            requests.add(force(), s.w(b) * brainWeight(i, b));
     };
     const glm::vec3 p = self.position;
     const bool hasGoal = m_goal[i] >= 0;
@@ -176,7 +176,7 @@ glm::vec3 World::steer(std::size_t i, const SteeringAgent& self, std::span<const
         const float nearest = s.vehicle.flying ? std::min({lo.x, lo.y, lo.z, hi.x, hi.y, hi.z})
                                                : std::min({lo.x, lo.z, hi.x, hi.z});  // walkers ignore height
         if (nearest < probe)
-            requests.add(stayInside(self, m_bounds, s.containment), s.w(B::Containment));
+            requests.add(stayInside(self, m_bounds, s.containment), s.w(B::Containment) * brainWeight(i, B::Containment));
     }
     if (s.on(B::WallFollowing)) {
         std::array<WallSegment, kMaxNearWalls> walls;
@@ -243,7 +243,7 @@ glm::vec3 World::steer(std::size_t i, const SteeringAgent& self, std::span<const
                                rngRange(m_seed, id, m_step, kWanderZ, -1.0f, 1.0f));
         const WanderResult w = wander(self, m_wander[i], random, s.wander);
         wanderOut = w.state;
-        requests.add(w.force, s.w(B::Wander));
+        requests.add(w.force, s.w(B::Wander) * brainWeight(i, B::Wander));
     }
     // A walker or vehicle with nowhere to go comes to rest instead of coasting on what
     // separation or a collision gave it (the lowest priority: anything else comes first).

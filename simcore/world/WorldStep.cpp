@@ -27,6 +27,9 @@ void World::step()
         m_grid.rebuild(m_pos, m_hasFliers);
     m_gridCurrent = false;
     trafficBeforeStep();
+    // Brain: sensors from this (previous) state, then each type's program.
+    if (m_brains)
+        runBrains();
 
 #pragma omp parallel for schedule(static, 256) num_threads(m_threads)
     for (std::size_t i = 0; i < n; ++i) {
@@ -45,16 +48,16 @@ void World::step()
         const SteeringAgent self = steeringAgent(i);
         // Sense: nearby agents in the perception cone.
         std::array<Neighbour, kMaxNeighbours> near;
-        const std::size_t count = gatherNeighbours(i, near.data(), &m_nearIndex[i * kMaxNeighbours]);
-        m_nearCount[i] = std::uint8_t(count);
+        const std::size_t count = neighboursThisStep(i, near.data());
         // Steer: the type's behaviours, combined.
         WanderState wanderNext;
-        glm::vec3 force = steer(i, self, {near.data(), count}, wanderNext);
+        glm::vec3 force = steer(i, self, {near.data(), count}, wanderNext) + brainTurnForce(i, self);
         if (s.on(Behaviour::ReciprocalAvoidance) && !s.vehicle.flying)
             force = avoidReciprocally(i, self, force, {near.data(), count}, s);
         force = obeySignal(i, self, force);
         // Integrate: the simple vehicle model (Reynolds 1999).
         SteeringAgent next = integrateVehicle(self, force, m_dt, s.vehicle);
+        capToBrainSpeed(i, self, next);
         holdAtSignal(i, next.position);
         // Constrain: no agent ends a step inside a wall or obstacle; walkers stand on the ground.
         if (!s.vehicle.flying) {
@@ -91,7 +94,7 @@ void World::step()
         // Nobody moves faster than its max speed, nudges included, so what the viewer
         // sees and the gait it is animated with always agree.
         const glm::vec3 move = p - m_pos[i];
-        const float maxMove = m_maxSpeed[i] * m_dt, moved = glm::length(move);
+        const float maxMove = brainSpeedCap(i) * m_dt, moved = glm::length(move);
         if (moved > maxMove && moved > 0.0f)
             p = m_pos[i] + move * (maxMove / moved);
         if (!flying) {

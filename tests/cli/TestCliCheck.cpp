@@ -70,6 +70,50 @@ private slots:
         QVERIFY(r.out.find("invalid: 2 errors, 0 warnings") != std::string::npos);
     }
 
+    // A brain is compiled by check: a compiler error and a sensor the World cannot fill
+    // yet are errors at their nodes; run refuses the scene instead of running it silently.
+    void brainErrorsNameTheNode()
+    {
+        QTemporaryDir tmp;
+        const QString path = throng::test::writeText(tmp.filePath("brains.yaml"), R"(throng: 1
+agent_types: [{name: w, brain: broken}]
+brains:
+  - name: broken
+    nodes:
+      - {id: 1, type: input, params: {sensor: sound_bearing, channel: bell}}
+      - {id: 2, type: fuzz.triangle, params: {points: [0, 1, 2]}}
+      - {id: 3, type: output, params: {channel: speed}}
+    links:
+      - {from: [1, 0], to: [3, 0]}
+agents: [{type: w, position: [0, 0]}]
+)");
+        auto r = runCli({"check", path.toStdString()});
+        QCOMPARE(r.status, 1);
+        QVERIFY2(r.err.find("brains.yaml:7:9: error: brains[0]: node 2 (fuzz.triangle): input 0 'x' is not connected") !=
+                     std::string::npos, r.err.c_str());
+        QVERIFY(r.out.find("invalid: 1 error") != std::string::npos);
+        r = runCli({"run", path.toStdString(), "--frames", "3"});
+        QCOMPARE(r.status, 1);
+        QVERIFY2(r.err.find("nothing was run") != std::string::npos, r.err.c_str());
+
+        // Fixed, the same brain still reads a sensor the World does not provide yet.
+        const QString fixed = throng::test::writeText(tmp.filePath("fixed.yaml"), R"(throng: 1
+agent_types: [{name: w, brain: deaf}]
+brains:
+  - name: deaf
+    nodes:
+      - {id: 1, type: input, params: {sensor: sound_bearing, channel: bell}}
+      - {id: 3, type: output, params: {channel: turn}}
+    links:
+      - {from: [1, 0], to: [3, 0]}
+agents: [{type: w, position: [0, 0]}]
+)");
+        r = runCli({"check", fixed.toStdString()});
+        QCOMPARE(r.status, 1);
+        QVERIFY2(r.err.find("fixed.yaml:6:9: error: brains[0]: node 1 (input): sensor 'sound_bearing' is not provided") !=
+                     std::string::npos, r.err.c_str());
+    }
+
     void missingFile()
     {
         const auto r = runCli({"check", "/no/such/scene.yaml"});

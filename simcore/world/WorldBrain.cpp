@@ -1,0 +1,382 @@
+// Brains in the World: compiling each type's brain once, checking that the World can
+// fill every sensor it reads, and running it each step before steering. The sensors
+// themselves are gathered in WorldBrainSense.cpp.
+#include "simcore/world/WorldBrain.h"
+
+#include "simcore/brain/BrainCompiler.h"
+#include "simcore/world/Rng.h"
+#include "simcore/world/World.h"
+#include "simcore/world/detail/WorldBrains.h"
+
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <optional>
+
+namespace throng::sim {
+
+using detail::SensorFill;
+
+namespace {
+
+// Random streams of their own (see World.cpp's list), so brains shift no other draw.
+enum BrainStream : std::uint64_t { kBrainKey = 301, kGoalSpotR, kGoalSpotA };
+
+std::optional<SensorFill> fillFor(const BrainSensorUse& use)
+{
+    static const std::map<std::string, SensorFill> plain{
+        {"speed", SensorFill::Speed}, {"goal_bearing", SensorFill::GoalBearing},
+        {"goal_distance", SensorFill::GoalDistance}, {"path_offset", SensorFill::PathOffset},
+        {"flow_bearing", SensorFill::FlowBearing}, {"neighbour_count", SensorFill::NeighbourCount},
+        {"neighbour_density", SensorFill::NeighbourDensity}, {"nearest_distance", SensorFill::NearestDistance},
+        {"nearest_bearing", SensorFill::NearestBearing}, {"vision_left", SensorFill::VisionLeft},
+        {"vision_centre", SensorFill::VisionCentre}, {"vision_right", SensorFill::VisionRight},
+        {"feeler_left", SensorFill::FeelerLeft}, {"feeler_centre", SensorFill::FeelerCentre},
+        {"feeler_right", SensorFill::FeelerRight}, {"wall_distance", SensorFill::WallDistance},
+        {"light_state", SensorFill::LightState}, {"stop_line_distance", SensorFill::StopLineDistance},
+        {"hero_distance", SensorFill::HeroDistance}, {"hero_bearing", SensorFill::HeroBearing},
+        {"terrain_slope", SensorFill::TerrainSlope}, {"time", SensorFill::Time},
+        {"neighbour_distance", SensorFill::NeighbourDistance}, {"neighbour_bearing", SensorFill::NeighbourBearing},
+        {"neighbour_speed", SensorFill::NeighbourSpeed}, {"neighbour_heading", SensorFill::NeighbourHeading},
+        {"neighbour_tag", SensorFill::NeighbourTag},
+    };
+    static const std::map<std::string, SensorFill> attributes{
+        {"max_speed", SensorFill::AttrMaxSpeed}, {"radius", SensorFill::AttrRadius},
+        {"mass", SensorFill::AttrMass}, {"max_force", SensorFill::AttrMaxForce},
+        {"perception", SensorFill::AttrPerception}, {"speed_factor", SensorFill::AttrSpeedFactor},
+    };
+    const auto& table = use.sensor == "attribute" ? attributes : plain;
+    const auto it = table.find(use.sensor == "attribute" ? use.argument : use.sensor);
+    if (it == table.end())
+        return std::nullopt;
+    return it->second;
+}
+
+// The input node that reads `use`, for the message's position.
+const BrainNode* inputNodeFor(const BrainGraph& g, const BrainSensorUse& use)
+{
+    for (const BrainNode& n : g.nodes) {
+        if (n.type != "input")
+            continue;
+        std::string sensor, argument;
+        for (const BrainParam& p : n.params) {
+            if (p.key == "sensor")
+                sensor = p.text;
+            else if (p.key == "channel" || p.key == "name" || p.key == "tag")
+                argument = p.text;
+        }
+        if (sensor == use.sensor && argument == use.argument)
+            return &n;
+    }
+    return nullptr;
+}
+
+std::uint32_t tagIndex(std::vector<std::string>& tags, const std::string& name)
+{
+    const auto it = std::find(tags.begin(), tags.end(), name);
+    if (it != tags.end())
+        return std::uint32_t(it - tags.begin());
+    tags.push_back(name);
+    return std::uint32_t(tags.size() - 1);
+}
+
+}  // namespace
+
+std::string worldSensorProblem(const BrainSensorUse& use, const Scene& scene)
+{
+    if (use.sensor == "attribute" && !fillFor(use))
+        return "attribute '" + use.argument +
+               "' is not an agent attribute (max_speed, radius, mass, max_force, perception, speed_factor)";
+    if (!fillFor(use))
+        return "sensor '" + use.sensor + "' is not provided by the World yet (sound channels are not wired)";
+    if ((use.sensor == "hero_distance" || use.sensor == "hero_bearing") && !scene.heroes.empty())
+        return "sensor '" + use.sensor + "' is not provided by the World yet (heroes do not run in the World)";
+    return {};
+}
+
+std::vector<Diagnostic> checkSceneBrains(const Scene& scene)
+{
+    std::vector<Diagnostic> out;
+    for (std::size_t b = 0; b < scene.brains.size(); ++b) {
+        const BrainGraph& g = scene.brains[b];
+        const std::string key = "brains[" + std::to_string(b) + "]";
+        const BrainCompileResult r = compileBrain(g, scene.brains);
+        for (const BrainError& e : r.errors)
+            out.push_back({Severity::Error, e.file, e.line, e.column, key, e.message});
+        if (!r.ok())
+            continue;
+        for (const BrainSensorUse& use : r.program->sensors) {
+            const std::string why = worldSensorProblem(use, scene);
+            if (why.empty())
+                continue;
+            const BrainNode* n = inputNodeFor(g, use);
+            const BrainSourcePos pos = n ? g.source.node(n->id) : BrainSourcePos{};
+            const std::string who = n ? "node " + std::to_string(n->id) + " (input): " : std::string();
+            out.push_back({Severity::Error, g.source.file, pos.line, pos.column, key, who + why});
+        }
+    }
+    return out;
+}
+
+void World::buildBrains(const Scene& scene)
+{
+    bool any = false;
+    for (const AgentType& t : scene.agentTypes)
+        any = any || !t.brain.empty();
+    if (!any)
+        return;
+    m_brains = std::make_shared<detail::WorldBrains>();
+    detail::WorldBrains& wb = *m_brains;
+    wb.types.resize(scene.agentTypes.size());
+    wb.local.assign(m_pos.size(), -1);
+    wb.action.assign(m_pos.size(), -1);
+    std::map<std::string, std::int32_t> goalByName;
+    for (std::size_t g = 0; g < m_goals.size(); ++g)
+        goalByName.emplace(m_goals[g].name, std::int32_t(g));
+    for (std::size_t t = 0; t < scene.agentTypes.size(); ++t) {
+        const AgentType& type = scene.agentTypes[t];
+        const BrainGraph* graph = type.brain.empty() ? nullptr : scene.findBrain(type.brain);
+        if (!graph)
+            continue;
+        const BrainCompileResult r = compileBrain(*graph, scene.brains);
+        if (!r.ok()) {
+            for (const BrainError& e : r.errors)
+                wb.errors.push_back(e.format());
+            continue;
+        }
+        detail::TypeBrain& tb = wb.types[t];
+        bool usable = true;
+        for (const BrainSensorUse& use : r.program->sensors) {
+            const std::string why = worldSensorProblem(use, scene);
+            if (!why.empty()) {
+                wb.errors.push_back("brain '" + graph->name + "': " + why);
+                usable = false;
+            }
+            tb.fills.push_back(fillFor(use).value_or(SensorFill::Time));
+            tb.fillTag.push_back(use.sensor == "neighbour_tag" ? tagIndex(wb.tags, use.argument) : 0);
+        }
+        if (!usable) {
+            tb.fills.clear();
+            tb.fillTag.clear();
+            continue;
+        }
+        for (const BrainOutputSlot& o : r.program->outputs)
+            if (o.channel == "tag")
+                tagIndex(wb.tags, o.name);
+        tb.program = r.program;
+        tb.viewDeg = std::min(type.viewAngleDeg, 360.0f);
+        for (const std::string& name : r.program->goal.names) {
+            const auto it = goalByName.find(name);
+            tb.goalIndex.push_back(it == goalByName.end() ? -1 : it->second);
+        }
+        for (const std::string& name : r.program->action.names)
+            tb.actionClip.push_back(name == "idle" ? std::int8_t(Clip::Idle)
+                                    : name == "walk" ? std::int8_t(Clip::Walk)
+                                    : name == "run"  ? std::int8_t(Clip::Run)
+                                                     : std::int8_t(-1));
+    }
+    for (std::size_t i = 0; i < m_pos.size(); ++i) {
+        detail::TypeBrain& tb = wb.types[m_info[i].typeIndex];
+        if (!tb.program)
+            continue;
+        wb.local[i] = std::int32_t(tb.agents.size());
+        tb.agents.push_back(std::uint32_t(i));
+        tb.keys.push_back(rng(m_seed, m_info[i].id, 0, kBrainKey));
+    }
+    wb.tagValues.assign(wb.tags.size(), std::vector<float>(m_pos.size(), 0.0f));
+    for (detail::TypeBrain& tb : wb.types) {
+        if (!tb.program)
+            continue;
+        const std::size_t n = tb.agents.size();
+        tb.evaluator = std::make_unique<BrainEvaluator>(tb.program);
+        tb.evaluator->resize(n);
+        for (const BrainSensorUse& use : tb.program->sensors)
+            tb.columns.emplace_back(use.perNeighbour ? n * kBrainNeighbours : n, 0.0f);
+        tb.neighbourCount.assign(n, 0);
+    }
+}
+
+// Brain: sense from the previous state, evaluate each type's program for all its agents,
+// then take up the choices (goal, action) that are the agent's own state.
+void World::runBrains()
+{
+    detail::WorldBrains& wb = *m_brains;
+    for (detail::TypeBrain& tb : wb.types) {
+        if (!tb.program)
+            continue;
+        senseForBrain(tb);
+        BrainInputs in;
+        for (const std::vector<float>& c : tb.columns)
+            in.sensors.push_back(c.data());
+        for (std::size_t s = 0; s < tb.program->itemSets.size(); ++s)
+            in.itemCounts.push_back(tb.neighbourCount.data());
+        in.agentKey = tb.keys.data();
+        in.timeS = float(timeS());
+        in.dtS = m_dt;
+        std::string error;
+        if (!tb.evaluator->evaluate(in, &error)) {
+            wb.errors.push_back(error);
+            tb.program.reset();
+            continue;
+        }
+        const BrainOutputs out = tb.evaluator->outputs();
+        tb.speed = out.speed;
+        tb.turn = out.turn;
+        tb.action = out.action;
+        tb.goal = out.goal;
+        tb.tagOutputs.clear();
+        for (const auto& [name, column] : out.tags)
+            tb.tagOutputs.emplace_back(std::uint32_t(std::find(wb.tags.begin(), wb.tags.end(), name) - wb.tags.begin()),
+                                       column);
+        tb.weight.fill(nullptr);
+        for (const auto& [name, column] : out.weights)
+            for (std::size_t b = 0; b < kBehaviourCount; ++b)
+                if (name == behaviourName(Behaviour(b)))
+                    tb.weight[b] = column;
+        const std::size_t n = tb.agents.size();
+#pragma omp parallel for schedule(static, 1024) num_threads(m_threads)
+        for (std::size_t k = 0; k < n; ++k) {
+            const std::size_t i = tb.agents[k];
+            if (tb.action)
+                wb.action[i] = std::int16_t(tb.action[k]);
+            if (!tb.goal || m_stopped[i])
+                continue;
+            const auto choice = std::size_t(std::max(0.0f, tb.goal[k]));
+            const std::int32_t g = choice < tb.goalIndex.size() ? tb.goalIndex[choice] : -1;
+            if (g < 0 || g == m_goal[i])
+                continue;
+            // A new goal: the agent heads for its own spot in it, drawn as at the start.
+            m_goal[i] = g;
+            const Goal& goal = m_goals[std::size_t(g)];
+            const AgentId id = m_info[i].id;
+            const float r = 0.8f * goal.radiusM * std::sqrt(rngUniform(m_seed, id, std::uint64_t(g) + 1, kGoalSpotR));
+            const float a = 6.28318531f * rngUniform(m_seed, id, std::uint64_t(g) + 1, kGoalSpotA);
+            m_goalSpot[i] = goal.position + r * glm::vec2(std::cos(a), std::sin(a));
+        }
+    }
+    // Tags are published only once every type has sensed, so all read last step's values.
+    for (detail::TypeBrain& tb : wb.types) {
+        if (!tb.program)
+            continue;
+        for (const auto& [tag, column] : tb.tagOutputs) {
+            std::vector<float>& values = wb.tagValues[tag];
+            for (std::size_t k = 0; k < tb.agents.size(); ++k)
+                values[tb.agents[k]] = column[k];
+        }
+    }
+}
+
+std::size_t World::neighboursThisStep(std::size_t i, Neighbour* out)
+{
+    std::uint32_t* index = &m_nearIndex[i * kMaxNeighbours];
+    if (!m_brains || m_brains->local[i] < 0 || !m_brains->types[m_info[i].typeIndex].gathersNeighbours) {
+        const std::size_t count = gatherNeighbours(i, out, index);
+        m_nearCount[i] = std::uint8_t(count);
+        return count;
+    }
+    const std::size_t count = m_nearCount[i];
+    for (std::size_t k = 0; k < count; ++k) {
+        const std::uint32_t j = index[k];
+        out[k] = {m_pos[j], m_vel[j], m_fwd[j], m_radius[j], m_info[j].id};
+    }
+    return count;
+}
+
+float World::brainSpeedCap(std::size_t i) const
+{
+    if (!m_brains || m_brains->local[i] < 0)
+        return m_maxSpeed[i];
+    const detail::TypeBrain& tb = m_brains->types[m_info[i].typeIndex];
+    if (!tb.speed)
+        return m_maxSpeed[i];
+    return std::clamp(tb.speed[m_brains->local[i]], 0.0f, m_maxSpeed[i]);
+}
+
+// The brain's speed is a cap applied after steering, not a lower max speed for the
+// behaviours: arrival already slows by distance, and slowing twice (arrival's ramp on a
+// brain-lowered max speed) would make an agent creep toward its goal and never stop.
+void World::capToBrainSpeed(std::size_t i, const SteeringAgent& self, SteeringAgent& next) const
+{
+    if (!m_brains || m_brains->local[i] < 0)
+        return;
+    const float cap = brainSpeedCap(i), v = glm::length(next.velocity);
+    if (v <= cap)
+        return;
+    next.velocity = v > 0.0f ? next.velocity * (cap / v) : next.velocity;
+    next.position = self.position + next.velocity * m_dt;
+}
+
+float World::brainWeight(std::size_t i, Behaviour b) const
+{
+    if (!m_brains || m_brains->local[i] < 0)
+        return 1.0f;
+    const float* w = m_brains->types[m_info[i].typeIndex].weight[std::size_t(b)];
+    return w ? std::max(0.0f, w[m_brains->local[i]]) : 1.0f;
+}
+
+// Turn (degrees/s, + = left) as a sideways force: the centripetal acceleration v·ω of a
+// turn at that rate, toward the agent's left.
+glm::vec3 World::brainTurnForce(std::size_t i, const SteeringAgent& self) const
+{
+    if (!m_brains || m_brains->local[i] < 0)
+        return glm::vec3(0.0f);
+    const detail::TypeBrain& tb = m_brains->types[m_info[i].typeIndex];
+    if (!tb.turn)
+        return glm::vec3(0.0f);
+    const float omega = glm::radians(tb.turn[m_brains->local[i]]);
+    const glm::vec3 left(self.forward.z, 0.0f, -self.forward.x);
+    return left * (omega * std::max(self.speed(), 0.1f) * self.mass);
+}
+
+Clip World::brainClip(std::size_t i, Clip bySpeed) const
+{
+    if (!m_brains || m_brains->action[i] < 0)
+        return bySpeed;
+    const detail::TypeBrain& tb = m_brains->types[m_info[i].typeIndex];
+    const auto a = std::size_t(m_brains->action[i]);
+    return a < tb.actionClip.size() && tb.actionClip[a] >= 0 ? Clip(tb.actionClip[a]) : bySpeed;
+}
+
+int World::brainAction(std::size_t i) const
+{
+    return m_brains ? m_brains->action[i] : -1;
+}
+
+std::string World::brainActionName(std::size_t i) const
+{
+    if (!m_brains || m_brains->action[i] < 0 || !m_brains->types[m_info[i].typeIndex].program)
+        return {};
+    const auto& names = m_brains->types[m_info[i].typeIndex].program->action.names;
+    const auto a = std::size_t(m_brains->action[i]);
+    return a < names.size() ? names[a] : std::string();
+}
+
+const std::vector<std::string>& World::brainErrors() const
+{
+    static const std::vector<std::string> none;
+    return m_brains ? m_brains->errors : none;
+}
+
+const BrainEvaluator* World::brainEvaluator(std::size_t typeIndex) const
+{
+    if (!m_brains || typeIndex >= m_brains->types.size())
+        return nullptr;
+    return m_brains->types[typeIndex].evaluator.get();
+}
+
+void World::pickBrainAgent(std::ptrdiff_t i)
+{
+    if (!m_brains)
+        return;
+    for (detail::TypeBrain& tb : m_brains->types)
+        if (tb.evaluator)
+            tb.evaluator->setPickedAgent(-1);
+    if (i < 0 || std::size_t(i) >= m_pos.size() || m_brains->local[std::size_t(i)] < 0)
+        return;
+    m_brains->types[m_info[std::size_t(i)].typeIndex].evaluator->setPickedAgent(m_brains->local[std::size_t(i)]);
+}
+
+}  // namespace throng::sim

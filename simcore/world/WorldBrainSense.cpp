@@ -1,0 +1,254 @@
+// The sense phase for brains: fills, for every agent of a brain-driven type, the sensor
+// columns its program lists, from the previous state only (positions, velocities, the
+// neighbour grid, walls, obstacles, crosswalk lights). Agents write only their own row.
+#include "simcore/world/World.h"
+
+#include "simcore/world/detail/StepGeometry.h"
+#include "simcore/world/detail/WorldBrains.h"
+
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace throng::sim {
+
+using namespace detail;
+
+namespace {
+
+constexpr float kNoneM = 1e6f;        // distance reported when there is nothing (no goal, line, hero)
+constexpr float kWallReachM = 10.0f;  // wall_distance looks this far at most
+constexpr float kStopLineSideM = 1.0f;  // a crosswalk's stop line reaches this far beyond its width
+
+// Angle of d from the heading f (both on the ground), degrees, + = left.
+float bearingDeg(glm::vec2 f, glm::vec2 d)
+{
+    const glm::vec2 left(f.y, -f.x);
+    return glm::degrees(std::atan2(glm::dot(d, left), glm::dot(d, f)));
+}
+
+// Distance along a ray (unit dir) to segment ab, or `length` when it misses.
+float rayToSegment(glm::vec2 o, glm::vec2 dir, float length, glm::vec2 a, glm::vec2 b)
+{
+    const glm::vec2 e = b - a, ao = a - o;
+    const float denom = cross(dir, e);
+    if (std::fabs(denom) < 1e-9f)
+        return length;
+    const float t = cross(ao, e) / denom, u = cross(ao, dir) / denom;
+    return t >= 0.0f && t < length && u >= 0.0f && u <= 1.0f ? t : length;
+}
+
+float rayToCircle(glm::vec2 o, glm::vec2 dir, float length, glm::vec2 c, float r)
+{
+    const glm::vec2 oc = o - c;
+    const float b = glm::dot(oc, dir), q = glm::dot(oc, oc) - r * r;
+    if (q <= 0.0f)
+        return 0.0f;
+    const float disc = b * b - q;
+    if (disc < 0.0f)
+        return length;
+    const float t = -b - std::sqrt(disc);
+    return t >= 0.0f && t < length ? t : length;
+}
+
+glm::vec2 rotated(glm::vec2 v, float rad)
+{
+    const float c = std::cos(rad), s = std::sin(rad);
+    return {v.x * c + v.y * s, -v.x * s + v.y * c};  // + = toward the left, (f.y, -f.x)
+}
+
+}  // namespace
+
+void World::senseForBrain(TypeBrain& tb)
+{
+    bool needNeighbours = false, needFeelers = false;
+    for (SensorFill f : tb.fills) {
+        needNeighbours = needNeighbours || (f >= SensorFill::NeighbourCount && f <= SensorFill::VisionRight) ||
+                         f >= SensorFill::NeighbourDistance;
+        needFeelers = needFeelers || (f >= SensorFill::FeelerLeft && f <= SensorFill::FeelerRight);
+    }
+    tb.gathersNeighbours = needNeighbours;
+    const std::size_t n = tb.agents.size(), sensors = tb.fills.size();
+    const float time = float(timeS());
+    const float third = tb.viewDeg / 6.0f;
+#pragma omp parallel for schedule(static, 256) num_threads(m_threads)
+    for (std::size_t k = 0; k < n; ++k) {
+        const std::size_t i = tb.agents[k];
+        const TypeParams& type = m_types[m_info[i].typeIndex];
+        const TypeSteering& steering = m_steering[m_info[i].typeIndex];
+        const glm::vec2 p = xz(m_pos[i]);
+        glm::vec2 f = xz(m_fwd[i]);
+        f = glm::dot(f, f) > 1e-12f ? glm::normalize(f) : glm::vec2(1.0f, 0.0f);
+        const float speed = glm::length(m_vel[i]);
+        // The neighbours go into the agent's own m_nearIndex row, where the steer phase
+        // of this step finds them instead of querying the grid a second time.
+        std::array<Neighbour, kMaxNeighbours> near;
+        const std::size_t count = needNeighbours ? gatherNeighbours(i, near.data(), &m_nearIndex[i * kMaxNeighbours]) : 0;
+        if (needNeighbours)
+            m_nearCount[i] = std::uint8_t(count);
+        tb.neighbourCount[k] = std::uint8_t(std::min<std::size_t>(count, kBrainNeighbours));
+        std::array<float, 3> feeler{};  // left, centre, right
+        if (needFeelers) {
+            const float length = steering.obstacles.minLengthM + steering.obstacles.lookaheadS * speed;
+            const float angles[3] = {steering.obstacles.whiskerAngleRad, 0.0f, -steering.obstacles.whiskerAngleRad};
+            for (int s = 0; s < 3; ++s) {
+                const glm::vec2 dir = rotated(f, angles[s]);
+                float t = length;
+                m_walls.forEachNear(p + dir * (0.5f * length), 0.5f * length, [&](std::uint32_t w) {
+                    const Segment& seg = m_walls.segment(w);
+                    t = std::min(t, rayToSegment(p, dir, length, seg.a, seg.b));
+                });
+                m_obstacleGrid.forEachNear(p + dir * (0.5f * length), 0.5f * length, [&](std::uint32_t o) {
+                    if (o < m_circles.size())
+                        t = std::min(t, rayToCircle(p, dir, length, xz(m_circles[o].centre), m_circles[o].radius));
+                });
+                feeler[std::size_t(s)] = t;
+            }
+        }
+        for (std::size_t s = 0; s < sensors; ++s) {
+            float* column = tb.columns[s].data();
+            float& v = column[tb.fills[s] >= SensorFill::NeighbourDistance ? k * kBrainNeighbours : k];
+            switch (tb.fills[s]) {
+            case SensorFill::Speed: v = speed; break;
+            case SensorFill::GoalBearing:
+            case SensorFill::GoalDistance: {
+                bool has = false;
+                glm::vec2 target(0.0f);
+                if (m_path[i] >= 0 && !m_paths[std::size_t(m_path[i])].closed) {
+                    has = true;
+                    target = m_paths[std::size_t(m_path[i])].points.back();
+                } else if (m_path[i] < 0 && m_goal[i] >= 0) {
+                    has = true;
+                    target = m_goalSpot[i];
+                }
+                if (tb.fills[s] == SensorFill::GoalDistance)
+                    v = has ? glm::distance(p, target) : kNoneM;
+                else
+                    v = has ? bearingDeg(f, target - p) : 0.0f;
+                break;
+            }
+            case SensorFill::PathOffset: {
+                v = 0.0f;
+                if (m_path[i] < 0)
+                    break;
+                const std::vector<glm::vec2>& pts = m_paths[std::size_t(m_path[i])].points;
+                float best = INFINITY;
+                for (std::size_t q = 0; q + 1 < pts.size(); ++q) {
+                    const glm::vec2 c = closestOnSegment(p, pts[q], pts[q + 1]);
+                    const float d = glm::distance(p, c);
+                    const glm::vec2 along = pts[q + 1] - pts[q];
+                    if (d < best && glm::dot(along, along) > 0.0f) {
+                        best = d;
+                        const glm::vec2 dir = glm::normalize(along);
+                        v = glm::dot(p - c, glm::vec2(dir.y, -dir.x));
+                    }
+                }
+                break;
+            }
+            case SensorFill::FlowBearing: {
+                const glm::vec2 d = xz(flowDirection(m_pos[i]));
+                v = glm::dot(d, d) > 0.0f ? bearingDeg(f, d) : 0.0f;
+                break;
+            }
+            case SensorFill::NeighbourCount: v = float(count); break;
+            case SensorFill::NeighbourDensity:
+                v = float(count) / (3.14159265f * type.perception * type.perception * tb.viewDeg / 360.0f);
+                break;
+            case SensorFill::NearestDistance: v = count ? glm::distance(p, xz(near[0].position)) : type.perception; break;
+            case SensorFill::NearestBearing: v = count ? bearingDeg(f, xz(near[0].position) - p) : 0.0f; break;
+            case SensorFill::VisionLeft:
+            case SensorFill::VisionCentre:
+            case SensorFill::VisionRight: {
+                int seen[3] = {0, 0, 0};
+                for (std::size_t j = 0; j < count; ++j) {
+                    const float b = bearingDeg(f, xz(near[j].position) - p);
+                    ++seen[b > third ? 0 : (b < -third ? 2 : 1)];
+                }
+                v = float(seen[int(tb.fills[s]) - int(SensorFill::VisionLeft)]);
+                break;
+            }
+            case SensorFill::FeelerLeft: v = feeler[0]; break;
+            case SensorFill::FeelerCentre: v = feeler[1]; break;
+            case SensorFill::FeelerRight: v = feeler[2]; break;
+            case SensorFill::WallDistance: {
+                v = kWallReachM;
+                m_walls.forEachNear(p, kWallReachM, [&](std::uint32_t w) {
+                    const Segment& seg = m_walls.segment(w);
+                    v = std::min(v, glm::distance(p, closestOnSegment(p, seg.a, seg.b)));
+                });
+                break;
+            }
+            case SensorFill::LightState:
+            case SensorFill::StopLineDistance: {
+                // The stop line ahead: an end of a lit crosswalk this agent walks toward
+                // and has not passed; its light, and the gap from the body to the line.
+                float gap = kNoneM, light = 0.0f;
+                for (const CrosswalkBox& c : m_crosswalks) {
+                    if (c.light < 0)
+                        continue;
+                    const glm::vec2 ab = c.b - c.a;
+                    const float len = glm::length(ab);
+                    if (len <= 0.0f)
+                        continue;
+                    const glm::vec2 dir = ab / len;
+                    const float along = glm::dot(p - c.a, dir), across = std::fabs(cross(dir, p - c.a));
+                    if (across > c.halfWidth + kStopLineSideM)
+                        continue;
+                    float d = kNoneM;
+                    if (along < 0.0f && glm::dot(f, dir) > 0.0f)
+                        d = -along - m_radius[i];
+                    else if (along > len && glm::dot(f, dir) < 0.0f)
+                        d = along - len - m_radius[i];
+                    if (d < gap) {
+                        gap = d;
+                        light = 0.5f * float(lightState(std::size_t(c.light)));
+                    }
+                }
+                v = tb.fills[s] == SensorFill::LightState ? light : gap;
+                break;
+            }
+            case SensorFill::HeroDistance: v = kNoneM; break;  // only scenes without heroes get here
+            case SensorFill::HeroBearing: v = 0.0f; break;
+            case SensorFill::TerrainSlope: {
+                const float h0 = groundHeight(p.x, p.y), h1 = groundHeight(p.x + 0.5f * f.x, p.y + 0.5f * f.y);
+                v = glm::degrees(std::atan((h1 - h0) / 0.5f));
+                break;
+            }
+            case SensorFill::Time: v = time; break;
+            case SensorFill::AttrMaxSpeed: v = m_maxSpeed[i]; break;
+            case SensorFill::AttrRadius: v = m_radius[i]; break;
+            case SensorFill::AttrMass: v = type.mass; break;
+            case SensorFill::AttrMaxForce: v = type.maxForce; break;
+            case SensorFill::AttrPerception: v = type.perception; break;
+            case SensorFill::AttrSpeedFactor: v = type.maxSpeed > 0.0f ? m_maxSpeed[i] / type.maxSpeed : 1.0f; break;
+            case SensorFill::NeighbourDistance:
+            case SensorFill::NeighbourBearing:
+            case SensorFill::NeighbourSpeed:
+            case SensorFill::NeighbourHeading:
+            case SensorFill::NeighbourTag:
+                for (std::size_t j = 0; j < kBrainNeighbours; ++j) {
+                    float x = 0.0f;
+                    if (j < count) {
+                        const glm::vec2 q = xz(near[j].position);
+                        switch (tb.fills[s]) {
+                        case SensorFill::NeighbourDistance: x = glm::distance(p, q); break;
+                        case SensorFill::NeighbourBearing: x = bearingDeg(f, q - p); break;
+                        case SensorFill::NeighbourSpeed: x = glm::length(near[j].velocity); break;
+                        case SensorFill::NeighbourTag:
+                            x = m_brains->tagValues[tb.fillTag[s]][m_nearIndex[i * kMaxNeighbours + j]];
+                            break;
+                        default: x = bearingDeg(f, xz(near[j].forward)); break;
+                        }
+                    }
+                    (&v)[j] = x;
+                }
+                break;
+            }
+        }
+    }
+}
+
+}  // namespace throng::sim

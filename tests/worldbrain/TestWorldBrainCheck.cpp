@@ -1,0 +1,150 @@
+// The scene check compiles every brain with the scene's brains as macros and reports
+// compiler errors and sensors the World cannot fill, as file:line:col with the node id;
+// a World never runs such a brain silently.
+#include "TestRegistry.h"
+
+#include "simcore/io/SceneIO.h"
+#include "simcore/world/World.h"
+#include "simcore/world/WorldBrain.h"
+
+#include <glm/geometric.hpp>
+
+#include <QTest>
+
+#include <algorithm>
+
+using namespace throng::sim;
+
+namespace {
+
+Scene load(const std::string& yaml)
+{
+    const LoadResult r = parseScene(yaml, "scene.yaml", THRONG_SOURCE_DIR "/resources/brains");
+    if (!r.ok())
+        qFatal("%s", r.diagnostics[0].format().c_str());
+    return r.scene;
+}
+
+// Line 7 holds node 2, whose input 'x' nothing feeds; line 9 holds node 3, a sensor the
+// World does not provide yet (sound channels).
+const char* kBroken = R"(throng: 1
+agent_types: [{name: w, brain: broken}]
+brains:
+  - name: broken
+    nodes:
+      - {id: 1, type: input, params: {sensor: goal_distance}}
+      - {id: 2, type: fuzz.triangle, params: {points: [0, 1, 2]}}
+      - {id: 4, type: output, params: {channel: speed}}
+      - {id: 3, type: input, params: {sensor: sound_bearing, channel: bell}}
+    links:
+      - {from: [2, 0], to: [4, 0]}
+  - name: deaf
+    nodes:
+      - {id: 1, type: input, params: {sensor: sound_bearing, channel: bell}}
+      - {id: 2, type: output, params: {channel: turn}}
+    links:
+      - {from: [1, 0], to: [2, 0]}
+agents: [{type: w, position: [0, 0]}]
+)";
+
+}  // namespace
+
+class TestWorldBrainCheck : public QObject {
+    Q_OBJECT
+private slots:
+    void shippedBrainsAllRunInTheWorld()
+    {
+        const Scene s = load("throng: 1\nbrains:\n  - {name: pedestrian, file: pedestrian.brain.yaml}\n"
+                             "  - {name: boid, file: boid.brain.yaml}\n  - {name: car, file: car.brain.yaml}\n");
+        for (const Diagnostic& d : checkSceneBrains(s))
+            QFAIL(d.format().c_str());
+    }
+
+    void compilerErrorNamesFileLineColumnAndNode()
+    {
+        const std::vector<Diagnostic> d = checkSceneBrains(load(kBroken));
+        QVERIFY(!d.empty());
+        QCOMPARE(QString::fromStdString(d[0].file), QString("scene.yaml"));
+        QCOMPARE(d[0].line, 7);
+        QVERIFY2(d[0].column > 0, d[0].format().c_str());
+        QCOMPARE(QString::fromStdString(d[0].key), QString("brains[0]"));
+        QVERIFY2(d[0].message.find("node 2 (fuzz.triangle)") != std::string::npos, d[0].format().c_str());
+        QVERIFY2(d[0].format().starts_with("scene.yaml:7:"), d[0].format().c_str());
+    }
+
+    void sensorTheWorldLacksIsAnErrorAtItsNode()
+    {
+        const std::vector<Diagnostic> d = checkSceneBrains(load(kBroken));
+        const Diagnostic* deaf = nullptr;
+        for (const Diagnostic& x : d)
+            if (x.key == "brains[1]")
+                deaf = &x;
+        QVERIFY(deaf);
+        QCOMPARE(deaf->line, 14);
+        QVERIFY2(deaf->message.find("node 1 (input)") != std::string::npos, deaf->format().c_str());
+        QVERIFY2(deaf->message.find("sound_bearing") != std::string::npos, deaf->format().c_str());
+        QVERIFY2(deaf->message.find("not provided by the World") != std::string::npos, deaf->format().c_str());
+    }
+
+    void worldRefusesABrainItCannotRun()
+    {
+        Scene s = load(kBroken);
+        s.agentTypes[0].brain = "deaf";
+        const World world(s);
+        QCOMPARE(world.brainErrors().size(), std::size_t(1));
+        QVERIFY(world.brainErrors()[0].find("sound_bearing") != std::string::npos);
+        QVERIFY(world.brainEvaluator(0) == nullptr);
+    }
+
+    void macroLibraryIsTheScenesBrains()
+    {
+        // "halve" is used as a macro by "walker": it compiles against the scene's brains,
+        // and the walker it drives keeps to half its max speed.
+        const char* yaml = R"(throng: 1
+agent_types: [{name: w, max_speed: 1.6, brain: walker, variation: {speed: [1, 1]}}]
+goals: [{name: g, position: [40, 0], radius: 1}]
+agents: [{type: w, position: [0, 0], goal: g}]
+brains:
+  - name: halve
+    nodes:
+      - {id: 1, type: macro.in, params: {port: 0}}
+      - {id: 2, type: math.multiply}
+      - {id: 3, type: input.constant, params: {value: 0.5}}
+      - {id: 4, type: macro.out, params: {port: 0}}
+    links:
+      - {from: [1, 0], to: [2, 0]}
+      - {from: [3, 0], to: [2, 1]}
+      - {from: [2, 0], to: [4, 0]}
+  - name: walker
+    nodes:
+      - {id: 1, type: input, params: {sensor: attribute, name: max_speed}}
+      - {id: 2, type: macro, params: {brain: halve}}
+      - {id: 3, type: output, params: {channel: speed}}
+    links:
+      - {from: [1, 0], to: [2, 0]}
+      - {from: [2, 0], to: [3, 0]}
+)";
+        const Scene s = load(yaml);
+        for (const Diagnostic& d : checkSceneBrains(s))
+            QFAIL(d.format().c_str());
+        World world(s);
+        QVERIFY(world.brainErrors().empty());
+        float fastest = 0.0f;
+        for (int k = 0; k < 24 * 8; ++k) {
+            world.step();
+            fastest = std::max(fastest, glm::length(world.velocities()[0]));
+        }
+        QVERIFY2(fastest > 0.75f && fastest <= 0.8f + 1e-4f, qPrintable(QString::number(fastest)));
+
+        Scene missing = s;
+        missing.brains[1].nodes[1].params[0].text = "nobody";
+        const std::vector<Diagnostic> d = checkSceneBrains(missing);
+        QVERIFY(!d.empty());
+        QCOMPARE(QString::fromStdString(d[0].key), QString("brains[1]"));
+        QVERIFY2(d[0].message.find("node 2 (macro)") != std::string::npos, d[0].format().c_str());
+        QVERIFY2(d[0].message.find("nobody") != std::string::npos, d[0].format().c_str());
+    }
+};
+
+THRONG_REGISTER_TEST(TestWorldBrainCheck)
+#include "TestWorldBrainCheck.moc"
