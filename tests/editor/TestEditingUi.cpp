@@ -38,7 +38,7 @@ QString agentLabel(MainWindow& window)
 }
 
 // The crossroads scene shows 200 agents from its spawn groups; placed agents add to them.
-constexpr std::size_t kCrossroadsAgents = 200;
+constexpr std::size_t kCrossroadsAgents = 217;  // the demo: 200 walkers, 16 cars, 1 hero (the status bar counts all)
 
 }  // namespace
 
