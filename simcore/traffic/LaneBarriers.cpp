@@ -1,6 +1,7 @@
 // The kerbs of the lane network as wall segments (LaneNetwork::pedestrianBarriers):
 // carriageway edges with openings at crosswalks, and crosswalk sides over the road.
 #include "simcore/traffic/LaneNetwork.h"
+#include "simcore/traffic/detail/StripClip.h"
 
 #include <glm/geometric.hpp>
 
@@ -21,24 +22,11 @@ struct Box {
 };
 using Interval = std::pair<float, float>;
 
-// The part of p0 -> p1 (parameter in [0, 1]) inside the box, by Liang-Barsky clipping.
+// The part of p0 -> p1 (parameter in [0, 1]) inside the box.
 bool clip(glm::vec2 p0, glm::vec2 p1, const Box& box, Interval& out)
 {
-    const glm::vec2 side = leftOf(box.u), d = p1 - p0, rel = p0 - box.o;
-    const float pu = glm::dot(rel, box.u), du = glm::dot(d, box.u);
-    const float pv = glm::dot(rel, side), dv = glm::dot(d, side);
     float t0 = 0.0f, t1 = 1.0f;
-    auto keep = [&](float q, float r) {  // keep where q * t <= r
-        if (q == 0.0f)
-            return r >= 0.0f;
-        const float t = r / q;
-        if (q < 0.0f)
-            t0 = std::max(t0, t);
-        else
-            t1 = std::min(t1, t);
-        return t0 <= t1;
-    };
-    if (!keep(-du, pu) || !keep(du, box.len - pu) || !keep(-dv, pv + box.halfWidth) || !keep(dv, box.halfWidth - pv))
+    if (!detail::clipToStrip(p0, p1, box.o, box.u, box.len, box.halfWidth, t0, t1))
         return false;
     out = {t0, t1};
     return t1 > t0;

@@ -1,4 +1,5 @@
 #include "simcore/traffic/LaneNetwork.h"
+#include "simcore/traffic/detail/StripClip.h"
 
 #include <glm/geometric.hpp>
 
@@ -184,28 +185,13 @@ bool LaneNetwork::forbiddenForPedestrian(glm::vec2 p, float radiusM) const
 void LaneNetwork::addCrosswalkStretches(int c)
 {
     const CrosswalkStrip& strip = m_crosswalks[std::size_t(c)];
-    const glm::vec2 side = leftOf(strip.dir);
     for (std::size_t l = 0; l < m_lanes.size(); ++l) {
         LaneGeometry& g = m_lanes[l];
         std::vector<LaneStretch> found;
         for (std::size_t k = 0; k + 1 < g.points.size(); ++k) {
-            // Liang-Barsky clip of the segment against the strip in the strip's frame.
-            const glm::vec2 p0 = g.points[k] - strip.a, d = g.points[k + 1] - g.points[k];
-            const float pu = glm::dot(p0, strip.dir), du = glm::dot(d, strip.dir);
-            const float pv = glm::dot(p0, side), dv = glm::dot(d, side);
             float t0 = 0.0f, t1 = 1.0f;
-            auto clip = [&](float q, float r) {  // keep where q * t <= r
-                if (q == 0.0f)
-                    return r >= 0.0f;
-                const float t = r / q;
-                if (q < 0.0f)
-                    t0 = std::max(t0, t);
-                else
-                    t1 = std::min(t1, t);
-                return t0 <= t1;
-            };
-            if (!clip(-du, pu) || !clip(du, strip.lengthM - pu) || !clip(-dv, pv + strip.halfWidthM) ||
-                !clip(dv, strip.halfWidthM - pv))
+            if (!detail::clipToStrip(g.points[k], g.points[k + 1], strip.a, strip.dir, strip.lengthM, strip.halfWidthM,
+                                     t0, t1))
                 continue;
             const float len = g.cumulative[k + 1] - g.cumulative[k];
             const float s0 = g.cumulative[k] + len * t0, s1 = g.cumulative[k] + len * t1;
