@@ -48,7 +48,14 @@ void flyingFrame(SteeringAgent& s, glm::vec3 acceleration, float dt, const Vehic
     const glm::vec3 lateral = acceleration - s.forward * glm::dot(acceleration, s.forward);
     const glm::vec3 bankedUp = normalizeOr(kWorldUp + lateral * nonNegative(params.bankingGainS2PerM), kWorldUp);
     const float response = std::max(nonNegative(params.bankingResponseS), kMinResponseTimeS);
-    const float blend = 1.0f - std::exp(-dt / response);
+    // The same for every agent of a type each step: remembered, not recomputed.
+    thread_local float lastDt = 0.0f, lastResponse = 0.0f, lastBlend = 0.0f;
+    if (dt != lastDt || response != lastResponse) {
+        lastDt = dt;
+        lastResponse = response;
+        lastBlend = 1.0f - std::exp(-dt / response);
+    }
+    const float blend = lastBlend;
     const glm::vec3 up = normalizeOr(s.up + (bankedUp - s.up) * blend, kWorldUp);
     // Orthonormalise; a forward parallel to up keeps the previous side.
     s.side = normalizeOr(glm::cross(s.forward, up), s.side);

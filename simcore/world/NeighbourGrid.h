@@ -65,6 +65,68 @@ public:
                     f(m_sorted[k], m_sortedPos[k]);
             }
     }
+    // For k-nearest searches: like forEachNear (or forEachNear3D once sorted by height),
+    // but rows are visited nearest first, and before each row (and each cell in 3D)
+    // boundSq() gives the squared distance beyond which the caller no longer cares (it
+    // shrinks as the caller's k best fill up), so cells wholly beyond it are skipped.
+    // Calls f(j, position of j); which agents are offered beyond the bound is
+    // unspecified, so the caller must rank them itself (by distance, ties by id).
+    template <typename B, typename F>
+    void forEachNearest(glm::vec3 p, float r, B&& boundSq, F&& f) const
+    {
+        if (!(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && std::isfinite(r))) {
+            if (m_byHeight)
+                forEachNear3D(p, r, f);
+            else
+                forEachNear(glm::vec2(p.x, p.z), r, f);
+            return;
+        }
+        const int zc = cellZ(p.z), z0 = cellZ(p.z - r), z1 = cellZ(p.z + r);
+        const float r2 = r * r;
+        for (int step = 0;; ++step) {
+            bool any = false;
+            for (int side = 0; side < (step == 0 ? 1 : 2); ++side) {
+                const int z = side == 0 ? zc - step : zc + step;
+                if (z < z0 || z > z1)
+                    continue;
+                // Lower bound on the distance across z to any agent in this row (agents
+                // clamped into a border row lie beyond it, so the bound still holds).
+                const float rowLo = m_min.y + float(z) * m_cell;
+                const float dz = z == zc ? 0.0f : std::max(0.0f, z < zc ? p.z - (rowLo + m_cell) : rowLo - p.z);
+                const float left = std::min(r2, boundSq()) - dz * dz;
+                if (left < 0.0f)
+                    continue;
+                any = true;
+                const float reach = std::sqrt(left) * 1.0001f + 1e-4f;  // never skip on rounding
+                const int x0 = cellX(p.x - reach), x1 = cellX(p.x + reach);
+                const std::size_t row = std::size_t(z) * std::size_t(m_cols);
+                if (!m_byHeight) {
+                    const std::uint32_t end = m_start[row + std::size_t(x1) + 1];
+                    for (std::uint32_t k = m_start[row + std::size_t(x0)]; k < end; ++k)
+                        f(m_sorted[k], m_sortedPos[k]);
+                    continue;
+                }
+                const float yLo = p.y - reach, yHi = p.y + reach;
+                for (int x = x0; x <= x1; ++x) {
+                    const std::size_t c = row + std::size_t(x);
+                    std::uint32_t lo = m_start[c], hi = m_start[c + 1];
+                    const std::uint32_t end = hi;
+                    while (hi - lo > 8) {  // towards the first agent at or above yLo
+                        const std::uint32_t mid = lo + (hi - lo) / 2;
+                        if (m_sortedPos[mid].y < yLo)
+                            lo = mid + 1;
+                        else
+                            hi = mid;
+                    }
+                    for (std::uint32_t k = lo; k < end && m_sortedPos[k].y <= yHi; ++k)
+                        if (m_sortedPos[k].y >= yLo)
+                            f(m_sorted[k], m_sortedPos[k]);
+                }
+            }
+            if (!any && step > 0)
+                return;
+        }
+    }
     bool sortedByHeight() const { return m_byHeight; }
     float cellM() const { return m_cell; }
     std::size_t memoryBytes() const
@@ -75,15 +137,13 @@ public:
 
 private:
     // NaN lands in cell 0; positions outside the bounds clamp into the border cells.
-    int cellX(float x) const
+    // (Clamped to [-1, n] first, so truncating c + 1 is the floor: std::floor is a call
+    // on baseline x86-64.)
+    int cellX(float x) const { return cellOf((x - m_min.x) * m_inv, m_cols); }
+    int cellZ(float z) const { return cellOf((z - m_min.y) * m_inv, m_rows); }
+    static int cellOf(float c, int n)
     {
-        const float c = std::floor((x - m_min.x) * m_inv);
-        return c != c ? 0 : std::clamp(int(std::clamp(c, -1.0f, float(m_cols))), 0, m_cols - 1);
-    }
-    int cellZ(float z) const
-    {
-        const float c = std::floor((z - m_min.y) * m_inv);
-        return c != c ? 0 : std::clamp(int(std::clamp(c, -1.0f, float(m_rows))), 0, m_rows - 1);
+        return c != c ? 0 : std::clamp(int(std::clamp(c, -1.0f, float(n)) + 1.0f) - 1, 0, n - 1);
     }
 
     glm::vec2 m_min{0.0f};

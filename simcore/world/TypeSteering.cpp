@@ -227,6 +227,10 @@ TypeSteering compileTypeSteering(const AgentType& type)
         for (const BrainParam& p : bw.params)
             apply(t, b, p);
     }
+    for (std::size_t n = 0; n < t.keepRightTurn.size(); ++n) {
+        const float angle = t.reciprocal.keepRightRad * float(n + 1) / 3.0f;
+        t.keepRightTurn[n] = {std::cos(angle), std::sin(angle)};
+    }
     return t;
 }
 

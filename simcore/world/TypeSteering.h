@@ -64,6 +64,9 @@ struct TypeSteering {
     LeaderFollowParams leader;
     UnalignedAvoidanceParams unaligned;
     ReciprocalAvoidanceParams reciprocal;
+    // cos and sin of the keep-right turn for 1, 2 and 3 or more oncoming walkers
+    // (computed once here, not per agent per step).
+    std::array<glm::vec2, 3> keepRightTurn{};
 
     float w(Behaviour b) const { return weight[std::size_t(b)]; }
     bool on(Behaviour b) const { return weight[std::size_t(b)] > 0.0f; }

@@ -50,8 +50,13 @@ World::World(const Scene& scene, const WorldOptions& options)
     m_dt = 1.0f / scene.settings.fps;
     m_threads = options.threads > 0 ? options.threads : omp_get_max_threads();
 
-    // Cells of half the perception radius: a query then scans about 1.6 times the
-    // perception disk's area, against 2.9 times with cells as large as the radius.
+    // Cells of half the perception radius on the ground: a nearest-first query then
+    // stops a little beyond the k-th neighbour. Fliers get cells as large as the radius,
+    // as each cell costs a search by height (fewer instructions per step, measured).
+    bool fliers = false;
+    for (const AgentType& t : scene.agentTypes)
+        fliers = fliers || t.kind == AgentKind::Flier;
+    const float cellPerRadius = fliers ? 1.0f : 0.5f;
     float cell = 0.0f;
     for (const AgentType& t : scene.agentTypes) {
         const float halfView = glm::radians(std::min(t.viewAngleDeg, 360.0f)) * 0.5f;
@@ -61,7 +66,7 @@ World::World(const Scene& scene, const WorldOptions& options)
         const bool allRound = t.viewAngleDeg >= 360.0f || m_steering.back().on(Behaviour::ReciprocalAvoidance);
         m_types.push_back({t.radiusM, t.maxSpeed, t.maxForce, t.mass, t.perceptionM,
                            allRound ? -1.0f : std::cos(halfView), t.kind});
-        cell = std::max(cell, 0.5f * t.perceptionM);
+        cell = std::max(cell, cellPerRadius * t.perceptionM);
     }
     cell = std::clamp(cell, 0.5f, 4.0f);
     buildTraffic(scene);

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 
 namespace throng::sim {
@@ -87,46 +88,50 @@ std::size_t World::gatherNeighbours(std::size_t i, Neighbour* out, std::uint32_t
     const TypeParams& t = m_types[m_info[i].typeIndex];
     const glm::vec3 p = m_pos[i], fwd = m_fwd[i];
     const float r2 = t.perception * t.perception;
-    struct Candidate {
-        float d2;
-        AgentId id;
-        std::uint32_t index;
-        bool operator<(const Candidate& o) const { return d2 != o.d2 ? d2 < o.d2 : id < o.id; }
-    };
-    std::array<Candidate, kMaxNeighbours> best;
+    // The k nearest, ties by index, kept sorted by insertion; once k are known the search
+    // radius shrinks to the k-th distance, so farther candidates and cells are skipped.
+    // A candidate is one 64-bit key: the bits of d2 (>= 0, so they order like the
+    // floats) above the index, so a comparison is one integer compare.
+    constexpr std::size_t k = kMaxNeighbours;
+    std::array<std::uint64_t, k> best;
     std::size_t count = 0;
+    float bound = r2;
+    const float c = t.cosHalfView;
     auto consider = [&](std::uint32_t j, const glm::vec3& q) {
-        if (j == i)
-            return;
         const glm::vec3 d = q - p;
         const float d2 = glm::dot(d, d);
-        if (d2 > r2)
+        if (d2 > bound || j == i)
             return;
         // Outside the view cone (but a touching neighbour is always felt). The test
         // dot(d, fwd) < c |d| is done on squares to avoid a square root per candidate.
-        if (t.cosHalfView > -1.0f) {
-            const float c = t.cosHalfView, dot = glm::dot(d, fwd);
+        if (c > -1.0f) {
+            const float dot = glm::dot(d, fwd);
             const bool outside = c >= 0.0f ? (dot < 0.0f || dot * dot < c * c * d2) : (dot < 0.0f && dot * dot > c * c * d2);
             const float contact = m_radius[i] + m_radius[j];
             if (outside && d2 > contact * contact)
                 return;
         }
-        const Candidate c{d2, m_info[j].id, j};
-        if (count == kMaxNeighbours && !(c < best[count - 1]))
-            return;
-        std::size_t k = count < kMaxNeighbours ? count++ : count - 1;
-        for (; k > 0 && c < best[k - 1]; --k)
-            best[k] = best[k - 1];
-        best[k] = c;
+        const std::uint64_t key = (std::uint64_t(std::bit_cast<std::uint32_t>(d2 + 0.0f)) << 32) | j;
+        std::size_t at = count;
+        if (count == k) {
+            if (key >= best[k - 1])
+                return;
+            at = k - 1;
+        } else {
+            ++count;
+        }
+        for (; at > 0 && key < best[at - 1]; --at)
+            best[at] = best[at - 1];
+        best[at] = key;
+        if (count == k)
+            bound = std::bit_cast<float>(std::uint32_t(best[k - 1] >> 32));
     };
-    if (m_grid.sortedByHeight())
-        m_grid.forEachNear3D(p, t.perception, consider);
-    else
-        m_grid.forEachNear(xz(p), t.perception, consider);
-    for (std::size_t k = 0; k < count; ++k) {
-        const std::uint32_t j = best[k].index;
-        out[k] = {m_pos[j], m_vel[j], m_fwd[j], m_radius[j], m_info[j].id};
-        indices[k] = j;
+    // Nearest rows first: once the k best are found, farther cells are skipped.
+    m_grid.forEachNearest(p, t.perception, [&] { return bound; }, consider);
+    for (std::size_t n = 0; n < count; ++n) {
+        const auto j = std::uint32_t(best[n]);
+        out[n] = {m_pos[j], m_vel[j], m_fwd[j], m_radius[j], m_info[j].id};
+        indices[n] = j;
     }
     return count;
 }
@@ -280,9 +285,9 @@ glm::vec3 World::avoidReciprocally(std::size_t i, const SteeringAgent& self, glm
     // Keep to the right of oncoming walkers (the pedestrians' convention), more the more
     // of them come: opposing streams then pass side by side instead of meeting head-on.
     if (oncoming > 0 && s.reciprocal.keepRightRad > 0.0f) {
-        const float angle = s.reciprocal.keepRightRad * std::min(1.0f, float(oncoming) / 3.0f);
+        const glm::vec2 turn = s.keepRightTurn[std::min<std::size_t>(oncoming, 3) - 1];
         const glm::vec2 right(-preferred.y, preferred.x);
-        preferred = preferred * std::cos(angle) + right * std::sin(angle);
+        preferred = preferred * turn.x + right * turn.y;
     }
     const PlanarBody body{xz(self.position), xz(self.velocity), self.radius, self.maxSpeed};
     const glm::vec2 v = sim::avoidReciprocally(body, preferred, {others.data(), near.size()}, m_dt, s.reciprocal);

@@ -31,16 +31,18 @@ inline float nonNegative(float x) { return std::isfinite(x) && x > 0.0f ? x : 0.
 
 inline float effectiveMass(float massKg) { return std::isfinite(massKg) && massKg > kMinMassKg ? massKg : kMinMassKg; }
 
+// One division and a multiply per component (not three divisions): these run several
+// times per agent per step.
 inline glm::vec3 normalizeOr(glm::vec3 v, glm::vec3 fallback)
 {
     const float l = glm::length(v);
-    return std::isfinite(l) && l > kTiny ? v / l : fallback;
+    return std::isfinite(l) && l > kTiny ? v * (1.0f / l) : fallback;
 }
 
 inline glm::vec2 normalizeOr(glm::vec2 v, glm::vec2 fallback)
 {
     const float l = glm::length(v);
-    return std::isfinite(l) && l > kTiny ? v / l : fallback;
+    return std::isfinite(l) && l > kTiny ? v * (1.0f / l) : fallback;
 }
 
 // Shortens v to at most maxLength (<= 0 gives zero); keeps its direction.
@@ -67,15 +69,19 @@ inline float cross2(glm::vec2 a, glm::vec2 b) { return a.x * b.y - a.y * b.x; }
 inline glm::vec2 planarHeading(const SteeringAgent& agent)
 {
     const glm::vec2 v = xz(agent.velocity);
-    if (isFinite(v) && glm::length(v) > kTiny)
-        return glm::normalize(v);
+    const float l = glm::length(v);
+    if (std::isfinite(l) && l > kTiny)
+        return v * (1.0f / l);
     return normalizeOr(xz(agent.forward), glm::vec2(0.0f));
 }
 
 // The agent's heading in 3D: velocity when moving, else forward, else +z.
 inline glm::vec3 heading(const SteeringAgent& agent)
 {
-    return normalizeOr(agent.velocity, normalizeOr(agent.forward, glm::vec3(0.0f, 0.0f, 1.0f)));
+    const float l = glm::length(agent.velocity);
+    if (std::isfinite(l) && l > kTiny)
+        return agent.velocity * (1.0f / l);
+    return normalizeOr(agent.forward, glm::vec3(0.0f, 0.0f, 1.0f));
 }
 
 // The right of a 3D forward direction with world up; falls back to -x when forward is vertical.
