@@ -1,6 +1,6 @@
 #include "export/TrajectoryCsv.h"
 
-#include "export/detail/AtomicFile.h"
+#include "simcore/io/AtomicFile.h"
 #include "export/detail/TextFields.h"
 
 namespace throng::exporting {
@@ -36,7 +36,7 @@ void appendRow(std::string& out, std::size_t frame, sim::AgentId id, const sim::
 ExportResult writeTrajectoryCsv(const sim::FrameCache& cache, const std::string& path, const ProgressFn& progress)
 {
     ExportResult result;
-    detail::AtomicFile file(path);
+    sim::AtomicFile file(path);
     if (!file.open()) {
         result.error = file.error();
         return result;

@@ -1,11 +1,11 @@
 #pragma once
-// Height of the scene's terrain under a ground point, as the simulation samples it
-// (bilinear, clamped at the edges; 0 without a terrain). Plain function, no Qt.
+// Height of the scene's terrain under a ground point, exactly as the simulation samples
+// it (simcore's bilinear terrainHeight).
 
-#include "simcore/scene/Scene.h"
+#include "simcore/scene/TerrainHeight.h"
 
 namespace throng::editor {
 
-float terrainHeight(const sim::Terrain& terrain, float x, float z);
+using sim::terrainHeight;
 
 }  // namespace throng::editor

@@ -1,6 +1,6 @@
 #include "export/detail/GltfFiles.h"
 
-#include "export/detail/AtomicFile.h"
+#include "simcore/io/AtomicFile.h"
 #include "export/detail/StagingDirectory.h"
 
 #include <algorithm>
@@ -22,7 +22,7 @@ ExportResult writeGlb(const tinygltf::Model& model, const std::string& path, con
     if (model.buffers[0].data.size() > kMaxGlbBinBytes)
         return failedExport("cannot export '" + path + "': " + std::to_string(model.buffers[0].data.size() >> 20) +
                             " MiB of binary data do not fit a .glb (4 GiB at most); write .gltf instead");
-    AtomicFile file(path);
+    sim::AtomicFile file(path);
     if (!file.open())
         return failedExport(file.error());
     tinygltf::TinyGLTF writer;

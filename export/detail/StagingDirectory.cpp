@@ -1,6 +1,6 @@
 #include "export/detail/StagingDirectory.h"
 
-#include "export/detail/AtomicFile.h"
+#include "simcore/io/AtomicFile.h"
 
 #include <cerrno>
 #include <cstring>
@@ -26,7 +26,7 @@ StagingDirectory::~StagingDirectory()
 bool StagingDirectory::create()
 {
     for (int attempt = 0; attempt < 100; ++attempt) {
-        std::string dir = uniqueSiblingPath(m_target);
+        std::string dir = sim::uniqueSiblingPath(m_target);
         if (::mkdir(dir.c_str(), 0777) == 0) {
             m_dir = std::move(dir);
             return true;

@@ -1,14 +1,13 @@
 #include "simcore/io/SceneIO.h"
+
+#include "simcore/io/AtomicFile.h"
 #include "simcore/io/detail/SceneReader.h"
 #include "simcore/io/detail/YamlWriter.h"
 
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
-#include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <unistd.h>
 
 namespace throng::sim {
 
@@ -253,26 +252,12 @@ std::string sceneToYaml(const Scene& s)
 
 SaveResult writeFileAtomically(const std::string& path, const std::string& text)
 {
-    namespace fs = std::filesystem;
-    const std::string tmp = path + ".saving~";
-    {
-        std::FILE* f = std::fopen(tmp.c_str(), "wb");
-        if (!f)
-            return {false, "cannot write '" + tmp + "'"};
-        const bool wrote = std::fwrite(text.data(), 1, text.size(), f) == text.size() && std::fflush(f) == 0 &&
-                           ::fsync(fileno(f)) == 0;
-        const bool closed = std::fclose(f) == 0;
-        if (!wrote || !closed) {
-            std::remove(tmp.c_str());
-            return {false, "could not write all of '" + tmp + "' (disk full?)"};
-        }
-    }
-    std::error_code ec;
-    fs::rename(tmp, path, ec);
-    if (ec) {
-        std::remove(tmp.c_str());
-        return {false, "cannot replace '" + path + "': " + ec.message()};
-    }
+    AtomicFile file(path);
+    if (!file.open())
+        return {false, file.error()};
+    file.stream().write(text.data(), std::streamsize(text.size()));
+    if (!file.commit())
+        return {false, file.error()};
     return {true, {}};
 }
 

@@ -1,5 +1,6 @@
 #include "simcore/world/World.h"
 
+#include "simcore/scene/TerrainHeight.h"
 #include "simcore/traffic/LightPhase.h"
 #include "simcore/world/Rng.h"
 
@@ -254,16 +255,7 @@ void World::addAgent(const Scene& scene, AgentId id, std::uint16_t type, glm::ve
 
 float World::groundHeight(float x, float z) const
 {
-    const Terrain& t = m_terrain;
-    if (t.heights.empty() || t.cols < 2 || t.rows < 2)
-        return 0.0f;
-    // Bilinear between the four samples around (x, z), clamped at the edges.
-    const float fx = std::clamp((x - t.origin.x) / t.cellM, 0.0f, float(t.cols - 1));
-    const float fz = std::clamp((z - t.origin.y) / t.cellM, 0.0f, float(t.rows - 1));
-    const auto x0 = std::min(std::uint32_t(fx), t.cols - 2), z0 = std::min(std::uint32_t(fz), t.rows - 2);
-    const float u = fx - float(x0), v = fz - float(z0);
-    auto h = [&](std::uint32_t cx, std::uint32_t cz) { return t.heights[std::size_t(cz) * t.cols + cx]; };
-    return (h(x0, z0) * (1 - u) + h(x0 + 1, z0) * u) * (1 - v) + (h(x0, z0 + 1) * (1 - u) + h(x0 + 1, z0 + 1) * u) * v;
+    return terrainHeight(m_terrain, x, z);
 }
 
 std::size_t World::agentsWithGoal() const

@@ -1,12 +1,12 @@
-#include "editor/tools/TerrainHeight.h"
+#include "simcore/scene/TerrainHeight.h"
 
 #include <algorithm>
 
-namespace throng::editor {
+namespace throng::sim {
 
-float terrainHeight(const sim::Terrain& t, float x, float z)
+float terrainHeight(const Terrain& t, float x, float z)
 {
-    if (t.heights.size() < std::size_t(t.cols) * t.rows || t.cols < 2 || t.rows < 2 || t.cellM <= 0.0f)
+    if (t.heights.size() < std::size_t(t.cols) * t.rows || t.cols < 2 || t.rows < 2 || !(t.cellM > 0.0f))
         return 0.0f;
     const float fx = std::clamp((x - t.origin.x) / t.cellM, 0.0f, float(t.cols - 1));
     const float fz = std::clamp((z - t.origin.y) / t.cellM, 0.0f, float(t.rows - 1));
@@ -16,4 +16,4 @@ float terrainHeight(const sim::Terrain& t, float x, float z)
     return (h(x0, z0) * (1 - u) + h(x0 + 1, z0) * u) * (1 - v) + (h(x0, z0 + 1) * (1 - u) + h(x0 + 1, z0 + 1) * u) * v;
 }
 
-}  // namespace throng::editor
+}  // namespace throng::sim

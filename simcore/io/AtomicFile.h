@@ -6,7 +6,7 @@
 #include <fstream>
 #include <string>
 
-namespace throng::exporting::detail {
+namespace throng::sim {
 
 class AtomicFile {
 public:
@@ -38,4 +38,4 @@ private:
 // by this process; create it exclusively (O_EXCL, mkdir) and ask again if it exists.
 std::string uniqueSiblingPath(const std::string& targetPath);
 
-}  // namespace throng::exporting::detail
+}  // namespace throng::sim

@@ -1,4 +1,4 @@
-#include "export/detail/AtomicFile.h"
+#include "simcore/io/AtomicFile.h"
 
 #include <atomic>
 #include <cerrno>
@@ -10,7 +10,7 @@
 #include <fcntl.h>
 #include <unistd.h>
 
-namespace throng::exporting::detail {
+namespace throng::sim {
 
 namespace {
 
@@ -106,4 +106,4 @@ void AtomicFile::discard()
     }
 }
 
-}  // namespace throng::exporting::detail
+}  // namespace throng::sim
