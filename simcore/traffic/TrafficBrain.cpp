@@ -3,6 +3,7 @@
 #include "simcore/traffic/TrafficSystem.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace throng::sim {
 
@@ -13,7 +14,7 @@ constexpr float kBrainResponseS = 1.0f;  // s: the brain's speed is the one want
 void TrafficSystem::setBrainSpeeds(std::span<const float> wantedMps)
 {
     m_brainSpeed.assign(wantedMps.begin(), wantedMps.end());
-    m_brainSpeed.resize(wantedMps.empty() ? 0 : m_s.size(), -1.0f);
+    m_brainSpeed.resize(wantedMps.empty() ? 0 : m_s.size(), std::nanf(""));
 }
 
 float TrafficSystem::brainAcceleration(std::size_t i, const FollowingParams& q) const

@@ -125,10 +125,11 @@ public:
                                       std::uint32_t pedId) const;
 
     // Brain-driven vehicles (TrafficBrain.cpp): per vehicle, the speed (m/s) its brain
-    // wants one second from now, or a negative value to leave it to the car-following
-    // model. A brain-driven vehicle accelerates by (wanted - speed) / 1 s within its
-    // maxAccel / maxDecel and the lane's speed limit, and still yields to pedestrians; the
-    // model's leader gap, stop lines and start-up delay are then the brain's business.
+    // wants one second from now, or NaN to leave it to the car-following model. A
+    // brain-driven vehicle accelerates by (wanted - speed) / 1 s within its maxAccel /
+    // maxDecel (wanted is capped by the lane's speed limit; below 0 it brakes harder than
+    // to a stand within the second, never reversing), and still yields to pedestrians;
+    // the model's leader gap, stop lines and start-up delay are then the brain's business.
     // Call before step(); an empty span hands every vehicle back to the model.
     void setBrainSpeeds(std::span<const float> wantedMps);
     // The stop line ahead of vehicle i's front at the current time (its light's phase).
@@ -211,7 +212,7 @@ private:
     std::vector<std::uint8_t> m_active, m_decision;
     std::vector<std::int32_t> m_decisionLine;
     std::vector<std::uint64_t> m_leftAtStep;  // when an inactive vehicle left its lane
-    std::vector<float> m_brainSpeed;           // per vehicle when any is brain-driven; < 0 = model
+    std::vector<float> m_brainSpeed;           // per vehicle when any is brain-driven; NaN = model
     std::vector<glm::vec2> m_pos, m_fwd;
     std::vector<NextState> m_next;
 

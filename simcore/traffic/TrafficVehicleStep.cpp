@@ -33,7 +33,7 @@ TrafficSystem::NextState TrafficSystem::advanceVehicle(std::size_t i, std::span<
         gap = d - r - m_radius[l];
         leaderSpeed = m_speed[l];
     }
-    const bool byBrain = i < m_brainSpeed.size() && m_brainSpeed[i] >= 0.0f;
+    const bool byBrain = i < m_brainSpeed.size() && !std::isnan(m_brainSpeed[i]);
     float a = byBrain ? brainAcceleration(i, q)
                       : std::min(followingAcceleration(q, v, gap, leaderSpeed), stopLineLimit(i, q, next));
     a = std::min(a, yieldLimit(i, q, peds));

@@ -113,7 +113,7 @@ void World::buildBrains(const Scene& scene)
     wb.vehicleOf.assign(m_pos.size(), -1);
     for (std::size_t v = 0; v < m_traffic.vehicleAgent.size(); ++v)
         wb.vehicleOf[m_traffic.vehicleAgent[v]] = std::int32_t(v);
-    wb.vehicleSpeed.assign(m_traffic.vehicleAgent.size(), -1.0f);
+    wb.vehicleSpeed.assign(m_traffic.vehicleAgent.size(), std::nanf(""));
     for (detail::TypeBrain& tb : wb.types) {
         if (!tb.program)
             continue;
@@ -197,7 +197,7 @@ void World::runBrains()
         for (std::size_t v = 0; v < wb.vehicleSpeed.size(); ++v) {
             const std::size_t i = m_traffic.vehicleAgent[v];
             const detail::TypeBrain& tb = wb.types[m_info[i].typeIndex];
-            wb.vehicleSpeed[v] = tb.program && tb.speed ? std::max(0.0f, tb.speed[wb.local[i]]) : -1.0f;
+            wb.vehicleSpeed[v] = tb.program && tb.speed ? tb.speed[wb.local[i]] : std::nanf("");
         }
         m_traffic.system->setBrainSpeeds(wb.vehicleSpeed);
     }

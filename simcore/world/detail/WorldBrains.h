@@ -85,7 +85,7 @@ struct WorldBrains {
     std::vector<std::int32_t> typeEmits;           // per type: its channel in `channels`, -1 = silent or unheard
     std::vector<float> typeEmitStrength, typeEmitRadiusM;  // per type
     std::vector<std::int32_t> vehicleOf;           // per agent: its TrafficSystem vehicle, -1 = none
-    std::vector<float> vehicleSpeed;               // per vehicle: the speed its brain wants, < 0 = no brain
+    std::vector<float> vehicleSpeed;               // per vehicle: the speed its brain wants, NaN = no brain
 };
 
 }  // namespace throng::sim::detail
