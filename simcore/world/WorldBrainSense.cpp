@@ -184,39 +184,38 @@ void World::senseForBrain(TypeBrain& tb)
                 break;
             }
             case SensorFill::LightState:
-            case SensorFill::StopLineDistance:
+            case SensorFill::StopLineDistance: {
+                float gap = kNoneM, light = 0.0f;
                 if (const std::int32_t vehicle = m_brains->vehicleOf[i]; vehicle >= 0) {
                     // A vehicle's stop line is the next one on its lane, from its front.
                     const VehicleStopLine line = m_traffic.system->stopLineAhead(std::size_t(vehicle));
-                    if (tb.fills[s] == SensorFill::LightState)
-                        v = line.found ? 0.5f * float(int(line.phase)) : 0.0f;
-                    else
-                        v = line.found ? line.distanceM : kNoneM;
-                    break;
-                }
-                {
-                // The stop line ahead: an end of a lit crosswalk this agent walks toward
-                // and has not passed; its light, and the gap from the body to the line.
-                float gap = kNoneM, light = 0.0f;
-                for (const CrosswalkBox& c : m_crosswalks) {
-                    if (c.light < 0)
-                        continue;
-                    const glm::vec2 ab = c.b - c.a;
-                    const float len = glm::length(ab);
-                    if (len <= 0.0f)
-                        continue;
-                    const glm::vec2 dir = ab / len;
-                    const float along = glm::dot(p - c.a, dir), across = std::fabs(cross(dir, p - c.a));
-                    if (across > c.halfWidth + kStopLineSideM)
-                        continue;
-                    float d = kNoneM;
-                    if (along < 0.0f && glm::dot(f, dir) > 0.0f)
-                        d = -along - m_radius[i];
-                    else if (along > len && glm::dot(f, dir) < 0.0f)
-                        d = along - len - m_radius[i];
-                    if (d < gap) {
-                        gap = d;
-                        light = 0.5f * float(lightState(std::size_t(c.light)));
+                    if (line.found) {
+                        gap = line.distanceM;
+                        light = 0.5f * float(int(line.phase));
+                    }
+                } else {
+                    // The stop line ahead: an end of a lit crosswalk this agent walks toward
+                    // and has not passed; its light, and the gap from the body to the line.
+                    for (const CrosswalkBox& c : m_crosswalks) {
+                        if (c.light < 0)
+                            continue;
+                        const glm::vec2 ab = c.b - c.a;
+                        const float len = glm::length(ab);
+                        if (len <= 0.0f)
+                            continue;
+                        const glm::vec2 dir = ab / len;
+                        const float along = glm::dot(p - c.a, dir), across = std::fabs(cross(dir, p - c.a));
+                        if (across > c.halfWidth + kStopLineSideM)
+                            continue;
+                        float d = kNoneM;
+                        if (along < 0.0f && glm::dot(f, dir) > 0.0f)
+                            d = -along - m_radius[i];
+                        else if (along > len && glm::dot(f, dir) < 0.0f)
+                            d = along - len - m_radius[i];
+                        if (d < gap) {
+                            gap = d;
+                            light = 0.5f * float(lightState(std::size_t(c.light)));
+                        }
                     }
                 }
                 v = tb.fills[s] == SensorFill::LightState ? light : gap;
