@@ -14,17 +14,19 @@ namespace throng::sim::detail {
 namespace {
 
 // Strictly louder, or as loud and nearer; `rank` orders the rest (beacons before agents).
+// The bearing is worked out only for the sources kept, from `offset`.
 struct Candidate {
-    Heard heard;
+    float strength, distanceM;
+    glm::vec2 offset;  // source - listener
     std::uint64_t rank;
 };
 
 bool before(const Candidate& a, const Candidate& b)
 {
-    if (a.heard.strength != b.heard.strength)
-        return a.heard.strength > b.heard.strength;
-    if (a.heard.distanceM != b.heard.distanceM)
-        return a.heard.distanceM < b.heard.distanceM;
+    if (a.strength != b.strength)
+        return a.strength > b.strength;
+    if (a.distanceM != b.distanceM)
+        return a.distanceM < b.distanceM;
     return a.rank < b.rank;
 }
 
@@ -85,17 +87,15 @@ std::size_t hearChannel(const WorldBrains& wb, std::uint32_t c, const NeighbourG
     const SoundChannel& channel = wb.channels[c];
     std::array<Candidate, kMaxHeard> best;
     std::size_t count = 0;
-    const glm::vec2 left(f.y, -f.x);
     auto consider = [&](glm::vec2 q, float strength, float radiusM, std::uint64_t rank) {
         const glm::vec2 d = q - p;
-        const float dist = glm::length(d);
-        if (dist >= radiusM)
+        const float d2 = glm::dot(d, d);
+        if (d2 >= radiusM * radiusM)
             return;
+        const float dist = std::sqrt(d2);
         const float heard = std::min(1.0f, strength * (1.0f - dist / radiusM));
-        if (heard <= 0.0f)
-            return;
-        const float bearing = dist > 0.0f ? glm::degrees(std::atan2(glm::dot(d, left), glm::dot(d, f))) : 0.0f;
-        offer(best, count, {{heard, dist, bearing}, rank});
+        if (heard > 0.0f)
+            offer(best, count, {heard, dist, d, rank});
     };
     for (std::size_t b = 0; b < channel.beacons.size(); ++b) {
         const Beacon& s = channel.beacons[b];
@@ -108,8 +108,12 @@ std::size_t hearChannel(const WorldBrains& wb, std::uint32_t c, const NeighbourG
                 return;
             consider({q.x, q.z}, wb.typeEmitStrength[t], wb.typeEmitRadiusM[t], (std::uint64_t(1) << 32) + j);
         });
-    for (std::size_t k = 0; k < count; ++k)
-        out[k] = best[k].heard;
+    const glm::vec2 left(f.y, -f.x);
+    for (std::size_t k = 0; k < count; ++k) {
+        const glm::vec2 d = best[k].offset;
+        const float bearing = best[k].distanceM > 0.0f ? glm::degrees(std::atan2(glm::dot(d, left), glm::dot(d, f))) : 0.0f;
+        out[k] = {best[k].strength, best[k].distanceM, bearing};
+    }
     return count;
 }
 
