@@ -124,6 +124,40 @@ private slots:
         QVERIFY2(r.crossedAt > 0.0f && r.crossedAt < 12.0f, qPrintable(QString::number(r.crossedAt)));
     }
 
+    void crossroadsCarsDrivenByTheBrainObeyTheLightsAndTouchNobody()
+    {
+        // The crossroads demo (16 cars on four lanes, two signal groups, 200 walkers on the
+        // crosswalks, a hero) with its cars driven by the shipped car brain for 60 s.
+        LoadResult r = loadScene(THRONG_SOURCE_DIR "/resources/scenes/crossroads.yaml");
+        QVERIFY(r.ok());
+        Scene s = r.scene;
+        s.brains.push_back(load("throng: 1\nbrains: [{name: car, file: car.brain.yaml}]\n").brains[0]);
+        int cars = 0;
+        for (AgentType& t : s.agentTypes)
+            if (t.kind == AgentKind::Vehicle) {
+                t.brain = "car";
+                t.perceptionM = 45.0f;
+                t.viewAngleDeg = 90.0f;
+                ++cars;
+            }
+        QCOMPARE(cars, 1);
+        World world(s, {0, false, 1});
+        QVERIFY(world.brainErrors().empty());
+        while (world.timeS() < 60.0)
+            world.step();
+        const TrafficSystem& ts = *world.trafficSystem();
+        QCOMPARE(ts.counters().vehicleRedLightViolations, std::uint64_t(0));
+        QCOMPARE(ts.counters().vehicleCollisions, std::uint64_t(0));
+        QCOMPARE(ts.counters().carPedestrianCollisions, std::uint64_t(0));
+        std::uint64_t carCrossings = 0;
+        for (const StopLineThroughput& line : ts.throughput())
+            if (line.lane >= 0)
+                carCrossings += line.crossings;
+        // Traffic flows: the brain-driven cars cross 43 stop lines in the minute (the
+        // car-following model: 37).
+        QVERIFY2(carCrossings >= 30, qPrintable(QString::number(carCrossings)));
+    }
+
     void identicalOnOneAndTwoThreads()
     {
         const Scene s = load(kQueue);
