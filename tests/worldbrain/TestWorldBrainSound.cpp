@@ -12,6 +12,7 @@
 
 #include <QTest>
 
+#include <algorithm>
 #include <cstring>
 
 using namespace throng::sim;
@@ -145,6 +146,45 @@ brains:
       - {from: [6, 0], to: [7, 0]}
 )";
 
+// Five riders with the shipped rider brain pursue a leader (id 1) that rides east at 7 m/s
+// and emits on "leader": the brain rides fast (up to 12 m/s) while it hears the leader
+// far ahead, and at 5 m/s when it hears nothing.
+const char* kRide = R"(throng: 1
+settings: {fps: 24, seed: 12, bounds: {min: [-20, -40], max: [260, 40]}}
+brains: [{name: rider, file: rider.brain.yaml}]
+agent_types:
+  - {name: lead, max_speed: 7, max_force: 20, variation: {speed: [1, 1]}, emits: {channel: leader, strength: 1, radius: 40}}
+  - name: rider
+    max_speed: 12
+    max_force: 30
+    perception: 6
+    variation: {speed: [1, 1]}
+    behaviours: {pursuit: 1, leader_following: 1, obstacle_avoidance: 1, separation: 1}
+    brain: rider
+goals: [{name: far, position: [250, 0], radius: 2}]
+agents:
+  - {id: 1, type: lead, position: [0, 0, 0], heading: 0, goal: far}
+  - {id: 2, type: rider, position: [-6, 0, 3], heading: 0, leader: 1}
+  - {id: 3, type: rider, position: [-6, 0, -3], heading: 0, leader: 1}
+  - {id: 4, type: rider, position: [-10, 0, 0], heading: 0, leader: 1}
+  - {id: 5, type: rider, position: [-12, 0, 4], heading: 0, leader: 1}
+  - {id: 6, type: rider, position: [-12, 0, -4], heading: 0, leader: 1}
+)";
+
+// The largest distance of a rider from the leader after `seconds`.
+float farthestRider(const Scene& s, float seconds)
+{
+    World world(s, {0, false, 1});
+    if (!world.brainErrors().empty())
+        qFatal("%s", world.brainErrors()[0].c_str());
+    while (world.timeS() < seconds)
+        world.step();
+    float farthest = 0.0f;
+    for (std::size_t i = 1; i < world.agentCount(); ++i)
+        farthest = std::max(farthest, glm::distance(world.positions()[i], world.positions()[0]));
+    return farthest;
+}
+
 std::uint64_t hashRun(const Scene& s, int threads, int steps)
 {
     World world(s, {0, false, threads});
@@ -221,6 +261,19 @@ private slots:
         QVERIFY2(glm::distance(p, glm::vec2(20, 5)) < 1.0f, qPrintable(QString("%1 %2").arg(p.x).arg(p.y)));
         QVERIFY(glm::length(world.velocities()[0]) < 0.05f);
         QVERIFY2(nearestHandbell > 4.0f, qPrintable(QString::number(nearestHandbell)));
+    }
+
+    void ridersKeepUpWithTheLeaderTheyHear()
+    {
+        const Scene s = load(kRide);
+        // Hearing the leader, the riders keep up with it over 20 s (140 m).
+        const float heard = farthestRider(s, 20.0f);
+        QVERIFY2(heard < 15.0f, qPrintable(QString::number(heard)));
+        // A silent leader: the same brain rides at its 5 m/s and falls behind.
+        Scene silent = s;
+        silent.agentTypes[0].emits = {};
+        const float lost = farthestRider(silent, 20.0f);
+        QVERIFY2(lost > 30.0f, qPrintable(QString::number(lost)));
     }
 
     void identicalOnOneAndTwoThreads()
