@@ -6,6 +6,7 @@
 #include "simcore/brain/BrainCompiler.h"
 #include "simcore/world/detail/WorldBrains.h"
 
+#include <algorithm>
 #include <map>
 
 namespace throng::sim {
@@ -71,6 +72,26 @@ const BrainNode* inputNodeFor(const BrainGraph& g, const BrainSensorUse& use)
     return nullptr;
 }
 
+// Whether anything in the scene sounds on `channel`: a sound source or an emitting type.
+bool heardInScene(const Scene& scene, const std::string& channel)
+{
+    for (const SoundSource& s : scene.soundSources)
+        if (s.channel == channel)
+            return true;
+    for (const AgentType& t : scene.agentTypes)
+        if (t.emits.channel == channel)
+            return true;
+    return false;
+}
+
+bool usedByAType(const Scene& scene, const std::string& brain)
+{
+    for (const AgentType& t : scene.agentTypes)
+        if (t.brain == brain)
+            return true;
+    return false;
+}
+
 }  // namespace
 
 std::string worldSensorProblem(const BrainSensorUse& use, const Scene& /*scene*/)
@@ -94,14 +115,23 @@ std::vector<Diagnostic> checkSceneBrains(const Scene& scene)
             out.push_back({Severity::Error, e.file, e.line, e.column, key, e.message});
         if (!r.ok())
             continue;
+        std::vector<std::string> silent;  // channels already warned about
         for (const BrainSensorUse& use : r.program->sensors) {
-            const std::string why = worldSensorProblem(use, scene);
-            if (why.empty())
-                continue;
             const BrainNode* n = inputNodeFor(g, use);
             const BrainSourcePos pos = n ? g.source.node(n->id) : BrainSourcePos{};
             const std::string who = n ? "node " + std::to_string(n->id) + " (input): " : std::string();
-            out.push_back({Severity::Error, g.source.file, pos.line, pos.column, key, who + why});
+            if (const std::string why = worldSensorProblem(use, scene); !why.empty()) {
+                out.push_back({Severity::Error, g.source.file, pos.line, pos.column, key, who + why});
+                continue;
+            }
+            // A brain some type runs that listens where nothing sounds hears silence forever.
+            if (use.sensor.starts_with("sound") && usedByAType(scene, g.name) && !heardInScene(scene, use.argument) &&
+                std::find(silent.begin(), silent.end(), use.argument) == silent.end()) {
+                silent.push_back(use.argument);
+                out.push_back({Severity::Warning, g.source.file, pos.line, pos.column, key,
+                               who + "nothing is heard on channel '" + use.argument +
+                                   "' (no sound source is on it and no agent type emits on it)"});
+            }
         }
     }
     return out;

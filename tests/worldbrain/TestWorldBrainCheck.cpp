@@ -93,6 +93,7 @@ private slots:
         const char* yaml = R"(throng: 1
 agent_types: [{name: w, brain: all}, {name: hero}]
 heroes: [{name: h, type: hero, keyframes: [{time: 0, position: [5, 0, 0]}]}]
+sound_sources: [{name: tower, channel: bell, position: [0, 9]}]
 brains:
   - name: all
     nodes:
@@ -120,6 +121,18 @@ agents: [{type: w, position: [0, 0]}]
         const World world(s);
         QVERIFY(world.brainErrors().empty());
         QVERIFY(world.brainEvaluator(0) != nullptr);
+
+        // Without the bell tower nothing sounds on "bell": a warning at the first node
+        // that listens to it (line 8: node 1), once per channel; the brain still runs.
+        Scene quiet = s;
+        quiet.soundSources.clear();
+        const std::vector<Diagnostic> d = checkSceneBrains(quiet);
+        QCOMPARE(d.size(), std::size_t(1));
+        QCOMPARE(d[0].severity, Severity::Warning);
+        QCOMPARE(d[0].line, 8);
+        QVERIFY2(d[0].message.find("node 1 (input): nothing is heard on channel 'bell'") != std::string::npos,
+                 d[0].format().c_str());
+        QVERIFY(World(quiet).brainErrors().empty());
     }
 
     void worldRefusesABrainItCannotRun()
