@@ -2,7 +2,9 @@
 // per-neighbour logic and a filter, state, outputs) over N agents with random sensor
 // values, for 1 and 2 threads, next to the World step of a built-in scenario of the same
 // size, and that World step again with every agent driven by the brain (sensors gathered
-// from the World): the brain's share of the step is the time it adds. Prints one JSON
+// from the World): the brain's share of the step is the time it adds. Then every agent
+// emits on a sound channel (4 m) and runs a 5-node brain that turns to the loudest one it
+// hears: "sound_share_of_step" is the time hearing and that brain add. Prints one JSON
 // object. Usage: throng-bench-brain [AGENTS] [SCENARIO]
 #include "simcore/brain/BrainCompiler.h"
 #include "simcore/brain/BrainEvaluator.h"
@@ -86,6 +88,19 @@ BrainGraph fortyNodeBrain()
     return b.g;
 }
 
+// Turns toward the loudest agent heard on "chat" and slows when many are heard.
+BrainGraph listenerBrain()
+{
+    Builder b;
+    const NodeId bearing = b.add("filter", {t("mode", "nearest")}, {b.sensor("sound_source_bearing", {t("channel", "chat")})});
+    b.add("output", {t("channel", "turn")}, {bearing});
+    const NodeId heard = b.add("filter", {t("mode", "count"), n("threshold", 0.2f)},
+                               {b.sensor("sound_source_strength", {t("channel", "chat")})});
+    b.add("output", {t("channel", "speed")}, {b.add("math.remap", {{"from", {}, {0, 8}}, {"to", {}, {1.4f, 0.4f}}}, {heard})});
+    b.g.name = "listen";
+    return b.g;
+}
+
 // Median of 5 steps after a first one (which builds what the first step builds).
 double stepMedianMs(const Scene& scene, int threads)
 {
@@ -155,7 +170,7 @@ int main(int argc, char** argv)
     in.agentKey = keys.data();
     in.dtS = 1.0f / 24.0f;
 
-    double brainMs[2] = {0, 0}, stepMs[2] = {0, 0}, brainStepMs[2] = {0, 0};
+    double brainMs[2] = {0, 0}, stepMs[2] = {0, 0}, brainStepMs[2] = {0, 0}, soundStepMs[2] = {0, 0};
     for (int threads = 1; threads <= 2; ++threads) {
         omp_set_num_threads(threads);
         BrainEvaluator eval(compiled.program);
@@ -182,6 +197,12 @@ int main(int argc, char** argv)
         for (AgentType& type : scene.agentTypes)
             type.brain = "bench40";
         brainStepMs[threads - 1] = stepMedianMs(scene, threads);
+        scene.brains.push_back(listenerBrain());
+        for (AgentType& type : scene.agentTypes) {
+            type.brain = "listen";
+            type.emits = {"chat", 1.0f, 4.0f};
+        }
+        soundStepMs[threads - 1] = stepMedianMs(scene, threads);
     }
     const double nodes = double(program.graphNodes);
     std::printf("{\"agents\": %zu, \"brain_nodes\": %u, \"instructions\": %zu, \"scenario\": \"%s\",\n", agents,
@@ -189,9 +210,11 @@ int main(int argc, char** argv)
     for (int t = 0; t < 2; ++t)
         std::printf(" \"threads_%d\": {\"brain_ms_per_step\": %.3f, \"node_evaluations_per_second\": %.4g, "
                     "\"world_step_ms\": %.3f, \"brain_share_of_step\": %.3f, "
-                    "\"world_step_with_brain_ms\": %.3f, \"brain_in_world_share_of_step\": %.3f}%s\n",
+                    "\"world_step_with_brain_ms\": %.3f, \"brain_in_world_share_of_step\": %.3f, "
+                    "\"world_step_with_sound_ms\": %.3f, \"sound_share_of_step\": %.3f}%s\n",
                     t + 1, brainMs[t], nodes * double(agents) / (brainMs[t] / 1000.0), stepMs[t],
                     brainMs[t] / (brainMs[t] + stepMs[t]), brainStepMs[t],
-                    (brainStepMs[t] - stepMs[t]) / brainStepMs[t], t == 0 ? "," : "}");
+                    (brainStepMs[t] - stepMs[t]) / brainStepMs[t], soundStepMs[t],
+                    (soundStepMs[t] - stepMs[t]) / soundStepMs[t], t == 0 ? "," : "}");
     return 0;
 }

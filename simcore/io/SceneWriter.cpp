@@ -14,6 +14,8 @@ namespace throng::sim {
 namespace detail {
 void writeSceneSet(YamlWriter& w, const Scene& s);
 void writeSceneTraffic(YamlWriter& w, const Scene& s);
+void writeSceneSound(YamlWriter& w, const Scene& s);
+void writeEmission(YamlWriter& w, const SoundEmission& e);
 }  // namespace detail
 
 namespace {
@@ -148,6 +150,7 @@ void writeAgentTypes(Writer& w, const Scene& s)
             w.kvf("min_speed", t.minSpeed);
         if (t.banking != 0.0f)
             w.kvf("banking", t.banking);
+        detail::writeEmission(w, t.emits);
         o << YAML::EndMap;
     }
     o << YAML::EndSeq;
@@ -245,6 +248,7 @@ std::string sceneToYaml(const Scene& s)
     writeAgentTypes(w, s);
     detail::writeSceneSet(w, s);
     detail::writeSceneTraffic(w, s);
+    detail::writeSceneSound(w, s);
     writeAgents(w, s);
     o << YAML::EndMap;
     return std::string(o.c_str()) + "\n";

@@ -48,6 +48,15 @@ struct BehaviourWeight {
     bool operator==(const BehaviourWeight&) const = default;
 };
 
+// What an agent type emits on a sound channel (brains of others hear it with the sound_*
+// sensors). An empty channel = silent.
+struct SoundEmission {
+    std::string channel;
+    float strength = 1.0f;  // loudness at the source, > 0 (1 = full)
+    float radiusM = 10.0f;  // heard up to this distance, m, > 0
+    bool operator==(const SoundEmission&) const = default;
+};
+
 struct AgentType {
     std::string name;
     AgentKind kind = AgentKind::Pedestrian;
@@ -65,6 +74,7 @@ struct AgentType {
     bool priorityCombination = false;         // prioritised allocation instead of weighted blending
     float minSpeed = 0.0f;                    // m/s, >= 0: fliers never fly slower
     float banking = 0.0f;                     // s^2/m, >= 0: fliers' bank per m/s^2 of turn
+    SoundEmission emits;                      // every agent of the type emits this sound
     bool operator==(const AgentType&) const = default;
 };
 
@@ -199,6 +209,16 @@ struct Hero {
     bool operator==(const Hero&) const = default;
 };
 
+// A fixed sound beacon (a bell, a busker, a loudspeaker) heard on its channel.
+struct SoundSource {
+    std::string name;
+    std::string channel;
+    glm::vec2 position{0.0f};  // (x, z)
+    float strength = 1.0f;     // loudness at the source, > 0 (1 = full)
+    float radiusM = 20.0f;     // heard up to this distance, m, > 0
+    bool operator==(const SoundSource&) const = default;
+};
+
 struct Scene {
     static constexpr int kFormatVersion = 1;
     Settings settings;
@@ -216,6 +236,7 @@ struct Scene {
     std::vector<TrafficLight> trafficLights;
     std::vector<Vehicle> vehicles;
     std::vector<Hero> heroes;
+    std::vector<SoundSource> soundSources;
     std::vector<BrainGraph> brains;
     bool operator==(const Scene&) const = default;
 

@@ -88,6 +88,14 @@ struct PedestrianSignal {
     glm::vec2 inward{0.0f};        // unit: the direction onto the crosswalk at its end line
 };
 
+// The next stop line ahead of a vehicle's front on its lane (within the lookahead).
+struct VehicleStopLine {
+    bool found = false;
+    float distanceM = 0.0f;  // from the vehicle's front to the line, >= 0
+    LightPhase phase = LightPhase::Green;
+    int light = -1;
+};
+
 // Where a waiting walker, pushed by others from its place to `to`, may end up: anywhere
 // but past its stop point toward the crosswalk (that component of the push is removed;
 // sideways and backwards nudges stay). The caller keeps the walker's forward axis: a
@@ -115,6 +123,17 @@ public:
     // yellow decision; pedId keys its own reaction delay after green. Thread-safe.
     PedestrianSignal pedestrianSignal(glm::vec2 p, glm::vec2 heading, float speedMps, float radiusM,
                                       std::uint32_t pedId) const;
+
+    // Brain-driven vehicles (TrafficBrain.cpp): per vehicle, the speed (m/s) its brain
+    // wants one second from now, or NaN to leave it to the car-following model. A
+    // brain-driven vehicle accelerates by (wanted - speed) / 1 s within its maxAccel /
+    // maxDecel (wanted is capped by the lane's speed limit; below 0 it brakes harder than
+    // to a stand within the second, never reversing), and still yields to pedestrians;
+    // the model's leader gap, stop lines and start-up delay are then the brain's business.
+    // Call before step(); an empty span hands every vehicle back to the model.
+    void setBrainSpeeds(std::span<const float> wantedMps);
+    // The stop line ahead of vehicle i's front at the current time (its light's phase).
+    VehicleStopLine stopLineAhead(std::size_t i) const;
 
     const LaneNetwork& lanes() const { return m_net; }
     std::size_t vehicleCount() const { return m_s.size(); }
@@ -156,6 +175,7 @@ private:
     void collectPedestrians(std::span<const PedestrianView> peds);
     NextState advanceVehicle(std::size_t i, std::span<const PedestrianView> peds) const;
     float stopLineLimit(std::size_t i, const FollowingParams& q, NextState& next) const;
+    float brainAcceleration(std::size_t i, const FollowingParams& q) const;  // TrafficBrain.cpp
     float yieldLimit(std::size_t i, const FollowingParams& p, std::span<const PedestrianView> peds) const;
     // approachingCount: also walkers about to step onto the strip, not only those on it.
     bool crosswalkConflict(int crosswalk, float uLane, float corridorM, bool approachingCount,
@@ -192,6 +212,7 @@ private:
     std::vector<std::uint8_t> m_active, m_decision;
     std::vector<std::int32_t> m_decisionLine;
     std::vector<std::uint64_t> m_leftAtStep;  // when an inactive vehicle left its lane
+    std::vector<float> m_brainSpeed;           // per vehicle when any is brain-driven; NaN = model
     std::vector<glm::vec2> m_pos, m_fwd;
     std::vector<NextState> m_next;
 

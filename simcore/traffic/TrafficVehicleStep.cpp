@@ -33,13 +33,14 @@ TrafficSystem::NextState TrafficSystem::advanceVehicle(std::size_t i, std::span<
         gap = d - r - m_radius[l];
         leaderSpeed = m_speed[l];
     }
-    float a = followingAcceleration(q, v, gap, leaderSpeed);
-    a = std::min(a, stopLineLimit(i, q, next));
+    const bool byBrain = i < m_brainSpeed.size() && !std::isnan(m_brainSpeed[i]);
+    float a = byBrain ? brainAcceleration(i, q)
+                      : std::min(followingAcceleration(q, v, gap, leaderSpeed), stopLineLimit(i, q, next));
     a = std::min(a, yieldLimit(i, q, peds));
 
     // Start-up delay: a standing driver moves off only after being free to go for its
     // own random delay, so a queue leaves one car after another, not as one block.
-    if (v < kStandingSpeed) {
+    if (v < kStandingSpeed && !byBrain) {
         if (a > std::min(kGoAccel, 0.5f * q.maxAccel)) {
             next.goTimer += m_dt;
             if (next.goTimer < goDelayS(i, m_stops[i]))

@@ -7,6 +7,7 @@
 #include "simcore/world/Rng.h"
 #include "simcore/world/World.h"
 #include "simcore/world/detail/WorldBrains.h"
+#include "simcore/world/detail/WorldSound.h"
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
@@ -25,55 +26,6 @@ namespace {
 // Random streams of their own (see World.cpp's list), so brains shift no other draw.
 enum BrainStream : std::uint64_t { kBrainKey = 301, kGoalSpotR, kGoalSpotA };
 
-std::optional<SensorFill> fillFor(const BrainSensorUse& use)
-{
-    static const std::map<std::string, SensorFill> plain{
-        {"speed", SensorFill::Speed}, {"goal_bearing", SensorFill::GoalBearing},
-        {"goal_distance", SensorFill::GoalDistance}, {"path_offset", SensorFill::PathOffset},
-        {"flow_bearing", SensorFill::FlowBearing}, {"neighbour_count", SensorFill::NeighbourCount},
-        {"neighbour_density", SensorFill::NeighbourDensity}, {"nearest_distance", SensorFill::NearestDistance},
-        {"nearest_bearing", SensorFill::NearestBearing}, {"vision_left", SensorFill::VisionLeft},
-        {"vision_centre", SensorFill::VisionCentre}, {"vision_right", SensorFill::VisionRight},
-        {"feeler_left", SensorFill::FeelerLeft}, {"feeler_centre", SensorFill::FeelerCentre},
-        {"feeler_right", SensorFill::FeelerRight}, {"wall_distance", SensorFill::WallDistance},
-        {"light_state", SensorFill::LightState}, {"stop_line_distance", SensorFill::StopLineDistance},
-        {"hero_distance", SensorFill::HeroDistance}, {"hero_bearing", SensorFill::HeroBearing},
-        {"terrain_slope", SensorFill::TerrainSlope}, {"time", SensorFill::Time},
-        {"neighbour_distance", SensorFill::NeighbourDistance}, {"neighbour_bearing", SensorFill::NeighbourBearing},
-        {"neighbour_speed", SensorFill::NeighbourSpeed}, {"neighbour_heading", SensorFill::NeighbourHeading},
-        {"neighbour_tag", SensorFill::NeighbourTag},
-    };
-    static const std::map<std::string, SensorFill> attributes{
-        {"max_speed", SensorFill::AttrMaxSpeed}, {"radius", SensorFill::AttrRadius},
-        {"mass", SensorFill::AttrMass}, {"max_force", SensorFill::AttrMaxForce},
-        {"perception", SensorFill::AttrPerception}, {"speed_factor", SensorFill::AttrSpeedFactor},
-    };
-    const auto& table = use.sensor == "attribute" ? attributes : plain;
-    const auto it = table.find(use.sensor == "attribute" ? use.argument : use.sensor);
-    if (it == table.end())
-        return std::nullopt;
-    return it->second;
-}
-
-// The input node that reads `use`, for the message's position.
-const BrainNode* inputNodeFor(const BrainGraph& g, const BrainSensorUse& use)
-{
-    for (const BrainNode& n : g.nodes) {
-        if (n.type != "input")
-            continue;
-        std::string sensor, argument;
-        for (const BrainParam& p : n.params) {
-            if (p.key == "sensor")
-                sensor = p.text;
-            else if (p.key == "channel" || p.key == "name" || p.key == "tag")
-                argument = p.text;
-        }
-        if (sensor == use.sensor && argument == use.argument)
-            return &n;
-    }
-    return nullptr;
-}
-
 std::uint32_t tagIndex(std::vector<std::string>& tags, const std::string& name)
 {
     const auto it = std::find(tags.begin(), tags.end(), name);
@@ -84,42 +36,6 @@ std::uint32_t tagIndex(std::vector<std::string>& tags, const std::string& name)
 }
 
 }  // namespace
-
-std::string worldSensorProblem(const BrainSensorUse& use, const Scene& scene)
-{
-    if (use.sensor == "attribute" && !fillFor(use))
-        return "attribute '" + use.argument +
-               "' is not an agent attribute (max_speed, radius, mass, max_force, perception, speed_factor)";
-    if (!fillFor(use))
-        return "sensor '" + use.sensor + "' is not provided by the World yet (sound channels are not wired)";
-    if ((use.sensor == "hero_distance" || use.sensor == "hero_bearing") && !scene.heroes.empty())
-        return "sensor '" + use.sensor + "' is not provided by the World yet (heroes do not run in the World)";
-    return {};
-}
-
-std::vector<Diagnostic> checkSceneBrains(const Scene& scene)
-{
-    std::vector<Diagnostic> out;
-    for (std::size_t b = 0; b < scene.brains.size(); ++b) {
-        const BrainGraph& g = scene.brains[b];
-        const std::string key = "brains[" + std::to_string(b) + "]";
-        const BrainCompileResult r = compileBrain(g, scene.brains);
-        for (const BrainError& e : r.errors)
-            out.push_back({Severity::Error, e.file, e.line, e.column, key, e.message});
-        if (!r.ok())
-            continue;
-        for (const BrainSensorUse& use : r.program->sensors) {
-            const std::string why = worldSensorProblem(use, scene);
-            if (why.empty())
-                continue;
-            const BrainNode* n = inputNodeFor(g, use);
-            const BrainSourcePos pos = n ? g.source.node(n->id) : BrainSourcePos{};
-            const std::string who = n ? "node " + std::to_string(n->id) + " (input): " : std::string();
-            out.push_back({Severity::Error, g.source.file, pos.line, pos.column, key, who + why});
-        }
-    }
-    return out;
-}
 
 void World::buildBrains(const Scene& scene)
 {
@@ -155,12 +71,19 @@ void World::buildBrains(const Scene& scene)
                 wb.errors.push_back("brain '" + graph->name + "': " + why);
                 usable = false;
             }
-            tb.fills.push_back(fillFor(use).value_or(SensorFill::Time));
-            tb.fillTag.push_back(use.sensor == "neighbour_tag" ? tagIndex(wb.tags, use.argument) : 0);
+            const SensorFill fill = detail::sensorFillFor(use).value_or(SensorFill::Time);
+            tb.fills.push_back(fill);
+            tb.fillTag.push_back(use.sensor == "neighbour_tag" ? tagIndex(wb.tags, use.argument)
+                                 : detail::isSoundFill(fill) ? detail::channelIndex(wb, use.argument)
+                                                             : 0);
+            if (detail::isSoundFill(fill) &&
+                std::find(tb.hears.begin(), tb.hears.end(), tb.fillTag.back()) == tb.hears.end())
+                tb.hears.push_back(tb.fillTag.back());
         }
         if (!usable) {
             tb.fills.clear();
             tb.fillTag.clear();
+            tb.hears.clear();
             continue;
         }
         for (const BrainOutputSlot& o : r.program->outputs)
@@ -187,6 +110,10 @@ void World::buildBrains(const Scene& scene)
         tb.keys.push_back(rng(m_seed, m_info[i].id, 0, kBrainKey));
     }
     wb.tagValues.assign(wb.tags.size(), std::vector<float>(m_pos.size(), 0.0f));
+    wb.vehicleOf.assign(m_pos.size(), -1);
+    for (std::size_t v = 0; v < m_traffic.vehicleAgent.size(); ++v)
+        wb.vehicleOf[m_traffic.vehicleAgent[v]] = std::int32_t(v);
+    wb.vehicleSpeed.assign(m_traffic.vehicleAgent.size(), std::nanf(""));
     for (detail::TypeBrain& tb : wb.types) {
         if (!tb.program)
             continue;
@@ -196,7 +123,13 @@ void World::buildBrains(const Scene& scene)
         for (const BrainSensorUse& use : tb.program->sensors)
             tb.columns.emplace_back(use.perNeighbour ? n * kBrainNeighbours : n, 0.0f);
         tb.neighbourCount.assign(n, 0);
+        for (const std::string& set : tb.program->itemSets) {
+            const bool sound = set.starts_with("sound:");
+            tb.itemCounts.emplace_back(sound ? n : 0, std::uint8_t(0));
+            tb.itemSetChannel.push_back(sound ? std::int32_t(detail::channelIndex(wb, set.substr(6))) : -1);
+        }
     }
+    detail::buildSoundChannels(wb, scene);
 }
 
 // Brain: sense from the previous state, evaluate each type's program for all its agents,
@@ -212,7 +145,8 @@ void World::runBrains()
         for (const std::vector<float>& c : tb.columns)
             in.sensors.push_back(c.data());
         for (std::size_t s = 0; s < tb.program->itemSets.size(); ++s)
-            in.itemCounts.push_back(tb.neighbourCount.data());
+            in.itemCounts.push_back(tb.program->itemSets[s] == "neighbours" ? tb.neighbourCount.data()
+                                                                            : tb.itemCounts[s].data());
         in.agentKey = tb.keys.data();
         in.timeS = float(timeS());
         in.dtS = m_dt;
@@ -257,6 +191,16 @@ void World::runBrains()
             m_goalSpot[i] = goal.position + r * glm::vec2(std::cos(a), std::sin(a));
         }
     }
+    // Vehicles with a speed output are driven by it along their lanes (this step's traffic
+    // step comes after the brains).
+    if (m_traffic.system && !wb.vehicleSpeed.empty()) {
+        for (std::size_t v = 0; v < wb.vehicleSpeed.size(); ++v) {
+            const std::size_t i = m_traffic.vehicleAgent[v];
+            const detail::TypeBrain& tb = wb.types[m_info[i].typeIndex];
+            wb.vehicleSpeed[v] = tb.program && tb.speed ? tb.speed[wb.local[i]] : std::nanf("");
+        }
+        m_traffic.system->setBrainSpeeds(wb.vehicleSpeed);
+    }
     // Tags are published only once every type has sensed, so all read last step's values.
     for (detail::TypeBrain& tb : wb.types) {
         if (!tb.program)
@@ -287,7 +231,8 @@ std::size_t World::neighboursThisStep(std::size_t i, Neighbour* out)
 
 float World::brainSpeedCap(std::size_t i) const
 {
-    if (!m_brains || m_brains->local[i] < 0)
+    // A driven vehicle's brain speed went to the TrafficSystem, which moves it.
+    if (!m_brains || m_brains->local[i] < 0 || isDriven(i))
         return m_maxSpeed[i];
     const detail::TypeBrain& tb = m_brains->types[m_info[i].typeIndex];
     if (!tb.speed)

@@ -1,7 +1,8 @@
 #pragma once
 // Brains in the World, as the scene check sees them: compiles every brain of a scene
 // (with the scene's brains as the macro library) and reports, as file:line:col
-// diagnostics, compiler errors and sensors the World cannot provide yet. Never runs one.
+// diagnostics, compiler errors and sensors the World cannot fill (an attribute agents do
+// not have). Never runs one.
 
 #include "simcore/brain/BrainProgram.h"
 #include "simcore/io/Diagnostic.h"

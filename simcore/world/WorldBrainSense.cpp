@@ -1,10 +1,12 @@
 // The sense phase for brains: fills, for every agent of a brain-driven type, the sensor
 // columns its program lists, from the previous state only (positions, velocities, the
-// neighbour grid, walls, obstacles, crosswalk lights). Agents write only their own row.
+// neighbour grid, walls, obstacles, crosswalk and lane lights, heroes, sounds). Agents
+// write only their own row.
 #include "simcore/world/World.h"
 
 #include "simcore/world/detail/StepGeometry.h"
 #include "simcore/world/detail/WorldBrains.h"
+#include "simcore/world/detail/WorldSound.h"
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
@@ -67,7 +69,7 @@ void World::senseForBrain(TypeBrain& tb)
     bool needNeighbours = false, needFeelers = false;
     for (SensorFill f : tb.fills) {
         needNeighbours = needNeighbours || (f >= SensorFill::NeighbourCount && f <= SensorFill::VisionRight) ||
-                         f >= SensorFill::NeighbourDistance;
+                         (f >= SensorFill::NeighbourDistance && f <= SensorFill::NeighbourTag);
         needFeelers = needFeelers || (f >= SensorFill::FeelerLeft && f <= SensorFill::FeelerRight);
     }
     tb.gathersNeighbours = needNeighbours;
@@ -183,35 +185,57 @@ void World::senseForBrain(TypeBrain& tb)
             }
             case SensorFill::LightState:
             case SensorFill::StopLineDistance: {
-                // The stop line ahead: an end of a lit crosswalk this agent walks toward
-                // and has not passed; its light, and the gap from the body to the line.
                 float gap = kNoneM, light = 0.0f;
-                for (const CrosswalkBox& c : m_crosswalks) {
-                    if (c.light < 0)
-                        continue;
-                    const glm::vec2 ab = c.b - c.a;
-                    const float len = glm::length(ab);
-                    if (len <= 0.0f)
-                        continue;
-                    const glm::vec2 dir = ab / len;
-                    const float along = glm::dot(p - c.a, dir), across = std::fabs(cross(dir, p - c.a));
-                    if (across > c.halfWidth + kStopLineSideM)
-                        continue;
-                    float d = kNoneM;
-                    if (along < 0.0f && glm::dot(f, dir) > 0.0f)
-                        d = -along - m_radius[i];
-                    else if (along > len && glm::dot(f, dir) < 0.0f)
-                        d = along - len - m_radius[i];
-                    if (d < gap) {
-                        gap = d;
-                        light = 0.5f * float(lightState(std::size_t(c.light)));
+                if (const std::int32_t vehicle = m_brains->vehicleOf[i]; vehicle >= 0) {
+                    // A vehicle's stop line is the next one on its lane, from its front.
+                    const VehicleStopLine line = m_traffic.system->stopLineAhead(std::size_t(vehicle));
+                    if (line.found) {
+                        gap = line.distanceM;
+                        light = 0.5f * float(int(line.phase));
+                    }
+                } else {
+                    // The stop line ahead: an end of a lit crosswalk this agent walks toward
+                    // and has not passed; its light, and the gap from the body to the line.
+                    for (const CrosswalkBox& c : m_crosswalks) {
+                        if (c.light < 0)
+                            continue;
+                        const glm::vec2 ab = c.b - c.a;
+                        const float len = glm::length(ab);
+                        if (len <= 0.0f)
+                            continue;
+                        const glm::vec2 dir = ab / len;
+                        const float along = glm::dot(p - c.a, dir), across = std::fabs(cross(dir, p - c.a));
+                        if (across > c.halfWidth + kStopLineSideM)
+                            continue;
+                        float d = kNoneM;
+                        if (along < 0.0f && glm::dot(f, dir) > 0.0f)
+                            d = -along - m_radius[i];
+                        else if (along > len && glm::dot(f, dir) < 0.0f)
+                            d = along - len - m_radius[i];
+                        if (d < gap) {
+                            gap = d;
+                            light = 0.5f * float(lightState(std::size_t(c.light)));
+                        }
                     }
                 }
                 v = tb.fills[s] == SensorFill::LightState ? light : gap;
                 break;
             }
-            case SensorFill::HeroDistance: v = kNoneM; break;  // only scenes without heroes get here
-            case SensorFill::HeroBearing: v = 0.0f; break;
+            case SensorFill::HeroDistance:
+            case SensorFill::HeroBearing: {
+                // The nearest hero other than the agent itself, where it stood at the step's start.
+                float best = kNoneM, bearing = 0.0f;
+                for (const std::uint32_t h : m_traffic.heroAgent) {
+                    const glm::vec2 d = xz(m_pos[h]) - p;
+                    const float dist = glm::length(d);
+                    if (h != i && dist < best) {
+                        best = dist;
+                        bearing = dist > 0.0f ? bearingDeg(f, d) : 0.0f;
+                    }
+                }
+                v = tb.fills[s] == SensorFill::HeroDistance ? best : bearing;
+                break;
+            }
             case SensorFill::TerrainSlope: {
                 const float h0 = groundHeight(p.x, p.y), h1 = groundHeight(p.x + 0.5f * f.x, p.y + 0.5f * f.y);
                 v = glm::degrees(std::atan((h1 - h0) / 0.5f));
@@ -224,6 +248,12 @@ void World::senseForBrain(TypeBrain& tb)
             case SensorFill::AttrMaxForce: v = type.maxForce; break;
             case SensorFill::AttrPerception: v = type.perception; break;
             case SensorFill::AttrSpeedFactor: v = type.maxSpeed > 0.0f ? m_maxSpeed[i] / type.maxSpeed : 1.0f; break;
+            case SensorFill::SoundBearing:
+            case SensorFill::SoundDistance:
+            case SensorFill::SoundStrength:
+            case SensorFill::SoundSourceBearing:
+            case SensorFill::SoundSourceDistance:
+            case SensorFill::SoundSourceStrength: break;  // below, once per channel
             case SensorFill::NeighbourDistance:
             case SensorFill::NeighbourBearing:
             case SensorFill::NeighbourSpeed:
@@ -247,6 +277,32 @@ void World::senseForBrain(TypeBrain& tb)
                 }
                 break;
             }
+        }
+        // Sound: each channel the type hears once, then every sensor reading it.
+        for (const std::uint32_t c : tb.hears) {
+            HeardList heard;
+            const std::size_t loud = hearChannel(*m_brains, c, m_grid, m_info, i, p, f, heard);
+            for (std::size_t s = 0; s < sensors; ++s) {
+                const SensorFill fill = tb.fills[s];
+                if (!isSoundFill(fill) || tb.fillTag[s] != c)
+                    continue;
+                float* column = tb.columns[s].data();
+                switch (fill) {
+                case SensorFill::SoundBearing: column[k] = loud ? heard[0].bearingDeg : 0.0f; break;
+                case SensorFill::SoundDistance: column[k] = loud ? heard[0].distanceM : kNoneM; break;
+                case SensorFill::SoundStrength: column[k] = loud ? heard[0].strength : 0.0f; break;
+                default:
+                    for (std::size_t j = 0; j < kMaxHeard; ++j) {
+                        const Heard h = j < loud ? heard[j] : Heard{};
+                        column[k * kMaxHeard + j] = fill == SensorFill::SoundSourceBearing    ? h.bearingDeg
+                                                    : fill == SensorFill::SoundSourceDistance ? h.distanceM
+                                                                                              : h.strength;
+                    }
+                }
+            }
+            for (std::size_t set = 0; set < tb.itemCounts.size(); ++set)
+                if (tb.itemSetChannel[set] == std::int32_t(c))
+                    tb.itemCounts[set][k] = std::uint8_t(loud);
         }
     }
 }

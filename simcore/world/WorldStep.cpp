@@ -26,10 +26,11 @@ void World::step()
     if (!m_gridCurrent)
         m_grid.rebuild(m_pos, m_hasFliers);
     m_gridCurrent = false;
-    trafficBeforeStep();
-    // Brain: sensors from this (previous) state, then each type's program.
+    // Brain: sensors from this (previous) state, then each type's program; before the
+    // traffic step, which drives brain-driven vehicles by their brains' speeds.
     if (m_brains)
         runBrains();
+    trafficBeforeStep();
 
 #pragma omp parallel for schedule(static, 256) num_threads(m_threads)
     for (std::size_t i = 0; i < n; ++i) {

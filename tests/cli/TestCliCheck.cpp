@@ -71,7 +71,7 @@ private slots:
     }
 
     // A brain is compiled by check: a compiler error and a sensor the World cannot fill
-    // yet are errors at their nodes; run refuses the scene instead of running it silently.
+    // are errors at their nodes; run refuses the scene instead of running it silently.
     void brainErrorsNameTheNode()
     {
         QTemporaryDir tmp;
@@ -96,7 +96,8 @@ agents: [{type: w, position: [0, 0]}]
         QCOMPARE(r.status, 1);
         QVERIFY2(r.err.find("nothing was run") != std::string::npos, r.err.c_str());
 
-        // Fixed, the same brain still reads a sensor the World does not provide yet.
+        // Fixed, the sound sensor is fine (the World provides it); an attribute agents do
+        // not have is an error at its node.
         const QString fixed = throng::test::writeText(tmp.filePath("fixed.yaml"), R"(throng: 1
 agent_types: [{name: w, brain: deaf}]
 brains:
@@ -109,8 +110,21 @@ brains:
 agents: [{type: w, position: [0, 0]}]
 )");
         r = runCli({"check", fixed.toStdString()});
+        QCOMPARE(r.status, 0);
+        const QString vague = throng::test::writeText(tmp.filePath("vague.yaml"), R"(throng: 1
+agent_types: [{name: w, brain: vague}]
+brains:
+  - name: vague
+    nodes:
+      - {id: 1, type: input, params: {sensor: attribute, name: wingspan}}
+      - {id: 3, type: output, params: {channel: turn}}
+    links:
+      - {from: [1, 0], to: [3, 0]}
+agents: [{type: w, position: [0, 0]}]
+)");
+        r = runCli({"check", vague.toStdString()});
         QCOMPARE(r.status, 1);
-        QVERIFY2(r.err.find("fixed.yaml:6:9: error: brains[0]: node 1 (input): sensor 'sound_bearing' is not provided") !=
+        QVERIFY2(r.err.find("vague.yaml:6:9: error: brains[0]: node 1 (input): attribute 'wingspan' is not an agent attribute") !=
                      std::string::npos, r.err.c_str());
     }
 

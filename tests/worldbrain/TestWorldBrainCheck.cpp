@@ -25,8 +25,8 @@ Scene load(const std::string& yaml)
     return r.scene;
 }
 
-// Line 7 holds node 2, whose input 'x' nothing feeds; line 9 holds node 3, a sensor the
-// World does not provide yet (sound channels).
+// Line 7 holds node 2, whose input 'x' nothing feeds; line 14 holds node 1 of "vague",
+// an attribute agents do not have.
 const char* kBroken = R"(throng: 1
 agent_types: [{name: w, brain: broken}]
 brains:
@@ -38,9 +38,9 @@ brains:
       - {id: 3, type: input, params: {sensor: sound_bearing, channel: bell}}
     links:
       - {from: [2, 0], to: [4, 0]}
-  - name: deaf
+  - name: vague
     nodes:
-      - {id: 1, type: input, params: {sensor: sound_bearing, channel: bell}}
+      - {id: 1, type: input, params: {sensor: attribute, name: wingspan}}
       - {id: 2, type: output, params: {channel: turn}}
     links:
       - {from: [1, 0], to: [2, 0]}
@@ -75,24 +75,73 @@ private slots:
     void sensorTheWorldLacksIsAnErrorAtItsNode()
     {
         const std::vector<Diagnostic> d = checkSceneBrains(load(kBroken));
-        const Diagnostic* deaf = nullptr;
+        const Diagnostic* vague = nullptr;
         for (const Diagnostic& x : d)
             if (x.key == "brains[1]")
-                deaf = &x;
-        QVERIFY(deaf);
-        QCOMPARE(deaf->line, 14);
-        QVERIFY2(deaf->message.find("node 1 (input)") != std::string::npos, deaf->format().c_str());
-        QVERIFY2(deaf->message.find("sound_bearing") != std::string::npos, deaf->format().c_str());
-        QVERIFY2(deaf->message.find("not provided by the World") != std::string::npos, deaf->format().c_str());
+                vague = &x;
+        QVERIFY(vague);
+        QCOMPARE(vague->line, 14);
+        QVERIFY2(vague->message.find("node 1 (input)") != std::string::npos, vague->format().c_str());
+        QVERIFY2(vague->message.find("'wingspan' is not an agent attribute") != std::string::npos,
+                 vague->format().c_str());
+    }
+
+    void soundHeroAndVehicleLightSensorsAreProvided()
+    {
+        // Every sensor of the catalogue is filled by the World now, with or without heroes,
+        // sound sources or lanes in the scene.
+        const char* yaml = R"(throng: 1
+agent_types: [{name: w, brain: all}, {name: hero}]
+heroes: [{name: h, type: hero, keyframes: [{time: 0, position: [5, 0, 0]}]}]
+sound_sources: [{name: tower, channel: bell, position: [0, 9]}]
+brains:
+  - name: all
+    nodes:
+      - {id: 1, type: input, params: {sensor: sound_bearing, channel: bell}}
+      - {id: 2, type: input, params: {sensor: sound_source_strength, channel: bell}}
+      - {id: 3, type: filter, params: {mode: most}}
+      - {id: 4, type: input, params: {sensor: hero_distance}}
+      - {id: 5, type: input, params: {sensor: hero_bearing}}
+      - {id: 6, type: input, params: {sensor: light_state}}
+      - {id: 7, type: math.add}
+      - {id: 8, type: output, params: {channel: turn}}
+    links:
+      - {from: [2, 0], to: [3, 0]}
+      - {from: [1, 0], to: [7, 0]}
+      - {from: [3, 0], to: [7, 1]}
+      - {from: [4, 0], to: [7, 2]}
+      - {from: [5, 0], to: [7, 3]}
+      - {from: [6, 0], to: [7, 4]}
+      - {from: [7, 0], to: [8, 0]}
+agents: [{type: w, position: [0, 0]}]
+)";
+        const Scene s = load(yaml);
+        for (const Diagnostic& d : checkSceneBrains(s))
+            QFAIL(d.format().c_str());
+        const World world(s);
+        QVERIFY(world.brainErrors().empty());
+        QVERIFY(world.brainEvaluator(0) != nullptr);
+
+        // Without the bell tower nothing sounds on "bell": a warning at the first node
+        // that listens to it (line 8: node 1), once per channel; the brain still runs.
+        Scene quiet = s;
+        quiet.soundSources.clear();
+        const std::vector<Diagnostic> d = checkSceneBrains(quiet);
+        QCOMPARE(d.size(), std::size_t(1));
+        QCOMPARE(d[0].severity, Severity::Warning);
+        QCOMPARE(d[0].line, 8);
+        QVERIFY2(d[0].message.find("node 1 (input): nothing is heard on channel 'bell'") != std::string::npos,
+                 d[0].format().c_str());
+        QVERIFY(World(quiet).brainErrors().empty());
     }
 
     void worldRefusesABrainItCannotRun()
     {
         Scene s = load(kBroken);
-        s.agentTypes[0].brain = "deaf";
+        s.agentTypes[0].brain = "vague";
         const World world(s);
         QCOMPARE(world.brainErrors().size(), std::size_t(1));
-        QVERIFY(world.brainErrors()[0].find("sound_bearing") != std::string::npos);
+        QVERIFY(world.brainErrors()[0].find("wingspan") != std::string::npos);
         QVERIFY(world.brainEvaluator(0) == nullptr);
     }
 

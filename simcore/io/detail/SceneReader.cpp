@@ -24,7 +24,7 @@ void SceneReader::read(const YAML::Node& root, Scene& scene)
 {
     m_f.checkKeys(root, "", {"throng", "settings", "brains", "agent_types", "agents", "groups", "paths",
                              "walls", "obstacles", "goals", "terrain", "flow_strokes", "lanes", "crosswalks",
-                             "traffic_lights", "vehicles", "heroes"});
+                             "traffic_lights", "vehicles", "heroes", "sound_sources"});
     std::uint64_t version = 0;
     if (m_f.readUInt(root, "throng", "", version, true, 1'000'000) && version != Scene::kFormatVersion)
         m_f.error(root["throng"].Mark(), "throng",
@@ -66,6 +66,8 @@ void SceneReader::read(const YAML::Node& root, Scene& scene)
         readVehicles(n, scene);
     if (auto n = section("heroes"); n.IsDefined())
         readHeroes(n, scene);
+    if (auto n = section("sound_sources"); n.IsDefined())
+        readSoundSources(n, scene);
     assignMissingIds(scene);
     // Leaders are checked last: any placed agent, vehicle or hero may lead.
     std::set<std::uint32_t> all;
@@ -224,7 +226,7 @@ void SceneReader::readAgentTypes(const YAML::Node& node, Scene& scene)
             continue;
         m_f.checkKeys(item, key, {"name", "kind", "radius", "max_speed", "max_force", "mass", "perception",
                                   "view_angle", "brain", "character", "clips", "variation", "behaviours", "combination",
-                                  "min_speed", "banking"});
+                                  "min_speed", "banking", "emits"});
         AgentType t;
         if (!m_f.readName(item, "name", key, t.name, true))
             continue;
@@ -281,6 +283,8 @@ void SceneReader::readAgentTypes(const YAML::Node& node, Scene& scene)
         if (m_f.readFloat(item, "min_speed", key, t.minSpeed, false, Range::NonNegative) && t.minSpeed > t.maxSpeed)
             m_f.error(item["min_speed"].Mark(), key + ".min_speed", "is above max_speed");
         m_f.readFloat(item, "banking", key, t.banking, false, Range::NonNegative);
+        if (YAML::Node e = item["emits"]; e.IsDefined())
+            readEmission(e, key + ".emits", t.emits);
         for (const char* flierOnly : {"min_speed", "banking"})
             if (t.kind != AgentKind::Flier && item[flierOnly].IsDefined())
                 m_f.warning(item[flierOnly].Mark(), key + "." + flierOnly,

@@ -10,6 +10,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -21,7 +22,30 @@ enum class SensorFill : std::uint8_t {
     NearestDistance, NearestBearing, VisionLeft, VisionCentre, VisionRight, FeelerLeft, FeelerCentre,
     FeelerRight, WallDistance, LightState, StopLineDistance, HeroDistance, HeroBearing, TerrainSlope, Time,
     AttrMaxSpeed, AttrRadius, AttrMass, AttrMaxForce, AttrPerception, AttrSpeedFactor,
+    SoundBearing, SoundDistance, SoundStrength,
     NeighbourDistance, NeighbourBearing, NeighbourSpeed, NeighbourHeading, NeighbourTag,  // per neighbour: last
+    SoundSourceBearing, SoundSourceDistance, SoundSourceStrength,                         // per source
+};
+
+// The column the World fills for a sensor a program reads; none for an unknown one
+// (WorldBrainCheck.cpp).
+std::optional<SensorFill> sensorFillFor(const BrainSensorUse& use);
+
+inline bool isSoundFill(SensorFill f)
+{
+    return (f >= SensorFill::SoundBearing && f <= SensorFill::SoundStrength) || f >= SensorFill::SoundSourceBearing;
+}
+
+// A fixed sound source of one channel.
+struct Beacon {
+    float x, z, strength, radiusM;
+};
+
+// Everything heard on one channel: its beacons and the agent types that emit on it.
+struct SoundChannel {
+    std::string name;
+    std::vector<Beacon> beacons;
+    float agentReachM = 0.0f;  // the largest radius an agent type emits with on it (0 = none)
 };
 
 struct TypeBrain {
@@ -30,6 +54,10 @@ struct TypeBrain {
     std::vector<std::uint32_t> agents;            // World indices of this type's agents
     std::vector<SensorFill> fills;                // parallel to program->sensors
     std::vector<std::uint32_t> fillTag;           // parallel to fills: NeighbourTag's index into WorldBrains::tags
+                                                  // (sound fills: the channel's index into WorldBrains::channels)
+    std::vector<std::uint32_t> hears;             // channels (WorldBrains::channels) its sound sensors read
+    std::vector<std::vector<std::uint8_t>> itemCounts;  // parallel to program->itemSets (sound sets only)
+    std::vector<std::int32_t> itemSetChannel;     // parallel to program->itemSets: its channel, -1 = neighbours
     std::vector<std::pair<std::uint32_t, const float*>> tagOutputs;  // tag index -> last evaluate's column
     std::vector<std::vector<float>> columns;      // parallel to program->sensors
     std::vector<std::uint8_t> neighbourCount;     // per agent of the type
@@ -53,6 +81,11 @@ struct WorldBrains {
     std::vector<std::string> errors;   // why a brain does not run (the type then steers without it)
     std::vector<std::string> tags;                 // every tag a brain publishes or senses
     std::vector<std::vector<float>> tagValues;     // per tag, per agent: published at the last step (0 = none)
+    std::vector<SoundChannel> channels;            // every channel a brain listens to
+    std::vector<std::int32_t> typeEmits;           // per type: its channel in `channels`, -1 = silent or unheard
+    std::vector<float> typeEmitStrength, typeEmitRadiusM;  // per type
+    std::vector<std::int32_t> vehicleOf;           // per agent: its TrafficSystem vehicle, -1 = none
+    std::vector<float> vehicleSpeed;               // per vehicle: the speed its brain wants, NaN = no brain
 };
 
 }  // namespace throng::sim::detail
