@@ -8,6 +8,9 @@ enum CommandId : int {
     kPaintAgentsId = 1,
     kEraseAgentsId,
     kChangeValueId,
+    kChangeAgentsId,
+    kMoveItemsId,
+    kEditPathPointsId,
 };
 
 }  // namespace throng::editor
