@@ -33,8 +33,8 @@ void box(std::vector<GlyphVertex>& out, glm::vec3 lo, glm::vec3 hi, GlyphPart si
 
 void headlights(std::vector<GlyphVertex>& out, float y)
 {
-    rect(out, kL - 0.16f, kL, -0.72f, -0.42f, y, GlyphPart::Nose);
-    rect(out, kL - 0.16f, kL, 0.42f, 0.72f, y, GlyphPart::Nose);
+    rect(out, kL - 0.14f, kL, -0.7f, -0.4f, y, GlyphPart::Nose);
+    rect(out, kL - 0.14f, kL, 0.4f, 0.7f, y, GlyphPart::Nose);
 }
 
 }  // namespace
@@ -43,8 +43,8 @@ std::vector<GlyphVertex> CarGlyphMesh::flat()
 {
     std::vector<GlyphVertex> out;
     rect(out, -kL, kL, -kW, kW, 0.0f, GlyphPart::Body);
-    rect(out, 0.45f, 0.95f, -0.7f, 0.7f, 0.0f, GlyphPart::Rim);   // windscreen
-    rect(out, -1.35f, -1.05f, -0.7f, 0.7f, 0.0f, GlyphPart::Rim); // rear window
+    rect(out, 0.45f, 0.85f, -0.68f, 0.68f, 0.0f, GlyphPart::Rim);   // windscreen
+    rect(out, -1.2f, -0.95f, -0.68f, 0.68f, 0.0f, GlyphPart::Rim);  // rear window
     headlights(out, 0.0f);
     return out;
 }
@@ -53,7 +53,7 @@ std::vector<GlyphVertex> CarGlyphMesh::solid()
 {
     std::vector<GlyphVertex> out;
     box(out, {-kL, 0.0f, -kW}, {kL, kBodyTop, kW}, GlyphPart::Body, GlyphPart::Body);
-    box(out, {-1.35f, kBodyTop, -0.72f}, {0.95f, kCabinTop, 0.72f}, GlyphPart::Rim, GlyphPart::Body);
+    box(out, {-1.09f, kBodyTop, -0.72f}, {0.82f, kCabinTop, 0.72f}, GlyphPart::Rim, GlyphPart::Body);
     headlights(out, kBodyTop + 0.005f);
     return out;
 }

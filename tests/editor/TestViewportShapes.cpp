@@ -1,4 +1,4 @@
-// What the viewport draws beyond bodies and walls: a car as a long box along its lane
+// What the viewport draws beyond bodies and walls: a car as a 4.2 m box along its lane
 // (not a disc), the selection outlined in the selection colour, and flow strokes as
 // arrows on a coarse grid within their width.
 #include "EditorTestSupport.h"
@@ -66,7 +66,7 @@ private slots:
         QCOMPARE(viewport.agentCount(), std::size_t(1));
         const glm::vec4 body = palette::agentColour(0);
         auto at = [&](float x, float z) { return pixelAt(image, viewport, viewport.worldToPixel({x, 0.0f, z})); };
-        // 4.4 m long and 1.8 m wide: bonnet and boot reach 1.6 m ahead and behind, beyond
+        // 4.2 m long and 1.76 m wide: bonnet and boot reach 1.6 m ahead and behind, beyond
         // the 1.1 m radius a disc would have; the sides stop short of it.
         for (glm::vec2 p : {glm::vec2(1.6f, 0.0f), glm::vec2(-1.8f, 0.0f), glm::vec2(0.0f, 0.7f), glm::vec2(0.0f, -0.7f)})
             QVERIFY2(sameColour(at(p.x, p.y), body), qPrintable(describe(at(p.x, p.y)) + QString(" at %1, %2").arg(p.x).arg(p.y)));
