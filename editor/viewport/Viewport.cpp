@@ -128,6 +128,7 @@ void Viewport::setSet(const sim::Scene& scene)
     m_traffic.crosswalks = scene.crosswalks;
     m_traffic.trafficLights = scene.trafficLights;
     m_terrain = scene.terrain;
+    m_agentColours.setScene(scene);
     m_typeRadiusM.clear();
     m_typeIsVehicle.clear();
     for (const sim::AgentType& t : scene.agentTypes) {
@@ -146,6 +147,7 @@ void Viewport::setAgents(std::span<const sim::AgentFrame> frames, std::span<cons
                          std::optional<double> timeS, std::size_t frameIndex)
 {
     const std::size_t n = std::min(frames.size(), agents.size());
+    const std::vector<glm::vec3>& colours = m_agentColours.coloursFor(agents.first(n));
     m_glyphs.clear();
     m_carGlyphs.clear();
     m_glyphs.reserve(n);
@@ -153,9 +155,8 @@ void Viewport::setAgents(std::span<const sim::AgentFrame> frames, std::span<cons
     for (std::size_t i = 0; i < n; ++i) {
         const std::size_t type = agents[i].typeIndex;
         const float radius = type < m_typeRadiusM.size() ? m_typeRadiusM[type] : kFallbackRadiusM;
-        const glm::vec4 colour = palette::agentColour(type);
         const bool car = type < m_typeIsVehicle.size() && m_typeIsVehicle[type];
-        (car ? m_carGlyphs : m_glyphs).push_back({frames[i].position, frames[i].headingRad, radius, glm::vec3(colour)});
+        (car ? m_carGlyphs : m_glyphs).push_back({frames[i].position, frames[i].headingRad, radius, colours[i]});
         m_agentBox.include({frames[i].position.x, frames[i].position.z}, radius);
     }
     m_agentsChanged = true;

@@ -5,6 +5,7 @@
 
 #include "editor/SceneItem.h"
 #include "editor/tools/ViewportTool.h"
+#include "editor/viewport/AgentColours.h"
 #include "editor/viewport/AgentRenderer.h"
 #include "editor/viewport/CameraRig.h"
 #include "editor/viewport/GridRenderer.h"
@@ -122,6 +123,7 @@ private:
     sim::Terrain m_terrain;
     std::vector<float> m_typeRadiusM;   // by Scene::agentTypes index
     std::vector<bool> m_typeIsVehicle;  // by Scene::agentTypes index
+    AgentColours m_agentColours;
     glm::vec2 m_boundsMin{-50.0f}, m_boundsMax{50.0f};
     GroundBox m_setBox, m_agentBox;
     std::optional<double> m_timeS;

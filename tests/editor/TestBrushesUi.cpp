@@ -3,6 +3,7 @@
 // and drag over part of the crowd. Checks what the user would: the agents under the
 // stroke changed and the others did not, one undo step restores them, redo again, and
 // a hand-set variation survives save and reopen.
+#include "EditorTestSupport.h"
 #include "EditorUiDriver.h"
 #include "TestRegistry.h"
 
@@ -145,6 +146,16 @@ private slots:
             }
         }
         QVERIFY2(varied >= 5 && untouched >= 20, qPrintable(QString("%1 varied, %2 untouched").arg(varied).arg(untouched)));
+        // The viewport shows the varied agents in tint 2 of their palette.
+        const glm::vec3 tint2 = window.document().scene().agentTypes[0].variation.tints[2];
+        QTest::qWait(50);
+        const QImage shown = window.viewport().grabFramebuffer();
+        std::size_t inTint = 0;
+        for (std::size_t i = 0; i < after.size(); ++i)
+            if (after[i].tint == 2)
+                inTint += sameColour(pixelAt(shown, window.viewport(), window.viewport().worldToPixel(after[i].position)),
+                                     glm::vec4(tint2, 1.0f), 16);
+        QVERIFY2(inTint * 4 >= varied * 3, qPrintable(QString("%1 of %2 shown in the tint").arg(inTint).arg(varied)));
         QVERIFY(window.document().undoStack()->text(1).startsWith("Vary"));
         QTest::keyClick(&window.viewport(), Qt::Key_Z, Qt::ControlModifier);
         QTRY_VERIFY(window.document().scene().agents == before);
