@@ -10,7 +10,6 @@ enum CommandId : int {
     kChangeValueId,
     kChangeAgentsId,
     kMoveItemsId,
-    kEditPathPointsId,
 };
 
 }  // namespace throng::editor
