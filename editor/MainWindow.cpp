@@ -6,6 +6,7 @@
 #include "editor/panels/OutlinerPanel.h"
 #include "editor/panels/PropertiesPanel.h"
 #include "editor/panels/TimelinePanel.h"
+#include "editor/simulation/SimulateToEndDialog.h"
 #include "editor/simulation/SimulationController.h"
 #include "editor/tools/ToolManager.h"
 #include "editor/viewport/Viewport.h"
@@ -48,11 +49,14 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
     connect(&m_document, &SceneDocument::sceneReset, this, [this] {
         m_editTimer->stop();
         m_viewport->setScene(m_document.scene());
+        m_viewport->setHighlight(m_document.scene(), m_document.selection());
         m_simulation->setScene(m_document.scene());
     });
     // A brush stroke edits many times between two paints: refresh once per burst.
     connect(&m_document, &SceneDocument::sceneChanged, m_editTimer, qOverload<>(&QTimer::start));
     connect(m_editTimer, &QTimer::timeout, this, &MainWindow::refreshAfterEdit);
+    connect(&m_document, &SceneDocument::selectionChanged, this,
+            [this] { m_viewport->setHighlight(m_document.scene(), m_document.selection()); });
     connect(&m_document, &SceneDocument::filePathChanged, this, &MainWindow::updateTitle);
     connect(&m_document, &SceneDocument::modifiedChanged, this, &QWidget::setWindowModified);
     connect(m_viewport, &Viewport::agentsChanged, this, &MainWindow::updateAgentStatus);
@@ -165,14 +169,18 @@ void MainWindow::createSimulationMenu()
         &SimulationController::togglePlay);
     add(tr("&Step"), QKeySequence(Qt::Key_Period), tr("Advance one frame"), &SimulationController::stepForward);
     add(tr("&Restart"), QKeySequence(Qt::Key_Home), tr("Back to frame 0"), &SimulationController::restart);
-    add(tr("Simulate to &End"), QKeySequence(tr("Ctrl+E")), tr("Record every frame in the background"),
-        &SimulationController::simulateToEnd);
+    QAction* toEnd = menu->addAction(tr("Simulate to &End"), this, [this] { new SimulateToEndDialog(*m_simulation, this); });
+    toEnd->setObjectName("simulateToEndAction");
+    toEnd->setShortcut(QKeySequence(tr("Ctrl+E")));
+    toEnd->setToolTip(tr("Record every frame, with progress and Cancel"));
     menu->setToolTipsVisible(true);
 }
 
 void MainWindow::createToolBars()
 {
-    QToolBar* tools = addToolBar(tr("Tools"));
+    // Down the left side: a column has room for every tool, a row would hide some.
+    auto* tools = new QToolBar(tr("Tools"), this);
+    addToolBar(Qt::LeftToolBarArea, tools);
     tools->setObjectName("toolsToolBar");
     tools->setToolButtonStyle(Qt::ToolButtonTextOnly);
     QToolBar* options = addToolBar(tr("Tool Options"));
@@ -204,7 +212,11 @@ void MainWindow::createStatusBar()
 void MainWindow::refreshAfterEdit()
 {
     m_viewport->updateScene(m_document.scene());
+    m_viewport->setHighlight(m_document.scene(), m_document.selection());
     m_simulation->setScene(m_document.scene());
+    // An edit the simulation does not read keeps the recording: stay on the shown frame.
+    if (m_simulation->currentFrame() < m_simulation->recordedFrames())
+        m_viewport->showFrame(m_simulation->cache(), m_simulation->currentFrame());
 }
 
 void MainWindow::updateAgentStatus()

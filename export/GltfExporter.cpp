@@ -207,10 +207,19 @@ ExportResult exportGltf(const sim::Scene& scene, const sim::FrameCache& cache, c
     detail::AnimationChannels channels(builder, model.animations[0], pairClock);
     detail::CompactCycles cycles(builder, library);
 
+    // Placed agents may carry a hand-set look, tint or height (the variation brush).
+    std::map<std::uint32_t, const sim::Agent*> placed;
+    for (const sim::Agent& a : scene.agents)
+        if (a.look >= 0 || a.tint >= 0 || a.heightScale > 0.0f)
+            placed.emplace(a.id, &a);
     auto variationOf = [&](std::size_t i) {
         const sim::AgentInfo& info = cache.agents()[i];
         const sim::AgentType& type = scene.agentTypes[info.typeIndex];
-        return drawVariation(type.variation, seed, info.id, library.looksOf(info.typeIndex).size());
+        const std::size_t looks = library.looksOf(info.typeIndex).size();
+        AgentVariation v = drawVariation(type.variation, seed, info.id, looks);
+        if (const auto it = placed.find(info.id); it != placed.end())
+            applyHandSetVariation(v, *it->second, looks, type.variation.tints.size());
+        return v;
     };
     // One agent's motion, gait and (exact) baked joints: pure, so blocks of agents run on
     // all threads, and the model is then appended to in agent order, whatever the count.

@@ -8,6 +8,8 @@ enum CommandId : int {
     kPaintAgentsId = 1,
     kEraseAgentsId,
     kChangeValueId,
+    kChangeAgentsId,
+    kMoveItemsId,
 };
 
 }  // namespace throng::editor

@@ -19,8 +19,38 @@ SimulationController::~SimulationController()
     m_runner.stop();
 }
 
+namespace {
+
+// True when the two scenes simulate alike: they differ at most in placed agents' hand-set
+// look, tint and height, which only export reads.
+bool sameSimulation(const sim::Scene& a, const sim::Scene& b)
+{
+    if (a.agents.size() != b.agents.size())
+        return false;
+    for (std::size_t i = 0; i < a.agents.size(); ++i) {
+        sim::Agent x = a.agents[i];
+        x.look = b.agents[i].look;
+        x.tint = b.agents[i].tint;
+        x.heightScale = b.agents[i].heightScale;
+        if (!(x == b.agents[i]))
+            return false;
+    }
+    sim::Scene restA = a, restB = b;
+    restA.agents.clear();
+    restB.agents.clear();
+    return restA == restB;
+}
+
+}  // namespace
+
 void SimulationController::setScene(const sim::Scene& scene)
 {
+    if (m_hasScene && sameSimulation(m_scene, scene)) {
+        m_scene = scene;
+        return;
+    }
+    m_scene = scene;
+    m_hasScene = true;
     pause();
     m_stepPending = false;
     m_cache = {};

@@ -1,7 +1,8 @@
 #pragma once
 // Live simulation for the editor: runs the document's scene on a SimulationRunner
 // thread into a FrameCache and plays, pauses, steps, loops and scrubs it. Editing the
-// scene (setScene) throws the recorded frames away. Never draws and never edits the scene.
+// scene (setScene) throws the recorded frames away when the edit changes the simulation.
+// Never draws and never edits the scene.
 
 #include "editor/simulation/SimulationRunner.h"
 #include "simcore/scene/Scene.h"
@@ -23,7 +24,9 @@ public:
     ~SimulationController() override;
 
     // The scene to simulate from now on: every recorded frame is dropped, playback
-    // pauses at frame 0.
+    // pauses at frame 0 -- unless the edit changed nothing the simulation reads (a
+    // placed agent's hand-set look, tint or height): then the frames and the playback
+    // stay as they are.
     void setScene(const sim::Scene& scene);
 
     void play();
@@ -36,6 +39,8 @@ public:
     void seek(std::size_t frame);
     // Records every frame of the scene's duration in the background.
     void simulateToEnd();
+    // Stops recording ahead: frames already recorded stay (Cancel of Simulate to End).
+    void stopRecording() { m_runner.stopAhead(); }
     // Records frames in the background until `frameCount` exist (export asks for these).
     void requestFrames(std::size_t frameCount) { m_runner.setTarget(std::min(frameCount, m_totalFrames)); }
 
@@ -62,6 +67,8 @@ private:
     void setCurrent(std::size_t frame);
 
     SimulationRunner m_runner;
+    sim::Scene m_scene;  // what the recorded frames were simulated from
+    bool m_hasScene = false;
     sim::FrameCache m_cache;
     QTimer m_timer;
     std::size_t m_current = 0;

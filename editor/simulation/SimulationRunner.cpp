@@ -51,6 +51,12 @@ void SimulationRunner::setTarget(std::size_t frameCount)
     m_wake.notify_all();
 }
 
+void SimulationRunner::stopAhead()
+{
+    std::lock_guard lock(m_mutex);
+    m_target = 0;
+}
+
 SimulationRunner::Batch SimulationRunner::takeFrames()
 {
     std::lock_guard lock(m_mutex);

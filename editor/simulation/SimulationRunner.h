@@ -29,6 +29,8 @@ public:
     void stop();
     // Computes frames until `frameCount` frames exist (including frame 0).
     void setTarget(std::size_t frameCount);
+    // Computes nothing more until the next setTarget; frames already made stay.
+    void stopAhead();
 
     struct Batch {
         std::vector<sim::AgentInfo> agents;  // set with frame 0 only

@@ -1,10 +1,16 @@
 #include "editor/tools/SelectTool.h"
 
+#include "editor/SceneDocument.h"
 #include "editor/commands/ChangeValueCommand.h"
+#include "editor/commands/MoveItemsCommand.h"
 #include "editor/tools/BrushOverlay.h"
+#include "editor/tools/SelectionGeometry.h"
 #include "editor/viewport/Viewport.h"
 
+#include <QKeyEvent>
 #include <QPainter>
+#include <QPolygonF>
+#include <QRectF>
 
 #include <algorithm>
 #include <cmath>
@@ -13,106 +19,229 @@ namespace throng::editor {
 
 namespace {
 
-std::optional<glm::vec2> itemPosition(const sim::Scene& s, SceneItem item)
+constexpr ItemKind kPointKinds[] = {ItemKind::Agent, ItemKind::Obstacle, ItemKind::Goal, ItemKind::TrafficLight};
+constexpr ItemKind kLineKinds[] = {ItemKind::Path, ItemKind::Wall, ItemKind::Lane};
+constexpr double kClickPx = 3.0;  // a box smaller than this is a click
+
+double distancePx(QPointF a, QPointF b)
 {
-    switch (item.kind) {
-    case ItemKind::Agent: return glm::vec2(s.agents[item.index].position.x, s.agents[item.index].position.z);
-    case ItemKind::Obstacle: return s.obstacles[item.index].center;
-    case ItemKind::Goal: return s.goals[item.index].position;
-    case ItemKind::TrafficLight: return s.trafficLights[item.index].position;
-    default: return std::nullopt;
-    }
+    return std::hypot(a.x() - b.x(), a.y() - b.y());
+}
+
+// Distance in pixels from `p` to the segment ab.
+double segmentDistancePx(QPointF p, QPointF a, QPointF b)
+{
+    const QPointF ab = b - a;
+    const double len2 = QPointF::dotProduct(ab, ab);
+    const double t = len2 > 0.0 ? std::clamp(QPointF::dotProduct(p - a, ab) / len2, 0.0, 1.0) : 0.0;
+    return distancePx(p, a + t * ab);
 }
 
 }  // namespace
+
+QPointF SelectTool::pixelOf(glm::vec2 ground) const
+{
+    return viewport().worldToPixel({ground.x, 0.0f, ground.y});
+}
 
 std::optional<SceneItem> SelectTool::pick(QPointF pixel) const
 {
     const sim::Scene& s = document().scene();
     std::optional<SceneItem> best;
     double bestPx = kPickPx;
-    for (ItemKind kind : {ItemKind::Agent, ItemKind::Obstacle, ItemKind::Goal, ItemKind::TrafficLight}) {
+    for (ItemKind kind : kPointKinds)
         for (std::size_t i = 0; i < itemCount(s, kind); ++i) {
-            const glm::vec2 p = *itemPosition(s, {kind, i});
-            const QPointF at = viewport().worldToPixel({p.x, 0.0f, p.y});
-            const double d = std::hypot(at.x() - pixel.x(), at.y() - pixel.y());
+            const double d = distancePx(pixelOf(*itemAnchor(s, {kind, i})), pixel);
             if (d < bestPx) {
                 bestPx = d;
                 best = SceneItem{kind, i};
             }
         }
-    }
+    if (best)
+        return best;
+    for (ItemKind kind : kLineKinds)
+        for (std::size_t i = 0; i < itemCount(s, kind); ++i) {
+            const std::span<const glm::vec2> line = itemPolyline(s, {kind, i});
+            for (std::size_t k = 1; k < line.size(); ++k) {
+                const double d = segmentDistancePx(pixel, pixelOf(line[k - 1]), pixelOf(line[k]));
+                if (d < bestPx) {
+                    bestPx = d;
+                    best = SceneItem{kind, i};
+                }
+            }
+        }
     return best;
+}
+
+bool SelectTool::pressHandle(const ToolMouse& mouse)
+{
+    for (const EditHandle& h : editHandles(document().scene(), document().selection()))
+        if (distancePx(pixelOf(h.ground), mouse.pixel) <= kHandlePx) {
+            m_drag = h.kind == EditHandle::Kind::Point ? Drag::Point : Drag::Radius;
+            m_handleItem = h.item;
+            m_handlePoint = h.point;
+            return true;
+        }
+    return false;
 }
 
 void SelectTool::mousePressed(const ToolMouse& mouse)
 {
+    m_pushed = false;
+    ++m_dragSerial;
+    setState(State::Dragging);
+    if (mouse.ground)
+        m_lastGround = {mouse.ground->x, mouse.ground->z};
+    if (mouse.ground && pressHandle(mouse))
+        return;
     const std::optional<SceneItem> hit = pick(mouse.pixel);
-    Selection selection = (mouse.modifiers & Qt::ShiftModifier) ? document().selection() : Selection{};
-    if (hit && std::find(selection.begin(), selection.end(), *hit) == selection.end())
-        selection.push_back(*hit);
-    document().setSelection(selection);
-    m_dragged = hit;
-    if (hit && mouse.ground) {
-        m_grabOffset = *itemPosition(document().scene(), *hit) - glm::vec2(mouse.ground->x, mouse.ground->z);
-        ++m_dragSerial;
-        setState(State::Dragging);
+    if (!hit) {
+        m_drag = Drag::Box;
+        m_boxStart = m_boxEnd = mouse.pixel;
+        emit overlayChanged();
+        return;
     }
+    Selection selection = document().selection();
+    const bool selected = std::find(selection.begin(), selection.end(), *hit) != selection.end();
+    if (mouse.modifiers & Qt::ShiftModifier) {
+        if (!selected)
+            selection.push_back(*hit);
+    } else if (!selected) {
+        selection = {*hit};
+    }
+    document().setSelection(selection);
+    m_drag = mouse.ground ? Drag::Move : Drag::None;
     emit overlayChanged();
 }
 
 void SelectTool::mouseMoved(const ToolMouse& mouse)
 {
-    if (state() == State::Dragging && m_dragged && mouse.ground)
-        moveTo(glm::vec2(mouse.ground->x, mouse.ground->z) + m_grabOffset);
+    if (state() == State::Dragging)
+        dragTo(mouse);
+}
+
+void SelectTool::dragTo(const ToolMouse& mouse)
+{
+    if (m_drag == Drag::Box) {
+        m_boxEnd = mouse.pixel;
+        emit overlayChanged();
+        return;
+    }
+    if (!mouse.ground || m_drag == Drag::None)
+        return;
+    const glm::vec2 ground(mouse.ground->x, mouse.ground->z);
+    QUndoStack* stack = document().undoStack();
+    const sim::Scene& scene = document().scene();
+    if (m_drag == Drag::Move) {
+        const glm::vec2 delta = ground - m_lastGround;
+        if (delta == glm::vec2(0.0f))
+            return;
+        m_lastGround = ground;
+        stack->push(new MoveItemsCommand(document(), document().selection(), delta, m_dragSerial));
+        m_pushed = true;
+    } else if (m_drag == Drag::Point) {
+        std::span<const glm::vec2> line = itemPolyline(scene, m_handleItem);
+        if (m_handlePoint >= line.size())
+            return;
+        std::vector<glm::vec2> points(line.begin(), line.end());
+        points[m_handlePoint] = ground;
+        const SceneItem item = m_handleItem;
+        const QString key = QStringLiteral("points/%1/%2/%3").arg(int(item.kind)).arg(item.index).arg(m_dragSerial);
+        auto locate = [item](sim::Scene& s) -> std::vector<glm::vec2>& {
+            return item.kind == ItemKind::Path ? s.paths[item.index].points
+                   : item.kind == ItemKind::Wall ? s.walls[item.index].points
+                                                 : s.lanes[item.index].points;
+        };
+        stack->push(new ChangeValueCommand<std::vector<glm::vec2>>(
+            document(), key, locate, std::move(points), tr("Edit %1").arg(itemLabel(scene, item))));
+        m_pushed = true;
+    } else if (m_drag == Drag::Radius) {
+        const std::size_t i = m_handleItem.index;
+        const float radius = std::max(0.05f, polylineDistance(scene.paths[i].points, ground));
+        const QString key = QStringLiteral("pathRadius/%1/%2").arg(i).arg(m_dragSerial);
+        stack->push(new ChangeValueCommand<float>(
+            document(), key, [i](sim::Scene& s) -> float& { return s.paths[i].radiusM; }, radius,
+            tr("Change radius of %1").arg(itemLabel(scene, m_handleItem))));
+        m_pushed = true;
+    }
+    emit overlayChanged();
 }
 
 void SelectTool::mouseReleased(const ToolMouse& mouse)
 {
-    mouseMoved(mouse);
-    m_dragged.reset();
+    if (state() != State::Dragging)
+        return;
+    dragTo(mouse);
+    if (m_drag == Drag::Box)
+        finishBox(mouse.modifiers);
+    m_drag = Drag::None;
     setState(State::Idle);
+    emit overlayChanged();
+}
+
+void SelectTool::finishBox(Qt::KeyboardModifiers modifiers)
+{
+    Selection selection = (modifiers & Qt::ShiftModifier) ? document().selection() : Selection{};
+    if (distancePx(m_boxStart, m_boxEnd) >= kClickPx) {
+        const QRectF box = QRectF(m_boxStart, m_boxEnd).normalized();
+        const sim::Scene& s = document().scene();
+        auto add = [&selection](SceneItem item) {
+            if (std::find(selection.begin(), selection.end(), item) == selection.end())
+                selection.push_back(item);
+        };
+        for (ItemKind kind : kPointKinds)
+            for (std::size_t i = 0; i < itemCount(s, kind); ++i)
+                if (box.contains(pixelOf(*itemAnchor(s, {kind, i}))))
+                    add({kind, i});
+        for (ItemKind kind : kLineKinds)
+            for (std::size_t i = 0; i < itemCount(s, kind); ++i) {
+                const std::span<const glm::vec2> line = itemPolyline(s, {kind, i});
+                if (!line.empty() && std::all_of(line.begin(), line.end(),
+                                                 [&](glm::vec2 p) { return box.contains(pixelOf(p)); }))
+                    add({kind, i});
+            }
+    }
+    document().setSelection(selection);
+}
+
+bool SelectTool::keyPressed(QKeyEvent* event)
+{
+    if (event->key() != Qt::Key_Escape || state() != State::Dragging)
+        return false;
+    cancel();
+    return true;
 }
 
 void SelectTool::cancel()
 {
-    m_dragged.reset();
+    // A drag pushes as it goes: taking it back leaves the scene as before the drag.
+    if (state() == State::Dragging && m_pushed && m_drag != Drag::Box)
+        document().undoStack()->undo();
+    m_pushed = false;
+    m_drag = Drag::None;
     setState(State::Idle);
-}
-
-void SelectTool::moveTo(glm::vec2 to)
-{
-    const SceneItem item = *m_dragged;
-    const std::size_t i = item.index;
-    // One key per drag: the moves of one drag merge into a single undo step.
-    const QString key = QStringLiteral("move/%1/%2/%3").arg(int(item.kind)).arg(i).arg(m_dragSerial);
-    const QString text = tr("Move %1").arg(itemLabel(document().scene(), item));
-    QUndoStack* stack = document().undoStack();
-    if (item.kind == ItemKind::Agent) {
-        const glm::vec3 old = document().scene().agents[i].position;
-        stack->push(new ChangeValueCommand<glm::vec3>(
-            document(), key, [i](sim::Scene& s) -> glm::vec3& { return s.agents[i].position; },
-            glm::vec3(to.x, old.y, to.y), text));
-        return;
-    }
-    ChangeValueCommand<glm::vec2>::Locate locate;
-    if (item.kind == ItemKind::Obstacle)
-        locate = [i](sim::Scene& s) -> glm::vec2& { return s.obstacles[i].center; };
-    else if (item.kind == ItemKind::Goal)
-        locate = [i](sim::Scene& s) -> glm::vec2& { return s.goals[i].position; };
-    else
-        locate = [i](sim::Scene& s) -> glm::vec2& { return s.trafficLights[i].position; };
-    stack->push(new ChangeValueCommand<glm::vec2>(document(), key, locate, to, text));
+    emit overlayChanged();
 }
 
 void SelectTool::drawOverlay(QPainter& painter) const
 {
     const sim::Scene& s = document().scene();
-    for (const SceneItem& item : document().selection()) {
-        if (item.index >= itemCount(s, item.kind))
-            continue;
-        if (const std::optional<glm::vec2> p = itemPosition(s, item))
+    for (const SceneItem& item : document().selection())
+        if (const std::optional<glm::vec2> p = itemAnchor(s, item))
             drawBrushCircle(painter, viewport(), {p->x, 0.0f, p->y}, 0.6f, QColor(255, 230, 0));
+    painter.setPen(QPen(QColor(20, 20, 20), 1.0));
+    for (const EditHandle& h : editHandles(s, document().selection())) {
+        const QPointF at = pixelOf(h.ground);
+        painter.setBrush(h.kind == EditHandle::Kind::Point ? QColor(255, 230, 0) : QColor(80, 200, 255));
+        if (h.kind == EditHandle::Kind::Point)
+            painter.drawRect(QRectF(at - QPointF(4, 4), QSizeF(8, 8)));
+        else
+            painter.drawPolygon(QPolygonF({at + QPointF(0, -6), at + QPointF(6, 0), at + QPointF(0, 6), at + QPointF(-6, 0)}));
+    }
+    if (m_drag == Drag::Box) {
+        painter.setPen(QPen(QColor(255, 230, 0), 1.0, Qt::DashLine));
+        painter.setBrush(QColor(255, 230, 0, 30));
+        painter.drawRect(QRectF(m_boxStart, m_boxEnd).normalized());
     }
 }
 

@@ -1,12 +1,16 @@
 #pragma once
-// Select and move: a click picks the agent, obstacle, goal or light under the mouse
-// (Shift adds to the selection, a click on nothing clears it); dragging a picked item
-// moves it, one undo step per drag.
+// Select and move: a click picks the agent, obstacle, goal, light, path, wall or lane
+// under the mouse (Shift adds); a drag from empty ground selects everything inside the
+// box; dragging a selected item moves the whole selection; a single selected path, wall
+// or lane shows handles: drag a point to reshape it, a path's radius handle to widen it.
+// Every drag is one undo step; Escape during a drag takes it back.
 
 #include "editor/SceneItem.h"
 #include "editor/tools/ViewportTool.h"
 
 #include <glm/vec2.hpp>
+
+#include <QPointF>
 
 namespace throng::editor {
 
@@ -19,7 +23,8 @@ public:
     QString name() const override { return tr("Select"); }
     QString toolTip() const override
     {
-        return tr("Select (Q): click an agent, obstacle, goal or light; Shift+click adds; drag to move it");
+        return tr("Select (Q): click or box-drag to select, Shift adds; drag a selected item to move the "
+                  "selection; drag a path's handles to reshape it");
     }
     QKeySequence shortcut() const override { return QKeySequence(Qt::Key_Q); }
     QString objectKey() const override { return QStringLiteral("select"); }
@@ -27,19 +32,31 @@ public:
     void mousePressed(const ToolMouse& mouse) override;
     void mouseMoved(const ToolMouse& mouse) override;
     void mouseReleased(const ToolMouse& mouse) override;
+    bool keyPressed(QKeyEvent* event) override;
     void cancel() override;
     void drawOverlay(QPainter& painter) const override;
 
-    // The item drawn within kPickPx of `pixel`, nearest first; empty when none.
+    // The item drawn within kPickPx of `pixel`, nearest first (points before lines);
+    // empty when none.
     std::optional<SceneItem> pick(QPointF pixel) const;
     static constexpr double kPickPx = 10.0;
+    static constexpr double kHandlePx = 8.0;
 
 private:
-    void moveTo(glm::vec2 ground);
+    enum class Drag { None, Move, Box, Point, Radius };
 
-    std::optional<SceneItem> m_dragged;
-    glm::vec2 m_grabOffset{0.0f};  // item position minus the ground point grabbed
+    bool pressHandle(const ToolMouse& mouse);
+    void dragTo(const ToolMouse& mouse);
+    void finishBox(Qt::KeyboardModifiers modifiers);
+    QPointF pixelOf(glm::vec2 ground) const;
+
+    Drag m_drag = Drag::None;
+    SceneItem m_handleItem;
+    std::size_t m_handlePoint = 0;
+    glm::vec2 m_lastGround{0.0f};
+    QPointF m_boxStart, m_boxEnd;
     int m_dragSerial = 0;
+    bool m_pushed = false;  // the drag has pushed (merged) commands
 };
 
 }  // namespace throng::editor

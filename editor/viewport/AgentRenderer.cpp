@@ -1,6 +1,7 @@
 #include "editor/viewport/AgentRenderer.h"
 
 #include "editor/viewport/AgentGlyphMesh.h"
+#include "editor/viewport/CarGlyphMesh.h"
 #include "editor/viewport/ShaderProgram.h"
 #include "editor/viewport/ViewportPalette.h"
 
@@ -98,30 +99,42 @@ bool AgentRenderer::initialize(QOpenGLFunctions_3_3_Core& gl)
     m_program = buildShaderProgram("agent", kVertexShader, kFragmentShader);
     if (!m_program)
         return false;
-    gl.glGenBuffers(1, &m_instances);
-    createShape(gl, m_flat, false, AgentGlyphMesh::kDetailed);
-    createShape(gl, m_prism, true, AgentGlyphMesh::kDetailed);
-    createShape(gl, m_coarseFlat, false, AgentGlyphMesh::kCoarse);
-    createShape(gl, m_coarsePrism, true, AgentGlyphMesh::kCoarse);
+    for (Instances* set : {&m_bodies, &m_cars}) {
+        gl.glGenBuffers(1, &set->buffer);
+        gl.glGenVertexArrays(1, &set->spriteVao);
+        gl.glBindVertexArray(set->spriteVao);
+        bindInstanceAttributes(gl, set->buffer, false);
+        gl.glBindVertexArray(0);
+    }
+    createShape(gl, m_flat, AgentGlyphMesh::flat(AgentGlyphMesh::kDetailed), m_bodies.buffer);
+    createShape(gl, m_prism, AgentGlyphMesh::prism(AgentGlyphMesh::kDetailed), m_bodies.buffer);
+    createShape(gl, m_coarseFlat, AgentGlyphMesh::flat(AgentGlyphMesh::kCoarse), m_bodies.buffer);
+    createShape(gl, m_coarsePrism, AgentGlyphMesh::prism(AgentGlyphMesh::kCoarse), m_bodies.buffer);
+    createShape(gl, m_carFlat, CarGlyphMesh::flat(), m_cars.buffer);
+    createShape(gl, m_carSolid, CarGlyphMesh::solid(), m_cars.buffer);
     m_spriteProgram = buildShaderProgram("agent sprite", kSpriteVertexShader, kSpriteFragmentShader);
-    if (!m_spriteProgram)
-        return false;
-    gl.glGenVertexArrays(1, &m_spriteVao);
-    gl.glBindVertexArray(m_spriteVao);
-    gl.glBindBuffer(GL_ARRAY_BUFFER, m_instances);
-    gl.glEnableVertexAttribArray(3);
-    gl.glVertexAttribPointer(3, 4, GL_FLOAT, GL_FALSE, sizeof(AgentGlyph),
-                             reinterpret_cast<const void*>(offsetof(AgentGlyph, position)));
-    gl.glEnableVertexAttribArray(4);
-    gl.glVertexAttribPointer(4, 4, GL_FLOAT, GL_FALSE, sizeof(AgentGlyph),
-                             reinterpret_cast<const void*>(offsetof(AgentGlyph, radiusM)));
-    gl.glBindVertexArray(0);
-    return true;
+    return bool(m_spriteProgram);
 }
 
-void AgentRenderer::createShape(QOpenGLFunctions_3_3_Core& gl, Shape& shape, bool prism, int segments)
+void AgentRenderer::bindInstanceAttributes(QOpenGLFunctions_3_3_Core& gl, unsigned instances, bool divisor)
 {
-    const std::vector<GlyphVertex> vertices = prism ? AgentGlyphMesh::prism(segments) : AgentGlyphMesh::flat(segments);
+    gl.glBindBuffer(GL_ARRAY_BUFFER, instances);
+    constexpr GLsizei instanceStride = sizeof(AgentGlyph);
+    gl.glEnableVertexAttribArray(3);
+    gl.glVertexAttribPointer(3, 4, GL_FLOAT, GL_FALSE, instanceStride,
+                             reinterpret_cast<const void*>(offsetof(AgentGlyph, position)));
+    gl.glEnableVertexAttribArray(4);
+    gl.glVertexAttribPointer(4, 4, GL_FLOAT, GL_FALSE, instanceStride,
+                             reinterpret_cast<const void*>(offsetof(AgentGlyph, radiusM)));
+    if (divisor) {
+        gl.glVertexAttribDivisor(3, 1);
+        gl.glVertexAttribDivisor(4, 1);
+    }
+}
+
+void AgentRenderer::createShape(QOpenGLFunctions_3_3_Core& gl, Shape& shape, const std::vector<GlyphVertex>& vertices,
+                                unsigned instances)
+{
     shape.vertexCount = int(vertices.size());
     gl.glGenVertexArrays(1, &shape.vao);
     gl.glGenBuffers(1, &shape.vbo);
@@ -139,60 +152,68 @@ void AgentRenderer::createShape(QOpenGLFunctions_3_3_Core& gl, Shape& shape, boo
     gl.glEnableVertexAttribArray(2);
     gl.glVertexAttribPointer(2, 1, GL_FLOAT, GL_FALSE, stride,
                              reinterpret_cast<const void*>(offsetof(GlyphVertex, part)));
-
-    gl.glBindBuffer(GL_ARRAY_BUFFER, m_instances);
-    constexpr GLsizei instanceStride = sizeof(AgentGlyph);
-    gl.glEnableVertexAttribArray(3);
-    gl.glVertexAttribPointer(3, 4, GL_FLOAT, GL_FALSE, instanceStride,
-                             reinterpret_cast<const void*>(offsetof(AgentGlyph, position)));
-    gl.glVertexAttribDivisor(3, 1);
-    gl.glEnableVertexAttribArray(4);
-    gl.glVertexAttribPointer(4, 4, GL_FLOAT, GL_FALSE, instanceStride,
-                             reinterpret_cast<const void*>(offsetof(AgentGlyph, radiusM)));
-    gl.glVertexAttribDivisor(4, 1);
+    bindInstanceAttributes(gl, instances, true);
     gl.glBindVertexArray(0);
 }
 
 void AgentRenderer::destroy(QOpenGLFunctions_3_3_Core& gl)
 {
-    for (Shape* shape : {&m_flat, &m_prism, &m_coarseFlat, &m_coarsePrism}) {
+    for (Shape* shape : {&m_flat, &m_prism, &m_coarseFlat, &m_coarsePrism, &m_carFlat, &m_carSolid}) {
         gl.glDeleteBuffers(1, &shape->vbo);
         gl.glDeleteVertexArrays(1, &shape->vao);
         *shape = {};
     }
-    gl.glDeleteVertexArrays(1, &m_spriteVao);
-    m_spriteVao = 0;
+    for (Instances* set : {&m_bodies, &m_cars}) {
+        gl.glDeleteVertexArrays(1, &set->spriteVao);
+        gl.glDeleteBuffers(1, &set->buffer);
+        *set = {};
+    }
     m_spriteProgram.reset();
-    gl.glDeleteBuffers(1, &m_instances);
-    m_instances = 0;
-    m_instanceCount = 0;
     m_program.reset();
 }
 
-void AgentRenderer::upload(QOpenGLFunctions_3_3_Core& gl, std::span<const AgentGlyph> glyphs)
+void AgentRenderer::upload(QOpenGLFunctions_3_3_Core& gl, std::span<const AgentGlyph> bodies,
+                           std::span<const AgentGlyph> cars)
 {
     static_assert(sizeof(AgentGlyph) == 8 * sizeof(float), "the shader reads two vec4 per instance");
     if (!m_program)
         return;
-    gl.glBindBuffer(GL_ARRAY_BUFFER, m_instances);
+    uploadInstances(gl, m_bodies, bodies);
+    uploadInstances(gl, m_cars, cars);
+}
+
+void AgentRenderer::uploadInstances(QOpenGLFunctions_3_3_Core& gl, Instances& set, std::span<const AgentGlyph> glyphs)
+{
+    gl.glBindBuffer(GL_ARRAY_BUFFER, set.buffer);
     gl.glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(glyphs.size_bytes()), glyphs.data(), GL_DYNAMIC_DRAW);
-    m_instanceCount = int(glyphs.size());
-    m_maxRadiusM = 0.0f;
+    set.count = int(glyphs.size());
+    set.maxRadiusM = 0.0f;
     for (const AgentGlyph& g : glyphs)
-        m_maxRadiusM = std::max(m_maxRadiusM, g.radiusM);
+        set.maxRadiusM = std::max(set.maxRadiusM, g.radiusM);
 }
 
 void AgentRenderer::draw(QOpenGLFunctions_3_3_Core& gl, const RenderView& view)
 {
-    if (!m_program || m_instanceCount == 0)
+    if (!m_program)
         return;
-    if (!view.perspective && m_maxRadiusM < kSpriteBelowPx * view.metresPerPixel) {
-        drawSprites(gl, view);
+    const bool coarse = m_bodies.count + m_cars.count > kDetailedLimit;
+    drawSet(gl, view, m_bodies, coarse ? m_coarseFlat : m_flat, coarse ? m_coarsePrism : m_prism, coarse);
+    drawSet(gl, view, m_cars, m_carFlat, m_carSolid, false);
+}
+
+void AgentRenderer::drawSet(QOpenGLFunctions_3_3_Core& gl, const RenderView& view, const Instances& set,
+                            const Shape& flat, const Shape& solid, bool coarse)
+{
+    if (set.count == 0)
+        return;
+    if (!view.perspective && set.maxRadiusM < kSpriteBelowPx * view.metresPerPixel) {
+        drawSprites(gl, view, set);
         return;
     }
-    const bool tiny = !view.perspective && m_maxRadiusM < kCoarseBelowPx * view.metresPerPixel;
-    const bool coarse = m_instanceCount > kDetailedLimit || tiny;
-    const Shape& shape = view.perspective ? (coarse ? m_coarsePrism : m_prism) : (coarse ? m_coarseFlat : m_flat);
+    const Shape* shape = view.perspective ? &solid : &flat;
+    // Tiny walkers in the top view: the coarse glyph, their detail would not show.
+    if (&flat == &m_flat && !coarse && !view.perspective && set.maxRadiusM < kCoarseBelowPx * view.metresPerPixel)
+        shape = &m_coarseFlat;
     m_program->bind();
     gl.glUniformMatrix4fv(m_program->uniformLocation("u_viewProjection"), 1, GL_FALSE,
                           glm::value_ptr(view.viewProjection));
@@ -201,13 +222,13 @@ void AgentRenderer::draw(QOpenGLFunctions_3_3_Core& gl, const RenderView& view)
     m_program->setUniformValue("u_lit", view.perspective);
     const glm::vec4 nose = palette::kAgentNose;
     m_program->setUniformValue("u_noseColour", nose.r, nose.g, nose.b);
-    gl.glBindVertexArray(shape.vao);
-    gl.glDrawArraysInstanced(GL_TRIANGLES, 0, shape.vertexCount, m_instanceCount);
+    gl.glBindVertexArray(shape->vao);
+    gl.glDrawArraysInstanced(GL_TRIANGLES, 0, shape->vertexCount, set.count);
     gl.glBindVertexArray(0);
     m_program->release();
 }
 
-void AgentRenderer::drawSprites(QOpenGLFunctions_3_3_Core& gl, const RenderView& view)
+void AgentRenderer::drawSprites(QOpenGLFunctions_3_3_Core& gl, const RenderView& view, const Instances& set)
 {
     m_spriteProgram->bind();
     gl.glUniformMatrix4fv(m_spriteProgram->uniformLocation("u_viewProjection"), 1, GL_FALSE,
@@ -215,8 +236,8 @@ void AgentRenderer::drawSprites(QOpenGLFunctions_3_3_Core& gl, const RenderView&
     m_spriteProgram->setUniformValue("u_pixelsPerMetre", 1.0f / std::max(view.metresPerPixel, 1e-6f));
     m_spriteProgram->setUniformValue("u_minRadiusPx", kMinRadiusPx);
     gl.glEnable(GL_PROGRAM_POINT_SIZE);
-    gl.glBindVertexArray(m_spriteVao);
-    gl.glDrawArrays(GL_POINTS, 0, m_instanceCount);
+    gl.glBindVertexArray(set.spriteVao);
+    gl.glDrawArrays(GL_POINTS, 0, set.count);
     gl.glBindVertexArray(0);
     gl.glDisable(GL_PROGRAM_POINT_SIZE);
     m_spriteProgram->release();

@@ -1,7 +1,8 @@
 #pragma once
-// Draws every agent with one instanced call: flat oriented glyphs in the top view, lit
-// prisms in perspective, never smaller than a few pixels. Owns its GL buffers; create,
-// draw and destroy it with the context current. Knows nothing of scenes or worlds.
+// Draws every agent with instanced calls: flat oriented glyphs in the top view, lit
+// prisms in perspective, and vehicles as cars (a second instance set), never smaller
+// than a few pixels. Owns its GL buffers; create, draw and destroy it with the context
+// current. Knows nothing of scenes or worlds.
 
 #include "editor/viewport/RenderView.h"
 
@@ -11,10 +12,13 @@
 
 #include <memory>
 #include <span>
+#include <vector>
 
 class QOpenGLFunctions_3_3_Core;
 
 namespace throng::editor {
+
+struct GlyphVertex;
 
 // One agent as drawn: 32 bytes per instance.
 struct AgentGlyph {
@@ -37,7 +41,8 @@ public:
 
     bool initialize(QOpenGLFunctions_3_3_Core& gl);
     void destroy(QOpenGLFunctions_3_3_Core& gl);
-    void upload(QOpenGLFunctions_3_3_Core& gl, std::span<const AgentGlyph> glyphs);
+    // `bodies` are walkers and fliers, `cars` vehicles.
+    void upload(QOpenGLFunctions_3_3_Core& gl, std::span<const AgentGlyph> bodies, std::span<const AgentGlyph> cars);
     void draw(QOpenGLFunctions_3_3_Core& gl, const RenderView& view);
 
 private:
@@ -45,17 +50,23 @@ private:
         unsigned vao = 0, vbo = 0;
         int vertexCount = 0;
     };
-    void createShape(QOpenGLFunctions_3_3_Core& gl, Shape& shape, bool prism, int segments);
-
-    void drawSprites(QOpenGLFunctions_3_3_Core& gl, const RenderView& view);
+    struct Instances {
+        unsigned buffer = 0, spriteVao = 0;
+        int count = 0;
+        float maxRadiusM = 0.0f;
+    };
+    void createShape(QOpenGLFunctions_3_3_Core& gl, Shape& shape, const std::vector<GlyphVertex>& vertices,
+                     unsigned instances);
+    void bindInstanceAttributes(QOpenGLFunctions_3_3_Core& gl, unsigned instances, bool divisor);
+    void uploadInstances(QOpenGLFunctions_3_3_Core& gl, Instances& set, std::span<const AgentGlyph> glyphs);
+    void drawSet(QOpenGLFunctions_3_3_Core& gl, const RenderView& view, const Instances& set, const Shape& flat,
+                 const Shape& solid, bool coarse);
+    void drawSprites(QOpenGLFunctions_3_3_Core& gl, const RenderView& view, const Instances& set);
 
     std::unique_ptr<QOpenGLShaderProgram> m_program;
     std::unique_ptr<QOpenGLShaderProgram> m_spriteProgram;
-    unsigned m_spriteVao = 0;
-    Shape m_flat, m_prism, m_coarseFlat, m_coarsePrism;
-    float m_maxRadiusM = 0.0f;
-    unsigned m_instances = 0;
-    int m_instanceCount = 0;
+    Shape m_flat, m_prism, m_coarseFlat, m_coarsePrism, m_carFlat, m_carSolid;
+    Instances m_bodies, m_cars;
 };
 
 }  // namespace throng::editor

@@ -71,8 +71,10 @@ void SetGeometryBuilder::addSet(const sim::Scene& scene, ShapeMesh& mesh)
     addBounds(scene.settings, mesh);
     addLanes(scene.lanes, mesh);
     addCrosswalks(scene.crosswalks, mesh);
+    addFlowField(scene, mesh);
     addFlowStrokes(scene.flowStrokes, mesh);
     addPaths(scene.paths, mesh);
+    addHeroes(scene.heroes, mesh);
     addSpawnAreas(scene.groups, mesh);
     addGoals(scene.goals, mesh);
     addObstacles(scene.obstacles, mesh);
@@ -135,6 +137,52 @@ void SetGeometryBuilder::addFlowStrokes(std::span<const sim::FlowStroke> strokes
     for (const sim::FlowStroke& s : strokes) {
         mesh.addPolyline(s.points, false, kThinHalfWidthM, palette::kFlowStroke);
         addChevrons(s.points, false, std::min(0.25f * s.widthM, 0.6f), palette::kFlowStroke, mesh);
+    }
+}
+
+void SetGeometryBuilder::addFlowField(const sim::Scene& scene, ShapeMesh& mesh)
+{
+    constexpr float kCellM = 2.0f, kArrowM = 0.6f;
+    if (scene.flowStrokes.empty())
+        return;
+    const glm::vec2 lo = scene.settings.boundsMin, hi = scene.settings.boundsMax;
+    for (float z = lo.y + 0.5f * kCellM; z < hi.y; z += kCellM)
+        for (float x = lo.x + 0.5f * kCellM; x < hi.x; x += kCellM) {
+            const glm::vec2 p(x, z);
+            float best = INFINITY;
+            glm::vec2 dir(0.0f);
+            for (const sim::FlowStroke& s : scene.flowStrokes)
+                for (std::size_t i = 1; i < s.points.size(); ++i) {
+                    const glm::vec2 a = s.points[i - 1], ab = s.points[i] - a;
+                    const float len2 = glm::dot(ab, ab);
+                    if (!(len2 > 0.0f))
+                        continue;
+                    const float t = std::clamp(glm::dot(p - a, ab) / len2, 0.0f, 1.0f);
+                    const float d = glm::length(p - (a + t * ab));
+                    if (d <= 0.5f * s.widthM && d < best) {
+                        best = d;
+                        dir = ab / std::sqrt(len2);
+                    }
+                }
+            if (dir == glm::vec2(0.0f))
+                continue;
+            const glm::vec2 side(-dir.y, dir.x), tip = p + dir * (0.5f * kArrowM);
+            const glm::vec4 c = palette::kFlowArrow;
+            mesh.addLine(p - dir * (0.5f * kArrowM), tip, 0.03f, c);
+            mesh.addLine(tip - dir * (0.4f * kArrowM) + side * (0.25f * kArrowM), tip, 0.03f, c);
+            mesh.addLine(tip - dir * (0.4f * kArrowM) - side * (0.25f * kArrowM), tip, 0.03f, c);
+        }
+}
+
+void SetGeometryBuilder::addHeroes(std::span<const sim::Hero> heroes, ShapeMesh& mesh)
+{
+    for (const sim::Hero& h : heroes) {
+        std::vector<glm::vec2> way;
+        for (const sim::Keyframe& k : h.keyframes)
+            way.emplace_back(k.position.x, k.position.z);
+        mesh.addDashedPolyline(way, 0.06f, 0.8f, 0.4f, palette::kHeroWay);
+        for (glm::vec2 p : way)
+            mesh.addDisc(p, 0.18f, palette::kHeroWay);
     }
 }
 

@@ -1,6 +1,6 @@
 #pragma once
 // Turns the set of a scene (bounds, lanes, crosswalks, paths, goals, obstacles, walls,
-// spawn areas, flow strokes, traffic lights) into ShapeMesh triangles in draw order.
+// spawn areas, flow strokes and their field, hero ways, traffic lights) into ShapeMesh triangles in draw order.
 // Reads plain scene data only; never touches GL or the simulation.
 
 #include "editor/viewport/ShapeMesh.h"
@@ -25,6 +25,10 @@ private:
     static void addCrosswalks(std::span<const sim::Crosswalk> crosswalks, ShapeMesh& mesh);
     static void addSpawnAreas(std::span<const sim::SpawnGroup> groups, ShapeMesh& mesh);
     static void addFlowStrokes(std::span<const sim::FlowStroke> strokes, ShapeMesh& mesh);
+    // Arrows on a coarse grid where the strokes steer the crowd (World::flowDirection's
+    // rule: the nearest stroke segment whose band holds the point).
+    static void addFlowField(const sim::Scene& scene, ShapeMesh& mesh);
+    static void addHeroes(std::span<const sim::Hero> heroes, ShapeMesh& mesh);
     static void addPaths(std::span<const sim::Path> paths, ShapeMesh& mesh);
     static void addGoals(std::span<const sim::Goal> goals, ShapeMesh& mesh);
     static void addObstacles(std::span<const sim::Obstacle> obstacles, ShapeMesh& mesh);

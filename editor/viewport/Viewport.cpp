@@ -1,27 +1,22 @@
 #include "editor/viewport/Viewport.h"
 
 #include "editor/viewport/GroundRay.h"
+#include "editor/viewport/SelectionHighlight.h"
 #include "editor/viewport/SetGeometryBuilder.h"
 #include "editor/viewport/ToolOverlay.h"
 #include "editor/viewport/ViewportPalette.h"
 #include "simcore/world/World.h"
 
 #include <QDebug>
-#include <QKeyEvent>
-#include <QMouseEvent>
 #include <QOpenGLContext>
-#include <QResizeEvent>
-#include <QWheelEvent>
 
 #include <algorithm>
 #include <cmath>
 #include <exception>
 
-
 namespace throng::editor {
 
 namespace {
-constexpr float kWheelZoomPerDegree = 1.01f;  // one 15-degree notch zooms by about 16 %
 constexpr float kFallbackRadiusM = 0.3f;
 }  // namespace
 
@@ -67,13 +62,6 @@ std::optional<glm::vec3> Viewport::pixelToGround(QPointF pixel) const
     CameraRig camera = m_camera;
     camera.setViewportSize(size());
     return castToGround(camera.renderView().viewProjection, size(), pixel, m_terrain);
-}
-
-void Viewport::forwardToTool(QMouseEvent* event, void (ViewportTool::*handler)(const ToolMouse&))
-{
-    const ToolMouse mouse{event->position(), pixelToGround(event->position()), event->modifiers()};
-    (m_tool->*handler)(mouse);
-    event->accept();
 }
 
 Viewport::~Viewport()
@@ -140,9 +128,13 @@ void Viewport::setSet(const sim::Scene& scene)
     m_traffic.crosswalks = scene.crosswalks;
     m_traffic.trafficLights = scene.trafficLights;
     m_terrain = scene.terrain;
+    m_agentColours.setScene(scene);
     m_typeRadiusM.clear();
-    for (const sim::AgentType& t : scene.agentTypes)
+    m_typeIsVehicle.clear();
+    for (const sim::AgentType& t : scene.agentTypes) {
         m_typeRadiusM.push_back(t.radiusM);
+        m_typeIsVehicle.push_back(t.kind == sim::AgentKind::Vehicle);
+    }
     m_boundsMin = scene.settings.boundsMin;
     m_boundsMax = scene.settings.boundsMax;
     m_grid.setBounds(m_boundsMin, m_boundsMax);
@@ -154,13 +146,17 @@ void Viewport::setSet(const sim::Scene& scene)
 void Viewport::setAgents(std::span<const sim::AgentFrame> frames, std::span<const sim::AgentInfo> agents,
                          std::optional<double> timeS, std::size_t frameIndex)
 {
-    m_glyphs.resize(std::min(frames.size(), agents.size()));
+    const std::size_t n = std::min(frames.size(), agents.size());
+    const std::vector<glm::vec3>& colours = m_agentColours.coloursFor(agents.first(n));
+    m_glyphs.clear();
+    m_carGlyphs.clear();
+    m_glyphs.reserve(n);
     m_agentBox = {};
-    for (std::size_t i = 0; i < m_glyphs.size(); ++i) {
+    for (std::size_t i = 0; i < n; ++i) {
         const std::size_t type = agents[i].typeIndex;
         const float radius = type < m_typeRadiusM.size() ? m_typeRadiusM[type] : kFallbackRadiusM;
-        const glm::vec4 colour = palette::agentColour(type);
-        m_glyphs[i] = {frames[i].position, frames[i].headingRad, radius, glm::vec3(colour)};
+        const bool car = type < m_typeIsVehicle.size() && m_typeIsVehicle[type];
+        (car ? m_carGlyphs : m_glyphs).push_back({frames[i].position, frames[i].headingRad, radius, colours[i]});
         m_agentBox.include({frames[i].position.x, frames[i].position.z}, radius);
     }
     m_agentsChanged = true;
@@ -170,6 +166,14 @@ void Viewport::setAgents(std::span<const sim::AgentFrame> frames, std::span<cons
     SetGeometryBuilder::addLights(m_traffic, timeS, m_lightMesh);
     m_lightsChanged = true;
     emit agentsChanged();
+    update();
+}
+
+void Viewport::setHighlight(const sim::Scene& scene, const Selection& selection)
+{
+    m_highlightMesh.clear();
+    SelectionHighlight::add(scene, selection, m_highlightMesh);
+    m_highlightChanged = true;
     update();
 }
 
@@ -225,7 +229,7 @@ void Viewport::initializeGL()
         return;
     }
     if (!m_grid.initialize(*this) || !m_setRenderer.initialize(*this) || !m_lightRenderer.initialize(*this) ||
-        !m_agentRenderer.initialize(*this)) {
+        !m_highlightRenderer.initialize(*this) || !m_agentRenderer.initialize(*this)) {
         m_glProblem = tr("the viewport's shaders did not compile (see the log)");
         return;
     }
@@ -234,7 +238,7 @@ void Viewport::initializeGL()
         releaseGl();
         doneCurrent();
     });
-    m_setChanged = m_lightsChanged = m_agentsChanged = true;
+    m_setChanged = m_lightsChanged = m_agentsChanged = m_highlightChanged = true;
     m_glReady = true;
 }
 
@@ -245,6 +249,7 @@ void Viewport::releaseGl()
     m_grid.destroy(*this);
     m_setRenderer.destroy(*this);
     m_lightRenderer.destroy(*this);
+    m_highlightRenderer.destroy(*this);
     m_agentRenderer.destroy(*this);
     m_glReady = false;
 }
@@ -263,8 +268,10 @@ void Viewport::uploadChanged()
     if (m_lightsChanged)
         m_lightRenderer.upload(*this, m_lightMesh);
     if (m_agentsChanged)
-        m_agentRenderer.upload(*this, m_glyphs);
-    m_setChanged = m_lightsChanged = m_agentsChanged = false;
+        m_agentRenderer.upload(*this, m_glyphs, m_carGlyphs);
+    if (m_highlightChanged)
+        m_highlightRenderer.upload(*this, m_highlightMesh);
+    m_setChanged = m_lightsChanged = m_agentsChanged = m_highlightChanged = false;
 }
 
 void Viewport::paintGL()
@@ -290,103 +297,13 @@ void Viewport::paintGL()
     m_grid.draw(*this, view);
     m_setRenderer.draw(*this, view);
     m_lightRenderer.draw(*this, view);
+    m_highlightRenderer.draw(*this, view);
     if (view.perspective) {
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(GL_LESS);
     }
     m_agentRenderer.draw(*this, view);
     glDisable(GL_DEPTH_TEST);
-}
-
-void Viewport::mousePressEvent(QMouseEvent* event)
-{
-    if (event->button() == Qt::LeftButton && m_tool && m_dragButton == Qt::NoButton) {
-        m_toolDragging = true;
-        forwardToTool(event, &ViewportTool::mousePressed);
-        return;
-    }
-    if (event->button() == Qt::MiddleButton || event->button() == Qt::RightButton) {
-        m_dragButton = event->button();
-        m_lastMousePos = event->position();
-        event->accept();
-        return;
-    }
-    QOpenGLWidget::mousePressEvent(event);
-}
-
-void Viewport::mouseMoveEvent(QMouseEvent* event)
-{
-    if (m_dragButton == Qt::NoButton) {
-        if (m_tool)
-            forwardToTool(event, &ViewportTool::mouseMoved);
-        else
-            QOpenGLWidget::mouseMoveEvent(event);
-        return;
-    }
-    const QPointF delta = event->position() - m_lastMousePos;
-    m_lastMousePos = event->position();
-    const bool orbit = m_camera.mode() == ViewMode::Orbit && m_dragButton == Qt::RightButton &&
-                       !(event->modifiers() & Qt::ShiftModifier);
-    if (orbit)
-        m_camera.rotate(delta);
-    else
-        m_camera.pan(delta);
-    m_cameraMovedByUser = true;
-    m_frameOnNextPaint = false;
-    update();
-}
-
-void Viewport::mouseReleaseEvent(QMouseEvent* event)
-{
-    if (event->button() == Qt::LeftButton && m_tool && m_toolDragging) {
-        m_toolDragging = false;
-        forwardToTool(event, &ViewportTool::mouseReleased);
-        return;
-    }
-    if (event->button() == m_dragButton) {
-        m_dragButton = Qt::NoButton;
-        event->accept();
-        return;
-    }
-    QOpenGLWidget::mouseReleaseEvent(event);
-}
-
-void Viewport::mouseDoubleClickEvent(QMouseEvent* event)
-{
-    if (event->button() == Qt::LeftButton && m_tool) {
-        forwardToTool(event, &ViewportTool::mouseDoubleClicked);
-        return;
-    }
-    QOpenGLWidget::mouseDoubleClickEvent(event);
-}
-
-void Viewport::resizeEvent(QResizeEvent* event)
-{
-    QOpenGLWidget::resizeEvent(event);
-    m_overlay->resize(event->size());
-}
-
-void Viewport::wheelEvent(QWheelEvent* event)
-{
-    const float degrees = float(event->angleDelta().y()) / 8.0f;
-    if (degrees == 0.0f)
-        return;
-    m_camera.setViewportSize(size());
-    m_camera.zoomAt(event->position(), std::pow(kWheelZoomPerDegree, degrees));
-    m_cameraMovedByUser = true;
-    m_frameOnNextPaint = false;
-    update();
-}
-
-void Viewport::keyPressEvent(QKeyEvent* event)
-{
-    if (m_tool && m_tool->keyPressed(event))
-        return;
-    if (event->key() == Qt::Key_F && event->modifiers() == Qt::NoModifier) {
-        frameAll();
-        return;
-    }
-    QOpenGLWidget::keyPressEvent(event);
 }
 
 }  // namespace throng::editor

@@ -3,7 +3,9 @@
 // lanes, lights, ...) and the agents of one moment, through a top or orbit camera.
 // Shows what it is given (plain scene data and agent frames); never edits the scene.
 
+#include "editor/SceneItem.h"
 #include "editor/tools/ViewportTool.h"
+#include "editor/viewport/AgentColours.h"
 #include "editor/viewport/AgentRenderer.h"
 #include "editor/viewport/CameraRig.h"
 #include "editor/viewport/GridRenderer.h"
@@ -50,12 +52,15 @@ public:
     // Shows frame `frame` (< cache.frameCount()) of a recording of the current scene.
     void showFrame(const sim::FrameCache& cache, std::size_t frame);
 
+    // Outlines the selected items over the set (drawn below the agents).
+    void setHighlight(const sim::Scene& scene, const Selection& selection);
+
     void setViewMode(ViewMode mode);
     ViewMode viewMode() const { return m_camera.mode(); }
     // Fits the set and the shown agents into the view.
     void frameAll();
 
-    std::size_t agentCount() const { return m_glyphs.size(); }
+    std::size_t agentCount() const { return m_glyphs.size() + m_carGlyphs.size(); }
     std::size_t frameIndex() const { return m_frameIndex; }
     // Simulation time of the shown agents; empty when no World could be built.
     std::optional<double> timeS() const { return m_timeS; }
@@ -103,17 +108,22 @@ private:
     GridRenderer m_grid;
     ShapeRenderer m_setRenderer;
     ShapeRenderer m_lightRenderer;
+    ShapeRenderer m_highlightRenderer;
     AgentRenderer m_agentRenderer;
 
     // What is shown, kept on the CPU until the next paint uploads it.
     ShapeMesh m_setMesh;
     ShapeMesh m_lightMesh;
-    std::vector<AgentGlyph> m_glyphs;
-    bool m_setChanged = true, m_lightsChanged = true, m_agentsChanged = true;
+    ShapeMesh m_highlightMesh;
+    std::vector<AgentGlyph> m_glyphs;     // walkers and fliers
+    std::vector<AgentGlyph> m_carGlyphs;  // vehicles, drawn as cars
+    bool m_setChanged = true, m_lightsChanged = true, m_agentsChanged = true, m_highlightChanged = true;
 
     sim::Scene m_traffic;               // lanes, crosswalks and lights only: relit every frame
     sim::Terrain m_terrain;
     std::vector<float> m_typeRadiusM;   // by Scene::agentTypes index
+    std::vector<bool> m_typeIsVehicle;  // by Scene::agentTypes index
+    AgentColours m_agentColours;
     glm::vec2 m_boundsMin{-50.0f}, m_boundsMax{50.0f};
     GroundBox m_setBox, m_agentBox;
     std::optional<double> m_timeS;

@@ -31,6 +31,9 @@ inline constexpr glm::vec4 kLightUnknown{0.500f, 0.500f, 0.500f, 1.0f};
 inline constexpr glm::vec4 kSpawnArea{0.700f, 0.700f, 0.720f, 1.0f};
 inline constexpr glm::vec4 kFlowStroke{0.560f, 0.470f, 0.800f, 1.0f};
 inline constexpr glm::vec4 kAgentNose{0.090f, 0.095f, 0.105f, 1.0f};
+inline constexpr glm::vec4 kHeroWay{1.000f, 0.550f, 0.250f, 1.0f};
+inline constexpr glm::vec4 kSelection{1.000f, 0.850f, 0.100f, 1.0f};
+inline constexpr glm::vec4 kFlowArrow{0.700f, 0.620f, 0.950f, 0.75f};
 
 // Colour of agents of type `typeIndex` (Scene::agentTypes order); repeats after 8 types.
 glm::vec4 agentColour(std::size_t typeIndex);

@@ -32,4 +32,15 @@ AgentVariation drawVariation(const sim::Variation& v, std::uint64_t seed, std::u
     return out;
 }
 
+void applyHandSetVariation(AgentVariation& variation, const sim::Agent& agent, std::size_t lookCount,
+                           std::size_t tintCount)
+{
+    if (agent.look >= 0 && std::size_t(agent.look) < std::max<std::size_t>(1, lookCount))
+        variation.look = std::size_t(agent.look);
+    if (agent.tint >= 0 && std::size_t(agent.tint) < tintCount)
+        variation.tint = agent.tint;
+    if (agent.heightScale > 0.0f)
+        variation.heightScale = agent.heightScale;
+}
+
 }  // namespace throng::exporting

@@ -22,5 +22,9 @@ struct AgentVariation {
 // agrees with the recorded run; look, tint and height come from export streams.
 AgentVariation drawVariation(const sim::Variation& variation, std::uint64_t seed, std::uint32_t agentId,
                              std::size_t lookCount);
+// Replaces the drawn look, tint and height with those set by hand on the placed agent
+// (sim::Agent::look, tint, heightScale), where they are set and in range.
+void applyHandSetVariation(AgentVariation& variation, const sim::Agent& agent, std::size_t lookCount,
+                           std::size_t tintCount);
 
 }  // namespace throng::exporting

@@ -173,12 +173,20 @@ void writeAgents(Writer& w, const Scene& s)
             w.kvOpt("path", a.path);
             if (a.leader != 0)
                 w.kv("leader", std::to_string(a.leader));
+            if (a.look >= 0)
+                w.kv("look", std::to_string(a.look));
+            if (a.tint >= 0)
+                w.kv("tint", std::to_string(a.tint));
+            if (a.heightScale > 0.0f)
+                w.kvf("height", a.heightScale);
             o << YAML::EndMap;
         }
         o << YAML::EndSeq;
         return;
     }
     const bool leaders = std::any_of(s.agents.begin(), s.agents.end(), [](const Agent& a) { return a.leader != 0; });
+    const bool varied = std::any_of(s.agents.begin(), s.agents.end(),
+                                    [](const Agent& a) { return a.look >= 0 || a.tint >= 0 || a.heightScale > 0.0f; });
     std::string rows;
     rows.reserve(s.agents.size() * 48);
     for (const Agent& a : s.agents) {
@@ -187,11 +195,18 @@ void writeAgents(Writer& w, const Scene& s)
                 (a.path.empty() ? "-" : a.path);
         if (leaders)
             rows += ' ' + (a.leader ? std::to_string(a.leader) : std::string("-"));
+        if (varied) {
+            rows += ' ' + (a.look >= 0 ? std::to_string(a.look) : std::string("-"));
+            rows += ' ' + (a.tint >= 0 ? std::to_string(a.tint) : std::string("-"));
+            rows += ' ' + (a.heightScale > 0.0f ? num(a.heightScale) : std::string("-"));
+        }
         rows += '\n';
     }
     std::vector<std::string> columns{"id", "type", "x", "y", "z", "heading", "goal", "path"};
     if (leaders)
         columns.push_back("leader");
+    if (varied)
+        columns.insert(columns.end(), {"look", "tint", "height"});
     o << YAML::BeginMap;
     w.key("columns");
     o << YAML::Flow << columns;

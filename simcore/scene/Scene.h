@@ -86,6 +86,11 @@ struct Agent {
     std::string goal;           // optional goal name
     std::string path;           // optional path name
     std::uint32_t leader = 0;   // optional AgentId pursued, evaded or followed; 0 = none
+    // Per-agent variation set by hand (the variation brush); unset = drawn per agent id
+    // from the type's Variation.
+    int look = -1;              // index into the type's looks, -1 = drawn
+    int tint = -1;              // index into the type's tints, -1 = drawn
+    float heightScale = 0.0f;   // > 0 fixes the height scale, 0 = drawn from the type's range
     bool operator==(const Agent&) const = default;
 };
 

@@ -325,7 +325,7 @@ void SceneReader::readAgents(const YAML::Node& node, Scene& scene)
         const YAML::Node item = node[i];
         if (!m_f.expectMap(item, key))
             continue;
-        m_f.checkKeys(item, key, {"id", "type", "position", "heading", "goal", "path", "leader"});
+        m_f.checkKeys(item, key, {"id", "type", "position", "heading", "goal", "path", "leader", "look", "tint", "height"});
         Agent a;
         if (YAML::Node id = item["id"]; id.IsDefined() && m_f.readU32(item, "id", key, a.id, false))
             claimId(id, key + ".id", a.id);
@@ -342,8 +342,29 @@ void SceneReader::readAgents(const YAML::Node& node, Scene& scene)
                 m_f.error(item["leader"].Mark(), key + ".leader", "an agent cannot lead itself");
             m_leaderRefs.push_back({item["leader"].Mark(), key + ".leader", a.leader});
         }
+        readAgentVariation(item, key, scene, a);
         scene.agents.push_back(std::move(a));
     }
+}
+
+void SceneReader::readAgentVariation(const YAML::Node& item, const std::string& key, const Scene& scene, Agent& a)
+{
+    const AgentType* type = scene.findAgentType(a.type);
+    auto index = [&](const char* name, int& out, std::size_t count, const char* what) {
+        std::uint32_t v = 0;
+        if (!item[name].IsDefined() || !m_f.readU32(item, name, key, v, false))
+            return;
+        if (type && v >= count) {
+            m_f.error(item[name].Mark(), key + "." + name,
+                      std::string(what) + " " + std::to_string(v) + " is out of range: type '" + a.type + "' has " +
+                          std::to_string(count));
+            return;
+        }
+        out = int(v);
+    };
+    index("look", a.look, type ? std::max<std::size_t>(1, type->variation.looks.size()) : 0, "look");
+    index("tint", a.tint, type ? type->variation.tints.size() : 0, "tint");
+    m_f.readFloat(item, "height", key, a.heightScale, false, Range::Positive);
 }
 
 void SceneReader::readGroups(const YAML::Node& node, Scene& scene)

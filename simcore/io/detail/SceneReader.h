@@ -28,6 +28,8 @@ private:
     void readVariation(const YAML::Node& node, const std::string& key, Variation& v);
     void readAgents(const YAML::Node& node, Scene& scene);
     void readAgentTable(const YAML::Node& node, const std::string& key, Scene& scene);
+    // The hand-set variation of one agent (look, tint, height), checked against its type.
+    void readAgentVariation(const YAML::Node& item, const std::string& key, const Scene& scene, Agent& a);
     void readGroups(const YAML::Node& node, Scene& scene);
     void readPaths(const YAML::Node& node, Scene& scene);
     void readWalls(const YAML::Node& node, Scene& scene);

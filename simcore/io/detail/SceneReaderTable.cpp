@@ -2,6 +2,7 @@
 // literal block, parsed here without building a YAML node per value.
 #include "simcore/io/detail/SceneReader.h"
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 
@@ -9,9 +10,9 @@ namespace throng::sim::detail {
 
 namespace {
 
-enum Column { kId, kType, kX, kY, kZ, kHeading, kGoal, kPath, kLeader, kColumnCount };
-const std::array<const char*, kColumnCount> kColumnNames{"id",      "type", "x",    "y",     "z",
-                                                         "heading", "goal", "path", "leader"};
+enum Column { kId, kType, kX, kY, kZ, kHeading, kGoal, kPath, kLeader, kLook, kTint, kHeight, kColumnCount };
+const std::array<const char*, kColumnCount> kColumnNames{"id",     "type", "x",    "y",    "z",    "heading",
+                                                         "goal",   "path", "leader", "look", "tint", "height"};
 
 // Finds a 0-based line of the source text.
 struct LineIndex {
@@ -49,7 +50,7 @@ void SceneReader::readAgentTable(const YAML::Node& node, const std::string& key,
         const std::string ck = indexKey(key + ".columns", i);
         if (found < 0) {
             m_f.error(node["columns"][i].Mark(), ck, "unknown column '" + columns[i] +
-                                                        "' (known: id, type, x, y, z, heading, goal, path, leader)");
+                                                        "' (known: id, type, x, y, z, heading, goal, path, leader, look, tint, height)");
             return;
         }
         if (at[found] >= 0) {
@@ -173,6 +174,31 @@ void SceneReader::readAgentTable(const YAML::Node& node, const std::string& key,
                     m_leaderRefs.back().at.line = line1 - 1;
                     m_leaderRefs.back().at.column = col1(kLeader) - 1;
                 }
+            }
+        }
+        // Hand-set variation: '-' leaves it drawn from the type's ranges.
+        const AgentType* type = ok ? scene.findAgentType(a.type) : nullptr;
+        auto index = [&](int c, int& out, std::size_t count) {
+            if (at[c] < 0 || !ok || tok[std::size_t(at[c])] == "-")
+                return;
+            std::string_view t = tok[std::size_t(at[c])];
+            unsigned v = 0;
+            auto [p, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
+            if (ec != std::errc() || p != t.data() + t.size() || (type && v >= count)) {
+                m_f.errorAtLine(line1, col1(c), rk + "." + kColumnNames[c],
+                                "must be an index below " + std::to_string(count) + " or '-', got '" + std::string(t) + "'");
+                ok = false;
+                return;
+            }
+            out = int(v);
+        };
+        index(kLook, a.look, type ? std::max<std::size_t>(1, type->variation.looks.size()) : 0);
+        index(kTint, a.tint, type ? type->variation.tints.size() : 0);
+        if (at[kHeight] >= 0 && ok && tok[std::size_t(at[kHeight])] != "-") {
+            number(kHeight, a.heightScale);
+            if (ok && !(a.heightScale > 0.0f)) {
+                m_f.errorAtLine(line1, col1(kHeight), rk + ".height", "must be > 0 or '-'");
+                ok = false;
             }
         }
         if (ok)

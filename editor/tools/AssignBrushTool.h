@@ -1,0 +1,45 @@
+#pragma once
+// The assign brush: gives the placed agents under the brush an agent type (and with it
+// the type's brain), a goal or a path, each left as it is unless chosen. One stroke is
+// one undo step.
+
+#include "editor/tools/AgentBrushTool.h"
+
+#include <optional>
+#include <string>
+
+namespace throng::editor {
+
+struct AssignBrushSettings {
+    std::optional<std::string> type;  // empty optional = keep
+    std::optional<std::string> goal;  // "" = no goal
+    std::optional<std::string> path;  // "" = no path
+};
+
+class AssignBrushTool : public AgentBrushTool {
+    Q_OBJECT
+
+public:
+    using AgentBrushTool::AgentBrushTool;
+
+    QString name() const override { return tr("Assign Brush"); }
+    QString toolTip() const override
+    {
+        return tr("Assign Brush (A): drag over agents to give them a type (and its brain), a goal or a path");
+    }
+    QKeySequence shortcut() const override { return QKeySequence(Qt::Key_A); }
+    QString objectKey() const override { return QStringLiteral("assignBrush"); }
+    QWidget* createOptionsWidget(QWidget* parent) override;
+
+    AssignBrushSettings& settings() { return m_settings; }
+
+protected:
+    bool editAgent(sim::Agent& agent, glm::vec2 centre, glm::vec2 direction, int strokeId) const override;
+    QString verb() const override { return tr("Assign"); }
+    QColor brushColour() const override { return QColor(250, 200, 80); }
+
+private:
+    AssignBrushSettings m_settings;
+};
+
+}  // namespace throng::editor

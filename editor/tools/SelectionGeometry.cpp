@@ -1,0 +1,68 @@
+#include "editor/tools/SelectionGeometry.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+
+namespace throng::editor {
+
+std::optional<glm::vec2> itemAnchor(const sim::Scene& s, SceneItem item)
+{
+    if (item.index >= itemCount(s, item.kind))
+        return std::nullopt;
+    switch (item.kind) {
+    case ItemKind::Agent: return glm::vec2(s.agents[item.index].position.x, s.agents[item.index].position.z);
+    case ItemKind::Obstacle: return s.obstacles[item.index].center;
+    case ItemKind::Goal: return s.goals[item.index].position;
+    case ItemKind::TrafficLight: return s.trafficLights[item.index].position;
+    default: return std::nullopt;
+    }
+}
+
+std::span<const glm::vec2> itemPolyline(const sim::Scene& s, SceneItem item)
+{
+    if (item.index >= itemCount(s, item.kind))
+        return {};
+    switch (item.kind) {
+    case ItemKind::Path: return s.paths[item.index].points;
+    case ItemKind::Wall: return s.walls[item.index].points;
+    case ItemKind::Lane: return s.lanes[item.index].points;
+    default: return {};
+    }
+}
+
+std::vector<EditHandle> editHandles(const sim::Scene& scene, const Selection& selection)
+{
+    std::vector<EditHandle> handles;
+    if (selection.size() != 1)
+        return handles;
+    const SceneItem item = selection.front();
+    const std::span<const glm::vec2> points = itemPolyline(scene, item);
+    for (std::size_t i = 0; i < points.size(); ++i)
+        handles.push_back({EditHandle::Kind::Point, item, i, points[i]});
+    if (item.kind == ItemKind::Path && points.size() >= 2) {
+        // On the band's edge, square to the first segment.
+        const glm::vec2 d = points[1] - points[0];
+        const float len = glm::length(d);
+        if (len > 0.0f) {
+            const glm::vec2 side(-d.y / len, d.x / len);
+            const glm::vec2 mid = 0.5f * (points[0] + points[1]);
+            handles.push_back({EditHandle::Kind::Radius, item, 0, mid + side * scene.paths[item.index].radiusM});
+        }
+    }
+    return handles;
+}
+
+float polylineDistance(std::span<const glm::vec2> points, glm::vec2 p)
+{
+    float best = points.size() == 1 ? glm::length(p - points[0]) : 1e30f;
+    for (std::size_t i = 1; i < points.size(); ++i) {
+        const glm::vec2 a = points[i - 1], ab = points[i] - a;
+        const float len2 = glm::dot(ab, ab);
+        const float t = len2 > 0.0f ? std::clamp(glm::dot(p - a, ab) / len2, 0.0f, 1.0f) : 0.0f;
+        best = std::min(best, glm::length(p - (a + t * ab)));
+    }
+    return best;
+}
+
+}  // namespace throng::editor

@@ -1,0 +1,71 @@
+#include "editor/viewport/SelectionHighlight.h"
+
+#include "editor/viewport/ViewportPalette.h"
+
+#include <array>
+#include <cmath>
+#include <numbers>
+
+namespace throng::editor {
+
+namespace {
+constexpr float kLineM = 0.14f;    // half width of the outline
+constexpr float kMarginM = 0.25f;  // rings stand this far outside what they mark
+}  // namespace
+
+void SelectionHighlight::add(const sim::Scene& s, const Selection& selection, ShapeMesh& mesh)
+{
+    const glm::vec4 c = palette::kSelection;
+    for (const SceneItem& item : selection) {
+        const std::size_t i = item.index;
+        if (i >= itemCount(s, item.kind))
+            continue;
+        switch (item.kind) {
+        case ItemKind::Agent: {
+            const sim::AgentType* type = s.findAgentType(s.agents[i].type);
+            const float r = (type ? type->radiusM : 0.3f) + kMarginM;
+            mesh.addRing({s.agents[i].position.x, s.agents[i].position.z}, r, kLineM, c);
+            break;
+        }
+        case ItemKind::Obstacle: {
+            const sim::Obstacle& o = s.obstacles[i];
+            if (o.shape == sim::ObstacleShape::Circle) {
+                mesh.addRing(o.center, o.radiusM + kMarginM, kLineM, c);
+                break;
+            }
+            const float a = o.angleDeg * std::numbers::pi_v<float> / 180.0f, co = std::cos(a), si = std::sin(a);
+            const glm::vec2 h = 0.5f * o.size + kMarginM;
+            std::array<glm::vec2, 4> box{glm::vec2(-h.x, -h.y), glm::vec2(h.x, -h.y), h, glm::vec2(-h.x, h.y)};
+            for (glm::vec2& p : box)
+                p = o.center + glm::vec2(p.x * co + p.y * si, -p.x * si + p.y * co);
+            mesh.addPolyline(box, true, kLineM, c);
+            break;
+        }
+        case ItemKind::Goal: mesh.addRing(s.goals[i].position, s.goals[i].radiusM + kMarginM, kLineM, c); break;
+        case ItemKind::TrafficLight: mesh.addRing(s.trafficLights[i].position, 0.6f + kMarginM, kLineM, c); break;
+        case ItemKind::Path: mesh.addPolyline(s.paths[i].points, s.paths[i].closed, kLineM, c); break;
+        case ItemKind::Wall: mesh.addPolyline(s.walls[i].points, false, 0.12f + kLineM, c); break;
+        case ItemKind::Lane: mesh.addPolyline(s.lanes[i].points, false, kLineM, c); break;
+        case ItemKind::Hero: {
+            std::vector<glm::vec2> way;
+            for (const sim::Keyframe& k : s.heroes[i].keyframes)
+                way.emplace_back(k.position.x, k.position.z);
+            mesh.addPolyline(way, false, kLineM, c);
+            break;
+        }
+        case ItemKind::Group: {
+            const sim::SpawnGroup& g = s.groups[i];
+            if (g.shape == sim::AreaShape::Circle) {
+                mesh.addRing(g.center, g.radiusM, kLineM, c);
+            } else {
+                const std::array<glm::vec2, 4> r{g.min, glm::vec2(g.max.x, g.min.y), g.max, glm::vec2(g.min.x, g.max.y)};
+                mesh.addPolyline(r, true, kLineM, c);
+            }
+            break;
+        }
+        default: break;
+        }
+    }
+}
+
+}  // namespace throng::editor
