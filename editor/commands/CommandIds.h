@@ -8,6 +8,7 @@ enum CommandId : int {
     kPaintAgentsId = 1,
     kEraseAgentsId,
     kChangeValueId,
+    kEditBrainId,
 };
 
 }  // namespace throng::editor
