@@ -1,6 +1,7 @@
 #include "editor/brain/LinkItem.h"
 
 #include <QPainterPath>
+#include <QPainterPathStroker>
 #include <QPen>
 
 #include <algorithm>
@@ -43,6 +44,13 @@ void LinkItem::setDragState(int state)
 {
     m_dragState = state;
     restyle();
+}
+
+QPainterPath LinkItem::shape() const
+{
+    QPainterPathStroker stroker;
+    stroker.setWidth(8.0);
+    return stroker.createStroke(path());
 }
 
 void LinkItem::restyle()

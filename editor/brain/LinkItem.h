@@ -27,6 +27,8 @@ public:
     std::optional<float> flow() const { return m_flow; }
     // Dragging: accepted (green), refused (red) or undecided.
     void setDragState(int state);
+    // Only the stroke is the link: a click in a curve's belly is not on it.
+    QPainterPath shape() const override;
 
 private:
     void restyle();

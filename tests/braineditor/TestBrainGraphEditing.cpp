@@ -164,6 +164,14 @@ private slots:
         window.document().undoStack()->redo();
         QCOMPARE(ui.nodeCount(), 5);
         QCOMPARE(ui.linkCount(), 2);
+        // A link is selected by clicking its curve, and deleted alone.
+        LinkItem* link = ui.panel().scene().linkItems()[0];
+        ui.panel().scene().clearSelection();
+        ui.click(link->path().pointAtPercent(0.5));
+        QVERIFY(link->isSelected());
+        ui.key(Qt::Key_Delete);
+        QCOMPARE(ui.linkCount(), 1);
+        QCOMPARE(ui.nodeCount(), 5);
     }
 
     void aNodeDragIsOneUndoStep()

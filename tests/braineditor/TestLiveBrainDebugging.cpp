@@ -32,7 +32,7 @@ private slots:
         BrainUi ui(window);
         QVERIFY(ui.open(dir, kWalkBrainScene));
         SimulationController& sim = window.simulation();
-        QTRY_VERIFY(sim.recordedFrames() > 0);
+        QTRY_VERIFY_WITH_TIMEOUT(sim.recordedFrames() > 0, 30000);
         window.viewport().frameAll();
         // Nobody picked: nodes show their port names, not values.
         BrainScene& scene = ui.panel().scene();
@@ -42,7 +42,7 @@ private slots:
         QTest::mouseClick(&window.viewport(), Qt::LeftButton, {}, window.viewport().worldToPixel({0, 0, 0}).toPoint());
         QCOMPARE(ui.panel().pickedAgent(), std::ptrdiff_t(0));
         sim.play();
-        QTRY_VERIFY(sim.currentFrame() >= 12);
+        QTRY_VERIFY_WITH_TIMEOUT(sim.currentFrame() >= 12, 30000);
         const std::size_t f1 = sim.currentFrame();
         const QString distance1 = scene.nodeItem(1)->liveText(0);
         const QString speed1 = scene.nodeItem(3)->liveText(0);
@@ -50,7 +50,7 @@ private slots:
         // The goal distance node reads what the user sees: the gap from agent to goal.
         const float x1 = sim.cache().at(f1, 0).position.x;
         QVERIFY2(std::abs(distance1.toFloat() - (15.0f - x1)) < 0.7f, qPrintable(distance1 + " at x " + QString::number(double(x1))));
-        QTRY_VERIFY(sim.currentFrame() >= f1 + 12);
+        QTRY_VERIFY_WITH_TIMEOUT(sim.currentFrame() >= f1 + 12, 30000);
         sim.pause();
         const QString distance2 = scene.nodeItem(1)->liveText(0);
         QVERIFY2(distance2.toFloat() < distance1.toFloat() - 0.2f, qPrintable(distance1 + " -> " + distance2));
