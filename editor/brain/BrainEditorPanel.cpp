@@ -50,7 +50,10 @@ BrainEditorPanel::BrainEditorPanel(SceneDocument& document, SimulationController
         refreshList();
         recompile();
     });
-    auto rescene = [this] { m_live.setScene(m_document.scene()); };
+    auto rescene = [this] {
+        m_live.setScene(m_document.scene());
+        refreshList();  // agent types and brain names may change without the shown graph
+    };
     connect(&m_document, &SceneDocument::sceneChanged, this, rescene);
     connect(&m_document, &SceneDocument::sceneReset, this, rescene);
     connect(&m_document, &SceneDocument::sceneReset, this, [this] {

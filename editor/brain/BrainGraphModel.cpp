@@ -15,6 +15,7 @@ BrainGraphModel::BrainGraphModel(SceneDocument& document, QObject* parent) : QOb
     connect(&m_document, &SceneDocument::sceneChanged, this, &BrainGraphModel::refresh);
     connect(&m_document, &SceneDocument::sceneReset, this, [this] {
         m_brain = -1;
+        m_fresh = false;
         refresh();
     });
     refresh();
@@ -25,7 +26,14 @@ void BrainGraphModel::refresh()
     const int count = int(m_document.scene().brains.size());
     if (m_brain >= count || (m_brain < 0 && count > 0))
         m_brain = count > 0 ? std::clamp(m_brain, 0, count - 1) : -1;
-    m_shown = hasBrain() ? m_document.scene().brains[std::size_t(m_brain)] : sim::BrainGraph{};
+    const sim::BrainGraph& source = hasBrain() ? m_document.scene().brains[std::size_t(m_brain)] : sim::BrainGraph{};
+    // Most scene edits (a brush stroke, a moved wall) leave the brain alone: no rebuild.
+    if (m_fresh && source == m_source && source.name == m_source.name && m_brainCount == std::size_t(count))
+        return;
+    m_brainCount = std::size_t(count);
+    m_source = source;
+    m_fresh = true;
+    m_shown = source;
     if (needsLayout(m_shown))
         autoLayout(m_shown);
     emit graphChanged();
@@ -35,6 +43,7 @@ void BrainGraphModel::setBrainIndex(int index)
 {
     const int count = int(m_document.scene().brains.size());
     m_brain = count == 0 ? -1 : std::clamp(index, 0, count - 1);
+    m_fresh = false;
     refresh();
 }
 

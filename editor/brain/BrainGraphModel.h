@@ -61,6 +61,9 @@ private:
     SceneDocument& m_document;
     int m_brain = -1;
     sim::BrainGraph m_shown;
+    sim::BrainGraph m_source;  // the scene's graph m_shown was made from
+    bool m_fresh = false;      // m_shown is up to date with m_source
+    std::size_t m_brainCount = 0;  // brains in the scene then (macro ports, errors)
 };
 
 }  // namespace throng::editor

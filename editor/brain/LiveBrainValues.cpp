@@ -11,7 +11,7 @@ LiveBrainValues::~LiveBrainValues() = default;
 
 void LiveBrainValues::setScene(const sim::Scene& scene)
 {
-    m_scene = scene;
+    m_scene = &scene;
     m_world.reset();
     m_values.clear();
 }
@@ -32,10 +32,10 @@ void LiveBrainValues::restart()
     m_values.clear();
     m_step = 0;
     m_type = -1;
-    if (m_agent < 0)
+    if (m_agent < 0 || !m_scene)
         return;
     try {
-        m_world = std::make_unique<sim::World>(m_scene);
+        m_world = std::make_unique<sim::World>(*m_scene);
     } catch (const std::exception&) {
         return;  // The playback reports why the scene cannot run.
     }

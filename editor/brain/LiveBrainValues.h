@@ -22,7 +22,8 @@ public:
     LiveBrainValues();
     ~LiveBrainValues();
 
-    // The scene to follow; the values computed so far are dropped.
+    // The scene to follow (kept by reference: the document's, which outlives this; read
+    // only when the World is rebuilt); the values computed so far are dropped.
     void setScene(const sim::Scene& scene);
     // The World agent (dense index, as the FrameCache orders agents); -1 = nobody.
     void pick(std::ptrdiff_t agent);
@@ -36,7 +37,7 @@ public:
 private:
     void restart();
 
-    sim::Scene m_scene;
+    const sim::Scene* m_scene = nullptr;
     std::unique_ptr<sim::World> m_world;
     std::size_t m_step = 0;
     std::ptrdiff_t m_agent = -1;

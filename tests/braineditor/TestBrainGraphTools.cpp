@@ -14,7 +14,9 @@
 #include "editor/brain/PortItem.h"
 #include "simcore/brain/BrainCompiler.h"
 
+#include <QApplication>
 #include <QLineEdit>
+#include <QWheelEvent>
 #include <QStandardPaths>
 #include <QTest>
 
@@ -82,6 +84,29 @@ private slots:
         const QRectF node = panel.scene().nodeItem(6)->sceneBoundingRect();
         QVERIFY(visibleRect(panel).contains(node));
         QVERIFY(!visibleRect(panel).contains(panel.scene().nodeItem(1)->sceneBoundingRect()));
+    }
+
+    void wheelZoomsAndMiddleDragPans()
+    {
+        QTemporaryDir dir;
+        MainWindow window;
+        BrainUi ui(window);
+        QVERIFY(ui.open(dir, kWalkBrainScene));
+        BrainView& view = ui.panel().view();
+        const double zoom = view.zoom();
+        QWidget* vp = view.viewport();
+        const QPoint centre = vp->rect().center();
+        QWheelEvent wheel(centre, vp->mapToGlobal(centre), {}, {0, 240}, Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
+        QApplication::sendEvent(vp, &wheel);
+        QVERIFY2(std::abs(view.zoom() - zoom * 1.44) < 1e-6, qPrintable(QString::number(view.zoom() / zoom)));
+        // A middle drag of 100 px to the right moves the graph 100 px right on screen.
+        NodeItem* node = ui.panel().scene().nodeItem(1);
+        const QPoint before = view.mapFromScene(node->pos());
+        QTest::mousePress(vp, Qt::MiddleButton, {}, centre);
+        QTest::mouseMove(vp, centre + QPoint(50, 0));
+        QTest::mouseMove(vp, centre + QPoint(100, 0));
+        QTest::mouseRelease(vp, Qt::MiddleButton, {}, centre + QPoint(100, 0));
+        QCOMPARE(view.mapFromScene(node->pos()), before + QPoint(100, 0));
     }
 
     void aCommentBackdropSitsBehindTheNodes()
