@@ -107,8 +107,11 @@ void BrainScene::updateLinkEnds(LinkItem* link)
 
 void BrainScene::nodeMoved(NodeItem* node)
 {
+    // During sync() the link items may still be those of the previous graph.
     const sim::BrainGraph& g = m_model.graph();
     for (LinkItem* link : m_links) {
+        if (std::size_t(link->index()) >= g.links.size())
+            continue;
         const sim::BrainLink& l = g.links[std::size_t(link->index())];
         if (l.fromNode == node->id() || l.toNode == node->id())
             updateLinkEnds(link);
