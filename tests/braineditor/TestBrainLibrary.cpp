@@ -61,7 +61,7 @@ private slots:
         BrainUi ui(window);
         QVERIFY(ui.open(dir, kWalkBrainScene));
         const QString path = dir.filePath("walk.brain.yaml");
-        // Export writes the shown graph (laid out on screen, none stored yet).
+        // Export writes the scene's graph: it has no positions yet (the layout is only shown).
         QVERIFY(ui.panel().exportBrain(path));
         QVERIFY(QFile::exists(path));
         QVERIFY(ui.panel().importBrain(path));
