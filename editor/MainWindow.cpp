@@ -3,6 +3,7 @@
 #include "editor/AutosaveRecovery.h"
 #include "editor/MessagesPanel.h"
 #include "editor/RecentFiles.h"
+#include "editor/brain/BrainEditorPanel.h"
 #include "editor/panels/OutlinerPanel.h"
 #include "editor/panels/PropertiesPanel.h"
 #include "editor/panels/TimelinePanel.h"
@@ -107,6 +108,9 @@ void MainWindow::createDocks()
     addDock(tr("Timeline"), "timelineDock", m_timeline, Qt::BottomDockWidgetArea);
     m_messages = new MessagesPanel(this);
     m_messagesDock = addDock(tr("Messages"), "messagesDock", m_messages, Qt::BottomDockWidgetArea);
+    auto* brains = new BrainEditorPanel(m_document, *m_simulation, m_viewport, this);
+    addDock(tr("Brains"), "brainDock", brains, Qt::BottomDockWidgetArea);
+    connect(brains, &BrainEditorPanel::brainMessages, m_messages, &MessagesPanel::showDiagnostics);
 }
 
 void MainWindow::createEditMenu()

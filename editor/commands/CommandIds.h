@@ -10,6 +10,7 @@ enum CommandId : int {
     kChangeValueId,
     kChangeAgentsId,
     kMoveItemsId,
+    kEditBrainId,
 };
 
 }  // namespace throng::editor

@@ -1,0 +1,216 @@
+// Editing a brain as a user does: Tab and typing adds a node, the Add Node menu adds one
+// by category, dragging from an output to an input draws the link, a link of the wrong
+// type or a loop without memory is refused with a message, Delete removes, undo/redo
+// restore the graph exactly, a node drag is one undo step, parameters are typed inline.
+#include "BrainTestScenes.h"
+#include "BrainUiDriver.h"
+#include "TestRegistry.h"
+
+#include "editor/brain/BrainGraphModel.h"
+#include "editor/brain/BrainScene.h"
+#include "editor/brain/BrainView.h"
+#include "editor/brain/LinkItem.h"
+#include "editor/brain/NodeItem.h"
+#include "editor/brain/NodePalette.h"
+#include "editor/brain/PortItem.h"
+
+#include <QLineEdit>
+#include <QListWidget>
+#include <QMenu>
+#include <QStandardPaths>
+#include <QTest>
+#include <QToolButton>
+
+using namespace throng;
+using namespace throng::editor;
+using namespace throng::editor::test;
+
+namespace {
+const QByteArray kEmptyBrain = "throng: 1\nbrains: [{name: b, nodes: [], links: []}]\n";
+}
+
+class TestBrainGraphEditing : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
+
+    void typingInThePaletteAddsTheNodeUnderTheMouse()
+    {
+        QTemporaryDir dir;
+        MainWindow window;
+        BrainUi ui(window);
+        QVERIFY(ui.open(dir, kEmptyBrain));
+        ui.panel().view().setTransform({});
+        ui.panel().view().centerOn(0, 0);
+        // Typing narrows the list: "triang" leaves only the triangle membership.
+        QTest::mouseMove(ui.panel().view().viewport(), ui.pixel({-100, -50}));
+        QTest::keyClick(&ui.panel().view(), Qt::Key_Tab);
+        NodePalette& palette = ui.panel().palette();
+        QVERIFY(palette.isVisible());
+        QVERIFY(palette.shownTypes().size() > 30);
+        QTest::keyClicks(palette.search(), "triang");
+        QCOMPARE(palette.shownTypes(), QStringList{"fuzz.triangle"});
+        QTest::keyClick(palette.search(), Qt::Key_Return);
+        QVERIFY(!palette.isVisible());
+        QCOMPARE(ui.nodeCount(), 1);
+        const sim::BrainNode& n = ui.panel().model().graph().nodes[0];
+        QCOMPARE(n.type, std::string("fuzz.triangle"));
+        QVERIFY(std::abs(n.position.x + 100.0f) < 2.0f && std::abs(n.position.y + 50.0f) < 2.0f);
+        // Escape closes the palette without adding anything.
+        QTest::keyClick(&ui.panel().view(), Qt::Key_Tab);
+        QTest::keyClicks(palette.search(), "output");
+        QTest::keyClick(palette.search(), Qt::Key_Escape);
+        QCOMPARE(ui.nodeCount(), 1);
+        // And the categorised menu: math > math.add.
+        auto* add = ui.panel().findChild<QToolButton*>("addNodeButton");
+        QAction* mathAdd = nullptr;
+        for (QAction* category : add->menu()->actions())
+            if (category->text() == "math")
+                for (QAction* a : category->menu()->actions())
+                    if (a->text() == "math.add")
+                        mathAdd = a;
+        QVERIFY(mathAdd);
+        mathAdd->trigger();
+        QCOMPARE(ui.panel().model().graph().nodes.back().type, std::string("math.add"));
+    }
+
+    void draggingFromPortToPortLinksThem()
+    {
+        QTemporaryDir dir;
+        MainWindow window;
+        BrainUi ui(window);
+        QVERIFY(ui.open(dir, kEmptyBrain));
+        const sim::NodeId in = ui.addByTyping({0, 0}, "input.constant");
+        const sim::NodeId out = ui.addByTyping({300, 0}, "rule.not");
+        QVERIFY(in && out);
+        ui.dragLink(in, 0, out, 0);
+        QCOMPARE(ui.linkCount(), 1);
+        QCOMPARE(ui.panel().model().graph().links[0], (sim::BrainLink{in, 0, out, 0}));
+        QCOMPARE(int(ui.panel().scene().linkItems().size()), 1);
+        const LinkItem* link = ui.panel().scene().linkItems()[0];
+        QCOMPARE(link->to(), ui.panel().scene().nodeItem(out)->inputPort(0)->centre());
+        // The same drag again: the input is taken, so it is refused with a message.
+        ui.dragLink(in, 0, out, 0);
+        QCOMPARE(ui.linkCount(), 1);
+        QVERIFY2(ui.panel().statusText().contains("already connected"), qPrintable(ui.panel().statusText()));
+    }
+
+    void aTypeMismatchIsRefusedVisibly()
+    {
+        QTemporaryDir dir;
+        MainWindow window;
+        BrainUi ui(window);
+        QVERIFY(ui.open(dir, kEmptyBrain));
+        const sim::NodeId near = ui.addByTyping({0, 0}, "input");
+        QVERIFY(ui.editParam(near, "sensor", "neighbour_distance"));
+        const sim::NodeId out = ui.addByTyping({300, 0}, "output");
+        QCOMPARE(ui.panel().scene().nodeItem(near)->outputPort(0)->kind(), sim::PortKind::PerNeighbour);
+        // While hovering, the target port turns red; on release nothing is linked.
+        PortItem* target = ui.panel().scene().nodeItem(out)->inputPort(0);
+        QWidget* vp = ui.panel().view().viewport();
+        const QPoint a = ui.pixel(ui.panel().scene().nodeItem(near)->outputPort(0)->centre());
+        QTest::mouseMove(vp, a);
+        QTest::mousePress(vp, Qt::LeftButton, {}, a);
+        QTest::mouseMove(vp, (a + ui.pixel(target->centre())) / 2);
+        QTest::mouseMove(vp, ui.pixel(target->centre()));
+        QCOMPARE(target->pen().color(), QColor(230, 40, 40));
+        QTest::mouseRelease(vp, Qt::LeftButton, {}, ui.pixel(target->centre()));
+        QCOMPARE(ui.linkCount(), 0);
+        QVERIFY2(ui.panel().statusText().contains("type mismatch"), qPrintable(ui.panel().statusText()));
+        // Through a filter it is accepted.
+        const sim::NodeId filter = ui.addByTyping({150, 200}, "filter");
+        ui.dragLink(near, 0, filter, 0);
+        ui.dragLink(filter, 0, out, 0);
+        QCOMPARE(ui.linkCount(), 2);
+    }
+
+    void aLoopNeedsAMemoryNode()
+    {
+        QTemporaryDir dir;
+        MainWindow window;
+        BrainUi ui(window);
+        QVERIFY(ui.open(dir, kEmptyBrain));
+        const sim::NodeId a = ui.addByTyping({0, 0}, "rule.not");
+        const sim::NodeId b = ui.addByTyping({300, 0}, "math.abs");
+        ui.dragLink(a, 0, b, 0);
+        ui.dragLink(b, 0, a, 0);
+        QCOMPARE(ui.linkCount(), 1);
+        QVERIFY2(ui.panel().statusText().contains("loop"), qPrintable(ui.panel().statusText()));
+        const sim::NodeId memory = ui.addByTyping({150, 250}, "state.memory");
+        ui.dragLink(b, 0, memory, 0);
+        ui.dragLink(memory, 0, a, 0);
+        QCOMPARE(ui.linkCount(), 3);
+    }
+
+    void deleteUndoAndRedoRestoreTheGraph()
+    {
+        QTemporaryDir dir;
+        MainWindow window;
+        BrainUi ui(window);
+        QVERIFY(ui.open(dir, kWalkBrainScene));
+        const sim::BrainGraph original = ui.panel().model().graph();
+        NodeItem* trapezoid = ui.panel().scene().nodeItem(2);
+        ui.click(trapezoid->mapToScene(QPointF(100, 8)));
+        QVERIFY(trapezoid->isSelected());
+        ui.key(Qt::Key_Delete);
+        QCOMPARE(ui.nodeCount(), 5);
+        QCOMPARE(ui.linkCount(), 2);  // its three links went with it
+        QVERIFY(!ui.panel().scene().nodeItem(2));
+        window.document().undoStack()->undo();
+        QCOMPARE(ui.panel().model().graph(), original);
+        QVERIFY(ui.panel().scene().nodeItem(2));
+        QCOMPARE(int(ui.panel().scene().linkItems().size()), 5);
+        window.document().undoStack()->redo();
+        QCOMPARE(ui.nodeCount(), 5);
+        QCOMPARE(ui.linkCount(), 2);
+        // A link is selected by clicking its curve, and deleted alone.
+        LinkItem* link = ui.panel().scene().linkItems()[0];
+        ui.panel().scene().clearSelection();
+        ui.click(link->path().pointAtPercent(0.5));
+        QVERIFY(link->isSelected());
+        ui.key(Qt::Key_Delete);
+        QCOMPARE(ui.linkCount(), 1);
+        QCOMPARE(ui.nodeCount(), 5);
+    }
+
+    void aNodeDragIsOneUndoStep()
+    {
+        QTemporaryDir dir;
+        MainWindow window;
+        BrainUi ui(window);
+        QVERIFY(ui.open(dir, kWalkBrainScene));
+        QUndoStack* stack = window.document().undoStack();
+        const int steps = stack->count();
+        NodeItem* node = ui.panel().scene().nodeItem(6);
+        const QPointF start = node->pos();
+        ui.drag(node->mapToScene(QPointF(100, 8)), node->mapToScene(QPointF(100, 8)) + QPointF(0, 120));
+        QCOMPARE(stack->count(), steps + 1);
+        const sim::BrainNode* moved = window.document().scene().brains[0].findNode(6);
+        QVERIFY(std::abs(moved->position.y - float(start.y() + 120)) < 2.0f);
+        // The link into it follows the node.
+        for (LinkItem* link : ui.panel().scene().linkItems())
+            if (ui.panel().model().graph().links[std::size_t(link->index())].toNode == 6)
+                QCOMPARE(link->to(), ui.panel().scene().nodeItem(6)->inputPort(0)->centre());
+        stack->undo();
+        QCOMPARE(ui.panel().scene().nodeItem(6)->pos(), start);
+    }
+
+    void parametersAreTypedInline()
+    {
+        QTemporaryDir dir;
+        MainWindow window;
+        BrainUi ui(window);
+        QVERIFY(ui.open(dir, kWalkBrainScene));
+        QVERIFY(ui.editParam(6, "scale", "2.5"));
+        QCOMPARE(ui.panel().scene().nodeItem(6)->paramText(3), QString("2.5"));
+        QCOMPARE(window.document().scene().brains[0].findNode(6)->params[1].numbers, std::vector<float>{2.5f});
+        // A list of the wrong length is refused and says why.
+        QVERIFY(ui.editParam(4, "points", "1 2"));
+        QVERIFY2(ui.panel().statusText().contains("3 numbers"), qPrintable(ui.panel().statusText()));
+        QCOMPARE(ui.panel().scene().nodeItem(4)->paramText(0), QString("0 0.7 1.4"));
+    }
+};
+
+THRONG_REGISTER_TEST(TestBrainGraphEditing)
+#include "TestBrainGraphEditing.moc"
