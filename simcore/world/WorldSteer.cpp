@@ -87,17 +87,26 @@ std::size_t World::gatherNeighbours(std::size_t i, Neighbour* out, std::uint32_t
     const TypeParams& t = m_types[m_info[i].typeIndex];
     const glm::vec3 p = m_pos[i], fwd = m_fwd[i];
     const float r2 = t.perception * t.perception;
+    // A neighbour of higher priority ranks before every other, so a dense crowd never
+    // loses sight of the ambulance among its nearest neighbours.
     struct Candidate {
         float d2;
         AgentId id;
         std::uint32_t index;
-        bool operator<(const Candidate& o) const { return d2 != o.d2 ? d2 < o.d2 : id < o.id; }
+        bool urgent;
+        bool operator<(const Candidate& o) const
+        {
+            if (urgent != o.urgent)
+                return urgent;
+            return d2 != o.d2 ? d2 < o.d2 : id < o.id;
+        }
     };
+    const TypeCollision& mine = collision(i);
     std::array<Candidate, kMaxNeighbours> best;
     std::size_t count = 0;
     auto consider = [&](std::uint32_t j, const glm::vec3& q) {
-        if (j == i)
-            return;
+        if (j == i || !collide(mine, collision(j)))
+            return;  // agents on layers that do not collide do not perceive each other
         const glm::vec3 d = q - p;
         const float d2 = glm::dot(d, d);
         if (d2 > r2)
@@ -111,7 +120,7 @@ std::size_t World::gatherNeighbours(std::size_t i, Neighbour* out, std::uint32_t
             if (outside && d2 > contact * contact)
                 return;
         }
-        const Candidate c{d2, m_info[j].id, j};
+        const Candidate c{d2, m_info[j].id, j, collision(j).priority > mine.priority};
         if (count == kMaxNeighbours && !(c < best[count - 1]))
             return;
         std::size_t k = count < kMaxNeighbours ? count++ : count - 1;
@@ -211,8 +220,12 @@ glm::vec3 World::steer(std::size_t i, const SteeringAgent& self, std::span<const
         request(B::ObstacleAvoidance,
                 [&] { return avoidObstacles(self, {circles.data(), nc}, {boxes.data(), nb}, goal, s.obstacles); });
     }
-    request(B::Separation, [&] { return separate(self, near, s.separation); });
-    request(B::UnalignedCollisionAvoidance, [&] { return avoidUnalignedCollisions(self, near, s.unaligned); });
+    // Separation and collision avoidance leave to lower-priority neighbours the whole
+    // of making way (WorldPriority.h).
+    std::array<Neighbour, kMaxNeighbours> yielding;
+    const std::span<const Neighbour> avoided = neighboursToAvoid(i, near, yielding.data());
+    request(B::Separation, [&] { return separate(self, avoided, s.separation); });
+    request(B::UnalignedCollisionAvoidance, [&] { return avoidUnalignedCollisions(self, avoided, s.unaligned); });
     if (leaderIndex >= 0) {
         request(B::Evasion, [&] { return evade(self, leader, s.evasion); });
         request(B::Flee, [&] { return flee(self, leader.position, s.flee); });
@@ -225,7 +238,11 @@ glm::vec3 World::steer(std::size_t i, const SteeringAgent& self, std::span<const
     if (m_path[i] >= 0) {
         const auto k = std::size_t(m_path[i]);
         const SteeringPath path{m_pathPoints[k], m_paths[k].radiusM, m_paths[k].closed};
-        request(B::PathFollowing, [&] { return followPath(self, path, s.path); });
+        // Paths lie on the ground; a flier follows one in the horizontal at its own height.
+        SteeringAgent flat = self;
+        if (s.vehicle.flying)
+            flat.position.y = flat.velocity.y = 0.0f;
+        request(B::PathFollowing, [&] { return followPath(flat, path, s.path); });
     }
     if (!m_flow.empty())
         request(B::FlowFieldFollowing, [&] { return followFlow(self, flowDirection(flowSamplePoint(self, s.flow)), s.flow); });
@@ -254,9 +271,25 @@ glm::vec3 World::steer(std::size_t i, const SteeringAgent& self, std::span<const
     return s.priority ? allocateByPriority(requests, self.maxForce) : blendWeighted(requests, self.maxForce);
 }
 
+// The neighbours agent i avoids: all but those of lower priority, which make way for it.
+// `near` itself when nobody is of lower priority (always, between equals).
+std::span<const Neighbour> World::neighboursToAvoid(std::size_t i, std::span<const Neighbour> near,
+                                                    Neighbour* buffer) const
+{
+    const std::uint32_t* index = &m_nearIndex[i * kMaxNeighbours];
+    const float priority = collision(i).priority;
+    std::size_t n = 0;
+    for (std::size_t k = 0; k < near.size(); ++k)
+        if (collision(index[k]).priority >= priority)
+            buffer[n++] = near[k];
+    return n == near.size() ? near : std::span<const Neighbour>(buffer, n);
+}
+
 // Reciprocal avoidance (ORCA) on the ground: the velocity the blend asks for becomes the
-// nearest one that touches no neighbour within the horizon; an agent that has stopped
-// will not move, so the mover takes all of that avoidance.
+// nearest one that touches no neighbour within the horizon. Each pair splits the
+// avoidance by priority (WorldPriority.h): an agent that has stopped will not move and
+// one of higher priority will not yield, so the other takes all of it; against one of
+// lower priority an agent takes none and does not see it here at all.
 glm::vec3 World::avoidReciprocally(std::size_t i, const SteeringAgent& self, glm::vec3 force,
                                    std::span<const Neighbour> near, const TypeSteering& s) const
 {
@@ -270,11 +303,15 @@ glm::vec3 World::avoidReciprocally(std::size_t i, const SteeringAgent& self, glm
     std::array<PlanarNeighbour, kMaxNeighbours> others;
     const std::uint32_t* index = &m_nearIndex[i * kMaxNeighbours];
     const glm::vec2 fwd = xz(self.forward);
-    std::size_t oncoming = 0;
+    std::size_t oncoming = 0, count = 0;
     for (std::size_t k = 0; k < near.size(); ++k) {
-        others[k] = {xz(near[k].position), xz(near[k].velocity), near[k].radius, m_stopped[index[k]] ? 1.0f : 0.5f};
+        const float share = avoidanceShare(collision(i), collision(index[k]), m_stopped[index[k]] != 0);
+        if (share <= 0.0f)
+            continue;
+        PlanarNeighbour& o = others[count++];
+        o = {xz(near[k].position), xz(near[k].velocity), near[k].radius, share};
         if (!m_stopped[index[k]] && glm::dot(xz(near[k].forward), fwd) < -0.5f &&
-            glm::dot(others[k].position - xz(self.position), fwd) > 0.0f)
+            glm::dot(o.position - xz(self.position), fwd) > 0.0f)
             ++oncoming;
     }
     // Keep to the right of oncoming walkers (the pedestrians' convention), more the more
@@ -285,7 +322,7 @@ glm::vec3 World::avoidReciprocally(std::size_t i, const SteeringAgent& self, glm
         preferred = preferred * std::cos(angle) + right * std::sin(angle);
     }
     const PlanarBody body{xz(self.position), xz(self.velocity), self.radius, self.maxSpeed};
-    const glm::vec2 v = sim::avoidReciprocally(body, preferred, {others.data(), near.size()}, m_dt, s.reciprocal);
+    const glm::vec2 v = sim::avoidReciprocally(body, preferred, {others.data(), count}, m_dt, s.reciprocal);
     return (glm::vec3(v.x, 0.0f, v.y) - glm::vec3(self.velocity.x, 0.0f, self.velocity.z)) * (self.mass / m_dt);
 }
 
