@@ -65,6 +65,9 @@ World::World(const Scene& scene, const WorldOptions& options)
         cell = std::max(cell, 0.5f * t.perceptionM);
     }
     cell = std::clamp(cell, 0.5f, 4.0f);
+    for (const TypeCollision& c : m_collision)
+        m_makingWay = m_makingWay || c.priority != m_collision[0].priority || c.layerBit != m_collision[0].layerBit ||
+                      c.collidesWith != m_collision[0].collidesWith;
     buildTraffic(scene);
     buildStatics(scene);
     buildAgents(scene);

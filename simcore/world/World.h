@@ -165,6 +165,7 @@ private:
     std::vector<TypeParams> m_types;
     std::vector<TypeSteering> m_steering;  // per type
     std::vector<TypeCollision> m_collision;  // per type: layers and priority
+    bool m_makingWay = false;  // some types differ in layers or priority (else all collide as equals)
 
     // The set, static during a run.
     SegmentGrid m_walls;  // walls and the 4 sides of box obstacles

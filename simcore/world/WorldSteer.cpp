@@ -105,7 +105,7 @@ std::size_t World::gatherNeighbours(std::size_t i, Neighbour* out, std::uint32_t
     std::array<Candidate, kMaxNeighbours> best;
     std::size_t count = 0;
     auto consider = [&](std::uint32_t j, const glm::vec3& q) {
-        if (j == i || !collide(mine, collision(j)))
+        if (j == i || (m_makingWay && !collide(mine, collision(j))))
             return;  // agents on layers that do not collide do not perceive each other
         const glm::vec3 d = q - p;
         const float d2 = glm::dot(d, d);
@@ -120,7 +120,7 @@ std::size_t World::gatherNeighbours(std::size_t i, Neighbour* out, std::uint32_t
             if (outside && d2 > contact * contact)
                 return;
         }
-        const Candidate c{d2, m_info[j].id, j, collision(j).priority > mine.priority};
+        const Candidate c{d2, m_info[j].id, j, m_makingWay && collision(j).priority > mine.priority};
         if (count == kMaxNeighbours && !(c < best[count - 1]))
             return;
         std::size_t k = count < kMaxNeighbours ? count++ : count - 1;

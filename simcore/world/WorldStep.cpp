@@ -298,7 +298,7 @@ void World::countStep()
         const glm::vec2 p = xz(m_pos[i]);
         const float r = m_radius[i];
         auto overlap = [&](std::uint32_t j, const glm::vec3& q) {
-            if (j <= i || !collide(collision(i), collision(j)))
+            if (j <= i || (m_makingWay && !collide(collision(i), collision(j))))
                 return;  // layers that do not collide may overlap
             const float contact = r + m_radius[j] - kOverlapToleranceM;
             const glm::vec3 d = m_pos[i] - q;

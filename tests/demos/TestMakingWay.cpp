@@ -152,6 +152,47 @@ private slots:
         }
     }
 
+    void keysRoundTripAndBadValuesAreLocated()
+    {
+        const char* yaml = R"(throng: 1
+agent_types:
+  - {name: horse, priority: 2.5, layer: 3, collides_with: [0, 3, 31]}
+  - {name: bird, kind: flier}
+groups:
+  - {name: birds, type: bird, count: 5, circle: {center: [0, 0], radius: 2}, altitude: [10, 20]}
+)";
+        const Scene s = parse(yaml);
+        QCOMPARE(s.agentTypes[0].priority, 2.5f);
+        QCOMPARE(s.agentTypes[0].layer, 3u);
+        QCOMPARE(s.agentTypes[0].collidesWith, (1u << 0) | (1u << 3) | (1u << 31));
+        QCOMPARE(s.agentTypes[1].collidesWith, 0xffffffffu);  // default: every layer
+        QCOMPARE(s.groups[0].altitudeM, glm::vec2(10.0f, 20.0f));
+        QVERIFY(parse(sceneToYaml(s)) == s);
+        World world(s, threads(1));
+        for (std::size_t i = 0; i < world.agentCount(); ++i)
+            QVERIFY(world.positions()[i].y >= 10.0f && world.positions()[i].y <= 20.0f);
+
+        const std::pair<const char*, const char*> bad[] = {
+            {"  - {name: horse, layer: 32}\n", "error: agent_types[0].layer"},
+            {"  - {name: horse, collides_with: [1.5]}\n", "error: agent_types[0].collides_with"},
+            {"  - {name: horse, priority: high}\n", "error: agent_types[0].priority"},
+        };
+        for (const auto& [type, expected] : bad) {
+            const LoadResult r = parseScene(std::string("throng: 1\nagent_types:\n") + type, "scene.yaml", ".");
+            QVERIFY(!r.ok());
+            // file:line:col, then the key.
+            const std::string message = r.diagnostics[0].format();
+            QVERIFY2(message.rfind("scene.yaml:3:", 0) == 0 && message.find(expected) != std::string::npos,
+                     message.c_str());
+        }
+        const LoadResult walkers = parseScene(
+            "throng: 1\nagent_types: [{name: w}]\ngroups: [{name: g, type: w, count: 1, rect: {min: [0, 0], max: [1, 1]}, "
+            "altitude: [1, 2]}]\n", "scene.yaml", ".");
+        QVERIFY(walkers.ok());
+        QCOMPARE(walkers.diagnostics.size(), std::size_t(1));  // a warning: ground agents ignore it
+        QVERIFY(walkers.diagnostics[0].format().find("only affects fliers") != std::string::npos);
+    }
+
     void identicalOnOneAndTwoThreads()
     {
         const Scene s = parse(crowdScene(10, 0));
