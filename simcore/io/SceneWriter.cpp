@@ -151,6 +151,18 @@ void writeAgentTypes(Writer& w, const Scene& s)
         if (t.banking != 0.0f)
             w.kvf("banking", t.banking);
         detail::writeEmission(w, t.emits);
+        if (t.priority != 0.0f)
+            w.kvf("priority", t.priority);
+        if (t.layer != 0)
+            w.kv("layer", std::to_string(t.layer));
+        if (t.collidesWith != 0xffffffffu) {
+            w.key("collides_with");
+            o << YAML::Flow << YAML::BeginSeq;
+            for (unsigned l = 0; l < 32; ++l)
+                if (t.collidesWith & (1u << l))
+                    o << l;
+            o << YAML::EndSeq;
+        }
         o << YAML::EndMap;
     }
     o << YAML::EndSeq;

@@ -120,6 +120,10 @@ void writeSceneSet(YamlWriter& w, const Scene& s)
             w.kvOpt("path", g.path);
             if (g.leader != 0)
                 w.kv("leader", std::to_string(g.leader));
+            if (g.altitudeM != glm::vec2(0.0f)) {
+                w.key("altitude");
+                w.vec2(g.altitudeM);
+            }
             o << YAML::EndMap;
         }
         o << YAML::EndSeq;

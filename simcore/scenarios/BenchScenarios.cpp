@@ -171,9 +171,9 @@ Scene makeArmyScenario(std::uint32_t agents, std::uint64_t seed)
     s.goals.push_back({"east", {2.5f * depth, 0.0f}, 0.6f * width});
     s.goals.push_back({"west", {-2.5f * depth, 0.0f}, 0.6f * width});
     SpawnGroup a{"west_army", "soldier", agents / 2, AreaShape::Rect, {-2.0f * depth, -0.5f * width},
-                 {-depth, 0.5f * width}, {}, 0.0f, "east", "", 0};
+                 {-depth, 0.5f * width}, {}, 0.0f, "east", "", 0, {}};
     SpawnGroup b{"east_army", "soldier", agents - agents / 2, AreaShape::Rect, {depth, -0.5f * width},
-                 {2.0f * depth, 0.5f * width}, {}, 0.0f, "west", "", 0};
+                 {2.0f * depth, 0.5f * width}, {}, 0.0f, "west", "", 0, {}};
     s.groups = {a, b};
     s.settings.durationS = 5.0f * depth / 2.5f + 20.0f;
     return s;

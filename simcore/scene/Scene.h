@@ -75,6 +75,11 @@ struct AgentType {
     float minSpeed = 0.0f;                    // m/s, >= 0: fliers never fly slower
     float banking = 0.0f;                     // s^2/m, >= 0: fliers' bank per m/s^2 of turn
     SoundEmission emits;                      // every agent of the type emits this sound
+    // Making way (WorldPriority.h): of two agents that avoid each other, the one of lower
+    // priority takes all of the avoidance; equal priorities share it.
+    float priority = 0.0f;                    // any finite number; higher = others make way
+    std::uint32_t layer = 0;                  // collision layer, 0..31
+    std::uint32_t collidesWith = 0xffffffffu; // bit k set = avoids agents on layer k
     bool operator==(const AgentType&) const = default;
 };
 
@@ -107,6 +112,7 @@ struct SpawnGroup {
     std::string goal;
     std::string path;
     std::uint32_t leader = 0;        // AgentId the members pursue, evade or follow; 0 = none
+    glm::vec2 altitudeM{0.0f};       // fliers: spawn height range [min, max] in m; ground agents ignore it
     bool operator==(const SpawnGroup&) const = default;
 };
 

@@ -1,5 +1,6 @@
 #include "simcore/world/RunStats.h"
 
+#include "simcore/world/FlockFigures.h"
 #include "simcore/world/World.h"
 
 #include <charconv>
@@ -46,6 +47,11 @@ RunStats RunStats::from(const World& world, std::uint64_t frames, double wallSec
             ++s.arrived;
     s.withGoal = world.agentsWithGoal();
     s.heroes = world.heroTracks().size();
+    const FlockFigures flock = FlockFigures::of(world);
+    s.fliers = flock.fliers;
+    s.flierPolarisation = flock.polarisation;
+    s.flierSpreadM = flock.spreadM;
+    s.flierCentreToLeaderM = flock.centreToLeaderM;
     if (const TrafficSystem* traffic = world.trafficSystem()) {
         const WorldTraffic& names = world.traffic();
         s.vehicles = traffic->vehicleCount();
@@ -110,6 +116,11 @@ std::string RunStats::toJson() const
                  ", \"green_phases\": " + std::to_string(f.greenPhases) + ", \"per_green\": " + number(f.perGreen) + "}";
     }
     field("throughput_per_green", flows + (throughput.empty() ? "]" : "\n  ]"));
+    field("leader_overtaken", std::to_string(counters.leaderOvertaken));
+    field("fliers", std::to_string(fliers));
+    field("flier_polarisation", number(flierPolarisation));
+    field("flier_spread_m", number(flierSpreadM));
+    field("flier_centre_to_leader_m", number(flierCentreToLeaderM));
     field("non_finite_values", std::to_string(counters.nonFiniteValues), true);
     return j + "}\n";
 }

@@ -38,6 +38,11 @@ struct RunStats {
     std::uint64_t vehicleCollisions = 0;        // vehicle pairs in contact, summed over steps
     std::uint64_t vehicleCrossings = 0, pedestrianCrossings = 0;  // over all stop lines
     std::vector<StopLineFlow> throughput;
+    // Fliers at the last step (FlockFigures.h); zero without fliers.
+    std::uint64_t fliers = 0;
+    double flierPolarisation = 0.0;    // |mean unit velocity|: 1 = all fly one way, ~0 = random
+    double flierSpreadM = 0.0;         // RMS distance from the fliers' centre, m
+    double flierCentreToLeaderM = 0.0; // followers' centre to their leaders' mean position, m
 
     static RunStats from(const World& world, std::uint64_t frames, double wallSeconds);
     std::string toJson() const;

@@ -12,6 +12,7 @@ struct StepCounters {
     std::uint64_t overlappingPairs = 0;      // pairs closer than the sum of radii, summed over steps
     std::uint64_t redLightViolations = 0;    // pedestrians stepping onto a crosswalk on red
     std::uint64_t nonFiniteValues = 0;       // NaN/inf positions or velocities seen
+    std::uint64_t leaderOvertaken = 0;       // follower-steps ahead of a moving leader (WorldLeaders.cpp)
     std::uint64_t agentSteps = 0;
 };
 

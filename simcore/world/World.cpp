@@ -18,7 +18,7 @@ namespace {
 
 // Random streams: each use of randomness has its own, so adding one never shifts another.
 enum Stream : std::uint64_t {
-    kSpawnX = 1, kSpawnZ, kSpawnHeading, kSpeedFactor, kPhaseOffset, kStride, kWanderStart, kSpotR, kSpotA
+    kSpawnX = 1, kSpawnZ, kSpawnHeading, kSpeedFactor, kPhaseOffset, kStride, kWanderStart, kSpotR, kSpotA, kSpawnY
 };
 
 // Name -> index for one kind of scene item, built once so that resolving a million
@@ -62,6 +62,7 @@ World::World(const Scene& scene, const WorldOptions& options)
     for (const AgentType& t : scene.agentTypes) {
         const float halfView = glm::radians(std::min(t.viewAngleDeg, 360.0f)) * 0.5f;
         m_steering.push_back(compileTypeSteering(t));
+        m_collision.push_back(TypeCollision::of(t));
         // Reciprocal avoidance needs both sides of a pair to see each other: such a type
         // perceives all round, whatever its view angle.
         const bool allRound = t.viewAngleDeg >= 360.0f || m_steering.back().on(Behaviour::ReciprocalAvoidance);
@@ -70,6 +71,9 @@ World::World(const Scene& scene, const WorldOptions& options)
         cell = std::max(cell, cellPerRadius * t.perceptionM);
     }
     cell = std::clamp(cell, 0.5f, 4.0f);
+    for (const TypeCollision& c : m_collision)
+        m_makingWay = m_makingWay || c.priority != m_collision[0].priority || c.layerBit != m_collision[0].layerBit ||
+                      c.collidesWith != m_collision[0].collidesWith;
     buildTraffic(scene);
     buildStatics(scene);
     buildAgents(scene);
@@ -188,12 +192,14 @@ void World::spawnGroup(const Scene& scene, const SpawnGroup& group, std::size_t 
             p = group.center + r * glm::vec2(std::cos(a), std::sin(a));
         }
         float heading = 6.28318531f * rngUniform(m_seed, key, 0, kSpawnHeading);
+        // Fliers spawn at a height drawn from the group's altitude range.
+        const float y = group.altitudeM.x + (group.altitudeM.y - group.altitudeM.x) * rngUniform(m_seed, key, 0, kSpawnY);
         if (goal >= 0) {
             const glm::vec2 d = scene.goals[std::size_t(goal)].position - p;
             if (glm::dot(d, d) > 1e-6f)
                 heading = std::atan2(-d.y, d.x);
         }
-        addAgent(scene, nextId++, type, glm::vec3(p.x, 0.0f, p.y), heading, goal, path, group.leader);
+        addAgent(scene, nextId++, type, glm::vec3(p.x, y, p.y), heading, goal, path, group.leader);
     }
 }
 

@@ -10,6 +10,7 @@
 #include "simcore/world/SegmentGrid.h"
 #include "simcore/world/StepCounters.h"
 #include "simcore/world/TypeSteering.h"
+#include "simcore/world/WorldPriority.h"
 #include "simcore/world/WorldTraffic.h"
 
 #include <glm/vec3.hpp>
@@ -66,6 +67,9 @@ public:
     float arrivalTimeS(std::size_t i) const { return m_arrivalTime[i]; }
     // Agents with a goal or an open path to finish.
     std::size_t agentsWithGoal() const;
+    // The dense index of the agent that agent i pursues, evades or follows; -1 for none.
+    std::int32_t leaderOf(std::size_t i) const { return m_leader[i]; }
+    AgentKind agentKind(std::size_t i) const { return m_types[m_info[i].typeIndex].kind; }
 
     // The current state as one frame for the cache.
     void snapshot(std::vector<AgentFrame>& out) const;
@@ -120,6 +124,8 @@ private:
     glm::vec3 separateBodies(std::size_t i) const;
     glm::vec3 steer(std::size_t i, const SteeringAgent& self, std::span<const Neighbour> near,
                     WanderState& wanderOut) const;
+    std::span<const Neighbour> neighboursToAvoid(std::size_t i, std::span<const Neighbour> near,
+                                                 Neighbour* buffer) const;
     glm::vec3 avoidReciprocally(std::size_t i, const SteeringAgent& self, glm::vec3 force,
                                 std::span<const Neighbour> near, const TypeSteering& s) const;
     glm::vec3 flowDirection(glm::vec3 p) const;
@@ -127,6 +133,10 @@ private:
     float groundHeight(float x, float z) const;
     void commit(std::size_t i, std::uint64_t& wallCrossings);
     void countStep();
+    // Leader overtakes (WorldLeaders.cpp): followers ahead of their leader this step.
+    void countLeaderOvertakes();
+    float routeProgress(std::size_t path, glm::vec2 p) const;
+    const TypeCollision& collision(std::size_t i) const { return m_collision[m_info[i].typeIndex]; }
     // Brain phase and its effect on steering (WorldBrain.cpp, WorldBrainSense.cpp).
     void buildBrains(const Scene& scene);
     void runBrains();
@@ -154,6 +164,8 @@ private:
 
     std::vector<TypeParams> m_types;
     std::vector<TypeSteering> m_steering;  // per type
+    std::vector<TypeCollision> m_collision;  // per type: layers and priority
+    bool m_makingWay = false;  // some types differ in layers or priority (else all collide as equals)
 
     // The set, static during a run.
     SegmentGrid m_walls;  // walls and the 4 sides of box obstacles

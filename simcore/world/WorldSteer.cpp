@@ -91,13 +91,20 @@ std::size_t World::gatherNeighbours(std::size_t i, Neighbour* out, std::uint32_t
     // The k nearest, ties by index, kept sorted by insertion; once k are known the search
     // radius shrinks to the k-th distance, so farther candidates and cells are skipped.
     // A candidate is one 64-bit key: the bits of d2 (>= 0, so they order like the
-    // floats) above the index, so a comparison is one integer compare.
+    // floats) above the index, so a comparison is one integer compare. A neighbour of
+    // higher priority ranks before every other (its top bit is clear), so a dense crowd
+    // never loses sight of the ambulance among its nearest neighbours; with priorities
+    // in the scene the radius therefore does not shrink.
+    const TypeCollision& mine = collision(i);
     constexpr std::size_t k = kMaxNeighbours;
+    constexpr std::uint64_t kNotUrgent = std::uint64_t(1) << 63;
     std::array<std::uint64_t, k> best;
     std::size_t count = 0;
     float bound = r2;
     const float c = t.cosHalfView;
     auto consider = [&](std::uint32_t j, const glm::vec3& q) {
+        if (m_makingWay && !collide(mine, collision(j)))
+            return;  // agents on layers that do not collide do not perceive each other
         const glm::vec3 d = q - p;
         const float d2 = glm::dot(d, d);
         if (d2 > bound || j == i)
@@ -111,7 +118,8 @@ std::size_t World::gatherNeighbours(std::size_t i, Neighbour* out, std::uint32_t
             if (outside && d2 > contact * contact)
                 return;
         }
-        const std::uint64_t key = (std::uint64_t(std::bit_cast<std::uint32_t>(d2 + 0.0f)) << 32) | j;
+        const bool urgent = m_makingWay && collision(j).priority > mine.priority;
+        const std::uint64_t key = (urgent ? 0 : kNotUrgent) | (std::uint64_t(std::bit_cast<std::uint32_t>(d2 + 0.0f)) << 32) | j;
         std::size_t at = count;
         if (count == k) {
             if (key >= best[k - 1])
@@ -123,8 +131,8 @@ std::size_t World::gatherNeighbours(std::size_t i, Neighbour* out, std::uint32_t
         for (; at > 0 && key < best[at - 1]; --at)
             best[at] = best[at - 1];
         best[at] = key;
-        if (count == k)
-            bound = std::bit_cast<float>(std::uint32_t(best[k - 1] >> 32));
+        if (count == k && !m_makingWay)
+            bound = std::bit_cast<float>(std::uint32_t(best[k - 1] >> 32) & 0x7fffffffu);
     };
     // Nearest rows first: once the k best are found, farther cells are skipped.
     m_grid.forEachNearest(p, t.perception, [&] { return bound; }, consider);
@@ -216,8 +224,12 @@ glm::vec3 World::steer(std::size_t i, const SteeringAgent& self, std::span<const
         request(B::ObstacleAvoidance,
                 [&] { return avoidObstacles(self, {circles.data(), nc}, {boxes.data(), nb}, goal, s.obstacles); });
     }
-    request(B::Separation, [&] { return separate(self, near, s.separation); });
-    request(B::UnalignedCollisionAvoidance, [&] { return avoidUnalignedCollisions(self, near, s.unaligned); });
+    // Separation and collision avoidance leave to lower-priority neighbours the whole
+    // of making way (WorldPriority.h).
+    std::array<Neighbour, kMaxNeighbours> yielding;
+    const std::span<const Neighbour> avoided = neighboursToAvoid(i, near, yielding.data());
+    request(B::Separation, [&] { return separate(self, avoided, s.separation); });
+    request(B::UnalignedCollisionAvoidance, [&] { return avoidUnalignedCollisions(self, avoided, s.unaligned); });
     if (leaderIndex >= 0) {
         request(B::Evasion, [&] { return evade(self, leader, s.evasion); });
         request(B::Flee, [&] { return flee(self, leader.position, s.flee); });
@@ -230,7 +242,11 @@ glm::vec3 World::steer(std::size_t i, const SteeringAgent& self, std::span<const
     if (m_path[i] >= 0) {
         const auto k = std::size_t(m_path[i]);
         const SteeringPath path{m_pathPoints[k], m_paths[k].radiusM, m_paths[k].closed};
-        request(B::PathFollowing, [&] { return followPath(self, path, s.path); });
+        // Paths lie on the ground; a flier follows one in the horizontal at its own height.
+        SteeringAgent flat = self;
+        if (s.vehicle.flying)
+            flat.position.y = flat.velocity.y = 0.0f;
+        request(B::PathFollowing, [&] { return followPath(flat, path, s.path); });
     }
     if (!m_flow.empty())
         request(B::FlowFieldFollowing, [&] { return followFlow(self, flowDirection(flowSamplePoint(self, s.flow)), s.flow); });
@@ -259,9 +275,25 @@ glm::vec3 World::steer(std::size_t i, const SteeringAgent& self, std::span<const
     return s.priority ? allocateByPriority(requests, self.maxForce) : blendWeighted(requests, self.maxForce);
 }
 
+// The neighbours agent i avoids: all but those of lower priority, which make way for it.
+// `near` itself when nobody is of lower priority (always, between equals).
+std::span<const Neighbour> World::neighboursToAvoid(std::size_t i, std::span<const Neighbour> near,
+                                                    Neighbour* buffer) const
+{
+    const std::uint32_t* index = &m_nearIndex[i * kMaxNeighbours];
+    const float priority = collision(i).priority;
+    std::size_t n = 0;
+    for (std::size_t k = 0; k < near.size(); ++k)
+        if (collision(index[k]).priority >= priority)
+            buffer[n++] = near[k];
+    return n == near.size() ? near : std::span<const Neighbour>(buffer, n);
+}
+
 // Reciprocal avoidance (ORCA) on the ground: the velocity the blend asks for becomes the
-// nearest one that touches no neighbour within the horizon; an agent that has stopped
-// will not move, so the mover takes all of that avoidance.
+// nearest one that touches no neighbour within the horizon. Each pair splits the
+// avoidance by priority (WorldPriority.h): an agent that has stopped will not move and
+// one of higher priority will not yield, so the other takes all of it; against one of
+// lower priority an agent takes none and does not see it here at all.
 glm::vec3 World::avoidReciprocally(std::size_t i, const SteeringAgent& self, glm::vec3 force,
                                    std::span<const Neighbour> near, const TypeSteering& s) const
 {
@@ -275,11 +307,15 @@ glm::vec3 World::avoidReciprocally(std::size_t i, const SteeringAgent& self, glm
     std::array<PlanarNeighbour, kMaxNeighbours> others;
     const std::uint32_t* index = &m_nearIndex[i * kMaxNeighbours];
     const glm::vec2 fwd = xz(self.forward);
-    std::size_t oncoming = 0;
+    std::size_t oncoming = 0, count = 0;
     for (std::size_t k = 0; k < near.size(); ++k) {
-        others[k] = {xz(near[k].position), xz(near[k].velocity), near[k].radius, m_stopped[index[k]] ? 1.0f : 0.5f};
+        const float share = avoidanceShare(collision(i), collision(index[k]), m_stopped[index[k]] != 0);
+        if (share <= 0.0f)
+            continue;
+        PlanarNeighbour& o = others[count++];
+        o = {xz(near[k].position), xz(near[k].velocity), near[k].radius, share};
         if (!m_stopped[index[k]] && glm::dot(xz(near[k].forward), fwd) < -0.5f &&
-            glm::dot(others[k].position - xz(self.position), fwd) > 0.0f)
+            glm::dot(o.position - xz(self.position), fwd) > 0.0f)
             ++oncoming;
     }
     // Keep to the right of oncoming walkers (the pedestrians' convention), more the more
@@ -290,7 +326,7 @@ glm::vec3 World::avoidReciprocally(std::size_t i, const SteeringAgent& self, glm
         preferred = preferred * turn.x + right * turn.y;
     }
     const PlanarBody body{xz(self.position), xz(self.velocity), self.radius, self.maxSpeed};
-    const glm::vec2 v = sim::avoidReciprocally(body, preferred, {others.data(), near.size()}, m_dt, s.reciprocal);
+    const glm::vec2 v = sim::avoidReciprocally(body, preferred, {others.data(), count}, m_dt, s.reciprocal);
     return (glm::vec3(v.x, 0.0f, v.y) - glm::vec3(self.velocity.x, 0.0f, self.velocity.z)) * (self.mass / m_dt);
 }
 

@@ -125,6 +125,7 @@ void World::step()
     m_counters.wallPenetrations += crossings;
     ++m_step;
     countStep();
+    countLeaderOvertakes();
     trafficAfterStep();
 }
 
@@ -155,8 +156,9 @@ glm::vec3 World::separateBodies(std::size_t i) const
             const float a = float(rngUniform(lo, hi, 0, 77)) * 6.2831853f;
             dir = glm::vec3(std::cos(a), 0.0f, std::sin(a)) * (m_info[i].id == lo ? 1.0f : -1.0f);
         }
-        // A standing neighbour does not give way, so this agent takes the whole overlap.
-        const float share = m_stopped[j] ? 1.0f : 0.5f;
+        // A standing neighbour, or one of higher priority, does not give way, so this
+        // agent takes the whole overlap; against one of lower priority it takes none.
+        const float share = avoidanceShare(collision(i), collision(j), m_stopped[j] != 0);
         push += dir * ((contact - dist) * share);
     }
     // Cap the correction so a squeezed agent is nudged, never thrown: at most half its
@@ -297,8 +299,8 @@ void World::countStep()
         const glm::vec2 p = xz(m_pos[i]);
         const float r = m_radius[i];
         auto overlap = [&](std::uint32_t j, const glm::vec3& q) {
-            if (j <= i)
-                return;
+            if (j <= i || (m_makingWay && !collide(collision(i), collision(j))))
+                return;  // layers that do not collide may overlap
             const float contact = r + m_radius[j] - kOverlapToleranceM;
             const glm::vec3 d = m_pos[i] - q;
             if (glm::dot(d, d) < contact * contact)

@@ -4,6 +4,7 @@
 #include "simcore/world/TypeSteering.h"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 
 namespace throng::sim::detail {
@@ -226,7 +227,7 @@ void SceneReader::readAgentTypes(const YAML::Node& node, Scene& scene)
             continue;
         m_f.checkKeys(item, key, {"name", "kind", "radius", "max_speed", "max_force", "mass", "perception",
                                   "view_angle", "brain", "character", "clips", "variation", "behaviours", "combination",
-                                  "min_speed", "banking", "emits"});
+                                  "min_speed", "banking", "emits", "priority", "layer", "collides_with"});
         AgentType t;
         if (!m_f.readName(item, "name", key, t.name, true))
             continue;
@@ -289,6 +290,7 @@ void SceneReader::readAgentTypes(const YAML::Node& node, Scene& scene)
             if (t.kind != AgentKind::Flier && item[flierOnly].IsDefined())
                 m_f.warning(item[flierOnly].Mark(), key + "." + flierOnly,
                             std::string("'") + flierOnly + "' only affects fliers and is ignored here");
+        readCollision(item, key, t);
         if (YAML::Node b = item["behaviours"]; b.IsDefined() && m_f.expectMap(b, key + ".behaviours")) {
             const auto& known = behaviourNames();
             m_f.checkDuplicateKeys(b, key + ".behaviours");
@@ -308,6 +310,26 @@ void SceneReader::readAgentTypes(const YAML::Node& node, Scene& scene)
             }
         }
         scene.agentTypes.push_back(std::move(t));
+    }
+}
+
+// Making way: priority, collision layer and the layers the type collides with.
+void SceneReader::readCollision(const YAML::Node& item, const std::string& key, AgentType& t)
+{
+    m_f.readFloat(item, "priority", key, t.priority, false, Range::Any);
+    if (m_f.readU32(item, "layer", key, t.layer, false) && t.layer > 31)
+        m_f.error(item["layer"].Mark(), key + ".layer", "must be a layer from 0 to 31");
+    std::vector<float> layers;
+    if (item["collides_with"].IsDefined() && m_f.readFloatList(item, "collides_with", key, layers, false)) {
+        t.collidesWith = 0;
+        for (float l : layers) {
+            if (l < 0.0f || l > 31.0f || l != std::floor(l)) {
+                m_f.error(item["collides_with"].Mark(), key + ".collides_with",
+                          "layers are whole numbers from 0 to 31");
+                break;
+            }
+            t.collidesWith |= 1u << unsigned(l);
+        }
     }
 }
 
@@ -376,7 +398,7 @@ void SceneReader::readGroups(const YAML::Node& node, Scene& scene)
         const YAML::Node item = node[i];
         if (!m_f.expectMap(item, key))
             continue;
-        m_f.checkKeys(item, key, {"name", "type", "count", "rect", "circle", "goal", "path", "leader"});
+        m_f.checkKeys(item, key, {"name", "type", "count", "rect", "circle", "goal", "path", "leader", "altitude"});
         SpawnGroup g;
         if (m_f.readName(item, "name", key, g.name, true))
             claimName(item, key, g.name, "group");
@@ -405,6 +427,15 @@ void SceneReader::readGroups(const YAML::Node& node, Scene& scene)
             checkRef(item, "path", key, g.path, known("path", g.path), "path");
         if (m_f.readU32(item, "leader", key, g.leader, false) && item["leader"].IsDefined())
             m_leaderRefs.push_back({item["leader"].Mark(), key + ".leader", g.leader});
+        if (item["altitude"].IsDefined() &&
+            m_f.readVec2(item, "altitude", key, g.altitudeM, false, Range::NonNegative)) {
+            const AgentType* type = scene.findAgentType(g.type);
+            if (g.altitudeM.x > g.altitudeM.y)
+                m_f.error(item["altitude"].Mark(), key + ".altitude", "range [min, max] has min greater than max");
+            else if (type && type->kind != AgentKind::Flier)
+                m_f.warning(item["altitude"].Mark(), key + ".altitude",
+                            "'altitude' only affects fliers and is ignored here");
+        }
         scene.groups.push_back(std::move(g));
     }
 }

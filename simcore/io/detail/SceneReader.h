@@ -26,6 +26,7 @@ private:
     void readBrains(const YAML::Node& node, Scene& scene);
     void readAgentTypes(const YAML::Node& node, Scene& scene);
     void readVariation(const YAML::Node& node, const std::string& key, Variation& v);
+    void readCollision(const YAML::Node& item, const std::string& key, AgentType& t);
     void readAgents(const YAML::Node& node, Scene& scene);
     void readAgentTable(const YAML::Node& node, const std::string& key, Scene& scene);
     // The hand-set variation of one agent (look, tint, height), checked against its type.

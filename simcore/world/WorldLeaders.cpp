@@ -1,0 +1,71 @@
+// Leader overtakes: the figure a user checks after a chase (cavalry): no follower ever
+// gets ahead of the leader it chases. Reads the committed state only.
+#include "simcore/world/World.h"
+
+#include "simcore/world/detail/StepGeometry.h"
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
+
+namespace throng::sim {
+
+using namespace detail;
+
+// Arc length (m) from the start of path `path` to its point nearest p.
+float World::routeProgress(std::size_t path, glm::vec2 p) const
+{
+    const std::vector<glm::vec2>& points = m_paths[path].points;
+    float best = INFINITY, bestAt = 0.0f, walked = 0.0f;
+    for (std::size_t k = 0; k + 1 < points.size(); ++k) {
+        const glm::vec2 c = closestOnSegment(p, points[k], points[k + 1]);
+        const float d = glm::distance(p, c);
+        if (d < best) {
+            best = d;
+            bestAt = walked + glm::distance(points[k], c);
+        }
+        walked += glm::distance(points[k], points[k + 1]);
+    }
+    return bestAt;
+}
+
+// A follower (a ground agent, not driven, whose type pursues or follows its leader)
+// overtakes in a step when its leader is still on its way (not stopped for good), the
+// follower's centre lies in front of the leader's centre (more than the two bodies'
+// radii ahead along the leader's heading, and further ahead than to the side: within
+// 45 degrees of the heading, so a flanker level with a turning leader does not count),
+// and, when the leader follows an open path, the follower's progress along that path
+// (the arc length to its nearest point) exceeds the leader's.
+void World::countLeaderOvertakes()
+{
+    const std::size_t n = m_pos.size();
+    std::uint64_t ahead = 0;
+#pragma omp parallel for schedule(static, 256) num_threads(m_threads) reduction(+ : ahead)
+    for (std::size_t i = 0; i < n; ++i) {
+        if (m_leader[i] < 0 || m_traffic.isDriven(i))
+            continue;
+        const TypeSteering& s = m_steering[m_info[i].typeIndex];
+        if (s.vehicle.flying ||
+            !(s.on(Behaviour::Pursuit) || s.on(Behaviour::OffsetPursuit) || s.on(Behaviour::LeaderFollowing)))
+            continue;
+        const auto l = std::size_t(m_leader[i]);
+        if (m_stopped[l])
+            continue;
+        const glm::vec2 fwd = xz(m_fwd[l]), rel = xz(m_pos[i]) - xz(m_pos[l]);
+        if (glm::dot(fwd, fwd) < 1e-12f)
+            continue;
+        const glm::vec2 heading = glm::normalize(fwd);
+        const float along = glm::dot(rel, heading), aside = std::fabs(cross(heading, rel));
+        if (along <= m_radius[i] + m_radius[l] || along <= aside)
+            continue;
+        if (m_path[l] >= 0 && !m_paths[std::size_t(m_path[l])].closed) {
+            const auto path = std::size_t(m_path[l]);
+            if (routeProgress(path, xz(m_pos[i])) <= routeProgress(path, xz(m_pos[l])))
+                continue;
+        }
+        ++ahead;
+    }
+    m_counters.leaderOvertaken += ahead;
+}
+
+}  // namespace throng::sim
