@@ -46,6 +46,7 @@ RunStats RunStats::from(const World& world, std::uint64_t frames, double wallSec
             ++s.arrived;
     s.withGoal = world.agentsWithGoal();
     s.heroes = world.heroTracks().size();
+    s.nav = NavStats::from(world);
     if (const TrafficSystem* traffic = world.trafficSystem()) {
         const WorldTraffic& names = world.traffic();
         s.vehicles = traffic->vehicleCount();
@@ -110,6 +111,7 @@ std::string RunStats::toJson() const
                  ", \"green_phases\": " + std::to_string(f.greenPhases) + ", \"per_green\": " + number(f.perGreen) + "}";
     }
     field("throughput_per_green", flows + (throughput.empty() ? "]" : "\n  ]"));
+    j += nav.jsonFields();
     field("non_finite_values", std::to_string(counters.nonFiniteValues), true);
     return j + "}\n";
 }

@@ -1,6 +1,7 @@
 #pragma once
 // The figures of one run, as the CLI's --stats JSON carries them (DESIGN.md).
 
+#include "simcore/world/NavStats.h"
 #include "simcore/world/StepCounters.h"
 
 #include <cstdint>
@@ -38,6 +39,7 @@ struct RunStats {
     std::uint64_t vehicleCollisions = 0;        // vehicle pairs in contact, summed over steps
     std::uint64_t vehicleCrossings = 0, pedestrianCrossings = 0;  // over all stop lines
     std::vector<StopLineFlow> throughput;
+    NavStats nav;  // exits, shortest-path walkers, plans
 
     static RunStats from(const World& world, std::uint64_t frames, double wallSeconds);
     std::string toJson() const;

@@ -161,7 +161,7 @@ glm::vec3 World::steer(std::size_t i, const SteeringAgent& self, std::span<const
     };
     const glm::vec3 p = self.position;
     const bool hasGoal = m_goal[i] >= 0;
-    const glm::vec3 goal = hasGoal ? glm::vec3(m_goalSpot[i].x, p.y, m_goalSpot[i].y) : p + self.forward;
+    const glm::vec3 goal = hasGoal ? navGoal(i, glm::vec3(m_goalSpot[i].x, p.y, m_goalSpot[i].y)) : p + self.forward;
     const std::int32_t leaderIndex = m_leader[i];
     Neighbour leader;
     if (leaderIndex >= 0) {

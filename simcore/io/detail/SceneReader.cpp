@@ -124,7 +124,8 @@ void SceneReader::readSettings(const YAML::Node& node, Settings& s)
     const std::string key = "settings";
     if (!m_f.expectMap(node, key))
         return;
-    m_f.checkKeys(node, key, {"fps", "duration", "seed", "bounds"});
+    m_f.checkKeys(node, key, {"fps", "duration", "seed", "bounds", "nav_cell"});
+    m_f.readFloat(node, "nav_cell", key, s.navCellM, false, Range::Positive);
     m_f.readFloat(node, "fps", key, s.fps, false, Range::Positive);
     m_f.readFloat(node, "duration", key, s.durationS, false, Range::Positive);
     m_f.readUInt(node, "seed", key, s.seed, false, UINT64_MAX);
@@ -224,7 +225,7 @@ void SceneReader::readAgentTypes(const YAML::Node& node, Scene& scene)
             continue;
         m_f.checkKeys(item, key, {"name", "kind", "radius", "max_speed", "max_force", "mass", "perception",
                                   "view_angle", "brain", "character", "clips", "variation", "behaviours", "combination",
-                                  "min_speed", "banking"});
+                                  "min_speed", "banking", "navigation"});
         AgentType t;
         if (!m_f.readName(item, "name", key, t.name, true))
             continue;
@@ -281,6 +282,16 @@ void SceneReader::readAgentTypes(const YAML::Node& node, Scene& scene)
         if (m_f.readFloat(item, "min_speed", key, t.minSpeed, false, Range::NonNegative) && t.minSpeed > t.maxSpeed)
             m_f.error(item["min_speed"].Mark(), key + ".min_speed", "is above max_speed");
         m_f.readFloat(item, "banking", key, t.banking, false, Range::NonNegative);
+        std::string navigation = "direct";
+        if (m_f.readString(item, "navigation", key, navigation, false)) {
+            if (navigation == "astar") t.navigation = Navigation::AStar;
+            else if (navigation == "flow_field") t.navigation = Navigation::FlowField;
+            else if (navigation != "direct")
+                m_f.error(item["navigation"].Mark(), key + ".navigation",
+                          "must be direct, astar or flow_field, got '" + navigation + "'");
+            if (t.kind != AgentKind::Pedestrian && t.navigation != Navigation::Direct)
+                m_f.warning(item["navigation"].Mark(), key + ".navigation", "only walkers navigate; ignored here");
+        }
         for (const char* flierOnly : {"min_speed", "banking"})
             if (t.kind != AgentKind::Flier && item[flierOnly].IsDefined())
                 m_f.warning(item[flierOnly].Mark(), key + "." + flierOnly,
