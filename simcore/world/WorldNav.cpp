@@ -26,6 +26,7 @@ constexpr float kWaypointSpread = 0.5f;
 constexpr float kClearanceM = 0.15f;          // kept beyond the body radius when inflating the set
 constexpr float kAvoidRadiusM = 1.0f;         // a stalled walker's detour avoids this disk ahead of it
 constexpr float kSideStepDurationS = 1.5f;
+constexpr float kCornerReachedM = 0.35f;      // this close to a corner, a walker turns even without a clear view
 
 }  // namespace
 
@@ -89,6 +90,7 @@ void World::planNav(std::size_t i)
     m_nav.plan[i] = planBetween(m_nav.cache, m_nav.grid, xz(m_pos[i]), g.position, m_nav.astar);
     m_nav.planGoal[i] = m_goal[i];
     m_nav.waypoint[i] = 0;
+    m_nav.stall[i] = StallWatch{};
 }
 
 void World::navBeforeStep()
@@ -118,6 +120,8 @@ void World::navBeforeStep()
             const NavCell goal = grid.nearestWalkable(grid.cellOf(m_goals[std::size_t(m_goal[i])].position));
             NavPlan detour = planAround(m_nav.astar, grid, start, goal, p + way * (m_radius[i] + kAvoidRadiusM),
                                         kAvoidRadiusM);
+            // Progress is measured along the new way from here on (a detour is longer).
+            m_nav.stall[i] = StallWatch{};
             if (detour.found()) {
                 m_nav.plan[i] = std::make_shared<const NavPlan>(std::move(detour));
                 m_nav.waypoint[i] = 0;
@@ -161,7 +165,15 @@ void World::updateNavTarget(std::size_t i)
         const NavPlan* plan = m_nav.plan[i].get();
         if (plan && plan->found() && m_nav.planGoal[i] == m_goal[i]) {
             const std::vector<glm::vec2>& w = plan->waypoints;
-            const std::size_t k = advanceWaypoint(w, m_nav.waypoint[i], p, m_nav.waypointRadiusM[i]);
+            // Within its own radius of a corner the walker turns for the next one, but only
+            // once it can see it: cutting a corner short must not lead into a wall's end.
+            std::size_t k = m_nav.waypoint[i];
+            while (k + 1 < w.size()) {
+                const std::size_t next = advanceWaypoint(w, k, p, m_nav.waypointRadiusM[i]);
+                if (next == k || (glm::distance(p, w[k]) > kCornerReachedM && !lineOfSight(m_nav.grid, p, w[k + 1])))
+                    break;
+                ++k;
+            }
             m_nav.waypoint[i] = std::uint32_t(k);
             // The last waypoint is the goal cell's centre: from there on the walker heads
             // for its own spot, as a direct walker does.
@@ -177,12 +189,22 @@ void World::updateNavTarget(std::size_t i)
         }
     } else if (goal < m_nav.hasField.size() && m_nav.hasField[goal]) {
         const FlowField& field = m_nav.fields[goal];
-        const NavCell c = field.grid().cellOf(p);
-        if (field.reachable(c))
+        const NavGrid& grid = field.grid();
+        const NavCell c = grid.cellOf(p);
+        if (field.reachable(c)) {
             remainingM = field.distanceM(c);
-        const glm::vec2 dir = field.sample(p);
-        if (glm::dot(dir, dir) > 0.0f)
-            aim(dir, 0.0f);
+            const glm::vec2 dir = field.sample(p);
+            if (glm::dot(dir, dir) > 0.0f)
+                aim(dir, 0.0f);
+        } else if (const NavCell free = grid.nearestWalkable(c); grid.walkable(free) && field.reachable(free)) {
+            // Squeezed into a wall's margin (a blocked cell has no direction): back into
+            // the nearest walkable cell, where the field takes over again.
+            const glm::vec2 d = grid.centre(free) - p;
+            const float len = glm::length(d);
+            remainingM = field.distanceM(free) + len;
+            if (len > 1e-4f)
+                aim(d / len, 0.0f);
+        }
     }
     // Stall watch: waiting at a light is not being stuck. A flow-field walker in a queue
     // is not stuck either (the field already leads round the set), so only A* walkers act.
