@@ -152,6 +152,7 @@ private:
     void planNav(std::size_t i);
     void navBeforeStep();
     void updateNavTarget(std::size_t i);
+    bool waitsInQueue(std::size_t i) const;
     glm::vec3 navGoal(std::size_t i, glm::vec3 goalSpot) const;  // where seek and arrival aim
 
     // Traffic phases; see WorldTraffic.cpp.

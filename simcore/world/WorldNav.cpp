@@ -5,6 +5,7 @@
 // from each agent's own state, so the result does not depend on the thread count.
 #include "simcore/world/World.h"
 
+#include "simcore/traffic/LightPhase.h"
 #include "simcore/world/Rng.h"
 #include "simcore/world/detail/StepGeometry.h"
 
@@ -26,6 +27,7 @@ constexpr float kWaypointSpread = 0.5f;
 constexpr float kClearanceM = 0.15f;          // kept beyond the body radius when inflating the set
 constexpr float kAvoidRadiusM = 1.0f;         // a stalled walker's detour avoids this disk ahead of it
 constexpr float kSideStepDurationS = 1.5f;
+constexpr float kQueueGapM = 0.5f;           // m: a walker this close behind a waiting one queues
 constexpr float kCornerReachedM = 0.35f;      // this close to a corner, a walker turns even without a clear view
 
 }  // namespace
@@ -78,6 +80,8 @@ void World::buildNav(const Scene& scene)
     m_nav.sideDir.assign(n, glm::vec2(0.0f));
     m_nav.target.assign(n, glm::vec2(0.0f));
     m_nav.hasTarget.assign(n, 0);
+    m_nav.waiting.assign(n, 0);
+    m_nav.waitingNext.assign(n, 0);
     // Plans at load, in agent order: a group starting in one cell shares one plan.
     for (std::size_t i = 0; i < n; ++i)
         if (m_nav.mode[i] == Navigation::AStar && m_goal[i] >= 0 && m_path[i] < 0)
@@ -136,8 +140,32 @@ void World::navBeforeStep()
     }
     // Target: each walker from its own state.
 #pragma omp parallel for schedule(static, 256) num_threads(m_threads)
-    for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t i = 0; i < n; ++i) {
+        m_nav.waitingNext[i] = waitsInQueue(i) ? 1 : 0;
         updateNavTarget(i);
+    }
+    m_nav.waiting.swap(m_nav.waitingNext);
+}
+
+bool World::waitsInQueue(std::size_t i) const
+{
+    if (m_stopped[i] || m_traffic.signal.empty() || m_types[m_info[i].typeIndex].kind != AgentKind::Pedestrian)
+        return false;
+    const PedestrianSignal& sig = m_traffic.signal[i];
+    if (sig.crosswalk >= 0 && !sig.onCrosswalk && (sig.mustStop || sig.phase != LightPhase::Green))
+        return true;
+    // Right behind a waiting walker, in the way it wants to go: the queue waits too.
+    // Neighbours and flags are the last step's, so the order agents are visited in
+    // does not matter.
+    const glm::vec2 p = xz(m_pos[i]), way = wantedHeading(i);
+    const std::uint32_t* near = &m_nearIndex[i * kMaxNeighbours];
+    for (std::size_t k = 0; k < m_nearCount[i]; ++k) {
+        const std::uint32_t j = near[k];
+        const glm::vec2 d = xz(m_pos[j]) - p;
+        if (m_nav.waiting[j] && glm::length(d) < m_radius[i] + m_radius[j] + kQueueGapM && glm::dot(d, way) > 0.0f)
+            return true;
+    }
+    return false;
 }
 
 void World::updateNavTarget(std::size_t i)
@@ -208,8 +236,7 @@ void World::updateNavTarget(std::size_t i)
     }
     // Stall watch: waiting at a light is not being stuck. A flow-field walker in a queue
     // is not stuck either (the field already leads round the set), so only A* walkers act.
-    const bool waiting = i < m_traffic.signal.size() && m_traffic.signal[i].mustStop;
-    if (waiting)
+    if (m_nav.waitingNext[i])
         m_nav.stall[i] = StallWatch{};
     else if (updateStall(m_nav.stall[i], remainingM, m_dt) && mode == Navigation::AStar)
         m_nav.replan[i] = 1;

@@ -48,6 +48,9 @@ struct WorldNav {
     std::vector<glm::vec2> sideDir;      // unit: the side-step's direction
     std::vector<glm::vec2> target;       // where the agent steers this step (x, z)
     std::vector<std::uint8_t> hasTarget; // 0: steer at the goal's own spot as before
+    // Held at a light, or queued right behind someone who is (as of the last step; the
+    // step being computed writes waitingNext): waiting is not being stuck.
+    std::vector<std::uint8_t> waiting, waitingNext;
 };
 
 }  // namespace throng::sim
