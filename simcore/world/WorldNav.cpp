@@ -24,6 +24,8 @@ enum NavStream : std::uint64_t { kWaypointRadius = 201, kSideStepSign };
 
 constexpr float kWaypointRadiusBaseM = 1.0f;  // a walker advances within 0.5..1.5 m of a corner
 constexpr float kWaypointSpread = 0.5f;
+constexpr float kDefaultRadiusM = 0.3f;       // a walker's body, for a grid only flow strokes need
+constexpr float kSketchMinStrength = 0.2f;    // weaker sketched field than this: no flow there
 constexpr float kClearanceM = 0.15f;          // kept beyond the body radius when inflating the set
 constexpr float kAvoidRadiusM = 1.0f;         // a stalled walker's detour avoids this disk ahead of it
 constexpr float kSideStepDurationS = 1.5f;
@@ -46,14 +48,23 @@ void World::buildNav(const Scene& scene)
         inflate = std::max(inflate, t.radiusM + kClearanceM);
     }
     m_nav.active = inflate > 0.0f;
-    if (!m_nav.active)
+    if (!m_nav.active && scene.flowStrokes.empty())
         return;
     // The set as walkers meet it: walls, obstacles and the kerbs along lanes (m_walls holds
     // all three), so a plan never leads onto a lane except over a crosswalk.
     NavShapes shapes = navShapes(scene);
     shapes.walls = m_walls.segments();
     m_nav.grid.build(shapes, scene.settings.boundsMin, scene.settings.boundsMax,
-                     NavGridParams{scene.settings.navCellM, inflate});
+                     NavGridParams{scene.settings.navCellM, m_nav.active ? inflate : kDefaultRadiusM + kClearanceM});
+    // Flow strokes become a sketched field (Jin et al. 2008) that flow_field_following
+    // reads; should the solve fail, the World keeps the plain lookup along the strokes.
+    if (!scene.flowStrokes.empty()) {
+        SketchField sketch;
+        if (sketch.build(scene, m_nav.grid))
+            m_nav.sketch = std::move(sketch);
+    }
+    if (!m_nav.active)
+        return;
 
     m_nav.hasField.assign(m_goals.size(), 0);
     m_nav.fields.resize(m_goals.size());
@@ -240,6 +251,17 @@ void World::updateNavTarget(std::size_t i)
         m_nav.stall[i] = StallWatch{};
     else if (updateStall(m_nav.stall[i], remainingM, m_dt) && mode == Navigation::AStar)
         m_nav.replan[i] = 1;
+}
+
+bool World::sketchedFlow(glm::vec3 p, glm::vec3& direction) const
+{
+    if (!m_nav.sketch)
+        return false;
+    const SketchField& field = *m_nav.sketch;
+    const NavCell c = field.grid().cellOf(xz(p));
+    const glm::vec2 d = field.grid().inside(c) && field.strength(c) >= kSketchMinStrength ? field.sample(xz(p)) : glm::vec2(0.0f);
+    direction = {d.x, 0.0f, d.y};
+    return true;
 }
 
 glm::vec3 World::navGoal(std::size_t i, glm::vec3 goalSpot) const

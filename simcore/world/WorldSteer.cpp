@@ -133,6 +133,9 @@ std::size_t World::gatherNeighbours(std::size_t i, Neighbour* out, std::uint32_t
 
 glm::vec3 World::flowDirection(glm::vec3 p) const
 {
+    // The strokes' sketched field where it solved (WorldNav.cpp).
+    if (glm::vec3 sketched; sketchedFlow(p, sketched))
+        return sketched;
     // The nearest stroke segment whose band holds p gives the direction.
     const glm::vec2 q = xz(p);
     float bestD = INFINITY;

@@ -132,6 +132,28 @@ heroes:
         QCOMPARE(world.counters().wallPenetrations, std::uint64_t(0));
     }
 
+    void flowFollowersRideTheSketchedStroke()
+    {
+        // One stroke east along z = 0; the walker starts beside it facing north.
+        World world(parse(R"(throng: 1
+settings: {fps: 24, bounds: {min: [-20, -20], max: [20, 20]}}
+agent_types:
+  - {name: walker, behaviours: {flow_field_following: 1}}
+flow_strokes:
+  - {points: [[-15, 0], [-5, 0], [15, 0]], width: 2}
+agents:
+  - {type: walker, position: [-10, 0.5], heading: 90}
+)"));
+        QVERIFY(world.navigation().sketch.has_value());
+        for (int s = 0; s < 240; ++s)
+            world.step();
+        const glm::vec3 p = world.positions()[0], v = world.velocities()[0];
+        QVERIFY2(p.x > -4.0f, qPrintable(QString("x %1 after 10 s").arg(p.x)));
+        QVERIFY2(std::fabs(p.z) < 2.0f, qPrintable(QString("z %1").arg(p.z)));
+        QVERIFY(glm::length(v) > 0.5f);
+        QVERIFY2(v.x / glm::length(v) > 0.94f, "heading east along the stroke (within 20 degrees)");
+    }
+
     void sameFramesForOneAndTwoThreads()
     {
         std::string yaml = R"(throng: 1
