@@ -163,6 +163,8 @@ void writeAgentTypes(Writer& w, const Scene& s)
                     o << l;
             o << YAML::EndSeq;
         }
+        if (t.navigation != Navigation::Direct)
+            w.kv("navigation", toString(t.navigation));
         o << YAML::EndMap;
     }
     o << YAML::EndSeq;
@@ -256,7 +258,10 @@ std::string sceneToYaml(const Scene& s)
     w.vec2(s.settings.boundsMin);
     w.key("max");
     w.vec2(s.settings.boundsMax);
-    o << YAML::EndMap << YAML::EndMap;
+    o << YAML::EndMap;
+    if (s.settings.navCellM != Settings{}.navCellM)
+        w.kvf("nav_cell", s.settings.navCellM);
+    o << YAML::EndMap;
 
     if (!s.brains.empty()) {
         w.key("brains");

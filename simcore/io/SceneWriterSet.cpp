@@ -17,6 +17,8 @@ void writeSceneSet(YamlWriter& w, const Scene& s)
             w.key("position");
             w.vec2(g.position);
             w.kvf("radius", g.radiusM);
+            if (g.exit)
+                w.kv("exit", "true");
             o << YAML::EndMap;
         }
         o << YAML::EndSeq;

@@ -52,6 +52,16 @@ const char* toString(AgentKind kind)
     return "pedestrian";
 }
 
+const char* toString(Navigation navigation)
+{
+    switch (navigation) {
+    case Navigation::Direct: return "direct";
+    case Navigation::AStar: return "astar";
+    case Navigation::FlowField: return "flow_field";
+    }
+    return "direct";
+}
+
 const char* toString(AreaShape shape) { return shape == AreaShape::Circle ? "circle" : "rect"; }
 const char* toString(ObstacleShape shape) { return shape == ObstacleShape::Box ? "box" : "circle"; }
 

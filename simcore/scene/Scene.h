@@ -21,10 +21,15 @@ struct Settings {
     std::uint64_t seed = 1;       // keys every random number of a run
     glm::vec2 boundsMin{-50.0f};  // world bounds (x, z) in metres
     glm::vec2 boundsMax{50.0f};
+    float navCellM = 0.5f;        // navigation grid cell edge in metres, > 0
     bool operator==(const Settings&) const = default;
 };
 
 enum class AgentKind { Pedestrian, Vehicle, Flier };
+
+// How an agent type finds its way to its goal: straight at it, along a shared A* plan
+// round walls and obstacles, or down the goal's flow field.
+enum class Navigation { Direct, AStar, FlowField };
 
 struct Variation {
     std::vector<std::string> looks;   // mesh variants of the character, empty = default look
@@ -80,6 +85,7 @@ struct AgentType {
     float priority = 0.0f;                    // any finite number; higher = others make way
     std::uint32_t layer = 0;                  // collision layer, 0..31
     std::uint32_t collidesWith = 0xffffffffu; // bit k set = avoids agents on layer k
+    Navigation navigation = Navigation::Direct;  // walkers with a goal only
     bool operator==(const AgentType&) const = default;
 };
 
@@ -146,6 +152,7 @@ struct Goal {
     std::string name;
     glm::vec2 position{0.0f};
     float radiusM = 1.0f;  // arrival tolerance, > 0
+    bool exit = false;     // agents reaching it leave the simulation; door width = 2 radiusM
     bool operator==(const Goal&) const = default;
 };
 
@@ -265,6 +272,7 @@ const std::vector<std::string>& behaviourNames();
 const std::vector<std::string>& builtinCharacters();
 
 const char* toString(AgentKind kind);
+const char* toString(Navigation navigation);
 const char* toString(AreaShape shape);
 const char* toString(ObstacleShape shape);
 

@@ -24,17 +24,24 @@ void NeighbourGrid::configure(glm::vec2 boundsMin, glm::vec2 boundsMax, float ce
     m_start.assign(std::size_t(m_cols) * std::size_t(m_rows) + 1, 0);
 }
 
-void NeighbourGrid::rebuild(std::span<const glm::vec3> positions, bool sortByHeight)
+void NeighbourGrid::rebuild(std::span<const glm::vec3> positions, bool sortByHeight, std::span<const std::uint8_t> skip)
 {
     const std::size_t n = positions.size();
+    constexpr std::uint32_t kSkipped = UINT32_MAX;
     m_cellOf.resize(n);
-    m_sorted.resize(n);
     std::fill(m_start.begin(), m_start.end(), 0u);
+    std::size_t indexed = 0;
     for (std::size_t i = 0; i < n; ++i) {
+        if (i < skip.size() && skip[i]) {
+            m_cellOf[i] = kSkipped;
+            continue;
+        }
         const std::uint32_t c = std::uint32_t(cellZ(positions[i].z) * m_cols + cellX(positions[i].x));
         m_cellOf[i] = c;
         ++m_start[c + 1];
+        ++indexed;
     }
+    m_sorted.resize(indexed);
     for (std::size_t c = 1; c < m_start.size(); ++c)
         m_start[c] += m_start[c - 1];
     // Counting sort, stable: indices stay ascending within a cell, so neighbour order
@@ -42,11 +49,15 @@ void NeighbourGrid::rebuild(std::span<const glm::vec3> positions, bool sortByHei
     std::vector<std::uint32_t>& fill = m_cellOf;
     for (std::size_t i = 0; i < n; ++i) {
         const std::uint32_t c = fill[i];
+        if (c == kSkipped)
+            continue;
         fill[i] = m_start[c];  // reuse as the write cursor of the agent's slot
         ++m_start[c];
     }
-    m_sortedPos.resize(n);
+    m_sortedPos.resize(indexed);
     for (std::size_t i = 0; i < n; ++i) {
+        if (fill[i] == kSkipped)
+            continue;
         m_sorted[fill[i]] = std::uint32_t(i);
         m_sortedPos[fill[i]] = positions[i];
     }

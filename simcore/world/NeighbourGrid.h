@@ -21,8 +21,10 @@ public:
     void configure(glm::vec2 boundsMin, glm::vec2 boundsMax, float cellM);
     // Sorts agent indices into cells by their (x, z); with sortByHeight, each cell is also
     // ordered by y so forEachNear3D can skip the agents far above or below. Reuses its
-    // buffers.
-    void rebuild(std::span<const glm::vec3> positions, bool sortByHeight = false);
+    // buffers. Agents with skip[i] != 0 (agents that left through an exit) are not indexed;
+    // an empty skip indexes everyone.
+    void rebuild(std::span<const glm::vec3> positions, bool sortByHeight = false,
+                 std::span<const std::uint8_t> skip = {});
 
     // Calls f(j) or f(j, position of j) for every agent j whose cell overlaps the square
     // around p of half-size r. Positions come from a copy kept in cell order, so a query

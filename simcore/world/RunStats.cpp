@@ -52,6 +52,7 @@ RunStats RunStats::from(const World& world, std::uint64_t frames, double wallSec
     s.flierPolarisation = flock.polarisation;
     s.flierSpreadM = flock.spreadM;
     s.flierCentreToLeaderM = flock.centreToLeaderM;
+    s.nav = NavStats::from(world);
     if (const TrafficSystem* traffic = world.trafficSystem()) {
         const WorldTraffic& names = world.traffic();
         s.vehicles = traffic->vehicleCount();
@@ -121,6 +122,7 @@ std::string RunStats::toJson() const
     field("flier_polarisation", number(flierPolarisation));
     field("flier_spread_m", number(flierSpreadM));
     field("flier_centre_to_leader_m", number(flierCentreToLeaderM));
+    j += nav.jsonFields();
     field("non_finite_values", std::to_string(counters.nonFiniteValues), true);
     return j + "}\n";
 }

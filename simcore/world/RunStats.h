@@ -1,6 +1,7 @@
 #pragma once
 // The figures of one run, as the CLI's --stats JSON carries them (DESIGN.md).
 
+#include "simcore/world/NavStats.h"
 #include "simcore/world/StepCounters.h"
 
 #include <cstdint>
@@ -43,6 +44,7 @@ struct RunStats {
     double flierPolarisation = 0.0;    // |mean unit velocity|: 1 = all fly one way, ~0 = random
     double flierSpreadM = 0.0;         // RMS distance from the fliers' centre, m
     double flierCentreToLeaderM = 0.0; // followers' centre to their leaders' mean position, m
+    NavStats nav;  // exits, shortest-path walkers, plans
 
     static RunStats from(const World& world, std::uint64_t frames, double wallSeconds);
     std::string toJson() const;

@@ -79,12 +79,13 @@ World::World(const Scene& scene, const WorldOptions& options)
     buildAgents(scene);
     addTrafficAgents(scene);
     buildBrains(scene);
+    buildNav(scene);
     for (const TypeParams& t : m_types) {
         m_hasFliers = m_hasFliers || t.kind == AgentKind::Flier;
         m_maxRadius = std::max(m_maxRadius, t.radius);
     }
     m_grid.configure(scene.settings.boundsMin, scene.settings.boundsMax, cell);
-    m_grid.rebuild(m_pos, m_hasFliers);
+    m_grid.rebuild(m_pos, m_hasFliers, m_out);
 }
 
 void World::buildStatics(const Scene& scene)

@@ -11,6 +11,7 @@
 #include "simcore/world/StepCounters.h"
 #include "simcore/world/TypeSteering.h"
 #include "simcore/world/WorldPriority.h"
+#include "simcore/world/WorldNav.h"
 #include "simcore/world/WorldTraffic.h"
 
 #include <glm/vec3.hpp>
@@ -70,6 +71,13 @@ public:
     // The dense index of the agent that agent i pursues, evades or follows; -1 for none.
     std::int32_t leaderOf(std::size_t i) const { return m_leader[i]; }
     AgentKind agentKind(std::size_t i) const { return m_types[m_info[i].typeIndex].kind; }
+    // Navigation (WorldNav.cpp): agent i left through an exit goal; it is no longer
+    // simulated or perceived and stays where it left (arrivalTimeS says when).
+    bool isOut(std::size_t i) const { return m_out[i] != 0; }
+    // Agent i's goal as an index into goals(), or -1.
+    std::int32_t goalIndex(std::size_t i) const { return m_goal[i]; }
+    const std::vector<Goal>& goals() const { return m_goals; }
+    const WorldNav& navigation() const { return m_nav; }
 
     // The current state as one frame for the cache.
     void snapshot(std::vector<AgentFrame>& out) const;
@@ -149,6 +157,15 @@ private:
     glm::vec3 brainTurnForce(std::size_t i, const SteeringAgent& self) const;
     Clip brainClip(std::size_t i, Clip bySpeed) const;
 
+    // Navigation phase; see WorldNav.cpp.
+    void buildNav(const Scene& scene);
+    void planNav(std::size_t i);
+    void navBeforeStep();
+    void updateNavTarget(std::size_t i);
+    bool waitsInQueue(std::size_t i) const;
+    bool sketchedFlow(glm::vec3 p, glm::vec3& direction) const;  // false: no sketched field
+    glm::vec3 navGoal(std::size_t i, glm::vec3 goalSpot) const;  // where seek and arrival aim
+
     // Traffic phases; see WorldTraffic.cpp.
     void buildTraffic(const Scene& scene);
     void addTrafficAgents(const Scene& scene);
@@ -207,6 +224,8 @@ private:
     float m_dt = 1.0f / 24.0f;
     int m_threads = 1;
     WorldTraffic m_traffic;
+    WorldNav m_nav;
+    std::vector<std::uint8_t> m_out;  // left through an exit: never simulated or perceived again
     std::shared_ptr<detail::WorldBrains> m_brains;  // null when no type has a brain
 };
 

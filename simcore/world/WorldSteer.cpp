@@ -146,6 +146,9 @@ std::size_t World::gatherNeighbours(std::size_t i, Neighbour* out, std::uint32_t
 
 glm::vec3 World::flowDirection(glm::vec3 p) const
 {
+    // The strokes' sketched field where it solved (WorldNav.cpp).
+    if (glm::vec3 sketched; sketchedFlow(p, sketched))
+        return sketched;
     // The nearest stroke segment whose band holds p gives the direction.
     const glm::vec2 q = xz(p);
     float bestD = INFINITY;
@@ -174,7 +177,7 @@ glm::vec3 World::steer(std::size_t i, const SteeringAgent& self, std::span<const
     };
     const glm::vec3 p = self.position;
     const bool hasGoal = m_goal[i] >= 0;
-    const glm::vec3 goal = hasGoal ? glm::vec3(m_goalSpot[i].x, p.y, m_goalSpot[i].y) : p + self.forward;
+    const glm::vec3 goal = hasGoal ? navGoal(i, glm::vec3(m_goalSpot[i].x, p.y, m_goalSpot[i].y)) : p + self.forward;
     const std::int32_t leaderIndex = m_leader[i];
     Neighbour leader;
     if (leaderIndex >= 0) {

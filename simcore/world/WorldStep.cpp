@@ -24,8 +24,10 @@ void World::step()
     // Grid: index agents by cell for neighbour queries (the last step's count left it
     // current for these positions).
     if (!m_gridCurrent)
-        m_grid.rebuild(m_pos, m_hasFliers);
+        m_grid.rebuild(m_pos, m_hasFliers, m_out);
     m_gridCurrent = false;
+    // Navigate: plans and each walker's waypoint or flow direction (WorldNav.cpp).
+    navBeforeStep();
     // Brain: sensors from this (previous) state, then each type's program; before the
     // traffic step, which drives brain-driven vehicles by their brains' speeds.
     if (m_brains)
@@ -204,21 +206,39 @@ void World::commit(std::size_t i, std::uint64_t& wallCrossings)
     if (m_path[i] >= 0) {
         const Path& path = m_paths[std::size_t(m_path[i])];
         const float tolerance = std::max(0.1f, 0.25f * path.radiusM);
-        stop = !path.closed && glm::distance(to, path.points.back()) < tolerance;
+        const float toEnd = glm::distance(to, path.points.back());
+        stop = !path.closed && toEnd < tolerance;
+        // Arrived = reached the path's end within the path's own width there; the walker
+        // still walks on to the end point itself before it stops.
+        if (!path.closed && toEnd < path.radiusM)
+            arrive();
+        // Against the pile at the end: a stopped walker of the same path, between this one
+        // and the end (as for goals below), so a group finishing one path queues up
+        // behind those already there instead of pressing on forever.
+        const std::uint32_t* near = &m_nearIndex[i * kMaxNeighbours];
+        for (std::size_t k = 0; !stop && !path.closed && k < m_nearCount[i]; ++k) {
+            const std::uint32_t j = near[k];
+            const float contact = m_radius[i] + m_radius[j] + kSettleGapM;
+            const glm::vec2 q = xz(m_nextPos[j]);
+            stop = m_stoppedBefore[j] && m_path[j] == m_path[i] && glm::distance(to, q) < contact &&
+                   glm::dot(q - to, path.points.back() - to) > 0.0f;
+        }
         if (stop)
             arrive();
     } else if (m_goal[i] >= 0) {
         const Goal& g = m_goals[std::size_t(m_goal[i])];
         if (glm::distance(to, g.position) < g.radiusM) {
             arrive();
-            stop = glm::distance(to, m_goalSpot[i]) < kSpotToleranceM;
+            // Through an exit: the agent leaves the simulation (stopped, never perceived again).
+            stop = g.exit || glm::distance(to, m_goalSpot[i]) < kSpotToleranceM;
+            m_out[i] = g.exit ? 1 : 0;
         }
         // Against the pile: a stopped agent with the same goal, between this one and its
         // spot. Flags as they were when this phase began, and j's next position (which a
         // stopped agent shares with its current one): nothing another thread writes in
         // this phase is read here.
         const std::uint32_t* near = &m_nearIndex[i * kMaxNeighbours];
-        for (std::size_t k = 0; !stop && k < m_nearCount[i]; ++k) {
+        for (std::size_t k = 0; !stop && !g.exit && k < m_nearCount[i]; ++k) {
             const std::uint32_t j = near[k];
             const float contact = m_radius[i] + m_radius[j] + kSettleGapM;
             const glm::vec2 q = xz(m_nextPos[j]);
@@ -290,12 +310,14 @@ void World::countStep()
 {
     const std::size_t n = m_pos.size();
     std::uint64_t overlaps = 0, nonFinite = 0, inObstacle = 0, red = 0;
-    m_grid.rebuild(m_pos, m_hasFliers);
+    m_grid.rebuild(m_pos, m_hasFliers, m_out);
     m_gridCurrent = true;
 #pragma omp parallel for schedule(static, 256) num_threads(m_threads) reduction(+ : overlaps, nonFinite, inObstacle, red)
     for (std::size_t i = 0; i < n; ++i) {
         if (!isFinite(m_pos[i]) || !isFinite(m_vel[i]))
             ++nonFinite;
+        if (m_out[i])
+            continue;  // left through an exit: no longer in the scene
         const glm::vec2 p = xz(m_pos[i]);
         const float r = m_radius[i];
         auto overlap = [&](std::uint32_t j, const glm::vec3& q) {

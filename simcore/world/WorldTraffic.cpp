@@ -159,7 +159,7 @@ glm::vec2 World::wantedHeading(std::size_t i) const
         }
     }
     if (m_goal[i] >= 0)
-        return m_goalSpot[i] - p;
+        return xz(navGoal(i, onGround(m_goalSpot[i], 0.0f))) - p;
     const glm::vec2 v = xz(m_vel[i]);
     return glm::dot(v, v) > 1e-4f ? v : xz(m_fwd[i]);
 }

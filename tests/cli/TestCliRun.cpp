@@ -95,7 +95,7 @@ private slots:
         // Vehicles and the hero are rows of the trajectories, like every other agent.
         const QStringList rows = readLines(csv);
         QCOMPARE(rows.size(), 1 + 1200 * o["agents"].toInt());
-        QCOMPARE(o["agents"].toInt(), 200 + 16 + 1);
+        QCOMPARE(o["agents"].toInt(), 210 + 16 + 1);  // 200 walkers, the 10-walker shortest-path group, cars, hero
     }
 
     void framesSeedAndThreads()

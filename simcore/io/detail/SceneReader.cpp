@@ -127,7 +127,8 @@ void SceneReader::readSettings(const YAML::Node& node, Settings& s)
     const std::string key = "settings";
     if (!m_f.expectMap(node, key))
         return;
-    m_f.checkKeys(node, key, {"fps", "duration", "seed", "bounds"});
+    m_f.checkKeys(node, key, {"fps", "duration", "seed", "bounds", "nav_cell"});
+    m_f.readFloat(node, "nav_cell", key, s.navCellM, false, Range::Positive);
     m_f.readFloat(node, "fps", key, s.fps, false, Range::Positive);
     m_f.readFloat(node, "duration", key, s.durationS, false, Range::Positive);
     m_f.readUInt(node, "seed", key, s.seed, false, UINT64_MAX);
@@ -227,7 +228,8 @@ void SceneReader::readAgentTypes(const YAML::Node& node, Scene& scene)
             continue;
         m_f.checkKeys(item, key, {"name", "kind", "radius", "max_speed", "max_force", "mass", "perception",
                                   "view_angle", "brain", "character", "clips", "variation", "behaviours", "combination",
-                                  "min_speed", "banking", "emits", "priority", "layer", "collides_with"});
+                                  "min_speed", "banking", "emits", "priority", "layer", "collides_with",
+                                  "navigation"});
         AgentType t;
         if (!m_f.readName(item, "name", key, t.name, true))
             continue;
@@ -286,6 +288,16 @@ void SceneReader::readAgentTypes(const YAML::Node& node, Scene& scene)
         m_f.readFloat(item, "banking", key, t.banking, false, Range::NonNegative);
         if (YAML::Node e = item["emits"]; e.IsDefined())
             readEmission(e, key + ".emits", t.emits);
+        std::string navigation = "direct";
+        if (m_f.readString(item, "navigation", key, navigation, false)) {
+            if (navigation == "astar") t.navigation = Navigation::AStar;
+            else if (navigation == "flow_field") t.navigation = Navigation::FlowField;
+            else if (navigation != "direct")
+                m_f.error(item["navigation"].Mark(), key + ".navigation",
+                          "must be direct, astar or flow_field, got '" + navigation + "'");
+            if (t.kind != AgentKind::Pedestrian && t.navigation != Navigation::Direct)
+                m_f.warning(item["navigation"].Mark(), key + ".navigation", "only walkers navigate; ignored here");
+        }
         for (const char* flierOnly : {"min_speed", "banking"})
             if (t.kind != AgentKind::Flier && item[flierOnly].IsDefined())
                 m_f.warning(item[flierOnly].Mark(), key + "." + flierOnly,

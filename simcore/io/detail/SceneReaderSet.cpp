@@ -17,12 +17,13 @@ void SceneReader::readGoals(const YAML::Node& node, Scene& scene)
         const YAML::Node item = node[i];
         if (!m_f.expectMap(item, key))
             continue;
-        m_f.checkKeys(item, key, {"name", "position", "radius"});
+        m_f.checkKeys(item, key, {"name", "position", "radius", "exit"});
         Goal g;
         if (m_f.readName(item, "name", key, g.name, true))
             claimName(item, key, g.name, "goal");
         m_f.readVec2(item, "position", key, g.position, true);
         m_f.readFloat(item, "radius", key, g.radiusM, false, Range::Positive);
+        m_f.readBool(item, "exit", key, g.exit, false);
         scene.goals.push_back(std::move(g));
     }
 }

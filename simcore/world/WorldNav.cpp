@@ -1,0 +1,274 @@
+// The navigation phase of World::step: walkers whose type navigates by A* follow a plan
+// shared through the PlanCache (advancing within their own waypoint radius), flow-field
+// walkers follow their goal's field, and a walker that makes no progress re-plans around
+// the blockage or side-steps. Plans are made serially in agent order, targets in parallel
+// from each agent's own state, so the result does not depend on the thread count.
+#include "simcore/world/World.h"
+
+#include "simcore/traffic/LightPhase.h"
+#include "simcore/world/Rng.h"
+#include "simcore/world/detail/StepGeometry.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace throng::sim {
+
+using namespace detail;
+
+namespace {
+
+enum NavStream : std::uint64_t { kWaypointRadius = 201, kSideStepSign };
+
+constexpr float kWaypointRadiusBaseM = 1.0f;  // a walker advances within 0.5..1.5 m of a corner
+constexpr float kWaypointSpread = 0.5f;
+constexpr float kDefaultRadiusM = 0.3f;       // a walker's body, for a grid only flow strokes need
+constexpr float kSketchMinStrength = 0.2f;    // weaker sketched field than this: no flow there
+constexpr float kClearanceM = 0.15f;          // kept beyond the body radius when inflating the set
+constexpr float kAvoidRadiusM = 1.0f;         // a stalled walker's detour avoids this disk ahead of it
+constexpr float kSideStepDurationS = 1.5f;
+constexpr float kQueueGapM = 0.5f;           // m: a walker this close behind a waiting one queues
+constexpr float kCornerReachedM = 0.35f;      // this close to a corner, a walker turns even without a clear view
+
+}  // namespace
+
+void World::buildNav(const Scene& scene)
+{
+    const std::size_t n = m_pos.size();
+    m_out.assign(n, 0);
+    float inflate = 0.0f;
+    std::vector<Navigation> mode(n, Navigation::Direct);
+    for (std::size_t i = 0; i < n; ++i) {
+        const AgentType& t = scene.agentTypes[m_info[i].typeIndex];
+        if (t.kind != AgentKind::Pedestrian || m_traffic.isDriven(i) || t.navigation == Navigation::Direct)
+            continue;
+        mode[i] = t.navigation;
+        inflate = std::max(inflate, t.radiusM + kClearanceM);
+    }
+    m_nav.active = inflate > 0.0f;
+    if (!m_nav.active && scene.flowStrokes.empty())
+        return;
+    // The set as walkers meet it: walls, obstacles and the kerbs along lanes (m_walls holds
+    // all three), so a plan never leads onto a lane except over a crosswalk.
+    NavShapes shapes = navShapes(scene);
+    shapes.walls = m_walls.segments();
+    m_nav.grid.build(shapes, scene.settings.boundsMin, scene.settings.boundsMax,
+                     NavGridParams{scene.settings.navCellM, m_nav.active ? inflate : kDefaultRadiusM + kClearanceM});
+    // Flow strokes become a sketched field (Jin et al. 2008) that flow_field_following
+    // reads; should the solve fail, the World keeps the plain lookup along the strokes.
+    if (!scene.flowStrokes.empty()) {
+        SketchField sketch;
+        if (sketch.build(scene, m_nav.grid))
+            m_nav.sketch = std::move(sketch);
+    }
+    if (!m_nav.active)
+        return;
+
+    m_nav.hasField.assign(m_goals.size(), 0);
+    m_nav.fields.resize(m_goals.size());
+    for (std::size_t i = 0; i < n; ++i)
+        if (mode[i] == Navigation::FlowField && m_goal[i] >= 0)
+            m_nav.hasField[std::size_t(m_goal[i])] = 1;
+    for (std::size_t g = 0; g < m_goals.size(); ++g)
+        if (m_nav.hasField[g]) {
+            const FlowGoal goal{m_goals[g].position, m_goals[g].radiusM};
+            m_nav.fields[g].build(m_nav.grid, std::span<const FlowGoal>(&goal, 1));
+        }
+
+    m_nav.mode = std::move(mode);
+    m_nav.plan.assign(n, nullptr);
+    m_nav.planGoal.assign(n, -1);
+    m_nav.waypoint.assign(n, 0);
+    m_nav.waypointRadiusM.resize(n);
+    for (std::size_t i = 0; i < n; ++i)
+        m_nav.waypointRadiusM[i] = waypointRadiusM(kWaypointRadiusBaseM, rngUniform(m_seed, m_info[i].id, 0, kWaypointRadius),
+                                                   kWaypointSpread);
+    m_nav.stall.assign(n, StallWatch{});
+    m_nav.replan.assign(n, 0);
+    m_nav.sideStepS.assign(n, 0.0f);
+    m_nav.sideDir.assign(n, glm::vec2(0.0f));
+    m_nav.target.assign(n, glm::vec2(0.0f));
+    m_nav.hasTarget.assign(n, 0);
+    m_nav.waiting.assign(n, 0);
+    m_nav.waitingNext.assign(n, 0);
+    // Plans at load, in agent order: a group starting in one cell shares one plan.
+    for (std::size_t i = 0; i < n; ++i)
+        if (m_nav.mode[i] == Navigation::AStar && m_goal[i] >= 0 && m_path[i] < 0)
+            planNav(i);
+}
+
+void World::planNav(std::size_t i)
+{
+    const Goal& g = m_goals[std::size_t(m_goal[i])];
+    m_nav.plan[i] = planBetween(m_nav.cache, m_nav.grid, xz(m_pos[i]), g.position, m_nav.astar);
+    m_nav.planGoal[i] = m_goal[i];
+    m_nav.waypoint[i] = 0;
+    m_nav.stall[i] = StallWatch{};
+}
+
+void World::navBeforeStep()
+{
+    if (!m_nav.active)
+        return;
+    const std::size_t n = m_pos.size();
+    // Plan: serially and in agent order, so what the cache holds never depends on threads.
+    for (std::size_t i = 0; i < n; ++i) {
+        if (m_nav.mode[i] != Navigation::AStar || m_stopped[i] || m_goal[i] < 0 || m_path[i] >= 0)
+            continue;
+        const NavPlan* plan = m_nav.plan[i].get();
+        if (!plan || m_nav.planGoal[i] != m_goal[i]) {
+            planNav(i);
+        } else if (PlanCache::stale(*plan, m_nav.grid)) {
+            ++m_nav.counters.stalePlans;
+            planNav(i);
+        } else if (m_nav.replan[i]) {
+            // Stalled: plan around the spot just ahead (the jam or what it keeps pushing
+            // against); with no way round, step aside for a moment instead.
+            m_nav.replan[i] = 0;
+            const glm::vec2 p = xz(m_pos[i]);
+            glm::vec2 way = m_nav.hasTarget[i] ? m_nav.target[i] - p : m_goalSpot[i] - p;
+            way = glm::dot(way, way) > 1e-8f ? glm::normalize(way) : xz(m_fwd[i]);
+            const NavGrid& grid = m_nav.grid;
+            const NavCell start = grid.nearestWalkable(grid.cellOf(p));
+            const NavCell goal = grid.nearestWalkable(grid.cellOf(m_goals[std::size_t(m_goal[i])].position));
+            NavPlan detour = planAround(m_nav.astar, grid, start, goal, p + way * (m_radius[i] + kAvoidRadiusM),
+                                        kAvoidRadiusM);
+            // Progress is measured along the new way from here on (a detour is longer).
+            m_nav.stall[i] = StallWatch{};
+            if (detour.found()) {
+                m_nav.plan[i] = std::make_shared<const NavPlan>(std::move(detour));
+                m_nav.waypoint[i] = 0;
+                ++m_nav.counters.replans;
+            } else {
+                const float sign = rngUniform(m_seed, m_info[i].id, m_step, kSideStepSign) < 0.5f ? -1.0f : 1.0f;
+                m_nav.sideDir[i] = glm::vec2(-way.y, way.x) * sign;
+                m_nav.sideStepS[i] = kSideStepDurationS;
+                ++m_nav.counters.sideSteps;
+            }
+        }
+    }
+    // Target: each walker from its own state.
+#pragma omp parallel for schedule(static, 256) num_threads(m_threads)
+    for (std::size_t i = 0; i < n; ++i) {
+        m_nav.waitingNext[i] = waitsInQueue(i) ? 1 : 0;
+        updateNavTarget(i);
+    }
+    m_nav.waiting.swap(m_nav.waitingNext);
+}
+
+bool World::waitsInQueue(std::size_t i) const
+{
+    if (m_stopped[i] || m_traffic.signal.empty() || m_types[m_info[i].typeIndex].kind != AgentKind::Pedestrian)
+        return false;
+    const PedestrianSignal& sig = m_traffic.signal[i];
+    if (sig.crosswalk >= 0 && !sig.onCrosswalk && (sig.mustStop || sig.phase != LightPhase::Green))
+        return true;
+    // Right behind a waiting walker, in the way it wants to go: the queue waits too.
+    // Neighbours and flags are the last step's, so the order agents are visited in
+    // does not matter.
+    const glm::vec2 p = xz(m_pos[i]), way = wantedHeading(i);
+    const std::uint32_t* near = &m_nearIndex[i * kMaxNeighbours];
+    for (std::size_t k = 0; k < m_nearCount[i]; ++k) {
+        const std::uint32_t j = near[k];
+        const glm::vec2 d = xz(m_pos[j]) - p;
+        if (m_nav.waiting[j] && glm::length(d) < m_radius[i] + m_radius[j] + kQueueGapM && glm::dot(d, way) > 0.0f)
+            return true;
+    }
+    return false;
+}
+
+void World::updateNavTarget(std::size_t i)
+{
+    m_nav.hasTarget[i] = 0;
+    const Navigation mode = m_nav.mode[i];
+    if (mode == Navigation::Direct || m_stopped[i] || m_goal[i] < 0 || m_path[i] >= 0)
+        return;
+    const glm::vec2 p = xz(m_pos[i]);
+    // The target lies beyond the arrival's slowing distance, so a walker keeps its pace
+    // through corners and down the field and slows only for its own spot in the goal.
+    const float carrot = m_steering[m_info[i].typeIndex].arrival.slowingDistanceM + 0.5f;
+    auto aim = [&](glm::vec2 dir, float distance) {
+        m_nav.target[i] = p + dir * std::max(distance, carrot);
+        m_nav.hasTarget[i] = 1;
+    };
+    if (m_nav.sideStepS[i] > 0.0f) {
+        m_nav.sideStepS[i] -= m_dt;
+        aim(m_nav.sideDir[i], 0.0f);
+        return;
+    }
+    const std::size_t goal = std::size_t(m_goal[i]);
+    float remainingM = glm::distance(p, m_goalSpot[i]);
+    if (mode == Navigation::AStar) {
+        const NavPlan* plan = m_nav.plan[i].get();
+        if (plan && plan->found() && m_nav.planGoal[i] == m_goal[i]) {
+            const std::vector<glm::vec2>& w = plan->waypoints;
+            // Within its own radius of a corner the walker turns for the next one, but only
+            // once it can see it: cutting a corner short must not lead into a wall's end.
+            std::size_t k = m_nav.waypoint[i];
+            while (k + 1 < w.size()) {
+                const std::size_t next = advanceWaypoint(w, k, p, m_nav.waypointRadiusM[i]);
+                if (next == k || (glm::distance(p, w[k]) > kCornerReachedM && !lineOfSight(m_nav.grid, p, w[k + 1])))
+                    break;
+                ++k;
+            }
+            m_nav.waypoint[i] = std::uint32_t(k);
+            // The last waypoint is the goal cell's centre: from there on the walker heads
+            // for its own spot, as a direct walker does.
+            if (k + 1 < w.size()) {
+                const glm::vec2 d = w[k] - p;
+                const float len = glm::length(d);
+                remainingM = len + glm::distance(w.back(), m_goalSpot[i]);
+                for (std::size_t j = k; j + 1 < w.size(); ++j)
+                    remainingM += glm::distance(w[j], w[j + 1]);
+                if (len > 1e-4f)
+                    aim(d / len, len);
+            }
+        }
+    } else if (goal < m_nav.hasField.size() && m_nav.hasField[goal]) {
+        const FlowField& field = m_nav.fields[goal];
+        const NavGrid& grid = field.grid();
+        const NavCell c = grid.cellOf(p);
+        if (field.reachable(c)) {
+            remainingM = field.distanceM(c);
+            const glm::vec2 dir = field.sample(p);
+            if (glm::dot(dir, dir) > 0.0f)
+                aim(dir, 0.0f);
+        } else if (const NavCell free = grid.nearestWalkable(c); grid.walkable(free) && field.reachable(free)) {
+            // Squeezed into a wall's margin (a blocked cell has no direction): back into
+            // the nearest walkable cell, where the field takes over again.
+            const glm::vec2 d = grid.centre(free) - p;
+            const float len = glm::length(d);
+            remainingM = field.distanceM(free) + len;
+            if (len > 1e-4f)
+                aim(d / len, 0.0f);
+        }
+    }
+    // Stall watch: waiting at a light is not being stuck. A flow-field walker in a queue
+    // is not stuck either (the field already leads round the set), so only A* walkers act.
+    if (m_nav.waitingNext[i])
+        m_nav.stall[i] = StallWatch{};
+    else if (updateStall(m_nav.stall[i], remainingM, m_dt) && mode == Navigation::AStar)
+        m_nav.replan[i] = 1;
+}
+
+bool World::sketchedFlow(glm::vec3 p, glm::vec3& direction) const
+{
+    if (!m_nav.sketch)
+        return false;
+    const SketchField& field = *m_nav.sketch;
+    const NavCell c = field.grid().cellOf(xz(p));
+    const glm::vec2 d = field.grid().inside(c) && field.strength(c) >= kSketchMinStrength ? field.sample(xz(p)) : glm::vec2(0.0f);
+    direction = {d.x, 0.0f, d.y};
+    return true;
+}
+
+glm::vec3 World::navGoal(std::size_t i, glm::vec3 goalSpot) const
+{
+    if (!m_nav.active || !m_nav.hasTarget[i])
+        return goalSpot;
+    return {m_nav.target[i].x, goalSpot.y, m_nav.target[i].y};
+}
+
+}  // namespace throng::sim

@@ -1,0 +1,56 @@
+#pragma once
+// The navigation side of a World: the scene's NavGrid, shared A* plans, one flow field per
+// goal that flow-field walkers head for, and per walker where it steers this step (its
+// current waypoint, the field's way, or a side-step). Plain state the World's navigation
+// phase (WorldNav.cpp) reads and writes; it never moves agents itself.
+
+#include "simcore/nav/AStar.h"
+#include "simcore/nav/FlowField.h"
+#include "simcore/nav/NavFollow.h"
+#include "simcore/nav/NavGrid.h"
+#include "simcore/nav/PlanCache.h"
+#include "simcore/nav/SketchField.h"
+
+#include <glm/vec2.hpp>
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace throng::sim {
+
+struct NavCounters {
+    std::uint64_t replans = 0;     // stalled A* walkers that planned around the blockage
+    std::uint64_t sideSteps = 0;   // stalled walkers that found no way round and stepped aside
+    std::uint64_t stalePlans = 0;  // plans made again because the grid changed
+};
+
+struct WorldNav {
+    bool active = false;  // some walker navigates by A* or a flow field
+    NavGrid grid;
+    PlanCache cache;
+    AStar astar;
+    std::vector<FlowField> fields;     // one per goal index; built only for goals flow-field walkers use
+    std::vector<std::uint8_t> hasField;// per goal index
+    std::optional<SketchField> sketch; // the scene's flow strokes as an RBF field, when it solved
+    NavCounters counters;
+
+    // Per World agent.
+    std::vector<Navigation> mode;
+    std::vector<std::shared_ptr<const NavPlan>> plan;  // A* walkers: the shared plan or a detour
+    std::vector<std::int32_t> planGoal;  // the goal the plan leads to (a brain may change goals)
+    std::vector<std::uint32_t> waypoint; // index into plan->waypoints
+    std::vector<float> waypointRadiusM;  // per-agent advance radius, m
+    std::vector<StallWatch> stall;
+    std::vector<std::uint8_t> replan;    // stalled this step: plan around the blockage next step
+    std::vector<float> sideStepS;        // s left of a side-step, 0 = none
+    std::vector<glm::vec2> sideDir;      // unit: the side-step's direction
+    std::vector<glm::vec2> target;       // where the agent steers this step (x, z)
+    std::vector<std::uint8_t> hasTarget; // 0: steer at the goal's own spot as before
+    // Held at a light, or queued right behind someone who is (as of the last step; the
+    // step being computed writes waitingNext): waiting is not being stuck.
+    std::vector<std::uint8_t> waiting, waitingNext;
+};
+
+}  // namespace throng::sim
