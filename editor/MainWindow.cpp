@@ -109,7 +109,11 @@ void MainWindow::createDocks()
     m_messages = new MessagesPanel(this);
     m_messagesDock = addDock(tr("Messages"), "messagesDock", m_messages, Qt::BottomDockWidgetArea);
     auto* brains = new BrainEditorPanel(m_document, *m_simulation, m_viewport, this);
-    addDock(tr("Brains"), "brainDock", brains, Qt::BottomDockWidgetArea);
+    // Closed until asked for (View > Brains, Ctrl+B): the viewport keeps its size.
+    QDockWidget* brainDock = addDock(tr("Brains"), "brainDock", brains, Qt::BottomDockWidgetArea);
+    brainDock->hide();
+    brainDock->toggleViewAction()->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_B));
+    brainDock->toggleViewAction()->setToolTip(tr("Show or hide the brain editor (Ctrl+B)"));
     connect(brains, &BrainEditorPanel::brainMessages, m_messages, &MessagesPanel::showDiagnostics);
 }
 

@@ -21,6 +21,8 @@
 #include <QInputDialog>
 #include <QLabel>
 #include <QMouseEvent>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QSpinBox>
 #include <QTimer>
 #include <QToolButton>
@@ -42,7 +44,17 @@ BrainEditorPanel::BrainEditorPanel(SceneDocument& document, SimulationController
     m_status->setWordWrap(true);
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(2, 2, 2, 2);
-    layout->addWidget(createBar());
+    // The two rows of controls scroll sideways in a narrow dock instead of widening the
+    // whole window (the dock shares its tab group with Messages).
+    QWidget* bar = createBar();
+    auto* barScroll = new QScrollArea(this);
+    barScroll->setWidget(bar);
+    barScroll->setWidgetResizable(true);
+    barScroll->setFrameShape(QFrame::NoFrame);
+    barScroll->setVerticalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    barScroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAsNeeded);
+    barScroll->setFixedHeight(bar->sizeHint().height() + barScroll->horizontalScrollBar()->sizeHint().height());
+    layout->addWidget(barScroll);
     layout->addWidget(m_view, 1);
     layout->addWidget(m_status);
 

@@ -37,6 +37,9 @@ bool BrainUi::open(const QTemporaryDir& dir, const QByteArray& yaml)
     auto* dock = m_window.findChild<QDockWidget*>("brainDock");
     if (!dock)
         return false;
+    dock->show();  // closed until asked for
+    dock->raise();
+    QCoreApplication::processEvents();
     m_window.resizeDocks({dock}, {700}, Qt::Vertical);
     if (!m_window.openScene(path))
         return false;

@@ -43,16 +43,31 @@ private slots:
         QCOMPARE(world.counters().wallPenetrations, std::uint64_t(0));
         QCOMPARE(world.counters().leaderOvertaken, std::uint64_t(0));
         QCOMPARE(world.counters().nonFiniteValues, std::uint64_t(0));
-        // They chased: nine in ten riders are within 60 m of the leader at the end.
+        // They chased: riders are 0.9 to 1.0 times as fast as the leader, so they string out
+        // behind it (half of them within about 50 m when it arrives), but none is lost or
+        // stuck among the cones, and once it has stopped they all close up within seconds.
         const glm::vec2 leader = ground(world.positions()[0]);
+        float farthest = 0.0f;
         std::size_t near = 0;
+        for (std::size_t i = 1; i < world.agentCount(); ++i) {
+            const float d = glm::distance(ground(world.positions()[i]), leader);
+            farthest = std::max(farthest, d);
+            near += d < 50.0f;
+        }
+        while (world.timeS() < world.arrivalTimeS(0) + 5.0)
+            world.step();
+        std::size_t closedUp = 0;
         for (std::size_t i = 1; i < world.agentCount(); ++i)
-            near += glm::distance(ground(world.positions()[i]), leader) < 60.0f;
+            closedUp += glm::distance(ground(world.positions()[i]), ground(world.positions()[0])) < 60.0f;
         qInfo("300 riders, full route: leader arrived at %.1f s, obstacle penetrations %llu, leader overtaken %llu, "
-              "%zu riders within 60 m at the end", double(world.arrivalTimeS(0)),
-              static_cast<unsigned long long>(world.counters().obstaclePenetrations),
-              static_cast<unsigned long long>(world.counters().leaderOvertaken), near);
-        QVERIFY2(near >= 270, qPrintable(QString::number(near)));
+              "%zu riders within 50 m and the last %.1f m behind at its arrival, %zu within 60 m 5 s later",
+              double(world.arrivalTimeS(0)), static_cast<unsigned long long>(world.counters().obstaclePenetrations),
+              static_cast<unsigned long long>(world.counters().leaderOvertaken), near, double(farthest), closedUp);
+        QVERIFY2(near >= 150, qPrintable(QString::number(near)));
+        QVERIFY2(farthest < 100.0f, qPrintable(QString::number(double(farthest))));
+        QCOMPARE(closedUp, std::size_t(300));
+        QCOMPARE(world.counters().obstaclePenetrations, std::uint64_t(0));
+        QCOMPARE(world.counters().leaderOvertaken, std::uint64_t(0));
     }
 
     void overtakesAreCounted()

@@ -6,6 +6,8 @@
 
 #include <glm/vec4.hpp>
 
+#include <cstddef>
+
 #include <QByteArray>
 #include <QImage>
 #include <QPointF>
@@ -13,6 +15,10 @@
 #include <QTemporaryDir>
 
 namespace throng::editor::test {
+
+// Agents of the crossroads demo as the status bar counts them: 200 spawned walkers, the
+// 10-walker shortest-path group, 16 cars and 1 hero.
+inline constexpr std::size_t kCrossroadsAgents = 227;
 
 // Writes `yaml` to dir/name and returns the file's path.
 QString writeScene(const QTemporaryDir& dir, const QString& name, const QByteArray& yaml);

@@ -1,6 +1,7 @@
 // The editor driven like a user: open the crossroads demo, pick a tool on the tool bar,
 // paint, erase and draw on the viewport with real mouse events, and undo and redo with
 // the keyboard. Checks what the user would see: counts, positions, outliner rows.
+#include "EditorTestSupport.h"
 #include "EditorUiDriver.h"
 #include "TestRegistry.h"
 
@@ -38,7 +39,6 @@ QString agentLabel(MainWindow& window)
 }
 
 // The crossroads scene shows 210 agents from its spawn groups; placed agents add to them.
-constexpr std::size_t kCrossroadsAgents = 227;  // the demo: 210 walkers, 16 cars, 1 hero (the status bar counts all)
 
 }  // namespace
 

@@ -125,7 +125,7 @@ private slots:
         QVERIFY(window.document().scene() == opened);
         QVERIFY(!window.document().isModified());
         QCOMPARE(window.document().undoStack()->count(), 0);
-        QTRY_COMPARE(window.findChild<QLabel*>("agentCountLabel")->text(), QString("217 agents"));
+        QTRY_COMPARE(window.findChild<QLabel*>("agentCountLabel")->text(), QString("%1 agents").arg(kCrossroadsAgents));
     }
 };
 

@@ -118,8 +118,8 @@ private slots:
         QVERIFY(clickToolButton(window, "crowdBrush"));
         dragOnGround(window, {{-38, -25}, {-14, -25}});
         SimulationController& sim = window.simulation();
-        // The crossroads' 217 agents and the painted ones: the edit has reached the views.
-        QTRY_COMPARE(window.viewport().agentCount(), 217 + window.document().scene().agents.size());
+        // The crossroads' agents and the painted ones: the edit has reached the views.
+        QTRY_COMPARE(window.viewport().agentCount(), kCrossroadsAgents + window.document().scene().agents.size());
         QTRY_VERIFY(sim.recordedFrames() >= 1);
         for (std::size_t k = 1; k <= 6; ++k) {
             QTest::mouseClick(window.findChild<QToolButton*>("stepButton"), Qt::LeftButton);
