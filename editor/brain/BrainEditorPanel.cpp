@@ -45,7 +45,7 @@ BrainEditorPanel::BrainEditorPanel(SceneDocument& document, SimulationController
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(2, 2, 2, 2);
     // The two rows of controls scroll sideways in a narrow dock instead of widening the
-    // whole window (the dock shares its tab group with Messages).
+    // whole window.
     QWidget* bar = createBar();
     auto* barScroll = new QScrollArea(this);
     barScroll->setWidget(bar);

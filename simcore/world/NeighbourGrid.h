@@ -68,11 +68,11 @@ public:
             }
     }
     // For k-nearest searches: like forEachNear (or forEachNear3D once sorted by height),
-    // but rows are visited nearest first, and before each row (and each cell in 3D)
-    // boundSq() gives the squared distance beyond which the caller no longer cares (it
-    // shrinks as the caller's k best fill up), so cells wholly beyond it are skipped.
-    // Calls f(j, position of j); which agents are offered beyond the bound is
-    // unspecified, so the caller must rank them itself (by distance, ties by id).
+    // but rows are visited nearest first, and before each row boundSq() gives the
+    // squared distance beyond which the caller no longer cares (it shrinks as the
+    // caller's k best fill up), so cells wholly beyond it are skipped. Calls
+    // f(j, position of j); which agents are offered beyond the bound is unspecified, so
+    // the caller must rank them itself (by distance, ties broken the same way each run).
     template <typename B, typename F>
     void forEachNearest(glm::vec3 p, float r, B&& boundSq, F&& f) const
     {
