@@ -66,6 +66,7 @@ private slots:
         QVERIFY2(near >= 150, qPrintable(QString::number(near)));
         QVERIFY2(farthest < 100.0f, qPrintable(QString::number(double(farthest))));
         QCOMPARE(closedUp, std::size_t(300));
+        // Still nobody through a cone, nor past the leader, while they close up round it.
         QCOMPARE(world.counters().obstaclePenetrations, std::uint64_t(0));
         QCOMPARE(world.counters().leaderOvertaken, std::uint64_t(0));
     }
