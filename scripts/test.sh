@@ -18,4 +18,4 @@ if [ ! -f "$san/build.ninja" ]; then
 fi
 cmake --build "$san" --target test_simcore test_worldbrain test_demos test_worldnav test_nav test_traffic test_brain test_export -- -j"$jobs"
 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
-  ctest --test-dir "$san" --output-on-failure -j"$jobs" -L 'simcore|worldbrain|nav|traffic|brain|export'
+  ctest --test-dir "$san" --output-on-failure -j"$jobs" -L '^(simcore|worldbrain|nav|traffic|brain|export)$'
