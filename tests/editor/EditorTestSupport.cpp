@@ -1,5 +1,7 @@
 #include "EditorTestSupport.h"
 
+#include "simcore/io/SceneIO.h"
+
 #include <QFile>
 #include <QTest>
 
@@ -15,6 +17,15 @@ QString writeScene(const QTemporaryDir& dir, const QString& name, const QByteArr
     if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate) || file.write(yaml) != yaml.size())
         qFatal("cannot write the test scene %s", qPrintable(path));
     return path;
+}
+
+sim::Scene loadTestScene(const QTemporaryDir& dir, const QByteArray& yaml)
+{
+    const QString path = writeScene(dir, "scene.yaml", yaml);
+    sim::LoadResult loaded = sim::loadScene(path.toStdString());
+    if (!loaded.ok())
+        qFatal("test scene does not load: %s", loaded.diagnostics.front().format().c_str());
+    return loaded.scene;
 }
 
 QImage renderOffscreen(Viewport& viewport, QSize sizePx)

@@ -22,6 +22,8 @@ inline constexpr std::size_t kCrossroadsAgents = 227;
 
 // Writes `yaml` to dir/name and returns the file's path.
 QString writeScene(const QTemporaryDir& dir, const QString& name, const QByteArray& yaml);
+// Writes yaml as scene.yaml in dir and loads it; a scene that does not load stops the test.
+sim::Scene loadTestScene(const QTemporaryDir& dir, const QByteArray& yaml);
 
 // Shows `viewport` offscreen at `sizePx` and returns what it draws.
 QImage renderOffscreen(Viewport& viewport, QSize sizePx);

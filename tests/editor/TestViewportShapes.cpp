@@ -45,14 +45,7 @@ class TestViewportShapes : public QObject {
     Q_OBJECT
 
 private:
-    sim::Scene loadScene(const QByteArray& yaml)
-    {
-        const QString path = writeScene(m_dir, "scene.yaml", yaml);
-        sim::LoadResult loaded = sim::loadScene(path.toStdString());
-        if (!loaded.ok())
-            qFatal("test scene does not load: %s", loaded.diagnostics.front().format().c_str());
-        return loaded.scene;
-    }
+    sim::Scene loadScene(const QByteArray& yaml) { return loadTestScene(m_dir, yaml); }
 
     QTemporaryDir m_dir;
 
