@@ -4,7 +4,8 @@
 # and the ratio. Same agents, same goals: throng-bench-cross writes the layout
 # (BenchScenarios.h: concentric rings, antipodal goals) and the peer, patched with
 # bench/peers/detourcrowd-layout.patch (its --layout option), reads it.
-# Usage: bench/compare-detourcrowd.sh [AGENTS] [STEPS] [RUNS]
+# Usage: bench/compare-detourcrowd.sh [AGENTS] [STEPS] [RUNS]; THREADS=N in the environment
+# sets Throng's thread count (default: OpenMP's; on a loaded machine 1 is steadier).
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 agents="${1:-10000}" steps="${2:-240}" runs="${3:-3}"
@@ -30,10 +31,11 @@ fi
 [ -x "$cross" ] || cmake --build "$root/build" --target throng-bench-cross >&2
 "$cross" --write-layout "$layout" "$agents"
 
+threads=(); [ -n "${THREADS:-}" ] && threads=(--threads "$THREADS")
 throng=() detour=()
 for ((r = 0; r < runs; ++r)); do
   # Alternate the two so machine noise hits both alike.
-  t=$("$cli" bench --scenario cross --agents "$agents" --steps "$steps" --quiet |
+  t=$("$cli" bench --scenario cross --agents "$agents" --steps "$steps" "${threads[@]}" --quiet |
       python3 -c 'import json,sys; print(json.load(sys.stdin)["agent_steps_per_second"])')
   d=$("$peer_bin" --layout "$layout" --steps "$steps" |
       sed -n 's/.*agent_steps_per_s=\([0-9.e+]*\).*/\1/p')
