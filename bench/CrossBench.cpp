@@ -83,11 +83,12 @@ int main(int argc, char** argv)
         }
     }
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    float last = -1.0f, sum = 0.0f;
+    float last = -1.0f;
+    double sum = 0.0;
     for (std::size_t i = 0; i < n; ++i)
         if (world.hasArrived(i)) {
             last = std::max(last, world.arrivalTimeS(i));
-            sum += world.arrivalTimeS(i);
+            sum += double(world.arrivalTimeS(i));
         }
     if (std::getenv("CROSS_DUMP"))  // where the ones that did not arrive are
         for (std::size_t i = 0; i < n; ++i)
@@ -99,15 +100,16 @@ int main(int argc, char** argv)
                              double(p.x), double(p.z), double(std::hypot(p.x, p.z)), double(g.x), double(g.z),
                              double(std::hypot(g.x, g.z)), double(std::hypot(p.x - g.x, p.z - g.z)));
             }
+    const double perAgent = 1.0 / double(std::max<std::size_t>(n, 1));
     const double overlaps = double(world.counters().overlappingPairs) / double(std::max<std::uint64_t>(steps, 1));
     std::printf("{\"scenario\": \"cross\", \"layout\": \"%s\", \"agents\": %zu, \"threads\": %d, \"steps\": %llu, "
                 "\"simulated_seconds\": %.1f, \"seconds\": %.2f, \"agent_steps_per_second\": %.4g, "
                 "\"fraction_arrived\": %.4f, \"time_to_95_percent_s\": %.1f, \"time_to_last_arrival_s\": %.1f, "
-                "\"mean_arrival_time_s\": %.1f, \"overlapping_pairs_per_step\": %.2f, "
-                "\"overlapping_pairs_per_agent\": %.5f, \"non_finite_values\": %llu}\n",
-                crossLayoutDescription(layout).c_str(), n, world.threads(), (unsigned long long)steps, world.timeS(), seconds,
-                double(steps) * double(n) / std::max(seconds, 1e-9), double(arrived) / double(std::max<std::size_t>(n, 1)),
-                t95, double(last), arrived ? double(sum) / double(arrived) : -1.0, overlaps, overlaps / double(std::max<std::size_t>(n, 1)),
+                "\"mean_arrival_time_s\": %.1f, \"overlapping_pairs_per_step\": %.3f, "
+                "\"overlapping_pairs_per_agent\": %.6f, \"non_finite_values\": %llu}\n",
+                crossLayoutDescription(layout).c_str(), n, world.threads(), (unsigned long long)steps, world.timeS(),
+                seconds, double(steps) * double(n) / std::max(seconds, 1e-9), double(arrived) * perAgent, t95,
+                double(last), arrived ? sum / double(arrived) : -1.0, overlaps, overlaps * perAgent,
                 (unsigned long long)world.counters().nonFiniteValues);
     return 0;
 }

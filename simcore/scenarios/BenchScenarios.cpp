@@ -70,7 +70,8 @@ std::string crossLayoutDescription(const CrossLayout& layout)
 {
     char text[200];
     std::snprintf(text, sizeof text,
-                  "concentric rings from %.0f m out, %.1f m apart, agents %.1f m apart on a ring, radius %.2f m, %.2f m/s",
+                  "concentric rings from %.0f m out, %.1f m apart, agents %.1f m apart on a ring, "
+                  "radius %.2f m, %.2f m/s",
                   double(layout.innerRadiusM), double(layout.ringGapM), double(layout.spacingM),
                   double(layout.agentRadiusM), double(layout.speed));
     return text;
