@@ -5,7 +5,9 @@
 // fraction of the agents), and agent-steps per second.
 // Usage: throng-bench-cross [AGENTS=10000] [THREADS=0] [MAX_STEPS=0 (= the scene's duration)]
 //        throng-bench-cross --write-layout FILE [AGENTS] (for the DetourCrowd peer)
-// CROSS_SPACING_M, CROSS_INNER_M, CROSS_GAP_M in the environment change the layout.
+// CROSS_SPACING_M, CROSS_INNER_M, CROSS_GAP_M in the environment change the layout;
+// CROSS_PROFILE prints the walkers' mean speed by distance from the centre (where time goes);
+// CROSS_DUMP lists the agents that did not arrive.
 #include "simcore/scenarios/BenchScenarios.h"
 #include "simcore/world/World.h"
 
@@ -68,8 +70,18 @@ int main(int argc, char** argv)
     std::size_t arrived = 0;
     double t95 = -1.0;
     const std::size_t n = world.agentCount();
+    std::vector<double> speedSum(40, 0.0), speedCount(40, 0.0);
+    const bool profile = std::getenv("CROSS_PROFILE") != nullptr;
     for (; steps < maxSteps; ++steps) {
         world.step();
+        if (profile)
+            for (std::size_t i = 0; i < world.agentCount(); ++i)
+                if (!world.hasArrived(i)) {
+                    const glm::vec3 p = world.positions()[i], v = world.velocities()[i];
+                    const auto bin = std::min<std::size_t>(39, std::size_t(std::hypot(p.x, p.z) / 5.0f));
+                    speedSum[bin] += double(std::hypot(v.x, v.z));
+                    speedCount[bin] += 1.0;
+                }
         if (steps % 24 == 23 || steps + 1 == maxSteps) {
             arrived = 0;
             for (std::size_t i = 0; i < n; ++i)
@@ -100,6 +112,11 @@ int main(int argc, char** argv)
                              double(p.x), double(p.z), double(std::hypot(p.x, p.z)), double(g.x), double(g.z),
                              double(std::hypot(g.x, g.z)), double(std::hypot(p.x - g.x, p.z - g.z)));
             }
+    if (profile)
+        for (std::size_t b = 0; b < 40; ++b)
+            if (speedCount[b] > 0)
+                std::fprintf(stderr, "r %3zu-%3zu m: %8.0f agent-steps, mean speed %.2f m/s\n", 5 * b, 5 * b + 5,
+                             speedCount[b], speedSum[b] / speedCount[b]);
     const double perAgent = 1.0 / double(std::max<std::size_t>(n, 1));
     const double overlaps = double(world.counters().overlappingPairs) / double(std::max<std::uint64_t>(steps, 1));
     std::printf("{\"scenario\": \"cross\", \"layout\": \"%s\", \"agents\": %zu, \"threads\": %d, \"steps\": %llu, "
