@@ -1,27 +1,44 @@
 #!/usr/bin/env bash
 # Runs DetourCrowd (../shared/peers, Debian's librecast-dev) and Throng on the same
-# cross/circle scenario in one go, several times, and prints one JSON object with the
-# medians and the ratio. Usage: bench/compare-detourcrowd.sh [AGENTS] [STEPS] [RUNS]
+# `cross` scenario in one go, several times, and prints one JSON object with the medians
+# and the ratio. Same agents, same goals: throng-bench-cross writes the layout
+# (BenchScenarios.h: concentric rings, antipodal goals) and the peer, patched with
+# bench/peers/detourcrowd-layout.patch (its --layout option), reads it.
+# Usage: bench/compare-detourcrowd.sh [AGENTS] [STEPS] [RUNS]; THREADS=N in the environment
+# sets Throng's thread count (default: OpenMP's). On a loaded machine run it with
+# OMP_WAIT_POLICY=passive: spinning OpenMP threads then wait on each other (10x slower).
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 agents="${1:-10000}" steps="${2:-240}" runs="${3:-3}"
 peers="$root/../shared/peers"
 cli="$root/build/app/cli/throng-cli"
-peer_bin="${TMPDIR:-/tmp}/throng-detourcrowd-bench"
+cross="$root/build/bench/throng-bench-cross"
+peer_dir="${TMPDIR:-/tmp}/throng-detourcrowd-peer"
+peer_bin="$peer_dir/detourcrowd_bench"
+layout="$peer_dir/cross-$agents.txt"
 
 dpkg-query -W -f='${Status}' librecast-dev 2>/dev/null | grep -q "install ok installed" || {
   sudo=""; [ "$(id -u)" = 0 ] || sudo=sudo
   $sudo apt-get install -y -q librecast-dev >&2
 }
-[ -x "$peer_bin" ] || make -s -C "$peers" OUT="$peer_bin" >&2
+if [ ! -x "$peer_bin" ] || [ "$root/bench/peers/detourcrowd-layout.patch" -nt "$peer_bin" ]; then
+  mkdir -p "$peer_dir"
+  cp "$peers/detourcrowd_bench.cpp" "$peers/Makefile" "$peer_dir/"
+  chmod u+w "$peer_dir"/*
+  patch -s -d "$peer_dir" -p0 < "$root/bench/peers/detourcrowd-layout.patch" >&2
+  make -s -C "$peer_dir" OUT="$peer_bin" >&2
+fi
 [ -x "$cli" ] || "$root/scripts/build.sh" >&2
+[ -x "$cross" ] || cmake --build "$root/build" --target throng-bench-cross >&2
+"$cross" --write-layout "$layout" "$agents"
 
+threads=(); [ -n "${THREADS:-}" ] && threads=(--threads "$THREADS")
 throng=() detour=()
 for ((r = 0; r < runs; ++r)); do
   # Alternate the two so machine noise hits both alike.
-  t=$("$cli" bench --scenario cross --agents "$agents" --steps "$steps" --quiet |
+  t=$("$cli" bench --scenario cross --agents "$agents" --steps "$steps" "${threads[@]}" --quiet |
       python3 -c 'import json,sys; print(json.load(sys.stdin)["agent_steps_per_second"])')
-  d=$("$peer_bin" --scenario circle --agents "$agents" --steps "$steps" |
+  d=$("$peer_bin" --layout "$layout" --steps "$steps" |
       sed -n 's/.*agent_steps_per_s=\([0-9.e+]*\).*/\1/p')
   throng+=("$t") detour+=("$d")
 done

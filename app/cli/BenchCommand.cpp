@@ -52,7 +52,10 @@ int benchCommand(const CliArguments& args, std::ostream& out, std::ostream& err)
     const std::uint64_t memory = peakResidentBytes();
 
     std::ostringstream j;
-    j << "{\"scenario\": \"" << name << "\", \"agents\": " << world.agentCount() << ", \"steps\": " << steps
+    j << "{\"scenario\": \"" << name << "\", ";
+    if (name == "cross")
+        j << "\"layout\": \"" << sim::crossLayoutDescription() << "\", ";
+    j << "\"agents\": " << world.agentCount() << ", \"steps\": " << steps
       << ", \"threads\": " << world.threads() << ", \"seconds\": " << seconds
       << ", \"agent_steps_per_second\": " << stats.agentStepsPerSecond
       << ", \"ms_per_step\": " << (steps ? seconds * 1000.0 / double(steps) : 0.0)

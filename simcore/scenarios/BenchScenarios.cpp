@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace throng::sim {
 
@@ -19,37 +20,33 @@ AgentType walker()
 
 }  // namespace
 
-Scene makeCrossScenario(std::uint32_t agents, std::uint64_t seed)
+Scene makeCrossScenario(std::uint32_t agents, std::uint64_t seed, const CrossLayout& layout)
 {
-    // The same layout as the DetourCrowd peer's `circle` scenario (shared/peers), so the
-    // two can be compared: concentric rings 3 radii apart, spacing 3 radii along a ring,
-    // goal = the antipodal point, on a square of 400 m for 10,000 agents (same density
-    // for other counts), agent radius 0.5 m, 1.4 m/s.
     Scene s;
     s.settings.seed = seed;
-    const float agentRadius = 0.5f, spacing = 3.0f * agentRadius;
-    const float half = 200.0f * std::sqrt(std::max(1.0f, float(agents) / 10000.0f));
-    s.settings.boundsMin = glm::vec2(-half);
-    s.settings.boundsMax = glm::vec2(half);
     AgentType t = walker();
-    t.radiusM = agentRadius;
+    t.radiusM = layout.agentRadiusM;
+    t.maxSpeed = layout.speed;
     t.variation.speedFactor = {1.0f, 1.0f};
     s.agentTypes.push_back(t);
     s.agents.reserve(agents);
     s.goals.reserve(agents);
-    float ring = half - 10.0f;
+    const float spacing = std::max(layout.spacingM, 2.0f * layout.agentRadiusM);
+    const float gap = std::max(layout.ringGapM, 2.0f * layout.agentRadiusM);
+    float radius = std::max(layout.innerRadiusM, spacing);
     std::uint32_t placed = 0;
-    while (placed < agents && ring > spacing) {
-        const auto onRing = std::min<std::uint32_t>(agents - placed, std::uint32_t(std::floor(6.2831853f * ring / spacing)));
+    while (placed < agents) {
+        const auto onRing = std::min(agents - placed, std::uint32_t(std::floor(6.2831853f * radius / spacing)));
         for (std::uint32_t k = 0; k < onRing; ++k, ++placed) {
-            const float a = 6.2831853f * float(k) / float(onRing) + 0.37f * ring;
-            const glm::vec2 p(ring * std::cos(a), ring * std::sin(a));
+            // Each ring turned by its own angle, so rings do not line up radially.
+            const float a = 6.2831853f * float(k) / float(onRing) + 0.37f * radius;
+            const glm::vec2 p(radius * std::cos(a), radius * std::sin(a));
             Goal g;
             // Appending (not "g" + to_string) sidesteps GCC 12's false -Wrestrict warning.
             g.name = "g";
             g.name += std::to_string(placed);
             g.position = -p;
-            g.radiusM = 0.5f;
+            g.radiusM = layout.agentRadiusM;
             s.goals.push_back(g);
             Agent agent;
             agent.id = placed + 1;
@@ -59,10 +56,25 @@ Scene makeCrossScenario(std::uint32_t agents, std::uint64_t seed)
             agent.goal = g.name;
             s.agents.push_back(agent);
         }
-        ring -= spacing;
+        radius += gap;
     }
-    s.settings.durationS = 2.0f * half / 1.4f + 30.0f;
+    const float outer = radius - gap;
+    s.settings.boundsMin = glm::vec2(-outer - 10.0f);
+    s.settings.boundsMax = glm::vec2(outer + 10.0f);
+    // The outermost ring's walk across, and as long again for the crowd to get through.
+    s.settings.durationS = 2.0f * (2.0f * outer / layout.speed) + 30.0f;
     return s;
+}
+
+std::string crossLayoutDescription(const CrossLayout& layout)
+{
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  "concentric rings from %.0f m out, %.1f m apart, agents %.1f m apart on a ring, "
+                  "radius %.2f m, %.2f m/s",
+                  double(layout.innerRadiusM), double(layout.ringGapM), double(layout.spacingM),
+                  double(layout.agentRadiusM), double(layout.speed));
+    return text;
 }
 
 Scene makeCorridorScenario(std::uint32_t agents, std::uint64_t seed)

@@ -10,9 +10,25 @@
 
 namespace throng::sim {
 
-// `cross`: agents on concentric rings walk to the antipodal point (the classic avoidance
-// test), laid out like the DetourCrowd peer's `circle` scenario.
-Scene makeCrossScenario(std::uint32_t agents, std::uint64_t seed = 1);
+// `cross`: agents on circles walk to the antipodal point through the centre (the classic
+// avoidance test, RVO2's Circle example), many circles at once: concentric rings
+// `ringGapM` apart, from `innerRadiusM` outwards, each filled with agents `spacingM` apart
+// along it, so the rings reach the centre one after another, like circles started one
+// after another. More agents = more rings further out. Every agent crosses the centre
+// region and meets those of the rings inside it on their way out; the spacing leaves room
+// to walk between those that have arrived (they stand still on their goals, which are the
+// other agents' starts). The DetourCrowd peer gets the same agents and goals
+// (bench/compare-detourcrowd.sh, bench/peers).
+struct CrossLayout {
+    float innerRadiusM = 30.0f;  // radius of the innermost ring
+    float ringGapM = 6.0f;       // between rings
+    float spacingM = 3.0f;       // between neighbours on a ring
+    float agentRadiusM = 0.5f;   // DetourCrowd's default
+    float speed = 1.4f;          // m/s
+};
+Scene makeCrossScenario(std::uint32_t agents, std::uint64_t seed = 1, const CrossLayout& layout = {});
+// One line naming the layout's numbers, for the bench JSON.
+std::string crossLayoutDescription(const CrossLayout& layout = {});
 // `flock`: 3D boids migrating around a closed circuit.
 Scene makeFlockScenario(std::uint32_t agents, std::uint64_t seed = 1);
 // `army`: two masses charge each other across a field.
