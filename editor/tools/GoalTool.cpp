@@ -9,7 +9,6 @@
 
 #include <QDoubleSpinBox>
 #include <QHBoxLayout>
-#include <QKeyEvent>
 #include <QLabel>
 
 namespace throng::editor {
@@ -56,20 +55,6 @@ void GoalTool::mouseReleased(const ToolMouse& mouse)
     goal.radiusM = m_dragRadiusM;
     const QString text = tr("Add goal %1").arg(QString::fromStdString(goal.name));
     document().undoStack()->push(new AddSceneItemCommand<sim::Goal>(document(), &sim::Scene::goals, std::move(goal), text));
-    emit overlayChanged();
-}
-
-bool GoalTool::keyPressed(QKeyEvent* event)
-{
-    if (event->key() != Qt::Key_Escape || state() != State::Dragging)
-        return false;
-    cancel();
-    return true;
-}
-
-void GoalTool::cancel()
-{
-    setState(State::Idle);
     emit overlayChanged();
 }
 

@@ -6,7 +6,6 @@
 
 #include <glm/geometric.hpp>
 
-#include <QKeyEvent>
 
 namespace throng::editor {
 
@@ -54,20 +53,6 @@ void ObstacleTool::mouseReleased(const ToolMouse& mouse)
     const QString text = tr("Add obstacle %1").arg(QString::fromStdString(obstacle.name));
     document().undoStack()->push(
         new AddSceneItemCommand<sim::Obstacle>(document(), &sim::Scene::obstacles, std::move(obstacle), text));
-    emit overlayChanged();
-}
-
-bool ObstacleTool::keyPressed(QKeyEvent* event)
-{
-    if (event->key() != Qt::Key_Escape || state() != State::Dragging)
-        return false;
-    cancel();
-    return true;
-}
-
-void ObstacleTool::cancel()
-{
-    setState(State::Idle);
     emit overlayChanged();
 }
 
