@@ -4,6 +4,7 @@
 #include "editor/MessagesPanel.h"
 #include "editor/RecentFiles.h"
 #include "editor/brain/BrainEditorPanel.h"
+#include "editor/commands/DeleteItemsCommand.h"
 #include "editor/panels/OutlinerPanel.h"
 #include "editor/panels/PropertiesPanel.h"
 #include "editor/panels/TimelinePanel.h"
@@ -130,6 +131,19 @@ void MainWindow::createEditMenu()
     redo->setToolTip(tr("Redo the last undone edit"));
     menu->addAction(undo);
     menu->addAction(redo);
+    QAction* remove = menu->addAction(tr("&Delete"));
+    remove->setObjectName("deleteAction");
+    remove->setShortcut(QKeySequence::Delete);
+    remove->setToolTip(tr("Delete the selected flow strokes, walls and obstacles"));
+    connect(remove, &QAction::triggered, this, [this] {
+        auto* command = new DeleteItemsCommand(m_document, m_document.selection());
+        if (command->isEmpty()) {
+            delete command;
+            return;
+        }
+        m_document.setSelection({});  // the indices of what follows the deleted items shift
+        m_document.undoStack()->push(command);
+    });
     menu->addSeparator();
     QMenu* toolMenu = menu->addMenu(tr("&Tools"));
     toolMenu->addActions(m_tools->actions()->actions());

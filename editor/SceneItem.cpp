@@ -34,6 +34,7 @@ std::size_t itemCount(const sim::Scene& s, ItemKind kind)
     case ItemKind::Goal: return s.goals.size();
     case ItemKind::TrafficLight: return s.trafficLights.size();
     case ItemKind::Lane: return s.lanes.size();
+    case ItemKind::FlowStroke: return s.flowStrokes.size();
     case ItemKind::Hero: return s.heroes.size();
     case ItemKind::Brain: return s.brains.size();
     }
@@ -53,6 +54,7 @@ QString kindTitle(ItemKind kind)
     case ItemKind::Goal: return tr("Goals");
     case ItemKind::TrafficLight: return tr("Traffic Lights");
     case ItemKind::Lane: return tr("Lanes");
+    case ItemKind::FlowStroke: return tr("Flow Strokes");
     case ItemKind::Hero: return tr("Heroes");
     case ItemKind::Brain: return tr("Brains");
     }
@@ -75,6 +77,9 @@ QString itemLabel(const sim::Scene& s, SceneItem item)
     case ItemKind::Goal: return named(s.goals, i, tr("Goal"));
     case ItemKind::TrafficLight: return named(s.trafficLights, i, tr("Light"));
     case ItemKind::Lane: return named(s.lanes, i, tr("Lane"));
+    case ItemKind::FlowStroke:
+        return i < s.flowStrokes.size() ? tr("Flow stroke %1 (%2 m wide)").arg(i + 1).arg(double(s.flowStrokes[i].widthM))
+                                        : QString();
     case ItemKind::Hero: return named(s.heroes, i, tr("Hero"));
     case ItemKind::Brain: return named(s.brains, i, tr("Brain"));
     }
@@ -87,7 +92,8 @@ std::optional<SceneItem> itemForKey(const std::string& key)
         {"agent_types", ItemKind::AgentType}, {"groups", ItemKind::Group},   {"agents", ItemKind::Agent},
         {"paths", ItemKind::Path},             {"walls", ItemKind::Wall},     {"obstacles", ItemKind::Obstacle},
         {"goals", ItemKind::Goal},             {"traffic_lights", ItemKind::TrafficLight},
-        {"lanes", ItemKind::Lane},             {"heroes", ItemKind::Hero},    {"brains", ItemKind::Brain}};
+        {"lanes", ItemKind::Lane},             {"heroes", ItemKind::Hero},    {"brains", ItemKind::Brain},
+        {"flow_strokes", ItemKind::FlowStroke}};
     if (key.rfind("settings", 0) == 0)
         return SceneItem{ItemKind::Settings, 0};
     const std::size_t open = key.find('['), close = key.find(']');

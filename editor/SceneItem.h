@@ -13,7 +13,9 @@
 
 namespace throng::editor {
 
-enum class ItemKind { Settings, AgentType, Group, Agent, Path, Wall, Obstacle, Goal, TrafficLight, Lane, Hero, Brain };
+enum class ItemKind {
+    Settings, AgentType, Group, Agent, Path, Wall, Obstacle, Goal, TrafficLight, Lane, FlowStroke, Hero, Brain
+};
 
 struct SceneItem {
     ItemKind kind = ItemKind::Settings;

@@ -60,6 +60,9 @@ void EditBrainsCommand::apply(const State& state)
     m_document.modify([&](sim::Scene& scene) {
         scene.brains = state.brains;
         scene.agentTypes = state.agentTypes;
+        for (const auto& [agent, brain] : state.agentBrains)
+            if (agent < scene.agents.size())
+                scene.agents[agent].brain = brain;
     });
 }
 

@@ -10,6 +10,8 @@
 #include <QUndoCommand>
 
 #include <cstddef>
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace throng::editor {
@@ -40,6 +42,8 @@ public:
     struct State {
         std::vector<sim::BrainGraph> brains;
         std::vector<sim::AgentType> agentTypes;
+        // Placed agents with a brain of their own: (index in Scene::agents, Agent::brain).
+        std::vector<std::pair<std::size_t, std::string>> agentBrains;
     };
     EditBrainsCommand(SceneDocument& document, State before, State after, const QString& text);
 

@@ -63,13 +63,12 @@ BrainEditorPanel::BrainEditorPanel(SceneDocument& document, SimulationController
         recompile();
     });
     auto rescene = [this] {
-        m_live.setScene(m_document.scene());
         refreshList();  // agent types and brain names may change without the shown graph
     };
     connect(&m_document, &SceneDocument::sceneChanged, this, rescene);
     connect(&m_document, &SceneDocument::sceneReset, this, rescene);
     connect(&m_document, &SceneDocument::sceneReset, this, [this] {
-        m_live.pick(-1);
+        pickAgent(-1);
         m_view->frameAll();
     });
     connect(m_palette, &NodePalette::chosen, this, &BrainEditorPanel::addFromPalette);
@@ -93,9 +92,9 @@ BrainEditorPanel::BrainEditorPanel(SceneDocument& document, SimulationController
                 m_palette->open(m_view->mapFromScene(pos), compatibleNodeTypes(kind, fromInput));
             });
     connect(&m_simulation, &SimulationController::frameChanged, this, &BrainEditorPanel::updateLive);
+    connect(&m_simulation, &SimulationController::brainValuesChanged, this, &BrainEditorPanel::updateLive);
     if (m_viewport)
         m_viewport->installEventFilter(this);
-    m_live.setScene(m_document.scene());
     refreshList();
     recompile();
 }

@@ -2,13 +2,12 @@
 // The "Brains" dock: the scene's brains (new, rename, duplicate, delete, import/export a
 // .brain.yaml, assign to an agent type), the node graph of the shown one, the node
 // palette, compiler errors on the graph and in the message log, and the live values of
-// an agent picked in the viewport while the simulation plays. Edits go through
-// BrainGraphModel and EditBrainsCommand on the document's stack; it never runs a step
-// for the playback.
+// an agent picked in the viewport while the simulation plays (recorded by the playback's
+// own World with each frame). Edits go through BrainGraphModel and EditBrainsCommand on
+// the document's stack; it never runs a World of its own.
 
 #include "editor/SceneDocument.h"
 #include "editor/brain/BrainCommands.h"
-#include "editor/brain/LiveBrainValues.h"
 #include "simcore/brain/BrainCompiler.h"
 #include "simcore/io/Diagnostic.h"
 
@@ -61,7 +60,7 @@ public:
     void assignToType(int type);
     // Follows World agent `agent` (dense index) in the live view; -1 stops.
     void pickAgent(std::ptrdiff_t agent);
-    std::ptrdiff_t pickedAgent() const { return m_live.picked(); }
+    std::ptrdiff_t pickedAgent() const { return m_picked; }
     // Arms the viewport: its next left click picks the nearest agent.
     void armViewportPick();
 
@@ -84,6 +83,8 @@ private:
     void recompile();
     void reportErrors();
     void updateLive();
+    // The brain World agent `agent` runs: its own (Agent::brain) or its type's; empty = none.
+    std::string brainOf(std::ptrdiff_t agent) const;
     void setStatus(const QString& text, bool problem);
     void addFromPalette(const QString& type);
     void pushLibrary(const EditBrainsCommand::State& after, const QString& text);
@@ -101,7 +102,7 @@ private:
     QToolButton* m_pick = nullptr;
     QLabel* m_status = nullptr;
     std::vector<sim::BrainError> m_errors;
-    LiveBrainValues m_live;
+    std::ptrdiff_t m_picked = -1;  // World agent (dense index) in the live view, -1 = nobody
     sim::BrainGraph m_clipboard;
     QPointF m_paletteScenePos;
     // A link dropped on empty space waits for the node the palette adds.

@@ -113,7 +113,8 @@ void BrainEditorPanel::pickAgent(std::ptrdiff_t agent)
 {
     if (agent >= 0 && std::size_t(agent) >= m_simulation.cache().agentCount())
         agent = -1;
-    m_live.pick(agent);
+    m_picked = agent;
+    m_simulation.pickBrainAgent(agent);
     {
         const QSignalBlocker block(m_agent);
         m_agent->setValue(int(agent));
@@ -122,10 +123,10 @@ void BrainEditorPanel::pickAgent(std::ptrdiff_t agent)
         // Show the brain the picked agent runs.
         const std::size_t type = m_simulation.cache().agents()[std::size_t(agent)].typeIndex;
         const sim::Scene& s = m_document.scene();
-        if (type < s.agentTypes.size())
-            for (std::size_t b = 0; b < s.brains.size(); ++b)
-                if (s.brains[b].name == s.agentTypes[type].brain && int(b) != m_model->brainIndex())
-                    showBrain(int(b));
+        const std::string brain = brainOf(agent);
+        for (std::size_t b = 0; b < s.brains.size(); ++b)
+            if (s.brains[b].name == brain && int(b) != m_model->brainIndex())
+                showBrain(int(b));
         setStatus(tr("Showing agent %1's values (%2).")
                       .arg(m_simulation.cache().agents()[std::size_t(agent)].id)
                       .arg(type < s.agentTypes.size() ? QString::fromStdString(s.agentTypes[type].name) : QString()),
@@ -134,19 +135,25 @@ void BrainEditorPanel::pickAgent(std::ptrdiff_t agent)
     updateLive();
 }
 
+std::string BrainEditorPanel::brainOf(std::ptrdiff_t agent) const
+{
+    const sim::FrameCache& cache = m_simulation.cache();
+    if (agent < 0 || std::size_t(agent) >= cache.agentCount())
+        return {};
+    const sim::AgentInfo& info = cache.agents()[std::size_t(agent)];
+    const sim::Scene& s = m_document.scene();
+    for (const sim::Agent& a : s.agents)
+        if (a.id == info.id && !a.brain.empty())
+            return a.brain;
+    return info.typeIndex < s.agentTypes.size() ? s.agentTypes[info.typeIndex].brain : std::string();
+}
+
 void BrainEditorPanel::updateLive()
 {
-    const std::ptrdiff_t agent = m_live.picked();
-    if (agent < 0 || !m_model->hasBrain()) {
-        m_scene->setLiveValues({});
-        return;
-    }
-    const std::vector<sim::BrainNodeValue>& values = m_live.valuesAt(m_simulation.currentFrame());
-    const sim::Scene& s = m_document.scene();
-    const int type = m_live.pickedType();
-    const bool shown = type >= 0 && std::size_t(type) < s.agentTypes.size() &&
-                       s.agentTypes[std::size_t(type)].brain == m_model->graph().name;
-    m_scene->setLiveValues(shown ? values : std::vector<sim::BrainNodeValue>{});
+    const std::vector<sim::BrainNodeValue>* values =
+        m_picked < 0 || !m_model->hasBrain() ? nullptr : m_simulation.brainValues(m_simulation.currentFrame(), m_picked);
+    const bool shown = values && brainOf(m_picked) == m_model->graph().name;
+    m_scene->setLiveValues(shown ? *values : std::vector<sim::BrainNodeValue>{});
 }
 
 void BrainEditorPanel::armViewportPick()

@@ -9,7 +9,11 @@ namespace throng::editor::brainlib {
 
 State current(const sim::Scene& scene)
 {
-    return {scene.brains, scene.agentTypes};
+    State s{scene.brains, scene.agentTypes, {}};
+    for (std::size_t i = 0; i < scene.agents.size(); ++i)
+        if (!scene.agents[i].brain.empty())
+            s.agentBrains.emplace_back(i, scene.agents[i].brain);
+    return s;
 }
 
 std::string uniqueName(const sim::Scene& scene, const std::string& base)
@@ -45,6 +49,9 @@ std::optional<State> renamed(const sim::Scene& scene, std::size_t brain, const s
     for (sim::AgentType& t : s.agentTypes)
         if (t.brain == old)
             t.brain = name;
+    for (auto& [agent, brain] : s.agentBrains)
+        if (brain == old)
+            brain = name;
     for (sim::BrainGraph& g : s.brains)
         for (sim::BrainNode& n : g.nodes)
             if (n.type == "macro")
@@ -77,6 +84,9 @@ State removed(const sim::Scene& scene, std::size_t brain)
     for (sim::AgentType& t : s.agentTypes)
         if (t.brain == name)
             t.brain.clear();
+    for (auto& [agent, brain] : s.agentBrains)
+        if (brain == name)
+            brain.clear();
     return s;
 }
 

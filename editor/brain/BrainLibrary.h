@@ -1,6 +1,7 @@
 #pragma once
-// The scene's list of brains as the brain editor changes it: new, rename (agent types
-// and macro nodes follow the new name), duplicate, delete, import and export of a
+// The scene's list of brains as the brain editor changes it: new, rename (agent types,
+// agents with a brain of their own and macro nodes follow the new name), duplicate,
+// delete (those agents fall back to their type's brain), import and export of a
 // .brain.yaml, assigning a brain to an agent type. Pure functions from the scene to the
 // state an EditBrainsCommand applies; file access only in import/export.
 

@@ -32,6 +32,7 @@ void forEachPoint(Scene& s, SceneItem item, Visit visit)
     case ItemKind::Path: for (auto& p : s.paths[i].points) visit(p); return;
     case ItemKind::Wall: for (auto& p : s.walls[i].points) visit(p); return;
     case ItemKind::Lane: for (auto& p : s.lanes[i].points) visit(p); return;
+    case ItemKind::FlowStroke: for (auto& p : s.flowStrokes[i].points) visit(p); return;
     default: return;
     }
 }
@@ -47,7 +48,8 @@ bool MoveItemsCommand::movable(ItemKind kind)
     case ItemKind::TrafficLight:
     case ItemKind::Path:
     case ItemKind::Wall:
-    case ItemKind::Lane: return true;
+    case ItemKind::Lane:
+    case ItemKind::FlowStroke: return true;
     default: return false;
     }
 }

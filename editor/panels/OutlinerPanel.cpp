@@ -5,14 +5,20 @@
 #include <QHeaderView>
 #include <QSignalBlocker>
 
+#include <algorithm>
+#include <map>
+
 namespace throng::editor {
 
 namespace {
 constexpr int kKindRole = Qt::UserRole;
 constexpr int kIndexRole = Qt::UserRole + 1;
+constexpr int kGroupRole = Qt::UserRole + 2;  // agent-group rows: the group's name
+constexpr int kAgentGroups = -100;            // kKindRole of the agent-group heading and rows
 constexpr ItemKind kListed[] = {ItemKind::Settings, ItemKind::AgentType, ItemKind::Group,    ItemKind::Agent,
                                 ItemKind::Path,     ItemKind::Wall,      ItemKind::Obstacle, ItemKind::Goal,
-                                ItemKind::TrafficLight, ItemKind::Lane,  ItemKind::Hero,     ItemKind::Brain};
+                                ItemKind::TrafficLight, ItemKind::Lane,  ItemKind::FlowStroke, ItemKind::Hero,
+                                ItemKind::Brain};
 }  // namespace
 
 OutlinerPanel::OutlinerPanel(SceneDocument& document, QWidget* parent) : QTreeWidget(parent), m_document(document)
@@ -66,9 +72,45 @@ void OutlinerPanel::rebuild()
             row->setData(0, kIndexRole, qlonglong(i));
         }
         heading->setExpanded(expanded.contains(int(kind)));
+        if (kind == ItemKind::Agent)
+            addAgentGroups(expanded.contains(kAgentGroups));
     }
     m_updating = false;
     showSelection();
+}
+
+// The agents' groups (Agent::group), each row selecting its agents as a set.
+void OutlinerPanel::addAgentGroups(bool expand)
+{
+    std::map<std::string, std::size_t> groups;
+    for (const sim::Agent& a : m_document.scene().agents)
+        if (!a.group.empty())
+            ++groups[a.group];
+    auto* heading = new QTreeWidgetItem(this, {tr("Agent Groups (%1)").arg(groups.size())});
+    heading->setData(0, kKindRole, kAgentGroups);
+    heading->setData(0, kIndexRole, -1);
+    heading->setFlags(heading->flags() & ~Qt::ItemIsSelectable);
+    for (const auto& [name, count] : groups) {
+        const QString label = tr("%1 (%n agent(s))", nullptr, int(count)).arg(QString::fromStdString(name));
+        auto* row = new QTreeWidgetItem(heading, {label});
+        row->setData(0, kKindRole, kAgentGroups);
+        row->setData(0, kIndexRole, -1);
+        row->setData(0, kGroupRole, QString::fromStdString(name));
+    }
+    heading->setExpanded(expand);
+}
+
+QTreeWidgetItem* OutlinerPanel::agentGroupRow(const QString& name) const
+{
+    for (int i = 0; i < topLevelItemCount(); ++i) {
+        QTreeWidgetItem* heading = topLevelItem(i);
+        if (heading->data(0, kKindRole).toInt() != kAgentGroups)
+            continue;
+        for (int k = 0; k < heading->childCount(); ++k)
+            if (heading->child(k)->data(0, kGroupRole).toString() == name)
+                return heading->child(k);
+    }
+    return nullptr;
 }
 
 void OutlinerPanel::showSelection()
@@ -93,7 +135,16 @@ void OutlinerPanel::takeSelection()
     if (m_updating)
         return;
     Selection selection;
+    const std::vector<sim::Agent>& agents = m_document.scene().agents;
     for (QTreeWidgetItem* row : selectedItems()) {
+        if (row->data(0, kKindRole).toInt() == kAgentGroups) {
+            const std::string group = row->data(0, kGroupRole).toString().toStdString();
+            for (std::size_t i = 0; i < agents.size(); ++i)
+                if (agents[i].group == group && std::find(selection.begin(), selection.end(),
+                                                          SceneItem{ItemKind::Agent, i}) == selection.end())
+                    selection.push_back({ItemKind::Agent, i});
+            continue;
+        }
         const qlonglong index = row->data(0, kIndexRole).toLongLong();
         if (index >= 0)
             selection.push_back({ItemKind(row->data(0, kKindRole).toInt()), std::size_t(index)});

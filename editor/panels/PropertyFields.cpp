@@ -50,6 +50,8 @@ std::vector<PropertyField> make(ItemKind kind)
     case ItemKind::Lane:
         return {{"width", tr("Width (m)"), 0.5, 50, 0.1, 2, THRONG_FIELD(lanes, widthM)},
                 {"speedLimit", tr("Speed limit (m/s)"), 0.1, 100, 0.5, 1, THRONG_FIELD(lanes, speedLimit)}};
+    case ItemKind::FlowStroke:
+        return {{"width", tr("Width (m)"), 0.1, 100, 0.5, 2, THRONG_FIELD(flowStrokes, widthM)}};
     case ItemKind::Hero:
         return {{"clearance", tr("Clearance (m)"), 0, 50, 0.1, 2, THRONG_FIELD(heroes, clearanceM)}};
     case ItemKind::Group:

@@ -22,7 +22,7 @@ SimulationController::~SimulationController()
 namespace {
 
 // True when the two scenes simulate alike: they differ at most in placed agents' hand-set
-// look, tint and height, which only export reads.
+// look, tint and height, which only export reads, and their group, which nothing reads.
 bool sameSimulation(const sim::Scene& a, const sim::Scene& b)
 {
     if (a.agents.size() != b.agents.size())
@@ -32,6 +32,7 @@ bool sameSimulation(const sim::Scene& a, const sim::Scene& b)
         x.look = b.agents[i].look;
         x.tint = b.agents[i].tint;
         x.heightScale = b.agents[i].heightScale;
+        x.group = b.agents[i].group;
         if (!(x == b.agents[i]))
             return false;
     }
@@ -54,11 +55,13 @@ void SimulationController::setScene(const sim::Scene& scene)
     pause();
     m_stepPending = false;
     m_cache = {};
+    m_brainValues.clear();
     m_current = 0;
     const float fps = scene.settings.fps > 0.0f ? scene.settings.fps : 24.0f;
     m_totalFrames = std::size_t(std::lround(double(scene.settings.durationS) * double(fps))) + 1;
     m_timer.setInterval(std::max(1, int(std::lround(1000.0 / double(fps)))));
     m_runner.start(scene);
+    m_runFrames = 0;
     emit recordedChanged(0);
 }
 
@@ -70,12 +73,26 @@ void SimulationController::takeFrames()
         emit problem(tr("Cannot simulate the scene: %1").arg(QString::fromStdString(batch.error)));
         return;
     }
-    if (!batch.agents.empty())
+    // A run that computes recorded frames again (pickBrainAgent) brings only their values.
+    if (!batch.agents.empty() && m_cache.frameCount() == 0)
         m_cache.reset(std::move(batch.agents), batch.fps);
     const std::size_t n = m_cache.agentCount();
-    if (n > 0)
-        for (std::size_t f = 0; f < batch.frameCount; ++f)
-            m_cache.append(std::span(batch.frames).subspan(f * n, n));
+    bool replayed = false;
+    for (std::size_t f = 0; n > 0 && f < batch.frameCount; ++f) {
+        const std::size_t frame = m_runFrames + f;
+        SimulationRunner::PickedBrainValues values =
+            f < batch.brainValues.size() ? std::move(batch.brainValues[f]) : SimulationRunner::PickedBrainValues{};
+        if (frame < m_cache.frameCount()) {
+            m_brainValues[frame] = std::move(values);
+            replayed = true;
+            continue;
+        }
+        m_cache.append(std::span(batch.frames).subspan(f * n, n));
+        m_brainValues.push_back(std::move(values));
+    }
+    m_runFrames += batch.frameCount;
+    if (replayed)
+        emit brainValuesChanged();
     emit recordedChanged(m_cache.frameCount());
     if (m_stepPending && m_current + 1 < m_cache.frameCount()) {
         m_stepPending = false;
@@ -145,6 +162,23 @@ void SimulationController::seek(std::size_t frame)
 void SimulationController::simulateToEnd()
 {
     m_runner.setTarget(m_totalFrames);
+}
+
+void SimulationController::pickBrainAgent(std::ptrdiff_t agent)
+{
+    m_runner.pickBrainAgent(agent);
+    if (agent < 0 || !m_hasScene || m_cache.frameCount() <= 1 || brainValues(m_cache.frameCount() - 1, agent))
+        return;
+    m_runner.start(m_scene);
+    m_runFrames = 0;
+    m_runner.setTarget(m_playing ? m_totalFrames : m_cache.frameCount());
+}
+
+const std::vector<sim::BrainNodeValue>* SimulationController::brainValues(std::size_t frame, std::ptrdiff_t agent) const
+{
+    if (agent < 0 || frame >= m_brainValues.size() || m_brainValues[frame].agent != agent)
+        return nullptr;
+    return &m_brainValues[frame].values;
 }
 
 void SimulationController::setCurrent(std::size_t frame)

@@ -52,12 +52,22 @@ public:
     std::size_t totalFrames() const { return m_totalFrames; }
     const sim::FrameCache& cache() const { return m_cache; }
     double stepsPerSecond() const { return m_runner.stepsPerSecond(); }
+    // The brain editor's live view: the simulation records agent `agent`'s (dense index)
+    // brain node values with every frame it computes; -1 = nobody. Frames recorded before
+    // the pick are computed again in the background (the same frames: the World is
+    // deterministic) to record its values; brainValuesChanged() tells when they arrive.
+    void pickBrainAgent(std::ptrdiff_t agent);
+    // Agent `agent`'s node values recorded with frame `frame`; null when that frame was
+    // computed with another agent picked (or not yet), or at frame 0 (no step yet).
+    const std::vector<sim::BrainNodeValue>* brainValues(std::size_t frame, std::ptrdiff_t agent) const;
 
 signals:
     // Frame `frame` of cache() is the one to show.
     void frameChanged(std::size_t frame);
     void recordedChanged(std::size_t recordedFrames);
     void playingChanged(bool playing);
+    // Node values of frames already shown arrived (after pickBrainAgent).
+    void brainValuesChanged();
     // The scene could not be simulated (a World could not be built from it).
     void problem(const QString& message);
 
@@ -70,6 +80,8 @@ private:
     sim::Scene m_scene;  // what the recorded frames were simulated from
     bool m_hasScene = false;
     sim::FrameCache m_cache;
+    std::vector<SimulationRunner::PickedBrainValues> m_brainValues;  // per recorded frame
+    std::size_t m_runFrames = 0;  // frames the runner's current run has handed over
     QTimer m_timer;
     std::size_t m_current = 0;
     std::size_t m_totalFrames = 1;

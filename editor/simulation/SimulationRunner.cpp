@@ -82,14 +82,19 @@ void SimulationRunner::run(sim::Scene scene)
         return;
     }
     std::size_t produced = 0;
+    std::ptrdiff_t picked = -1;
     auto publish = [&](bool first) {
         world->snapshot(frame);
+        PickedBrainValues brain{first ? -1 : picked, {}};
+        if (const sim::BrainEvaluator* e = first || picked < 0 ? nullptr : world->agentBrainEvaluator(std::size_t(picked)))
+            brain.values = e->pickedValues();
         std::lock_guard lock(m_mutex);
         if (first) {
             m_pending.agents = world->agentInfo();
             m_pending.fps = scene.settings.fps;
         }
         m_pending.frames.insert(m_pending.frames.end(), frame.begin(), frame.end());
+        m_pending.brainValues.push_back(std::move(brain));
         ++m_pending.frameCount;
         if (!m_notified) {
             m_notified = true;
@@ -115,6 +120,10 @@ void SimulationRunner::run(sim::Scene scene)
                 std::lock_guard lock(m_mutex);
                 if (m_stop || produced >= m_target)
                     break;
+            }
+            if (const std::ptrdiff_t want = m_brainAgent.load(); want != picked) {
+                picked = want >= 0 && std::size_t(want) < world->agentCount() ? want : -1;
+                world->pickBrainAgent(picked);
             }
             world->step();
             publish(false);

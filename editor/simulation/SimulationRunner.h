@@ -2,6 +2,7 @@
 // Steps a World on its own thread and hands the frames over: the GUI thread takes them
 // with takeFrames(). Knows nothing of widgets; the World never leaves its thread.
 
+#include "simcore/brain/BrainEvaluator.h"
 #include "simcore/scene/Scene.h"
 #include "simcore/world/FrameCache.h"
 
@@ -32,12 +33,23 @@ public:
     // Computes nothing more until the next setTarget; frames already made stay.
     void stopAhead();
 
+    // One frame's node values of the agent picked for the brain editor's live view.
+    struct PickedBrainValues {
+        std::ptrdiff_t agent = -1;                // dense World index; -1 = nobody was picked
+        std::vector<sim::BrainNodeValue> values;  // empty at frame 0 or without a running brain
+    };
+    // Records agent `agent`'s brain node values with each frame computed from now on
+    // (-1 = nobody); frames already computed keep what they recorded. Any thread.
+    void pickBrainAgent(std::ptrdiff_t agent) { m_brainAgent = agent; }
+
     struct Batch {
         std::vector<sim::AgentInfo> agents;  // set with frame 0 only
         float fps = 24.0f;
         std::vector<sim::AgentFrame> frames; // frame-major, agents.size() per frame
         std::size_t frameCount = 0;
         std::string error;                   // the World could not be built
+        // Per frame of `frames`: the picked agent's brain node values (see pickBrainAgent).
+        std::vector<PickedBrainValues> brainValues;
     };
     // Moves out what was computed since the last call.
     Batch takeFrames();
@@ -58,6 +70,7 @@ private:
     bool m_notified = false;
     std::atomic<double> m_stepsPerSecond{0.0};
     std::atomic<bool> m_computing{false};
+    std::atomic<std::ptrdiff_t> m_brainAgent{-1};
 };
 
 }  // namespace throng::editor

@@ -7,6 +7,7 @@
 #include <QLabel>
 
 #include <algorithm>
+#include <set>
 
 namespace throng::editor {
 
@@ -19,6 +20,10 @@ bool AssignBrushTool::editAgent(sim::Agent& agent, glm::vec2, glm::vec2, int) co
         agent.goal = *m_settings.goal;
     if (m_settings.path)
         agent.path = *m_settings.path;
+    if (m_settings.brain)
+        agent.brain = *m_settings.brain;
+    if (m_settings.group)
+        agent.group = *m_settings.group;
     return !(agent == before);
 }
 
@@ -60,7 +65,43 @@ QWidget* AssignBrushTool::createOptionsWidget(QWidget* parent)
     addChoice(tr("Type"), "assignType", m_settings.type, types, false);
     addChoice(tr("Goal"), "assignGoal", m_settings.goal, goals, true);
     addChoice(tr("Path"), "assignPath", m_settings.path, paths, true);
+    std::vector<std::string> brains;
+    for (const sim::BrainGraph& b : scene.brains)
+        brains.push_back(b.name);
+    addChoice(tr("Brain"), "assignBrain", m_settings.brain, brains, true);
+    if (auto* brain = box->findChild<QComboBox*>("assignBrain"))
+        brain->setItemText(1, tr("(type's)"));
+    addGroupChoice(box, row);
     return box;
+}
+
+// The group combo is editable: typing a name not listed yet starts a new group.
+void AssignBrushTool::addGroupChoice(QWidget* box, QHBoxLayout* row)
+{
+    std::set<std::string> groups;
+    for (const sim::Agent& a : document().scene().agents)
+        if (!a.group.empty())
+            groups.insert(a.group);
+    auto* combo = new QComboBox(box);
+    combo->setObjectName("assignGroup");
+    combo->setEditable(true);
+    combo->setInsertPolicy(QComboBox::NoInsert);
+    combo->setToolTip(tr("The group to put the agents in; type a name for a new group"));
+    const QString keep = tr("(keep)"), none = tr("(none)");
+    combo->addItem(keep);
+    combo->addItem(none);
+    for (const std::string& g : groups)
+        combo->addItem(QString::fromStdString(g));
+    combo->setCurrentText(m_settings.group ? (m_settings.group->empty() ? none : QString::fromStdString(*m_settings.group))
+                                           : keep);
+    connect(combo, &QComboBox::currentTextChanged, this, [this, keep, none](const QString& text) {
+        const QString name = text.trimmed();
+        m_settings.group = name == keep || name.isEmpty() ? std::nullopt
+                           : name == none                 ? std::optional(std::string())
+                                                          : std::optional(name.toStdString());
+    });
+    row->addWidget(new QLabel(tr("Group"), box));
+    row->addWidget(combo);
 }
 
 }  // namespace throng::editor

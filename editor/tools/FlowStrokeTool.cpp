@@ -8,7 +8,6 @@
 
 #include <QDoubleSpinBox>
 #include <QHBoxLayout>
-#include <QKeyEvent>
 #include <QLabel>
 #include <QPainter>
 #include <QPolygonF>
@@ -55,19 +54,10 @@ void FlowStrokeTool::mouseReleased(const ToolMouse& mouse)
     emit overlayChanged();
 }
 
-bool FlowStrokeTool::keyPressed(QKeyEvent* event)
-{
-    if (event->key() != Qt::Key_Escape || state() != State::Dragging)
-        return false;
-    cancel();
-    return true;
-}
-
 void FlowStrokeTool::cancel()
 {
     m_points.clear();
-    setState(State::Idle);
-    emit overlayChanged();
+    ViewportTool::cancel();
 }
 
 void FlowStrokeTool::drawOverlay(QPainter& painter) const

@@ -28,7 +28,6 @@ public:
     void mousePressed(const ToolMouse& mouse) override;
     void mouseMoved(const ToolMouse& mouse) override;
     void mouseReleased(const ToolMouse& mouse) override;
-    bool keyPressed(QKeyEvent* event) override;
     void cancel() override;
     void drawOverlay(QPainter& painter) const override;
     QWidget* createOptionsWidget(QWidget* parent) override;

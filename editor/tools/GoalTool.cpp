@@ -2,81 +2,22 @@
 
 #include "editor/SceneDocument.h"
 #include "editor/commands/AddSceneItemCommand.h"
-#include "editor/tools/BrushOverlay.h"
 #include "editor/tools/UniqueName.h"
-
-#include <glm/geometric.hpp>
 
 #include <QDoubleSpinBox>
 #include <QHBoxLayout>
-#include <QKeyEvent>
 #include <QLabel>
 
 namespace throng::editor {
 
-namespace {
-constexpr float kClickRadiusM = 0.3f;  // drags shorter than this are clicks
-}
-
-float GoalTool::radiusTo(const ToolMouse& mouse) const
+void GoalTool::place(glm::vec2 centre, float radiusM)
 {
-    if (!mouse.ground)
-        return m_dragRadiusM;
-    const float r = glm::length(glm::vec2(mouse.ground->x - m_centre.x, mouse.ground->z - m_centre.z));
-    return r < kClickRadiusM ? m_defaultRadiusM : r;
-}
-
-void GoalTool::mousePressed(const ToolMouse& mouse)
-{
-    if (!mouse.ground)
-        return;
-    m_centre = *mouse.ground;
-    m_dragRadiusM = m_defaultRadiusM;
-    setState(State::Dragging);
-    emit overlayChanged();
-}
-
-void GoalTool::mouseMoved(const ToolMouse& mouse)
-{
-    if (state() != State::Dragging)
-        return;
-    m_dragRadiusM = radiusTo(mouse);
-    emit overlayChanged();
-}
-
-void GoalTool::mouseReleased(const ToolMouse& mouse)
-{
-    if (state() != State::Dragging)
-        return;
-    m_dragRadiusM = radiusTo(mouse);
-    setState(State::Idle);
     sim::Goal goal;
     goal.name = uniqueName(document().scene().goals, "goal");
-    goal.position = {m_centre.x, m_centre.z};
-    goal.radiusM = m_dragRadiusM;
+    goal.position = centre;
+    goal.radiusM = radiusM;
     const QString text = tr("Add goal %1").arg(QString::fromStdString(goal.name));
     document().undoStack()->push(new AddSceneItemCommand<sim::Goal>(document(), &sim::Scene::goals, std::move(goal), text));
-    emit overlayChanged();
-}
-
-bool GoalTool::keyPressed(QKeyEvent* event)
-{
-    if (event->key() != Qt::Key_Escape || state() != State::Dragging)
-        return false;
-    cancel();
-    return true;
-}
-
-void GoalTool::cancel()
-{
-    setState(State::Idle);
-    emit overlayChanged();
-}
-
-void GoalTool::drawOverlay(QPainter& painter) const
-{
-    if (state() == State::Dragging)
-        drawBrushCircle(painter, viewport(), m_centre, m_dragRadiusM, QColor(100, 230, 140));
 }
 
 QWidget* GoalTool::createOptionsWidget(QWidget* parent)

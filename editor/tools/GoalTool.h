@@ -3,15 +3,15 @@
 // the radius of the tool options). The preview stays in the tool until the release
 // pushes one AddGoal step.
 
-#include "editor/tools/ViewportTool.h"
+#include "editor/tools/CircleDragTool.h"
 
 namespace throng::editor {
 
-class GoalTool : public ViewportTool {
+class GoalTool : public CircleDragTool {
     Q_OBJECT
 
 public:
-    using ViewportTool::ViewportTool;
+    using CircleDragTool::CircleDragTool;
 
     QString name() const override { return tr("Goal"); }
     QString toolTip() const override
@@ -20,20 +20,15 @@ public:
     }
     QKeySequence shortcut() const override { return QKeySequence(Qt::Key_G); }
     QString objectKey() const override { return QStringLiteral("goal"); }
-
-    void mousePressed(const ToolMouse& mouse) override;
-    void mouseMoved(const ToolMouse& mouse) override;
-    void mouseReleased(const ToolMouse& mouse) override;
-    bool keyPressed(QKeyEvent* event) override;
-    void cancel() override;
-    void drawOverlay(QPainter& painter) const override;
     QWidget* createOptionsWidget(QWidget* parent) override;
 
-private:
-    float radiusTo(const ToolMouse& mouse) const;
+protected:
+    float defaultRadiusM() const override { return m_defaultRadiusM; }
+    float clickRadiusM() const override { return 0.3f; }
+    QColor previewColour() const override { return QColor(100, 230, 140); }
+    void place(glm::vec2 centre, float radiusM) override;
 
-    glm::vec3 m_centre{0.0f};
-    float m_dragRadiusM = 0.0f;
+private:
     float m_defaultRadiusM = 1.5f;
 };
 

@@ -2,17 +2,15 @@
 // Places a circular obstacle: press at its centre and drag out its radius (a click gives
 // the default radius). The preview stays in the tool until the release pushes one step.
 
-#include "editor/tools/ViewportTool.h"
-
-#include <glm/vec2.hpp>
+#include "editor/tools/CircleDragTool.h"
 
 namespace throng::editor {
 
-class ObstacleTool : public ViewportTool {
+class ObstacleTool : public CircleDragTool {
     Q_OBJECT
 
 public:
-    using ViewportTool::ViewportTool;
+    using CircleDragTool::CircleDragTool;
 
     QString name() const override { return tr("Obstacle"); }
     QString toolTip() const override
@@ -22,18 +20,11 @@ public:
     QKeySequence shortcut() const override { return QKeySequence(Qt::Key_O); }
     QString objectKey() const override { return QStringLiteral("obstacle"); }
 
-    void mousePressed(const ToolMouse& mouse) override;
-    void mouseMoved(const ToolMouse& mouse) override;
-    void mouseReleased(const ToolMouse& mouse) override;
-    bool keyPressed(QKeyEvent* event) override;
-    void cancel() override;
-    void drawOverlay(QPainter& painter) const override;
-
-private:
-    float radiusTo(const ToolMouse& mouse) const;
-
-    glm::vec3 m_centre{0.0f};
-    float m_radiusM = 0.5f;
+protected:
+    float defaultRadiusM() const override { return 0.5f; }
+    float clickRadiusM() const override { return 0.1f; }
+    QColor previewColour() const override { return QColor(200, 140, 255); }
+    void place(glm::vec2 centre, float radiusM) override;
 };
 
 }  // namespace throng::editor

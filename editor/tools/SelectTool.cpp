@@ -20,7 +20,7 @@ namespace throng::editor {
 namespace {
 
 constexpr ItemKind kPointKinds[] = {ItemKind::Agent, ItemKind::Obstacle, ItemKind::Goal, ItemKind::TrafficLight};
-constexpr ItemKind kLineKinds[] = {ItemKind::Path, ItemKind::Wall, ItemKind::Lane};
+constexpr ItemKind kLineKinds[] = {ItemKind::Path, ItemKind::Wall, ItemKind::Lane, ItemKind::FlowStroke};
 constexpr double kClickPx = 3.0;  // a box smaller than this is a click
 
 double distancePx(QPointF a, QPointF b)
@@ -60,17 +60,58 @@ std::optional<SceneItem> SelectTool::pick(QPointF pixel) const
     if (best)
         return best;
     for (ItemKind kind : kLineKinds)
-        for (std::size_t i = 0; i < itemCount(s, kind); ++i) {
-            const std::span<const glm::vec2> line = itemPolyline(s, {kind, i});
-            for (std::size_t k = 1; k < line.size(); ++k) {
-                const double d = segmentDistancePx(pixel, pixelOf(line[k - 1]), pixelOf(line[k]));
-                if (d < bestPx) {
-                    bestPx = d;
-                    best = SceneItem{kind, i};
-                }
+        for (std::size_t i = 0; i < itemCount(s, kind); ++i)
+            if (const std::optional<Segment> hit = segmentAt({kind, i}, pixel); hit && hit->distancePx < bestPx) {
+                bestPx = hit->distancePx;
+                best = SceneItem{kind, i};
             }
-        }
     return best;
+}
+
+// A closed path's last segment runs from its last point back to its first.
+std::optional<SelectTool::Segment> SelectTool::segmentAt(SceneItem item, QPointF pixel) const
+{
+    const sim::Scene& s = document().scene();
+    const std::span<const glm::vec2> line = itemPolyline(s, item);
+    const bool closed = item.kind == ItemKind::Path && s.paths[item.index].closed && line.size() >= 3;
+    std::optional<Segment> best;
+    for (std::size_t k = 1; k < line.size() + (closed ? 1 : 0); ++k) {
+        const double d = segmentDistancePx(pixel, pixelOf(line[k - 1]), pixelOf(line[k % line.size()]));
+        if (d < kPickPx && (!best || d < best->distancePx))
+            best = Segment{k, d};
+    }
+    return best;
+}
+
+// A double click on a segment of the one selected path, wall, lane or flow stroke
+// inserts a point there.
+void SelectTool::mouseDoubleClicked(const ToolMouse& mouse)
+{
+    const Selection& selection = document().selection();
+    if (selection.size() != 1 || !mouse.ground)
+        return;
+    const SceneItem item = selection.front();
+    const std::optional<Segment> hit = segmentAt(item, mouse.pixel);
+    if (!hit)
+        return;
+    const sim::Scene& scene = document().scene();
+    const std::span<const glm::vec2> line = itemPolyline(scene, item);
+    std::vector<glm::vec2> points(line.begin(), line.end());
+    points.insert(points.begin() + std::ptrdiff_t(hit->insertAt), glm::vec2(mouse.ground->x, mouse.ground->z));
+    const QString key = QStringLiteral("insertPoint/%1/%2/%3").arg(int(item.kind)).arg(item.index).arg(++m_dragSerial);
+    document().undoStack()->push(new ChangeValueCommand<std::vector<glm::vec2>>(
+        document(), key, pointsOf(item), std::move(points), tr("Insert a point in %1").arg(itemLabel(scene, item))));
+    emit overlayChanged();
+}
+
+std::function<std::vector<glm::vec2>&(sim::Scene&)> SelectTool::pointsOf(SceneItem item)
+{
+    return [item](sim::Scene& s) -> std::vector<glm::vec2>& {
+        return item.kind == ItemKind::Path   ? s.paths[item.index].points
+               : item.kind == ItemKind::Wall ? s.walls[item.index].points
+               : item.kind == ItemKind::Lane ? s.lanes[item.index].points
+                                             : s.flowStrokes[item.index].points;
+    };
 }
 
 bool SelectTool::pressHandle(const ToolMouse& mouse)
@@ -147,13 +188,8 @@ void SelectTool::dragTo(const ToolMouse& mouse)
         points[m_handlePoint] = ground;
         const SceneItem item = m_handleItem;
         const QString key = QStringLiteral("points/%1/%2/%3").arg(int(item.kind)).arg(item.index).arg(m_dragSerial);
-        auto locate = [item](sim::Scene& s) -> std::vector<glm::vec2>& {
-            return item.kind == ItemKind::Path ? s.paths[item.index].points
-                   : item.kind == ItemKind::Wall ? s.walls[item.index].points
-                                                 : s.lanes[item.index].points;
-        };
         stack->push(new ChangeValueCommand<std::vector<glm::vec2>>(
-            document(), key, locate, std::move(points), tr("Edit %1").arg(itemLabel(scene, item))));
+            document(), key, pointsOf(item), std::move(points), tr("Edit %1").arg(itemLabel(scene, item))));
         m_pushed = true;
     } else if (m_drag == Drag::Radius) {
         const std::size_t i = m_handleItem.index;
@@ -204,19 +240,11 @@ void SelectTool::finishBox(Qt::KeyboardModifiers modifiers)
     document().setSelection(selection);
 }
 
-bool SelectTool::keyPressed(QKeyEvent* event)
-{
-    if (event->key() != Qt::Key_Escape || state() != State::Dragging)
-        return false;
-    cancel();
-    return true;
-}
-
 void SelectTool::cancel()
 {
     // A drag pushes as it goes: taking it back leaves the scene as before the drag.
-    if (state() == State::Dragging && m_pushed && m_drag != Drag::Box)
-        document().undoStack()->undo();
+    if (m_drag != Drag::Box)
+        revertDrag();
     m_pushed = false;
     m_drag = Drag::None;
     setState(State::Idle);

@@ -1,9 +1,10 @@
 #pragma once
-// Select and move: a click picks the agent, obstacle, goal, light, path, wall or lane
-// under the mouse (Shift adds); a drag from empty ground selects everything inside the
-// box; dragging a selected item moves the whole selection; a single selected path, wall
-// or lane shows handles: drag a point to reshape it, a path's radius handle to widen it.
-// Every drag is one undo step; Escape during a drag takes it back.
+// Select and move: a click picks the agent, obstacle, goal, light, path (its closing
+// segment too), wall, lane or flow stroke under the mouse (Shift adds); a drag from empty
+// ground selects everything inside the box; dragging a selected item moves the whole
+// selection; a single selected line shows handles: drag a point to reshape it, a path's
+// radius handle to widen it, double-click a segment to insert a point. Every drag is one
+// undo step; Escape during a drag takes it back and leaves no redo step.
 
 #include "editor/SceneItem.h"
 #include "editor/tools/ViewportTool.h"
@@ -11,6 +12,10 @@
 #include <glm/vec2.hpp>
 
 #include <QPointF>
+
+#include <functional>
+#include <optional>
+#include <vector>
 
 namespace throng::editor {
 
@@ -32,7 +37,7 @@ public:
     void mousePressed(const ToolMouse& mouse) override;
     void mouseMoved(const ToolMouse& mouse) override;
     void mouseReleased(const ToolMouse& mouse) override;
-    bool keyPressed(QKeyEvent* event) override;
+    void mouseDoubleClicked(const ToolMouse& mouse) override;
     void cancel() override;
     void drawOverlay(QPainter& painter) const override;
 
@@ -45,6 +50,15 @@ public:
 private:
     enum class Drag { None, Move, Box, Point, Radius };
 
+    // A segment of a polyline item near a pixel: insert a new point at `insertAt`.
+    struct Segment {
+        std::size_t insertAt = 0;
+        double distancePx = 0.0;
+    };
+    // The segment of `item` nearest `pixel` within kPickPx, a closed path's closing one too.
+    std::optional<Segment> segmentAt(SceneItem item, QPointF pixel) const;
+    // Where a path's, wall's, lane's or flow stroke's points live in the scene.
+    static std::function<std::vector<glm::vec2>&(sim::Scene&)> pointsOf(SceneItem item);
     bool pressHandle(const ToolMouse& mouse);
     void dragTo(const ToolMouse& mouse);
     void finishBox(Qt::KeyboardModifiers modifiers);

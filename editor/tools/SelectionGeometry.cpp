@@ -27,6 +27,7 @@ std::span<const glm::vec2> itemPolyline(const sim::Scene& s, SceneItem item)
     case ItemKind::Path: return s.paths[item.index].points;
     case ItemKind::Wall: return s.walls[item.index].points;
     case ItemKind::Lane: return s.lanes[item.index].points;
+    case ItemKind::FlowStroke: return s.flowStrokes[item.index].points;
     default: return {};
     }
 }

@@ -45,14 +45,16 @@ public:
     virtual void activate() {}
     // Drops any preview (Escape does the same); the document is untouched.
     virtual void deactivate() { cancel(); }
-    virtual void cancel() {}
+    // By default: back to Idle and the overlay redrawn. Tools with a preview drop it first.
+    virtual void cancel();
 
     virtual void mousePressed(const ToolMouse&) {}
     virtual void mouseMoved(const ToolMouse&) {}
     virtual void mouseReleased(const ToolMouse&) {}
     virtual void mouseDoubleClicked(const ToolMouse&) {}
-    // True when the tool used the key.
-    virtual bool keyPressed(QKeyEvent*) { return false; }
+    // True when the tool used the key. By default Escape during a drag takes the drag back
+    // (revertDrag, then cancel) and is used; other keys are not.
+    virtual bool keyPressed(QKeyEvent* event);
 
     // Draws the preview in widget pixels over the viewport.
     virtual void drawOverlay(QPainter&) const {}
@@ -67,7 +69,12 @@ signals:
     void overlayChanged();
 
 protected:
-    void setState(State state) { m_state = state; }
+    // Entering Dragging remembers the undo stack's index, for revertDrag.
+    void setState(State state);
+    // Takes back every step the current drag pushed (a tool that pushes as it goes) and
+    // drops them from the redo list too, so a cancelled drag leaves no trace in the
+    // history. Does nothing outside a drag or when the drag pushed nothing.
+    void revertDrag();
     SceneDocument& document() { return m_document; }
     const SceneDocument& document() const { return m_document; }
     Viewport& viewport() { return m_viewport; }
@@ -77,6 +84,7 @@ private:
     SceneDocument& m_document;
     Viewport& m_viewport;
     State m_state = State::Idle;
+    int m_dragStartIndex = -1;  // the undo stack's index when the drag began
 };
 
 }  // namespace throng::editor

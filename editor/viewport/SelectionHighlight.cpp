@@ -13,7 +13,35 @@ constexpr float kLineM = 0.14f;    // half width of the outline
 constexpr float kMarginM = 0.25f;  // rings stand this far outside what they mark
 }  // namespace
 
-void SelectionHighlight::add(const sim::Scene& s, const Selection& selection, ShapeMesh& mesh)
+void SelectionHighlight::add(const sim::Scene& scene, const Selection& selection, ShapeMesh& mesh)
+{
+    addItems(scene, selection, mesh);
+    addAgentRings(agentRings(scene, selection), {}, {}, mesh);
+}
+
+std::vector<SelectionHighlight::AgentRing> SelectionHighlight::agentRings(const sim::Scene& s, const Selection& selection)
+{
+    std::vector<AgentRing> rings;
+    for (const SceneItem& item : selection) {
+        if (item.kind != ItemKind::Agent || item.index >= s.agents.size())
+            continue;
+        const sim::Agent& a = s.agents[item.index];
+        const sim::AgentType* type = s.findAgentType(a.type);
+        rings.push_back({item.index, a.id, {a.position.x, a.position.z}, (type ? type->radiusM : 0.3f) + kMarginM});
+    }
+    return rings;
+}
+
+void SelectionHighlight::addAgentRings(std::span<const AgentRing> rings, std::span<const sim::AgentId> ids,
+                                       std::span<const glm::vec2> positionsXZ, ShapeMesh& mesh)
+{
+    for (const AgentRing& r : rings) {
+        const bool shown = r.index < ids.size() && r.index < positionsXZ.size() && ids[r.index] == r.id;
+        mesh.addRing(shown ? positionsXZ[r.index] : r.start, r.radiusM, kLineM, palette::kSelection);
+    }
+}
+
+void SelectionHighlight::addItems(const sim::Scene& s, const Selection& selection, ShapeMesh& mesh)
 {
     const glm::vec4 c = palette::kSelection;
     for (const SceneItem& item : selection) {
@@ -21,12 +49,6 @@ void SelectionHighlight::add(const sim::Scene& s, const Selection& selection, Sh
         if (i >= itemCount(s, item.kind))
             continue;
         switch (item.kind) {
-        case ItemKind::Agent: {
-            const sim::AgentType* type = s.findAgentType(s.agents[i].type);
-            const float r = (type ? type->radiusM : 0.3f) + kMarginM;
-            mesh.addRing({s.agents[i].position.x, s.agents[i].position.z}, r, kLineM, c);
-            break;
-        }
         case ItemKind::Obstacle: {
             const sim::Obstacle& o = s.obstacles[i];
             if (o.shape == sim::ObstacleShape::Circle) {
@@ -46,6 +68,7 @@ void SelectionHighlight::add(const sim::Scene& s, const Selection& selection, Sh
         case ItemKind::Path: mesh.addPolyline(s.paths[i].points, s.paths[i].closed, kLineM, c); break;
         case ItemKind::Wall: mesh.addPolyline(s.walls[i].points, false, 0.12f + kLineM, c); break;
         case ItemKind::Lane: mesh.addPolyline(s.lanes[i].points, false, kLineM, c); break;
+        case ItemKind::FlowStroke: mesh.addPolyline(s.flowStrokes[i].points, false, kLineM, c); break;
         case ItemKind::Hero: {
             std::vector<glm::vec2> way;
             for (const sim::Keyframe& k : s.heroes[i].keyframes)

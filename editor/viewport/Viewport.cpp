@@ -162,6 +162,15 @@ void Viewport::setAgents(std::span<const sim::AgentFrame> frames, std::span<cons
     m_agentsChanged = true;
     m_timeS = timeS;
     m_frameIndex = frameIndex;
+    // Selected agents' rings follow them from frame to frame.
+    m_shownIds.resize(n);
+    m_shownXZ.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        m_shownIds[i] = agents[i].id;
+        m_shownXZ[i] = {frames[i].position.x, frames[i].position.z};
+    }
+    if (!m_agentRings.empty())
+        rebuildHighlight();
     m_lightMesh.clear();
     SetGeometryBuilder::addLights(m_traffic, timeS, m_lightMesh);
     m_lightsChanged = true;
@@ -171,8 +180,16 @@ void Viewport::setAgents(std::span<const sim::AgentFrame> frames, std::span<cons
 
 void Viewport::setHighlight(const sim::Scene& scene, const Selection& selection)
 {
-    m_highlightMesh.clear();
-    SelectionHighlight::add(scene, selection, m_highlightMesh);
+    m_highlightItems.clear();
+    SelectionHighlight::addItems(scene, selection, m_highlightItems);
+    m_agentRings = SelectionHighlight::agentRings(scene, selection);
+    rebuildHighlight();
+}
+
+void Viewport::rebuildHighlight()
+{
+    m_highlightMesh = m_highlightItems;
+    SelectionHighlight::addAgentRings(m_agentRings, m_shownIds, m_shownXZ, m_highlightMesh);
     m_highlightChanged = true;
     update();
 }

@@ -10,6 +10,7 @@
 #include "editor/viewport/CameraRig.h"
 #include "editor/viewport/GridRenderer.h"
 #include "editor/viewport/GroundBox.h"
+#include "editor/viewport/SelectionHighlight.h"
 #include "editor/viewport/ShapeMesh.h"
 #include "editor/viewport/ShapeRenderer.h"
 #include "simcore/scene/Scene.h"
@@ -52,7 +53,8 @@ public:
     // Shows frame `frame` (< cache.frameCount()) of a recording of the current scene.
     void showFrame(const sim::FrameCache& cache, std::size_t frame);
 
-    // Outlines the selected items over the set (drawn below the agents).
+    // Outlines the selected items over the set (drawn below the agents); selected agents'
+    // rings follow them in the shown frame.
     void setHighlight(const sim::Scene& scene, const Selection& selection);
 
     void setViewMode(ViewMode mode);
@@ -102,6 +104,7 @@ private:
     GroundBox framingBox() const;
     void forwardToTool(QMouseEvent* event, void (ViewportTool::*handler)(const ToolMouse&));
     void uploadChanged();
+    void rebuildHighlight();
     void releaseGl();
 
     CameraRig m_camera;
@@ -115,6 +118,10 @@ private:
     ShapeMesh m_setMesh;
     ShapeMesh m_lightMesh;
     ShapeMesh m_highlightMesh;
+    ShapeMesh m_highlightItems;  // the selection but its agents
+    std::vector<SelectionHighlight::AgentRing> m_agentRings;
+    std::vector<sim::AgentId> m_shownIds;    // the shown frame's agents, by World index
+    std::vector<glm::vec2> m_shownXZ;        // their (x, z), by World index
     std::vector<AgentGlyph> m_glyphs;     // walkers and fliers
     std::vector<AgentGlyph> m_carGlyphs;  // vehicles, drawn as cars
     bool m_setChanged = true, m_lightsChanged = true, m_agentsChanged = true, m_highlightChanged = true;

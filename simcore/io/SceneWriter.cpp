@@ -187,6 +187,8 @@ void writeAgents(Writer& w, const Scene& s)
             w.kvOpt("path", a.path);
             if (a.leader != 0)
                 w.kv("leader", std::to_string(a.leader));
+            w.kvOpt("brain", a.brain);
+            w.kvOpt("group", a.group);
             if (a.look >= 0)
                 w.kv("look", std::to_string(a.look));
             if (a.tint >= 0)
@@ -201,6 +203,8 @@ void writeAgents(Writer& w, const Scene& s)
     const bool leaders = std::any_of(s.agents.begin(), s.agents.end(), [](const Agent& a) { return a.leader != 0; });
     const bool varied = std::any_of(s.agents.begin(), s.agents.end(),
                                     [](const Agent& a) { return a.look >= 0 || a.tint >= 0 || a.heightScale > 0.0f; });
+    const bool brains = std::any_of(s.agents.begin(), s.agents.end(), [](const Agent& a) { return !a.brain.empty(); });
+    const bool groups = std::any_of(s.agents.begin(), s.agents.end(), [](const Agent& a) { return !a.group.empty(); });
     std::string rows;
     rows.reserve(s.agents.size() * 48);
     for (const Agent& a : s.agents) {
@@ -214,6 +218,10 @@ void writeAgents(Writer& w, const Scene& s)
             rows += ' ' + (a.tint >= 0 ? std::to_string(a.tint) : std::string("-"));
             rows += ' ' + (a.heightScale > 0.0f ? num(a.heightScale) : std::string("-"));
         }
+        if (brains)
+            rows += ' ' + (a.brain.empty() ? std::string("-") : a.brain);
+        if (groups)
+            rows += ' ' + (a.group.empty() ? std::string("-") : a.group);
         rows += '\n';
     }
     std::vector<std::string> columns{"id", "type", "x", "y", "z", "heading", "goal", "path"};
@@ -221,6 +229,10 @@ void writeAgents(Writer& w, const Scene& s)
         columns.push_back("leader");
     if (varied)
         columns.insert(columns.end(), {"look", "tint", "height"});
+    if (brains)
+        columns.push_back("brain");
+    if (groups)
+        columns.push_back("group");
     o << YAML::BeginMap;
     w.key("columns");
     o << YAML::Flow << columns;

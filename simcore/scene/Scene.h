@@ -97,6 +97,8 @@ struct Agent {
     std::string goal;           // optional goal name
     std::string path;           // optional path name
     std::uint32_t leader = 0;   // optional AgentId pursued, evaded or followed; 0 = none
+    std::string brain;          // optional brain in Scene::brains; empty = the type's brain
+    std::string group;          // optional name of a set of agents (the assign brush, the outliner)
     // Per-agent variation set by hand (the variation brush); unset = drawn per agent id
     // from the type's Variation.
     int look = -1;              // index into the type's looks, -1 = drawn

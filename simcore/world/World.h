@@ -106,8 +106,11 @@ public:
     const std::vector<std::string>& brainErrors() const;
     // The evaluator of a type's brain (for the live view), null when the type has none.
     const BrainEvaluator* brainEvaluator(std::size_t typeIndex) const;
+    // The evaluator agent i runs in: its type's, or that of the (type, brain) batch of a
+    // placed agent with a brain of its own; null when it runs no brain.
+    const BrainEvaluator* agentBrainEvaluator(std::size_t i) const;
     // Keeps agent i's node values (its type's evaluator's pickedValues) after each step;
-    // -1 picks nobody. Agent i's index among its type's agents is what the evaluator sees.
+    // -1 picks nobody. Agent i's index among its batch's agents is what the evaluator sees.
     void pickBrainAgent(std::ptrdiff_t i);
 
 private:

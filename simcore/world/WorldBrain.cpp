@@ -39,22 +39,52 @@ std::uint32_t tagIndex(std::vector<std::string>& tags, const std::string& name)
 
 void World::buildBrains(const Scene& scene)
 {
-    bool any = false;
+    // Placed agents may run a brain of their own in place of their type's.
+    std::map<AgentId, const std::string*> ownBrain;
+    for (const Agent& a : scene.agents)
+        if (!a.brain.empty())
+            ownBrain.emplace(a.id, &a.brain);
+    bool any = !ownBrain.empty();
     for (const AgentType& t : scene.agentTypes)
         any = any || !t.brain.empty();
     if (!any)
         return;
     m_brains = std::make_shared<detail::WorldBrains>();
     detail::WorldBrains& wb = *m_brains;
-    wb.types.resize(scene.agentTypes.size());
+    // One batch per (type, brain): batch t is type t's own brain, then one batch per other
+    // (type, brain) pair that placed agents ask for, in (type, brain name) order, so the
+    // batches do not depend on the agents' order.
+    const std::size_t typeCount = scene.agentTypes.size();
+    wb.batch.resize(m_pos.size());
+    std::map<std::pair<std::size_t, std::string>, std::int32_t> extra;
+    for (std::size_t i = 0; i < m_pos.size(); ++i) {
+        const std::size_t t = m_info[i].typeIndex;
+        wb.batch[i] = std::int32_t(t);
+        const auto own = ownBrain.find(m_info[i].id);
+        if (own != ownBrain.end() && *own->second != scene.agentTypes[t].brain)
+            extra.emplace(std::pair(t, *own->second), 0);
+    }
+    std::vector<std::pair<std::size_t, std::string>> batches;
+    for (std::size_t t = 0; t < typeCount; ++t)
+        batches.emplace_back(t, scene.agentTypes[t].brain);
+    for (auto& [key, index] : extra) {
+        index = std::int32_t(batches.size());
+        batches.push_back(key);
+    }
+    for (std::size_t i = 0; i < m_pos.size(); ++i)
+        if (const auto own = ownBrain.find(m_info[i].id); own != ownBrain.end())
+            if (const auto it = extra.find({m_info[i].typeIndex, *own->second}); it != extra.end())
+                wb.batch[i] = it->second;
+    wb.types.resize(batches.size());
     wb.local.assign(m_pos.size(), -1);
     wb.action.assign(m_pos.size(), -1);
     std::map<std::string, std::int32_t> goalByName;
     for (std::size_t g = 0; g < m_goals.size(); ++g)
         goalByName.emplace(m_goals[g].name, std::int32_t(g));
-    for (std::size_t t = 0; t < scene.agentTypes.size(); ++t) {
-        const AgentType& type = scene.agentTypes[t];
-        const BrainGraph* graph = type.brain.empty() ? nullptr : scene.findBrain(type.brain);
+    for (std::size_t b = 0; b < batches.size(); ++b) {
+        const AgentType& type = scene.agentTypes[batches[b].first];
+        const std::string& brainName = batches[b].second;
+        const BrainGraph* graph = brainName.empty() ? nullptr : scene.findBrain(brainName);
         if (!graph)
             continue;
         const BrainCompileResult r = compileBrain(*graph, scene.brains);
@@ -63,7 +93,7 @@ void World::buildBrains(const Scene& scene)
                 wb.errors.push_back(e.format());
             continue;
         }
-        detail::TypeBrain& tb = wb.types[t];
+        detail::TypeBrain& tb = wb.types[b];
         bool usable = true;
         for (const BrainSensorUse& use : r.program->sensors) {
             const std::string why = worldSensorProblem(use, scene);
@@ -102,7 +132,7 @@ void World::buildBrains(const Scene& scene)
                                                      : std::int8_t(-1));
     }
     for (std::size_t i = 0; i < m_pos.size(); ++i) {
-        detail::TypeBrain& tb = wb.types[m_info[i].typeIndex];
+        detail::TypeBrain& tb = wb.types[std::size_t(wb.batch[i])];
         if (!tb.program)
             continue;
         wb.local[i] = std::int32_t(tb.agents.size());
@@ -196,7 +226,7 @@ void World::runBrains()
     if (m_traffic.system && !wb.vehicleSpeed.empty()) {
         for (std::size_t v = 0; v < wb.vehicleSpeed.size(); ++v) {
             const std::size_t i = m_traffic.vehicleAgent[v];
-            const detail::TypeBrain& tb = wb.types[m_info[i].typeIndex];
+            const detail::TypeBrain& tb = wb.types[std::size_t(wb.batch[i])];
             wb.vehicleSpeed[v] = tb.program && tb.speed ? tb.speed[wb.local[i]] : std::nanf("");
         }
         m_traffic.system->setBrainSpeeds(wb.vehicleSpeed);
@@ -216,7 +246,7 @@ void World::runBrains()
 std::size_t World::neighboursThisStep(std::size_t i, Neighbour* out)
 {
     std::uint32_t* index = &m_nearIndex[i * kMaxNeighbours];
-    if (!m_brains || m_brains->local[i] < 0 || !m_brains->types[m_info[i].typeIndex].gathersNeighbours) {
+    if (!m_brains || m_brains->local[i] < 0 || !m_brains->types[std::size_t(m_brains->batch[i])].gathersNeighbours) {
         const std::size_t count = gatherNeighbours(i, out, index);
         m_nearCount[i] = std::uint8_t(count);
         return count;
@@ -234,7 +264,7 @@ float World::brainSpeedCap(std::size_t i) const
     // A driven vehicle's brain speed went to the TrafficSystem, which moves it.
     if (!m_brains || m_brains->local[i] < 0 || isDriven(i))
         return m_maxSpeed[i];
-    const detail::TypeBrain& tb = m_brains->types[m_info[i].typeIndex];
+    const detail::TypeBrain& tb = m_brains->types[std::size_t(m_brains->batch[i])];
     if (!tb.speed)
         return m_maxSpeed[i];
     return std::clamp(tb.speed[m_brains->local[i]], 0.0f, m_maxSpeed[i]);
@@ -258,7 +288,7 @@ float World::brainWeight(std::size_t i, Behaviour b) const
 {
     if (!m_brains || m_brains->local[i] < 0)
         return 1.0f;
-    const float* w = m_brains->types[m_info[i].typeIndex].weight[std::size_t(b)];
+    const float* w = m_brains->types[std::size_t(m_brains->batch[i])].weight[std::size_t(b)];
     return w ? std::max(0.0f, w[m_brains->local[i]]) : 1.0f;
 }
 
@@ -268,7 +298,7 @@ glm::vec3 World::brainTurnForce(std::size_t i, const SteeringAgent& self) const
 {
     if (!m_brains || m_brains->local[i] < 0)
         return glm::vec3(0.0f);
-    const detail::TypeBrain& tb = m_brains->types[m_info[i].typeIndex];
+    const detail::TypeBrain& tb = m_brains->types[std::size_t(m_brains->batch[i])];
     if (!tb.turn)
         return glm::vec3(0.0f);
     const float omega = glm::radians(tb.turn[m_brains->local[i]]);
@@ -280,7 +310,7 @@ Clip World::brainClip(std::size_t i, Clip bySpeed) const
 {
     if (!m_brains || m_brains->action[i] < 0)
         return bySpeed;
-    const detail::TypeBrain& tb = m_brains->types[m_info[i].typeIndex];
+    const detail::TypeBrain& tb = m_brains->types[std::size_t(m_brains->batch[i])];
     const auto a = std::size_t(m_brains->action[i]);
     return a < tb.actionClip.size() && tb.actionClip[a] >= 0 ? Clip(tb.actionClip[a]) : bySpeed;
 }
@@ -292,9 +322,9 @@ int World::brainAction(std::size_t i) const
 
 std::string World::brainActionName(std::size_t i) const
 {
-    if (!m_brains || m_brains->action[i] < 0 || !m_brains->types[m_info[i].typeIndex].program)
+    if (!m_brains || m_brains->action[i] < 0 || !m_brains->types[std::size_t(m_brains->batch[i])].program)
         return {};
-    const auto& names = m_brains->types[m_info[i].typeIndex].program->action.names;
+    const auto& names = m_brains->types[std::size_t(m_brains->batch[i])].program->action.names;
     const auto a = std::size_t(m_brains->action[i]);
     return a < names.size() ? names[a] : std::string();
 }
@@ -312,6 +342,13 @@ const BrainEvaluator* World::brainEvaluator(std::size_t typeIndex) const
     return m_brains->types[typeIndex].evaluator.get();
 }
 
+const BrainEvaluator* World::agentBrainEvaluator(std::size_t i) const
+{
+    if (!m_brains || i >= m_brains->batch.size())
+        return nullptr;
+    return m_brains->types[std::size_t(m_brains->batch[i])].evaluator.get();
+}
+
 void World::pickBrainAgent(std::ptrdiff_t i)
 {
     if (!m_brains)
@@ -321,7 +358,7 @@ void World::pickBrainAgent(std::ptrdiff_t i)
             tb.evaluator->setPickedAgent(-1);
     if (i < 0 || std::size_t(i) >= m_pos.size() || m_brains->local[std::size_t(i)] < 0)
         return;
-    m_brains->types[m_info[std::size_t(i)].typeIndex].evaluator->setPickedAgent(m_brains->local[std::size_t(i)]);
+    m_brains->types[std::size_t(m_brains->batch[std::size_t(i)])].evaluator->setPickedAgent(m_brains->local[std::size_t(i)]);
 }
 
 }  // namespace throng::sim

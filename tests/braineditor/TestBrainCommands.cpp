@@ -81,7 +81,7 @@ private slots:
         SceneDocument doc;
         doc.undoStack()->push(new SeedBrain(doc));
         doc.modify([](sim::Scene& s) { s.agentTypes.push_back({}); });
-        EditBrainsCommand::State before{doc.scene().brains, doc.scene().agentTypes}, after = before;
+        EditBrainsCommand::State before{doc.scene().brains, doc.scene().agentTypes, {}}, after = before;
         after.brains.push_back(twoNodes("walker brain"));
         after.agentTypes[0].brain = after.brains.back().name;
         doc.undoStack()->push(new EditBrainsCommand(doc, before, after, "Add brain c"));

@@ -1,4 +1,4 @@
-// Several brains per scene: new, rename (the agent types that use it follow), duplicate,
+// Several brains per scene: new, rename (the agent types and agents that use it follow), duplicate,
 // delete, export to a .brain.yaml and import it back (laid out when it has no positions;
 // a broken file says file:line:col), each one undo step.
 #include "BrainTestScenes.h"
@@ -52,6 +52,30 @@ private slots:
         ui.panel().deleteBrain();
         QCOMPARE(s.brains.size(), std::size_t(1));
         QCOMPARE(s.agentTypes[0].brain, std::string("stroller"));
+    }
+
+    // An agent with a brain of its own (the assign brush's) follows a rename, falls back
+    // to its type's brain when that brain is deleted, and undo gives it back.
+    void agentsWithTheBrainFollowRenameAndDelete()
+    {
+        QByteArray yaml = kWalkBrainScene;
+        yaml.replace("position: [0, 0, 3], goal: g}", "position: [0, 0, 3], goal: g, brain: walk}");
+        QTemporaryDir dir;
+        MainWindow window;
+        BrainUi ui(window);
+        QVERIFY(ui.open(dir, yaml));
+        const sim::Scene& s = window.document().scene();
+        QCOMPARE(s.agents[1].brain, std::string("walk"));
+        QVERIFY(ui.panel().renameBrain("amble"));
+        QCOMPARE(s.agents[1].brain, std::string("amble"));
+        QVERIFY(s.agents[0].brain.empty());
+        ui.panel().deleteBrain();
+        QVERIFY(s.brains.empty());
+        QVERIFY(s.agents[1].brain.empty());
+        window.document().undoStack()->undo();
+        QCOMPARE(s.agents[1].brain, std::string("amble"));
+        window.document().undoStack()->undo();
+        QCOMPARE(s.agents[1].brain, std::string("walk"));
     }
 
     void exportThenImportGivesTheSameGraph()

@@ -70,6 +70,30 @@ private slots:
         ui.panel().pickAgent(-1);
         QVERIFY(scene.nodeItem(1)->liveText(0).isEmpty());
     }
+
+    // The values come from the playback's own World: an agent picked after playing shows
+    // values at frames recorded before the pick too (they are computed again for it).
+    void anAgentPickedAfterPlayingShowsValuesWhenScrubbedBack()
+    {
+        QTemporaryDir dir;
+        MainWindow window;
+        BrainUi ui(window);
+        QVERIFY(ui.open(dir, kWalkBrainScene));
+        SimulationController& sim = window.simulation();
+        QTRY_VERIFY_WITH_TIMEOUT(sim.recordedFrames() > 0, 30000);
+        sim.play();
+        QTRY_VERIFY_WITH_TIMEOUT(sim.currentFrame() >= 30, 30000);
+        sim.pause();
+        BrainScene& scene = ui.panel().scene();
+        ui.panel().pickAgent(0);
+        sim.seek(12);
+        QTRY_VERIFY_WITH_TIMEOUT(!scene.nodeItem(1)->liveText(0).isEmpty(), 30000);
+        const float x = sim.cache().at(12, 0).position.x;
+        const QString distance = scene.nodeItem(1)->liveText(0);
+        QVERIFY2(std::abs(distance.toFloat() - (15.0f - x)) < 0.7f, qPrintable(distance + " at x " + QString::number(double(x))));
+        sim.seek(0);
+        QVERIFY(scene.nodeItem(1)->liveText(0).isEmpty());
+    }
 };
 
 THRONG_REGISTER_TEST(TestLiveBrainDebugging)

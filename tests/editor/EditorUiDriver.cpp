@@ -16,12 +16,17 @@ bool showWithScene(MainWindow& window, const QTemporaryDir& dir, const QString& 
     if (!QFile::copy(source, copy))
         return false;
     QFile(copy).setPermissions(QFile::ReadOwner | QFile::WriteOwner);
+    return showWithSceneFile(window, copy);
+}
+
+bool showWithSceneFile(MainWindow& window, const QString& path)
+{
     window.resize(1400, 900);
     window.show();
     window.activateWindow();
     if (!QTest::qWaitForWindowExposed(&window) || !QTest::qWaitForWindowActive(&window))
         return false;
-    if (!window.openScene(copy))
+    if (!window.openScene(path))
         return false;
     QCoreApplication::processEvents();
     window.viewport().frameAll();

@@ -16,6 +16,8 @@ namespace throng::editor::test {
 // Shows the window, waits until it is exposed and active, opens a copy of
 // resources/scenes/<name> in `dir` and frames it. False when any step fails.
 bool showWithScene(MainWindow& window, const QTemporaryDir& dir, const QString& name);
+// Shows the window as showWithScene does, opening the scene file at `path`.
+bool showWithSceneFile(MainWindow& window, const QString& path);
 // The widget pixel of a ground point (x, z).
 QPoint pixelOf(MainWindow& window, glm::vec2 ground);
 // Clicks the tool bar button of the tool with this key ("crowdBrush").

@@ -102,6 +102,8 @@ sim::Scene makeRandomScene(std::uint32_t seed, std::uint32_t agentCount)
         a.goal = i % 2 ? "exit" : "";
         a.path = i % 5 == 0 ? "main" : "";
         a.leader = i > 0 && i % 4 == 0 ? 1u : 0u;
+        a.brain = i % 3 == 1 ? s.brains.front().name : "";
+        a.group = i % 4 == 2 ? "squad" : "";
         s.agents.push_back(a);
     }
     s.groups = {{"shoppers", "type0", 25, AreaShape::Rect, {-10, -10}, {f(0, 10), f(0, 10)}, {}, 0.0f, "door", "", agentCount > 0 ? 1u : 0u},

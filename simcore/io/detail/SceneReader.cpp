@@ -359,7 +359,8 @@ void SceneReader::readAgents(const YAML::Node& node, Scene& scene)
         const YAML::Node item = node[i];
         if (!m_f.expectMap(item, key))
             continue;
-        m_f.checkKeys(item, key, {"id", "type", "position", "heading", "goal", "path", "leader", "look", "tint", "height"});
+        m_f.checkKeys(item, key, {"id", "type", "position", "heading", "goal", "path", "leader", "brain", "group",
+                                  "look", "tint", "height"});
         Agent a;
         if (YAML::Node id = item["id"]; id.IsDefined() && m_f.readU32(item, "id", key, a.id, false))
             claimId(id, key + ".id", a.id);
@@ -371,6 +372,9 @@ void SceneReader::readAgents(const YAML::Node& node, Scene& scene)
             checkRef(item, "goal", key, a.goal, known("goal", a.goal), "goal");
         if (m_f.readName(item, "path", key, a.path, false) && !a.path.empty())
             checkRef(item, "path", key, a.path, known("path", a.path), "path");
+        if (m_f.readName(item, "brain", key, a.brain, false) && !a.brain.empty())
+            checkRef(item, "brain", key, a.brain, known("brain", a.brain), "brain");
+        m_f.readName(item, "group", key, a.group, false);
         if (m_f.readU32(item, "leader", key, a.leader, false) && item["leader"].IsDefined()) {
             if (a.id != 0 && a.leader == a.id)
                 m_f.error(item["leader"].Mark(), key + ".leader", "an agent cannot lead itself");

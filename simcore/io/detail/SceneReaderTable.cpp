@@ -10,9 +10,10 @@ namespace throng::sim::detail {
 
 namespace {
 
-enum Column { kId, kType, kX, kY, kZ, kHeading, kGoal, kPath, kLeader, kLook, kTint, kHeight, kColumnCount };
-const std::array<const char*, kColumnCount> kColumnNames{"id",     "type", "x",    "y",    "z",    "heading",
-                                                         "goal",   "path", "leader", "look", "tint", "height"};
+enum Column { kId, kType, kX, kY, kZ, kHeading, kGoal, kPath, kLeader, kLook, kTint, kHeight, kBrain, kGroup,
+              kColumnCount };
+const std::array<const char*, kColumnCount> kColumnNames{"id",   "type",   "x",    "y",    "z",      "heading", "goal",
+                                                         "path", "leader", "look", "tint", "height", "brain",   "group"};
 
 // Finds a 0-based line of the source text.
 struct LineIndex {
@@ -50,7 +51,7 @@ void SceneReader::readAgentTable(const YAML::Node& node, const std::string& key,
         const std::string ck = indexKey(key + ".columns", i);
         if (found < 0) {
             m_f.error(node["columns"][i].Mark(), ck, "unknown column '" + columns[i] +
-                                                        "' (known: id, type, x, y, z, heading, goal, path, leader, look, tint, height)");
+                                                        "' (known: id, type, x, y, z, heading, goal, path, leader, look, tint, height, brain, group)");
             return;
         }
         if (at[found] >= 0) {
@@ -161,6 +162,10 @@ void SceneReader::readAgentTable(const YAML::Node& node, const std::string& key,
             name(kGoal, a.goal, known("goal", std::string(tok[std::size_t(at[kGoal])])), "goal");
         if (at[kPath] >= 0)
             name(kPath, a.path, known("path", std::string(tok[std::size_t(at[kPath])])), "path");
+        if (at[kBrain] >= 0)
+            name(kBrain, a.brain, known("brain", std::string(tok[std::size_t(at[kBrain])])), "brain");
+        if (at[kGroup] >= 0)
+            name(kGroup, a.group, true, "group");
         if (at[kLeader] >= 0 && ok) {
             std::string_view t = tok[std::size_t(at[kLeader])];
             if (t != "-") {

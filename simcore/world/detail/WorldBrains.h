@@ -75,8 +75,9 @@ struct TypeBrain {
 };
 
 struct WorldBrains {
-    std::vector<TypeBrain> types;      // by type index
-    std::vector<std::int32_t> local;   // per agent: index among its type's agents, -1 = no brain
+    std::vector<TypeBrain> types;      // by batch: [0, types) each type's own brain, then (type, brain) pairs
+    std::vector<std::int32_t> batch;   // per agent: its batch in `types` (its type's index unless it has its own brain)
+    std::vector<std::int32_t> local;   // per agent: index among its batch's agents, -1 = no brain
     std::vector<std::int16_t> action;  // per agent: the chosen action index, -1 = none
     std::vector<std::string> errors;   // why a brain does not run (the type then steers without it)
     std::vector<std::string> tags;                 // every tag a brain publishes or senses
