@@ -177,6 +177,12 @@ void Viewport::setHighlight(const sim::Scene& scene, const Selection& selection)
     update();
 }
 
+void Viewport::setAgentLevelOfDetail(bool on)
+{
+    m_agentRenderer.setLevelOfDetail(on);
+    update();
+}
+
 void Viewport::setViewMode(ViewMode mode)
 {
     if (mode == m_camera.mode())
