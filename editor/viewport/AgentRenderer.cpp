@@ -42,7 +42,7 @@ bool AgentRenderer::initialize(QOpenGLFunctions_3_3_Core& gl)
         gl.glGenBuffers(1, &set->buffer);
         gl.glGenVertexArrays(1, &set->spriteVao);
         gl.glBindVertexArray(set->spriteVao);
-        bindInstanceAttributes(gl, set->buffer, false);
+        bindInstanceAttributes(gl, set->buffer, true);
         gl.glBindVertexArray(0);
     }
     createShape(gl, m_flat, AgentGlyphMesh::flat(AgentGlyphMesh::kDetailed), m_bodies.buffer);
@@ -142,7 +142,11 @@ void AgentRenderer::draw(QOpenGLFunctions_3_3_Core& gl, const RenderView& view)
     }
     m_lastDrawn = {};
     const bool p = view.perspective;
-    drawPlanned(gl, view, m_bodies, p ? m_prism : m_flat, p ? m_coarsePrism : m_coarseFlat,
+    // Past kDetailedLimit agents even the near ones keep the coarse glyph, as without
+    // level of detail: under a software renderer each of its triangles costs.
+    const bool coarse = m_bodies.count + m_cars.count > kDetailedLimit;
+    const Shape& coarseBody = p ? m_coarsePrism : m_coarseFlat;
+    drawPlanned(gl, view, m_bodies, coarse ? coarseBody : (p ? m_prism : m_flat), coarseBody,
                 p ? kPerspectiveDetail : kTopDetail);
     // Cars keep their mesh at any size: a car's outline is not a walker's, and scenes
     // hold far fewer of them.
@@ -159,8 +163,8 @@ void AgentRenderer::drawPlanned(QOpenGLFunctions_3_3_Core& gl, const RenderView&
     const auto& byDetail = set.plan.ranges;
     if (!byDetail[0].empty() || !byDetail[1].empty()) {
         bindGlyphProgram(gl, view);
-        drawRanges(gl, detailed.vao, set.buffer, detailed.vertexCount, set.plan.at(AgentDetail::Detailed), true);
-        drawRanges(gl, coarse.vao, set.buffer, coarse.vertexCount, set.plan.at(AgentDetail::Coarse), true);
+        drawRanges(gl, detailed.vao, set.buffer, detailed.vertexCount, set.plan.at(AgentDetail::Detailed));
+        drawRanges(gl, coarse.vao, set.buffer, coarse.vertexCount, set.plan.at(AgentDetail::Coarse));
         m_program->release();
     }
     if (!set.plan.at(AgentDetail::Impostor).empty())
@@ -170,21 +174,16 @@ void AgentRenderer::drawPlanned(QOpenGLFunctions_3_3_Core& gl, const RenderView&
 }
 
 void AgentRenderer::drawRanges(QOpenGLFunctions_3_3_Core& gl, unsigned vao, unsigned instances, int vertexCount,
-                               std::span<const InstanceRange> ranges, bool instanced)
+                               std::span<const InstanceRange> ranges)
 {
     if (ranges.empty())
         return;
     gl.glBindVertexArray(vao);
     for (const InstanceRange& r : ranges) {
-        if (instanced) {
-            pointInstancesAt(gl, instances, r.first);
-            gl.glDrawArraysInstanced(GL_TRIANGLES, 0, vertexCount, r.count);
-        } else {
-            gl.glDrawArrays(GL_POINTS, r.first, r.count);
-        }
+        pointInstancesAt(gl, instances, r.first);
+        gl.glDrawArraysInstanced(GL_TRIANGLES, 0, vertexCount, r.count);
     }
-    if (instanced)
-        pointInstancesAt(gl, instances, 0);
+    pointInstancesAt(gl, instances, 0);
     gl.glBindVertexArray(0);
 }
 
@@ -216,7 +215,7 @@ void AgentRenderer::drawSet(QOpenGLFunctions_3_3_Core& gl, const RenderView& vie
         shape = &m_coarseFlat;
     bindGlyphProgram(gl, view);
     const InstanceRange all{0, set.count};
-    drawRanges(gl, shape->vao, set.buffer, shape->vertexCount, {&all, 1}, true);
+    drawRanges(gl, shape->vao, set.buffer, shape->vertexCount, {&all, 1});
     m_program->release();
 }
 
@@ -234,9 +233,7 @@ void AgentRenderer::drawSprites(QOpenGLFunctions_3_3_Core& gl, const RenderView&
     m_spriteProgram->setUniformValue("u_lit", view.perspective);
     const glm::vec4 nose = palette::kAgentNose;
     m_spriteProgram->setUniformValue("u_noseColour", nose.r, nose.g, nose.b);
-    gl.glEnable(GL_PROGRAM_POINT_SIZE);
-    drawRanges(gl, set.spriteVao, set.buffer, 1, ranges, false);
-    gl.glDisable(GL_PROGRAM_POINT_SIZE);
+    drawRanges(gl, set.spriteVao, set.buffer, 6, ranges);  // one quad per agent
     m_spriteProgram->release();
 }
 

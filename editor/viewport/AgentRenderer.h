@@ -4,7 +4,7 @@
 // than a few pixels. With level of detail (the default) agents are sorted into ground
 // cells once per upload, and each frame draws only the cells in view: near ones with the
 // detailed glyph, farther ones with the coarse glyph, and those only a few pixels wide as
-// impostors (one point sprite each, showing the same silhouette, shading and nose).
+// impostors (one small quad each, showing the same silhouette, shading and nose).
 // Owns its GL buffers; create, draw and destroy it with the context current. Knows
 // nothing of scenes or worlds.
 
@@ -32,12 +32,12 @@ public:
     // radius on screen (top view): their detail would not show, their vertices would cost.
     static constexpr int kDetailedLimit = 5000;
     static constexpr float kCoarseBelowPx = 6.0f;
-    // Below this radius on screen (top view) an agent is one round point sprite: one
-    // vertex instead of a mesh, as its heading could not be seen anyway.
+    // Below this radius on screen an agent is one impostor quad (six vertices instead of
+    // a mesh of hundreds) drawing the glyph's outline, shade and nose.
     static constexpr float kSpriteBelowPx = 3.0f;
     // Level-of-detail switches, radius on screen in pixels (AgentCells).
     static constexpr DetailThresholds kTopDetail{kSpriteBelowPx, kCoarseBelowPx};
-    static constexpr DetailThresholds kPerspectiveDetail{3.0f, 8.0f};
+    static constexpr DetailThresholds kPerspectiveDetail{3.0f, 12.0f};
 
     bool initialize(QOpenGLFunctions_3_3_Core& gl);
     void destroy(QOpenGLFunctions_3_3_Core& gl);
@@ -76,7 +76,7 @@ private:
                      const Shape& coarse, const DetailThresholds& thresholds);
     void bindGlyphProgram(QOpenGLFunctions_3_3_Core& gl, const RenderView& view);
     void drawRanges(QOpenGLFunctions_3_3_Core& gl, unsigned vao, unsigned instances, int vertexCount,
-                    std::span<const InstanceRange> ranges, bool instanced);
+                    std::span<const InstanceRange> ranges);
 
     std::unique_ptr<QOpenGLShaderProgram> m_program;
     std::unique_ptr<QOpenGLShaderProgram> m_spriteProgram;

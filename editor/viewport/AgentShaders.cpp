@@ -53,7 +53,8 @@ void main()
 // The glyph as seen from afar, on screen in pixels (y up): the body from its base b to
 // its top t, a half width a (never under u_minRadiusPx, like the glyph), and the cap an
 // ellipse of half height c around t (c = a seen from straight above: a disc in the top
-// view, where b = t). The sprite's centre is the body's middle, so its depth is too.
+// view, where b = t). One quad per agent (gl_VertexID 0..5, two triangles) just around
+// that silhouette, all at the depth of the body's middle.
 const char* const kImpostorVertex = R"(#version 330 core
 layout(location = 3) in vec4 i_positionHeading;
 layout(location = 4) in vec4 i_radiusColour;
@@ -64,9 +65,11 @@ uniform float u_minRadiusPx;
 uniform float u_heightScale;
 uniform vec3 u_eye;
 out vec3 v_colour;
-flat out vec3 v_shape;       // a, c, sprite size; px
-flat out vec4 v_axis;        // b and t relative to the sprite centre; px
+out vec2 v_p;                // this corner relative to the body's middle, px
+flat out vec2 v_shape;       // a, c; px
+flat out vec4 v_axis;        // b and t relative to the body's middle; px
 flat out vec4 v_frame;       // heading along screen right and away; light along right and toward
+const vec2 kCorners[6] = vec2[6](vec2(-1, -1), vec2(1, -1), vec2(1, 1), vec2(-1, -1), vec2(1, 1), vec2(-1, 1));
 void main()
 {
     vec3 base = i_positionHeading.xyz;
@@ -78,26 +81,22 @@ void main()
     v_colour = i_radiusColour.yzw;
     if (cb.w <= 1e-6 || ct.w <= 1e-6) {
         gl_Position = vec4(2.0, 2.0, 2.0, 1.0);  // behind the eye: clipped
-        gl_PointSize = 1.0;
         return;
     }
     vec2 b = cb.xy / cb.w * u_halfViewportPx, t = ct.xy / ct.w * u_halfViewportPx;
-    vec2 m = 0.5 * (b + t);
+    vec2 m = cm.xy / cm.w * u_halfViewportPx;
     float a = max(radiusM / (cb.w * u_metresPerPixel), u_minRadiusPx);
     bool standing = u_heightScale > 0.0;
     vec2 away = standing ? base.xz - u_eye.xz : vec2(0.0, -1.0);
     away = dot(away, away) > 1e-12 ? normalize(away) : vec2(0.0, -1.0);
     vec2 right = vec2(-away.y, away.x);
     float c = standing ? a * abs(normalize(base - u_eye).y) : a;
-    // A point whose centre leaves the view is dropped whole: keep the centre inside and
-    // draw the silhouette off centre, so agents at the edge show as far as they reach in.
-    vec2 centre = clamp(m, -u_halfViewportPx + 0.5, u_halfViewportPx - 0.5);
-    vec2 shift = abs(m - centre);
-    float size = 2.0 * max(a + 0.5 * abs(t.x - b.x) + shift.x, 0.5 * abs(t.y - b.y) + c + shift.y) + 2.0;
-    gl_Position = vec4(centre / u_halfViewportPx * cm.w, cm.z, cm.w);
-    gl_PointSize = size;
-    v_shape = vec3(a, c, size);
-    v_axis = vec4(b - centre, t - centre);
+    vec2 lo = min(b, t) - m - vec2(a, c) - 0.5, hi = max(b, t) - m + vec2(a, c) + 0.5;
+    vec2 corner = kCorners[gl_VertexID];
+    v_p = mix(lo, hi, 0.5 * corner + 0.5);
+    gl_Position = vec4((m + v_p) / u_halfViewportPx * cm.w, cm.z, cm.w);
+    v_shape = vec2(a, c);
+    v_axis = vec4(b - m, t - m);
     vec2 heading = vec2(cos(i_positionHeading.w), -sin(i_positionHeading.w));
     vec3 light = normalize(vec3(0.35, 1.0, 0.25));
     v_frame = vec4(dot(heading, right), dot(heading, away), dot(right, light.xz), -dot(away, light.xz));
@@ -108,7 +107,8 @@ void main()
 // heading, as AgentGlyphMesh); below it the side of a cylinder, shaded as the prism's.
 const char* const kImpostorFragment = R"(#version 330 core
 in vec3 v_colour;
-flat in vec3 v_shape;
+in vec2 v_p;
+flat in vec2 v_shape;
 flat in vec4 v_axis;
 flat in vec4 v_frame;
 uniform bool u_lit;
@@ -117,7 +117,7 @@ out vec4 o_colour;
 void main()
 {
     float a = v_shape.x, c = max(v_shape.y, 1e-3);
-    vec2 p = vec2(gl_PointCoord.x - 0.5, 0.5 - gl_PointCoord.y) * v_shape.z;
+    vec2 p = v_p;
     vec2 b = v_axis.xy, t = v_axis.zw;
     float along = clamp((p.y - b.y) / max(t.y - b.y, 1e-3), 0.0, 1.0);
     float x = (p.x - mix(b.x, t.x, along)) / a;

@@ -1,6 +1,6 @@
 #pragma once
 // GLSL 3.30 sources of the agent renderer: the instanced glyph (a mesh per agent) and the
-// impostor (one point sprite per agent that draws the glyph's silhouette, shading and
+// impostor (one small quad per agent that draws the glyph's silhouette, shading and
 // nose, for agents a few pixels wide). Both read two vec4 per instance at locations 3, 4.
 
 namespace throng::editor::shaders {
