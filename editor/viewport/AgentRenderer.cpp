@@ -1,6 +1,7 @@
 #include "editor/viewport/AgentRenderer.h"
 
 #include "editor/viewport/AgentGlyphMesh.h"
+#include "editor/viewport/AgentShaders.h"
 #include "editor/viewport/CarGlyphMesh.h"
 #include "editor/viewport/ShaderProgram.h"
 #include "editor/viewport/ViewportPalette.h"
@@ -16,94 +17,32 @@ namespace throng::editor {
 
 namespace {
 
-// Heading h turns the glyph's +x nose to (cos h, 0, -sin h): counter-clockwise about +y
-// seen from above, as the scene defines headings.
-const char* const kVertexShader = R"(#version 330 core
-layout(location = 0) in vec3 a_position;
-layout(location = 1) in vec3 a_normal;
-layout(location = 2) in float a_part;
-layout(location = 3) in vec4 i_positionHeading;
-layout(location = 4) in vec4 i_radiusColour;
-uniform mat4 u_viewProjection;
-uniform float u_minRadiusAtW1;
-uniform float u_heightScale;
-out vec3 v_colour;
-out vec3 v_normal;
-flat out int v_part;
-void main()
-{
-    vec3 centre = i_positionHeading.xyz;
-    float c = cos(i_positionHeading.w), s = sin(i_positionHeading.w);
-    float w = (u_viewProjection * vec4(centre, 1.0)).w;
-    float radius = max(i_radiusColour.x, u_minRadiusAtW1 * w);
-    float height = u_heightScale * clamp(5.5 * i_radiusColour.x, 0.5, 1.8);
-    vec2 local = a_position.xz * radius;
-    vec3 p = centre + vec3(local.x * c + local.y * s, a_position.y * height, -local.x * s + local.y * c);
-    v_normal = vec3(a_normal.x * c + a_normal.z * s, a_normal.y, -a_normal.x * s + a_normal.z * c);
-    v_colour = i_radiusColour.yzw;
-    v_part = int(a_part + 0.5);
-    gl_Position = u_viewProjection * vec4(p, 1.0);
-}
-)";
+constexpr GLsizei kInstanceStride = sizeof(AgentGlyph);
 
-const char* const kFragmentShader = R"(#version 330 core
-in vec3 v_colour;
-in vec3 v_normal;
-flat in int v_part;
-uniform bool u_lit;
-uniform vec3 u_noseColour;
-out vec4 o_colour;
-void main()
+// Points the bound VAO's instance attributes at instance `first` of `instances`: GL 3.3
+// has no base instance, so a range of instances starts where the pointers do.
+void pointInstancesAt(QOpenGLFunctions_3_3_Core& gl, unsigned instances, int first)
 {
-    vec3 colour = v_part == 2 ? u_noseColour : (v_part == 1 ? v_colour * 0.55 : v_colour);
-    if (u_lit) {
-        vec3 light = normalize(vec3(0.35, 1.0, 0.25));
-        colour *= 0.45 + 0.55 * max(dot(normalize(v_normal), light), 0.0);
-    }
-    o_colour = vec4(colour, 1.0);
+    const std::size_t at = std::size_t(first) * sizeof(AgentGlyph);
+    gl.glBindBuffer(GL_ARRAY_BUFFER, instances);
+    gl.glVertexAttribPointer(3, 4, GL_FLOAT, GL_FALSE, kInstanceStride,
+                             reinterpret_cast<const void*>(at + offsetof(AgentGlyph, position)));
+    gl.glVertexAttribPointer(4, 4, GL_FLOAT, GL_FALSE, kInstanceStride,
+                             reinterpret_cast<const void*>(at + offsetof(AgentGlyph, radiusM)));
 }
-)";
-
-// One point per agent; the fragment shader cuts the square point into a disc.
-const char* const kSpriteVertexShader = R"(#version 330 core
-layout(location = 3) in vec4 i_positionHeading;
-layout(location = 4) in vec4 i_radiusColour;
-uniform mat4 u_viewProjection;
-uniform float u_pixelsPerMetre;
-uniform float u_minRadiusPx;
-out vec3 v_colour;
-void main()
-{
-    gl_Position = u_viewProjection * vec4(i_positionHeading.xyz, 1.0);
-    gl_PointSize = 2.0 * max(i_radiusColour.x * u_pixelsPerMetre, u_minRadiusPx);
-    v_colour = i_radiusColour.yzw;
-}
-)";
-
-const char* const kSpriteFragmentShader = R"(#version 330 core
-in vec3 v_colour;
-out vec4 o_colour;
-void main()
-{
-    vec2 d = gl_PointCoord * 2.0 - 1.0;
-    if (dot(d, d) > 1.0)
-        discard;
-    o_colour = vec4(v_colour, 1.0);
-}
-)";
 
 }  // namespace
 
 bool AgentRenderer::initialize(QOpenGLFunctions_3_3_Core& gl)
 {
-    m_program = buildShaderProgram("agent", kVertexShader, kFragmentShader);
+    m_program = buildShaderProgram("agent", shaders::kGlyphVertex, shaders::kGlyphFragment);
     if (!m_program)
         return false;
     for (Instances* set : {&m_bodies, &m_cars}) {
         gl.glGenBuffers(1, &set->buffer);
         gl.glGenVertexArrays(1, &set->spriteVao);
         gl.glBindVertexArray(set->spriteVao);
-        bindInstanceAttributes(gl, set->buffer, false);
+        bindInstanceAttributes(gl, set->buffer, true);
         gl.glBindVertexArray(0);
     }
     createShape(gl, m_flat, AgentGlyphMesh::flat(AgentGlyphMesh::kDetailed), m_bodies.buffer);
@@ -112,20 +51,15 @@ bool AgentRenderer::initialize(QOpenGLFunctions_3_3_Core& gl)
     createShape(gl, m_coarsePrism, AgentGlyphMesh::prism(AgentGlyphMesh::kCoarse), m_bodies.buffer);
     createShape(gl, m_carFlat, CarGlyphMesh::flat(), m_cars.buffer);
     createShape(gl, m_carSolid, CarGlyphMesh::solid(), m_cars.buffer);
-    m_spriteProgram = buildShaderProgram("agent sprite", kSpriteVertexShader, kSpriteFragmentShader);
+    m_spriteProgram = buildShaderProgram("agent impostor", shaders::kImpostorVertex, shaders::kImpostorFragment);
     return bool(m_spriteProgram);
 }
 
 void AgentRenderer::bindInstanceAttributes(QOpenGLFunctions_3_3_Core& gl, unsigned instances, bool divisor)
 {
-    gl.glBindBuffer(GL_ARRAY_BUFFER, instances);
-    constexpr GLsizei instanceStride = sizeof(AgentGlyph);
     gl.glEnableVertexAttribArray(3);
-    gl.glVertexAttribPointer(3, 4, GL_FLOAT, GL_FALSE, instanceStride,
-                             reinterpret_cast<const void*>(offsetof(AgentGlyph, position)));
     gl.glEnableVertexAttribArray(4);
-    gl.glVertexAttribPointer(4, 4, GL_FLOAT, GL_FALSE, instanceStride,
-                             reinterpret_cast<const void*>(offsetof(AgentGlyph, radiusM)));
+    pointInstancesAt(gl, instances, 0);
     if (divisor) {
         gl.glVertexAttribDivisor(3, 1);
         gl.glVertexAttribDivisor(4, 1);
@@ -184,8 +118,12 @@ void AgentRenderer::upload(QOpenGLFunctions_3_3_Core& gl, std::span<const AgentG
 
 void AgentRenderer::uploadInstances(QOpenGLFunctions_3_3_Core& gl, Instances& set, std::span<const AgentGlyph> glyphs)
 {
+    // Uploaded in cell order, whether level of detail is on or not: the draw order of
+    // agents that overlap is not part of what they show.
+    set.cells.build(glyphs);
+    const std::span<const AgentGlyph> sorted = set.cells.sorted();
     gl.glBindBuffer(GL_ARRAY_BUFFER, set.buffer);
-    gl.glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(glyphs.size_bytes()), glyphs.data(), GL_DYNAMIC_DRAW);
+    gl.glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(sorted.size_bytes()), sorted.data(), GL_DYNAMIC_DRAW);
     set.count = int(glyphs.size());
     set.maxRadiusM = 0.0f;
     for (const AgentGlyph& g : glyphs)
@@ -196,24 +134,61 @@ void AgentRenderer::draw(QOpenGLFunctions_3_3_Core& gl, const RenderView& view)
 {
     if (!m_program)
         return;
+    if (!m_levelOfDetail) {
+        const bool coarse = m_bodies.count + m_cars.count > kDetailedLimit;
+        drawSet(gl, view, m_bodies, coarse ? m_coarseFlat : m_flat, coarse ? m_coarsePrism : m_prism, coarse);
+        drawSet(gl, view, m_cars, m_carFlat, m_carSolid, false);
+        return;
+    }
+    m_lastDrawn = {};
+    const bool p = view.perspective;
+    // Past kDetailedLimit agents even the near ones keep the coarse glyph, as without
+    // level of detail: under a software renderer each of its triangles costs.
     const bool coarse = m_bodies.count + m_cars.count > kDetailedLimit;
-    drawSet(gl, view, m_bodies, coarse ? m_coarseFlat : m_flat, coarse ? m_coarsePrism : m_prism, coarse);
-    drawSet(gl, view, m_cars, m_carFlat, m_carSolid, false);
+    const Shape& coarseBody = p ? m_coarsePrism : m_coarseFlat;
+    drawPlanned(gl, view, m_bodies, coarse ? coarseBody : (p ? m_prism : m_flat), coarseBody,
+                p ? kPerspectiveDetail : kTopDetail);
+    // Cars keep their mesh at any size: a car's outline is not a walker's, and scenes
+    // hold far fewer of them.
+    const Shape& car = p ? m_carSolid : m_carFlat;
+    drawPlanned(gl, view, m_cars, car, car, DetailThresholds{0.0f, 0.0f});
 }
 
-void AgentRenderer::drawSet(QOpenGLFunctions_3_3_Core& gl, const RenderView& view, const Instances& set,
-                            const Shape& flat, const Shape& solid, bool coarse)
+void AgentRenderer::drawPlanned(QOpenGLFunctions_3_3_Core& gl, const RenderView& view, Instances& set,
+                                const Shape& detailed, const Shape& coarse, const DetailThresholds& thresholds)
 {
     if (set.count == 0)
         return;
-    if (!view.perspective && set.maxRadiusM < kSpriteBelowPx * view.metresPerPixel) {
-        drawSprites(gl, view, set);
-        return;
+    set.cells.plan(view, thresholds, set.plan);
+    const auto& byDetail = set.plan.ranges;
+    if (!byDetail[0].empty() || !byDetail[1].empty()) {
+        bindGlyphProgram(gl, view);
+        drawRanges(gl, detailed.vao, set.buffer, detailed.vertexCount, set.plan.at(AgentDetail::Detailed));
+        drawRanges(gl, coarse.vao, set.buffer, coarse.vertexCount, set.plan.at(AgentDetail::Coarse));
+        m_program->release();
     }
-    const Shape* shape = view.perspective ? &solid : &flat;
-    // Tiny walkers in the top view: the coarse glyph, their detail would not show.
-    if (&flat == &m_flat && !coarse && !view.perspective && set.maxRadiusM < kCoarseBelowPx * view.metresPerPixel)
-        shape = &m_coarseFlat;
+    if (!set.plan.at(AgentDetail::Impostor).empty())
+        drawSprites(gl, view, set, set.plan.at(AgentDetail::Impostor));
+    for (int d = 0; d < kAgentDetailLevels; ++d)
+        m_lastDrawn[std::size_t(d)] += set.plan.agents[std::size_t(d)];
+}
+
+void AgentRenderer::drawRanges(QOpenGLFunctions_3_3_Core& gl, unsigned vao, unsigned instances, int vertexCount,
+                               std::span<const InstanceRange> ranges)
+{
+    if (ranges.empty())
+        return;
+    gl.glBindVertexArray(vao);
+    for (const InstanceRange& r : ranges) {
+        pointInstancesAt(gl, instances, r.first);
+        gl.glDrawArraysInstanced(GL_TRIANGLES, 0, vertexCount, r.count);
+    }
+    pointInstancesAt(gl, instances, 0);
+    gl.glBindVertexArray(0);
+}
+
+void AgentRenderer::bindGlyphProgram(QOpenGLFunctions_3_3_Core& gl, const RenderView& view)
+{
     m_program->bind();
     gl.glUniformMatrix4fv(m_program->uniformLocation("u_viewProjection"), 1, GL_FALSE,
                           glm::value_ptr(view.viewProjection));
@@ -222,24 +197,43 @@ void AgentRenderer::drawSet(QOpenGLFunctions_3_3_Core& gl, const RenderView& vie
     m_program->setUniformValue("u_lit", view.perspective);
     const glm::vec4 nose = palette::kAgentNose;
     m_program->setUniformValue("u_noseColour", nose.r, nose.g, nose.b);
-    gl.glBindVertexArray(shape->vao);
-    gl.glDrawArraysInstanced(GL_TRIANGLES, 0, shape->vertexCount, set.count);
-    gl.glBindVertexArray(0);
+}
+
+void AgentRenderer::drawSet(QOpenGLFunctions_3_3_Core& gl, const RenderView& view, const Instances& set,
+                            const Shape& flat, const Shape& solid, bool coarse)
+{
+    if (set.count == 0)
+        return;
+    if (!view.perspective && set.maxRadiusM < kSpriteBelowPx * view.metresPerPixel) {
+        const InstanceRange all{0, set.count};
+        drawSprites(gl, view, set, {&all, 1});
+        return;
+    }
+    const Shape* shape = view.perspective ? &solid : &flat;
+    // Tiny walkers in the top view: the coarse glyph, their detail would not show.
+    if (&flat == &m_flat && !coarse && !view.perspective && set.maxRadiusM < kCoarseBelowPx * view.metresPerPixel)
+        shape = &m_coarseFlat;
+    bindGlyphProgram(gl, view);
+    const InstanceRange all{0, set.count};
+    drawRanges(gl, shape->vao, set.buffer, shape->vertexCount, {&all, 1});
     m_program->release();
 }
 
-void AgentRenderer::drawSprites(QOpenGLFunctions_3_3_Core& gl, const RenderView& view, const Instances& set)
+void AgentRenderer::drawSprites(QOpenGLFunctions_3_3_Core& gl, const RenderView& view, const Instances& set,
+                                std::span<const InstanceRange> ranges)
 {
     m_spriteProgram->bind();
     gl.glUniformMatrix4fv(m_spriteProgram->uniformLocation("u_viewProjection"), 1, GL_FALSE,
                           glm::value_ptr(view.viewProjection));
-    m_spriteProgram->setUniformValue("u_pixelsPerMetre", 1.0f / std::max(view.metresPerPixel, 1e-6f));
+    m_spriteProgram->setUniformValue("u_halfViewportPx", 0.5f * view.sizePx.x, 0.5f * view.sizePx.y);
+    m_spriteProgram->setUniformValue("u_metresPerPixel", std::max(view.metresPerPixel, 1e-9f));
     m_spriteProgram->setUniformValue("u_minRadiusPx", kMinRadiusPx);
-    gl.glEnable(GL_PROGRAM_POINT_SIZE);
-    gl.glBindVertexArray(set.spriteVao);
-    gl.glDrawArrays(GL_POINTS, 0, set.count);
-    gl.glBindVertexArray(0);
-    gl.glDisable(GL_PROGRAM_POINT_SIZE);
+    m_spriteProgram->setUniformValue("u_heightScale", view.perspective ? 1.0f : 0.0f);
+    m_spriteProgram->setUniformValue("u_eye", view.eye.x, view.eye.y, view.eye.z);
+    m_spriteProgram->setUniformValue("u_lit", view.perspective);
+    const glm::vec4 nose = palette::kAgentNose;
+    m_spriteProgram->setUniformValue("u_noseColour", nose.r, nose.g, nose.b);
+    drawRanges(gl, set.spriteVao, set.buffer, 6, ranges);  // one quad per agent
     m_spriteProgram->release();
 }
 

@@ -1,15 +1,20 @@
 #pragma once
 // Draws every agent with instanced calls: flat oriented glyphs in the top view, lit
 // prisms in perspective, and vehicles as cars (a second instance set), never smaller
-// than a few pixels. Owns its GL buffers; create, draw and destroy it with the context
-// current. Knows nothing of scenes or worlds.
+// than a few pixels. With level of detail (the default) agents are sorted into ground
+// cells once per upload, and each frame draws only the cells in view: near ones with the
+// detailed glyph, farther ones with the coarse glyph, and those only a few pixels wide as
+// impostors (one small quad each, showing the same silhouette, shading and nose).
+// Owns its GL buffers; create, draw and destroy it with the context current. Knows
+// nothing of scenes or worlds.
 
+#include "editor/viewport/AgentCells.h"
+#include "editor/viewport/AgentGlyph.h"
 #include "editor/viewport/RenderView.h"
-
-#include <glm/vec3.hpp>
 
 #include <QOpenGLShaderProgram>
 
+#include <array>
 #include <memory>
 #include <span>
 #include <vector>
@@ -20,14 +25,6 @@ namespace throng::editor {
 
 struct GlyphVertex;
 
-// One agent as drawn: 32 bytes per instance.
-struct AgentGlyph {
-    glm::vec3 position{0.0f};  // m
-    float headingRad = 0.0f;   // 0 = +x, counter-clockwise seen from above
-    float radiusM = 0.3f;      // > 0
-    glm::vec3 colour{1.0f};    // RGB in 0..1
-};
-
 class AgentRenderer {
 public:
     static constexpr float kMinRadiusPx = 2.0f;
@@ -35,15 +32,25 @@ public:
     // radius on screen (top view): their detail would not show, their vertices would cost.
     static constexpr int kDetailedLimit = 5000;
     static constexpr float kCoarseBelowPx = 6.0f;
-    // Below this radius on screen (top view) an agent is one round point sprite: one
-    // vertex instead of a mesh, as its heading could not be seen anyway.
+    // Below this radius on screen an agent is one impostor quad (six vertices instead of
+    // a mesh of hundreds) drawing the glyph's outline, shade and nose.
     static constexpr float kSpriteBelowPx = 3.0f;
+    // Level-of-detail switches, radius on screen in pixels (AgentCells).
+    static constexpr DetailThresholds kTopDetail{kSpriteBelowPx, kCoarseBelowPx};
+    static constexpr DetailThresholds kPerspectiveDetail{3.0f, 12.0f};
 
     bool initialize(QOpenGLFunctions_3_3_Core& gl);
     void destroy(QOpenGLFunctions_3_3_Core& gl);
     // `bodies` are walkers and fliers, `cars` vehicles.
     void upload(QOpenGLFunctions_3_3_Core& gl, std::span<const AgentGlyph> bodies, std::span<const AgentGlyph> cars);
     void draw(QOpenGLFunctions_3_3_Core& gl, const RenderView& view);
+
+    // Off: every agent of a set drawn with one shape chosen for the whole set, as before
+    // level of detail (the reference the tests and figures compare with).
+    void setLevelOfDetail(bool on) { m_levelOfDetail = on; }
+    bool levelOfDetail() const { return m_levelOfDetail; }
+    // Instances per AgentDetail drawn by the last draw() with level of detail, both sets.
+    const std::array<int, kAgentDetailLevels>& lastDrawnByDetail() const { return m_lastDrawn; }
 
 private:
     struct Shape {
@@ -54,6 +61,8 @@ private:
         unsigned buffer = 0, spriteVao = 0;
         int count = 0;
         float maxRadiusM = 0.0f;
+        AgentCells cells;
+        AgentDrawPlan plan;
     };
     void createShape(QOpenGLFunctions_3_3_Core& gl, Shape& shape, const std::vector<GlyphVertex>& vertices,
                      unsigned instances);
@@ -61,12 +70,20 @@ private:
     void uploadInstances(QOpenGLFunctions_3_3_Core& gl, Instances& set, std::span<const AgentGlyph> glyphs);
     void drawSet(QOpenGLFunctions_3_3_Core& gl, const RenderView& view, const Instances& set, const Shape& flat,
                  const Shape& solid, bool coarse);
-    void drawSprites(QOpenGLFunctions_3_3_Core& gl, const RenderView& view, const Instances& set);
+    void drawSprites(QOpenGLFunctions_3_3_Core& gl, const RenderView& view, const Instances& set,
+                     std::span<const InstanceRange> ranges);
+    void drawPlanned(QOpenGLFunctions_3_3_Core& gl, const RenderView& view, Instances& set, const Shape& detailed,
+                     const Shape& coarse, const DetailThresholds& thresholds);
+    void bindGlyphProgram(QOpenGLFunctions_3_3_Core& gl, const RenderView& view);
+    void drawRanges(QOpenGLFunctions_3_3_Core& gl, unsigned vao, unsigned instances, int vertexCount,
+                    std::span<const InstanceRange> ranges);
 
     std::unique_ptr<QOpenGLShaderProgram> m_program;
     std::unique_ptr<QOpenGLShaderProgram> m_spriteProgram;
     Shape m_flat, m_prism, m_coarseFlat, m_coarsePrism, m_carFlat, m_carSolid;
     Instances m_bodies, m_cars;
+    bool m_levelOfDetail = true;
+    std::array<int, kAgentDetailLevels> m_lastDrawn{};
 };
 
 }  // namespace throng::editor

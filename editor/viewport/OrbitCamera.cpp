@@ -74,6 +74,7 @@ RenderView OrbitCamera::renderView() const
     v.metresPerPixel = 2.0f * std::tan(0.5f * kFovYRad) / float(std::max(1, m_size.height()));
     v.perspective = true;
     v.eye = e;
+    v.sizePx = {float(std::max(1, m_size.width())), float(std::max(1, m_size.height()))};
     return v;
 }
 

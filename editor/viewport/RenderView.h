@@ -3,6 +3,7 @@
 // ground size of a pixel and whether to shade. Plain data, filled by CameraRig.
 
 #include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 namespace throng::editor {
@@ -14,6 +15,7 @@ struct RenderView {
     float metresPerPixel = 0.0f;
     bool perspective = false;     // true: agents as lit prisms, depth tested
     glm::vec3 eye{0.0f};          // camera position, m
+    glm::vec2 sizePx{1.0f};       // the viewport, widget pixels
 };
 
 }  // namespace throng::editor

@@ -65,6 +65,7 @@ RenderView TopCamera::renderView() const
     v.metresPerPixel = 1.0f / m_pixelsPerMetre;
     v.perspective = false;
     v.eye = eye;
+    v.sizePx = {float(std::max(1, m_size.width())), float(std::max(1, m_size.height()))};
     return v;
 }
 

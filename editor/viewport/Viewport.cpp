@@ -194,6 +194,12 @@ void Viewport::rebuildHighlight()
     update();
 }
 
+void Viewport::setAgentLevelOfDetail(bool on)
+{
+    m_agentRenderer.setLevelOfDetail(on);
+    update();
+}
+
 void Viewport::setViewMode(ViewMode mode)
 {
     if (mode == m_camera.mode())

@@ -76,6 +76,17 @@ public:
     void setTool(ViewportTool* tool);
     ViewportTool* tool() const { return m_tool; }
 
+    // Level of detail for agents (on by default): culled by cells, far ones as impostors.
+    // Off draws every agent with the shape chosen for the whole crowd, as a reference.
+    void setAgentLevelOfDetail(bool on);
+    bool agentLevelOfDetail() const { return m_agentRenderer.levelOfDetail(); }
+    // Agents the last paint drew per AgentDetail (Detailed, Coarse, Impostor), with
+    // level of detail on; those not counted were outside the view.
+    const std::array<int, kAgentDetailLevels>& agentsDrawnByDetail() const
+    {
+        return m_agentRenderer.lastDrawnByDetail();
+    }
+
     // False when no OpenGL 3.3 core context could be made; glProblem() says why.
     bool isGlReady() const { return m_glReady; }
     QString glProblem() const { return m_glProblem; }

@@ -1,6 +1,7 @@
 // editor_figures: the editor's figures as JSON on stdout (never a test; timings are not
 // asserted anywhere). Start-up time to a shown window with the crossroads demo, viewport
-// frame time with 10,000 and 100,000 agents, crowd-brush stroke latency per mouse move.
+// frame time with 10,000 and 100,000 agents (top, 3D, 3D close-up; level of detail off
+// and on in one run), crowd-brush stroke latency per mouse move.
 // Run under a display: xvfb-run -a -s "-screen 0 1920x1080x24" editor_figures [WINDOW.png]
 #include "EditorUiDriver.h"
 
@@ -14,8 +15,10 @@
 #include <QSurfaceFormat>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QWheelEvent>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <iostream>
 #include <vector>
@@ -53,24 +56,56 @@ sim::Scene crowdOf(std::size_t count)
     return s;
 }
 
-// Milliseconds per synchronous repaint of the viewport, the camera moving every frame.
-double frameTimeMs(Viewport& viewport, ViewMode mode, int frames)
+double repaintMs(Viewport& viewport)
+{
+    QElapsedTimer t;
+    t.start();
+    viewport.repaint();
+    viewport.makeCurrent();
+    viewport.context()->functions()->glFinish();
+    viewport.doneCurrent();
+    return double(t.nsecsElapsed()) / 1e6;
+}
+
+// Median milliseconds per synchronous repaint with level of detail off (every agent of
+// the crowd with one shape, as before) and on, frames of the two taken in turn so that
+// the load of a shared machine weighs on both alike. `zoomSteps` wheel clicks in after
+// framing all (0: the whole crowd in view).
+struct FrameTimes {
+    double fullMs = 0.0, lodMs = 0.0;
+    std::array<int, kAgentDetailLevels> drawn{};
+};
+
+FrameTimes frameTimes(Viewport& viewport, ViewMode mode, int zoomSteps, int frames)
 {
     viewport.setViewMode(mode);
     viewport.frameAll();
-    viewport.repaint();
-    std::vector<double> times;
-    for (int i = 0; i < frames; ++i) {
-        QElapsedTimer t;
-        t.start();
-        viewport.frameAll();
-        viewport.repaint();
-        viewport.makeCurrent();
-        viewport.context()->functions()->glFinish();
-        viewport.doneCurrent();
-        times.push_back(double(t.nsecsElapsed()) / 1e6);
+    for (int k = 0; k < zoomSteps; ++k) {
+        const QPointF centre(viewport.width() / 2.0, viewport.height() / 2.0);
+        QWheelEvent wheel(centre, viewport.mapToGlobal(centre), QPoint(), QPoint(0, 120), Qt::NoButton,
+                          Qt::NoModifier, Qt::NoScrollPhase, false);
+        QApplication::sendEvent(&viewport, &wheel);
     }
-    return median(times);
+    std::vector<double> full, lod;
+    for (int i = 0; i <= frames; ++i) {
+        viewport.setAgentLevelOfDetail(false);
+        const double f = repaintMs(viewport);
+        viewport.setAgentLevelOfDetail(true);
+        const double l = repaintMs(viewport);
+        if (i > 0) {  // the first of each warms caches and compiles shader variants
+            full.push_back(f);
+            lod.push_back(l);
+        }
+    }
+    return {median(full), median(lod), viewport.agentsDrawnByDetail()};
+}
+
+void printTimes(const char* name, const FrameTimes& t, bool last)
+{
+    std::cout << "    \"" << name << "\": {\"full_ms\": " << t.fullMs << ", \"lod_ms\": " << t.lodMs
+              << ", \"full_over_lod\": " << (t.lodMs > 0.0 ? t.fullMs / t.lodMs : 0.0) << ", \"drawn_detailed\": "
+              << t.drawn[0] << ", \"drawn_coarse\": " << t.drawn[1] << ", \"drawn_impostor\": " << t.drawn[2] << "}"
+              << (last ? "\n" : ",\n");
 }
 
 }  // namespace
@@ -126,17 +161,20 @@ int main(int argc, char** argv)
     viewport.show();
     if (!QTest::qWaitForWindowExposed(&viewport))
         return 1;
-    // 0 agents: the cost of the ground, grid and window alone.
+    // 0 agents: the cost of the ground, grid and window alone. The 3D close-up is 15
+    // wheel clicks (9x) in from framing all: near agents large, much of the crowd out of view.
     const std::size_t counts[] = {0, 10000, 100000};
     for (std::size_t n : counts) {
         QElapsedTimer t;
         t.start();
         viewport.setScene(crowdOf(n));
         const double setMs = double(t.nsecsElapsed()) / 1e6;
-        std::cout << "  \"agents_" << n << "\": {\"set_scene_ms\": " << setMs
-                  << ", \"frame_ms_top\": " << frameTimeMs(viewport, ViewMode::Top, 10)
-                  << ", \"frame_ms_3d\": " << frameTimeMs(viewport, ViewMode::Orbit, 10) << "}"
-                  << (n == counts[2] ? "\n" : ",\n");
+        const int frames = n >= 100000 ? 5 : 9;
+        std::cout << "  \"agents_" << n << "\": {\n    \"set_scene_ms\": " << setMs << ",\n";
+        printTimes("top", frameTimes(viewport, ViewMode::Top, 0, frames), false);
+        printTimes("3d", frameTimes(viewport, ViewMode::Orbit, 0, frames), false);
+        printTimes("3d_close", frameTimes(viewport, ViewMode::Orbit, 15, frames), true);
+        std::cout << "  }" << (n == counts[2] ? "\n" : ",\n");
     }
     std::cout << "}\n";
     return 0;

@@ -1,0 +1,16 @@
+#pragma once
+// One agent as the renderer draws it: plain data, uploaded as is (two vec4 per instance).
+
+#include <glm/vec3.hpp>
+
+namespace throng::editor {
+
+// 32 bytes per instance.
+struct AgentGlyph {
+    glm::vec3 position{0.0f};  // m
+    float headingRad = 0.0f;   // 0 = +x, counter-clockwise seen from above
+    float radiusM = 0.3f;      // > 0
+    glm::vec3 colour{1.0f};    // RGB in 0..1
+};
+
+}  // namespace throng::editor
