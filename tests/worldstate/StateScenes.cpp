@@ -63,6 +63,11 @@ sim::Scene parseOrThrow(const std::string& text)
 
 }  // namespace
 
+sim::Scene crossroads()
+{
+    return parseOrThrow(readResource("crossroads.yaml"));
+}
+
 sim::Scene crossroadsWithBrains()
 {
     std::string text = readResource("crossroads.yaml");

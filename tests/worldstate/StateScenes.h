@@ -11,6 +11,7 @@
 
 namespace throng::test::state {
 
+sim::Scene crossroads();
 sim::Scene crossroadsWithBrains();
 sim::Scene smallEvacuation();
 // Records the world's current state and `steps` more frames.

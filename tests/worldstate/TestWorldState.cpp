@@ -25,6 +25,7 @@ private slots:
         QTest::addColumn<int>("threads");
         QTest::newRow("crossroads with brains, 1 thread") << "crossroads" << 1;
         QTest::newRow("crossroads with brains, 2 threads") << "crossroads" << 2;
+        QTest::newRow("crossroads as shipped, 2 threads") << "crossroads-plain" << 2;
         QTest::newRow("evacuation, 1 thread") << "evacuation" << 1;
         QTest::newRow("evacuation, 2 threads") << "evacuation" << 2;
     }
@@ -33,7 +34,9 @@ private slots:
     {
         QFETCH(QString, sceneName);
         QFETCH(int, threads);
-        const Scene scene = sceneName == "crossroads" ? crossroadsWithBrains() : smallEvacuation();
+        const Scene scene = sceneName == "crossroads" ? crossroadsWithBrains()
+                            : sceneName == "evacuation" ? smallEvacuation()
+                                                        : crossroads();
         const WorldOptions options{0, false, threads};
 
         World straight(scene, options);
@@ -64,7 +67,7 @@ private slots:
                 for (float v : column)
                     most = std::max(most, v);
             QVERIFY(most > 0.0f);
-        } else {
+        } else if (sceneName == "evacuation") {
             std::size_t out = 0;
             for (std::size_t i = 0; i < straight.agentCount(); ++i)
                 out += straight.isOut(i) ? 1 : 0;

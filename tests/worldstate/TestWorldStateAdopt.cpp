@@ -79,22 +79,30 @@ private slots:
         // The edit frame itself is the old run's state.
         QCOMPARE(largestMove(after, 0, reference, 0), 0.0f);
 
-        std::size_t nearChanged = 0, far = 0, farSame = 0, crossings = 0;
+        std::size_t nearChanged = 0, far = 0, farSame = 0, veryFar = 0, veryFarSame = 0, crossings = 0;
         for (std::size_t i = 0; i < after.agentCount(); ++i) {
             const float d = distanceToSegment(xz(reference.at(0, i).position), a, b);
             if (d < 4.0f && glm::distance(after.at(72, i).position, reference.at(72, i).position) > 0.05f)
                 ++nearChanged;
-            if (d > 25.0f && !resumed.isDriven(i)) {
+            // Walkers feel each other a perception radius (4 m) further each step: far
+            // ones go on as before, early on. (A* walkers plan again on the edited grid.)
+            if (d > 8.0f && after.agents()[i].typeIndex == 0) {
                 ++far;
-                farSame += glm::distance(after.at(12, i).position, reference.at(12, i).position) < 1e-3f ? 1 : 0;
+                farSame += after.at(1, i).position == reference.at(1, i).position ? 1 : 0;
+            }
+            if (d > 30.0f && after.agents()[i].typeIndex == 0) {
+                ++veryFar;
+                veryFarSame += glm::distance(after.at(4, i).position, reference.at(4, i).position) < 1e-3f ? 1 : 0;
             }
             for (std::size_t f = 1; f < after.frameCount(); ++f)
                 crossings += crosses(xz(after.at(f - 1, i).position), xz(after.at(f, i).position), a, b) ? 1 : 0;
         }
         QVERIFY2(nearChanged > 0, "no walker near the new wall walked otherwise");
         QCOMPARE(crossings, std::size_t(0));
-        QVERIFY(far > 50);
-        QVERIFY2(farSame * 10 >= far * 9, qPrintable(QString("%1 of %2 far walkers kept their way").arg(farSame).arg(far)));
+        QVERIFY(veryFar > 50);
+        QVERIFY2(farSame == far, qPrintable(QString("%1 of %2 walkers 8 m away kept their way").arg(farSame).arg(far)));
+        QVERIFY2(veryFarSame * 10 >= veryFar * 9,
+                 qPrintable(QString("%1 of %2 walkers 30 m away kept their way").arg(veryFarSame).arg(veryFar)));
         // The reference run does walk through where the wall now stands.
         std::size_t oldCrossings = 0;
         for (std::size_t i = 0; i < reference.agentCount(); ++i)
