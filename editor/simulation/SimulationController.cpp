@@ -49,15 +49,29 @@ void SimulationController::setScene(const sim::Scene& scene)
         m_scene = scene;
         return;
     }
+    // Frames up to the shown one stay; the runner goes on from there with the edited scene
+    // (or starts over when the edit cannot be resumed: the first batch then says so).
+    const bool resume = m_hasScene && m_current > 0 && m_current < m_cache.frameCount();
     m_scene = scene;
     m_hasScene = true;
+    const float fps = scene.settings.fps > 0.0f ? scene.settings.fps : 24.0f;
+    m_totalFrames = std::size_t(std::lround(double(scene.settings.durationS) * double(fps))) + 1;
+    m_timer.setInterval(std::max(1, int(std::lround(1000.0 / double(fps)))));
+    if (resume) {
+        m_cache.truncate(m_current + 1);
+        m_runner.resume(scene, m_current);
+        // Playing or a step asked for goes on with the edited scene.
+        if (m_playing)
+            m_runner.setTarget(m_totalFrames);
+        else if (m_stepPending)
+            m_runner.setTarget(m_current + 2);
+        emit recordedChanged(m_cache.frameCount());
+        return;
+    }
     pause();
     m_stepPending = false;
     m_cache = {};
     m_current = 0;
-    const float fps = scene.settings.fps > 0.0f ? scene.settings.fps : 24.0f;
-    m_totalFrames = std::size_t(std::lround(double(scene.settings.durationS) * double(fps))) + 1;
-    m_timer.setInterval(std::max(1, int(std::lround(1000.0 / double(fps)))));
     m_runner.start(scene);
     emit recordedChanged(0);
 }
@@ -70,13 +84,25 @@ void SimulationController::takeFrames()
         emit problem(tr("Cannot simulate the scene: %1").arg(QString::fromStdString(batch.error)));
         return;
     }
-    if (!batch.agents.empty())
+    const bool restarted = !batch.agents.empty();
+    if (restarted) {
         m_cache.reset(std::move(batch.agents), batch.fps);
+        // A resume that had to start over: back to frame 0, as any restart.
+        if (m_current != 0) {
+            pause();
+            m_stepPending = false;
+            m_current = 0;
+        }
+    } else if (batch.resumedAt > 0 && m_cache.frameCount() > batch.resumedAt + 1) {
+        m_cache.truncate(batch.resumedAt + 1);
+    }
     const std::size_t n = m_cache.agentCount();
     if (n > 0)
         for (std::size_t f = 0; f < batch.frameCount; ++f)
             m_cache.append(std::span(batch.frames).subspan(f * n, n));
     emit recordedChanged(m_cache.frameCount());
+    if (restarted && m_current == 0)
+        emit frameChanged(0);
     if (m_stepPending && m_current + 1 < m_cache.frameCount()) {
         m_stepPending = false;
         setCurrent(m_current + 1);

@@ -1,8 +1,9 @@
 #pragma once
 // Live simulation for the editor: runs the document's scene on a SimulationRunner
 // thread into a FrameCache and plays, pauses, steps, loops and scrubs it. Editing the
-// scene (setScene) throws the recorded frames away when the edit changes the simulation.
-// Never draws and never edits the scene.
+// scene (setScene) invalidates the recorded frames after the shown one: the edited scene
+// runs on from the shown frame's state (simcore/world/WorldState.h has the rule). Never
+// draws and never edits the scene.
 
 #include "editor/simulation/SimulationRunner.h"
 #include "simcore/scene/Scene.h"
@@ -23,10 +24,13 @@ public:
     explicit SimulationController(QObject* parent = nullptr);
     ~SimulationController() override;
 
-    // The scene to simulate from now on: every recorded frame is dropped, playback
-    // pauses at frame 0 -- unless the edit changed nothing the simulation reads (a
-    // placed agent's hand-set look, tint or height): then the frames and the playback
-    // stay as they are.
+    // The scene to simulate from now on. At frame 0 (or on the first scene) every recorded
+    // frame is dropped. At a later shown frame f, frames 0..f stay and the frames after
+    // it are recomputed with the edited scene from frame f's state; playback goes on.
+    // When the runner cannot resume the edit (agents added or removed, traffic or
+    // settings changed) it starts over: frames dropped, playback paused at frame 0. An
+    // edit that changes nothing the simulation reads (a placed agent's hand-set look,
+    // tint or height) keeps the frames and the playback as they are.
     void setScene(const sim::Scene& scene);
 
     void play();
@@ -52,6 +56,8 @@ public:
     std::size_t totalFrames() const { return m_totalFrames; }
     const sim::FrameCache& cache() const { return m_cache; }
     double stepsPerSecond() const { return m_runner.stepsPerSecond(); }
+    const SimulationRunner& runner() const { return m_runner; }
+    SimulationRunner& runner() { return m_runner; }
 
 signals:
     // Frame `frame` of cache() is the one to show.

@@ -111,6 +111,37 @@ private slots:
         QVERIFY(oldCrossings > 0);
     }
 
+    void editBetweenCheckpointsStepsTheRecordedSceneToTheEditFrame()
+    {
+        // As the editor does: checkpoint at 24, edit at 40 -- steps 24..40 again with the
+        // recorded scene, then the edited scene takes over frame 40's state.
+        const Scene scene = crossroads();
+        World straight(scene);
+        for (int s = 0; s < 24; ++s)
+            straight.step();
+        const WorldState at24 = straight.saveState();
+        const FrameCache reference = record(straight, 20);  // frames 24..44
+        Scene edited = scene;
+        const glm::vec2 a(-8.9f, -25.0f), b(-5.2f, -25.0f);
+        edited.walls.push_back({"", {a, b}});
+        World recorded(scene);
+        recorded.restoreState(at24);
+        for (int s = 24; s < 40; ++s)
+            recorded.step();
+        World resumed(edited);
+        QVERIFY(resumed.adoptState(recorded.saveState(), scene, edited));
+        const FrameCache after = record(resumed, 4);  // frames 40..44
+        std::size_t far = 0, farSame = 0;
+        for (std::size_t i = 0; i < after.agentCount(); ++i) {
+            QCOMPARE(after.at(0, i).position, reference.at(16, i).position);
+            if (distanceToSegment(xz(reference.at(16, i).position), a, b) > 8.0f && after.agents()[i].typeIndex == 0) {
+                ++far;
+                farSame += after.at(1, i).position == reference.at(17, i).position ? 1 : 0;
+            }
+        }
+        QVERIFY2(farSame == far, qPrintable(QString("%1 of %2 walkers 8 m away kept their way").arg(farSame).arg(far)));
+    }
+
     void lowerMaxSpeedHoldsFromTheEditOn()
     {
         const Scene scene = crossroadsWithBrains();
