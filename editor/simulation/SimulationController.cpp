@@ -50,18 +50,36 @@ void SimulationController::setScene(const sim::Scene& scene)
         m_scene = scene;
         return;
     }
+    // Frames up to the shown one stay; the runner goes on from there with the edited scene
+    // (or starts over when the edit cannot be resumed: the first batch then says so).
+    const bool resume = m_hasScene && m_current > 0 && m_current < m_cache.frameCount();
     m_scene = scene;
     m_hasScene = true;
+    const float fps = scene.settings.fps > 0.0f ? scene.settings.fps : 24.0f;
+    m_totalFrames = std::size_t(std::lround(double(scene.settings.durationS) * double(fps))) + 1;
+    m_timer.setInterval(std::max(1, int(std::lround(1000.0 / double(fps)))));
+    if (resume) {
+        m_cache.truncate(m_current + 1);
+        m_brainValues.resize(std::min(m_brainValues.size(), m_current + 1));
+        m_runFrames = m_current + 1;
+        m_replaying = false;
+        m_runner.resume(scene, m_current);
+        // Playing or a step asked for goes on with the edited scene.
+        if (m_playing)
+            m_runner.setTarget(m_totalFrames);
+        else if (m_stepPending)
+            m_runner.setTarget(m_current + 2);
+        emit recordedChanged(m_cache.frameCount());
+        return;
+    }
     pause();
     m_stepPending = false;
     m_cache = {};
     m_brainValues.clear();
     m_current = 0;
-    const float fps = scene.settings.fps > 0.0f ? scene.settings.fps : 24.0f;
-    m_totalFrames = std::size_t(std::lround(double(scene.settings.durationS) * double(fps))) + 1;
-    m_timer.setInterval(std::max(1, int(std::lround(1000.0 / double(fps)))));
     m_runner.start(scene);
     m_runFrames = 0;
+    m_replaying = false;
     emit recordedChanged(0);
 }
 
@@ -74,8 +92,25 @@ void SimulationController::takeFrames()
         return;
     }
     // A run that computes recorded frames again (pickBrainAgent) brings only their values.
-    if (!batch.agents.empty() && m_cache.frameCount() == 0)
+    const bool restarted = !batch.agents.empty() && !(m_replaying && m_cache.frameCount() > 0);
+    if (restarted) {
         m_cache.reset(std::move(batch.agents), batch.fps);
+        m_brainValues.clear();
+        m_runFrames = 0;
+        m_replaying = false;
+        // A resume that had to start over: back to frame 0, as any restart.
+        if (m_current != 0) {
+            pause();
+            m_stepPending = false;
+            m_current = 0;
+        }
+    } else if (batch.resumedAt > 0) {
+        // A resumed run hands over frames from resumedAt + 1 on.
+        if (m_cache.frameCount() > batch.resumedAt + 1)
+            m_cache.truncate(batch.resumedAt + 1);
+        m_brainValues.resize(std::min(m_brainValues.size(), batch.resumedAt + 1));
+        m_runFrames = batch.resumedAt + 1;
+    }
     const std::size_t n = m_cache.agentCount();
     bool replayed = false;
     for (std::size_t f = 0; n > 0 && f < batch.frameCount; ++f) {
@@ -94,6 +129,8 @@ void SimulationController::takeFrames()
     if (replayed)
         emit brainValuesChanged();
     emit recordedChanged(m_cache.frameCount());
+    if (restarted && m_current == 0)
+        emit frameChanged(0);
     if (m_stepPending && m_current + 1 < m_cache.frameCount()) {
         m_stepPending = false;
         setCurrent(m_current + 1);
@@ -169,8 +206,11 @@ void SimulationController::pickBrainAgent(std::ptrdiff_t agent)
     m_runner.pickBrainAgent(agent);
     if (agent < 0 || !m_hasScene || m_cache.frameCount() <= 1 || brainValues(m_cache.frameCount() - 1, agent))
         return;
+    // The frames are recomputed from frame 0 with the current scene; frames kept from
+    // before an edit (resume) get the values the edited scene gives them.
     m_runner.start(m_scene);
     m_runFrames = 0;
+    m_replaying = true;
     m_runner.setTarget(m_playing ? m_totalFrames : m_cache.frameCount());
 }
 

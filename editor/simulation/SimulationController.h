@@ -1,8 +1,9 @@
 #pragma once
 // Live simulation for the editor: runs the document's scene on a SimulationRunner
 // thread into a FrameCache and plays, pauses, steps, loops and scrubs it. Editing the
-// scene (setScene) throws the recorded frames away when the edit changes the simulation.
-// Never draws and never edits the scene.
+// scene (setScene) invalidates the recorded frames after the shown one: the edited scene
+// runs on from the shown frame's state (simcore/world/WorldState.h has the rule). Never
+// draws and never edits the scene.
 
 #include "editor/simulation/SimulationRunner.h"
 #include "simcore/scene/Scene.h"
@@ -23,10 +24,13 @@ public:
     explicit SimulationController(QObject* parent = nullptr);
     ~SimulationController() override;
 
-    // The scene to simulate from now on: every recorded frame is dropped, playback
-    // pauses at frame 0 -- unless the edit changed nothing the simulation reads (a
-    // placed agent's hand-set look, tint or height): then the frames and the playback
-    // stay as they are.
+    // The scene to simulate from now on. At frame 0 (or on the first scene) every recorded
+    // frame is dropped. At a later shown frame f, frames 0..f stay and the frames after
+    // it are recomputed with the edited scene from frame f's state; playback goes on.
+    // When the runner cannot resume the edit (agents added or removed, traffic or
+    // settings changed) it starts over: frames dropped, playback paused at frame 0. An
+    // edit that changes nothing the simulation reads (a placed agent's hand-set look,
+    // tint or height) keeps the frames and the playback as they are.
     void setScene(const sim::Scene& scene);
 
     void play();
@@ -60,6 +64,8 @@ public:
     // Agent `agent`'s node values recorded with frame `frame`; null when that frame was
     // computed with another agent picked (or not yet), or at frame 0 (no step yet).
     const std::vector<sim::BrainNodeValue>* brainValues(std::size_t frame, std::ptrdiff_t agent) const;
+    const SimulationRunner& runner() const { return m_runner; }
+    SimulationRunner& runner() { return m_runner; }
 
 signals:
     // Frame `frame` of cache() is the one to show.
@@ -81,7 +87,8 @@ private:
     bool m_hasScene = false;
     sim::FrameCache m_cache;
     std::vector<SimulationRunner::PickedBrainValues> m_brainValues;  // per recorded frame
-    std::size_t m_runFrames = 0;  // frames the runner's current run has handed over
+    std::size_t m_runFrames = 0;  // frame index of the next frame the runner hands over
+    bool m_replaying = false;     // the runner recomputes recorded frames for brain values
     QTimer m_timer;
     std::size_t m_current = 0;
     std::size_t m_totalFrames = 1;

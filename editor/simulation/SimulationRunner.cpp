@@ -6,6 +6,7 @@
 #include <chrono>
 #include <exception>
 #include <memory>
+#include <utility>
 
 namespace throng::editor {
 
@@ -18,6 +19,16 @@ SimulationRunner::~SimulationRunner()
 
 void SimulationRunner::start(const sim::Scene& scene)
 {
+    launch(scene, 0);
+}
+
+void SimulationRunner::resume(const sim::Scene& scene, std::size_t editFrame)
+{
+    launch(scene, editFrame);
+}
+
+void SimulationRunner::launch(sim::Scene scene, std::size_t resumeFrame)
+{
     stop();
     {
         std::lock_guard lock(m_mutex);
@@ -25,8 +36,35 @@ void SimulationRunner::start(const sim::Scene& scene)
         m_target = 1;
         m_pending = {};
         m_notified = false;
+        if (resumeFrame == 0) {
+            m_checkpoints.clear();
+            m_checkpointBytes = 0;
+        }
     }
-    m_thread = std::thread([this, scene] { run(scene); });
+    auto shared = std::make_shared<const sim::Scene>(std::move(scene));
+    m_thread = std::thread([this, shared, resumeFrame] { run(shared, resumeFrame); });
+}
+
+void SimulationRunner::setCheckpointBudget(std::size_t intervalFrames, std::size_t budgetBytes)
+{
+    std::lock_guard lock(m_mutex);
+    m_interval = std::max<std::size_t>(1, intervalFrames);
+    m_budgetBytes = budgetBytes;
+}
+
+std::vector<std::size_t> SimulationRunner::checkpointFrames() const
+{
+    std::lock_guard lock(m_mutex);
+    std::vector<std::size_t> frames;
+    for (const auto& [frame, checkpoint] : m_checkpoints)
+        frames.push_back(frame);
+    return frames;
+}
+
+std::size_t SimulationRunner::checkpointBytes() const
+{
+    std::lock_guard lock(m_mutex);
+    return m_checkpointBytes;
 }
 
 void SimulationRunner::stop()
@@ -67,13 +105,99 @@ SimulationRunner::Batch SimulationRunner::takeFrames()
     return out;
 }
 
-void SimulationRunner::run(sim::Scene scene)
+void SimulationRunner::keepCheckpoint(std::size_t frame, const std::shared_ptr<const sim::Scene>& scene,
+                                      const sim::World& world, bool pinned, Checkpoint before)
+{
+    auto state = std::make_shared<const sim::WorldState>(world.saveState());
+    std::lock_guard lock(m_mutex);
+    if (auto old = m_checkpoints.find(frame); old != m_checkpoints.end())
+        m_checkpointBytes -= old->second.state->memoryBytes();
+    m_checkpointBytes += state->memoryBytes();
+    Checkpoint& kept = m_checkpoints[frame];
+    kept.scene = scene;
+    kept.state = std::move(state);
+    kept.pinned = pinned;
+    kept.beforeScene = before.scene;
+    kept.beforeState = before.state;
+    // Over budget: every other checkpoint goes (the pinned ones stay), the interval doubles.
+    while (m_checkpointBytes > m_budgetBytes && m_interval < (std::size_t(1) << 20)) {
+        m_interval *= 2;
+        for (auto it = m_checkpoints.begin(); it != m_checkpoints.end();) {
+            if (!it->second.pinned && it->first % m_interval != 0) {
+                m_checkpointBytes -= it->second.state->memoryBytes();
+                it = m_checkpoints.erase(it);
+            } else {
+                ++it;
+            }
+        }
+    }
+}
+
+std::unique_ptr<sim::World> SimulationRunner::resumeWorld(const std::shared_ptr<const sim::Scene>& scene,
+                                                          std::size_t resumeFrame)
+{
+    Checkpoint from;
+    std::size_t fromFrame = 0;
+    {
+        std::lock_guard lock(m_mutex);
+        auto it = m_checkpoints.upper_bound(resumeFrame);
+        if (it == m_checkpoints.begin())
+            return nullptr;
+        --it;
+        fromFrame = it->first;
+        from = it->second;
+    }
+    // Frames fromFrame..resumeFrame were recorded with the checkpoint's scene (every
+    // change of scene pins a checkpoint where it took over): step them again with it.
+    // An edit at a resume point (an undo) starts from what was resumed there.
+    Checkpoint before;
+    if (fromFrame == resumeFrame && from.beforeState) {
+        before.scene = from.beforeScene;
+        before.state = from.beforeState;
+    } else {
+        sim::World recorded(*from.scene);
+        recorded.restoreState(*from.state);
+        for (std::size_t f = fromFrame; f < resumeFrame; ++f)
+            recorded.step();
+        before.scene = from.scene;
+        before.state = std::make_shared<const sim::WorldState>(recorded.saveState());
+    }
+    auto edited = std::make_unique<sim::World>(*scene);
+    if (!edited->adoptState(*before.state, *before.scene, *scene))
+        return nullptr;
+
+    {
+        std::lock_guard lock(m_mutex);
+        for (auto it = m_checkpoints.upper_bound(resumeFrame); it != m_checkpoints.end();) {
+            m_checkpointBytes -= it->second.state->memoryBytes();
+            it = m_checkpoints.erase(it);
+        }
+    }
+    keepCheckpoint(resumeFrame, scene, *edited, true, before);
+    return edited;
+}
+
+void SimulationRunner::run(std::shared_ptr<const sim::Scene> scene, std::size_t resumeFrame)
 {
     using Clock = std::chrono::steady_clock;
     std::unique_ptr<sim::World> world;
     std::vector<sim::AgentFrame> frame;
+    std::size_t produced = 0;
     try {
-        world = std::make_unique<sim::World>(scene);
+        if (resumeFrame > 0)
+            world = resumeWorld(scene, resumeFrame);
+        if (world) {
+            produced = resumeFrame + 1;
+        } else {
+            resumeFrame = 0;
+            {
+                std::lock_guard lock(m_mutex);
+                m_checkpoints.clear();
+                m_checkpointBytes = 0;
+            }
+            world = std::make_unique<sim::World>(*scene);
+            keepCheckpoint(0, scene, *world, true, Checkpoint{});
+        }
     } catch (const std::exception& e) {
         std::lock_guard lock(m_mutex);
         m_pending.error = e.what();
@@ -81,8 +205,8 @@ void SimulationRunner::run(sim::Scene scene)
         m_notify();
         return;
     }
-    std::size_t produced = 0;
     std::ptrdiff_t picked = -1;
+    bool firstAfterResume = resumeFrame > 0;
     auto publish = [&](bool first) {
         world->snapshot(frame);
         PickedBrainValues brain{first ? -1 : picked, {}};
@@ -91,8 +215,12 @@ void SimulationRunner::run(sim::Scene scene)
         std::lock_guard lock(m_mutex);
         if (first) {
             m_pending.agents = world->agentInfo();
-            m_pending.fps = scene.settings.fps;
+            m_pending.fps = scene->settings.fps;
         }
+        // Only the first batch after a resume says so: the controller drops what it holds
+        // after the resume frame once, not again for every batch.
+        if (std::exchange(firstAfterResume, false))
+            m_pending.resumedAt = resumeFrame;
         m_pending.frames.insert(m_pending.frames.end(), frame.begin(), frame.end());
         m_pending.brainValues.push_back(std::move(brain));
         ++m_pending.frameCount;
@@ -101,8 +229,14 @@ void SimulationRunner::run(sim::Scene scene)
             m_notify();
         }
     };
-    publish(true);
-    produced = 1;
+    if (resumeFrame == 0) {
+        publish(true);
+        produced = 1;
+    } else {
+        std::lock_guard lock(m_mutex);
+        m_pending.fps = scene->settings.fps;
+        m_target = std::max(m_target, produced);
+    }
     for (;;) {
         {
             std::unique_lock lock(m_mutex);
@@ -116,10 +250,12 @@ void SimulationRunner::run(sim::Scene scene)
         std::size_t steps = 0;
         // Step in short bursts so stop() and new targets are seen within a few steps.
         while (steps < 8) {
+            std::size_t interval = 0;
             {
                 std::lock_guard lock(m_mutex);
                 if (m_stop || produced >= m_target)
                     break;
+                interval = m_interval;
             }
             if (const std::ptrdiff_t want = m_brainAgent.load(); want != picked) {
                 picked = want >= 0 && std::size_t(want) < world->agentCount() ? want : -1;
@@ -127,6 +263,8 @@ void SimulationRunner::run(sim::Scene scene)
             }
             world->step();
             publish(false);
+            if (produced % interval == 0)
+                keepCheckpoint(produced, scene, *world, false, Checkpoint{});
             ++produced;
             ++steps;
         }

@@ -1,19 +1,29 @@
 #pragma once
 // Steps a World on its own thread and hands the frames over: the GUI thread takes them
-// with takeFrames(). Knows nothing of widgets; the World never leaves its thread.
+// with takeFrames(). Keeps checkpoints of the World (every interval frames, within a byte
+// budget) so that an edit resumes from the edit frame instead of frame 0 (resume; the
+// rule is in simcore/world/WorldState.h). Knows nothing of widgets; the World never
+// leaves its thread.
 
 #include "simcore/brain/BrainEvaluator.h"
 #include "simcore/scene/Scene.h"
 #include "simcore/world/FrameCache.h"
+#include "simcore/world/WorldState.h"
 
 #include <atomic>
 #include <condition_variable>
 #include <cstddef>
 #include <functional>
+#include <map>
+#include <memory>
 #include <mutex>
 #include <string>
 #include <thread>
 #include <vector>
+
+namespace throng::sim {
+class World;
+}
 
 namespace throng::editor {
 
@@ -27,7 +37,21 @@ public:
     // Stops any run, then builds a World of `scene` on the runner thread and records
     // frame 0. Frames are computed up to the target (setTarget).
     void start(const sim::Scene& scene);
+    // Stops any run, then runs the edited `scene` on from frame `editFrame` (> 0) of the
+    // recorded run: from the last checkpoint at or before it, the run is stepped again to
+    // editFrame with the scene it was recorded with, and the edited scene takes over that
+    // state (World::adoptState). Frames 0..editFrame stay as recorded; the batches that
+    // follow carry frames from editFrame + 1 (Batch::resumedAt). When the edit cannot be
+    // resumed (agents added or removed, traffic or settings changed; see WorldState.h),
+    // the run starts again from frame 0 instead, as start() does.
+    void resume(const sim::Scene& scene, std::size_t editFrame);
     void stop();
+    // Checkpoint every `intervalFrames` frames while their bytes stay within `budgetBytes`;
+    // past it the interval doubles and every other checkpoint goes. Call before start().
+    void setCheckpointBudget(std::size_t intervalFrames, std::size_t budgetBytes);
+    // Frames that have a checkpoint, and the bytes they hold (for tests and the status).
+    std::vector<std::size_t> checkpointFrames() const;
+    std::size_t checkpointBytes() const;
     // Computes frames until `frameCount` frames exist (including frame 0).
     void setTarget(std::size_t frameCount);
     // Computes nothing more until the next setTarget; frames already made stay.
@@ -50,6 +74,9 @@ public:
         std::string error;                   // the World could not be built
         // Per frame of `frames`: the picked agent's brain node values (see pickBrainAgent).
         std::vector<PickedBrainValues> brainValues;
+        // Set on the first batch of a resumed run: its frames start at resumedAt + 1 and
+        // frames 0..resumedAt of the recording stay. 0 otherwise.
+        std::size_t resumedAt = 0;
     };
     // Moves out what was computed since the last call.
     Batch takeFrames();
@@ -58,11 +85,25 @@ public:
     bool isComputing() const { return m_computing.load(); }
 
 private:
-    void run(sim::Scene scene);
+    struct Checkpoint {
+        std::shared_ptr<const sim::Scene> scene;  // what the frames from here were simulated with
+        std::shared_ptr<const sim::WorldState> state;
+        bool pinned = false;                      // frame 0 and every resume point: never thinned
+        // At a resume point: the state the edited scene took over and the scene it came
+        // from, so that an edit at this very frame (an undo) resumes from it again.
+        std::shared_ptr<const sim::Scene> beforeScene;
+        std::shared_ptr<const sim::WorldState> beforeState;
+    };
+    void launch(sim::Scene scene, std::size_t resumeFrame);
+    void run(std::shared_ptr<const sim::Scene> scene, std::size_t resumeFrame);
+    // On the runner thread: the World to go on with from resumeFrame, or null to start over.
+    std::unique_ptr<sim::World> resumeWorld(const std::shared_ptr<const sim::Scene>& scene, std::size_t resumeFrame);
+    void keepCheckpoint(std::size_t frame, const std::shared_ptr<const sim::Scene>& scene, const sim::World& world,
+                        bool pinned, Checkpoint before);
 
     std::function<void()> m_notify;
     std::thread m_thread;
-    std::mutex m_mutex;
+    mutable std::mutex m_mutex;
     std::condition_variable m_wake;
     std::size_t m_target = 1;
     bool m_stop = false;
@@ -71,6 +112,11 @@ private:
     std::atomic<double> m_stepsPerSecond{0.0};
     std::atomic<bool> m_computing{false};
     std::atomic<std::ptrdiff_t> m_brainAgent{-1};
+    // Written by the runner thread (under m_mutex), read by start/resume once it stopped.
+    std::map<std::size_t, Checkpoint> m_checkpoints;
+    std::size_t m_checkpointBytes = 0;
+    std::size_t m_interval = 24;
+    std::size_t m_budgetBytes = std::size_t(512) << 20;
 };
 
 }  // namespace throng::editor

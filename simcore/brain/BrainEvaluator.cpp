@@ -51,6 +51,16 @@ void BrainEvaluator::resetAgentState(std::size_t agent)
         m_state[c][agent] = m_program->stateInitial[c];
 }
 
+void BrainEvaluator::setStateColumns(const std::vector<std::vector<float>>& columns)
+{
+    if (columns.size() != m_state.size())
+        return;
+    for (const std::vector<float>& c : columns)
+        if (c.size() != m_agents)
+            return;
+    m_state = columns;
+}
+
 const float* BrainEvaluator::column(std::uint32_t slot) const
 {
     return m_values.data() + m_offset[slot];

@@ -60,6 +60,10 @@ public:
     // Gives agent `to` the state of agent `from` (for a swap-and-pop removal).
     void moveAgentState(std::size_t from, std::size_t to);
     void resetAgentState(std::size_t agent);
+    // Every agent's state, per state column (checkpoints); setStateColumns takes columns
+    // of the same shape (state column count x agentCount), else changes nothing.
+    const std::vector<std::vector<float>>& stateColumns() const { return m_state; }
+    void setStateColumns(const std::vector<std::vector<float>>& columns);
 
     // Runs one step for every agent. Returns false and says why in `error` when the
     // inputs do not match the program (a missing column); nothing is evaluated then.

@@ -25,6 +25,7 @@
 namespace throng::sim {
 
 class BrainEvaluator;
+struct WorldState;
 namespace detail {
 struct TypeBrain;
 struct WorldBrains;
@@ -113,7 +114,20 @@ public:
     // -1 picks nobody. Agent i's index among its batch's agents is what the evaluator sees.
     void pickBrainAgent(std::ptrdiff_t i);
 
+    // Checkpoints (WorldState.cpp). saveState: everything the next steps read. restoreState:
+    // puts a checkpoint of a World of the same scene back (throws std::invalid_argument
+    // when its agents differ); the steps from there are bit-identical. adoptState: this
+    // World, built from `thisScene`, an edit of `stateScene`, continues from a checkpoint of
+    // a World of `stateScene` by the rule in WorldState.h; false (nothing changed) when it
+    // cannot, and the caller runs the edited scene from its start instead.
+    WorldState saveState() const;
+    void restoreState(const WorldState& state);
+    bool adoptState(const WorldState& state, const Scene& stateScene, const Scene& thisScene);
+
 private:
+    // keepBrain: per agent, 0 = its brain memory starts afresh (empty: all keep theirs).
+    void restoreDynamicState(const WorldState& state, const std::vector<std::uint8_t>& keepBrain);
+
     struct TypeParams {
         float radius, maxSpeed, maxForce, mass, perception;
         float cosHalfView;  // view cone: cos(view angle / 2); -1 = all round

@@ -1,0 +1,98 @@
+// Issue 6's figure: the time from an edit at frame F of a scene to the next frame the
+// editor can show, when the run starts over from frame 0 (before) and when it resumes from
+// the last checkpoint (after; as editor/simulation/SimulationRunner does: step the recorded
+// scene from the checkpoint to F, adopt the state into the edited scene, step once).
+// The edit is a wall across the crossroads' north-west sidewalk. Prints one JSON object.
+// Usage: throng-bench-resume SCENE.yaml [FRAME] [INTERVAL]
+#include "simcore/io/SceneIO.h"
+#include "simcore/world/World.h"
+#include "simcore/world/WorldState.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <iterator>
+#include <map>
+#include <memory>
+
+using namespace throng::sim;
+
+namespace {
+
+double msSince(std::chrono::steady_clock::time_point t)
+{
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
+}
+
+}  // namespace
+
+int main(int argc, char** argv)
+{
+    if (argc < 2) {
+        std::fprintf(stderr, "usage: throng-bench-resume SCENE.yaml [FRAME] [INTERVAL]\n");
+        return 2;
+    }
+    const LoadResult loaded = loadScene(argv[1]);
+    if (!loaded.ok()) {
+        std::fprintf(stderr, "%s\n", loaded.diagnostics.front().format().c_str());
+        return 1;
+    }
+    const std::size_t editFrame = argc > 2 ? std::size_t(std::atol(argv[2])) : 1000;
+    const std::size_t interval = argc > 3 ? std::size_t(std::atol(argv[3])) : 24;
+    const Scene& scene = loaded.scene;
+    Scene edited = scene;
+    edited.walls.push_back({"", {{-8.9f, -25.0f}, {-5.2f, -25.0f}}});
+
+    // The recording, with a checkpoint every `interval` frames.
+    using Clock = std::chrono::steady_clock;
+    std::map<std::size_t, WorldState> checkpoints;
+    double saveMs = 0.0, stepMs = 0.0;
+    std::size_t bytes = 0;
+    {
+        World world(scene);
+        checkpoints.emplace(0, world.saveState());
+        for (std::size_t f = 1; f <= editFrame; ++f) {
+            auto t = Clock::now();
+            world.step();
+            stepMs += msSince(t);
+            if (f % interval == 0) {
+                t = Clock::now();
+                auto it = checkpoints.emplace(f, world.saveState()).first;
+                saveMs += msSince(t);
+                bytes += it->second.memoryBytes();
+            }
+        }
+    }
+
+    // Before: the edited scene from frame 0 until frame editFrame + 1 exists again.
+    auto t = Clock::now();
+    World restarted(edited);
+    const double restartFirstMs = msSince(t);
+    for (std::size_t f = 0; f <= editFrame; ++f)
+        restarted.step();
+    const double restartMs = msSince(t);
+
+    // After: from the last checkpoint at or before the edit.
+    t = Clock::now();
+    const auto from = std::prev(checkpoints.upper_bound(editFrame));
+    World recorded(scene);
+    recorded.restoreState(from->second);
+    for (std::size_t f = from->first; f < editFrame; ++f)
+        recorded.step();
+    World resumed(edited);
+    const bool adopted = resumed.adoptState(recorded.saveState(), scene, edited);
+    resumed.step();
+    const double resumeMs = msSince(t);
+
+    std::printf("{\"scene\": \"%s\", \"agents\": %zu, \"edit_frame\": %zu, \"checkpoint_interval\": %zu,\n"
+                " \"checkpoints\": %zu, \"checkpoint_bytes_each\": %zu, \"checkpoint_save_ms_each\": %.3f,\n"
+                " \"step_ms_mean\": %.3f, \"adopted\": %s,\n"
+                " \"restart_first_frame_ms\": %.1f, \"restart_to_next_frame_ms\": %.1f,\n"
+                " \"resume_to_next_frame_ms\": %.1f, \"speedup\": %.1f}\n",
+                argv[1], resumed.agentCount(), editFrame, interval, checkpoints.size(),
+                bytes / std::max<std::size_t>(1, checkpoints.size() - 1), saveMs / double(checkpoints.size() - 1),
+                stepMs / double(editFrame), adopted ? "true" : "false", restartFirstMs, restartMs, resumeMs,
+                restartMs / resumeMs);
+    return adopted ? 0 : 1;
+}

@@ -1,0 +1,296 @@
+// Checkpoints of a World: saving, restoring into a World of the same scene, and adopting
+// into a World of an edited scene (the rule is in WorldState.h). Kept out of the step
+// files; the lists below are the one place that names the World's state arrays, so a
+// renamed or new array is added here.
+#include "simcore/world/WorldState.h"
+
+#include "simcore/world/World.h"
+#include "simcore/world/detail/WorldBrains.h"
+
+#include <map>
+#include <stdexcept>
+
+namespace throng::sim {
+
+// Per-agent arrays of the World (m_NAME) and of the WorldState (NAME), copied whole.
+#define THRONG_AGENT_COLUMNS(X)                                                                          \
+    X(pos) X(vel) X(fwd) X(side) X(up) X(nextPos) X(nextVel) X(nextFwd) X(nextSide) X(nextUp)             \
+    X(resolvedPos) X(wander) X(nextWander) X(radius) X(maxSpeed) X(phase) X(stride) X(arrivalTime) X(goal) \
+    X(path) X(leader) X(goalSpot) X(arrived) X(stopped) X(stoppedBefore) X(onCrosswalk) X(nearCount)     \
+    X(out) X(nearIndex)
+
+// Per-agent navigation arrays (m_nav.NAME in the World).
+#define THRONG_NAV_COLUMNS(X)                                                                             \
+    X(plan, plan) X(planGoal, planGoal) X(waypoint, waypoint) X(waypointRadiusM, waypointRadiusM)          \
+    X(sideStepS, sideStepS) X(stall, stall) X(replan, replan) X(hasTarget, hasTarget) X(waiting, waiting) \
+    X(waitingNext, waitingNext) X(sideDir, sideDir) X(target, target) X(mode, navMode)
+
+std::size_t WorldState::memoryBytes() const
+{
+    std::size_t bytes = sizeof(WorldState) + agents.size() * sizeof(AgentInfo) + grid.memoryBytes();
+#define THRONG_BYTES(name) bytes += name.size() * sizeof(name[0]);
+    THRONG_AGENT_COLUMNS(THRONG_BYTES)
+#undef THRONG_BYTES
+#define THRONG_BYTES(world, name) bytes += name.size() * sizeof(name[0]);
+    THRONG_NAV_COLUMNS(THRONG_BYTES)
+#undef THRONG_BYTES
+    bytes += signal.size() * sizeof(PedestrianSignal) +
+             (pedestriansBefore.size() + pedestriansAfter.size()) * sizeof(PedestrianView);
+    if (trafficSystem)
+        bytes += trafficSystem->vehicleCount() * 128;
+    for (const auto& type : brainState)
+        for (const auto& column : type)
+            bytes += column.size() * sizeof(float);
+    for (const auto& column : tagValues)
+        bytes += column.size() * sizeof(float);
+    return bytes + brainBatch.size() * sizeof(std::int32_t) + (brainLocal.size() + brainAction.size()) * 6 + vehicleSpeed.size() * sizeof(float);
+}
+
+bool sameTrafficSet(const Scene& a, const Scene& b)
+{
+    if (!(a.settings == b.settings && a.lanes == b.lanes && a.crosswalks == b.crosswalks &&
+          a.trafficLights == b.trafficLights && a.vehicles == b.vehicles))
+        return false;
+    std::map<std::string, const AgentType*> vehicleTypes;
+    for (const AgentType& t : a.agentTypes)
+        if (t.kind == AgentKind::Vehicle)
+            vehicleTypes[t.name] = &t;
+    std::size_t seen = 0;
+    for (const AgentType& t : b.agentTypes) {
+        if (t.kind != AgentKind::Vehicle)
+            continue;
+        const auto it = vehicleTypes.find(t.name);
+        if (it == vehicleTypes.end() || !(*it->second == t))
+            return false;
+        ++seen;
+    }
+    return seen == vehicleTypes.size();
+}
+
+namespace {
+
+bool sameCells(const NavGrid& a, const NavGrid& b)
+{
+    if (a.cellCount() != b.cellCount() || a.cellM() != b.cellM())
+        return false;
+    if (a.cellCount() == 0)
+        return true;
+    if (a.centre(a.cellAt(0)) != b.centre(b.cellAt(0)) || a.cols() != b.cols())
+        return false;
+    for (int i = 0; i < a.cellCount(); ++i)
+        if (a.walkableIndex(i) != b.walkableIndex(i))
+            return false;
+    return true;
+}
+
+}  // namespace
+
+WorldState World::saveState() const
+{
+    WorldState s;
+    s.step = m_step;
+    s.seed = m_seed;
+    s.agents = m_info;
+    s.counters = m_counters;
+    s.grid = m_grid;
+    s.gridCurrent = m_gridCurrent;
+#define THRONG_SAVE(name) s.name = m_##name;
+    THRONG_AGENT_COLUMNS(THRONG_SAVE)
+#undef THRONG_SAVE
+    s.trafficSystem = m_traffic.system;
+    s.signal = m_traffic.signal;
+    s.pedestriansBefore = m_traffic.before;
+    s.pedestriansAfter = m_traffic.after;
+    s.navCounters = m_nav.counters;
+    s.navGrid = m_nav.grid;
+    s.planCache = m_nav.cache;
+#define THRONG_SAVE(world, name) s.name = m_nav.world;
+    THRONG_NAV_COLUMNS(THRONG_SAVE)
+#undef THRONG_SAVE
+    if (m_brains) {
+        const detail::WorldBrains& wb = *m_brains;
+        s.hasBrains = true;
+        for (const detail::TypeBrain& tb : wb.types)
+            s.brainState.push_back(tb.evaluator ? tb.evaluator->stateColumns() : std::vector<std::vector<float>>{});
+        s.brainBatch = wb.batch;
+        s.brainLocal = wb.local;
+        s.brainAction = wb.action;
+        s.tags = wb.tags;
+        s.tagValues = wb.tagValues;
+        s.vehicleSpeed = wb.vehicleSpeed;
+    }
+    return s;
+}
+
+void World::restoreState(const WorldState& state)
+{
+    bool same = state.agents.size() == m_info.size() && state.seed == m_seed;
+    for (std::size_t i = 0; same && i < m_info.size(); ++i)
+        same = state.agents[i].id == m_info[i].id && state.agents[i].typeIndex == m_info[i].typeIndex;
+    if (!same)
+        throw std::invalid_argument("restoreState: the checkpoint is of a World with other agents or seed");
+    restoreDynamicState(state, {});
+}
+
+// Everything of the checkpoint, whatever the scene: adoptState puts the edited scene's
+// parameters back afterwards.
+void World::restoreDynamicState(const WorldState& s, const std::vector<std::uint8_t>& keepBrain)
+{
+    m_step = s.step;
+    m_counters = s.counters;
+#define THRONG_RESTORE(name) m_##name = s.name;
+    THRONG_AGENT_COLUMNS(THRONG_RESTORE)
+#undef THRONG_RESTORE
+    if (m_traffic.system && s.trafficSystem)
+        m_traffic.system = s.trafficSystem;
+    m_traffic.signal = s.signal;
+    m_traffic.before = s.pedestriansBefore;
+    m_traffic.after = s.pedestriansAfter;
+    m_nav.counters = s.navCounters;
+#define THRONG_RESTORE(world, name) m_nav.world = s.name;
+    THRONG_NAV_COLUMNS(THRONG_RESTORE)
+#undef THRONG_RESTORE
+    // Plans are stamped with their grid's generation: on the same cells take the saved grid
+    // (and so its generation) with them; on other cells every A* walker plans again.
+    if (sameCells(s.navGrid, m_nav.grid)) {
+        m_nav.grid = s.navGrid;
+        m_nav.cache = s.planCache;
+    } else {
+        for (std::size_t i = 0; i < m_nav.plan.size(); ++i) {
+            m_nav.plan[i] = nullptr;
+            m_nav.planGoal[i] = -1;
+            m_nav.waypoint[i] = 0;
+        }
+    }
+    // A grid of other cells (an edit changed a perception radius) is rebuilt by the next step.
+    const bool sameCells = s.grid.cellM() == m_grid.cellM() && s.grid.sortedByHeight() == m_grid.sortedByHeight();
+    if (sameCells)
+        m_grid = s.grid;
+    m_gridCurrent = sameCells && s.gridCurrent;
+    if (!m_brains || !s.hasBrains)
+        return;
+    detail::WorldBrains& wb = *m_brains;
+    // Brain memory, agent by agent, where the agent's old and new type run programs with
+    // the same state columns (adoptState has checked that they are the same brain).
+    std::vector<std::vector<std::vector<float>>> columns(wb.types.size());
+    for (std::size_t t = 0; t < wb.types.size(); ++t)
+        if (wb.types[t].evaluator)
+            columns[t] = wb.types[t].evaluator->stateColumns();
+    for (std::size_t i = 0; i < m_info.size() && i < s.brainLocal.size() && i < s.brainBatch.size(); ++i) {
+        if (s.brainBatch[i] < 0 || wb.batch[i] < 0)
+            continue;
+        const auto t0 = std::size_t(s.brainBatch[i]), t1 = std::size_t(wb.batch[i]);
+        const std::int32_t l0 = s.brainLocal[i], l1 = wb.local[i];
+        if ((!keepBrain.empty() && !keepBrain[i]) || l0 < 0 || l1 < 0 || t0 >= s.brainState.size() || s.brainState[t0].size() != columns[t1].size())
+            continue;
+        for (std::size_t c = 0; c < columns[t1].size(); ++c)
+            columns[t1][c][std::size_t(l1)] = s.brainState[t0][c][std::size_t(l0)];
+        wb.action[i] = s.brainAction[i];
+    }
+    for (std::size_t t = 0; t < wb.types.size(); ++t)
+        if (wb.types[t].evaluator)
+            wb.types[t].evaluator->setStateColumns(columns[t]);
+    for (std::size_t k = 0; k < wb.tags.size(); ++k)
+        for (std::size_t j = 0; j < s.tags.size(); ++j)
+            if (s.tags[j] == wb.tags[k] && s.tagValues[j].size() == wb.tagValues[k].size())
+                wb.tagValues[k] = s.tagValues[j];
+    if (s.vehicleSpeed.size() == wb.vehicleSpeed.size())
+        wb.vehicleSpeed = s.vehicleSpeed;
+}
+
+namespace {
+
+struct Declared {
+    std::string goal, path;
+};
+
+// Each agent's goal and path as its scene declares them, in the World's dense order:
+// placed agents, then every group's members (vehicles and heroes, after them, have none).
+std::vector<Declared> declaredLegs(const Scene& scene)
+{
+    std::vector<Declared> out;
+    for (const Agent& a : scene.agents)
+        out.push_back({a.goal, a.path});
+    for (const SpawnGroup& g : scene.groups)
+        out.insert(out.end(), g.count, Declared{g.goal, g.path});
+    return out;
+}
+
+template <typename T>
+std::int32_t remapByName(std::int32_t index, const std::vector<T>& from, const std::vector<T>& to)
+{
+    if (index < 0 || std::size_t(index) >= from.size())
+        return -1;
+    for (std::size_t k = 0; k < to.size(); ++k)
+        if (to[k].name == from[std::size_t(index)].name)
+            return std::int32_t(k);
+    return -1;
+}
+
+// The brain agent i runs: a placed agent's own brain, else its type's.
+const BrainGraph* brainOf(const Scene& scene, std::size_t i, std::size_t type)
+{
+    if (i < scene.agents.size() && !scene.agents[i].brain.empty())
+        return scene.findBrain(scene.agents[i].brain);
+    const std::string& name = scene.agentTypes[type].brain;
+    return name.empty() ? nullptr : scene.findBrain(name);
+}
+
+}  // namespace
+
+bool World::adoptState(const WorldState& s, const Scene& stateScene, const Scene& thisScene)
+{
+    bool same = s.agents.size() == m_info.size() && s.seed == m_seed && sameTrafficSet(stateScene, thisScene);
+    for (std::size_t i = 0; same && i < m_info.size(); ++i)
+        same = s.agents[i].id == m_info[i].id;
+    if (!same)
+        return false;
+    const std::size_t n = m_info.size();
+    std::vector<std::uint8_t> keepBrain(n, 1);
+    for (std::size_t i = 0; i < n; ++i) {
+        const BrainGraph* before = brainOf(stateScene, i, s.agents[i].typeIndex);
+        const BrainGraph* after = brainOf(thisScene, i, m_info[i].typeIndex);
+        keepBrain[i] = before && after && *before == *after ? 1 : 0;
+    }
+    // The edited scene's parameters and fresh legs, as this World was built.
+    const auto radius = m_radius, maxSpeed = m_maxSpeed, stride = m_stride, arrivalTime = m_arrivalTime;
+    const auto leader = m_leader, goal = m_goal, path = m_path;
+    const auto goalSpot = m_goalSpot;
+    const auto mode = m_nav.mode;
+    const auto waypointRadiusM = m_nav.waypointRadiusM;
+    restoreDynamicState(s, keepBrain);
+    m_radius = radius;
+    m_maxSpeed = maxSpeed;
+    m_stride = stride;
+    m_leader = leader;
+    m_nav.waypointRadiusM = waypointRadiusM;
+
+    const std::vector<Declared> legsBefore = declaredLegs(stateScene), legsAfter = declaredLegs(thisScene);
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::int32_t g = remapByName(s.goal[i], stateScene.goals, thisScene.goals);
+        const std::int32_t p = remapByName(s.path[i], stateScene.paths, thisScene.paths);
+        const bool declaredSame = i >= legsBefore.size() || i >= legsAfter.size() ||
+                                  (legsBefore[i].goal == legsAfter[i].goal && legsBefore[i].path == legsAfter[i].path);
+        const bool legKept = declaredSame && (s.goal[i] < 0) == (g < 0) && (s.path[i] < 0) == (p < 0);
+        if (legKept) {
+            m_goal[i] = g;
+            m_path[i] = p;
+        } else {
+            m_goal[i] = goal[i];
+            m_path[i] = path[i];
+            m_goalSpot[i] = goalSpot[i];
+            m_arrivalTime[i] = arrivalTime[i];
+            m_arrived[i] = m_stopped[i] = m_stoppedBefore[i] = 0;
+        }
+        const bool replans = !legKept || mode[i] != m_nav.mode[i] || !(stateScene.goals == thisScene.goals);
+        m_nav.mode[i] = mode[i];
+        if (replans) {
+            m_nav.plan[i] = nullptr;
+            m_nav.planGoal[i] = -1;
+            m_nav.waypoint[i] = 0;
+        }
+    }
+    return true;
+}
+
+}  // namespace throng::sim

@@ -1,0 +1,102 @@
+#pragma once
+// A checkpoint of a World: everything the next steps read that the scene does not give
+// (per-agent motion, arrival, navigation, signal and brain state, traffic, counters, the
+// step). World::saveState fills it, World::restoreState / adoptState (WorldState.cpp)
+// put it back. Plain data; never steps and never refers back to the World.
+//
+// The resume rule (issue 6, "editing the scene invalidates frames from the edit on"):
+// frames before the edit frame stay as they were; from the edit frame on, the *edited*
+// scene runs from the state at that frame. adoptState decides what of the state carries
+// over into a World built from the edited scene:
+//  - it refuses (returns false; the caller restarts from frame 0) when the edit adds or
+//    removes agents (so the recorded frames always have one agent count), or changes the
+//    settings (fps, seed, bounds), lanes, crosswalks, traffic lights, vehicles or a
+//    vehicle type (the traffic system's state is then not the edited scene's);
+//  - otherwise every agent keeps its motion (position, velocity, frame, wander, gait
+//    phase), arrival, signal and exit state, and its brain memory when its type keeps the
+//    same brain; its body and type parameters (type, radius, max speed, stride, leader,
+//    navigation mode) come from the edited scene;
+//  - an agent whose declared goal or path changed takes the edited one and starts that
+//    leg afresh (not arrived, no plan); others keep the goal their brain may have chosen;
+//  - when the navigation grid changed (walls, obstacles, a walker's radius), every A*
+//    walker plans again from where it stands; walls, obstacles, lights, paths and fields
+//    always come from the edited scene.
+
+#include "simcore/nav/NavFollow.h"
+#include "simcore/nav/PlanCache.h"
+#include "simcore/scene/Scene.h"
+#include "simcore/steering/Wander.h"
+#include "simcore/traffic/TrafficSystem.h"
+#include "simcore/world/FrameCache.h"
+#include "simcore/world/NeighbourGrid.h"
+#include "simcore/world/StepCounters.h"
+#include "simcore/world/WorldNav.h"
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace throng::sim {
+
+struct WorldState {
+    std::uint64_t step = 0;
+    std::uint64_t seed = 0;
+    std::vector<AgentInfo> agents;  // dense order: ids and type indices
+    StepCounters counters;
+    // The neighbour grid as the last step left it (built before that step's last moves).
+    NeighbourGrid grid;
+    bool gridCurrent = false;
+
+    // Per agent, dense order (the World's arrays of the same names).
+    std::vector<glm::vec3> pos, vel, fwd, side, up, nextPos, nextVel, nextFwd, nextSide, nextUp, resolvedPos;
+    std::vector<WanderState> wander, nextWander;
+    std::vector<float> radius, maxSpeed, phase, stride, arrivalTime;
+    std::vector<std::int32_t> goal, path, leader;
+    std::vector<glm::vec2> goalSpot;
+    std::vector<std::uint8_t> arrived, stopped, stoppedBefore, onCrosswalk, nearCount, out;
+    std::vector<std::uint32_t> nearIndex;  // World::kMaxNeighbours per agent
+
+    // Traffic.
+    std::optional<TrafficSystem> trafficSystem;
+    std::vector<PedestrianSignal> signal;
+    std::vector<PedestrianView> pedestriansBefore, pedestriansAfter;
+
+    // Navigation.
+    NavCounters navCounters;
+    NavGrid navGrid;  // the plans' grid: its generation keeps them and the cache valid
+    PlanCache planCache;
+    std::vector<Navigation> navMode;
+    std::vector<std::shared_ptr<const NavPlan>> plan;
+    std::vector<std::int32_t> planGoal;
+    std::vector<std::uint32_t> waypoint;
+    std::vector<float> waypointRadiusM, sideStepS;
+    std::vector<StallWatch> stall;
+    std::vector<std::uint8_t> replan, hasTarget, waiting, waitingNext;
+    std::vector<glm::vec2> sideDir, target;
+
+    // Brains (empty when no type has one).
+    bool hasBrains = false;
+    std::vector<std::vector<std::vector<float>>> brainState;  // per brain batch, per state column, per batch-local agent
+    std::vector<std::int32_t> brainBatch;                     // per agent: its batch (type, or type and own brain)
+    std::vector<std::int32_t> brainLocal;                     // per agent: index among its batch's agents, -1 = none
+    std::vector<std::int16_t> brainAction;                    // per agent
+    std::vector<std::string> tags;
+    std::vector<std::vector<float>> tagValues;                // per tag, per agent
+    std::vector<float> vehicleSpeed;                          // per vehicle
+
+    // Bytes this checkpoint holds (its arrays; shared plans and the traffic system's
+    // lane network counted roughly).
+    std::size_t memoryBytes() const;
+};
+
+// True when a World of `b` may take a checkpoint of a World of `a` (see the rule above):
+// same settings, lanes, crosswalks, lights, vehicles and vehicle types.
+bool sameTrafficSet(const Scene& a, const Scene& b);
+
+}  // namespace throng::sim
