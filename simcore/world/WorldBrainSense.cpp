@@ -288,7 +288,7 @@ void World::senseForBrain(TypeBrain& tb)
         // Sound: each channel the type hears once, then every sensor reading it.
         for (const std::uint32_t c : tb.hears) {
             HeardList heard;
-            const std::size_t loud = hearChannel(*m_brains, c, m_grid, m_info, i, p, f, heard);
+            const std::size_t loud = hearChannel(*m_brains, c, m_grid, m_info, m_pos, m_out, i, p, f, heard);
             for (std::size_t s = 0; s < sensors; ++s) {
                 const SensorFill fill = tb.fills[s];
                 if (!isSoundFill(fill) || tb.fillTag[s] != c)
