@@ -107,17 +107,14 @@ private slots:
     void crossroadsCarsDrivenByTheBrainObeyTheLightsAndTouchNobody()
     {
         // The crossroads demo (16 cars on four lanes, two signal groups, 200 walkers on the
-        // crosswalks, a hero) with its cars driven by the shipped car brain for 60 s.
+        // crosswalks, a hero), whose cars the shipped car brain drives, for 60 s.
         LoadResult r = loadScene(THRONG_SOURCE_DIR "/resources/scenes/crossroads.yaml");
         QVERIFY(r.ok());
-        Scene s = r.scene;
-        s.brains.push_back(load("throng: 1\nbrains: [{name: car, file: car.brain.yaml}]\n").brains[0]);
+        const Scene& s = r.scene;
         int cars = 0;
-        for (AgentType& t : s.agentTypes)
+        for (const AgentType& t : s.agentTypes)
             if (t.kind == AgentKind::Vehicle) {
-                t.brain = "car";
-                t.perceptionM = 45.0f;
-                t.viewAngleDeg = 90.0f;
+                QCOMPARE(QString::fromStdString(t.brain), QString("car"));
                 ++cars;
             }
         QCOMPARE(cars, 1);
@@ -133,8 +130,9 @@ private slots:
         for (const StopLineThroughput& line : ts.throughput())
             if (line.lane >= 0)
                 carCrossings += line.crossings;
-        // Traffic flows: the brain-driven cars cross 43 stop lines in the minute (the
-        // car-following model: 37).
+        // Traffic flows: the cars cross stop lines all through the minute.
+        qInfo("crossroads, cars driven by the car brain: %llu stop-line crossings in 60 s",
+              static_cast<unsigned long long>(carCrossings));
         QVERIFY2(carCrossings >= 30, qPrintable(QString::number(carCrossings)));
     }
 
