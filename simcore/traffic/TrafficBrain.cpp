@@ -9,7 +9,7 @@ namespace throng::sim {
 
 namespace {
 constexpr float kBrainResponseS = 1.0f;  // s: the brain's speed is the one wanted this long from now
-}
+}  // namespace
 
 void TrafficSystem::setBrainSpeeds(std::span<const float> wantedMps)
 {
@@ -19,8 +19,11 @@ void TrafficSystem::setBrainSpeeds(std::span<const float> wantedMps)
 
 float TrafficSystem::brainAcceleration(std::size_t i, const FollowingParams& q) const
 {
+    // A brain slows at most at the comfortable rate: braking beyond it is the safety
+    // model's alone (leader, stop line, pedestrians), so a brain's sudden stop cannot
+    // outbrake the car-following of the vehicles behind it.
     const float wanted = std::min(m_brainSpeed[i], m_net.speedLimit(m_lane[i]));
-    return std::clamp((wanted - m_speed[i]) / kBrainResponseS, -q.maxDecel, q.maxAccel);
+    return std::clamp((wanted - m_speed[i]) / kBrainResponseS, -q.comfortDecel, q.maxAccel);
 }
 
 VehicleStopLine TrafficSystem::stopLineAhead(std::size_t i) const

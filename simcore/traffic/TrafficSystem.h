@@ -125,11 +125,12 @@ public:
                                       std::uint32_t pedId) const;
 
     // Brain-driven vehicles (TrafficBrain.cpp): per vehicle, the speed (m/s) its brain
-    // wants one second from now, or NaN to leave it to the car-following model. A
-    // brain-driven vehicle accelerates by (wanted - speed) / 1 s within its maxAccel /
-    // maxDecel (wanted is capped by the lane's speed limit; below 0 it brakes harder than
-    // to a stand within the second, never reversing), and still yields to pedestrians;
-    // the model's leader gap, stop lines and start-up delay are then the brain's business.
+    // wants one second from now, or NaN to leave it to the car-following model alone. A
+    // brain can only lower what the model allows: the vehicle takes the smaller of
+    // (wanted - speed) / 1 s, within -comfortDecel .. maxAccel (wanted capped by the
+    // lane's speed limit; never reversing), and the model's acceleration for its leader
+    // gap, the stop line ahead and the pedestrians, with the model's start-up delay. So
+    // whatever a brain says, gaps, red lights and crosswalks hold as without it.
     // Call before step(); an empty span hands every vehicle back to the model.
     void setBrainSpeeds(std::span<const float> wantedMps);
     // The stop line ahead of vehicle i's front at the current time (its light's phase).

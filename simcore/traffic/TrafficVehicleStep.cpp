@@ -33,14 +33,15 @@ TrafficSystem::NextState TrafficSystem::advanceVehicle(std::size_t i, std::span<
         gap = d - r - m_radius[l];
         leaderSpeed = m_speed[l];
     }
-    const bool byBrain = i < m_brainSpeed.size() && !std::isnan(m_brainSpeed[i]);
-    float a = byBrain ? brainAcceleration(i, q)
-                      : std::min(followingAcceleration(q, v, gap, leaderSpeed), stopLineLimit(i, q, next));
-    a = std::min(a, yieldLimit(i, q, peds));
+    // The car-following model, the stop line and the pedestrians bound every vehicle; a
+    // brain only ever lowers that (it cannot close the gap, run a red or hit a walker).
+    float a = std::min({followingAcceleration(q, v, gap, leaderSpeed), stopLineLimit(i, q, next), yieldLimit(i, q, peds)});
+    if (i < m_brainSpeed.size() && !std::isnan(m_brainSpeed[i]))
+        a = std::min(a, brainAcceleration(i, q));
 
     // Start-up delay: a standing driver moves off only after being free to go for its
     // own random delay, so a queue leaves one car after another, not as one block.
-    if (v < kStandingSpeed && !byBrain) {
+    if (v < kStandingSpeed) {
         if (a > std::min(kGoAccel, 0.5f * q.maxAccel)) {
             next.goTimer += m_dt;
             if (next.goTimer < goDelayS(i, m_stops[i]))

@@ -159,7 +159,7 @@ void World::buildBrains(const Scene& scene)
             tb.itemSetChannel.push_back(sound ? std::int32_t(detail::channelIndex(wb, set.substr(6))) : -1);
         }
     }
-    detail::buildSoundChannels(wb, scene);
+    detail::buildSoundChannels(wb, scene, m_info);
 }
 
 // Brain: sense from the previous state, evaluate each type's program for all its agents,

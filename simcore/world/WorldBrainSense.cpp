@@ -24,6 +24,7 @@ namespace {
 constexpr float kNoneM = 1e6f;        // distance reported when there is nothing (no goal, line, hero)
 constexpr float kWallReachM = 10.0f;  // wall_distance looks this far at most
 constexpr float kStopLineSideM = 1.0f;  // a crosswalk's stop line reaches this far beyond its width
+constexpr float kAlongCos = 0.5f;       // wanting to go within 60 degrees of a crosswalk's axis: onto it
 
 // Angle of d from the heading f (both on the ground), degrees, + = left.
 float bearingDeg(glm::vec2 f, glm::vec2 d)
@@ -196,6 +197,12 @@ void World::senseForBrain(TypeBrain& tb)
                 } else {
                     // The stop line ahead: an end of a lit crosswalk this agent walks toward
                     // and has not passed; its light, and the gap from the body to the line.
+                    // "Toward" as the traffic signal has it: the way it wants to go (its path
+                    // or goal, not its facing, which wobbles while it waits) within 60
+                    // degrees of the crosswalk's axis, so a walker passing the end of a
+                    // crosswalk along the sidewalk is not held at it.
+                    glm::vec2 w = wantedHeading(i);
+                    w = glm::dot(w, w) > 1e-12f ? glm::normalize(w) : f;
                     for (const CrosswalkBox& c : m_crosswalks) {
                         if (c.light < 0)
                             continue;
@@ -208,9 +215,9 @@ void World::senseForBrain(TypeBrain& tb)
                         if (across > c.halfWidth + kStopLineSideM)
                             continue;
                         float d = kNoneM;
-                        if (along < 0.0f && glm::dot(f, dir) > 0.0f)
+                        if (along < 0.0f && glm::dot(w, dir) > kAlongCos)
                             d = -along - m_radius[i];
-                        else if (along > len && glm::dot(f, dir) < 0.0f)
+                        else if (along > len && glm::dot(w, dir) < -kAlongCos)
                             d = along - len - m_radius[i];
                         if (d < gap) {
                             gap = d;
@@ -281,7 +288,7 @@ void World::senseForBrain(TypeBrain& tb)
         // Sound: each channel the type hears once, then every sensor reading it.
         for (const std::uint32_t c : tb.hears) {
             HeardList heard;
-            const std::size_t loud = hearChannel(*m_brains, c, m_grid, m_info, i, p, f, heard);
+            const std::size_t loud = hearChannel(*m_brains, c, m_grid, m_info, m_pos, m_out, i, p, f, heard);
             for (std::size_t s = 0; s < sensors; ++s) {
                 const SensorFill fill = tb.fills[s];
                 if (!isSoundFill(fill) || tb.fillTag[s] != c)

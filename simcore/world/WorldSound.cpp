@@ -50,11 +50,11 @@ std::uint32_t channelIndex(WorldBrains& wb, const std::string& name)
     for (std::size_t c = 0; c < wb.channels.size(); ++c)
         if (wb.channels[c].name == name)
             return std::uint32_t(c);
-    wb.channels.push_back({name, {}, 0.0f});
+    wb.channels.push_back({name, {}, 0.0f, {}});
     return std::uint32_t(wb.channels.size() - 1);
 }
 
-void buildSoundChannels(WorldBrains& wb, const Scene& scene)
+void buildSoundChannels(WorldBrains& wb, const Scene& scene, std::span<const AgentInfo> info)
 {
     for (SoundChannel& c : wb.channels) {
         c.beacons.clear();
@@ -78,10 +78,20 @@ void buildSoundChannels(WorldBrains& wb, const Scene& scene)
             wb.channels[c].agentReachM = std::max(wb.channels[c].agentReachM, e.radiusM);
         }
     }
+    for (std::size_t c = 0; c < wb.channels.size(); ++c) {
+        std::vector<std::uint32_t>& list = wb.channels[c].emitters;
+        list.clear();
+        for (std::size_t j = 0; j < info.size() && list.size() <= kDirectEmitters; ++j)
+            if (wb.typeEmits[info[j].typeIndex] == std::int32_t(c))
+                list.push_back(std::uint32_t(j));
+        if (list.size() > kDirectEmitters)
+            list.clear();
+    }
 }
 
 std::size_t hearChannel(const WorldBrains& wb, std::uint32_t c, const NeighbourGrid& grid,
-                        std::span<const AgentInfo> info, std::size_t self, glm::vec2 p, glm::vec2 f,
+                        std::span<const AgentInfo> info, std::span<const glm::vec3> positions,
+                        std::span<const std::uint8_t> gone, std::size_t self, glm::vec2 p, glm::vec2 f,
                         HeardList& out)
 {
     const SoundChannel& channel = wb.channels[c];
@@ -101,13 +111,21 @@ std::size_t hearChannel(const WorldBrains& wb, std::uint32_t c, const NeighbourG
         const Beacon& s = channel.beacons[b];
         consider({s.x, s.z}, s.strength, s.radiusM, b);
     }
-    if (channel.agentReachM > 0.0f)
-        grid.forEachNear(p, channel.agentReachM, [&](std::uint32_t j, const glm::vec3& q) {
-            const std::uint16_t t = info[j].typeIndex;
-            if (j == self || wb.typeEmits[t] != std::int32_t(c))
-                return;
-            consider({q.x, q.z}, wb.typeEmitStrength[t], wb.typeEmitRadiusM[t], (std::uint64_t(1) << 32) + j);
-        });
+    // A few emitters are checked one by one; many through the grid. Either way the same
+    // sources are offered, and offer() orders them fully, so the answer is the same.
+    auto emitter = [&](std::uint32_t j, const glm::vec3& q) {
+        const std::uint16_t t = info[j].typeIndex;
+        if (j == self || wb.typeEmits[t] != std::int32_t(c))
+            return;
+        consider({q.x, q.z}, wb.typeEmitStrength[t], wb.typeEmitRadiusM[t], (std::uint64_t(1) << 32) + j);
+    };
+    if (!channel.emitters.empty()) {
+        for (const std::uint32_t j : channel.emitters)
+            if (gone.empty() || !gone[j])
+                emitter(j, positions[j]);
+    } else if (channel.agentReachM > 0.0f) {
+        grid.forEachNear(p, channel.agentReachM, emitter);
+    }
     const glm::vec2 left(f.y, -f.x);
     for (std::size_t k = 0; k < count; ++k) {
         const glm::vec2 d = best[k].offset;

@@ -1,6 +1,6 @@
 // Cars driven by the shipped car brain on a lane: the first waits before its stop line
-// while the light is red and goes on green, the others queue behind it without touching,
-// and a copy of the brain blind to the light runs the red (so the brain is what stops).
+// while the light is red and goes on green, the others queue behind it without touching.
+// (That the car-following model bounds a brain that cannot see: TestWorldBrainCarSafety.)
 #include "TestRegistry.h"
 
 #include "simcore/io/SceneIO.h"
@@ -104,40 +104,17 @@ private slots:
         QCOMPARE(r.collisions, std::uint64_t(0));
     }
 
-    void aBrainBlindToTheLightRunsTheRed()
-    {
-        // The same cars with the brain's "Red" and "Amber" sets moved out of reach: the
-        // car-following model would still have stopped them; the brain does not.
-        Scene s = load(kQueue);
-        BrainGraph& g = s.brains[0];
-        int changed = 0;
-        for (BrainNode& n : g.nodes)
-            if (n.id == 40 || n.id == 41)
-                for (BrainParam& p : n.params)
-                    if (p.key == "points") {
-                        p.numbers.assign(p.numbers.size(), 10.0f);
-                        ++changed;
-                    }
-        QCOMPARE(changed, 2);
-        const QueueRun r = drive(s);
-        QVERIFY(r.redViolations > 0);
-        QVERIFY2(r.crossedAt > 0.0f && r.crossedAt < 12.0f, qPrintable(QString::number(r.crossedAt)));
-    }
-
     void crossroadsCarsDrivenByTheBrainObeyTheLightsAndTouchNobody()
     {
         // The crossroads demo (16 cars on four lanes, two signal groups, 200 walkers on the
-        // crosswalks, a hero) with its cars driven by the shipped car brain for 60 s.
+        // crosswalks, a hero), whose cars the shipped car brain drives, for 60 s.
         LoadResult r = loadScene(THRONG_SOURCE_DIR "/resources/scenes/crossroads.yaml");
         QVERIFY(r.ok());
-        Scene s = r.scene;
-        s.brains.push_back(load("throng: 1\nbrains: [{name: car, file: car.brain.yaml}]\n").brains[0]);
+        const Scene& s = r.scene;
         int cars = 0;
-        for (AgentType& t : s.agentTypes)
+        for (const AgentType& t : s.agentTypes)
             if (t.kind == AgentKind::Vehicle) {
-                t.brain = "car";
-                t.perceptionM = 45.0f;
-                t.viewAngleDeg = 90.0f;
+                QCOMPARE(QString::fromStdString(t.brain), QString("car"));
                 ++cars;
             }
         QCOMPARE(cars, 1);
@@ -153,8 +130,9 @@ private slots:
         for (const StopLineThroughput& line : ts.throughput())
             if (line.lane >= 0)
                 carCrossings += line.crossings;
-        // Traffic flows: the brain-driven cars cross 43 stop lines in the minute (the
-        // car-following model: 37).
+        // Traffic flows: the cars cross stop lines all through the minute.
+        qInfo("crossroads, cars driven by the car brain: %llu stop-line crossings in 60 s",
+              static_cast<unsigned long long>(carCrossings));
         QVERIFY2(carCrossings >= 30, qPrintable(QString::number(carCrossings)));
     }
 

@@ -46,7 +46,12 @@ struct SoundChannel {
     std::string name;
     std::vector<Beacon> beacons;
     float agentReachM = 0.0f;  // the largest radius an agent type emits with on it (0 = none)
+    // The agents that emit on it, by index, when they are few (kDirectEmitters at most):
+    // listeners then check each instead of querying the grid over agentReachM, which in
+    // a dense crowd visits every agent within that reach. Empty = use the grid.
+    std::vector<std::uint32_t> emitters;
 };
+inline constexpr std::size_t kDirectEmitters = 64;
 
 struct TypeBrain {
     std::shared_ptr<const BrainProgram> program;  // null: the type has no brain

@@ -27,18 +27,21 @@ struct Heard {
 constexpr std::size_t kMaxHeard = std::size_t(kBrainNeighbours);
 using HeardList = std::array<Heard, kMaxHeard>;
 
-// Fills wb.channels (beacons, the reach of emitting types) for the channels in
-// wb.channels' names, and wb.typeEmits / typeEmitStrength / typeEmitRadiusM.
-void buildSoundChannels(WorldBrains& wb, const Scene& scene);
+// Fills wb.channels (beacons, the reach of emitting types, the emitting agents when few)
+// for the channels in wb.channels' names, and wb.typeEmits / typeEmitStrength /
+// typeEmitRadiusM. info: every agent of the World, by index.
+void buildSoundChannels(WorldBrains& wb, const Scene& scene, std::span<const AgentInfo> info);
 
 // The index of `name` in wb.channels, added when new.
 std::uint32_t channelIndex(WorldBrains& wb, const std::string& name);
 
 // The loudest sources (at most kMaxHeard, loudest first; ties: nearer first, then
 // beacons in scene order before agents in index order) that agent `self` at p, heading f
-// (unit), hears on channel c. Never hears itself. Returns how many.
+// (unit), hears on channel c. Never hears itself, nor an agent that left (gone[j] != 0;
+// an empty span: nobody left). positions: where the grid has the agents. Returns how many.
 std::size_t hearChannel(const WorldBrains& wb, std::uint32_t c, const NeighbourGrid& grid,
-                        std::span<const AgentInfo> info, std::size_t self, glm::vec2 p, glm::vec2 f,
+                        std::span<const AgentInfo> info, std::span<const glm::vec3> positions,
+                        std::span<const std::uint8_t> gone, std::size_t self, glm::vec2 p, glm::vec2 f,
                         HeardList& out);
 
 }  // namespace throng::sim::detail
