@@ -31,6 +31,8 @@ constexpr float kAvoidRadiusM = 1.0f;         // a stalled walker's detour avoid
 constexpr float kSideStepDurationS = 1.5f;
 constexpr float kQueueGapM = 0.5f;           // m: a walker this close behind a waiting one queues
 constexpr float kCornerReachedM = 0.35f;      // this close to a corner, a walker turns even without a clear view
+constexpr std::uint8_t kMaxQueueDepth = 24;   // walkers in one queue; past it a "queue" with no head is none
+constexpr std::uint8_t kLostSteps = 12;       // steps with the waypoint out of sight before planning afresh
 
 }  // namespace
 
@@ -93,6 +95,7 @@ void World::buildNav(const Scene& scene)
     m_nav.hasTarget.assign(n, 0);
     m_nav.waiting.assign(n, 0);
     m_nav.waitingNext.assign(n, 0);
+    m_nav.lostSteps.assign(n, 0);
     // Plans at load, in agent order: a group starting in one cell shares one plan.
     for (std::size_t i = 0; i < n; ++i)
         if (m_nav.mode[i] == Navigation::AStar && m_goal[i] >= 0 && m_path[i] < 0)
@@ -123,6 +126,13 @@ void World::navBeforeStep()
         } else if (PlanCache::stale(*plan, m_nav.grid)) {
             ++m_nav.counters.stalePlans;
             planNav(i);
+        } else if (m_nav.lostSteps[i] >= kLostSteps) {
+            // Pushed off its way (the crowd at a crossing, a side-step) until a wall or a
+            // kerb stands between the walker and its corner: plan again from where it is.
+            m_nav.lostSteps[i] = 0;
+            m_nav.replan[i] = 0;
+            ++m_nav.counters.lostPlans;
+            planNav(i);
         } else if (m_nav.replan[i]) {
             // Stalled: plan around the spot just ahead (the jam or what it keeps pushing
             // against); with no way round, step aside for a moment instead.
@@ -152,31 +162,34 @@ void World::navBeforeStep()
     // Target: each walker from its own state.
 #pragma omp parallel for schedule(static, 256) num_threads(m_threads)
     for (std::size_t i = 0; i < n; ++i) {
-        m_nav.waitingNext[i] = waitsInQueue(i) ? 1 : 0;
+        m_nav.waitingNext[i] = queueDepth(i);
         updateNavTarget(i);
     }
     m_nav.waiting.swap(m_nav.waitingNext);
 }
 
-bool World::waitsInQueue(std::size_t i) const
+std::uint8_t World::queueDepth(std::size_t i) const
 {
     if (m_stopped[i] || m_traffic.signal.empty() || m_types[m_info[i].typeIndex].kind != AgentKind::Pedestrian)
-        return false;
+        return 0;
     const PedestrianSignal& sig = m_traffic.signal[i];
     if (sig.crosswalk >= 0 && !sig.onCrosswalk && (sig.mustStop || sig.phase != LightPhase::Green))
-        return true;
-    // Right behind a waiting walker, in the way it wants to go: the queue waits too.
-    // Neighbours and flags are the last step's, so the order agents are visited in
-    // does not matter.
+        return 1;
+    // Right behind a waiting walker, in the way it wants to go: the queue waits too, one
+    // place further back. Neighbours and depths are the last step's, so the order agents
+    // are visited in does not matter. Two walkers facing each other would otherwise keep
+    // each other "waiting" for ever (and never re-plan): without a head held at a light,
+    // such a ring's depth grows by one a step until it passes the cap and dissolves.
     const glm::vec2 p = xz(m_pos[i]), way = wantedHeading(i);
     const std::uint32_t* near = &m_nearIndex[i * kMaxNeighbours];
+    std::uint8_t ahead = kMaxQueueDepth;
     for (std::size_t k = 0; k < m_nearCount[i]; ++k) {
         const std::uint32_t j = near[k];
         const glm::vec2 d = xz(m_pos[j]) - p;
         if (m_nav.waiting[j] && glm::length(d) < m_radius[i] + m_radius[j] + kQueueGapM && glm::dot(d, way) > 0.0f)
-            return true;
+            ahead = std::min(ahead, m_nav.waiting[j]);
     }
-    return false;
+    return ahead < kMaxQueueDepth ? std::uint8_t(ahead + 1) : 0;
 }
 
 void World::updateNavTarget(std::size_t i)
@@ -214,6 +227,13 @@ void World::updateNavTarget(std::size_t i)
                 ++k;
             }
             m_nav.waypoint[i] = std::uint32_t(k);
+            // Seen from the nearest walkable cell: a walker brushing a wall stands in its
+            // inflated margin, from where nothing is in sight.
+            const NavGrid& grid = m_nav.grid;
+            const NavCell at = grid.cellOf(p);
+            const glm::vec2 eye = grid.walkable(at) ? p : grid.centre(grid.nearestWalkable(at));
+            const bool inSight = glm::distance(p, w[k]) <= kCornerReachedM || lineOfSight(grid, eye, w[k]);
+            m_nav.lostSteps[i] = inSight ? 0 : std::uint8_t(std::min<int>(m_nav.lostSteps[i] + 1, kLostSteps));
             // The last waypoint is the goal cell's centre: from there on the walker heads
             // for its own spot, as a direct walker does.
             if (k + 1 < w.size()) {
