@@ -291,6 +291,7 @@ void World::snapshot(std::vector<AgentFrame>& out) const
         f.phase = m_phase[i];
         // Clip thresholds relative to a walker: below 0.1 m/s stand, above 2.5 m/s run.
         f.clip = brainClip(i, speed < 0.1f ? Clip::Idle : (speed < 2.5f ? Clip::Walk : Clip::Run));
+        f.out = m_out[i] != 0;
     }
 }
 
