@@ -32,6 +32,8 @@ constexpr float kSideStepDurationS = 1.5f;
 constexpr float kQueueGapM = 0.5f;           // m: a walker this close behind a waiting one queues
 constexpr float kCornerReachedM = 0.35f;      // this close to a corner, a walker turns even without a clear view
 constexpr std::uint8_t kMaxQueueDepth = 24;   // walkers in one queue; past it a "queue" with no head is none
+constexpr float kDensityRadiusM = 1.2f;       // m: the half disk ahead a walker reads the density in
+constexpr float kMinCrowdSpeedFraction = 0.1f;// a jammed walker still edges on
 constexpr std::uint8_t kLostSteps = 12;       // steps with the waypoint out of sight before planning afresh
 
 }  // namespace
@@ -253,8 +255,20 @@ void World::updateNavTarget(std::size_t i)
         if (field.reachable(c)) {
             remainingM = field.distanceM(c);
             const glm::vec2 dir = field.sample(p);
-            if (glm::dot(dir, dir) > 0.0f)
-                aim(dir, 0.0f);
+            if (glm::dot(dir, dir) > 0.0f) {
+                // The fundamental diagram: in a crowd a walker goes no faster than the
+                // density ahead allows, so a door's queue packs no tighter than people do.
+                // Arrival sets the speed from the target's distance, so the target comes
+                // as close as that speed asks.
+                const float slowing = m_steering[m_info[i].typeIndex].arrival.slowingDistanceM;
+                const float fraction = crowdSpeedFraction(i, dir);
+                if (fraction < 1.0f && slowing > 0.0f) {
+                    m_nav.target[i] = p + dir * (slowing * fraction);
+                    m_nav.hasTarget[i] = 1;
+                } else {
+                    aim(dir, 0.0f);
+                }
+            }
         } else if (const NavCell free = grid.nearestWalkable(c); grid.walkable(free) && field.reachable(free)) {
             // Squeezed into a wall's margin (a blocked cell has no direction): back into
             // the nearest walkable cell, where the field takes over again.
@@ -271,6 +285,24 @@ void World::updateNavTarget(std::size_t i)
         m_nav.stall[i] = StallWatch{};
     else if (updateStall(m_nav.stall[i], remainingM, m_dt) && mode == Navigation::AStar)
         m_nav.replan[i] = 1;
+}
+
+float World::crowdSpeedFraction(std::size_t i, glm::vec2 way) const
+{
+    // Weidmann (1993): v(rho) = v0 (1 - exp(-1.913 (1/rho - 1/5.4))), rho in persons/m^2,
+    // from the walkers in the half disk ahead (last step's neighbours: thread-independent).
+    const glm::vec2 p = xz(m_pos[i]);
+    const std::uint32_t* near = &m_nearIndex[i * kMaxNeighbours];
+    int ahead = 0;
+    for (std::size_t k = 0; k < m_nearCount[i]; ++k) {
+        const glm::vec2 d = xz(m_pos[near[k]]) - p;
+        ahead += glm::dot(d, d) < kDensityRadiusM * kDensityRadiusM && glm::dot(d, way) > 0.0f ? 1 : 0;
+    }
+    const float rho = float(ahead) / (0.5f * 3.14159265f * kDensityRadiusM * kDensityRadiusM);
+    if (rho <= 0.0f)
+        return 1.0f;
+    const float fraction = 1.0f - std::exp(-1.913f * (1.0f / rho - 1.0f / 5.4f));
+    return std::clamp(fraction, kMinCrowdSpeedFraction, 1.0f);
 }
 
 bool World::sketchedFlow(glm::vec3 p, glm::vec3& direction) const
