@@ -20,7 +20,7 @@ bool writeAgentFile(const sim::FrameCache& cache, std::size_t agent, const std::
         return false;
     std::string text;
     text.reserve(cache.frameCount() * 48);
-    for (std::size_t f = 0; f < cache.frameCount(); ++f) {
+    for (std::size_t f = 0; f < cache.frameCount() && !cache.at(f, agent).out; ++f) {
         const sim::AgentFrame& a = cache.at(f, agent);
         detail::appendFloat(text, a.position.x);
         text += ' ';

@@ -45,6 +45,7 @@ struct AgentWork {
     std::vector<GaitFrame> gait;
     Pose firstPose;
     std::vector<std::uint32_t> positionKept, yawKept;
+    std::size_t outFrame = 0;  // the first frame it has left through an exit; frames = never
     detail::BakedJoints joints;  // exact mode
 };
 
@@ -227,8 +228,11 @@ ExportResult exportGltf(const sim::Scene& scene, const sim::FrameCache& cache, c
         w.positions.resize(frames);
         w.yaw.resize(frames);
         std::vector<float> speeds(frames);
+        w.outFrame = frames;
         for (std::size_t f = 0; f < frames; ++f) {
             const sim::AgentFrame& a = cache.at(f, i);
+            if (a.out && w.outFrame == frames)
+                w.outFrame = f;
             w.positions[f] = a.position;
             speeds[f] = a.speed;
             // Rotation about +Y by the heading: the character's +X nose turns to (cos h, 0, -sin h).
@@ -302,6 +306,19 @@ ExportResult exportGltf(const sim::Scene& scene, const sim::FrameCache& cache, c
             builder.setUse(detail::GltfBuilder::Use::RootMotion);
             channels.vec3Channel(rig.root, "translation", frameClock, w.positions, w.positionKept);
             channels.rotationChannel(rig.root, w.yaw, frameClock, w.yawKept);
+            if (w.outFrame < frames) {
+                // Gone through an exit: the whole character scales to nothing from that
+                // frame on (STEP, so it never shrinks visibly on the way out).
+                const glm::vec3 shown(w.variation.heightScale);
+                std::vector<float> times{0.0f};
+                std::vector<glm::vec3> scales{shown};
+                if (w.outFrame > 0)
+                    times.push_back(frameClock.times[w.outFrame]);
+                else
+                    scales.clear();
+                scales.emplace_back(0.0f);
+                channels.addSampler(rig.root, "scale", builder.addTimes(times), builder.addVec3Keys(scales), "STEP");
+            }
             builder.setUse(detail::GltfBuilder::Use::Joints);
             if (compact)
                 cycles.bakeAgent(channels, plans[i], rig, pairClock.accessor);

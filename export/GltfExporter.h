@@ -43,7 +43,9 @@ struct GltfExportStats {
 
 // Nodes `agent_<id>_<type>` (AgentId, type name) in the cache's dense order: translation
 // (m) and rotation (about +Y by headingRad, the character's nose on +X) keyed from frame
-// f at f / fps, static scale = the agent's height scale; children `<agent>__<joint>`; a
+// f at f / fps, static scale = the agent's height scale (an agent that leaves through an
+// exit, AgentFrame::out, gets a STEP scale channel: that scale, then 0 from the frame it
+// left); children `<agent>__<joint>`; a
 // scene-root node `<agent>_body` with the agent's own mesh entry and skin. One animation,
 // "crowd". Rotations are normalised int16. Asset and scene extras carry generator
 // "Throng", fps, frameCount, agentCount, mode, seed; each root's extras its variation.

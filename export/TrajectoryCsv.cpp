@@ -52,6 +52,8 @@ ExportResult writeTrajectoryCsv(const sim::FrameCache& cache, const std::string&
             return result;
         }
         for (std::size_t i = 0; i < agents.size(); ++i) {
+            if (cache.at(f, i).out)
+                continue;
             appendRow(text, f, agents[i].id, cache.at(f, i));
             if (text.size() >= kFlushBytes) {
                 file.stream().write(text.data(), static_cast<std::streamsize>(text.size()));

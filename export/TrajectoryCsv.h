@@ -15,6 +15,7 @@ namespace throng::exporting {
 // agent: AgentId; x y z: metres; heading: degrees, 0 = +x, counter-clockwise seen from
 // above (AgentFrame::headingRad converted, not wrapped); speed: m/s; clip: idle|walk|run;
 // phase: gait phase in [0, 1). Floats are the shortest text that reads back exactly.
+// An agent that has left through an exit (AgentFrame::out) has no rows from that frame on.
 // Written to a temporary file beside `path`, then renamed over it.
 ExportResult writeTrajectoryCsv(const sim::FrameCache& cache, const std::string& path,
                                 const ProgressFn& progress = {});

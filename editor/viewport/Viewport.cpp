@@ -153,6 +153,8 @@ void Viewport::setAgents(std::span<const sim::AgentFrame> frames, std::span<cons
     m_glyphs.reserve(n);
     m_agentBox = {};
     for (std::size_t i = 0; i < n; ++i) {
+        if (frames[i].out)
+            continue;  // left through an exit: no longer in the shot
         const std::size_t type = agents[i].typeIndex;
         const float radius = type < m_typeRadiusM.size() ? m_typeRadiusM[type] : kFallbackRadiusM;
         const bool car = type < m_typeIsVehicle.size() && m_typeIsVehicle[type];

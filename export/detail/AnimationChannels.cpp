@@ -9,12 +9,12 @@ AnimationChannels::AnimationChannels(GltfBuilder& builder, tinygltf::Animation& 
 {
 }
 
-void AnimationChannels::addSampler(int node, const char* path, int input, int output)
+void AnimationChannels::addSampler(int node, const char* path, int input, int output, const char* interpolation)
 {
     tinygltf::AnimationSampler sampler;
     sampler.input = input;
     sampler.output = output;
-    sampler.interpolation = "LINEAR";
+    sampler.interpolation = interpolation;
     m_animation.samplers.push_back(std::move(sampler));
     tinygltf::AnimationChannel channel;
     channel.sampler = static_cast<int>(m_animation.samplers.size()) - 1;

@@ -30,8 +30,8 @@ public:
                      const std::vector<std::uint32_t>& kept);
     void rotationChannel(int node, std::span<const glm::quat> keys, const Clock& clock,
                          const std::vector<std::uint32_t>& kept);
-    // A sampler of already-written input and output accessors.
-    void addSampler(int node, const char* path, int input, int output);
+    // A sampler of already-written input and output accessors (LINEAR or STEP).
+    void addSampler(int node, const char* path, int input, int output, const char* interpolation = "LINEAR");
     // Forgets the own-times accessors kept for reuse (call between agents).
     void nextAgent() { m_ownTimes.clear(); }
 

@@ -1,27 +1,25 @@
-# Writes cavalry.yaml: the cone field (seeded jitter), the leader's route and the riders.
+# Writes cavalry.yaml: the cone field (seeded jitter), the leader's route (waypoints; Throng
+# plans the way between them round the cones with A* at load) and the riders.
 # python3 resources/scenes/make_cavalry.py 5000 resources/scenes/cavalry.yaml
 import math, random, sys
 n_riders = int(sys.argv[1]) if len(sys.argv) > 1 else 5000
 out = sys.argv[2] if len(sys.argv) > 2 else "cavalry.yaml"
 rnd = random.Random(4)
 route = [(0,0),(40,0),(80,25),(130,40),(180,25),(220,-15),(270,-40),(320,-25),(360,0),(400,0)]
-def dseg(p,a,b):
-    ax,az=a; bx,bz=b; px,pz=p
-    dx,dz=bx-ax,bz-az; L=dx*dx+dz*dz
-    t=max(0,min(1,((px-ax)*dx+(pz-az)*dz)/L))
-    cx,cz=ax+t*dx,az+t*dz
-    return math.hypot(px-cx,pz-cz)
 cones=[]
 for gx in range(0, 41):
     for gz in range(-11, 12):
         x = 10*gx + rnd.uniform(-2,2); z = 10*gz + rnd.uniform(-2,2)
         if not (5 <= x <= 395): continue
-        if min(dseg((x,z),route[k],route[k+1]) for k in range(len(route)-1)) < 4.0: continue
+        # Only the waypoints are kept clear; the way between them is Throng's to find.
+        if min(math.hypot(x-wx,z-wz) for (wx,wz) in route) < 5.0: continue
         cones.append((round(x,2),round(z,2)))
 L=[]
-L.append("# cavalry.yaml: %d riders chase a fleeing leader along a route laid out through" % n_riders)
-L.append("# a field of cones (circles 0.4 m in radius on a jittered 10 m grid, none within 4 m")
-L.append("# of the route). The leader (priority 10) is as fast as the fastest rider; riders part for it,")
+L.append("# cavalry.yaml: %d riders chase a fleeing leader along a route planned across a field" % n_riders)
+L.append("# of cones (circles 0.4 m in radius on a jittered 10 m grid): the route's points are")
+L.append("# waypoints, and Throng plans the shortest way between them round the cones with A* at")
+L.append("# load (plan: astar), keeping 3 m clear of every cone and smoothed to its corners.")
+L.append("# The leader (priority 10) is as fast as the fastest rider; riders part for it,")
 L.append("# never push it off its line and follow behind it (Reynolds' leader following). The")
 L.append("# stats count leader_overtaken and obstacle_penetrations (both must stay 0).")
 L.append("# Riders run the rider brain: they hear the leader (channel leader), pursue it while far,")
@@ -71,6 +69,8 @@ L.append("  - {name: riders, type: rider, count: %d, rect: {min: [-110, -110], m
 L.append("paths:")
 L.append("  - name: route")
 L.append("    radius: 2")
+L.append("    plan: astar")
+L.append("    clearance: 3")
 L.append("    points: [" + ", ".join("[%g, %g]" % p for p in route) + "]")
 L.append("walls:")
 L.append("  - {name: fence, points: [[-125, -135], [425, -135], [425, 135], [-125, 135], [-125, -135]]}")

@@ -129,6 +129,11 @@ struct Path {
     std::vector<glm::vec2> points;  // >= 2 points
     float radiusM = 1.0f;           // > 0
     bool closed = false;
+    // plan: astar: `points` are waypoints, and the World follows the shortest way between
+    // each and the next round walls and obstacles (planned on the navigation grid at load,
+    // smoothed to its corners), keeping clearanceM from them.
+    bool planned = false;
+    float clearanceM = 1.0f;        // m, > 0; planned paths only
     bool operator==(const Path&) const = default;
 };
 

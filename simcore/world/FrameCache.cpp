@@ -50,6 +50,8 @@ std::uint64_t FrameCache::hash() const
         mix(&f.speed, sizeof f.speed);
         mix(&f.phase, sizeof f.phase);
         mix(&f.clip, sizeof f.clip);
+        const std::uint8_t out = f.out ? 1 : 0;
+        mix(&out, sizeof out);
     }
     return h;
 }

@@ -1,6 +1,6 @@
 #pragma once
 // The recorded frames of a run: per frame and agent what playback and export need
-// (position, heading, speed, clip, gait phase). Filled by the simulation, read by the
+// (position, heading, speed, clip, gait phase, whether it has left the shot). Filled by the simulation, read by the
 // viewport and the exporters; never simulates.
 
 #include <glm/vec3.hpp>
@@ -23,6 +23,9 @@ struct AgentFrame {
     float speed = 0.0f;        // m/s
     float phase = 0.0f;        // gait cycle phase in [0, 1)
     Clip clip = Clip::Idle;
+    // Left through an exit on or before this frame: no longer in the shot (the viewport
+    // draws nothing, exports hide it); position and heading stay where it left.
+    bool out = false;
 };
 
 struct AgentInfo {

@@ -79,6 +79,7 @@ NavStats NavStats::from(const World& world)
         s.planCacheMisses = nav.cache.misses();
         s.replans = nav.counters.replans;
         s.sideSteps = nav.counters.sideSteps;
+        s.lostReplans = nav.counters.lostPlans;
     }
     return s;
 }
@@ -110,6 +111,7 @@ std::string NavStats::jsonFields() const
     field("plan_cache_misses", std::to_string(planCacheMisses));
     field("nav_replans", std::to_string(replans));
     field("nav_side_steps", std::to_string(sideSteps));
+    field("nav_lost_replans", std::to_string(lostReplans));
     return j;
 }
 

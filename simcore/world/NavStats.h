@@ -26,6 +26,7 @@ struct NavStats {
     std::uint64_t shortestPathAgents = 0, shortestPathArrived = 0;  // walkers navigating by A*
     double shortestPathLastArrivalS = -1;  // the latest arrival among them; < 0 = none arrived
     std::uint64_t planCacheHits = 0, planCacheMisses = 0, replans = 0, sideSteps = 0;
+    std::uint64_t lostReplans = 0;  // A* walkers pushed out of sight of their way that planned afresh
 
     static NavStats from(const World& world);
     // The JSON fields (each line "  \"key\": value,\n"), to sit inside RunStats' object.

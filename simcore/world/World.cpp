@@ -1,5 +1,7 @@
 #include "simcore/world/World.h"
 
+#include "simcore/nav/PathPlanning.h"
+
 #include "simcore/scene/TerrainHeight.h"
 #include "simcore/traffic/LightPhase.h"
 #include "simcore/world/Rng.h"
@@ -120,8 +122,9 @@ void World::buildStatics(const Scene& scene)
     m_obstacleGrid.build(obstacleBoxes, 4.0f);
 
     m_goals = scene.goals;
-    m_paths = scene.paths;
-    for (const Path& p : scene.paths) {
+    // Paths marked `plan: astar` become their planned way round the set (PathPlanning).
+    m_paths = plannedPaths(scene);
+    for (const Path& p : m_paths) {
         std::vector<glm::vec3> points;
         for (glm::vec2 q : p.points)
             points.push_back({q.x, 0.0f, q.y});
@@ -322,6 +325,7 @@ void World::snapshot(std::vector<AgentFrame>& out) const
         f.phase = m_phase[i];
         // Clip thresholds relative to a walker: below 0.1 m/s stand, above 2.5 m/s run.
         f.clip = brainClip(i, speed < 0.1f ? Clip::Idle : (speed < 2.5f ? Clip::Walk : Clip::Run));
+        f.out = m_out[i] != 0;
     }
 }
 

@@ -179,7 +179,8 @@ private:
     void planNav(std::size_t i);
     void navBeforeStep();
     void updateNavTarget(std::size_t i);
-    bool waitsInQueue(std::size_t i) const;
+    std::uint8_t queueDepth(std::size_t i) const;
+    float crowdSpeedFraction(std::size_t i, glm::vec2 way) const;  // Weidmann, of free speed, (0, 1]
     bool sketchedFlow(glm::vec3 p, glm::vec3& direction) const;  // false: no sketched field
     glm::vec3 navGoal(std::size_t i, glm::vec3 goalSpot) const;  // where seek and arrival aim
 

@@ -31,6 +31,10 @@ constexpr float kAvoidRadiusM = 1.0f;         // a stalled walker's detour avoid
 constexpr float kSideStepDurationS = 1.5f;
 constexpr float kQueueGapM = 0.5f;           // m: a walker this close behind a waiting one queues
 constexpr float kCornerReachedM = 0.35f;      // this close to a corner, a walker turns even without a clear view
+constexpr std::uint8_t kMaxQueueDepth = 24;   // walkers in one queue; past it a "queue" with no head is none
+constexpr float kDensityRadiusM = 1.2f;       // m: the half disk ahead a walker reads the density in
+constexpr float kMinCrowdSpeedFraction = 0.1f;// a jammed walker still edges on
+constexpr std::uint8_t kLostSteps = 12;       // steps with the waypoint out of sight before planning afresh
 
 }  // namespace
 
@@ -93,6 +97,7 @@ void World::buildNav(const Scene& scene)
     m_nav.hasTarget.assign(n, 0);
     m_nav.waiting.assign(n, 0);
     m_nav.waitingNext.assign(n, 0);
+    m_nav.lostSteps.assign(n, 0);
     // Plans at load, in agent order: a group starting in one cell shares one plan.
     for (std::size_t i = 0; i < n; ++i)
         if (m_nav.mode[i] == Navigation::AStar && m_goal[i] >= 0 && m_path[i] < 0)
@@ -123,6 +128,13 @@ void World::navBeforeStep()
         } else if (PlanCache::stale(*plan, m_nav.grid)) {
             ++m_nav.counters.stalePlans;
             planNav(i);
+        } else if (m_nav.lostSteps[i] >= kLostSteps) {
+            // Pushed off its way (the crowd at a crossing, a side-step) until a wall or a
+            // kerb stands between the walker and its corner: plan again from where it is.
+            m_nav.lostSteps[i] = 0;
+            m_nav.replan[i] = 0;
+            ++m_nav.counters.lostPlans;
+            planNav(i);
         } else if (m_nav.replan[i]) {
             // Stalled: plan around the spot just ahead (the jam or what it keeps pushing
             // against); with no way round, step aside for a moment instead.
@@ -152,31 +164,34 @@ void World::navBeforeStep()
     // Target: each walker from its own state.
 #pragma omp parallel for schedule(static, 256) num_threads(m_threads)
     for (std::size_t i = 0; i < n; ++i) {
-        m_nav.waitingNext[i] = waitsInQueue(i) ? 1 : 0;
+        m_nav.waitingNext[i] = queueDepth(i);
         updateNavTarget(i);
     }
     m_nav.waiting.swap(m_nav.waitingNext);
 }
 
-bool World::waitsInQueue(std::size_t i) const
+std::uint8_t World::queueDepth(std::size_t i) const
 {
     if (m_stopped[i] || m_traffic.signal.empty() || m_types[m_info[i].typeIndex].kind != AgentKind::Pedestrian)
-        return false;
+        return 0;
     const PedestrianSignal& sig = m_traffic.signal[i];
     if (sig.crosswalk >= 0 && !sig.onCrosswalk && (sig.mustStop || sig.phase != LightPhase::Green))
-        return true;
-    // Right behind a waiting walker, in the way it wants to go: the queue waits too.
-    // Neighbours and flags are the last step's, so the order agents are visited in
-    // does not matter.
+        return 1;
+    // Right behind a waiting walker, in the way it wants to go: the queue waits too, one
+    // place further back. Neighbours and depths are the last step's, so the order agents
+    // are visited in does not matter. Two walkers facing each other would otherwise keep
+    // each other "waiting" for ever (and never re-plan): without a head held at a light,
+    // such a ring's depth grows by one a step until it passes the cap and dissolves.
     const glm::vec2 p = xz(m_pos[i]), way = wantedHeading(i);
     const std::uint32_t* near = &m_nearIndex[i * kMaxNeighbours];
+    std::uint8_t ahead = kMaxQueueDepth;
     for (std::size_t k = 0; k < m_nearCount[i]; ++k) {
         const std::uint32_t j = near[k];
         const glm::vec2 d = xz(m_pos[j]) - p;
         if (m_nav.waiting[j] && glm::length(d) < m_radius[i] + m_radius[j] + kQueueGapM && glm::dot(d, way) > 0.0f)
-            return true;
+            ahead = std::min(ahead, m_nav.waiting[j]);
     }
-    return false;
+    return ahead < kMaxQueueDepth ? std::uint8_t(ahead + 1) : 0;
 }
 
 void World::updateNavTarget(std::size_t i)
@@ -214,6 +229,13 @@ void World::updateNavTarget(std::size_t i)
                 ++k;
             }
             m_nav.waypoint[i] = std::uint32_t(k);
+            // Seen from the nearest walkable cell: a walker brushing a wall stands in its
+            // inflated margin, from where nothing is in sight.
+            const NavGrid& grid = m_nav.grid;
+            const NavCell at = grid.cellOf(p);
+            const glm::vec2 eye = grid.walkable(at) ? p : grid.centre(grid.nearestWalkable(at));
+            const bool inSight = glm::distance(p, w[k]) <= kCornerReachedM || lineOfSight(grid, eye, w[k]);
+            m_nav.lostSteps[i] = inSight ? 0 : std::uint8_t(std::min<int>(m_nav.lostSteps[i] + 1, kLostSteps));
             // The last waypoint is the goal cell's centre: from there on the walker heads
             // for its own spot, as a direct walker does.
             if (k + 1 < w.size()) {
@@ -233,8 +255,20 @@ void World::updateNavTarget(std::size_t i)
         if (field.reachable(c)) {
             remainingM = field.distanceM(c);
             const glm::vec2 dir = field.sample(p);
-            if (glm::dot(dir, dir) > 0.0f)
-                aim(dir, 0.0f);
+            if (glm::dot(dir, dir) > 0.0f) {
+                // The fundamental diagram: in a crowd a walker goes no faster than the
+                // density ahead allows, so a door's queue packs no tighter than people do.
+                // Arrival sets the speed from the target's distance, so the target comes
+                // as close as that speed asks.
+                const float slowing = m_steering[m_info[i].typeIndex].arrival.slowingDistanceM;
+                const float fraction = crowdSpeedFraction(i, dir);
+                if (fraction < 1.0f && slowing > 0.0f) {
+                    m_nav.target[i] = p + dir * (slowing * fraction);
+                    m_nav.hasTarget[i] = 1;
+                } else {
+                    aim(dir, 0.0f);
+                }
+            }
         } else if (const NavCell free = grid.nearestWalkable(c); grid.walkable(free) && field.reachable(free)) {
             // Squeezed into a wall's margin (a blocked cell has no direction): back into
             // the nearest walkable cell, where the field takes over again.
@@ -251,6 +285,24 @@ void World::updateNavTarget(std::size_t i)
         m_nav.stall[i] = StallWatch{};
     else if (updateStall(m_nav.stall[i], remainingM, m_dt) && mode == Navigation::AStar)
         m_nav.replan[i] = 1;
+}
+
+float World::crowdSpeedFraction(std::size_t i, glm::vec2 way) const
+{
+    // Weidmann (1993): v(rho) = v0 (1 - exp(-1.913 (1/rho - 1/5.4))), rho in persons/m^2,
+    // from the walkers in the half disk ahead (last step's neighbours: thread-independent).
+    const glm::vec2 p = xz(m_pos[i]);
+    const std::uint32_t* near = &m_nearIndex[i * kMaxNeighbours];
+    int ahead = 0;
+    for (std::size_t k = 0; k < m_nearCount[i]; ++k) {
+        const glm::vec2 d = xz(m_pos[near[k]]) - p;
+        ahead += glm::dot(d, d) < kDensityRadiusM * kDensityRadiusM && glm::dot(d, way) > 0.0f ? 1 : 0;
+    }
+    const float rho = float(ahead) / (0.5f * 3.14159265f * kDensityRadiusM * kDensityRadiusM);
+    if (rho <= 0.0f)
+        return 1.0f;
+    const float fraction = 1.0f - std::exp(-1.913f * (1.0f / rho - 1.0f / 5.4f));
+    return std::clamp(fraction, kMinCrowdSpeedFraction, 1.0f);
 }
 
 bool World::sketchedFlow(glm::vec3 p, glm::vec3& direction) const

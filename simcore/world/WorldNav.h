@@ -24,6 +24,7 @@ struct NavCounters {
     std::uint64_t replans = 0;     // stalled A* walkers that planned around the blockage
     std::uint64_t sideSteps = 0;   // stalled walkers that found no way round and stepped aside
     std::uint64_t stalePlans = 0;  // plans made again because the grid changed
+    std::uint64_t lostPlans = 0;   // walkers pushed off their way (waypoint out of sight) that planned afresh
 };
 
 struct WorldNav {
@@ -48,9 +49,12 @@ struct WorldNav {
     std::vector<glm::vec2> sideDir;      // unit: the side-step's direction
     std::vector<glm::vec2> target;       // where the agent steers this step (x, z)
     std::vector<std::uint8_t> hasTarget; // 0: steer at the goal's own spot as before
-    // Held at a light, or queued right behind someone who is (as of the last step; the
-    // step being computed writes waitingNext): waiting is not being stuck.
+    // Held at a light (1), or queued right behind someone who waits (their depth + 1), as
+    // of the last step (the step being computed writes waitingNext); 0 = not waiting.
+    // Waiting is not being stuck. The depth is capped, so a ring of walkers each waiting
+    // for the next with nobody held at a light stops counting as a queue within a second.
     std::vector<std::uint8_t> waiting, waitingNext;
+    std::vector<std::uint8_t> lostSteps; // A* walkers: steps the current waypoint has been out of sight
 };
 
 }  // namespace throng::sim

@@ -1,4 +1,4 @@
-// The cavalry demo, reduced to 300 riders over the same cone field and the whole route:
+// The cavalry demo, reduced to 300 riders over the same cone field and the whole (A*-planned) route:
 // no rider passes through a cone, the leader is never overtaken and the riders keep up.
 #include "DemoRuns.h"
 #include "TestRegistry.h"
@@ -36,7 +36,8 @@ private slots:
         QVERIFY(world.id(0) == 1);  // the leader
         while (!world.hasArrived(0) && world.timeS() < scene.settings.durationS)
             world.step();
-        // The leader reaches the route's end (450 m at 8 m/s: about 57 s), not held up.
+        // The leader reaches the end of its planned route (473 m at up to 8.4 m/s: about
+        // 56 s), not held up.
         QVERIFY2(world.hasArrived(0) && world.arrivalTimeS(0) < 59.0f,
                  qPrintable(QString::number(world.arrivalTimeS(0))));
         QCOMPARE(world.counters().obstaclePenetrations, std::uint64_t(0));

@@ -20,19 +20,17 @@ private slots:
         World world(throng::test::loadDemo("crossroads.yaml"));
         runUntil(world, 240.0, [](const World&) { return false; });
         const RunStats stats = RunStats::from(world, world.stepIndex() + 1, 1.0);
-        qInfo("shortest-path group: %llu/%llu arrived, the last after %.1f s",
+        qInfo("shortest-path group: %llu/%llu arrived, the last after %.1f s; %llu re-plans, %llu fresh plans "
+              "after being pushed out of sight of the way",
               static_cast<unsigned long long>(stats.nav.shortestPathArrived),
-              static_cast<unsigned long long>(stats.nav.shortestPathAgents), stats.nav.shortestPathLastArrivalS);
+              static_cast<unsigned long long>(stats.nav.shortestPathAgents), stats.nav.shortestPathLastArrivalS,
+              static_cast<unsigned long long>(stats.nav.replans), static_cast<unsigned long long>(stats.nav.lostReplans));
         QCOMPARE(stats.nav.shortestPathAgents, std::uint64_t(10));
         QCOMPARE(stats.counters.redLightViolations, std::uint64_t(0));
         QCOMPARE(stats.counters.wallPenetrations, std::uint64_t(0));
         QCOMPARE(stats.carPedestrianCollisions, std::uint64_t(0));
-        QVERIFY(stats.nav.shortestPathArrived >= 5);
-        QVERIFY(stats.nav.shortestPathLastArrivalS > 0.0 && stats.nav.shortestPathLastArrivalS <= 240.0);
-        // Known gap: a few of the group get caught with the loop crossers at the north
-        // crosswalk's west end and do not arrive within the 4 minutes.
-        QEXPECT_FAIL("", "some of the shortest-path group jam with the crossers at the north crosswalk", Continue);
         QCOMPARE(stats.nav.shortestPathArrived, std::uint64_t(10));
+        QVERIFY(stats.nav.shortestPathLastArrivalS > 0.0 && stats.nav.shortestPathLastArrivalS <= 240.0);
     }
 
     void halfScaleEvacuationEmpties()
@@ -45,9 +43,13 @@ private slots:
         QVERIFY(stats.nav.timeTo99PercentOutS > 0.0);
         QCOMPARE(stats.counters.wallPenetrations, std::uint64_t(0));
         QCOMPARE(stats.counters.nonFiniteValues, std::uint64_t(0));
-        for (const ExitFlow& f : stats.nav.exits)
+        // The literature's ~1.3 persons/m/s through a wide door (Weidmann's fundamental
+        // diagram peaks near 1.2); bodies overlapping in the queue used to push it to 1.8-1.9.
+        for (const ExitFlow& f : stats.nav.exits) {
             qInfo("%s: %llu out, %.2f persons/m/s", f.goal.c_str(), static_cast<unsigned long long>(f.agentsOut),
                   f.flowPerMetrePerSecond);
+            QVERIFY2(f.flowPerMetrePerSecond > 0.9 && f.flowPerMetrePerSecond < 1.6, f.goal.c_str());
+        }
         qInfo("99 %% out after %.1f s", stats.nav.timeTo99PercentOutS);
     }
 };

@@ -37,13 +37,21 @@ void SceneReader::readPaths(const YAML::Node& node, Scene& scene)
         const YAML::Node item = node[i];
         if (!m_f.expectMap(item, key))
             continue;
-        m_f.checkKeys(item, key, {"name", "points", "radius", "closed"});
+        m_f.checkKeys(item, key, {"name", "points", "radius", "closed", "plan", "clearance"});
         Path p;
         if (m_f.readName(item, "name", key, p.name, true))
             claimName(item, key, p.name, "path");
         m_f.readPolyline(item, "points", key, p.points, true, 2);
         m_f.readFloat(item, "radius", key, p.radiusM, false, Range::Positive);
         m_f.readBool(item, "closed", key, p.closed, false);
+        std::string plan = "none";
+        if (m_f.readString(item, "plan", key, plan, false)) {
+            if (plan == "astar")
+                p.planned = true;
+            else if (plan != "none")
+                m_f.error(item["plan"].Mark(), key + ".plan", "must be none or astar, got '" + plan + "'");
+        }
+        m_f.readFloat(item, "clearance", key, p.clearanceM, false, Range::Positive);
         scene.paths.push_back(std::move(p));
     }
 }
