@@ -58,7 +58,10 @@ QString AutosaveRecovery::recoveredFor() const
 
 bool AutosaveRecovery::restore()
 {
-    if (!hasRecovery() || sim::hasErrors(m_document.load(recoveryPath())))
+    // Brain and keyframe files the scene names are relative to the scene's own folder.
+    const QString forFile = recoveredFor();
+    if (!hasRecovery() ||
+        sim::hasErrors(forFile.isEmpty() ? m_document.load(recoveryPath()) : m_document.load(recoveryPath(), forFile)))
         return false;
     m_document.adoptRecovered(recoveredFor());
     return true;

@@ -14,7 +14,21 @@ SceneDocument::SceneDocument(QObject* parent) : QObject(parent)
 
 std::vector<sim::Diagnostic> SceneDocument::load(const QString& path)
 {
-    sim::LoadResult result = sim::loadScene(QFile::encodeName(path).toStdString());
+    return adoptLoaded(sim::loadScene(QFile::encodeName(path).toStdString()), path);
+}
+
+std::vector<sim::Diagnostic> SceneDocument::load(const QString& path, const QString& relativeTo)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly))
+        return load(path);  // says why it cannot be read
+    const std::string folder = QFile::encodeName(QFileInfo(relativeTo).absolutePath()).toStdString();
+    return adoptLoaded(sim::parseScene(file.readAll().toStdString(), QFile::encodeName(path).toStdString(), folder),
+                       path);
+}
+
+std::vector<sim::Diagnostic> SceneDocument::adoptLoaded(sim::LoadResult result, const QString& path)
+{
     if (!result.ok())
         return std::move(result.diagnostics);
     m_scene = std::move(result.scene);

@@ -32,6 +32,10 @@ public:
     // error the current scene, path and undo history stay as they were; otherwise the
     // file replaces them and sceneReset() is emitted.
     std::vector<sim::Diagnostic> load(const QString& path);
+    // The same, but the file names inside (brain and keyframe files) are relative to the
+    // folder of `relativeTo` instead of the file's own: for a recovery copy, which lives
+    // elsewhere than the scene it was made from.
+    std::vector<sim::Diagnostic> load(const QString& path, const QString& relativeTo);
     // Writes the scene to its file (fails when it has none) or to `path`, atomically;
     // on success the document takes that path and is no longer modified.
     sim::SaveResult save();
@@ -62,6 +66,7 @@ signals:
     void selectionChanged();
 
 private:
+    std::vector<sim::Diagnostic> adoptLoaded(sim::LoadResult result, const QString& path);
     sim::Scene m_scene;
     QUndoStack m_undoStack;
     QString m_filePath;

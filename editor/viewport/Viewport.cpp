@@ -8,7 +8,10 @@
 #include "simcore/world/World.h"
 
 #include <QDebug>
+#include <QGuiApplication>
+#include <QOffscreenSurface>
 #include <QOpenGLContext>
+#include <QOpenGLFunctions>
 
 #include <algorithm>
 #include <cmath>
@@ -18,6 +21,26 @@ namespace throng::editor {
 
 namespace {
 constexpr float kFallbackRadiusM = 0.3f;
+
+// Whether OpenGL here is a software rasteriser (Mesa's llvmpipe or softpipe: virtual
+// machines, remote desktops, CI). There 4x multisampling triples the cost of a frame
+// full of small agents, so the viewport goes without it. Asked once, with a throwaway
+// context; needs the application object.
+bool softwareOpenGl()
+{
+    static const bool software = [] {
+        QOpenGLContext context;
+        QOffscreenSurface surface;
+        surface.create();
+        if (!context.create() || !context.makeCurrent(&surface))
+            return false;
+        const auto* renderer = reinterpret_cast<const char*>(context.functions()->glGetString(GL_RENDERER));
+        const QString name = renderer ? QString::fromLatin1(renderer) : QString();
+        context.doneCurrent();
+        return name.contains("llvmpipe") || name.contains("softpipe") || name.contains("swrast");
+    }();
+    return software;
+}
 }  // namespace
 
 Viewport::Viewport(QWidget* parent) : QOpenGLWidget(parent)
@@ -81,7 +104,13 @@ QSurfaceFormat Viewport::surfaceFormat()
     format.setVersion(3, 3);
     format.setProfile(QSurfaceFormat::CoreProfile);
     format.setDepthBufferSize(24);
-    format.setSamples(4);
+    // THRONG_MSAA=N sets the samples; else 4, or none under software OpenGL.
+    bool set = false;
+    const int samples = qEnvironmentVariableIntValue("THRONG_MSAA", &set);
+    if (set)
+        format.setSamples(std::max(0, samples));
+    else
+        format.setSamples(QGuiApplication::instance() && softwareOpenGl() ? 0 : 4);
     return format;
 }
 

@@ -40,7 +40,8 @@ public:
     explicit Viewport(QWidget* parent = nullptr);
     ~Viewport() override;
 
-    // OpenGL 3.3 core profile, 4x multisampling, 24-bit depth.
+    // OpenGL 3.3 core profile, 24-bit depth, 4x multisampling (none under a software
+    // rasteriser such as llvmpipe, where it triples the frame time; THRONG_MSAA=N sets it).
     static QSurfaceFormat surfaceFormat();
 
     // Shows the scene's set and its initial state (a World built from it, so spawn groups

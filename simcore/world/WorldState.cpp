@@ -23,7 +23,7 @@ namespace throng::sim {
 #define THRONG_NAV_COLUMNS(X)                                                                             \
     X(plan, plan) X(planGoal, planGoal) X(waypoint, waypoint) X(waypointRadiusM, waypointRadiusM)          \
     X(sideStepS, sideStepS) X(stall, stall) X(replan, replan) X(hasTarget, hasTarget) X(waiting, waiting) \
-    X(waitingNext, waitingNext) X(sideDir, sideDir) X(target, target) X(mode, navMode)
+    X(waitingNext, waitingNext) X(lostSteps, lostSteps) X(sideDir, sideDir) X(target, target) X(mode, navMode)
 
 std::size_t WorldState::memoryBytes() const
 {

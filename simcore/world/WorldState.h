@@ -77,7 +77,7 @@ struct WorldState {
     std::vector<std::uint32_t> waypoint;
     std::vector<float> waypointRadiusM, sideStepS;
     std::vector<StallWatch> stall;
-    std::vector<std::uint8_t> replan, hasTarget, waiting, waitingNext;
+    std::vector<std::uint8_t> replan, hasTarget, waiting, waitingNext, lostSteps;
     std::vector<glm::vec2> sideDir, target;
 
     // Brains (empty when no type has one).
