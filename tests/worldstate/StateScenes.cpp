@@ -70,15 +70,14 @@ sim::Scene crossroads()
 
 sim::Scene crossroadsWithBrains()
 {
-    // The shipped crossroads with the pedestrians' brain swapped for `fidget`, listed
-    // first among the scene's brains.
+    // The shipped crossroads with the pedestrians running `fidget`, listed first among
+    // the scene's brains.
     std::string text = readResource("crossroads.yaml");
-    const std::string brains = "\nbrains:\n", pedestrian = "  - name: pedestrian\n", ownBrain = "    brain: pedestrian\n";
+    const std::string brains = "\nbrains:\n", pedestrian = "  - name: pedestrian\n    kind: pedestrian\n";
     const std::size_t list = text.find(brains), type = text.find(pedestrian);
-    const std::size_t line = type == std::string::npos ? type : text.find(ownBrain, type);
-    if (list == std::string::npos || line == std::string::npos)
-        throw std::runtime_error("crossroads.yaml has no brains list or no pedestrian type with a brain");
-    text.replace(line, ownBrain.size(), "    brain: fidget\n");
+    if (list == std::string::npos || type == std::string::npos)
+        throw std::runtime_error("crossroads.yaml has no brains list or no pedestrian type");
+    text.insert(type + pedestrian.size(), "    brain: fidget\n");
     const std::string fidget = std::string(kBrain).substr(std::string(kBrain).find("  - name: fidget"));
     text.insert(list + brains.size(), fidget);
     return parseOrThrow(text);
