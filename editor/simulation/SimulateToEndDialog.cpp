@@ -23,6 +23,9 @@ SimulateToEndDialog::SimulateToEndDialog(SimulationController& controller, QWidg
     });
     controller.simulateToEnd();
     progress(controller.recordedFrames());
+    // At once, not when QProgressDialog's own timer or estimate decides to.
+    if (isHidden() && controller.recordedFrames() < controller.totalFrames())
+        show();
 }
 
 void SimulateToEndDialog::progress(std::size_t recordedFrames)

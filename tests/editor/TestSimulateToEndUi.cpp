@@ -96,8 +96,8 @@ private slots:
         QVERIFY(showWithScene(window, m_dir, "crossroads.yaml"));  // 240 s: 5761 frames
         SimulationController& sim = window.simulation();
         simulateToEnd(window)->trigger();
-        QProgressDialog* dialog = openDialog(window);
-        QVERIFY(dialog);
+        QProgressDialog* dialog = nullptr;
+        QTRY_VERIFY((dialog = openDialog(window)) != nullptr);
         QTRY_VERIFY_WITH_TIMEOUT(sim.recordedFrames() >= 10, 20000);
         QTRY_VERIFY(dialog->value() >= 10);  // the bar follows the recording
         auto* cancel = dialog->findChild<QPushButton*>();
