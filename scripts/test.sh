@@ -16,6 +16,6 @@ if [ ! -f "$san/build.ninja" ]; then
   cmake -S "$root" -B "$san" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTHRONG_SANITIZE=ON \
     -DTHRONG_BUILD_EDITOR=OFF >/dev/null
 fi
-cmake --build "$san" --target test_simcore test_worldbrain test_demos test_worldnav test_nav test_traffic test_brain test_export -- -j"$jobs"
+cmake --build "$san" --target test_simcore test_worldbrain test_worldstate test_demos test_worldnav test_nav test_traffic test_brain test_export -- -j"$jobs"
 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
   ctest --test-dir "$san" --output-on-failure -j"$jobs" -L '^(simcore|worldbrain|nav|traffic|brain|export)$'
