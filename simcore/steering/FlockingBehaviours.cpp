@@ -15,9 +15,6 @@ using namespace detail;
 
 namespace {
 
-// The separation weight never exceeds this, however close two agents are.
-constexpr float kMaxSeparationWeight = 10.0f;
-
 // A horizontal unit direction fixed by the unordered pair of ids, pointing from the lower id
 // to the higher: two coincident agents compute the same axis and leave it in opposite senses.
 glm::vec3 pairAxis(std::uint32_t lowId, std::uint32_t highId)
@@ -29,14 +26,14 @@ glm::vec3 pairAxis(std::uint32_t lowId, std::uint32_t highId)
     return glm::normalize(glm::vec3(x, 0.0f, z));
 }
 
-glm::vec3 coincidentAway(std::uint32_t self, std::uint32_t other)
+}  // namespace
+
+glm::vec3 separationAxis(std::uint32_t self, std::uint32_t other)
 {
     if (self == other)
         return glm::vec3(1.0f, 0.0f, 0.0f);
     return self > other ? pairAxis(other, self) : -pairAxis(self, other);
 }
-
-}  // namespace
 
 glm::vec3 separate(const SteeringAgent& agent, std::span<const Neighbour> neighbours, const SeparationParams& params)
 {
@@ -57,7 +54,7 @@ glm::vec3 separate(const SteeringAgent& agent, std::span<const Neighbour> neighb
         const float reference = contact > kTiny ? contact : range;
         const float w = reference / std::max(d, reference / kMaxSeparationWeight);
         const float fade = range > kTiny ? std::min(1.0f, (reach - d) / range) : 1.0f;
-        const glm::vec3 away = d > kTiny ? rel / d : coincidentAway(agent.id, n.id);
+        const glm::vec3 away = d > kTiny ? rel / d : separationAxis(agent.id, n.id);
         // The damper on the speed along the line between the two lets a squeezed pair settle
         // instead of bouncing like two springs; side-by-side walkers are not slowed.
         const float opening = glm::dot(v - finiteOrZero(n.velocity), away);

@@ -8,6 +8,7 @@
 
 #include <glm/vec3.hpp>
 
+#include <cstdint>
 #include <span>
 
 namespace throng::sim {
@@ -28,6 +29,13 @@ struct CohesionParams {
     float slowingDistanceM = 2.0f;  // m, > 0: the approach to the centre slows inside it
     float responseTimeS = 0.5f;     // s, > 0
 };
+
+// The separation weight never exceeds this, however close two agents are.
+inline constexpr float kMaxSeparationWeight = 10.0f;
+
+// The unit direction in which agent `self` leaves a neighbour `other` at the same point:
+// horizontal, fixed by the unordered pair of ids, opposite for the two.
+glm::vec3 separationAxis(std::uint32_t self, std::uint32_t other);
 
 // Sum over neighbours nearer than the two radii plus rangeM of
 //   fade * (maxForce * w - mass / dampingTimeS * opening speed) * away,

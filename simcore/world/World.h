@@ -35,6 +35,7 @@ struct WorldOptions {
     std::uint64_t seed = 0;     // used when overrideSeed; else the scene's seed
     bool overrideSeed = false;
     int threads = 0;            // 0 = OpenMP's default
+    bool boidKernel = true;     // false: boids take the general steering path too (tests compare the two)
 };
 
 class World {
@@ -72,6 +73,8 @@ public:
     // The dense index of the agent that agent i pursues, evades or follows; -1 for none.
     std::int32_t leaderOf(std::size_t i) const { return m_leader[i]; }
     AgentKind agentKind(std::size_t i) const { return m_types[m_info[i].typeIndex].kind; }
+    // Agents of this type step through the fused boids kernel (WorldFlock.cpp).
+    bool usesBoidKernel(std::size_t typeIndex) const { return m_boidKernel[typeIndex] != 0; }
     // Navigation (WorldNav.cpp): agent i left through an exit goal; it is no longer
     // simulated or perceived and stays where it left (arrivalTimeS says when).
     bool isOut(std::size_t i) const { return m_out[i] != 0; }
@@ -157,6 +160,10 @@ private:
     void constrain(std::size_t i, glm::vec3 from, glm::vec3& to) const;
     float groundHeight(float x, float z) const;
     void commit(std::size_t i, std::uint64_t& wallCrossings);
+    // The boids kernel (WorldFlock.cpp): sense, steer and integrate fused for a flier type
+    // whose behaviours are only separation, alignment, cohesion, pursuit, containment, wander.
+    void buildBoidKernel(bool enabled);
+    void stepBoid(std::size_t i);
     void countStep();
     // Leader overtakes (WorldLeaders.cpp): followers ahead of their leader this step.
     void countLeaderOvertakes();
@@ -200,6 +207,8 @@ private:
     std::vector<TypeParams> m_types;
     std::vector<TypeSteering> m_steering;  // per type
     std::vector<TypeCollision> m_collision;  // per type: layers and priority
+    std::vector<std::uint8_t> m_boidKernel;  // per type: steps through stepBoid
+    std::vector<float> m_bankBlend;          // per type: the banking smoothing's blend per step
     bool m_makingWay = false;  // some types differ in layers or priority (else all collide as equals)
 
     // The set, static during a run.

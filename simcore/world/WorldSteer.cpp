@@ -261,10 +261,9 @@ glm::vec3 World::steer(std::size_t i, const SteeringAgent& self, std::span<const
     request(B::Cohesion, [&] { return cohere(self, near, s.cohesion); });
     wanderOut = m_wander[i];
     if (s.on(B::Wander)) {
-        const AgentId id = m_info[i].id;
-        const glm::vec3 random(rngRange(m_seed, id, m_step, kWanderX, -1.0f, 1.0f),
-                               rngRange(m_seed, id, m_step, kWanderY, -1.0f, 1.0f),
-                               rngRange(m_seed, id, m_step, kWanderZ, -1.0f, 1.0f));
+        const std::uint64_t key = rngKey(m_seed, m_info[i].id, m_step);
+        const glm::vec3 random(rngRangeOf(key, kWanderX, -1.0f, 1.0f), rngRangeOf(key, kWanderY, -1.0f, 1.0f),
+                               rngRangeOf(key, kWanderZ, -1.0f, 1.0f));
         const WanderResult w = wander(self, m_wander[i], random, s.wander);
         wanderOut = w.state;
         requests.add(w.force, s.w(B::Wander) * brainWeight(i, B::Wander));

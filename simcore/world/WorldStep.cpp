@@ -48,6 +48,10 @@ void World::step()
             m_nearCount[i] = 0;
             continue;
         }
+        if (m_boidKernel[m_info[i].typeIndex]) {
+            stepBoid(i);  // boids: sense, steer and integrate in one pass (WorldFlock.cpp)
+            continue;
+        }
         const SteeringAgent self = steeringAgent(i);
         // Sense: nearby agents in the perception cone.
         std::array<Neighbour, kMaxNeighbours> near;

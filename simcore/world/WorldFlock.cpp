@@ -1,0 +1,262 @@
+// The boids kernel: one agent step (sense, steer, integrate) for a flier type whose
+// behaviours are only separation, alignment, cohesion, pursuit, containment and wander
+// (Reynolds 1987), fused. It computes what World::steer and integrateVehicle compute for
+// such a type, in the same order, but in one pass over the neighbours: their positions,
+// velocities and headings are read by index (no Neighbour copies, no request list), the
+// three flocking sums accumulate together, and the vehicle step skips the re-normalising
+// of a frame that is already orthonormal. Only the last bits differ from the general path
+// (TestBoidKernel compares the two on the quality figures).
+#include "simcore/world/World.h"
+
+#include "simcore/steering/detail/SteeringMath.h"
+#include "simcore/world/Rng.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cmath>
+
+namespace throng::sim {
+
+using namespace detail;
+
+namespace {
+
+enum StepStream : std::uint64_t { kWanderX = 101, kWanderY, kWanderZ };
+
+// Below this speed (m/s) the velocity no longer says where the agent faces (as in
+// VehicleModel.cpp).
+constexpr float kStoppedSpeed = 1e-3f;
+
+// steerTowards (SteeringMath.h) for finite inputs: the velocity change, as a force that
+// reaches it in the response time (gain = mass / response time), truncated to maxForce.
+glm::vec3 towardsVelocity(glm::vec3 velocity, glm::vec3 desired, float gain, float maxForce)
+{
+    const glm::vec3 f = (desired - velocity) * gain;
+    const float f2 = glm::dot(f, f);
+    return f2 > maxForce * maxForce ? f * (maxForce / std::sqrt(f2)) : f;
+}
+
+bool fusable(const TypeSteering& s)
+{
+    using B = Behaviour;
+    if (!s.vehicle.flying || !s.wander.flying || s.priority)
+        return false;
+    for (std::size_t b = 0; b < kBehaviourCount; ++b) {
+        const auto behaviour = Behaviour(b);
+        const bool allowed = behaviour == B::Separation || behaviour == B::Alignment || behaviour == B::Cohesion ||
+                             behaviour == B::Pursuit || behaviour == B::Containment || behaviour == B::Wander;
+        if (s.weight[b] > 0.0f && !allowed)
+            return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+void World::buildBoidKernel(bool enabled)
+{
+    // Brains change weights and speeds per agent, layers or priorities change whom an
+    // agent perceives, and signals hold agents back: those worlds keep the general path.
+    const bool plain = enabled && !m_brains && !m_makingWay && m_traffic.signal.empty();
+    m_boidKernel.assign(m_steering.size(), 0);
+    m_bankBlend.assign(m_steering.size(), 0.0f);
+    for (std::size_t t = 0; t < m_steering.size(); ++t) {
+        const TypeSteering& s = m_steering[t];
+        m_boidKernel[t] = plain && fusable(s) ? 1 : 0;
+        const float response = std::max(nonNegative(s.vehicle.bankingResponseS), kMinResponseTimeS);
+        m_bankBlend[t] = 1.0f - std::exp(-m_dt / response);
+    }
+}
+
+void World::stepBoid(std::size_t i)
+{
+    using B = Behaviour;
+    const std::uint16_t type = m_info[i].typeIndex;
+    const TypeSteering& s = m_steering[type];
+    const TypeParams& t = m_types[type];
+    const glm::vec3 p = m_pos[i], v = m_vel[i], fwd = m_fwd[i];
+    const float radius = m_radius[i], maxSpeed = m_maxSpeed[i];
+
+    // Sense: the k nearest in the perception radius and view cone, nearest first, ties by
+    // index (as gatherNeighbours, without the layers and priorities a boid world lacks).
+    constexpr std::size_t k = kMaxNeighbours;
+    std::array<std::uint64_t, k> best;
+    std::size_t count = 0;
+    float bound = t.perception * t.perception;
+    const float c = t.cosHalfView, c2 = c * c;
+    m_grid.forEachNearest(p, t.perception, [&] { return bound; }, [&](std::uint32_t j, const glm::vec3& q) {
+        const glm::vec3 d = q - p;
+        const float d2 = glm::dot(d, d);
+        if (d2 > bound || j == i)
+            return;
+        if (c > -1.0f) {
+            const float dot = glm::dot(d, fwd);
+            const bool outside = c >= 0.0f ? (dot < 0.0f || dot * dot < c2 * d2) : (dot < 0.0f && dot * dot > c2 * d2);
+            if (outside) {
+                const float contact = radius + m_radius[j];
+                if (d2 > contact * contact)
+                    return;
+            }
+        }
+        const std::uint64_t key = (std::uint64_t(std::bit_cast<std::uint32_t>(d2 + 0.0f)) << 32) | j;
+        std::size_t at = count;
+        if (count == k) {
+            if (key >= best[k - 1])
+                return;
+            at = k - 1;
+        } else {
+            ++count;
+        }
+        for (; at > 0 && key < best[at - 1]; --at)
+            best[at] = best[at - 1];
+        best[at] = key;
+        if (count == k)
+            bound = std::bit_cast<float>(std::uint32_t(best[k - 1] >> 32));
+    });
+
+    // Steer: separation, alignment and cohesion in one pass over the neighbours.
+    const float range = nonNegative(s.separation.rangeM);
+    const float mass = effectiveMass(t.mass);
+    const float damping = mass / std::max(nonNegative(s.separation.dampingTimeS), kMinResponseTimeS);
+    const float maxForce = nonNegative(t.maxForce);
+    glm::vec3 push(0.0f), headings(0.0f), velocities(0.0f), centre(0.0f);
+    std::uint32_t* nearIndex = &m_nearIndex[i * k];
+    for (std::size_t n = 0; n < count; ++n) {
+        const auto j = std::uint32_t(best[n]);
+        nearIndex[n] = j;
+        const glm::vec3 q = m_pos[j], vj = m_vel[j];
+        headings += m_fwd[j];
+        velocities += vj;
+        centre += q;
+        // Separation (FlockingBehaviours.cpp): the squared distance is the search key's.
+        const float contact = radius + m_radius[j], reach = contact + range;
+        const float d2 = std::bit_cast<float>(std::uint32_t(best[n] >> 32));
+        if (!(d2 < reach * reach))
+            continue;
+        const float d = std::sqrt(d2);
+        const glm::vec3 rel = p - q;
+        const float reference = contact > kTiny ? contact : range;
+        const float w = reference / std::max(d, reference / kMaxSeparationWeight);
+        const float fade = range > kTiny ? std::min(1.0f, (reach - d) / range) : 1.0f;
+        const glm::vec3 away = d > kTiny ? rel / d : separationAxis(m_info[i].id, m_info[j].id);
+        const float opening = glm::dot(v - vj, away);
+        push += away * (fade * (maxForce * w - damping * opening));
+    }
+    m_nearCount[i] = std::uint8_t(count);
+
+    // Blended in World::steer's order (containment, separation, pursuit, alignment,
+    // cohesion, wander), each behaviour as its function in simcore/steering computes it
+    // for a finite state.
+    const float speedNow = glm::length(v);
+    const glm::vec3 heading = speedNow > kTiny ? v * (1.0f / speedNow) : fwd;
+    auto towards = [&](glm::vec3 desired, float responseTimeS) {
+        return towardsVelocity(v, desired, mass / std::max(responseTimeS, kMinResponseTimeS), maxForce);
+    };
+    glm::vec3 sum(0.0f);
+    if (s.on(B::Containment)) {
+        const float probe = s.containment.probeMinM + s.containment.probeLookaheadS * speedNow + radius;
+        const glm::vec3 lo = p - m_bounds.min, hi = m_bounds.max - p;
+        if (std::min({lo.x, lo.y, lo.z, hi.x, hi.y, hi.z}) < probe)
+            sum += stayInside(steeringAgent(i), m_bounds, s.containment) * s.w(B::Containment);
+    }
+    if (s.on(B::Separation))
+        sum += push * s.w(B::Separation);
+    if (const std::int32_t leader = m_leader[i]; leader >= 0 && s.on(B::Pursuit)) {
+        // Pursuit: seek where the quarry will be after distance / max speed.
+        const auto j = std::size_t(leader);
+        const glm::vec3 q = m_pos[j];
+        const float cap = nonNegative(s.pursuit.maxPredictionS);
+        const float ahead = maxSpeed > kTiny ? std::min(glm::length(q - p) / maxSpeed, cap) : cap;
+        const glm::vec3 aim = q + m_vel[j] * ahead - p;
+        sum += towards(normalizeOr(aim, glm::vec3(0.0f)) * nonNegative(maxSpeed), s.pursuit.responseTimeS) *
+               s.w(B::Pursuit);
+    }
+    if (count > 0 && s.on(B::Alignment)) {
+        // Alignment: the neighbours' mean heading at the current speed, or their mean velocity.
+        glm::vec3 desired(0.0f);
+        bool any = true;
+        if (s.alignment.matchSpeed) {
+            desired = truncate(velocities / float(count), maxSpeed);
+        } else {
+            const glm::vec3 dir = normalizeOr(headings, glm::vec3(0.0f));
+            any = dir != glm::vec3(0.0f);
+            desired = dir * std::min(speedNow, nonNegative(maxSpeed));
+        }
+        if (any)
+            sum += towards(desired, s.alignment.responseTimeS) * s.w(B::Alignment);
+    }
+    if (count > 0 && s.on(B::Cohesion)) {
+        // Cohesion: arrive at the neighbours' centre, slowing within slowingDistanceM.
+        const glm::vec3 offset = centre / float(count) - p;
+        const float dist = glm::length(offset);
+        glm::vec3 desired(0.0f);
+        if (dist > kTiny) {
+            const float slowing = std::max(nonNegative(s.cohesion.slowingDistanceM), kTiny);
+            desired = offset * (nonNegative(maxSpeed) * std::min(1.0f, dist / slowing) / dist);
+        }
+        sum += towards(desired, s.cohesion.responseTimeS) * s.w(B::Cohesion);
+    }
+    WanderState wanderNext = m_wander[i];
+    if (s.on(B::Wander)) {
+        // Wander (Wander.cpp, in 3D): jitter the target on the unit sphere (kept unit from
+        // step to step), then aim at it on the sphere ahead, in the agent's own frame.
+        const std::uint64_t key = rngKey(m_seed, m_info[i].id, m_step);
+        const glm::vec3 jitter = glm::vec3(rngRangeOf(key, kWanderX, -1.0f, 1.0f), rngRangeOf(key, kWanderY, -1.0f, 1.0f),
+                                           rngRangeOf(key, kWanderZ, -1.0f, 1.0f)) *
+                                 nonNegative(s.wander.jitterM);
+        const float wanderRadius = nonNegative(s.wander.radiusM);
+        const glm::vec3 prev = wanderNext.target;
+        const glm::vec3 target = normalizeOr(prev * wanderRadius + jitter, prev);
+        wanderNext.target = target;
+        const glm::vec3 up = normalizeOr(m_up[i] - heading * glm::dot(m_up[i], heading), kWorldUp);
+        const glm::vec3 right = normalizeOr(glm::cross(heading, up), rightOfForward(heading));
+        const glm::vec3 aim = heading * nonNegative(s.wander.distanceM) +
+                              (right * target.x + up * target.y + heading * target.z) * wanderRadius;
+        sum += towards(normalizeOr(aim, glm::vec3(0.0f)) * nonNegative(maxSpeed), s.wander.responseTimeS) *
+               s.w(B::Wander);
+    }
+    const glm::vec3 force = truncate(sum, maxForce);
+
+    // Integrate: integrateVehicle's flier step (VehicleModel.cpp) on a state that is
+    // already finite and orthonormal.
+    glm::vec3 vel = truncate(v + force * (m_dt / mass), nonNegative(maxSpeed));
+    const float minSpeed = std::min(nonNegative(s.vehicle.minSpeed), nonNegative(maxSpeed));
+    float speed = glm::length(vel);
+    if (speed < minSpeed) {
+        vel = (speed > kStoppedSpeed ? vel / speed : fwd) * minSpeed;
+        speed = glm::length(vel);
+    }
+    vel = finiteOrZero(vel);
+    glm::vec3 pos = finiteOrZero(p + vel * m_dt);
+    glm::vec3 nextFwd = fwd;
+    if (speed > kStoppedSpeed)
+        nextFwd = vel / speed;
+    // Bank: up leans toward the lateral acceleration, smoothed.
+    const glm::vec3 acceleration = (vel - v) / m_dt;
+    const glm::vec3 lateral = acceleration - nextFwd * glm::dot(acceleration, nextFwd);
+    const glm::vec3 bankedUp = normalizeOr(kWorldUp + lateral * nonNegative(s.vehicle.bankingGainS2PerM), kWorldUp);
+    const glm::vec3 up0 = m_up[i];
+    const glm::vec3 up = normalizeOr(up0 + (bankedUp - up0) * m_bankBlend[type], kWorldUp);
+    const glm::vec3 side = normalizeOr(glm::cross(nextFwd, up), m_side[i]);
+    const glm::vec3 nextUp = normalizeOr(glm::cross(side, nextFwd), kWorldUp);
+
+    // Fliers may skim the ground but never pass through it (as in World::step).
+    if (const float floor = groundHeight(pos.x, pos.z) + radius; pos.y < floor) {
+        pos.y = floor;
+        vel.y = std::max(vel.y, 0.0f);
+        const float stall = std::min(s.vehicle.minSpeed, maxSpeed), now = glm::length(vel);
+        if (now < stall)
+            vel = now > 1e-6f ? vel * (stall / now) : nextFwd * stall;
+    }
+    m_nextPos[i] = pos;
+    m_nextVel[i] = vel;
+    m_nextFwd[i] = nextFwd;
+    m_nextSide[i] = side;
+    m_nextUp[i] = nextUp;
+    m_nextWander[i] = wanderNext;
+}
+
+}  // namespace throng::sim
