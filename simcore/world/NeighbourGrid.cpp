@@ -68,12 +68,29 @@ void NeighbourGrid::rebuild(std::span<const glm::vec3> positions, bool sortByHei
     m_byHeight = sortByHeight;
     if (!sortByHeight)
         return;
-    // Within each cell by height, ties by index: the order is fully determined.
+    // Within each cell by height, ties by index: the order is fully determined. Cells hold
+    // a few dozen agents, so an insertion sort in place (the indices arrive ascending, so
+    // ties keep their order); std::sort for a crowded one.
     std::vector<std::pair<float, std::uint32_t>>& scratch = m_heightScratch;
+    constexpr std::uint32_t kInsertionMax = 64;
     for (std::size_t c = 0; c + 1 < m_start.size(); ++c) {
         const std::uint32_t b = m_start[c], e = m_start[c + 1];
         if (e - b < 2)
             continue;
+        if (e - b <= kInsertionMax) {
+            for (std::uint32_t k = b + 1; k < e; ++k) {
+                const glm::vec3 q = m_sortedPos[k];
+                const std::uint32_t j = m_sorted[k];
+                std::uint32_t at = k;
+                for (; at > b && q.y < m_sortedPos[at - 1].y; --at) {
+                    m_sortedPos[at] = m_sortedPos[at - 1];
+                    m_sorted[at] = m_sorted[at - 1];
+                }
+                m_sortedPos[at] = q;
+                m_sorted[at] = j;
+            }
+            continue;
+        }
         scratch.clear();
         for (std::uint32_t k = b; k < e; ++k)
             scratch.push_back({m_sortedPos[k].y, m_sorted[k]});

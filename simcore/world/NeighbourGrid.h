@@ -55,15 +55,8 @@ public:
         for (int z = z0; z <= z1; ++z)
             for (int x = x0; x <= x1; ++x) {
                 const std::size_t c = std::size_t(z) * std::size_t(m_cols) + std::size_t(x);
-                std::uint32_t lo = m_start[c], hi = m_start[c + 1];
-                while (lo < hi) {  // first agent at or above yLo
-                    const std::uint32_t mid = lo + (hi - lo) / 2;
-                    if (m_sortedPos[mid].y < yLo)
-                        lo = mid + 1;
-                    else
-                        hi = mid;
-                }
-                for (std::uint32_t k = lo; k < m_start[c + 1] && m_sortedPos[k].y <= yHi; ++k)
+                const std::uint32_t end = m_start[c + 1];
+                for (std::uint32_t k = firstAtOrAbove(m_start[c], end, yLo); k < end && m_sortedPos[k].y <= yHi; ++k)
                     f(m_sorted[k], m_sortedPos[k]);
             }
     }
@@ -111,18 +104,9 @@ public:
                 const float yLo = p.y - reach, yHi = p.y + reach;
                 for (int x = x0; x <= x1; ++x) {
                     const std::size_t c = row + std::size_t(x);
-                    std::uint32_t lo = m_start[c], hi = m_start[c + 1];
-                    const std::uint32_t end = hi;
-                    while (hi - lo > 8) {  // towards the first agent at or above yLo
-                        const std::uint32_t mid = lo + (hi - lo) / 2;
-                        if (m_sortedPos[mid].y < yLo)
-                            lo = mid + 1;
-                        else
-                            hi = mid;
-                    }
-                    for (std::uint32_t k = lo; k < end && m_sortedPos[k].y <= yHi; ++k)
-                        if (m_sortedPos[k].y >= yLo)
-                            f(m_sorted[k], m_sortedPos[k]);
+                    const std::uint32_t end = m_start[c + 1];
+                    for (std::uint32_t k = firstAtOrAbove(m_start[c], end, yLo); k < end && m_sortedPos[k].y <= yHi; ++k)
+                        f(m_sorted[k], m_sortedPos[k]);
                 }
             }
             if (!any && step > 0)
@@ -138,6 +122,21 @@ public:
     }
 
 private:
+    // In a cell sorted by height, [begin, end): the first agent at or above y (end when
+    // none). Branch-free halving, so a short cell costs a few conditional moves.
+    std::uint32_t firstAtOrAbove(std::uint32_t begin, std::uint32_t end, float y) const
+    {
+        if (begin == end)
+            return end;
+        std::uint32_t lo = begin, n = end - begin;
+        while (n > 1) {
+            const std::uint32_t half = n / 2;
+            lo = m_sortedPos[lo + half].y < y ? lo + half : lo;
+            n -= half;
+        }
+        return m_sortedPos[lo].y < y ? lo + 1 : lo;
+    }
+
     // NaN lands in cell 0; positions outside the bounds clamp into the border cells.
     // (Clamped to [-1, n] first, so truncating c + 1 is the floor: std::floor is a call
     // on baseline x86-64.)
