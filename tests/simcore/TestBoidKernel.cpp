@@ -22,14 +22,16 @@ namespace {
 // wander), 1,500 birds packed at the bench's density of about one bird per 8 m^3 (the
 // bench's own lattice only gets that dense at its larger counts), so every behaviour acts
 // from the first step.
-Scene denseFlock()
+Scene denseFlock(float spacingM = 2.0f)
 {
     Scene s = makeFlockScenario(1500, 3);
     for (std::size_t k = 1; k < s.agents.size(); ++k) {
         const auto i = float(k);
-        s.agents[k].position = glm::vec3(100.0f + 2.0f * std::fmod(i, 12.0f) + 0.3f * std::sin(i * 12.9898f),
-                                         30.0f + 2.0f * std::fmod(std::floor(i / 12.0f), 12.0f),
-                                         -12.0f + 2.0f * std::floor(i / 144.0f) + 0.3f * std::cos(i * 78.233f));
+        const float jitter = 0.15f * spacingM;
+        s.agents[k].position =
+            glm::vec3(100.0f + spacingM * std::fmod(i, 12.0f) + jitter * std::sin(i * 12.9898f),
+                      30.0f + spacingM * std::fmod(std::floor(i / 12.0f), 12.0f),
+                      -12.0f + spacingM * std::floor(i / 144.0f) + jitter * std::cos(i * 78.233f));
     }
     return s;
 }
@@ -128,6 +130,21 @@ private slots:
         QVERIFY(std::fabs(k.nearestM - g.nearestM) < 0.05 * g.nearestM);
         QVERIFY(std::fabs(k.overlapsPerStep - g.overlapsPerStep) < std::max(0.5, 0.15 * g.overlapsPerStep));
         QVERIFY(std::fabs(k.toLeaderM - g.toLeaderM) < std::max(1.0, 0.05 * g.toLeaderM));
+    }
+
+    void packedStartSeparatesLikeTheGeneralPath()
+    {
+        // Birds 0.38 m apart (bodies 0.4 m across, so most start overlapping): separation
+        // and the collide pass part them; both paths must do it at the same pace.
+        const Scene s = denseFlock(0.38f);
+        const int steps = 24;
+        const Figures k = run(s, true, steps), g = run(s, false, steps);
+        qInfo("packed start, %d steps, kernel / general: overlaps per step %.1f / %.1f, nearest neighbour %.3f / "
+              "%.3f m",
+              steps, k.overlapsPerStep, g.overlapsPerStep, k.nearestM, g.nearestM);
+        QVERIFY(g.overlapsPerStep > 50.0);
+        QVERIFY(std::fabs(k.overlapsPerStep - g.overlapsPerStep) < 0.05 * g.overlapsPerStep);
+        QVERIFY(std::fabs(k.nearestM - g.nearestM) < 0.05 * g.nearestM);
     }
 
     void kernelIsBitIdenticalForOneAndTwoThreads()
