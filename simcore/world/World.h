@@ -208,7 +208,16 @@ private:
     std::vector<TypeSteering> m_steering;  // per type
     std::vector<TypeCollision> m_collision;  // per type: layers and priority
     std::vector<std::uint8_t> m_boidKernel;  // per type: steps through stepBoid
-    std::vector<float> m_bankBlend;          // per type: the banking smoothing's blend per step
+    // Per type, the boids kernel's parameters made usable once (WorldFlock.cpp): weights
+    // (0 = off), gains = mass / response time, lengths in m.
+    struct BoidType {
+        float wContainment, wSeparation, wPursuit, wAlignment, wCohesion, wWander;
+        float mass, maxForce, range, damping;
+        float gainPursuit, gainAlignment, gainCohesion, gainWander;
+        float predictionCapS, slowingM, jitterM, wanderRadiusM, wanderDistanceM;
+        float minSpeed, bankGain, bankBlend;
+    };
+    std::vector<BoidType> m_boidTypes;
     bool m_makingWay = false;  // some types differ in layers or priority (else all collide as equals)
 
     // The set, static during a run.

@@ -62,23 +62,51 @@ void World::buildBoidKernel(bool enabled)
     // agent perceives, and signals hold agents back: those worlds keep the general path.
     const bool plain = enabled && !m_brains && !m_makingWay && m_traffic.signal.empty();
     m_boidKernel.assign(m_steering.size(), 0);
-    m_bankBlend.assign(m_steering.size(), 0.0f);
+    m_boidTypes.assign(m_steering.size(), BoidType{});
     for (std::size_t t = 0; t < m_steering.size(); ++t) {
         const TypeSteering& s = m_steering[t];
         m_boidKernel[t] = plain && fusable(s) ? 1 : 0;
+        // As steerTowards, separate and integrateVehicle make each parameter usable.
+        const float mass = effectiveMass(m_types[t].mass);
+        auto gain = [&](float responseTimeS) {
+            return mass / (std::isfinite(responseTimeS) ? std::max(responseTimeS, kMinResponseTimeS) : kMinResponseTimeS);
+        };
+        auto weight = [&](Behaviour b) { return s.on(b) ? s.w(b) : 0.0f; };
+        BoidType& b = m_boidTypes[t];
+        b.wContainment = weight(Behaviour::Containment);
+        b.wSeparation = weight(Behaviour::Separation);
+        b.wPursuit = weight(Behaviour::Pursuit);
+        b.wAlignment = weight(Behaviour::Alignment);
+        b.wCohesion = weight(Behaviour::Cohesion);
+        b.wWander = weight(Behaviour::Wander);
+        b.mass = mass;
+        b.maxForce = nonNegative(m_types[t].maxForce);
+        b.range = nonNegative(s.separation.rangeM);
+        b.damping = mass / std::max(nonNegative(s.separation.dampingTimeS), kMinResponseTimeS);
+        b.gainPursuit = gain(s.pursuit.responseTimeS);
+        b.gainAlignment = gain(s.alignment.responseTimeS);
+        b.gainCohesion = gain(s.cohesion.responseTimeS);
+        b.gainWander = gain(s.wander.responseTimeS);
+        b.predictionCapS = nonNegative(s.pursuit.maxPredictionS);
+        b.slowingM = std::max(nonNegative(s.cohesion.slowingDistanceM), kTiny);
+        b.jitterM = nonNegative(s.wander.jitterM);
+        b.wanderRadiusM = nonNegative(s.wander.radiusM);
+        b.wanderDistanceM = nonNegative(s.wander.distanceM);
+        b.minSpeed = nonNegative(s.vehicle.minSpeed);
+        b.bankGain = nonNegative(s.vehicle.bankingGainS2PerM);
         const float response = std::max(nonNegative(s.vehicle.bankingResponseS), kMinResponseTimeS);
-        m_bankBlend[t] = 1.0f - std::exp(-m_dt / response);
+        b.bankBlend = 1.0f - std::exp(-m_dt / response);
     }
 }
 
 void World::stepBoid(std::size_t i)
 {
-    using B = Behaviour;
     const std::uint16_t type = m_info[i].typeIndex;
     const TypeSteering& s = m_steering[type];
     const TypeParams& t = m_types[type];
+    const BoidType& b = m_boidTypes[type];
     const glm::vec3 p = m_pos[i], v = m_vel[i], fwd = m_fwd[i];
-    const float radius = m_radius[i], maxSpeed = m_maxSpeed[i];
+    const float radius = m_radius[i], maxSpeed = nonNegative(m_maxSpeed[i]);
 
     // Sense: the k nearest in the perception radius and view cone, nearest first, ties by
     // index (as gatherNeighbours, without the layers and priorities a boid world lacks).
@@ -118,10 +146,7 @@ void World::stepBoid(std::size_t i)
     });
 
     // Steer: separation, alignment and cohesion in one pass over the neighbours.
-    const float range = nonNegative(s.separation.rangeM);
-    const float mass = effectiveMass(t.mass);
-    const float damping = mass / std::max(nonNegative(s.separation.dampingTimeS), kMinResponseTimeS);
-    const float maxForce = nonNegative(t.maxForce);
+    const float range = b.range, damping = b.damping, maxForce = b.maxForce;
     glm::vec3 push(0.0f), headings(0.0f), velocities(0.0f), centre(0.0f);
     std::uint32_t* nearIndex = &m_nearIndex[i * k];
     for (std::size_t n = 0; n < count; ++n) {
@@ -152,29 +177,26 @@ void World::stepBoid(std::size_t i)
     // for a finite state.
     const float speedNow = glm::length(v);
     const glm::vec3 heading = speedNow > kTiny ? v * (1.0f / speedNow) : fwd;
-    auto towards = [&](glm::vec3 desired, float responseTimeS) {
-        return towardsVelocity(v, desired, mass / std::max(responseTimeS, kMinResponseTimeS), maxForce);
-    };
+    auto towards = [&](glm::vec3 desired, float gain) { return towardsVelocity(v, desired, gain, maxForce); };
     glm::vec3 sum(0.0f);
-    if (s.on(B::Containment)) {
+    if (b.wContainment > 0.0f) {
         const float probe = s.containment.probeMinM + s.containment.probeLookaheadS * speedNow + radius;
         const glm::vec3 lo = p - m_bounds.min, hi = m_bounds.max - p;
         if (std::min({lo.x, lo.y, lo.z, hi.x, hi.y, hi.z}) < probe)
-            sum += stayInside(steeringAgent(i), m_bounds, s.containment) * s.w(B::Containment);
+            sum += stayInside(steeringAgent(i), m_bounds, s.containment) * b.wContainment;
     }
-    if (s.on(B::Separation))
-        sum += push * s.w(B::Separation);
-    if (const std::int32_t leader = m_leader[i]; leader >= 0 && s.on(B::Pursuit)) {
+    if (b.wSeparation > 0.0f)
+        sum += push * b.wSeparation;
+    if (const std::int32_t leader = m_leader[i]; leader >= 0 && b.wPursuit > 0.0f) {
         // Pursuit: seek where the quarry will be after distance / max speed.
         const auto j = std::size_t(leader);
         const glm::vec3 q = m_pos[j];
-        const float cap = nonNegative(s.pursuit.maxPredictionS);
+        const float cap = b.predictionCapS;
         const float ahead = maxSpeed > kTiny ? std::min(glm::length(q - p) / maxSpeed, cap) : cap;
         const glm::vec3 aim = q + m_vel[j] * ahead - p;
-        sum += towards(normalizeOr(aim, glm::vec3(0.0f)) * nonNegative(maxSpeed), s.pursuit.responseTimeS) *
-               s.w(B::Pursuit);
+        sum += towards(normalizeOr(aim, glm::vec3(0.0f)) * maxSpeed, b.gainPursuit) * b.wPursuit;
     }
-    if (count > 0 && s.on(B::Alignment)) {
+    if (count > 0 && b.wAlignment > 0.0f) {
         // Alignment: the neighbours' mean heading at the current speed, or their mean velocity.
         glm::vec3 desired(0.0f);
         bool any = true;
@@ -183,47 +205,45 @@ void World::stepBoid(std::size_t i)
         } else {
             const glm::vec3 dir = normalizeOr(headings, glm::vec3(0.0f));
             any = dir != glm::vec3(0.0f);
-            desired = dir * std::min(speedNow, nonNegative(maxSpeed));
+            desired = dir * std::min(speedNow, maxSpeed);
         }
         if (any)
-            sum += towards(desired, s.alignment.responseTimeS) * s.w(B::Alignment);
+            sum += towards(desired, b.gainAlignment) * b.wAlignment;
     }
-    if (count > 0 && s.on(B::Cohesion)) {
+    if (count > 0 && b.wCohesion > 0.0f) {
         // Cohesion: arrive at the neighbours' centre, slowing within slowingDistanceM.
         const glm::vec3 offset = centre / float(count) - p;
         const float dist = glm::length(offset);
         glm::vec3 desired(0.0f);
         if (dist > kTiny) {
-            const float slowing = std::max(nonNegative(s.cohesion.slowingDistanceM), kTiny);
-            desired = offset * (nonNegative(maxSpeed) * std::min(1.0f, dist / slowing) / dist);
+            desired = offset * (maxSpeed * std::min(1.0f, dist / b.slowingM) / dist);
         }
-        sum += towards(desired, s.cohesion.responseTimeS) * s.w(B::Cohesion);
+        sum += towards(desired, b.gainCohesion) * b.wCohesion;
     }
     WanderState wanderNext = m_wander[i];
-    if (s.on(B::Wander)) {
+    if (b.wWander > 0.0f) {
         // Wander (Wander.cpp, in 3D): jitter the target on the unit sphere (kept unit from
         // step to step), then aim at it on the sphere ahead, in the agent's own frame.
         const std::uint64_t key = rngKey(m_seed, m_info[i].id, m_step);
         const glm::vec3 jitter = glm::vec3(rngRangeOf(key, kWanderX, -1.0f, 1.0f), rngRangeOf(key, kWanderY, -1.0f, 1.0f),
                                            rngRangeOf(key, kWanderZ, -1.0f, 1.0f)) *
-                                 nonNegative(s.wander.jitterM);
-        const float wanderRadius = nonNegative(s.wander.radiusM);
+                                 b.jitterM;
+        const float wanderRadius = b.wanderRadiusM;
         const glm::vec3 prev = wanderNext.target;
         const glm::vec3 target = normalizeOr(prev * wanderRadius + jitter, prev);
         wanderNext.target = target;
         const glm::vec3 up = normalizeOr(m_up[i] - heading * glm::dot(m_up[i], heading), kWorldUp);
         const glm::vec3 right = normalizeOr(glm::cross(heading, up), rightOfForward(heading));
-        const glm::vec3 aim = heading * nonNegative(s.wander.distanceM) +
+        const glm::vec3 aim = heading * b.wanderDistanceM +
                               (right * target.x + up * target.y + heading * target.z) * wanderRadius;
-        sum += towards(normalizeOr(aim, glm::vec3(0.0f)) * nonNegative(maxSpeed), s.wander.responseTimeS) *
-               s.w(B::Wander);
+        sum += towards(normalizeOr(aim, glm::vec3(0.0f)) * maxSpeed, b.gainWander) * b.wWander;
     }
     const glm::vec3 force = truncate(sum, maxForce);
 
     // Integrate: integrateVehicle's flier step (VehicleModel.cpp) on a state that is
     // already finite and orthonormal.
-    glm::vec3 vel = truncate(v + force * (m_dt / mass), nonNegative(maxSpeed));
-    const float minSpeed = std::min(nonNegative(s.vehicle.minSpeed), nonNegative(maxSpeed));
+    glm::vec3 vel = truncate(v + force * (m_dt / b.mass), maxSpeed);
+    const float minSpeed = std::min(b.minSpeed, maxSpeed);
     float speed = glm::length(vel);
     if (speed < minSpeed) {
         vel = (speed > kStoppedSpeed ? vel / speed : fwd) * minSpeed;
@@ -237,9 +257,9 @@ void World::stepBoid(std::size_t i)
     // Bank: up leans toward the lateral acceleration, smoothed.
     const glm::vec3 acceleration = (vel - v) / m_dt;
     const glm::vec3 lateral = acceleration - nextFwd * glm::dot(acceleration, nextFwd);
-    const glm::vec3 bankedUp = normalizeOr(kWorldUp + lateral * nonNegative(s.vehicle.bankingGainS2PerM), kWorldUp);
+    const glm::vec3 bankedUp = normalizeOr(kWorldUp + lateral * b.bankGain, kWorldUp);
     const glm::vec3 up0 = m_up[i];
-    const glm::vec3 up = normalizeOr(up0 + (bankedUp - up0) * m_bankBlend[type], kWorldUp);
+    const glm::vec3 up = normalizeOr(up0 + (bankedUp - up0) * b.bankBlend, kWorldUp);
     const glm::vec3 side = normalizeOr(glm::cross(nextFwd, up), m_side[i]);
     const glm::vec3 nextUp = normalizeOr(glm::cross(side, nextFwd), kWorldUp);
 
@@ -247,7 +267,7 @@ void World::stepBoid(std::size_t i)
     if (const float floor = groundHeight(pos.x, pos.z) + radius; pos.y < floor) {
         pos.y = floor;
         vel.y = std::max(vel.y, 0.0f);
-        const float stall = std::min(s.vehicle.minSpeed, maxSpeed), now = glm::length(vel);
+        const float stall = std::min(s.vehicle.minSpeed, m_maxSpeed[i]), now = glm::length(vel);
         if (now < stall)
             vel = now > 1e-6f ? vel * (stall / now) : nextFwd * stall;
     }
