@@ -138,14 +138,10 @@ private:
     }
 
     // NaN lands in cell 0; positions outside the bounds clamp into the border cells.
-    // (Clamped to [-1, n] first, so truncating c + 1 is the floor: std::floor is a call
-    // on baseline x86-64.)
+    // (Non-negative, so truncating is the floor: std::floor is a call on baseline x86-64.)
     int cellX(float x) const { return cellOf((x - m_min.x) * m_inv, m_cols); }
     int cellZ(float z) const { return cellOf((z - m_min.y) * m_inv, m_rows); }
-    static int cellOf(float c, int n)
-    {
-        return c != c ? 0 : std::clamp(int(std::clamp(c, -1.0f, float(n)) + 1.0f) - 1, 0, n - 1);
-    }
+    static int cellOf(float c, int n) { return c >= 0.0f ? int(std::min(c, float(n) - 0.5f)) : 0; }
 
     glm::vec2 m_min{0.0f};
     float m_cell = 1.0f, m_inv = 1.0f;
