@@ -11,6 +11,7 @@
 #include <array>
 #include <bit>
 #include <cmath>
+#include <optional>
 
 namespace throng::sim {
 
@@ -229,8 +230,11 @@ glm::vec3 World::steer(std::size_t i, const SteeringAgent& self, std::span<const
     }
     // Separation and collision avoidance leave to lower-priority neighbours the whole
     // of making way (WorldPriority.h).
-    std::array<Neighbour, kMaxNeighbours> yielding;
-    const std::span<const Neighbour> avoided = neighboursToAvoid(i, near, yielding.data());
+    // (The buffer is only filled, so only built, when priorities differ.)
+    std::optional<std::array<Neighbour, kMaxNeighbours>> yielding;
+    if (m_makingWay)
+        yielding.emplace();
+    const std::span<const Neighbour> avoided = m_makingWay ? neighboursToAvoid(i, near, yielding->data()) : near;
     request(B::Separation, [&] { return separate(self, avoided, s.separation); });
     request(B::UnalignedCollisionAvoidance, [&] { return avoidUnalignedCollisions(self, avoided, s.unaligned); });
     if (leaderIndex >= 0) {
