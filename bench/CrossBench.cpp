@@ -7,11 +7,14 @@
 //        throng-bench-cross --write-layout FILE [AGENTS] (for the DetourCrowd peer)
 // CROSS_SPACING_M, CROSS_INNER_M, CROSS_GAP_M in the environment change the layout;
 // CROSS_PROFILE prints the walkers' mean speed by distance from the centre (where time goes);
-// CROSS_DUMP lists the agents that did not arrive.
+// CROSS_DUMP lists the agents that did not arrive. "state_hash" (FNV-1a over the bits of
+// every position and velocity at the end) tells whether a change left the trajectories
+// bit-identical, and whether 1 and 2 threads agree.
 #include "simcore/scenarios/BenchScenarios.h"
 #include "simcore/world/World.h"
 
 #include <algorithm>
+#include <bit>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -36,6 +39,22 @@ int writeLayout(const Scene& scene, const char* path)
         std::fprintf(f, "%.9g %.9g %.9g %.9g\n", double(scene.agents[i].position.x), double(scene.agents[i].position.z),
                      double(scene.goals[i].position.x), double(scene.goals[i].position.y));
     return std::fclose(f) == 0 ? 0 : 1;
+}
+
+// FNV-1a over the bits of the final positions and velocities.
+std::uint64_t stateHash(const World& world)
+{
+    std::uint64_t h = 1469598103934665603ull;
+    auto add = [&](float v) {
+        h ^= std::bit_cast<std::uint32_t>(v);
+        h *= 1099511628211ull;
+    };
+    for (std::size_t i = 0; i < world.agentCount(); ++i)
+        for (int c = 0; c < 3; ++c) {
+            add(world.positions()[i][c]);
+            add(world.velocities()[i][c]);
+        }
+    return h;
 }
 
 }  // namespace
@@ -123,10 +142,10 @@ int main(int argc, char** argv)
                 "\"simulated_seconds\": %.1f, \"seconds\": %.2f, \"agent_steps_per_second\": %.4g, "
                 "\"fraction_arrived\": %.4f, \"time_to_95_percent_s\": %.1f, \"time_to_last_arrival_s\": %.1f, "
                 "\"mean_arrival_time_s\": %.1f, \"overlapping_pairs_per_step\": %.3f, "
-                "\"overlapping_pairs_per_agent\": %.6f, \"non_finite_values\": %llu}\n",
+                "\"overlapping_pairs_per_agent\": %.6f, \"non_finite_values\": %llu, \"state_hash\": \"%016llx\"}\n",
                 crossLayoutDescription(layout).c_str(), n, world.threads(), (unsigned long long)steps, world.timeS(),
                 seconds, double(steps) * double(n) / std::max(seconds, 1e-9), double(arrived) * perAgent, t95,
                 double(last), arrived ? sum / double(arrived) : -1.0, overlaps, overlaps * perAgent,
-                (unsigned long long)world.counters().nonFiniteValues);
+                (unsigned long long)world.counters().nonFiniteValues, (unsigned long long)stateHash(world));
     return 0;
 }

@@ -13,10 +13,12 @@ namespace {
 constexpr std::size_t kMaxLines = 16;
 constexpr float kEpsilon = 1e-5f;
 
-// A half-plane of allowed velocities: those to the left of the directed line.
+// A half-plane of allowed velocities: those to the left of the directed line. Trivial
+// (no initialisers), so a Lines on the stack costs nothing until lines are added; only
+// the first `count` are ever read.
 struct Line {
-    glm::vec2 point{0.0f};
-    glm::vec2 direction{1.0f, 0.0f};
+    glm::vec2 point;
+    glm::vec2 direction;
 };
 
 struct Lines {

@@ -12,10 +12,11 @@ using namespace detail;
 
 namespace {
 
+// A request counts when its weighted force is finite. That alone also rules out a
+// non-finite weight or force: any infinity or NaN among them makes some product an
+// infinity or a NaN (0 * inf is NaN), so one test does what three did.
 bool usable(const SteeringRequest& r, glm::vec3& weighted)
 {
-    if (!std::isfinite(r.weight) || !isFinite(r.force))
-        return false;
     weighted = r.force * r.weight;
     return isFinite(weighted);
 }

@@ -29,12 +29,18 @@ SteeringAgent sanitised(const SteeringAgent& s)
     return out;
 }
 
-void groundFrame(SteeringAgent& s)
+// The ground frame rebuilt from the velocity; `forward` is the unsanitised previous one,
+// read only when standing (then made unit as sanitised() would, before flattening).
+void groundFrame(SteeringAgent& s, glm::vec3 forward)
 {
     s.velocity.y = 0.0f;
     const float speed = glm::length(s.velocity);
-    const glm::vec3 flatForward = normalizeOr(glm::vec3(s.forward.x, 0.0f, s.forward.z), glm::vec3(0.0f, 0.0f, 1.0f));
-    s.forward = speed > kStoppedSpeed ? s.velocity / speed : flatForward;
+    if (speed > kStoppedSpeed) {
+        s.forward = s.velocity / speed;
+    } else {
+        const glm::vec3 unit = normalizeOr(forward, glm::vec3(0.0f, 0.0f, 1.0f));
+        s.forward = normalizeOr(glm::vec3(unit.x, 0.0f, unit.z), glm::vec3(0.0f, 0.0f, 1.0f));
+    }
     s.up = kWorldUp;
     s.side = rightOfForward(s.forward);
 }
@@ -66,9 +72,17 @@ void flyingFrame(SteeringAgent& s, glm::vec3 acceleration, float dt, const Vehic
 
 SteeringAgent integrateVehicle(const SteeringAgent& state, glm::vec3 force, float dt, const VehicleParams& params)
 {
-    SteeringAgent s = sanitised(state);
     if (!(std::isfinite(dt) && dt > 0.0f))
-        return s;
+        return sanitised(state);
+    // A walker's frame is rebuilt from scratch below, so only its position and velocity
+    // need sanitising first (the old forward matters only when it stands: groundFrame).
+    SteeringAgent s = state;
+    if (params.flying) {
+        s = sanitised(state);
+    } else {
+        s.position = finiteOrZero(state.position);
+        s.velocity = finiteOrZero(state.velocity);
+    }
     const float maxSpeed = nonNegative(s.maxSpeed);
     const glm::vec3 f = truncate(finiteOrZero(force), s.maxForce);
     const glm::vec3 before = s.velocity;
@@ -86,7 +100,7 @@ SteeringAgent integrateVehicle(const SteeringAgent& state, glm::vec3 force, floa
     if (params.flying)
         flyingFrame(s, (s.velocity - before) / dt, dt, params);
     else
-        groundFrame(s);
+        groundFrame(s, state.forward);
     return s;
 }
 

@@ -11,6 +11,7 @@
 #include <array>
 #include <bit>
 #include <cmath>
+#include <optional>
 
 namespace throng::sim {
 
@@ -194,7 +195,7 @@ glm::vec3 World::steer(std::size_t i, const SteeringAgent& self, std::span<const
         if (nearest < probe)
             requests.add(stayInside(self, m_bounds, s.containment), s.w(B::Containment) * brainWeight(i, B::Containment));
     }
-    if (s.on(B::WallFollowing)) {
+    if (s.on(B::WallFollowing) && !m_walls.segments().empty()) {
         std::array<WallSegment, kMaxNearWalls> walls;
         std::size_t n = 0;
         const float reach = s.walls.feelerMinM + s.walls.feelerLookaheadS * self.speed() + s.walls.standoffM +
@@ -229,8 +230,11 @@ glm::vec3 World::steer(std::size_t i, const SteeringAgent& self, std::span<const
     }
     // Separation and collision avoidance leave to lower-priority neighbours the whole
     // of making way (WorldPriority.h).
-    std::array<Neighbour, kMaxNeighbours> yielding;
-    const std::span<const Neighbour> avoided = neighboursToAvoid(i, near, yielding.data());
+    // (The buffer is only filled, so only built, when priorities differ.)
+    std::optional<std::array<Neighbour, kMaxNeighbours>> yielding;
+    if (m_makingWay)
+        yielding.emplace();
+    const std::span<const Neighbour> avoided = m_makingWay ? neighboursToAvoid(i, near, yielding->data()) : near;
     request(B::Separation, [&] { return separate(self, avoided, s.separation); });
     request(B::UnalignedCollisionAvoidance, [&] { return avoidUnalignedCollisions(self, avoided, s.unaligned); });
     if (leaderIndex >= 0) {
@@ -282,6 +286,8 @@ glm::vec3 World::steer(std::size_t i, const SteeringAgent& self, std::span<const
 std::span<const Neighbour> World::neighboursToAvoid(std::size_t i, std::span<const Neighbour> near,
                                                     Neighbour* buffer) const
 {
+    if (!m_makingWay)
+        return near;  // all equals: nobody makes way
     const std::uint32_t* index = &m_nearIndex[i * kMaxNeighbours];
     const float priority = collision(i).priority;
     std::size_t n = 0;
@@ -310,14 +316,16 @@ glm::vec3 World::avoidReciprocally(std::size_t i, const SteeringAgent& self, glm
     const std::uint32_t* index = &m_nearIndex[i * kMaxNeighbours];
     const glm::vec2 fwd = xz(self.forward);
     std::size_t oncoming = 0, count = 0;
+    const TypeCollision& mine = collision(i);
     for (std::size_t k = 0; k < near.size(); ++k) {
-        const float share = avoidanceShare(collision(i), collision(index[k]), m_stopped[index[k]] != 0);
+        const bool stopped = m_stopped[index[k]] != 0;
+        // Between equals (no priorities in the scene) the share is 1 or 1/2, as avoidanceShare says.
+        const float share = m_makingWay ? avoidanceShare(mine, collision(index[k]), stopped) : (stopped ? 1.0f : 0.5f);
         if (share <= 0.0f)
             continue;
         PlanarNeighbour& o = others[count++];
         o = {xz(near[k].position), xz(near[k].velocity), near[k].radius, share};
-        if (!m_stopped[index[k]] && glm::dot(xz(near[k].forward), fwd) < -0.5f &&
-            glm::dot(o.position - xz(self.position), fwd) > 0.0f)
+        if (!stopped && glm::dot(xz(near[k].forward), fwd) < -0.5f && glm::dot(o.position - xz(self.position), fwd) > 0.0f)
             ++oncoming;
     }
     // Keep to the right of oncoming walkers (the pedestrians' convention), more the more

@@ -20,6 +20,8 @@ using namespace detail;
 void World::step()
 {
     const std::size_t n = m_pos.size();
+    // Anything to constrain walkers against? Not in an open field like `cross`.
+    const bool hasStatics = !m_walls.segments().empty() || !m_circles.empty();
 
     // Grid: index agents by cell for neighbour queries (the last step's count left it
     // current for these positions).
@@ -68,7 +70,8 @@ void World::step()
         holdAtSignal(i, next.position);
         // Constrain: no agent ends a step inside a wall or obstacle; walkers stand on the ground.
         if (!s.vehicle.flying) {
-            constrain(i, self.position, next.position);
+            if (hasStatics)
+                constrain(i, self.position, next.position);
             next.position.y = groundHeight(next.position.x, next.position.z);
             next.velocity = (next.position - self.position) / m_dt;
             next.velocity.y = 0.0f;
@@ -105,7 +108,8 @@ void World::step()
         if (moved > maxMove && moved > 0.0f)
             p = m_pos[i] + move * (maxMove / moved);
         if (!flying) {
-            constrain(i, m_pos[i], p);
+            if (hasStatics)
+                constrain(i, m_pos[i], p);
             p.y = m_nextPos[i].y;
         }
         m_resolvedPos[i] = p;
@@ -179,14 +183,18 @@ void World::commit(std::size_t i, std::uint64_t& wallCrossings)
     const glm::vec2 from = xz(m_pos[i]), to = xz(m_nextPos[i]);
     // Fliers pass over walls; only walkers and vehicles can penetrate one.
     // Vehicles and heroes go where traffic and keyframes say (a car crosses a crosswalk's kerb).
-    if (!m_steering[m_info[i].typeIndex].vehicle.flying && !m_traffic.isDriven(i))
+    if (!m_walls.segments().empty() && !m_steering[m_info[i].typeIndex].vehicle.flying && !m_traffic.isDriven(i))
         m_walls.forEachNear((from + to) * 0.5f, 0.5f * glm::length(to - from) + 0.01f, [&](std::uint32_t k) {
         const Segment& s = m_walls.segment(k);
         if (segmentsCross(from, to, s.a, s.b))
             ++wallCrossings;
     });
     // Animate: the gait advances by distance over stride length, so feet don't slide.
-    m_phase[i] = std::fmod(m_phase[i] + glm::length(to - from) / m_stride[i], 1.0f);
+    // (fmod's exact answer, without its call for the usual 0 <= x < 2.)
+    const float phase = m_phase[i] + glm::length(to - from) / m_stride[i];
+    m_phase[i] = phase >= 0.0f && phase < 1.0f   ? phase
+                 : phase >= 1.0f && phase < 2.0f ? phase - 1.0f
+                                                 : std::fmod(phase, 1.0f);
     m_pos[i] = m_nextPos[i];
     m_vel[i] = m_nextVel[i];
     m_fwd[i] = m_nextFwd[i];

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace throng::sim::detail {
 
@@ -19,38 +20,43 @@ inline constexpr float kMinMassKg = 1e-3f;        // zero or negative mass is cl
 inline constexpr float kMinResponseTimeS = 1e-3f; // response times are clamped to 1 ms
 inline const glm::vec3 kWorldUp{0.0f, 1.0f, 0.0f};
 
+inline constexpr float kInfinity = std::numeric_limits<float>::infinity();
+
+// These run dozens of times per agent per step, so they are written as plain compares:
+// x * 0 is 0 for every finite x and NaN for an infinity or a NaN, so a sum of such
+// products is 0 exactly when all are finite (one branch instead of one per component).
 inline bool isFinite(float x) { return std::isfinite(x); }
-inline bool isFinite(glm::vec2 v) { return std::isfinite(v.x) && std::isfinite(v.y); }
-inline bool isFinite(glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+inline bool isFinite(glm::vec2 v) { return v.x * 0.0f + v.y * 0.0f == 0.0f; }
+inline bool isFinite(glm::vec3 v) { return v.x * 0.0f + v.y * 0.0f + v.z * 0.0f == 0.0f; }
 
 inline float finiteOr(float x, float fallback) { return std::isfinite(x) ? x : fallback; }
 inline glm::vec3 finiteOrZero(glm::vec3 v) { return isFinite(v) ? v : glm::vec3(0.0f); }
 
-// A limit parameter made usable: non-finite or negative becomes 0.
-inline float nonNegative(float x) { return std::isfinite(x) && x > 0.0f ? x : 0.0f; }
+// A limit parameter made usable: non-finite or negative becomes 0 (NaN fails both compares).
+inline float nonNegative(float x) { return x > 0.0f && x < kInfinity ? x : 0.0f; }
 
-inline float effectiveMass(float massKg) { return std::isfinite(massKg) && massKg > kMinMassKg ? massKg : kMinMassKg; }
+inline float effectiveMass(float massKg) { return massKg > kMinMassKg && massKg < kInfinity ? massKg : kMinMassKg; }
 
 // One division and a multiply per component (not three divisions): these run several
 // times per agent per step.
 inline glm::vec3 normalizeOr(glm::vec3 v, glm::vec3 fallback)
 {
     const float l = glm::length(v);
-    return std::isfinite(l) && l > kTiny ? v * (1.0f / l) : fallback;
+    return l > kTiny && l < kInfinity ? v * (1.0f / l) : fallback;
 }
 
 inline glm::vec2 normalizeOr(glm::vec2 v, glm::vec2 fallback)
 {
     const float l = glm::length(v);
-    return std::isfinite(l) && l > kTiny ? v * (1.0f / l) : fallback;
+    return l > kTiny && l < kInfinity ? v * (1.0f / l) : fallback;
 }
 
 // Shortens v to at most maxLength (<= 0 gives zero); keeps its direction.
 inline glm::vec3 truncate(glm::vec3 v, float maxLength)
 {
     maxLength = nonNegative(maxLength);
-    const float l2 = glm::dot(v, v);
-    if (!std::isfinite(l2))
+    const float l2 = glm::dot(v, v);  // >= 0, +inf or NaN
+    if (!(l2 < kInfinity))
         return glm::vec3(0.0f);
     return l2 > maxLength * maxLength ? v * (maxLength / std::sqrt(l2)) : v;
 }
@@ -70,7 +76,7 @@ inline glm::vec2 planarHeading(const SteeringAgent& agent)
 {
     const glm::vec2 v = xz(agent.velocity);
     const float l = glm::length(v);
-    if (std::isfinite(l) && l > kTiny)
+    if (l > kTiny && l < kInfinity)
         return v * (1.0f / l);
     return normalizeOr(xz(agent.forward), glm::vec2(0.0f));
 }
@@ -79,7 +85,7 @@ inline glm::vec2 planarHeading(const SteeringAgent& agent)
 inline glm::vec3 heading(const SteeringAgent& agent)
 {
     const float l = glm::length(agent.velocity);
-    if (std::isfinite(l) && l > kTiny)
+    if (l > kTiny && l < kInfinity)
         return agent.velocity * (1.0f / l);
     return normalizeOr(agent.forward, glm::vec3(0.0f, 0.0f, 1.0f));
 }
