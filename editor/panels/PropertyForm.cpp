@@ -6,6 +6,7 @@
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
+#include <QKeyEvent>
 #include <QLabel>
 #include <QLineEdit>
 #include <QSignalBlocker>
@@ -43,6 +44,21 @@ void showNumber(Spin* spin, std::optional<Value> value, double min)
 PropertyForm::PropertyForm(SceneDocument& document, QFormLayout* layout, QWidget* owner)
     : QObject(owner), m_document(document), m_layout(layout), m_owner(owner)
 {
+}
+
+bool PropertyForm::eventFilter(QObject* watched, QEvent* event)
+{
+    // A letter typed on a combo box picks its item (keyboard search) instead of firing the
+    // tool shortcut of that letter (G for the goal tool) while the combo box has focus.
+    if (event->type() == QEvent::ShortcutOverride) {
+        const auto* key = static_cast<QKeyEvent*>(event);
+        if (!key->text().isEmpty() && key->text().front().isPrint() &&
+            !(key->modifiers() & (Qt::ControlModifier | Qt::AltModifier | Qt::MetaModifier))) {
+            event->accept();
+            return true;
+        }
+    }
+    return QObject::eventFilter(watched, event);
 }
 
 ItemKind PropertyForm::kind() const
@@ -142,6 +158,7 @@ void PropertyForm::addIndexChoice(const QString& key, const QString& label, cons
 {
     auto* combo = new QComboBox(m_owner);
     combo->setObjectName(key);
+    combo->installEventFilter(this);
     connect(combo, &QComboBox::activated, this, [combo, apply](int index) {
         const QVariant data = combo->itemData(index);
         if (data.isValid())
@@ -164,20 +181,24 @@ void PropertyForm::addChoice(const QString& key, const QString& label, Options o
 {
     auto* combo = new QComboBox(m_owner);
     combo->setObjectName(key);
+    combo->installEventFilter(this);
     combo->setEditable(editable);
     if (editable)
         combo->setInsertPolicy(QComboBox::NoInsert);
     connect(combo, &QComboBox::activated, this, [this, combo, key, label, locate](int index) {
         const QVariant data = combo->itemData(index);
-        QString name = data.isValid() ? data.toString() : QString();
-        if (!data.isValid()) {
-            // "(mixed)", or with an editable combo a name the user typed.
-            if (!combo->isEditable() || combo->currentText() == mixedText())
-                return;
-            name = combo->currentText().trimmed();
-        }
-        apply(key, label, locate, name.toStdString());
+        if (data.isValid())  // not "(mixed)"
+            apply(key, label, locate, data.toString().toStdString());
     });
+    if (editable) {
+        // A typed name: QComboBox::NoInsert emits nothing for it, so take it from the edit.
+        connect(combo->lineEdit(), &QLineEdit::editingFinished, this, [this, combo, key, label, locate] {
+            const QString text = combo->currentText().trimmed();
+            if (text == mixedText())
+                return;
+            apply(key, label, locate, text == tr("(none)") ? std::string() : text.toStdString());
+        });
+    }
     addRow(label, combo, [this, combo, options, locate, none] {
         const QSignalBlocker block(combo);
         combo->clear();

@@ -111,6 +111,9 @@ public:
     // Re-reads every field from the scene (not while an edit of ours is being pushed).
     void refresh();
 
+protected:
+    bool eventFilter(QObject* watched, QEvent* event) override;
+
 signals:
     // An edit was refused; the text says why and what stayed.
     void problem(const QString& text);
