@@ -142,12 +142,16 @@ void MainWindow::createEditMenu()
     remove->setShortcut(QKeySequence::Delete);
     remove->setToolTip(tr("Delete the selected items (agents, paths, goals, lanes, lights, heroes, groups, ...)"));
     connect(remove, &QAction::triggered, this, [this] {
-        auto* command = new DeleteItemsCommand(m_document, m_document.selection());
-        if (command->isEmpty() || !command->refusal().isEmpty()) {
-            if (!command->refusal().isEmpty()) {
-                m_messages->showNote(command->refusal());
+        const Selection& selection = m_document.selection();
+        auto* command = new DeleteItemsCommand(m_document, selection);
+        QString why = command->refusal();
+        if (command->isEmpty() && !selection.empty() && selection.front().kind == ItemKind::Brain)
+            why = tr("Brains are deleted in the brain editor (View > Brains, Ctrl+B), which knows who runs them.");
+        if (command->isEmpty() || !why.isEmpty()) {
+            if (!why.isEmpty()) {
+                m_messages->showNote(why);
                 m_messagesDock->show();
-                statusBar()->showMessage(command->refusal(), 8000);
+                statusBar()->showMessage(why, 8000);
             }
             delete command;
             return;

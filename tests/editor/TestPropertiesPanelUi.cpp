@@ -176,6 +176,16 @@ private slots:
         QCOMPARE(window.document().scene().agents[0].headingDeg, 90.0f);
         QCOMPARE(window.document().scene().agents[1].headingDeg, 90.0f);
         QCOMPARE(window.document().scene().agents[2].headingDeg, 0.0f);
+        QCOMPARE(window.document().undoStack()->count(), 2);  // the brain, the heading
+        // Stepping the same field on (arrow keys, a drag of the arrows) merges into that step.
+        QTest::keyClick(heading, Qt::Key_Up);
+        QTest::keyClick(heading, Qt::Key_Up);
+        QCOMPARE(window.document().scene().agents[1].headingDeg, 100.0f);
+        QCOMPARE(window.document().undoStack()->count(), 2);
+        undo(window);
+        QCOMPARE(window.document().scene().agents[0].headingDeg, 0.0f);
+        QCOMPARE(window.document().scene().agents[1].headingDeg, 0.0f);
+        QCOMPARE(window.document().scene().agents[0].brain, std::string("go"));
     }
 
     void renameAPathRefusesATakenNameAndCarriesItsFollowers()
