@@ -16,11 +16,15 @@
 #include <glm/geometric.hpp>
 
 #include <QApplication>
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QLineEdit>
 #include <QScrollArea>
+#include <QSpinBox>
 #include <QStandardPaths>
+#include <QStyle>
+#include <QStyleOptionButton>
 #include <QTableWidget>
 #include <QTest>
 
@@ -186,6 +190,39 @@ private slots:
         QCOMPARE(window.document().scene().agents[0].headingDeg, 0.0f);
         QCOMPARE(window.document().scene().agents[1].headingDeg, 0.0f);
         QCOMPARE(window.document().scene().agents[0].brain, std::string("go"));
+    }
+
+    void checkBoxesAndCountsEditPathsAndGroups()
+    {
+        MainWindow window;
+        QVERIFY(showWithYaml(window, m_dir, "checks.yaml", panelScene()));
+        const sim::Scene& scene = window.document().scene();
+        selectInOutliner(window, {{ItemKind::Path, 0}, {ItemKind::Path, 1}});
+        auto* closed = field<QCheckBox>(window, "closed");
+        QVERIFY(closed);
+        QTRY_VERIFY(closed->isVisible());
+        QCOMPARE(closed->checkState(), Qt::Unchecked);
+        QStyleOptionButton box;
+        box.initFrom(closed);
+        QTest::mouseClick(closed, Qt::LeftButton, {},
+                          closed->style()->subElementRect(QStyle::SE_CheckBoxIndicator, &box, closed).center());
+        QVERIFY(scene.paths[0].closed && scene.paths[1].closed);
+        QCOMPARE(window.document().undoStack()->count(), 1);
+        undo(window);
+        QVERIFY(!scene.paths[0].closed && !scene.paths[1].closed);
+
+        selectInOutliner(window, {{ItemKind::Group, 0}});
+        auto* count = field<QSpinBox>(window, "count");
+        QCOMPARE(count->value(), 5);
+        count->setFocus();
+        count->selectAll();
+        QTest::keyClicks(count, "12");
+        QTest::keyClick(count, Qt::Key_Return);
+        QCOMPARE(scene.groups[0].count, 12u);
+        pick(window, "goal", "spare");
+        QCOMPARE(scene.groups[0].goal, std::string("spare"));
+        QCOMPARE(window.document().undoStack()->count(), 2);  // the undone check replaced by the count, the goal
+        QTRY_COMPARE(window.viewport().agentCount(), std::size_t(6 + 12 + 1 + 1));  // placed, group, car, hero
     }
 
     void renameAPathRefusesATakenNameAndCarriesItsFollowers()
