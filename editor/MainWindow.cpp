@@ -100,7 +100,8 @@ void MainWindow::createDocks()
 {
     m_outliner = new OutlinerPanel(m_document, this);
     addDock(tr("Outliner"), "outlinerDock", m_outliner, Qt::LeftDockWidgetArea);
-    addDock(tr("Properties"), "propertiesDock", new PropertiesPanel(m_document, this), Qt::RightDockWidgetArea);
+    auto* properties = new PropertiesPanel(m_document, this);
+    addDock(tr("Properties"), "propertiesDock", properties, Qt::RightDockWidgetArea);
     auto* history = new QUndoView(m_document.undoStack(), this);
     history->setObjectName("historyView");
     history->setEmptyLabel(tr("<opened>"));
@@ -116,6 +117,11 @@ void MainWindow::createDocks()
     brainDock->toggleViewAction()->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_B));
     brainDock->toggleViewAction()->setToolTip(tr("Show or hide the brain editor (Ctrl+B)"));
     connect(brains, &BrainEditorPanel::brainMessages, m_messages, &MessagesPanel::showDiagnostics);
+    connect(properties, &PropertiesPanel::problem, this, [this](const QString& text) {
+        m_messages->showNote(text);
+        m_messagesDock->show();
+        statusBar()->showMessage(text, 8000);
+    });
 }
 
 void MainWindow::createEditMenu()
@@ -134,10 +140,19 @@ void MainWindow::createEditMenu()
     QAction* remove = menu->addAction(tr("&Delete"));
     remove->setObjectName("deleteAction");
     remove->setShortcut(QKeySequence::Delete);
-    remove->setToolTip(tr("Delete the selected flow strokes, walls and obstacles"));
+    remove->setToolTip(tr("Delete the selected items (agents, paths, goals, lanes, lights, heroes, groups, ...)"));
     connect(remove, &QAction::triggered, this, [this] {
-        auto* command = new DeleteItemsCommand(m_document, m_document.selection());
-        if (command->isEmpty()) {
+        const Selection& selection = m_document.selection();
+        auto* command = new DeleteItemsCommand(m_document, selection);
+        QString why = command->refusal();
+        if (command->isEmpty() && !selection.empty() && selection.front().kind == ItemKind::Brain)
+            why = tr("Brains are deleted in the brain editor (View > Brains, Ctrl+B), which knows who runs them.");
+        if (command->isEmpty() || !why.isEmpty()) {
+            if (!why.isEmpty()) {
+                m_messages->showNote(why);
+                m_messagesDock->show();
+                statusBar()->showMessage(why, 8000);
+            }
             delete command;
             return;
         }

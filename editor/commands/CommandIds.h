@@ -11,6 +11,7 @@ enum CommandId : int {
     kChangeAgentsId,
     kMoveItemsId,
     kEditBrainId,
+    kChangeValuesId,
 };
 
 }  // namespace throng::editor

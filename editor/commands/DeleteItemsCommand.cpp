@@ -1,12 +1,21 @@
 #include "editor/commands/DeleteItemsCommand.h"
 
+#include "editor/commands/NameReferences.h"
+
 #include <QCoreApplication>
+#include <QStringList>
 
 #include <algorithm>
+#include <set>
 
 namespace throng::editor {
 
 namespace {
+
+QString tr(const char* text, int n = -1)
+{
+    return QCoreApplication::translate("DeleteItemsCommand", text, nullptr, n);
+}
 
 template <class Item>
 void take(const std::vector<Item>& list, std::size_t index, std::vector<std::pair<std::size_t, Item>>& out)
@@ -35,45 +44,106 @@ void restoreAll(std::vector<Item>& list, const std::vector<std::pair<std::size_t
 
 bool DeleteItemsCommand::deletable(ItemKind kind)
 {
-    return kind == ItemKind::FlowStroke || kind == ItemKind::Wall || kind == ItemKind::Obstacle;
+    return kind != ItemKind::Settings && kind != ItemKind::Brain;
+}
+
+template <class Scene, class F>
+void DeleteItemsCommand::forEachList(Scene& s, F f)
+{
+    f(s.agents, m_agents, ItemKind::Agent);
+    f(s.agentTypes, m_types, ItemKind::AgentType);
+    f(s.groups, m_groups, ItemKind::Group);
+    f(s.paths, m_paths, ItemKind::Path);
+    f(s.walls, m_walls, ItemKind::Wall);
+    f(s.obstacles, m_obstacles, ItemKind::Obstacle);
+    f(s.goals, m_goals, ItemKind::Goal);
+    f(s.trafficLights, m_lights, ItemKind::TrafficLight);
+    f(s.lanes, m_lanes, ItemKind::Lane);
+    f(s.flowStrokes, m_strokes, ItemKind::FlowStroke);
+    f(s.heroes, m_heroes, ItemKind::Hero);
 }
 
 DeleteItemsCommand::DeleteItemsCommand(SceneDocument& document, const Selection& items) : m_document(document)
 {
-    const sim::Scene& s = document.scene();
-    for (const SceneItem& item : items) {
-        if (item.kind == ItemKind::FlowStroke)
-            take(s.flowStrokes, item.index, m_strokes);
-        else if (item.kind == ItemKind::Wall)
-            take(s.walls, item.index, m_walls);
-        else if (item.kind == ItemKind::Obstacle)
-            take(s.obstacles, item.index, m_obstacles);
-    }
-    auto byIndex = [](const auto& a, const auto& b) { return a.first < b.first; };
-    std::sort(m_strokes.begin(), m_strokes.end(), byIndex);
-    std::sort(m_walls.begin(), m_walls.end(), byIndex);
-    std::sort(m_obstacles.begin(), m_obstacles.end(), byIndex);
-    const std::size_t count = m_strokes.size() + m_walls.size() + m_obstacles.size();
+    const sim::Scene& scene = document.scene();
+    forEachList(scene, [&](const auto& list, auto& removed, ItemKind kind) {
+        for (const SceneItem& item : items)
+            if (item.kind == kind)
+                take(list, item.index, removed);
+        std::sort(removed.begin(), removed.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+        m_count += removed.size();
+    });
+    checkReferences(scene, items);
     const auto first = std::find_if(items.begin(), items.end(), [](SceneItem i) { return deletable(i.kind); });
-    setText(count == 1 ? QCoreApplication::translate("DeleteItemsCommand", "Delete %1").arg(itemLabel(s, *first))
-                       : QCoreApplication::translate("DeleteItemsCommand", "Delete %n item(s)", nullptr, int(count)));
+    setText(m_count == 1 ? tr("Delete %1").arg(itemLabel(scene, *first)) : tr("Delete %n item(s)", int(m_count)));
+}
+
+// The rules, item by item, for what others refer to:
+// - A path, goal, lane or agent type still named by an item that stays (a group following
+//   the path, agents walking to the goal, vehicles or a stop line on the lane, anything of
+//   the type) is refused, naming who uses it: clearing the reference would silently change
+//   what a whole group does far from the selection, and a vehicle or hero cannot live
+//   without its lane or type. Deleting the users in the same selection is fine.
+// - A deleted placed agent or hero that others follow (`leader`) is deleted, and the
+//   followers' leader is cleared in the same command: following nobody is valid, and
+//   it is what a user who removes the leader expects.
+void DeleteItemsCommand::checkReferences(const sim::Scene& scene, const Selection& items)
+{
+    const std::set<std::pair<int, std::size_t>> deleted = [&] {
+        std::set<std::pair<int, std::size_t>> d;
+        for (const SceneItem& i : items)
+            d.insert({int(i.kind), i.index});
+        return d;
+    }();
+    QStringList problems;
+    for (const SceneItem& item : items) {
+        if (item.kind != ItemKind::Path && item.kind != ItemKind::Goal && item.kind != ItemKind::Lane &&
+            item.kind != ItemKind::AgentType)
+            continue;
+        if (item.index >= itemCount(scene, item.kind))
+            continue;
+        QStringList users;
+        std::size_t count = 0;
+        for (const NameUse& use : nameUses(scene, item.kind, nameOf(scene, item))) {
+            if (use.user && deleted.count({int(use.user->kind), use.user->index}))
+                continue;
+            if (++count <= 3)
+                users << use.who;
+        }
+        if (count == 0)
+            continue;
+        if (count > 3)
+            users << tr("%n more", int(count - 3));
+        problems << tr("%1 is still used by %2").arg(itemLabel(scene, item), users.join(", "));
+    }
+    if (!problems.isEmpty())
+        m_refusal = tr("Nothing deleted: %1. Delete or change those first.").arg(problems.join("; "));
+
+    std::vector<std::uint32_t> ids;
+    for (const auto& [index, agent] : m_agents)
+        ids.push_back(agent.id);
+    for (const auto& [index, hero] : m_heroes)
+        ids.push_back(hero.id);
+    for (std::uint32_t id : ids)
+        for (const LeaderUse& use : leaderUses(scene, id))
+            m_clearedLeaders.emplace_back(use.locate, id);
 }
 
 void DeleteItemsCommand::redo()
 {
     m_document.modify([this](sim::Scene& s) {
-        removeAll(s.flowStrokes, m_strokes);
-        removeAll(s.walls, m_walls);
-        removeAll(s.obstacles, m_obstacles);
+        for (const auto& [locate, id] : m_clearedLeaders)
+            locate(s) = 0;
+        forEachList(s, [](auto& list, const auto& removed, ItemKind) { removeAll(list, removed); });
     });
 }
 
 void DeleteItemsCommand::undo()
 {
     m_document.modify([this](sim::Scene& s) {
-        restoreAll(s.flowStrokes, m_strokes);
-        restoreAll(s.walls, m_walls);
-        restoreAll(s.obstacles, m_obstacles);
+        forEachList(s, [](auto& list, const auto& removed, ItemKind) { restoreAll(list, removed); });
+        for (const auto& [locate, id] : m_clearedLeaders)
+            locate(s) = id;
     });
 }
 

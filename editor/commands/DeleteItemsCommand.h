@@ -1,14 +1,19 @@
 #pragma once
-// Deletes the selected flow strokes, walls and obstacles (things nothing else in the
-// scene refers to by name). Records each removed item with its index, so undo puts every
-// one back where it was. Never touches widgets or the selection.
+// Deletes the selected items: placed agents, agent types, groups, paths, walls,
+// obstacles, goals, traffic lights, lanes, flow strokes and heroes. Records each removed
+// item with its index (and every reference it changed), so undo puts the scene back bit
+// for bit. An item others still refer to by name is not deleted: refusal() says who uses
+// it. Never touches widgets or the selection.
 
 #include "editor/SceneDocument.h"
 #include "editor/SceneItem.h"
 
+#include <QString>
 #include <QUndoCommand>
 
 #include <cstddef>
+#include <cstdint>
+#include <functional>
 #include <utility>
 #include <vector>
 
@@ -22,17 +27,37 @@ public:
     DeleteItemsCommand(SceneDocument& document, const Selection& items);
 
     // Nothing to delete (no deletable item was given).
-    bool isEmpty() const { return m_strokes.empty() && m_walls.empty() && m_obstacles.empty(); }
+    bool isEmpty() const { return m_count == 0; }
+    // Why this delete must not be pushed ("Path "a" is still used by group g"), or empty.
+    const QString& refusal() const { return m_refusal; }
 
     void redo() override;
     void undo() override;
 
 private:
+    template <class Item>
+    using Removed = std::vector<std::pair<std::size_t, Item>>;  // ascending by index
+    // Calls f(list, removed) for every list this command deletes from.
+    template <class Scene, class F>
+    void forEachList(Scene& scene, F f);
+    void checkReferences(const sim::Scene& scene, const Selection& items);
+
     SceneDocument& m_document;
-    // Ascending by index, as they stood before the delete.
-    std::vector<std::pair<std::size_t, sim::FlowStroke>> m_strokes;
-    std::vector<std::pair<std::size_t, sim::Wall>> m_walls;
-    std::vector<std::pair<std::size_t, sim::Obstacle>> m_obstacles;
+    std::size_t m_count = 0;
+    QString m_refusal;
+    Removed<sim::Agent> m_agents;
+    Removed<sim::AgentType> m_types;
+    Removed<sim::SpawnGroup> m_groups;
+    Removed<sim::Path> m_paths;
+    Removed<sim::Wall> m_walls;
+    Removed<sim::Obstacle> m_obstacles;
+    Removed<sim::Goal> m_goals;
+    Removed<sim::TrafficLight> m_lights;
+    Removed<sim::Lane> m_lanes;
+    Removed<sim::FlowStroke> m_strokes;
+    Removed<sim::Hero> m_heroes;
+    // Leaders cleared because the agent or hero they name is deleted, with the old id.
+    std::vector<std::pair<std::function<std::uint32_t&(sim::Scene&)>, std::uint32_t>> m_clearedLeaders;
 };
 
 }  // namespace throng::editor

@@ -1,7 +1,8 @@
 #pragma once
-// The properties panel: number fields of the selected items (all of one kind; with
-// several selected, a change applies to each, as one undo step). Every change is a
-// ChangeValueCommand on the document's stack; the panel never writes the scene.
+// The properties panel: the fields of the selected items (all of one kind) with fitting
+// widgets, built per kind by PropertyRows; with several selected, a field shows the
+// common value or "(mixed)" and an edit applies to each, as one undo step. Every change
+// is a command on the document's stack; the panel never writes the scene.
 
 #include <QWidget>
 
@@ -10,6 +11,7 @@ class QLabel;
 
 namespace throng::editor {
 
+class PropertyForm;
 class SceneDocument;
 
 class PropertiesPanel : public QWidget {
@@ -18,15 +20,19 @@ class PropertiesPanel : public QWidget {
 public:
     explicit PropertiesPanel(SceneDocument& document, QWidget* parent = nullptr);
 
+signals:
+    // An edit was refused (an empty or taken name, a bad parameter): why, for the log.
+    void problem(const QString& text);
+
 private:
     void rebuild();
     void refreshValues();
-    void apply(std::size_t field, double value);
 
     SceneDocument& m_document;
     QLabel* m_title = nullptr;
+    QWidget* m_fields = nullptr;
     QFormLayout* m_form = nullptr;
-    bool m_applying = false;
+    PropertyForm* m_rows = nullptr;
 };
 
 }  // namespace throng::editor

@@ -1,6 +1,13 @@
 #include "EditorTestSupport.h"
 
+#include "EditorUiDriver.h"
+
+#include "editor/panels/OutlinerPanel.h"
+#include "editor/simulation/SimulationController.h"
 #include "simcore/io/SceneIO.h"
+
+#include <QAbstractButton>
+#include <QLabel>
 
 #include <QFile>
 #include <QTest>
@@ -60,6 +67,61 @@ QString describe(glm::vec4 colour)
 {
     return describe(qRgb(int(std::lround(colour.r * 255.0f)), int(std::lround(colour.g * 255.0f)),
                          int(std::lround(colour.b * 255.0f))));
+}
+
+bool showWithYaml(MainWindow& window, const QTemporaryDir& dir, const QString& name, const QByteArray& yaml)
+{
+    return showWithSceneFile(window, writeScene(dir, name, yaml));
+}
+
+bool clickButton(MainWindow& window, const QString& objectName)
+{
+    auto* button = window.findChild<QAbstractButton*>(objectName);
+    if (!button)
+        return false;
+    QTest::mouseClick(button, Qt::LeftButton);
+    return true;
+}
+
+bool playToFrame(MainWindow& window, std::size_t frame, int timeoutMs)
+{
+    SimulationController& sim = window.simulation();
+    if (!sim.isPlaying() && !clickButton(window, "playButton"))
+        return false;
+    const bool reached = QTest::qWaitFor([&] { return window.viewport().frameIndex() >= frame; }, timeoutMs);
+    if (sim.isPlaying())
+        clickButton(window, "playButton");
+    return reached;
+}
+
+QString frameText(MainWindow& window)
+{
+    return window.findChild<QLabel*>("frameLabel")->text();
+}
+
+QString agentCountText(MainWindow& window)
+{
+    return window.findChild<QLabel*>("agentCountLabel")->text();
+}
+
+void selectInOutliner(MainWindow& window, const Selection& items)
+{
+    OutlinerPanel& outliner = window.outliner();
+    for (std::size_t k = 0; k < items.size(); ++k) {
+        QTreeWidgetItem* heading = outliner.kindRow(items[k].kind);
+        if (!heading || int(items[k].index) >= heading->childCount())
+            qFatal("the outliner has no row for item %zu of kind %d", items[k].index, int(items[k].kind));
+        heading->setExpanded(true);
+        QTreeWidgetItem* row = heading->child(int(items[k].index));
+        outliner.scrollToItem(row);
+        QTest::mouseClick(outliner.viewport(), Qt::LeftButton, k == 0 ? Qt::NoModifier : Qt::ControlModifier,
+                          outliner.visualItemRect(row).center());
+    }
+}
+
+QByteArray sceneYaml(MainWindow& window)
+{
+    return QByteArray::fromStdString(sim::sceneToYaml(window.document().scene()));
 }
 
 }  // namespace throng::editor::test

@@ -1,7 +1,10 @@
 #pragma once
 // Helpers the editor tests share: scene files written into a temporary folder, the
-// viewport rendered offscreen, and colour comparisons with a readable failure text.
+// viewport rendered offscreen, colour comparisons with a readable failure text, and the
+// steps UI tests repeat on the main window (open a scene, play to a frame, pick items
+// in the outliner, read the status bar, the scene as it would be saved).
 
+#include "editor/MainWindow.h"
 #include "editor/viewport/Viewport.h"
 
 #include <glm/vec4.hpp>
@@ -35,5 +38,21 @@ QRgb pixelAt(const QImage& image, const Viewport& viewport, QPointF widgetPos);
 bool sameColour(QRgb pixel, glm::vec4 colour, int tolerance = 8);
 QString describe(QRgb pixel);
 QString describe(glm::vec4 colour);
+
+// Writes `yaml` as dir/name and opens it in the shown main window (EditorUiDriver's
+// showWithSceneFile). False when any step fails.
+bool showWithYaml(MainWindow& window, const QTemporaryDir& dir, const QString& name, const QByteArray& yaml);
+// Clicks the button with this object name ("playButton", "stepButton").
+bool clickButton(MainWindow& window, const QString& objectName);
+// Presses Play, waits until the viewport shows frame `frame` or later, presses Pause.
+// False when the frame was not reached within `timeoutMs`.
+bool playToFrame(MainWindow& window, std::size_t frame, int timeoutMs = 30000);
+// The status bar's texts: "Frame 12", "227 agents".
+QString frameText(MainWindow& window);
+QString agentCountText(MainWindow& window);
+// Clicks the outliner rows of `items` (Ctrl held from the second on), expanding headings.
+void selectInOutliner(MainWindow& window, const Selection& items);
+// The scene as Save would write it.
+QByteArray sceneYaml(MainWindow& window);
 
 }  // namespace throng::editor::test

@@ -33,11 +33,6 @@ float segmentDistance(glm::vec2 p, glm::vec2 a, glm::vec2 b)
     return glm::length(p - (a + t * ab));
 }
 
-QString agentLabel(MainWindow& window)
-{
-    return window.findChild<QLabel*>("agentCountLabel")->text();
-}
-
 // The crossroads scene shows 210 agents from its spawn groups; placed agents add to them.
 
 }  // namespace
@@ -60,7 +55,7 @@ private slots:
     {
         MainWindow window;
         QVERIFY(showWithScene(window, m_dir, "crossroads.yaml"));
-        QCOMPARE(agentLabel(window), QString("%1 agents").arg(kCrossroadsAgents));
+        QCOMPARE(agentCountText(window), QString("%1 agents").arg(kCrossroadsAgents));
         QVERIFY(clickToolButton(window, "crowdBrush"));
 
         // Across the open block north-west of the crossing, away from walls and posts.
@@ -80,14 +75,14 @@ private slots:
         QVERIFY2(minX < -33.0f && maxX > -17.0f, "the agents must cover the whole stroke");
         const std::size_t painted = agents.size();
         QCOMPARE(window.document().undoStack()->count(), 1);  // the stroke is one step
-        QTRY_COMPARE(agentLabel(window), QString("%1 agents").arg(kCrossroadsAgents + painted));
+        QTRY_COMPARE(agentCountText(window), QString("%1 agents").arg(kCrossroadsAgents + painted));
 
         QTest::keyClick(&window.viewport(), Qt::Key_Z, Qt::ControlModifier);
         QTRY_COMPARE(window.document().scene().agents.size(), std::size_t(0));
-        QTRY_COMPARE(agentLabel(window), QString("%1 agents").arg(kCrossroadsAgents));
+        QTRY_COMPARE(agentCountText(window), QString("%1 agents").arg(kCrossroadsAgents));
         QTest::keyClick(&window.viewport(), Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
         QTRY_COMPARE(window.document().scene().agents.size(), painted);
-        QTRY_COMPARE(agentLabel(window), QString("%1 agents").arg(kCrossroadsAgents + painted));
+        QTRY_COMPARE(agentCountText(window), QString("%1 agents").arg(kCrossroadsAgents + painted));
     }
 
     void eraseBrushRemovesOnlyUnderTheBrush()

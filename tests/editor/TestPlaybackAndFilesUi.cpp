@@ -1,6 +1,7 @@
 // Playing, stepping and scrubbing the live simulation with the timeline's buttons and
 // scrub bar, saving an edited scene with Ctrl+S and opening it again, and exporting
 // through File > Export, as a user does.
+#include "EditorTestSupport.h"
 #include "EditorUiDriver.h"
 #include "TestRegistry.h"
 
@@ -25,22 +26,6 @@ using namespace throng;
 using namespace throng::editor;
 using namespace throng::editor::test;
 
-namespace {
-
-QString frameText(MainWindow& window)
-{
-    return window.findChild<QLabel*>("frameLabel")->text();
-}
-
-void click(MainWindow& window, const char* name)
-{
-    auto* button = window.findChild<QToolButton*>(name);
-    QVERIFY2(button, name);
-    QTest::mouseClick(button, Qt::LeftButton);
-}
-
-}  // namespace
-
 class TestPlaybackAndFilesUi : public QObject {
     Q_OBJECT
 
@@ -62,11 +47,11 @@ private slots:
         SimulationController& sim = window.simulation();
         QCOMPARE(frameText(window), QString("Frame 0"));
 
-        click(window, "playButton");
+        QVERIFY(clickButton(window, "playButton"));
         QVERIFY(sim.isPlaying());
         QTRY_VERIFY_WITH_TIMEOUT(window.viewport().frameIndex() >= 24, 20000);
         QVERIFY(frameText(window) != QString("Frame 0"));
-        click(window, "playButton");  // pause
+        QVERIFY(clickButton(window, "playButton"));  // pause
         QVERIFY(!sim.isPlaying());
 
         // A second of walking moves most pedestrians by more than 0.3 m.
@@ -88,9 +73,9 @@ private slots:
         QCOMPARE(window.viewport().frameIndex(), std::size_t(1));
 
         // Step computes or shows the next frame.
-        click(window, "stepButton");
+        QVERIFY(clickButton(window, "stepButton"));
         QTRY_COMPARE(window.viewport().frameIndex(), std::size_t(2));
-        click(window, "restartButton");
+        QVERIFY(clickButton(window, "restartButton"));
         QCOMPARE(window.viewport().frameIndex(), std::size_t(0));
     }
 
@@ -101,7 +86,7 @@ private slots:
         MainWindow window;
         QVERIFY(showWithScene(window, m_dir, "crossroads.yaml"));
         SimulationController& sim = window.simulation();
-        click(window, "stepButton");
+        QVERIFY(clickButton(window, "stepButton"));
         QTRY_COMPARE(window.viewport().frameIndex(), std::size_t(1));
         QVERIFY(clickToolButton(window, "obstacle"));
         clickOnGround(window, {-30, -30});
@@ -109,7 +94,7 @@ private slots:
         QCOMPARE(sim.recordedFrames(), std::size_t(2));
         QCOMPARE(sim.currentFrame(), std::size_t(1));
         QCOMPARE(window.viewport().frameIndex(), std::size_t(1));
-        click(window, "stepButton");
+        QVERIFY(clickButton(window, "stepButton"));
         QTRY_COMPARE(window.viewport().frameIndex(), std::size_t(2));
     }
 
