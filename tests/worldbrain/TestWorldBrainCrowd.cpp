@@ -1,8 +1,9 @@
 // A crowd of brain walkers never freezes itself: 40 walkers with the shipped pedestrian
 // brain, 20 each way along a 3 m sidewalk, get past 16 others who wait at a red crosswalk
-// that opens off it, within 60 s. Before the fix they stood for minutes (4 of 40 past
-// after 90 s): each crowded walker widened its personal space, so all pushed against
-// all, and the waiters the brain stopped could not even be pushed aside.
+// that opens off it, within 60 s. Before the fix none got past in 60 s: each crowded
+// walker widened its personal space, so all pushed against all, and the waiters the brain
+// stopped could not even be pushed aside (with only the brain fixed, 32 of 40 got past;
+// with only the World's yielding, 1 of 40).
 #include "TestRegistry.h"
 
 #include "simcore/io/SceneIO.h"
