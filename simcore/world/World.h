@@ -177,6 +177,7 @@ private:
     std::size_t neighboursThisStep(std::size_t i, Neighbour* out);
     float brainSpeedCap(std::size_t i) const;            // m/s: max speed, or less when the brain asks
     void capToBrainSpeed(std::size_t i, const SteeringAgent& self, SteeringAgent& next) const;
+    glm::vec3 brainLimited(std::size_t i, glm::vec3 v, float aside, float seconds) const;
     float brainWeight(std::size_t i, Behaviour b) const; // multiplies the type's weight; 1 without a brain
     glm::vec3 brainTurnForce(std::size_t i, const SteeringAgent& self) const;
     Clip brainClip(std::size_t i, Clip bySpeed) const;

@@ -26,6 +26,10 @@ namespace {
 // Random streams of their own (see World.cpp's list), so brains shift no other draw.
 enum BrainStream : std::uint64_t { kBrainKey = 301, kGoalSpotR, kGoalSpotA };
 
+// m/s: how fast a walker its brain slows or stops may still step sideways or back to make
+// way (a shuffle, well under a walk).
+constexpr float kYieldSpeedMps = 0.5f;
+
 std::uint32_t tagIndex(std::vector<std::string>& tags, const std::string& name)
 {
     const auto it = std::find(tags.begin(), tags.end(), name);
@@ -273,15 +277,48 @@ float World::brainSpeedCap(std::size_t i) const
 // The brain's speed is a cap applied after steering, not a lower max speed for the
 // behaviours: arrival already slows by distance, and slowing twice (arrival's ramp on a
 // brain-lowered max speed) would make an agent creep toward its goal and never stop.
+// For a walker it caps progress (the velocity along the way it wants to go), not making
+// way: sideways and back it may still move at kYieldSpeedMps, so one its brain holds (at
+// a light, for a hero) steps aside for those who pass instead of standing as a post.
 void World::capToBrainSpeed(std::size_t i, const SteeringAgent& self, SteeringAgent& next) const
 {
     if (!m_brains || m_brains->local[i] < 0)
         return;
-    const float cap = brainSpeedCap(i), v = glm::length(next.velocity);
-    if (v <= cap)
+    const float cap = brainSpeedCap(i);
+    if (glm::length(next.velocity) <= cap)
         return;
-    next.velocity = v > 0.0f ? next.velocity * (cap / v) : next.velocity;
+    next.velocity = brainLimited(i, next.velocity, std::max(cap, std::min(kYieldSpeedMps, m_maxSpeed[i])), 1.0f);
     next.position = self.position + next.velocity * m_dt;
+}
+
+// Agent i's move v over `seconds` (a velocity for 1) within its brain's speed: along the
+// way a walker wants to go at most the brain's speed, sideways and back at most `aside`
+// (m/s); for other agents (or a walker with no path or goal) at most the brain's speed in
+// all. v itself when it is within them or the agent runs no brain.
+glm::vec3 World::brainLimited(std::size_t i, glm::vec3 v, float aside, float seconds) const
+{
+    if (!m_brains || m_brains->local[i] < 0 || isDriven(i))
+        return v;
+    const float cap = brainSpeedCap(i) * seconds, speed = glm::length(v);
+    aside *= seconds;
+    if (speed <= cap)
+        return v;
+    // The way it wants to go: only a walker with a path or a goal has one (for the rest,
+    // wantedHeading is where it happens to be heading).
+    glm::vec2 h(0.0f);
+    if (m_types[m_info[i].typeIndex].kind == AgentKind::Pedestrian && !m_steering[m_info[i].typeIndex].vehicle.flying &&
+        (m_path[i] >= 0 || m_goal[i] >= 0))
+        h = wantedHeading(i);
+    if (!(glm::dot(h, h) > 1e-12f))
+        return v * (cap / speed);
+    h = glm::normalize(h);
+    const glm::vec3 w(h.x, 0.0f, h.y);
+    const float along = glm::dot(v, w);
+    glm::vec3 side = v - w * along;
+    side.y = 0.0f;
+    if (const float s = glm::length(side); s > aside)
+        side *= aside / s;
+    return w * std::clamp(along, -aside, cap) + side + glm::vec3(0.0f, v.y, 0.0f);
 }
 
 float World::brainWeight(std::size_t i, Behaviour b) const

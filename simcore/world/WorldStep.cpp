@@ -102,9 +102,15 @@ void World::step()
         glm::vec3 p = m_nextPos[i] + separateBodies(i);
         const bool flying = m_steering[m_info[i].typeIndex].vehicle.flying;
         // Nobody moves faster than its max speed, nudges included, so what the viewer
-        // sees and the gait it is animated with always agree.
-        const glm::vec3 move = p - m_pos[i];
-        const float maxMove = brainSpeedCap(i) * m_dt, moved = glm::length(move);
+        // sees and the gait it is animated with always agree. A brain's lower speed holds
+        // back only the walker's progress: pushes may move it aside or back, so a walker
+        // its brain stops still gives way, but never on past where its brain holds it.
+        glm::vec3 move = p - m_pos[i];
+        if (const glm::vec3 held = brainLimited(i, move, m_maxSpeed[i], m_dt); held != move) {
+            move = held;
+            p = m_pos[i] + move;
+        }
+        const float maxMove = m_maxSpeed[i] * m_dt, moved = glm::length(move);
         if (moved > maxMove && moved > 0.0f)
             p = m_pos[i] + move * (maxMove / moved);
         if (!flying) {

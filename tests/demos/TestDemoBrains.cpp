@@ -1,6 +1,6 @@
-// The demo scenes run the shipped brains: crossroads cars the car brain, cavalry riders the
-// rider brain, murmuration starlings the boid brain. (The crossroads walkers do not run the
-// pedestrian brain yet: see the note in crossroads.yaml.)
+// The demo scenes run the shipped brains: crossroads cars the car brain, crossroads walkers
+// (the sidewalk and crossing walkers, and the shortest-path errand walkers) the pedestrian
+// brain, cavalry riders the rider brain, murmuration starlings the boid brain.
 // Each type names its brain, the World compiles and runs it, and taking the brain away
 // changes how those agents move (so the brain is not a passenger).
 #include "DemoRuns.h"
@@ -72,6 +72,8 @@ private slots:
         QTest::addColumn<QString>("brain");
         QTest::addColumn<int>("steps");
         QTest::newRow("crossroads cars") << "crossroads.yaml" << "car" << "car" << 480;
+        QTest::newRow("crossroads walkers") << "crossroads.yaml" << "pedestrian" << "pedestrian" << 240;
+        QTest::newRow("crossroads errand walkers") << "crossroads.yaml" << "errand" << "pedestrian" << 240;
         QTest::newRow("cavalry riders") << "cavalry.yaml" << "rider" << "rider" << 48;
         QTest::newRow("murmuration starlings") << "murmuration.yaml" << "starling" << "boid" << 48;
     }
