@@ -147,9 +147,13 @@ void World::restoreDynamicState(const WorldState& s, const std::vector<std::uint
     m_traffic.before = s.pedestriansBefore;
     m_traffic.after = s.pedestriansAfter;
     m_nav.counters = s.navCounters;
+    // Navigation columns exist only in a World with A* or flow-field walkers: when an edit
+    // gave or took the last of them, the World keeps its own (fresh legs, plans anew).
+    if (s.navMode.size() == m_nav.mode.size()) {
 #define THRONG_RESTORE(world, name) m_nav.world = s.name;
-    THRONG_NAV_COLUMNS(THRONG_RESTORE)
+        THRONG_NAV_COLUMNS(THRONG_RESTORE)
 #undef THRONG_RESTORE
+    }
     // Plans are stamped with their grid's generation: on the same cells take the saved grid
     // (and so its generation) with them; on other cells every A* walker plans again.
     if (sameCells(s.navGrid, m_nav.grid)) {
@@ -282,6 +286,9 @@ bool World::adoptState(const WorldState& s, const Scene& stateScene, const Scene
             m_arrivalTime[i] = arrivalTime[i];
             m_arrived[i] = m_stopped[i] = m_stoppedBefore[i] = 0;
         }
+        // A World with no A* or flow-field walkers keeps no navigation columns.
+        if (i >= mode.size() || i >= m_nav.mode.size())
+            continue;
         const bool replans = !legKept || mode[i] != m_nav.mode[i] || !(stateScene.goals == thisScene.goals);
         m_nav.mode[i] = mode[i];
         if (replans) {

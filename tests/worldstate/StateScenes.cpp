@@ -77,10 +77,13 @@ sim::Scene crossroadsWithBrains()
     const std::size_t list = text.find(brains), type = text.find(pedestrian);
     if (list == std::string::npos || type == std::string::npos)
         throw std::runtime_error("crossroads.yaml has no brains list or no pedestrian type");
-    text.insert(type + pedestrian.size(), "    brain: fidget\n");
     const std::string fidget = std::string(kBrain).substr(std::string(kBrain).find("  - name: fidget"));
     text.insert(list + brains.size(), fidget);
-    return parseOrThrow(text);
+    sim::Scene scene = parseOrThrow(text);
+    for (sim::AgentType& t : scene.agentTypes)
+        if (t.name == "pedestrian")
+            t.brain = "fidget";  // in place of the shipped `pedestrian` brain
+    return scene;
 }
 
 sim::Scene smallEvacuation()
