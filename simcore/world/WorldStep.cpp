@@ -4,13 +4,13 @@
 // is the same for any thread count.
 #include "simcore/world/World.h"
 
+#include "simcore/steering/UninitialisedArray.h"
 #include "simcore/world/Rng.h"
 #include "simcore/world/detail/StepGeometry.h"
 
 #include <glm/geometric.hpp>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 
 namespace throng::sim {
@@ -56,7 +56,8 @@ void World::step()
         }
         const SteeringAgent self = steeringAgent(i);
         // Sense: nearby agents in the perception cone.
-        std::array<Neighbour, kMaxNeighbours> near;
+        // (Uninitialised: only the first `count` are written, and only they are read.)
+        UninitialisedArray<Neighbour, kMaxNeighbours> near;
         const std::size_t count = neighboursThisStep(i, near.data());
         // Steer: the type's behaviours, combined.
         WanderState wanderNext;
