@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 namespace throng::sim {
 
@@ -191,11 +192,14 @@ void World::commit(std::size_t i, std::uint64_t& wallCrossings)
             ++wallCrossings;
     });
     // Animate: the gait advances by distance over stride length, so feet don't slide.
-    // (fmod's exact answer, without its call for the usual 0 <= x < 2.)
+    // (fmod's exact answer without its call: for 0 <= x < 2^31, x - trunc(x) is exact,
+    // since trunc(x) <= x < 2 trunc(x) once x >= 1 (Sterbenz), and +0 for whole x, as fmod
+    // gives. A fast flier covers more than a stride a step, so x >= 2 happens.)
     const float phase = m_phase[i] + glm::length(to - from) / m_stride[i];
-    m_phase[i] = phase >= 0.0f && phase < 1.0f   ? phase
-                 : phase >= 1.0f && phase < 2.0f ? phase - 1.0f
-                                                 : std::fmod(phase, 1.0f);
+    m_phase[i] = phase >= 0.0f && phase < 1.0f            ? phase
+                 : phase >= 1.0f && phase < 2.0f          ? phase - 1.0f
+                 : phase >= 2.0f && phase < 2147483648.0f ? phase - float(std::int32_t(phase))
+                                                          : std::fmod(phase, 1.0f);
     m_pos[i] = m_nextPos[i];
     m_vel[i] = m_nextVel[i];
     m_fwd[i] = m_nextFwd[i];
