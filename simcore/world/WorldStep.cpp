@@ -27,7 +27,7 @@ void World::step()
     // Grid: index agents by cell for neighbour queries (the last step's count left it
     // current for these positions).
     if (!m_gridCurrent)
-        m_grid.rebuild(m_pos, m_hasFliers, m_out);
+        m_grid.rebuild(m_pos, m_hasFliers, m_out, m_threads);
     m_gridCurrent = false;
     // Navigate: plans and each walker's waypoint or flow direction (WorldNav.cpp).
     navBeforeStep();
@@ -327,7 +327,7 @@ void World::countStep()
 {
     const std::size_t n = m_pos.size();
     std::uint64_t overlaps = 0, nonFinite = 0, inObstacle = 0, red = 0;
-    m_grid.rebuild(m_pos, m_hasFliers, m_out);
+    m_grid.rebuild(m_pos, m_hasFliers, m_out, m_threads);
     m_gridCurrent = true;
 #pragma omp parallel for schedule(static, 256) num_threads(m_threads) reduction(+ : overlaps, nonFinite, inObstacle, red)
     for (std::size_t i = 0; i < n; ++i) {
