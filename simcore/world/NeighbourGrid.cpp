@@ -33,10 +33,10 @@ void NeighbourGrid::configure(glm::vec2 boundsMin, glm::vec2 boundsMax, float ce
     m_start.assign(std::size_t(m_cols) * std::size_t(m_rows) + 1, 0);
 }
 
-// A counting sort in parallel: each chunk of agents counts its cells, prefix sums give
-// every (cell, chunk) pair its slot, then each chunk scatters its agents in index order.
-// A cell holds chunk 0's agents, then chunk 1's, ..., so indices stay ascending within
-// a cell and the order is the serial stable sort's, whatever the number of chunks.
+// A counting sort whose only serial pass is one load and one store per agent: each
+// agent's rank in its cell is the cell's count before it, so indices stay ascending
+// within a cell (the order is the serial stable sort's) and the scatter needs no
+// cursors. Cells, the prefix sums over cells and the scatter run in parallel.
 void NeighbourGrid::rebuild(std::span<const glm::vec3> positions, bool sortByHeight, std::span<const std::uint8_t> skip,
                             int threads)
 {
@@ -54,68 +54,60 @@ void NeighbourGrid::rebuild(std::span<const glm::vec3> positions, bool sortByHei
         }
         return;
     }
-    m_counts.resize(chunks * cells);
-    m_partTotal.resize(chunks + 1);
-    // Count: m_counts[t * cells + c] = agents of chunk t in cell c.
+    m_rank.resize(n);
+    m_partTotal.assign(chunks + 1, 0u);
+    std::uint32_t* start = m_start.data();
+    // Each agent's cell; the counts (m_start[c + 1] for cell c) cleared.
 #pragma omp parallel for schedule(static, 1) num_threads(team)
     for (std::size_t t = 0; t < chunks; ++t) {
-        std::uint32_t* count = &m_counts[t * cells];
-        std::fill(count, count + cells, 0u);
+        const auto [cb, ce] = part(cells + 1, chunks, t);
+        std::fill(start + cb, start + ce, 0u);
         const auto [b, e] = part(n, chunks, t);
-        for (std::size_t i = b; i < e; ++i) {
-            if (i < skip.size() && skip[i]) {
-                m_cellOf[i] = kSkipped;
-                continue;
-            }
-            const std::uint32_t c = std::uint32_t(cellZ(positions[i].z) * m_cols + cellX(positions[i].x));
-            m_cellOf[i] = c;
-            ++count[c];
-        }
+        for (std::size_t i = b; i < e; ++i)
+            m_cellOf[i] = i < skip.size() && skip[i]
+                              ? kSkipped
+                              : std::uint32_t(cellZ(positions[i].z) * m_cols + cellX(positions[i].x));
     }
-    // Prefix sums over (cell, chunk), cells cut into `chunks` blocks: each block's total,
-    // then the blocks' starts, then every slot within its block.
+    // Count, in index order.
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::uint32_t c = m_cellOf[i];
+        if (c != kSkipped)
+            m_rank[i] = start[c + 1]++;
+    }
+    // Prefix sums over cells, in blocks: each block's total, the blocks' starts, then
+    // each block on its own. m_start[c] becomes the first slot of cell c.
 #pragma omp parallel for schedule(static, 1) num_threads(team)
     for (std::size_t t = 0; t < chunks; ++t) {
         const auto [b, e] = part(cells, chunks, t);
         std::uint32_t sum = 0;
-        for (std::size_t u = 0; u < chunks; ++u) {
-            const std::uint32_t* count = &m_counts[u * cells];
-            for (std::size_t c = b; c < e; ++c)
-                sum += count[c];
-        }
+        for (std::size_t c = b; c < e; ++c)
+            sum += start[c + 1];
         m_partTotal[t + 1] = sum;
     }
-    m_partTotal[0] = 0;
     for (std::size_t t = 0; t < chunks; ++t)
         m_partTotal[t + 1] += m_partTotal[t];
-    const std::uint32_t indexed = m_partTotal[chunks];
 #pragma omp parallel for schedule(static, 1) num_threads(team)
     for (std::size_t t = 0; t < chunks; ++t) {
         const auto [b, e] = part(cells, chunks, t);
-        std::uint32_t at = m_partTotal[t];
+        std::uint32_t run = m_partTotal[t];
         for (std::size_t c = b; c < e; ++c) {
-            m_start[c] = at;
-            for (std::size_t u = 0; u < chunks; ++u) {
-                std::uint32_t& slot = m_counts[u * cells + c];
-                const std::uint32_t k = slot;
-                slot = at;  // now chunk u's write cursor in cell c
-                at += k;
-            }
+            run += start[c + 1];
+            start[c + 1] = run;
         }
     }
-    m_start[cells] = indexed;
-    // Scatter, each chunk in index order.
+    start[0] = 0;
+    const std::uint32_t indexed = start[cells];
+    // Scatter: every agent to its own slot.
     m_sorted.resize(indexed);
     m_sortedPos.resize(indexed);
 #pragma omp parallel for schedule(static, 1) num_threads(team)
     for (std::size_t t = 0; t < chunks; ++t) {
-        std::uint32_t* cursor = &m_counts[t * cells];
         const auto [b, e] = part(n, chunks, t);
         for (std::size_t i = b; i < e; ++i) {
             const std::uint32_t c = m_cellOf[i];
             if (c == kSkipped)
                 continue;
-            const std::uint32_t k = cursor[c]++;
+            const std::uint32_t k = start[c] + m_rank[i];
             m_sorted[k] = std::uint32_t(i);
             m_sortedPos[k] = positions[i];
         }
@@ -123,9 +115,7 @@ void NeighbourGrid::rebuild(std::span<const glm::vec3> positions, bool sortByHei
     if (!sortByHeight)
         return;
     // Within each cell by height, ties by index: the order is fully determined, and each
-    // cell is sorted on its own, so in parallel over cells. Cells hold a few dozen agents,
-    // so an insertion sort in place (the indices arrive ascending, so ties keep their
-    // order); std::sort for a crowded one.
+    // cell is sorted on its own, so in parallel over blocks of cells.
     m_heightScratch.resize(chunks);
 #pragma omp parallel for schedule(static, 1) num_threads(team)
     for (std::size_t t = 0; t < chunks; ++t) {

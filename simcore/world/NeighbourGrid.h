@@ -118,7 +118,7 @@ public:
     float cellM() const { return m_cell; }
     std::size_t memoryBytes() const
     {
-        return (m_start.capacity() + m_sorted.capacity() + m_cellOf.capacity() + m_counts.capacity()) *
+        return (m_start.capacity() + m_sorted.capacity() + m_cellOf.capacity() + m_rank.capacity()) *
                    sizeof(std::uint32_t) +
                m_sortedPos.capacity() * sizeof(glm::vec3);
     }
@@ -159,7 +159,7 @@ private:
     bool m_byHeight = false;
     std::vector<std::vector<std::pair<float, std::uint32_t>>> m_heightScratch;  // one per chunk
     std::vector<std::uint32_t> m_cellOf;     // per agent: its cell
-    std::vector<std::uint32_t> m_counts;     // per chunk, per cell: count, then write cursor
+    std::vector<std::uint32_t> m_rank;       // per agent: its place among its cell's agents
     std::vector<std::uint32_t> m_partTotal;  // prefix sums of the cell blocks' counts
 };
 
