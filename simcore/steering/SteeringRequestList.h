@@ -2,9 +2,10 @@
 // A small fixed-capacity list of steering requests (force + weight) that the combiners read.
 // Lives on the stack: never allocates; a request beyond capacity is refused, not grown into.
 
+#include "simcore/steering/UninitialisedArray.h"
+
 #include <glm/vec3.hpp>
 
-#include <array>
 #include <cstddef>
 #include <span>
 
@@ -34,7 +35,8 @@ public:
     operator std::span<const SteeringRequest>() const { return requests(); }
 
 private:
-    std::array<SteeringRequest, kCapacity> m_requests{};
+    // Uninitialised: requests() reads only the first m_size, each written by add().
+    UninitialisedArray<SteeringRequest, kCapacity> m_requests;
     std::size_t m_size = 0;
 };
 

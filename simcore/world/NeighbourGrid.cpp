@@ -9,7 +9,16 @@ namespace throng::sim {
 
 namespace {
 constexpr int kMaxCellsPerAxis = 4096;
+// Fewer agents than this per chunk are not worth a thread.
+constexpr std::size_t kMinAgentsPerChunk = 2048;
+constexpr std::uint32_t kSkipped = UINT32_MAX;
+
+// [begin, end) of part t when [0, n) is cut into `parts` nearly equal runs.
+std::pair<std::size_t, std::size_t> part(std::size_t n, std::size_t parts, std::size_t t)
+{
+    return {n * t / parts, n * (t + 1) / parts};
 }
+}  // namespace
 
 void NeighbourGrid::configure(glm::vec2 boundsMin, glm::vec2 boundsMax, float cellM)
 {
@@ -24,11 +33,101 @@ void NeighbourGrid::configure(glm::vec2 boundsMin, glm::vec2 boundsMax, float ce
     m_start.assign(std::size_t(m_cols) * std::size_t(m_rows) + 1, 0);
 }
 
-void NeighbourGrid::rebuild(std::span<const glm::vec3> positions, bool sortByHeight, std::span<const std::uint8_t> skip)
+// A counting sort whose only serial pass is one load and one store per agent: each
+// agent's rank in its cell is the cell's count before it, so indices stay ascending
+// within a cell (the order is the serial stable sort's) and the scatter needs no
+// cursors. Cells, the prefix sums over cells and the scatter run in parallel.
+void NeighbourGrid::rebuild(std::span<const glm::vec3> positions, bool sortByHeight, std::span<const std::uint8_t> skip,
+                            int threads)
 {
     const std::size_t n = positions.size();
-    constexpr std::uint32_t kSkipped = UINT32_MAX;
+    const std::size_t cells = m_start.size() - 1;
+    const std::size_t chunks = std::clamp<std::size_t>(n / kMinAgentsPerChunk, 1, std::size_t(std::max(threads, 1)));
+    const int team = int(chunks);
     m_cellOf.resize(n);
+    m_byHeight = sortByHeight;
+    if (chunks == 1) {
+        rebuildSerial(positions, skip);
+        if (sortByHeight) {
+            m_heightScratch.resize(1);
+            sortCellsByHeight(positions, 0, cells, m_heightScratch[0]);
+        }
+        return;
+    }
+    m_rank.resize(n);
+    m_partTotal.assign(chunks + 1, 0u);
+    std::uint32_t* start = m_start.data();
+    // Each agent's cell; the counts (m_start[c + 1] for cell c) cleared.
+#pragma omp parallel for schedule(static, 1) num_threads(team)
+    for (std::size_t t = 0; t < chunks; ++t) {
+        const auto [cb, ce] = part(cells + 1, chunks, t);
+        std::fill(start + cb, start + ce, 0u);
+        const auto [b, e] = part(n, chunks, t);
+        for (std::size_t i = b; i < e; ++i)
+            m_cellOf[i] = i < skip.size() && skip[i]
+                              ? kSkipped
+                              : std::uint32_t(cellZ(positions[i].z) * m_cols + cellX(positions[i].x));
+    }
+    // Count, in index order.
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::uint32_t c = m_cellOf[i];
+        if (c != kSkipped)
+            m_rank[i] = start[c + 1]++;
+    }
+    // Prefix sums over cells, in blocks: each block's total, the blocks' starts, then
+    // each block on its own. m_start[c] becomes the first slot of cell c.
+#pragma omp parallel for schedule(static, 1) num_threads(team)
+    for (std::size_t t = 0; t < chunks; ++t) {
+        const auto [b, e] = part(cells, chunks, t);
+        std::uint32_t sum = 0;
+        for (std::size_t c = b; c < e; ++c)
+            sum += start[c + 1];
+        m_partTotal[t + 1] = sum;
+    }
+    for (std::size_t t = 0; t < chunks; ++t)
+        m_partTotal[t + 1] += m_partTotal[t];
+#pragma omp parallel for schedule(static, 1) num_threads(team)
+    for (std::size_t t = 0; t < chunks; ++t) {
+        const auto [b, e] = part(cells, chunks, t);
+        std::uint32_t run = m_partTotal[t];
+        for (std::size_t c = b; c < e; ++c) {
+            run += start[c + 1];
+            start[c + 1] = run;
+        }
+    }
+    start[0] = 0;
+    const std::uint32_t indexed = start[cells];
+    // Scatter: every agent to its own slot.
+    m_sorted.resize(indexed);
+    m_sortedPos.resize(indexed);
+#pragma omp parallel for schedule(static, 1) num_threads(team)
+    for (std::size_t t = 0; t < chunks; ++t) {
+        const auto [b, e] = part(n, chunks, t);
+        for (std::size_t i = b; i < e; ++i) {
+            const std::uint32_t c = m_cellOf[i];
+            if (c == kSkipped)
+                continue;
+            const std::uint32_t k = start[c] + m_rank[i];
+            m_sorted[k] = std::uint32_t(i);
+            m_sortedPos[k] = positions[i];
+        }
+    }
+    if (!sortByHeight)
+        return;
+    // Within each cell by height, ties by index: the order is fully determined, and each
+    // cell is sorted on its own, so in parallel over blocks of cells.
+    m_heightScratch.resize(chunks);
+#pragma omp parallel for schedule(static, 1) num_threads(team)
+    for (std::size_t t = 0; t < chunks; ++t) {
+        const auto [cb, ce] = part(cells, chunks, t);
+        sortCellsByHeight(positions, cb, ce, m_heightScratch[t]);
+    }
+}
+
+// One chunk: the same order with fewer passes over the cells (most of them empty).
+void NeighbourGrid::rebuildSerial(std::span<const glm::vec3> positions, std::span<const std::uint8_t> skip)
+{
+    const std::size_t n = positions.size();
     std::fill(m_start.begin(), m_start.end(), 0u);
     std::size_t indexed = 0;
     for (std::size_t i = 0; i < n; ++i) {
@@ -41,39 +140,30 @@ void NeighbourGrid::rebuild(std::span<const glm::vec3> positions, bool sortByHei
         ++m_start[c + 1];
         ++indexed;
     }
-    m_sorted.resize(indexed);
     for (std::size_t c = 1; c < m_start.size(); ++c)
         m_start[c] += m_start[c - 1];
-    // Counting sort, stable: indices stay ascending within a cell, so neighbour order
-    // (and with it every float sum) is the same on every run.
-    std::vector<std::uint32_t>& fill = m_cellOf;
-    for (std::size_t i = 0; i < n; ++i) {
-        const std::uint32_t c = fill[i];
-        if (c == kSkipped)
-            continue;
-        fill[i] = m_start[c];  // reuse as the write cursor of the agent's slot
-        ++m_start[c];
-    }
+    // Counting sort, stable: indices stay ascending within a cell. m_start[c] serves as
+    // cell c's write cursor, so it ends as the cell's end and is shifted back to starts.
+    m_sorted.resize(indexed);
     m_sortedPos.resize(indexed);
     for (std::size_t i = 0; i < n; ++i) {
-        if (fill[i] == kSkipped)
+        const std::uint32_t c = m_cellOf[i];
+        if (c == kSkipped)
             continue;
-        m_sorted[fill[i]] = std::uint32_t(i);
-        m_sortedPos[fill[i]] = positions[i];
+        const std::uint32_t k = m_start[c]++;
+        m_sorted[k] = std::uint32_t(i);
+        m_sortedPos[k] = positions[i];
     }
-    // m_start[c] now holds the end of cell c; shift back to starts.
     for (std::size_t c = m_start.size() - 1; c > 0; --c)
         m_start[c] = m_start[c - 1];
     m_start[0] = 0;
-    m_byHeight = sortByHeight;
-    if (!sortByHeight)
-        return;
-    // Within each cell by height, ties by index: the order is fully determined. Cells hold
-    // a few dozen agents, so an insertion sort in place (the indices arrive ascending, so
-    // ties keep their order); std::sort for a crowded one.
-    std::vector<std::pair<float, std::uint32_t>>& scratch = m_heightScratch;
+}
+
+void NeighbourGrid::sortCellsByHeight(std::span<const glm::vec3> positions, std::size_t firstCell, std::size_t endCell,
+                                      std::vector<std::pair<float, std::uint32_t>>& scratch)
+{
     constexpr std::uint32_t kInsertionMax = 64;
-    for (std::size_t c = 0; c + 1 < m_start.size(); ++c) {
+    for (std::size_t c = firstCell; c < endCell; ++c) {
         const std::uint32_t b = m_start[c], e = m_start[c + 1];
         if (e - b < 2)
             continue;

@@ -22,9 +22,10 @@ public:
     // Sorts agent indices into cells by their (x, z); with sortByHeight, each cell is also
     // ordered by y so forEachNear3D can skip the agents far above or below. Reuses its
     // buffers. Agents with skip[i] != 0 (agents that left through an exit) are not indexed;
-    // an empty skip indexes everyone.
+    // an empty skip indexes everyone. Runs on up to `threads` OpenMP threads; the order
+    // it leaves is the same for any number of them.
     void rebuild(std::span<const glm::vec3> positions, bool sortByHeight = false,
-                 std::span<const std::uint8_t> skip = {});
+                 std::span<const std::uint8_t> skip = {}, int threads = 1);
 
     // Calls f(j) or f(j, position of j) for every agent j whose cell overlaps the square
     // around p of half-size r. Positions come from a copy kept in cell order, so a query
@@ -117,11 +118,17 @@ public:
     float cellM() const { return m_cell; }
     std::size_t memoryBytes() const
     {
-        return (m_start.capacity() + m_sorted.capacity() + m_cellOf.capacity()) * sizeof(std::uint32_t) +
+        return (m_start.capacity() + m_sorted.capacity() + m_cellOf.capacity() + m_rank.capacity()) *
+                   sizeof(std::uint32_t) +
                m_sortedPos.capacity() * sizeof(glm::vec3);
     }
 
 private:
+    // rebuild with one chunk: count, prefix sums and scatter in place.
+    void rebuildSerial(std::span<const glm::vec3> positions, std::span<const std::uint8_t> skip);
+    // Sorts cells [firstCell, endCell) by height (rebuild's last pass).
+    void sortCellsByHeight(std::span<const glm::vec3> positions, std::size_t firstCell, std::size_t endCell,
+                           std::vector<std::pair<float, std::uint32_t>>& scratch);
     // In a cell sorted by height, [begin, end): the first agent at or above y (end when
     // none). Branch-free halving, so a short cell costs a few conditional moves.
     std::uint32_t firstAtOrAbove(std::uint32_t begin, std::uint32_t end, float y) const
@@ -150,8 +157,10 @@ private:
     std::vector<std::uint32_t> m_sorted;  // agent indices by cell
     std::vector<glm::vec3> m_sortedPos;   // their positions, in the same order
     bool m_byHeight = false;
-    std::vector<std::pair<float, std::uint32_t>> m_heightScratch;
-    std::vector<std::uint32_t> m_cellOf;
+    std::vector<std::vector<std::pair<float, std::uint32_t>>> m_heightScratch;  // one per chunk
+    std::vector<std::uint32_t> m_cellOf;     // per agent: its cell
+    std::vector<std::uint32_t> m_rank;       // per agent: its place among its cell's agents
+    std::vector<std::uint32_t> m_partTotal;  // prefix sums of the cell blocks' counts
 };
 
 }  // namespace throng::sim

@@ -2,6 +2,7 @@
 // behaviours ask of it. Both read only the previous state.
 #include "simcore/world/World.h"
 
+#include "simcore/steering/UninitialisedArray.h"
 #include "simcore/world/Rng.h"
 #include "simcore/world/detail/StepGeometry.h"
 
@@ -11,7 +12,6 @@
 #include <array>
 #include <bit>
 #include <cmath>
-#include <optional>
 
 namespace throng::sim {
 
@@ -230,11 +230,9 @@ glm::vec3 World::steer(std::size_t i, const SteeringAgent& self, std::span<const
     }
     // Separation and collision avoidance leave to lower-priority neighbours the whole
     // of making way (WorldPriority.h).
-    // (The buffer is only filled, so only built, when priorities differ.)
-    std::optional<std::array<Neighbour, kMaxNeighbours>> yielding;
-    if (m_makingWay)
-        yielding.emplace();
-    const std::span<const Neighbour> avoided = m_makingWay ? neighboursToAvoid(i, near, yielding->data()) : near;
+    // (The buffer is only written when priorities differ, and only as far as it is read.)
+    UninitialisedArray<Neighbour, kMaxNeighbours> yielding;
+    const std::span<const Neighbour> avoided = m_makingWay ? neighboursToAvoid(i, near, yielding.data()) : near;
     request(B::Separation, [&] { return separate(self, avoided, s.separation); });
     request(B::UnalignedCollisionAvoidance, [&] { return avoidUnalignedCollisions(self, avoided, s.unaligned); });
     if (leaderIndex >= 0) {
@@ -312,7 +310,7 @@ glm::vec3 World::avoidReciprocally(std::size_t i, const SteeringAgent& self, glm
     const float speed = glm::length(preferred);
     if (speed > self.maxSpeed && speed > 0.0f)
         preferred *= self.maxSpeed / speed;
-    std::array<PlanarNeighbour, kMaxNeighbours> others;
+    UninitialisedArray<PlanarNeighbour, kMaxNeighbours> others;  // the first `count` are written, and read
     const std::uint32_t* index = &m_nearIndex[i * kMaxNeighbours];
     const glm::vec2 fwd = xz(self.forward);
     std::size_t oncoming = 0, count = 0;

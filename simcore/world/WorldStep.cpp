@@ -4,14 +4,15 @@
 // is the same for any thread count.
 #include "simcore/world/World.h"
 
+#include "simcore/steering/UninitialisedArray.h"
 #include "simcore/world/Rng.h"
 #include "simcore/world/detail/StepGeometry.h"
 
 #include <glm/geometric.hpp>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
+#include <cstdint>
 
 namespace throng::sim {
 
@@ -26,7 +27,7 @@ void World::step()
     // Grid: index agents by cell for neighbour queries (the last step's count left it
     // current for these positions).
     if (!m_gridCurrent)
-        m_grid.rebuild(m_pos, m_hasFliers, m_out);
+        m_grid.rebuild(m_pos, m_hasFliers, m_out, m_threads);
     m_gridCurrent = false;
     // Navigate: plans and each walker's waypoint or flow direction (WorldNav.cpp).
     navBeforeStep();
@@ -56,7 +57,8 @@ void World::step()
         }
         const SteeringAgent self = steeringAgent(i);
         // Sense: nearby agents in the perception cone.
-        std::array<Neighbour, kMaxNeighbours> near;
+        // (Uninitialised: only the first `count` are written, and only they are read.)
+        UninitialisedArray<Neighbour, kMaxNeighbours> near;
         const std::size_t count = neighboursThisStep(i, near.data());
         // Steer: the type's behaviours, combined.
         WanderState wanderNext;
@@ -196,11 +198,14 @@ void World::commit(std::size_t i, std::uint64_t& wallCrossings)
             ++wallCrossings;
     });
     // Animate: the gait advances by distance over stride length, so feet don't slide.
-    // (fmod's exact answer, without its call for the usual 0 <= x < 2.)
+    // (fmod's exact answer without its call: for 0 <= x < 2^31, x - trunc(x) is exact,
+    // since trunc(x) <= x < 2 trunc(x) once x >= 1 (Sterbenz), and +0 for whole x, as fmod
+    // gives. A fast flier covers more than a stride a step, so x >= 2 happens.)
     const float phase = m_phase[i] + glm::length(to - from) / m_stride[i];
-    m_phase[i] = phase >= 0.0f && phase < 1.0f   ? phase
-                 : phase >= 1.0f && phase < 2.0f ? phase - 1.0f
-                                                 : std::fmod(phase, 1.0f);
+    m_phase[i] = phase >= 0.0f && phase < 1.0f            ? phase
+                 : phase >= 1.0f && phase < 2.0f          ? phase - 1.0f
+                 : phase >= 2.0f && phase < 2147483648.0f ? phase - float(std::int32_t(phase))
+                                                          : std::fmod(phase, 1.0f);
     m_pos[i] = m_nextPos[i];
     m_vel[i] = m_nextVel[i];
     m_fwd[i] = m_nextFwd[i];
@@ -328,7 +333,7 @@ void World::countStep()
 {
     const std::size_t n = m_pos.size();
     std::uint64_t overlaps = 0, nonFinite = 0, inObstacle = 0, red = 0;
-    m_grid.rebuild(m_pos, m_hasFliers, m_out);
+    m_grid.rebuild(m_pos, m_hasFliers, m_out, m_threads);
     m_gridCurrent = true;
 #pragma omp parallel for schedule(static, 256) num_threads(m_threads) reduction(+ : overlaps, nonFinite, inObstacle, red)
     for (std::size_t i = 0; i < n; ++i) {

@@ -5,8 +5,11 @@
 
 #include <QTest>
 
+#include <algorithm>
 #include <random>
 #include <set>
+#include <tuple>
+#include <vector>
 
 using namespace throng::sim;
 
@@ -63,6 +66,58 @@ private slots:
         grid.rebuild(pos);
         grid.forEachNear({10, 10}, 1.0f, [&](std::uint32_t j) { near += j == 0; });
         QCOMPARE(near, 1);
+    }
+
+    // The parallel rebuild leaves the serial one's order (so every neighbour sum, and with
+    // it the simulation, is bit-identical for any thread count): same agents, same order,
+    // by cell and by height within a cell, exits left out.
+    void rebuildOrderIsTheSameForAnyThreadCount_data()
+    {
+        QTest::addColumn<bool>("byHeight");
+        QTest::newRow("walkers") << false;
+        QTest::newRow("fliers, by height") << true;
+    }
+
+    void rebuildOrderIsTheSameForAnyThreadCount()
+    {
+        QFETCH(bool, byHeight);
+        std::mt19937 gen(5);
+        std::uniform_real_distribution<float> u(-40.0f, 40.0f), h(0.0f, 30.0f);
+        std::vector<glm::vec3> pos(20000);
+        std::vector<std::uint8_t> skip(pos.size(), 0);
+        for (std::size_t i = 0; i < pos.size(); ++i) {
+            pos[i] = {u(gen), byHeight ? h(gen) : 0.0f, u(gen)};
+            skip[i] = i % 97 == 3 ? 1 : 0;
+        }
+        for (std::size_t i = 0; i < 300; ++i)  // a crowded cell (more than the insertion sort takes)
+            pos[i] = {1.0f + 0.001f * float(i), h(gen), 1.0f};
+        auto order = [&](int threads) {
+            NeighbourGrid grid;
+            grid.configure({-40.0f, -40.0f}, {40.0f, 40.0f}, 2.5f);
+            grid.rebuild(pos, byHeight, skip, threads);
+            std::vector<std::uint32_t> seen;
+            if (byHeight)
+                grid.forEachNear3D({0.0f, 15.0f, 0.0f}, 45.0f, [&](std::uint32_t j, const glm::vec3&) { seen.push_back(j); });
+            else
+                grid.forEachNear({0.0f, 0.0f}, 45.0f, [&](std::uint32_t j) { seen.push_back(j); });
+            return seen;
+        };
+        // Expected: rows, then cells along the row (32 x 32 cells of 2.5 m), then height
+        // (fliers), then index.
+        auto cell = [](float v) { return int(std::min((v + 40.0f) * (1.0f / 2.5f), 31.5f)); };
+        std::vector<std::uint32_t> expected;
+        for (std::uint32_t j = 0; j < pos.size(); ++j)
+            if (!skip[j])
+                expected.push_back(j);
+        std::sort(expected.begin(), expected.end(), [&](std::uint32_t a, std::uint32_t b) {
+            const float ya = byHeight ? pos[a].y : 0.0f, yb = byHeight ? pos[b].y : 0.0f;
+            return std::tuple(cell(pos[a].z), cell(pos[a].x), ya, a) < std::tuple(cell(pos[b].z), cell(pos[b].x), yb, b);
+        });
+        const std::vector<std::uint32_t> one = order(1);
+        QCOMPARE(one.size(), pos.size() - std::size_t(std::count(skip.begin(), skip.end(), 1)));
+        QVERIFY2(one == expected, "one thread: not by cell, height and index");
+        for (int threads : {2, 3, 4, 8})
+            QVERIFY2(order(threads) == one, qPrintable(QString("%1 threads: another order").arg(threads)));
     }
 };
 
