@@ -18,6 +18,8 @@
 #include <QTest>
 #include <QToolButton>
 
+#include <set>
+
 using namespace throng;
 using namespace throng::editor;
 using namespace throng::editor::test;
@@ -95,6 +97,8 @@ private slots:
         dragOnGround(window, {{-38, -25}, {-26, -25}});
         const std::size_t painted = window.document().scene().agents.size();
         QVERIFY(painted >= 4);
+        // Every agent of the recording has its own id (kept members keep theirs).
+        QTRY_VERIFY(sim.recordedFrames() == kEditFrame + 1);
         QTRY_COMPARE(sim.recordedFrames(), kEditFrame + 1);
         QCOMPARE(sim.currentFrame(), kEditFrame);
         QCOMPARE(window.viewport().agentCount(), kCrossroadsAgents);
@@ -106,6 +110,10 @@ private slots:
         QCOMPARE(sim.restarts(), restarts);
         QCOMPARE(sim.cache().agentCount(), kCrossroadsAgents + painted);
         QCOMPARE(window.viewport().agentCount(), kCrossroadsAgents + painted);
+        std::set<sim::AgentId> ids;
+        for (const sim::AgentInfo& a : sim.cache().agents())
+            ids.insert(a.id);
+        QCOMPARE(ids.size(), sim.cache().agentCount());
         playTo(window, kLastFrame);
         if (QTest::currentTestFailed())
             return;
@@ -160,6 +168,7 @@ private slots:
         QCOMPARE(sim.restarts(), restarts);
         QCOMPARE(hashOfFirst(sim.cache(), kLastFrame + 1), original);
     }
+
 };
 
 THRONG_REGISTER_TEST(TestResumeAgentsUi)
