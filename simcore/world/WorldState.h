@@ -13,7 +13,9 @@
 //    unchanged. An agent of the edited scene with no match (a crowd-brush stroke, a
 //    changed group) starts from its scene state as the edited World builds it; an agent
 //    with no match in the edited scene (the erase brush) is gone from the edit frame on.
-//    The FrameCache keeps both sets (FrameCache::changeAgents);
+//    A kept agent keeps its id (the key of its random draws) and, with an unchanged
+//    type, its max speed, stride and waypoint radius: adding placed agents moves the ids
+//    a World gives group members. The FrameCache keeps both sets (changeAgents);
 //  - a traffic light's phases or timing may change: the vehicles keep their state and
 //    the signal its clock (the step), with the edited timing;
 //  - it refuses (returns false; the caller restarts from frame 0) when the edit changes

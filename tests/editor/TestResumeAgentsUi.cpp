@@ -168,7 +168,6 @@ private slots:
         QCOMPARE(sim.restarts(), restarts);
         QCOMPARE(hashOfFirst(sim.cache(), kLastFrame + 1), original);
     }
-
 };
 
 THRONG_REGISTER_TEST(TestResumeAgentsUi)
