@@ -2,8 +2,10 @@
 // editor can show, when the run starts over from frame 0 (before) and when it resumes from
 // the last checkpoint (after; as editor/simulation/SimulationRunner does: step the recorded
 // scene from the checkpoint to F, adopt the state into the edited scene, step once).
-// The edit is a wall across the crossroads' north-west sidewalk. Prints one JSON object.
-// Usage: throng-bench-resume SCENE.yaml [FRAME] [INTERVAL]
+// EDIT: wall (a wall across the crossroads' north-west sidewalk) or brush (a crowd-brush
+// stroke: 30 placed agents on that sidewalk, ids after every id of the scene, which
+// changes the agent set). Prints one JSON object.
+// Usage: throng-bench-resume SCENE.yaml [FRAME] [INTERVAL] [wall|brush]
 #include "simcore/io/SceneIO.h"
 #include "simcore/world/World.h"
 #include "simcore/world/WorldState.h"
@@ -15,6 +17,7 @@
 #include <iterator>
 #include <map>
 #include <memory>
+#include <string>
 
 using namespace throng::sim;
 
@@ -30,7 +33,7 @@ double msSince(std::chrono::steady_clock::time_point t)
 int main(int argc, char** argv)
 {
     if (argc < 2) {
-        std::fprintf(stderr, "usage: throng-bench-resume SCENE.yaml [FRAME] [INTERVAL]\n");
+        std::fprintf(stderr, "usage: throng-bench-resume SCENE.yaml [FRAME] [INTERVAL] [wall|brush]\n");
         return 2;
     }
     const LoadResult loaded = loadScene(argv[1]);
@@ -41,8 +44,23 @@ int main(int argc, char** argv)
     const std::size_t editFrame = argc > 2 ? std::size_t(std::atol(argv[2])) : 1000;
     const std::size_t interval = argc > 3 ? std::size_t(std::atol(argv[3])) : 24;
     const Scene& scene = loaded.scene;
+    const std::string edit = argc > 4 ? argv[4] : "wall";
     Scene edited = scene;
-    edited.walls.push_back({"", {{-8.9f, -25.0f}, {-5.2f, -25.0f}}});
+    if (edit == "brush") {
+        std::uint32_t id = 1;
+        for (const Agent& a : scene.agents) id = std::max(id, a.id + 1);
+        for (const Vehicle& v : scene.vehicles) id = std::max(id, v.id + 1);
+        for (const Hero& h : scene.heroes) id = std::max(id, h.id + 1);
+        for (int k = 0; k < 30; ++k) {
+            Agent a;
+            a.id = id++;
+            a.type = scene.agentTypes.front().name;
+            a.position = {-8.2f + 0.8f * float(k % 3), 0.0f, -38.0f + 1.0f * float(k / 3)};
+            edited.agents.push_back(a);
+        }
+    } else {
+        edited.walls.push_back({"", {{-8.9f, -25.0f}, {-5.2f, -25.0f}}});
+    }
 
     // The recording, with a checkpoint every `interval` frames.
     using Clock = std::chrono::steady_clock;
@@ -85,12 +103,12 @@ int main(int argc, char** argv)
     resumed.step();
     const double resumeMs = msSince(t);
 
-    std::printf("{\"scene\": \"%s\", \"agents\": %zu, \"edit_frame\": %zu, \"checkpoint_interval\": %zu,\n"
+    std::printf("{\"scene\": \"%s\", \"edit\": \"%s\", \"agents\": %zu, \"edit_frame\": %zu, \"checkpoint_interval\": %zu,\n"
                 " \"checkpoints\": %zu, \"checkpoint_bytes_each\": %zu, \"checkpoint_save_ms_each\": %.3f,\n"
                 " \"step_ms_mean\": %.3f, \"adopted\": %s,\n"
                 " \"restart_first_frame_ms\": %.1f, \"restart_to_next_frame_ms\": %.1f,\n"
                 " \"resume_to_next_frame_ms\": %.1f, \"speedup\": %.1f}\n",
-                argv[1], resumed.agentCount(), editFrame, interval, checkpoints.size(),
+                argv[1], edit.c_str(), resumed.agentCount(), editFrame, interval, checkpoints.size(),
                 bytes / std::max<std::size_t>(1, checkpoints.size() - 1), saveMs / double(checkpoints.size() - 1),
                 stepMs / double(editFrame), adopted ? "true" : "false", restartFirstMs, restartMs, resumeMs,
                 restartMs / resumeMs);

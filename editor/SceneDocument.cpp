@@ -107,7 +107,13 @@ std::uint32_t SceneDocument::nextAgentId() const
         highest = std::max(highest, v.id);
     for (const sim::Hero& h : m_scene.heroes)
         highest = std::max(highest, h.id);
-    return highest + 1;
+    // Past the ids the groups' members have in a World (they take the ids after the
+    // highest): an agent painted during a run never gets the id of a member that keeps
+    // its id through the resumed run (issue 6; WorldState.h).
+    std::uint32_t members = 0;
+    for (const sim::SpawnGroup& g : m_scene.groups)
+        members += g.count;
+    return highest + members + 1;
 }
 
 }  // namespace throng::editor

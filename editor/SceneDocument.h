@@ -49,7 +49,8 @@ public:
     // The one mutator commands use: applies `edit` to the scene, then emits
     // sceneChanged(). Only QUndoCommands call it, so every edit is undoable.
     void modify(const std::function<void(sim::Scene&)>& edit);
-    // A stable id not yet used by any placed agent, vehicle or hero (> 0).
+    // A stable id not yet used by any placed agent, vehicle or hero (> 0), nor by a
+    // group member of a World of the scene.
     std::uint32_t nextAgentId() const;
 
     // What the user picked (outliner, select tool); the properties panel edits it.

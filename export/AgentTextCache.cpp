@@ -20,8 +20,13 @@ bool writeAgentFile(const sim::FrameCache& cache, std::size_t agent, const std::
         return false;
     std::string text;
     text.reserve(cache.frameCount() * 48);
+    // Ends where it left, or where an edit removed it (present before, not now).
+    bool seen = false;
     for (std::size_t f = 0; f < cache.frameCount() && !cache.at(f, agent).out; ++f) {
         const sim::AgentFrame& a = cache.at(f, agent);
+        if (seen && !a.present)
+            break;
+        seen = seen || a.present;
         detail::appendFloat(text, a.position.x);
         text += ' ';
         detail::appendFloat(text, a.position.y);

@@ -45,7 +45,9 @@ struct AgentWork {
     std::vector<GaitFrame> gait;
     Pose firstPose;
     std::vector<std::uint32_t> positionKept, yawKept;
-    std::size_t outFrame = 0;  // the first frame it has left through an exit; frames = never
+    // Per frame: 1 = not in the shot (left through an exit, or not present: an edit added
+    // it later or removed it earlier); the character scales to nothing there.
+    std::vector<std::uint8_t> hidden;
     detail::BakedJoints joints;  // exact mode
 };
 
@@ -228,11 +230,27 @@ ExportResult exportGltf(const sim::Scene& scene, const sim::FrameCache& cache, c
         w.positions.resize(frames);
         w.yaw.resize(frames);
         std::vector<float> speeds(frames);
-        w.outFrame = frames;
+        w.hidden.assign(frames, 0);
+        std::size_t firstPresent = frames;
         for (std::size_t f = 0; f < frames; ++f) {
             const sim::AgentFrame& a = cache.at(f, i);
-            if (a.out && w.outFrame == frames)
-                w.outFrame = f;
+            w.hidden[f] = a.out || !a.present ? 1 : 0;
+            if (!a.present) {
+                // Nothing recorded: stand still where it was last (or will first be).
+                w.positions[f] = f > 0 ? w.positions[f - 1] : glm::vec3(0.0f);
+                w.yaw[f] = f > 0 ? w.yaw[f - 1] : glm::quat(1.0f, 0.0f, 0.0f, 0.0f);
+                speeds[f] = 0.0f;
+                continue;
+            }
+            if (firstPresent == frames) {
+                firstPresent = f;
+                const double half = 0.5 * static_cast<double>(a.headingRad);
+                const glm::quat q(static_cast<float>(std::cos(half)), 0.0f, static_cast<float>(std::sin(half)), 0.0f);
+                for (std::size_t g = 0; g < f; ++g) {
+                    w.positions[g] = a.position;
+                    w.yaw[g] = q;
+                }
+            }
             w.positions[f] = a.position;
             speeds[f] = a.speed;
             // Rotation about +Y by the heading: the character's +X nose turns to (cos h, 0, -sin h).
@@ -306,17 +324,18 @@ ExportResult exportGltf(const sim::Scene& scene, const sim::FrameCache& cache, c
             builder.setUse(detail::GltfBuilder::Use::RootMotion);
             channels.vec3Channel(rig.root, "translation", frameClock, w.positions, w.positionKept);
             channels.rotationChannel(rig.root, w.yaw, frameClock, w.yawKept);
-            if (w.outFrame < frames) {
-                // Gone through an exit: the whole character scales to nothing from that
-                // frame on (STEP, so it never shrinks visibly on the way out).
+            if (std::find(w.hidden.begin(), w.hidden.end(), 1) != w.hidden.end()) {
+                // Gone through an exit or not present: the whole character scales to
+                // nothing on those frames (STEP, so it never shrinks visibly on the way).
                 const glm::vec3 shown(w.variation.heightScale);
-                std::vector<float> times{0.0f};
-                std::vector<glm::vec3> scales{shown};
-                if (w.outFrame > 0)
-                    times.push_back(frameClock.times[w.outFrame]);
-                else
-                    scales.clear();
-                scales.emplace_back(0.0f);
+                std::vector<float> times;
+                std::vector<glm::vec3> scales;
+                for (std::size_t f = 0; f < frames; ++f) {
+                    if (f > 0 && w.hidden[f] == w.hidden[f - 1])
+                        continue;
+                    times.push_back(frameClock.times[f]);
+                    scales.push_back(w.hidden[f] ? glm::vec3(0.0f) : shown);
+                }
                 channels.addSampler(rig.root, "scale", builder.addTimes(times), builder.addVec3Keys(scales), "STEP");
             }
             builder.setUse(detail::GltfBuilder::Use::Joints);

@@ -52,8 +52,8 @@ ExportResult writeTrajectoryCsv(const sim::FrameCache& cache, const std::string&
             return result;
         }
         for (std::size_t i = 0; i < agents.size(); ++i) {
-            if (cache.at(f, i).out)
-                continue;
+            if (cache.at(f, i).out || !cache.at(f, i).present)
+                continue;  // left, or not there on this frame (an edit added or removed it)
             appendRow(text, f, agents[i].id, cache.at(f, i));
             if (text.size() >= kFlushBytes) {
                 file.stream().write(text.data(), static_cast<std::streamsize>(text.size()));

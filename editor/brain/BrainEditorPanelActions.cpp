@@ -177,6 +177,8 @@ bool BrainEditorPanel::eventFilter(QObject* watched, QEvent* event)
     float bestD = 1.5f;  // m: a click this close to an agent picks it
     if (ground && m_simulation.currentFrame() < cache.frameCount())
         for (std::size_t i = 0; i < cache.agentCount(); ++i) {
+            if (!cache.at(m_simulation.currentFrame(), i).present)
+                continue;  // not there on this frame (an edit added or removed it)
             const glm::vec3 p = cache.at(m_simulation.currentFrame(), i).position;
             const float d = glm::length(glm::vec2(p.x - ground->x, p.z - ground->z));
             if (d < bestD) {

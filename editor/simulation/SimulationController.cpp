@@ -92,8 +92,10 @@ void SimulationController::takeFrames()
         return;
     }
     // A run that computes recorded frames again (pickBrainAgent) brings only their values.
-    const bool restarted = !batch.agents.empty() && !(m_replaying && m_cache.frameCount() > 0);
+    const bool resumed = batch.resumedAt > 0;
+    const bool restarted = !resumed && !batch.agents.empty() && !(m_replaying && m_cache.frameCount() > 0);
     if (restarted) {
+        ++m_restarts;
         m_cache.reset(std::move(batch.agents), batch.fps);
         m_brainValues.clear();
         m_runFrames = 0;
@@ -104,25 +106,40 @@ void SimulationController::takeFrames()
             m_stepPending = false;
             m_current = 0;
         }
-    } else if (batch.resumedAt > 0) {
-        // A resumed run hands over frames from resumedAt + 1 on.
+    } else if (resumed) {
+        // A resumed run hands over frames from resumedAt + 1 on, of the edited World's
+        // agents (an edit may have added or removed some: the cache keeps both sets).
         if (m_cache.frameCount() > batch.resumedAt + 1)
             m_cache.truncate(batch.resumedAt + 1);
         m_brainValues.resize(std::min(m_brainValues.size(), batch.resumedAt + 1));
         m_runFrames = batch.resumedAt + 1;
+        m_lastResumedAt = batch.resumedAt;
+        if (!batch.agents.empty() && batch.previous.size() == batch.agents.size())
+            m_cache.changeAgents(batch.agents, batch.previous);
     }
-    const std::size_t n = m_cache.agentCount();
+    // The batch's frames are in the World's dense order; frames already recorded (a
+    // replay for brain values) bring their values only.
+    const std::size_t n = m_cache.worldAgentCount();
+    std::size_t appended = 0;
     bool replayed = false;
-    for (std::size_t f = 0; n > 0 && f < batch.frameCount; ++f) {
+    for (std::size_t f = 0; f < batch.frameCount; ++f) {
         const std::size_t frame = m_runFrames + f;
         SimulationRunner::PickedBrainValues values =
             f < batch.brainValues.size() ? std::move(batch.brainValues[f]) : SimulationRunner::PickedBrainValues{};
         if (frame < m_cache.frameCount()) {
+            if (values.agent >= 0)
+                values.agent = m_replayAgent;
             m_brainValues[frame] = std::move(values);
             replayed = true;
             continue;
         }
-        m_cache.append(std::span(batch.frames).subspan(f * n, n));
+        if (n == 0 || (appended + 1) * n > batch.frames.size())
+            break;
+        // Kept by cache agent: World indices change when an edit adds or removes agents.
+        if (values.agent >= 0 && std::size_t(values.agent) < n)
+            values.agent = std::ptrdiff_t(m_cache.cacheIndexOf(std::size_t(values.agent)));
+        m_cache.append(std::span(batch.frames).subspan(appended * n, n));
+        ++appended;
         m_brainValues.push_back(std::move(values));
     }
     m_runFrames += batch.frameCount;
@@ -203,14 +220,16 @@ void SimulationController::simulateToEnd()
 
 void SimulationController::pickBrainAgent(std::ptrdiff_t agent)
 {
-    m_runner.pickBrainAgent(agent);
+    // The runner picks by World index; the editor by cache agent.
+    m_runner.pickBrainAgent(agent >= 0 && std::size_t(agent) < m_cache.agentCount() ? m_cache.worldIndexOf(std::size_t(agent)) : -1);
     if (agent < 0 || !m_hasScene || m_cache.frameCount() <= 1 || brainValues(m_cache.frameCount() - 1, agent))
         return;
-    // The frames are recomputed from frame 0 with the current scene; frames kept from
-    // before an edit (resume) get the values the edited scene gives them.
-    m_runner.start(m_scene);
-    m_runFrames = 0;
+    // The recorded frames are computed again from the checkpoints, each span with the
+    // scene it was recorded with, so the values are those of the frames shown.
+    m_runner.replayBrainValues(m_cache.agents()[std::size_t(agent)].id, m_cache.frameCount());
+    m_runFrames = 1;
     m_replaying = true;
+    m_replayAgent = agent;
     m_runner.setTarget(m_playing ? m_totalFrames : m_cache.frameCount());
 }
 

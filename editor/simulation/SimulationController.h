@@ -27,8 +27,9 @@ public:
     // The scene to simulate from now on. At frame 0 (or on the first scene) every recorded
     // frame is dropped. At a later shown frame f, frames 0..f stay and the frames after
     // it are recomputed with the edited scene from frame f's state; playback goes on.
-    // When the runner cannot resume the edit (agents added or removed, traffic or
-    // settings changed) it starts over: frames dropped, playback paused at frame 0. An
+    // An edit may add or remove agents (the cache then keeps both sets: the frames before
+    // show the old crowd). When the runner cannot resume the edit (settings, lanes,
+    // crosswalks or vehicles changed) it starts over: frames dropped, playback paused at frame 0. An
     // edit that changes nothing the simulation reads (a placed agent's hand-set look,
     // tint or height) keeps the frames and the playback as they are.
     void setScene(const sim::Scene& scene);
@@ -58,12 +59,17 @@ public:
     double stepsPerSecond() const { return m_runner.stepsPerSecond(); }
     // The brain editor's live view: the simulation records agent `agent`'s (dense index)
     // brain node values with every frame it computes; -1 = nobody. Frames recorded before
-    // the pick are computed again in the background (the same frames: the World is
-    // deterministic) to record its values; brainValuesChanged() tells when they arrive.
+    // the pick are computed again in the background from the checkpoints, each span with
+    // the scene it was recorded with (the same frames: the World is deterministic), to
+    // record its values; brainValuesChanged() tells when they arrive.
     void pickBrainAgent(std::ptrdiff_t agent);
     // Agent `agent`'s node values recorded with frame `frame`; null when that frame was
     // computed with another agent picked (or not yet), or at frame 0 (no step yet).
     const std::vector<sim::BrainNodeValue>* brainValues(std::size_t frame, std::ptrdiff_t agent) const;
+    // The edit frame of the last resumed run the runner handed frames of (0: none yet), and
+    // how many runs have started over from frame 0 (for tests and the status).
+    std::size_t lastResumedAt() const { return m_lastResumedAt; }
+    std::size_t restarts() const { return m_restarts; }
     const SimulationRunner& runner() const { return m_runner; }
     SimulationRunner& runner() { return m_runner; }
 
@@ -89,6 +95,9 @@ private:
     std::vector<SimulationRunner::PickedBrainValues> m_brainValues;  // per recorded frame
     std::size_t m_runFrames = 0;  // frame index of the next frame the runner hands over
     bool m_replaying = false;     // the runner recomputes recorded frames for brain values
+    std::ptrdiff_t m_replayAgent = -1;  // the cache agent a replay records values of
+    std::size_t m_lastResumedAt = 0;
+    std::size_t m_restarts = 0;
     QTimer m_timer;
     std::size_t m_current = 0;
     std::size_t m_totalFrames = 1;

@@ -19,15 +19,24 @@ SimulationRunner::~SimulationRunner()
 
 void SimulationRunner::start(const sim::Scene& scene)
 {
-    launch(scene, 0);
+    launch(scene, 0, Replay{});
 }
 
 void SimulationRunner::resume(const sim::Scene& scene, std::size_t editFrame)
 {
-    launch(scene, editFrame);
+    launch(scene, editFrame, Replay{});
 }
 
-void SimulationRunner::launch(sim::Scene scene, std::size_t resumeFrame)
+void SimulationRunner::replayBrainValues(sim::AgentId agentId, std::size_t recordedFrames)
+{
+    Replay replay;
+    replay.on = true;
+    replay.id = agentId;
+    replay.recordedFrames = recordedFrames;
+    launch(sim::Scene{}, 0, replay);
+}
+
+void SimulationRunner::launch(sim::Scene scene, std::size_t resumeFrame, Replay replay)
 {
     stop();
     {
@@ -36,13 +45,13 @@ void SimulationRunner::launch(sim::Scene scene, std::size_t resumeFrame)
         m_target = 1;
         m_pending = {};
         m_notified = false;
-        if (resumeFrame == 0) {
+        if (resumeFrame == 0 && !replay.on) {
             m_checkpoints.clear();
             m_checkpointBytes = 0;
         }
     }
     auto shared = std::make_shared<const sim::Scene>(std::move(scene));
-    m_thread = std::thread([this, shared, resumeFrame] { run(shared, resumeFrame); });
+    m_thread = std::thread([this, shared, resumeFrame, replay] { run(shared, resumeFrame, replay); });
 }
 
 void SimulationRunner::setCheckpointBudget(std::size_t intervalFrames, std::size_t budgetBytes)
@@ -134,7 +143,7 @@ void SimulationRunner::keepCheckpoint(std::size_t frame, const std::shared_ptr<c
 }
 
 std::unique_ptr<sim::World> SimulationRunner::resumeWorld(const std::shared_ptr<const sim::Scene>& scene,
-                                                          std::size_t resumeFrame)
+                                                          std::size_t resumeFrame, std::vector<std::int32_t>& previous)
 {
     Checkpoint from;
     std::size_t fromFrame = 0;
@@ -163,7 +172,7 @@ std::unique_ptr<sim::World> SimulationRunner::resumeWorld(const std::shared_ptr<
         before.state = std::make_shared<const sim::WorldState>(recorded.saveState());
     }
     auto edited = std::make_unique<sim::World>(*scene);
-    if (!edited->adoptState(*before.state, *before.scene, *scene))
+    if (!edited->adoptState(*before.state, *before.scene, *scene, &previous))
         return nullptr;
 
     {
@@ -177,15 +186,65 @@ std::unique_ptr<sim::World> SimulationRunner::resumeWorld(const std::shared_ptr<
     return edited;
 }
 
-void SimulationRunner::run(std::shared_ptr<const sim::Scene> scene, std::size_t resumeFrame)
+std::unique_ptr<sim::World> SimulationRunner::replayWorld(const Replay& replay, std::shared_ptr<const sim::Scene>& scene)
+{
+    std::vector<std::pair<std::size_t, Checkpoint>> spans;
+    {
+        std::lock_guard lock(m_mutex);
+        for (const auto& [frame, checkpoint] : m_checkpoints)
+            if (frame < replay.recordedFrames)
+                spans.emplace_back(frame, checkpoint);
+    }
+    std::unique_ptr<sim::World> world;
+    for (std::size_t k = 0; k < spans.size(); ++k) {
+        const std::size_t from = spans[k].first;
+        const std::size_t to = k + 1 < spans.size() ? spans[k + 1].first : replay.recordedFrames - 1;
+        scene = spans[k].second.scene;
+        world = std::make_unique<sim::World>(*scene);
+        world->restoreState(*spans[k].second.state);
+        std::ptrdiff_t picked = -1;
+        for (std::size_t i = 0; i < world->agentCount() && picked < 0; ++i)
+            if (world->id(i) == replay.id)
+                picked = std::ptrdiff_t(i);
+        world->pickBrainAgent(picked);
+        for (std::size_t f = from; f < to; ++f) {
+            {
+                std::lock_guard lock(m_mutex);
+                if (m_stop)
+                    return nullptr;
+            }
+            world->step();
+            PickedBrainValues brain{picked, {}};
+            if (const sim::BrainEvaluator* e = picked < 0 ? nullptr : world->agentBrainEvaluator(std::size_t(picked)))
+                brain.values = e->pickedValues();
+            std::lock_guard lock(m_mutex);
+            m_pending.brainValues.push_back(std::move(brain));
+            ++m_pending.frameCount;
+            if (!m_notified) {
+                m_notified = true;
+                m_notify();
+            }
+        }
+    }
+    return world;
+}
+
+void SimulationRunner::run(std::shared_ptr<const sim::Scene> scene, std::size_t resumeFrame, Replay replay)
 {
     using Clock = std::chrono::steady_clock;
     std::unique_ptr<sim::World> world;
     std::vector<sim::AgentFrame> frame;
     std::size_t produced = 0;
+    std::vector<std::int32_t> previous;
     try {
-        if (resumeFrame > 0)
-            world = resumeWorld(scene, resumeFrame);
+        if (replay.on) {
+            world = replayWorld(replay, scene);
+            if (!world)
+                return;
+            resumeFrame = replay.recordedFrames - 1;  // the live run goes on from there
+        } else if (resumeFrame > 0) {
+            world = resumeWorld(scene, resumeFrame, previous);
+        }
         if (world) {
             produced = resumeFrame + 1;
         } else {
@@ -206,7 +265,7 @@ void SimulationRunner::run(std::shared_ptr<const sim::Scene> scene, std::size_t 
         return;
     }
     std::ptrdiff_t picked = -1;
-    bool firstAfterResume = resumeFrame > 0;
+    bool firstAfterResume = resumeFrame > 0 && !replay.on;
     auto publish = [&](bool first) {
         world->snapshot(frame);
         PickedBrainValues brain{first ? -1 : picked, {}};
@@ -219,8 +278,11 @@ void SimulationRunner::run(std::shared_ptr<const sim::Scene> scene, std::size_t 
         }
         // Only the first batch after a resume says so: the controller drops what it holds
         // after the resume frame once, not again for every batch.
-        if (std::exchange(firstAfterResume, false))
+        if (std::exchange(firstAfterResume, false)) {
             m_pending.resumedAt = resumeFrame;
+            m_pending.agents = world->agentInfo();
+            m_pending.previous = previous;
+        }
         m_pending.frames.insert(m_pending.frames.end(), frame.begin(), frame.end());
         m_pending.brainValues.push_back(std::move(brain));
         ++m_pending.frameCount;

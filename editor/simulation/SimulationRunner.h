@@ -41,9 +41,11 @@ public:
     // recorded run: from the last checkpoint at or before it, the run is stepped again to
     // editFrame with the scene it was recorded with, and the edited scene takes over that
     // state (World::adoptState). Frames 0..editFrame stay as recorded; the batches that
-    // follow carry frames from editFrame + 1 (Batch::resumedAt). When the edit cannot be
-    // resumed (agents added or removed, traffic or settings changed; see WorldState.h),
-    // the run starts again from frame 0 instead, as start() does.
+    // follow carry frames from editFrame + 1 (Batch::resumedAt) and, in their first batch,
+    // the edited World's agents and what they were before (Batch::agents, previous): an
+    // edit may add or remove agents. When the edit cannot be resumed (settings, lanes,
+    // crosswalks or vehicles changed; see WorldState.h), the run starts again from frame
+    // 0 instead, as start() does.
     void resume(const sim::Scene& scene, std::size_t editFrame);
     void stop();
     // Checkpoint every `intervalFrames` frames while their bytes stay within `budgetBytes`;
@@ -65,9 +67,19 @@ public:
     // Records agent `agent`'s brain node values with each frame computed from now on
     // (-1 = nobody); frames already computed keep what they recorded. Any thread.
     void pickBrainAgent(std::ptrdiff_t agent) { m_brainAgent = agent; }
+    // Stops any run and computes the recorded frames 1..recordedFrames-1 again from the
+    // checkpoints, each span with the scene it was recorded with, recording the node
+    // values of the agent with id `agentId` (wherever it is in each span's World): the
+    // batches carry values only (Batch::frames empty) for those frames. Then the run goes
+    // on from the last recorded frame as a live run (frames and values, pickBrainAgent).
+    void replayBrainValues(sim::AgentId agentId, std::size_t recordedFrames);
 
     struct Batch {
-        std::vector<sim::AgentInfo> agents;  // set with frame 0 only
+        // Set with frame 0, and with the first batch of a resumed run (the edited World's
+        // agents from resumedAt + 1 on; previous[i]: agent i's index in the World that
+        // recorded frame resumedAt, -1 = new).
+        std::vector<sim::AgentInfo> agents;
+        std::vector<std::int32_t> previous;
         float fps = 24.0f;
         std::vector<sim::AgentFrame> frames; // frame-major, agents.size() per frame
         std::size_t frameCount = 0;
@@ -94,10 +106,19 @@ private:
         std::shared_ptr<const sim::Scene> beforeScene;
         std::shared_ptr<const sim::WorldState> beforeState;
     };
-    void launch(sim::Scene scene, std::size_t resumeFrame);
-    void run(std::shared_ptr<const sim::Scene> scene, std::size_t resumeFrame);
+    struct Replay {
+        bool on = false;
+        sim::AgentId id = 0;
+        std::size_t recordedFrames = 0;
+    };
+    void launch(sim::Scene scene, std::size_t resumeFrame, Replay replay);
+    void run(std::shared_ptr<const sim::Scene> scene, std::size_t resumeFrame, Replay replay);
+    // On the runner thread: the replay's spans (values published as they are computed);
+    // the World at the last recorded frame and its scene, or null when stopped.
+    std::unique_ptr<sim::World> replayWorld(const Replay& replay, std::shared_ptr<const sim::Scene>& scene);
     // On the runner thread: the World to go on with from resumeFrame, or null to start over.
-    std::unique_ptr<sim::World> resumeWorld(const std::shared_ptr<const sim::Scene>& scene, std::size_t resumeFrame);
+    std::unique_ptr<sim::World> resumeWorld(const std::shared_ptr<const sim::Scene>& scene, std::size_t resumeFrame,
+                                            std::vector<std::int32_t>& previous);
     void keepCheckpoint(std::size_t frame, const std::shared_ptr<const sim::Scene>& scene, const sim::World& world,
                         bool pinned, Checkpoint before);
 

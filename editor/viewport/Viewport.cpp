@@ -144,7 +144,7 @@ void Viewport::showFrame(const sim::FrameCache& cache, std::size_t frame)
 {
     if (frame >= cache.frameCount())
         return;
-    setAgents(cache.frame(frame), cache.agents(), double(frame) / double(cache.fps()), frame);
+    setAgents(cache.frame(frame), cache.agentsAt(frame), double(frame) / double(cache.fps()), frame);
 }
 
 void Viewport::setSet(const sim::Scene& scene)
@@ -182,8 +182,8 @@ void Viewport::setAgents(std::span<const sim::AgentFrame> frames, std::span<cons
     m_glyphs.reserve(n);
     m_agentBox = {};
     for (std::size_t i = 0; i < n; ++i) {
-        if (frames[i].out)
-            continue;  // left through an exit: no longer in the shot
+        if (frames[i].out || !frames[i].present)
+            continue;  // left through an exit, or not there on this frame (an edit added or removed it)
         const std::size_t type = agents[i].typeIndex;
         const float radius = type < m_typeRadiusM.size() ? m_typeRadiusM[type] : kFallbackRadiusM;
         const bool car = type < m_typeIsVehicle.size() && m_typeIsVehicle[type];
@@ -197,7 +197,7 @@ void Viewport::setAgents(std::span<const sim::AgentFrame> frames, std::span<cons
     m_shownIds.resize(n);
     m_shownXZ.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
-        m_shownIds[i] = agents[i].id;
+        m_shownIds[i] = frames[i].present ? agents[i].id : 0;  // no ring where it is not
         m_shownXZ[i] = {frames[i].position.x, frames[i].position.z};
     }
     if (!m_agentRings.empty())

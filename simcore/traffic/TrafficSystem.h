@@ -133,6 +133,9 @@ public:
     // whatever a brain says, gaps, red lights and crosswalks hold as without it.
     // Call before step(); an empty span hands every vehicle back to the model.
     void setBrainSpeeds(std::span<const float> wantedMps);
+    // Takes the lights' edited phases and timing (same lights in the same order: what they
+    // control stays); the clock (the step) goes on. For resuming after an edit.
+    void retime(const std::vector<TrafficLight>& lights) { m_lights = lights; }
     // The stop line ahead of vehicle i's front at the current time (its light's phase).
     VehicleStopLine stopLineAhead(std::size_t i) const;
 

@@ -1,7 +1,15 @@
 #pragma once
 // The recorded frames of a run: per frame and agent what playback and export need
-// (position, heading, speed, clip, gait phase, whether it has left the shot). Filled by the simulation, read by the
-// viewport and the exporters; never simulates.
+// (position, heading, speed, clip, gait phase, whether it has left the shot, whether it
+// exists at all). Filled by the simulation, read by the viewport and the exporters;
+// never simulates.
+//
+// The agent set may change during a recording (issue 6: a crowd-brush stroke at frame k
+// resumes the run with more agents). The cache's agents are then the union of every
+// agent the recording has seen, each frame has one entry per cache agent, and an agent
+// that did not exist on a frame is marked not `present` there. The World's dense index
+// maps to the cache's agent index (worldSlot); an "epoch" starts wherever the set or an
+// agent's type changed, and agentsAt(f) gives each agent's type on frame f.
 
 #include <glm/vec3.hpp>
 
@@ -26,6 +34,10 @@ struct AgentFrame {
     // Left through an exit on or before this frame: no longer in the shot (the viewport
     // draws nothing, exports hide it); position and heading stay where it left.
     bool out = false;
+    // False where the agent did not exist on this frame (added by an edit later, or
+    // removed by an edit earlier): nothing is drawn or exported for it, and the other
+    // fields mean nothing. Distinct from `out`: an agent that left is still in the run.
+    bool present = true;
 };
 
 struct AgentInfo {
@@ -37,23 +49,51 @@ class FrameCache {
 public:
     // Starts an empty recording for these agents (dense index order).
     void reset(std::vector<AgentInfo> agents, float fps);
-    // Appends one frame; `frame.size()` must equal agentCount().
+    // From the next appended frame on, the World's agents are `worldAgents` (dense order);
+    // previous[i] is the World index agent i had before (-1: a new agent, which gets a new
+    // cache agent). Cache agents no World agent maps to are absent from then on.
+    void changeAgents(std::span<const AgentInfo> worldAgents, std::span<const std::int32_t> previous);
+    // Appends one frame in the World's dense order; `frame.size()` must equal worldAgentCount().
     void append(std::span<const AgentFrame> frame);
-    // Drops frames from `firstFrameToDrop` on (an edit invalidates the cache from there).
+    // Drops frames from `firstFrameToDrop` on (an edit invalidates the cache from there);
+    // agent sets that began there are dropped with them (the earlier set comes back).
     void truncate(std::size_t firstFrameToDrop);
 
     std::size_t frameCount() const { return m_count == 0 ? 0 : m_frames.size() / m_count; }
+    // Cache agents: every agent of the recording (the width of a frame).
     std::size_t agentCount() const { return m_count; }
     float fps() const { return m_fps; }
     std::span<const AgentFrame> frame(std::size_t f) const { return {m_frames.data() + f * m_count, m_count}; }
     const AgentFrame& at(std::size_t f, std::size_t agent) const { return m_frames[f * m_count + agent]; }
-    const std::vector<AgentInfo>& agents() const { return m_agents; }
-    // FNV-1a over every recorded byte that matters: equal hashes = identical frames.
+    // Every cache agent, with the type of the latest agent set.
+    const std::vector<AgentInfo>& agents() const { return m_epochs.back().agents; }
+    // Every cache agent with the type it had on frame f (its last one where absent).
+    const std::vector<AgentInfo>& agentsAt(std::size_t f) const { return epochAt(f).agents; }
+    // The World's agent count and dense index -> cache agent, from the latest set on.
+    std::size_t worldAgentCount() const { return m_epochs.back().slot.size(); }
+    std::size_t cacheIndexOf(std::size_t worldIndex) const { return m_epochs.back().slot[worldIndex]; }
+    // The World index of cache agent `agent` in the latest set; -1 when it is not there.
+    std::ptrdiff_t worldIndexOf(std::size_t agent) const;
+    // Frames where the agent set or a type changed (frame 0 first).
+    std::vector<std::size_t> agentSetChanges() const;
+    // FNV-1a over every recorded byte that matters and the agent sets: equal hashes =
+    // identical recordings.
     std::uint64_t hash() const;
+    // The same over frames [first, last) only (the frames an edit must keep).
+    std::uint64_t hashFrames(std::size_t first, std::size_t last) const;
 
 private:
-    std::vector<AgentInfo> m_agents;
-    std::vector<AgentFrame> m_frames;  // frame-major
+    struct Epoch {
+        std::size_t firstFrame = 0;
+        std::size_t width = 0;           // cache agents when it began
+        std::vector<AgentInfo> agents;   // every cache agent (full width), with this epoch's types
+        std::vector<std::uint32_t> slot; // World dense index -> cache agent
+    };
+    const Epoch& epochAt(std::size_t f) const;
+    void setWidth(std::size_t width);
+
+    std::vector<Epoch> m_epochs{1};
+    std::vector<AgentFrame> m_frames;  // frame-major, m_count per frame
     std::size_t m_count = 0;
     float m_fps = 24.0f;
 };

@@ -17,6 +17,7 @@
 #include <glm/vec3.hpp>
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <span>
 #include <string>
@@ -122,12 +123,17 @@ public:
     // when its agents differ); the steps from there are bit-identical. adoptState: this
     // World, built from `thisScene`, an edit of `stateScene`, continues from a checkpoint of
     // a World of `stateScene` by the rule in WorldState.h; false (nothing changed) when it
-    // cannot, and the caller runs the edited scene from its start instead.
+    // cannot, and the caller runs the edited scene from its start instead. `previous`, when
+    // given, receives per agent of this World its index in the checkpoint (-1 = new).
     WorldState saveState() const;
     void restoreState(const WorldState& state);
-    bool adoptState(const WorldState& state, const Scene& stateScene, const Scene& thisScene);
+    bool adoptState(const WorldState& state, const Scene& stateScene, const Scene& thisScene,
+                    std::vector<std::int32_t>* previous = nullptr);
 
 private:
+    // adoptState once the checkpoint is in this World's order; previous(i) as above.
+    bool adoptMatched(const WorldState& state, const Scene& stateScene, const Scene& thisScene,
+                      const std::function<std::int32_t(std::size_t)>& previous);
     // keepBrain: per agent, 0 = its brain memory starts afresh (empty: all keep theirs).
     void restoreDynamicState(const WorldState& state, const std::vector<std::uint8_t>& keepBrain);
 

@@ -6,24 +6,14 @@
 
 #include "simcore/world/World.h"
 #include "simcore/world/detail/WorldBrains.h"
+#include "simcore/world/detail/WorldStateColumns.h"
+
+#include <algorithm>
 
 #include <map>
 #include <stdexcept>
 
 namespace throng::sim {
-
-// Per-agent arrays of the World (m_NAME) and of the WorldState (NAME), copied whole.
-#define THRONG_AGENT_COLUMNS(X)                                                                          \
-    X(pos) X(vel) X(fwd) X(side) X(up) X(nextPos) X(nextVel) X(nextFwd) X(nextSide) X(nextUp)             \
-    X(resolvedPos) X(wander) X(nextWander) X(radius) X(maxSpeed) X(phase) X(stride) X(arrivalTime) X(goal) \
-    X(path) X(leader) X(goalSpot) X(arrived) X(stopped) X(stoppedBefore) X(onCrosswalk) X(nearCount)     \
-    X(out) X(nearIndex)
-
-// Per-agent navigation arrays (m_nav.NAME in the World).
-#define THRONG_NAV_COLUMNS(X)                                                                             \
-    X(plan, plan) X(planGoal, planGoal) X(waypoint, waypoint) X(waypointRadiusM, waypointRadiusM)          \
-    X(sideStepS, sideStepS) X(stall, stall) X(replan, replan) X(hasTarget, hasTarget) X(waiting, waiting) \
-    X(waitingNext, waitingNext) X(lostSteps, lostSteps) X(sideDir, sideDir) X(target, target) X(mode, navMode)
 
 std::size_t WorldState::memoryBytes() const
 {
@@ -49,8 +39,15 @@ std::size_t WorldState::memoryBytes() const
 bool sameTrafficSet(const Scene& a, const Scene& b)
 {
     if (!(a.settings == b.settings && a.lanes == b.lanes && a.crosswalks == b.crosswalks &&
-          a.trafficLights == b.trafficLights && a.vehicles == b.vehicles))
+          a.vehicles == b.vehicles && a.trafficLights.size() == b.trafficLights.size()))
         return false;
+    // Lights may change their phases and timing (the signal keeps its clock), not where
+    // they stand or what they control.
+    for (std::size_t k = 0; k < a.trafficLights.size(); ++k) {
+        const TrafficLight &x = a.trafficLights[k], &y = b.trafficLights[k];
+        if (x.name != y.name || x.position != y.position || !(x.stopLines == y.stopLines))
+            return false;
+    }
     std::map<std::string, const AgentType*> vehicleTypes;
     for (const AgentType& t : a.agentTypes)
         if (t.kind == AgentKind::Vehicle)
@@ -124,11 +121,14 @@ WorldState World::saveState() const
 
 void World::restoreState(const WorldState& state)
 {
+    // Ids may differ: an agent kept through an edit (adoptState) keeps its old id, which
+    // a World built from the edited scene gives another member; the checkpoint's count.
     bool same = state.agents.size() == m_info.size() && state.seed == m_seed;
     for (std::size_t i = 0; same && i < m_info.size(); ++i)
-        same = state.agents[i].id == m_info[i].id && state.agents[i].typeIndex == m_info[i].typeIndex;
+        same = state.agents[i].typeIndex == m_info[i].typeIndex;
     if (!same)
         throw std::invalid_argument("restoreState: the checkpoint is of a World with other agents or seed");
+    m_info = state.agents;
     restoreDynamicState(state, {});
 }
 
@@ -242,17 +242,43 @@ const BrainGraph* brainOf(const Scene& scene, std::size_t i, std::size_t type)
 
 }  // namespace
 
-bool World::adoptState(const WorldState& s, const Scene& stateScene, const Scene& thisScene)
+bool World::adoptState(const WorldState& stateIn, const Scene& stateScene, const Scene& thisScene,
+                       std::vector<std::int32_t>* previousOut)
 {
-    bool same = s.agents.size() == m_info.size() && s.seed == m_seed && sameTrafficSet(stateScene, thisScene);
-    for (std::size_t i = 0; same && i < m_info.size(); ++i)
-        same = s.agents[i].id == m_info[i].id;
-    if (!same)
+    if (stateIn.seed != m_seed || !sameTrafficSet(stateScene, thisScene))
         return false;
+    // Agents by key, not by dense index: an added or removed agent moves the others.
+    const std::vector<std::int32_t> previous = matchAgents(stateIn.agents, stateScene, m_info, thisScene);
+    if (previousOut)
+        *previousOut = previous;
+    bool identity = previous.size() == stateIn.agents.size();
+    for (std::size_t i = 0; identity && i < previous.size(); ++i)
+        identity = previous[i] == std::int32_t(i);
+    // With another agent set, the checkpoint is first laid out in this World's order
+    // (new agents as this World built them); from there on the rule is the same.
+    WorldState remapped;
+    if (!identity)
+        remapped = remapState(stateIn, saveState(), previous);
+    const WorldState& s = identity ? stateIn : remapped;
+    const auto before = [&](std::size_t i) { return identity ? std::int32_t(i) : previous[i]; };
+    if (thisScene.trafficLights != stateScene.trafficLights && m_traffic.system && s.trafficSystem) {
+        // A light's phases or timing changed: the vehicles keep their state and the
+        // signal its clock (the step), with the edited timing.
+        WorldState retimed = s;
+        retimed.trafficSystem->retime(thisScene.trafficLights);
+        return adoptMatched(retimed, stateScene, thisScene, before);
+    }
+    return adoptMatched(s, stateScene, thisScene, before);
+}
+
+bool World::adoptMatched(const WorldState& s, const Scene& stateScene, const Scene& thisScene,
+                         const std::function<std::int32_t(std::size_t)>& previous)
+{
     const std::size_t n = m_info.size();
     std::vector<std::uint8_t> keepBrain(n, 1);
     for (std::size_t i = 0; i < n; ++i) {
-        const BrainGraph* before = brainOf(stateScene, i, s.agents[i].typeIndex);
+        const std::int32_t b = previous(i);
+        const BrainGraph* before = b < 0 ? nullptr : brainOf(stateScene, std::size_t(b), s.agents[i].typeIndex);
         const BrainGraph* after = brainOf(thisScene, i, m_info[i].typeIndex);
         keepBrain[i] = before && after && *before == *after ? 1 : 0;
     }
@@ -268,14 +294,31 @@ bool World::adoptState(const WorldState& s, const Scene& stateScene, const Scene
     m_stride = stride;
     m_leader = leader;
     m_nav.waypointRadiusM = waypointRadiusM;
+    // A kept agent keeps its id, and with an unchanged type what was drawn by it.
+    for (std::size_t i = 0; i < n; ++i) {
+        if (previous(i) < 0 || s.agents[i].id == m_info[i].id)
+            continue;
+        m_info[i].id = s.agents[i].id;
+        const std::size_t t0 = s.agents[i].typeIndex, t1 = m_info[i].typeIndex;
+        if (t0 < stateScene.agentTypes.size() && t1 < thisScene.agentTypes.size() &&
+            stateScene.agentTypes[t0] == thisScene.agentTypes[t1]) {
+            m_maxSpeed[i] = s.maxSpeed[i];
+            m_stride[i] = s.stride[i];
+            if (i < m_nav.waypointRadiusM.size() && i < s.waypointRadiusM.size())
+                m_nav.waypointRadiusM[i] = s.waypointRadiusM[i];
+        }
+    }
 
     const std::vector<Declared> legsBefore = declaredLegs(stateScene), legsAfter = declaredLegs(thisScene);
     for (std::size_t i = 0; i < n; ++i) {
         const std::int32_t g = remapByName(s.goal[i], stateScene.goals, thisScene.goals);
         const std::int32_t p = remapByName(s.path[i], stateScene.paths, thisScene.paths);
-        const bool declaredSame = i >= legsBefore.size() || i >= legsAfter.size() ||
-                                  (legsBefore[i].goal == legsAfter[i].goal && legsBefore[i].path == legsAfter[i].path);
-        const bool legKept = declaredSame && (s.goal[i] < 0) == (g < 0) && (s.path[i] < 0) == (p < 0);
+        // A new agent (no previous index) starts as this World built it.
+        const std::int32_t b = previous(i);
+        const std::size_t j = std::size_t(std::max<std::int32_t>(b, 0));
+        const bool declaredSame = j >= legsBefore.size() || i >= legsAfter.size() ||
+                                  (legsBefore[j].goal == legsAfter[i].goal && legsBefore[j].path == legsAfter[i].path);
+        const bool legKept = b >= 0 && declaredSame && (s.goal[i] < 0) == (g < 0) && (s.path[i] < 0) == (p < 0);
         if (legKept) {
             m_goal[i] = g;
             m_path[i] = p;
@@ -286,9 +329,8 @@ bool World::adoptState(const WorldState& s, const Scene& stateScene, const Scene
             m_arrivalTime[i] = arrivalTime[i];
             m_arrived[i] = m_stopped[i] = m_stoppedBefore[i] = 0;
         }
-        // A World with no A* or flow-field walkers keeps no navigation columns.
-        if (i >= mode.size() || i >= m_nav.mode.size())
-            continue;
+        if (i >= mode.size() || i >= m_nav.mode.size() || i >= m_nav.plan.size())
+            continue;  // no navigation in this scene (its arrays are empty)
         const bool replans = !legKept || mode[i] != m_nav.mode[i] || !(stateScene.goals == thisScene.goals);
         m_nav.mode[i] = mode[i];
         if (replans) {

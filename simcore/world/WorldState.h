@@ -8,11 +8,22 @@
 // frames before the edit frame stay as they were; from the edit frame on, the *edited*
 // scene runs from the state at that frame. adoptState decides what of the state carries
 // over into a World built from the edited scene:
-//  - it refuses (returns false; the caller restarts from frame 0) when the edit adds or
-//    removes agents (so the recorded frames always have one agent count), or changes the
-//    settings (fps, seed, bounds), lanes, crosswalks, traffic lights, vehicles or a
-//    vehicle type (the traffic system's state is then not the edited scene's);
-//  - otherwise every agent keeps its motion (position, velocity, frame, wander, gait
+//  - agents are matched by key, never by dense index (matchAgents): placed agents,
+//    vehicles and heroes by id, group members by (group, member) while their group is
+//    unchanged. An agent of the edited scene with no match (a crowd-brush stroke, a
+//    changed group) starts from its scene state as the edited World builds it; an agent
+//    with no match in the edited scene (the erase brush) is gone from the edit frame on.
+//    A kept agent keeps its id (the key of its random draws) and, with an unchanged
+//    type, its max speed, stride and waypoint radius: adding placed agents moves the ids
+//    a World gives group members. The FrameCache keeps both sets (changeAgents);
+//  - a traffic light's phases or timing may change: the vehicles keep their state and
+//    the signal its clock (the step), with the edited timing;
+//  - it refuses (returns false; the caller restarts from frame 0) when the edit changes
+//    the settings (fps, seed, bounds: the frames before would be of another run; that is
+//    the right answer for them), lanes, crosswalks, vehicles, a vehicle type, or where a
+//    light stands or what it controls (the traffic system's network is then not the
+//    edited scene's);
+//  - otherwise every kept agent keeps its motion (position, velocity, frame, wander, gait
 //    phase), arrival, signal and exit state, and its brain memory when its type keeps the
 //    same brain; its body and type parameters (type, radius, max speed, stride, leader,
 //    navigation mode) come from the edited scene;
@@ -94,6 +105,17 @@ struct WorldState {
     // lane network counted roughly).
     std::size_t memoryBytes() const;
 };
+
+// Per agent of `after` (a World of afterScene, dense order), the index of the same agent
+// in `before` (a World of beforeScene), or -1 for an agent that is new. Placed agents,
+// vehicles and heroes match by id, group members by (group, member) while the group is
+// unchanged; members of a group that changed never match (the group spawns again).
+std::vector<std::int32_t> matchAgents(const std::vector<AgentInfo>& before, const Scene& beforeScene,
+                                      const std::vector<AgentInfo>& after, const Scene& afterScene);
+// `old` laid out for a World whose agents come from `previous` (matchAgents): kept agents
+// take their state from `old`, new ones from `fresh` (the new World as built); the global
+// state (step, counters, traffic, navigation, brain memory) is old's.
+WorldState remapState(const WorldState& old, const WorldState& fresh, const std::vector<std::int32_t>& previous);
 
 // True when a World of `b` may take a checkpoint of a World of `a` (see the rule above):
 // same settings, lanes, crosswalks, lights, vehicles and vehicle types.

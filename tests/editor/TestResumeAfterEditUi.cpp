@@ -224,23 +224,6 @@ private slots:
         QVERIFY2(fastBefore * 3 > pedestrians, qPrintable(QString("%1 of %2").arg(fastBefore).arg(pedestrians)));
         QVERIFY2(fastAfter * 50 < pedestrians, qPrintable(QString("%1 of %2").arg(fastAfter).arg(pedestrians)));
     }
-
-    void addingAgentsStartsOverFromFrameZero()
-    {
-        MainWindow window;
-        QVERIFY(showWithScene(window, m_dir, "crossroads.yaml"));
-        SimulationController& sim = window.simulation();
-        playTo(window, 30);
-        if (QTest::currentTestFailed())
-            return;
-        scrubTo(window, 20);
-        QVERIFY(clickToolButton(window, "crowdBrush"));
-        dragOnGround(window, {{-38, -25}, {-14, -25}});
-        QVERIFY(!window.document().scene().agents.empty());
-        QTRY_COMPARE(sim.currentFrame(), std::size_t(0));
-        QTRY_COMPARE(sim.cache().agentCount(), kCrossroadsAgents + window.document().scene().agents.size());
-        QTRY_COMPARE(window.viewport().frameIndex(), std::size_t(0));
-    }
 };
 
 THRONG_REGISTER_TEST(TestResumeAfterEditUi)

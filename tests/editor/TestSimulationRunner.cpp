@@ -1,10 +1,13 @@
 // The simulation runner's checkpoints as the editor relies on them: kept within their
 // byte budget by thinning (the interval doubles), an edit resumes from the last one before
-// the edit frame and pins one there, and an edit that adds an agent starts over.
+// the edit frame and pins one there, an edit that adds an agent resumes too (the new agent
+// marked new), a settings edit starts over, and picking an agent for brain values after
+// an edit replays each span with the scene it was recorded with.
 #include "TestRegistry.h"
 
 #include "editor/simulation/SimulationRunner.h"
 #include "simcore/io/SceneIO.h"
+#include "simcore/world/World.h"
 
 #include <QElapsedTimer>
 #include <QTest>
@@ -31,16 +34,21 @@ SimulationRunner::Batch collect(SimulationRunner& runner, std::size_t frames)
     bool first = true;
     while (all.frameCount < frames && clock.elapsed() < 60000) {
         SimulationRunner::Batch b = runner.takeFrames();
+        if (!b.error.empty())
+            qWarning("runner: %s", b.error.c_str());
         if (b.frameCount == 0) {
             QTest::qWait(5);
             continue;
         }
         if (first) {
             all.agents = b.agents;
+            all.previous = b.previous;
             all.resumedAt = b.resumedAt;
             first = false;
         }
         all.frames.insert(all.frames.end(), b.frames.begin(), b.frames.end());
+        for (auto& v : b.brainValues)
+            all.brainValues.push_back(std::move(v));
         all.frameCount += b.frameCount;
     }
     return all;
@@ -65,7 +73,7 @@ private slots:
         QVERIFY(runner.checkpointBytes() > 4 * 50 * 1024);
     }
 
-    void anEditResumesFromTheEditFrameAndAnAddedAgentStartsOver()
+    void anEditResumesFromTheEditFrameAndAnAddedAgentToo()
     {
         const sim::Scene scene = crossroads();
         SimulationRunner runner([] {});
@@ -81,7 +89,9 @@ private slots:
         runner.setTarget(60);
         const SimulationRunner::Batch resumed = collect(runner, 9);
         QCOMPARE(resumed.resumedAt, std::size_t(50));
-        QVERIFY(resumed.agents.empty());
+        QCOMPARE(resumed.agents.size(), first.agents.size());
+        for (std::size_t i = 0; i < resumed.previous.size(); ++i)
+            QCOMPARE(resumed.previous[i], std::int32_t(i));
         QCOMPARE(resumed.frameCount, std::size_t(9));  // frames 51..59
         QCOMPARE(runner.checkpointFrames(), (std::vector<std::size_t>{0, 24, 48, 50}));
         // A wall 12 m from the nearest walker: frame 51 is the recorded one for every
@@ -98,10 +108,73 @@ private slots:
         extra.position = {-7.5f, 0.0f, -30.0f};
         crowded.agents.push_back(extra);
         runner.resume(crowded, 55);
+        runner.setTarget(57);
         const SimulationRunner::Batch again = collect(runner, 1);
-        QCOMPARE(again.resumedAt, std::size_t(0));
+        QCOMPARE(again.resumedAt, std::size_t(55));
         QCOMPARE(again.agents.size(), n + 1);
+        QCOMPARE(again.previous.size(), n + 1);
+        QCOMPARE(again.previous[0], std::int32_t(-1));  // placed agents come first
+        QCOMPARE(again.agents[0].id, sim::AgentId(9000));
+        QCOMPARE(runner.checkpointFrames(), (std::vector<std::size_t>{0, 24, 48, 50, 55}));
+
+        sim::Scene faster = crowded;
+        faster.settings.fps = 30.0f;
+        runner.resume(faster, 56);
+        const SimulationRunner::Batch restarted = collect(runner, 1);
+        QCOMPARE(restarted.resumedAt, std::size_t(0));
         QCOMPARE(runner.checkpointFrames(), (std::vector<std::size_t>{0}));
+    }
+
+    void brainValuesAfterAnEditAreThoseOfTheFramesShown()
+    {
+        const sim::Scene scene = crossroads();
+        std::size_t car = 0;
+        while (scene.agentTypes[sim::World(scene).agentInfo()[car].typeIndex].name != "car")
+            ++car;
+        // The car's values with it picked from the start, on the scene as it was.
+        SimulationRunner reference([] {});
+        reference.pickBrainAgent(std::ptrdiff_t(car));
+        reference.start(scene);
+        reference.setTarget(60);
+        const SimulationRunner::Batch picked = collect(reference, 60);
+        QCOMPARE(picked.brainValues.size(), std::size_t(60));
+        const sim::AgentId carId = picked.agents[car].id;
+
+        // Recorded with nobody picked; at frame 30 a stroke adds two agents (which moves
+        // the car's index) and the light's cycle shifts; picked afterwards.
+        sim::Scene edited = scene;
+        for (std::uint32_t k = 0; k < 2; ++k) {
+            sim::Agent a;
+            a.id = 9000 + k;
+            a.type = "pedestrian";
+            a.position = {-7.5f, 0.0f, -30.0f - float(k)};
+            edited.agents.push_back(a);
+        }
+        edited.trafficLights[0].offsetS += 20.0f;
+        SimulationRunner runner([] {});
+        runner.start(scene);
+        runner.setTarget(40);
+        QCOMPARE(collect(runner, 40).frameCount, std::size_t(40));
+        runner.resume(edited, 30);
+        runner.setTarget(50);
+        QCOMPARE(collect(runner, 19).resumedAt, std::size_t(30));
+        runner.replayBrainValues(carId, 50);
+        runner.setTarget(50);
+        const SimulationRunner::Batch replay = collect(runner, 49);  // frames 1..49
+        QCOMPARE(replay.frameCount, std::size_t(49));
+        QVERIFY(replay.frames.empty());
+        // Frames 1..30 were simulated before the edit: the values of the pick from the start.
+        for (std::size_t f = 1; f <= 30; ++f) {
+            const auto& got = replay.brainValues[f - 1].values;
+            const auto& want = picked.brainValues[f].values;
+            QVERIFY2(!want.empty(), "the car runs a brain");
+            QCOMPARE(got.size(), want.size());
+            for (std::size_t k = 0; k < got.size(); ++k)
+                QCOMPARE(got[k].values, want[k].values);
+        }
+        // From frame 31 the car is agent car + 2 of the edited World, and the values are still its.
+        QCOMPARE(replay.brainValues[30].agent, std::ptrdiff_t(car + 2));
+        QVERIFY(!replay.brainValues[48].values.empty());
     }
 };
 
