@@ -301,6 +301,21 @@ private slots:
         QTRY_VERIFY(sim.recordedFrames() <= 1);
         QVERIFY(playToFrame(window, 24));
         QCOMPARE(walkerTravel(sim, 24), walked);
+
+        // Redo and undo while paused mid-run: the frames up to the shown one stay and the
+        // run resumes from there with the edited weight (an undo there once crashed the
+        // simulation thread).
+        redo(window);
+        QTRY_COMPARE(scene.agentTypes[0].behaviours[0].weight, 0.1f);
+        QVERIFY(playToFrame(window, 48));
+        QCOMPARE(walkerTravel(sim, 24), walked);
+        const float weakSecond = walkerTravel(sim, 48) - walked;
+        undo(window);
+        QCOMPARE(scene.agentTypes[0].behaviours[0].weight, 1.0f);
+        QVERIFY(playToFrame(window, 72));
+        QCOMPARE(walkerTravel(sim, 24), walked);
+        QCOMPARE(walkerTravel(sim, 48) - walked, weakSecond);
+        QVERIFY(walkerTravel(sim, 72) > walkerTravel(sim, 48));
     }
 };
 
