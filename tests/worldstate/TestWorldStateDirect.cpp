@@ -2,6 +2,7 @@
 // a lane, a hero; no A* or flow-field walkers), as most small editor scenes are. Such a
 // World keeps no per-agent navigation columns; adopting an edit must neither read them
 // nor crash (it did, on undoing a behaviour-weight edit in the properties panel).
+#include "../editor/PanelTestScene.h"
 #include "StateScenes.h"
 #include "TestRegistry.h"
 
@@ -15,42 +16,16 @@ using namespace throng::test::state;
 
 namespace {
 
-Scene directScene(float arrivalWeight, const std::string& navigation = "direct")
+// The properties panel test's scene (the one that crashed), its walkers' arrival weight
+// and navigation set as an edit would.
+Scene directScene(float arrivalWeight, Navigation navigation = Navigation::Direct)
 {
-    std::string yaml = R"(throng: 1
-settings: {fps: 24, duration: 10, seed: 4, bounds: {min: [-30, -30], max: [30, 30]}}
-agent_types:
-  - {name: walker, max_speed: 1.4, max_force: 3, navigation: NAV, behaviours: {arrival: ARRIVAL, separation: 1.5}}
-  - {name: runner, max_speed: 3, max_force: 6}
-  - {name: car, kind: vehicle, radius: 1.1, max_speed: 10, max_force: 5000, mass: 1200}
-goals:
-  - {name: east, position: [25, 0], radius: 1}
-paths:
-  - {name: loop, radius: 1, points: [[-20, -20], [20, -20], [20, -10]]}
-lanes:
-  - {name: main, points: [[-30, 25], [30, 25]]}
-traffic_lights:
-  - {name: signal, position: [0, 22], stop_lines: [{lane: main, at: 30}]}
-vehicles:
-  - {type: car, lane: main, at: 5}
-groups:
-  - {name: loopers, type: walker, count: 5, rect: {min: [-20, -22], max: [-15, -18]}, path: loop}
-heroes:
-  - name: courier
-    type: runner
-    keyframes:
-      - {time: 0, position: [-5, 10]}
-      - {time: 10, position: [15, 10]}
-agents:
-)";
-    yaml.replace(yaml.find("ARRIVAL"), 7, std::to_string(arrivalWeight));
-    yaml.replace(yaml.find("NAV"), 3, navigation);
-    for (int k = 0; k < 6; ++k)
-        yaml += "  - {id: " + std::to_string(k + 1) + ", type: walker, position: [" + std::to_string(-10 + 4 * k) +
-                ", 0, 0], goal: east}\n";
-    LoadResult loaded = parseScene(yaml, "direct.yaml", ".");
+    LoadResult loaded = parseScene(throng::editor::test::panelScene().toStdString(), "panel.yaml", ".");
     if (!loaded.ok())
-        qFatal("direct.yaml does not load: %s", loaded.diagnostics.front().message.c_str());
+        qFatal("panel.yaml does not load: %s", loaded.diagnostics.front().message.c_str());
+    AgentType& walker = loaded.scene.agentTypes.front();
+    walker.behaviours.front().weight = arrivalWeight;  // arrival
+    walker.navigation = navigation;
     return loaded.scene;
 }
 
@@ -107,7 +82,7 @@ private slots:
     {
         // The first A* walkers of a scene arrive with the edit: the resumed World builds
         // their navigation afresh (the checkpoint has none) and they walk on to the goal.
-        const Scene direct = directScene(1.0f), planned = directScene(1.0f, "astar");
+        const Scene direct = directScene(1.0f), planned = directScene(1.0f, Navigation::AStar);
         World before(direct);
         for (std::size_t s = 0; s < kEditStep; ++s)
             before.step();
