@@ -72,6 +72,9 @@ void SimulationController::setScene(const sim::Scene& scene)
         emit recordedChanged(m_cache.frameCount());
         return;
     }
+    // Starting over: playback goes on from frame 0 with the edited scene (as a resumed run
+    // goes on from the edit), so Play pressed just before the edit reached here still plays.
+    const bool wasPlaying = m_playing;
     pause();
     m_stepPending = false;
     m_cache = {};
@@ -81,6 +84,8 @@ void SimulationController::setScene(const sim::Scene& scene)
     m_runFrames = 0;
     m_replaying = false;
     emit recordedChanged(0);
+    if (wasPlaying)
+        play();
 }
 
 void SimulationController::takeFrames()

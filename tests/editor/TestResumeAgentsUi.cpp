@@ -79,6 +79,23 @@ private slots:
         QCoreApplication::setApplicationName("TestResumeAgentsUi");
     }
 
+    void playPressedRightAfterAStrokeAtFrameZeroPlays()
+    {
+        // The stroke reaches the simulation a moment after the mouse is released: the run
+        // then starts over with the painted agents, and playback must go on, not stop.
+        MainWindow window;
+        QVERIFY(showWithScene(window, m_dir, "crossroads.yaml"));
+        SimulationController& sim = window.simulation();
+        QVERIFY(clickToolButton(window, "crowdBrush"));
+        dragOnGround(window, {{-38, -25}, {-26, -25}});
+        const std::size_t painted = window.document().scene().agents.size();
+        QVERIFY(painted >= 4);
+        playTo(window, 24);
+        if (QTest::currentTestFailed())
+            return;
+        QCOMPARE(sim.cache().agentCount(), kCrossroadsAgents + painted);
+    }
+
     void paintEraseAndUndoResumeFromTheEditFrame()
     {
         MainWindow window;
