@@ -7,6 +7,7 @@
 // of a frame that is already orthonormal. Only the last bits differ from the general path
 // (TestBoidKernel compares the two on the quality figures).
 #include "simcore/world/World.h"
+#include "simcore/world/NearestList.h"
 
 #include "simcore/steering/detail/SteeringMath.h"
 #include "simcore/world/Rng.h"
@@ -111,46 +112,31 @@ void World::stepBoid(std::size_t i)
     // Sense: the k nearest in the perception radius and view cone, nearest first, ties by
     // index (as gatherNeighbours, without the layers and priorities a boid world lacks).
     constexpr std::size_t k = kMaxNeighbours;
-    std::array<std::uint64_t, k> best;
-    std::size_t count = 0;
+    NearestList<k> best;
     float bound = t.perception * t.perception;
-    const float c = t.cosHalfView, c2 = c * c;
+    const float c = t.cosHalfView;
     m_grid.forEachNearest(p, t.perception, [&] { return bound; }, [&](std::uint32_t j, const glm::vec3& q) {
         const glm::vec3 d = q - p;
         const float d2 = glm::dot(d, d);
         if (d2 > bound || j == i)
             return;
-        if (c > -1.0f) {
-            const float dot = glm::dot(d, fwd);
-            const bool outside = c >= 0.0f ? (dot < 0.0f || dot * dot < c2 * d2) : (dot < 0.0f && dot * dot > c2 * d2);
-            if (outside) {
-                const float contact = radius + m_radius[j];
-                if (d2 > contact * contact)
-                    return;
-            }
-        }
-        const std::uint64_t key = (std::uint64_t(std::bit_cast<std::uint32_t>(d2 + 0.0f)) << 32) | j;
-        std::size_t at = count;
-        if (count == k) {
-            if (key >= best[k - 1])
+        if (outsideViewCone(d, d2, fwd, c)) {
+            const float contact = radius + m_radius[j];
+            if (d2 > contact * contact)
                 return;
-            at = k - 1;
-        } else {
-            ++count;
         }
-        for (; at > 0 && key < best[at - 1]; --at)
-            best[at] = best[at - 1];
-        best[at] = key;
-        if (count == k)
-            bound = std::bit_cast<float>(std::uint32_t(best[k - 1] >> 32));
+        if (best.insert(nearestKey(d2, j)) && best.full())
+            bound = best.worstDistance2();
     });
+
+    const std::size_t count = best.count;
 
     // Steer: separation, alignment and cohesion in one pass over the neighbours.
     const float range = b.range, damping = b.damping, maxForce = b.maxForce;
     glm::vec3 push(0.0f), headings(0.0f), velocities(0.0f), centre(0.0f);
     std::uint32_t* nearIndex = &m_nearIndex[i * k];
     for (std::size_t n = 0; n < count; ++n) {
-        const auto j = std::uint32_t(best[n]);
+        const auto j = best.index(n);
         nearIndex[n] = j;
         const glm::vec3 q = m_pos[j], vj = m_vel[j];
         headings += m_fwd[j];
@@ -158,7 +144,7 @@ void World::stepBoid(std::size_t i)
         centre += q;
         // Separation (FlockingBehaviours.cpp): the squared distance is the search key's.
         const float contact = radius + m_radius[j], reach = contact + range;
-        const float d2 = std::bit_cast<float>(std::uint32_t(best[n] >> 32));
+        const float d2 = std::bit_cast<float>(std::uint32_t(best.keys[n] >> 32));
         if (!(d2 < reach * reach))
             continue;
         const float d = std::sqrt(d2);

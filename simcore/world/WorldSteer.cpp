@@ -1,6 +1,7 @@
 // The sense and steer phases of World::step: who an agent perceives, and what its type's
 // behaviours ask of it. Both read only the previous state.
 #include "simcore/world/World.h"
+#include "simcore/world/NearestList.h"
 
 #include "simcore/steering/UninitialisedArray.h"
 #include "simcore/world/Rng.h"
@@ -97,10 +98,7 @@ std::size_t World::gatherNeighbours(std::size_t i, Neighbour* out, std::uint32_t
     // never loses sight of the ambulance among its nearest neighbours; with priorities
     // in the scene the radius therefore does not shrink.
     const TypeCollision& mine = collision(i);
-    constexpr std::size_t k = kMaxNeighbours;
-    constexpr std::uint64_t kNotUrgent = std::uint64_t(1) << 63;
-    std::array<std::uint64_t, k> best;
-    std::size_t count = 0;
+    NearestList<kMaxNeighbours> best;
     float bound = r2;
     const float c = t.cosHalfView;
     auto consider = [&](std::uint32_t j, const glm::vec3& q) {
@@ -110,39 +108,22 @@ std::size_t World::gatherNeighbours(std::size_t i, Neighbour* out, std::uint32_t
         const float d2 = glm::dot(d, d);
         if (d2 > bound || j == i)
             return;
-        // Outside the view cone (but a touching neighbour is always felt). The test
-        // dot(d, fwd) < c |d| is done on squares to avoid a square root per candidate.
-        if (c > -1.0f) {
-            const float dot = glm::dot(d, fwd);
-            const bool outside = c >= 0.0f ? (dot < 0.0f || dot * dot < c * c * d2) : (dot < 0.0f && dot * dot > c * c * d2);
-            const float contact = m_radius[i] + m_radius[j];
-            if (outside && d2 > contact * contact)
-                return;
-        }
+        // Outside the view cone (but a touching neighbour is always felt).
+        const float contact = m_radius[i] + m_radius[j];
+        if (outsideViewCone(d, d2, fwd, c) && d2 > contact * contact)
+            return;
         const bool urgent = m_makingWay && collision(j).priority > mine.priority;
-        const std::uint64_t key = (urgent ? 0 : kNotUrgent) | (std::uint64_t(std::bit_cast<std::uint32_t>(d2 + 0.0f)) << 32) | j;
-        std::size_t at = count;
-        if (count == k) {
-            if (key >= best[k - 1])
-                return;
-            at = k - 1;
-        } else {
-            ++count;
-        }
-        for (; at > 0 && key < best[at - 1]; --at)
-            best[at] = best[at - 1];
-        best[at] = key;
-        if (count == k && !m_makingWay)
-            bound = std::bit_cast<float>(std::uint32_t(best[k - 1] >> 32) & 0x7fffffffu);
+        if (best.insert(nearestKey(d2, j, !urgent)) && best.full() && !m_makingWay)
+            bound = best.worstDistance2();
     };
     // Nearest rows first: once the k best are found, farther cells are skipped.
     m_grid.forEachNearest(p, t.perception, [&] { return bound; }, consider);
-    for (std::size_t n = 0; n < count; ++n) {
-        const auto j = std::uint32_t(best[n]);
+    for (std::size_t n = 0; n < best.count; ++n) {
+        const auto j = best.index(n);
         out[n] = {m_pos[j], m_vel[j], m_fwd[j], m_radius[j], m_info[j].id};
         indices[n] = j;
     }
-    return count;
+    return best.count;
 }
 
 glm::vec3 World::flowDirection(glm::vec3 p) const
