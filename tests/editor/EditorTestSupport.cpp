@@ -3,11 +3,13 @@
 #include "EditorUiDriver.h"
 
 #include "editor/panels/OutlinerPanel.h"
+#include "editor/panels/TimelinePanel.h"
 #include "editor/simulation/SimulationController.h"
 #include "simcore/io/SceneIO.h"
 
 #include <QAbstractButton>
 #include <QLabel>
+#include <QSlider>
 
 #include <QFile>
 #include <QTest>
@@ -92,6 +94,27 @@ bool playToFrame(MainWindow& window, std::size_t frame, int timeoutMs)
     if (sim.isPlaying())
         clickButton(window, "playButton");
     return reached;
+}
+
+bool playUntilRecorded(MainWindow& window, std::size_t last, int timeoutMs)
+{
+    SimulationController& sim = window.simulation();
+    if (!clickButton(window, "playButton"))
+        return false;
+    const bool recorded = QTest::qWaitFor([&] { return sim.recordedFrames() > last; }, timeoutMs);
+    if (sim.isPlaying())
+        clickButton(window, "playButton");
+    return recorded && !sim.isPlaying();
+}
+
+bool scrubWithKeys(MainWindow& window, std::size_t frame)
+{
+    QSlider* scrub = window.timeline().scrubBar();
+    scrub->setFocus();
+    QTest::keyClick(scrub, Qt::Key_Home);
+    for (std::size_t f = 0; f < frame; ++f)
+        QTest::keyClick(scrub, Qt::Key_Right);
+    return window.simulation().currentFrame() == frame && window.viewport().frameIndex() == frame;
 }
 
 QString frameText(MainWindow& window)

@@ -47,6 +47,12 @@ bool clickButton(MainWindow& window, const QString& objectName);
 // Presses Play, waits until the viewport shows frame `frame` or later, presses Pause.
 // False when the frame was not reached within `timeoutMs`.
 bool playToFrame(MainWindow& window, std::size_t frame, int timeoutMs = 30000);
+// Presses Play, waits until frame `last` is recorded, presses Pause. False when it was
+// not recorded within `timeoutMs` or playback did not stop.
+bool playUntilRecorded(MainWindow& window, std::size_t last, int timeoutMs = 90000);
+// Scrubs to `frame` with the keyboard on the timeline's scrub bar (Home, then Right).
+// False unless the simulation and the viewport then show that frame.
+bool scrubWithKeys(MainWindow& window, std::size_t frame);
 // The status bar's texts: "Frame 12", "227 agents".
 QString frameText(MainWindow& window);
 QString agentCountText(MainWindow& window);

@@ -19,7 +19,6 @@
 #include <QSlider>
 #include <QStandardPaths>
 #include <QTest>
-#include <QToolButton>
 #include <QTreeWidgetItem>
 
 #include <algorithm>
@@ -34,35 +33,6 @@ namespace {
 using Frames = std::vector<std::vector<sim::AgentFrame>>;
 
 constexpr std::size_t kEditFrame = 40, kLastFrame = 60;
-
-void click(MainWindow& window, const char* name)
-{
-    auto* button = window.findChild<QToolButton*>(name);
-    QVERIFY2(button, name);
-    QTest::mouseClick(button, Qt::LeftButton);
-}
-
-// Plays until frame `last` is recorded, then pauses.
-void playTo(MainWindow& window, std::size_t last)
-{
-    SimulationController& sim = window.simulation();
-    click(window, "playButton");
-    QTRY_VERIFY_WITH_TIMEOUT(sim.recordedFrames() > last, 90000);
-    click(window, "playButton");
-    QVERIFY(!sim.isPlaying());
-}
-
-// Scrubs to `frame` with the keyboard on the scrub bar: Home, then Right.
-void scrubTo(MainWindow& window, std::size_t frame)
-{
-    QSlider* scrub = window.timeline().scrubBar();
-    scrub->setFocus();
-    QTest::keyClick(scrub, Qt::Key_Home);
-    for (std::size_t f = 0; f < frame; ++f)
-        QTest::keyClick(scrub, Qt::Key_Right);
-    QCOMPARE(window.simulation().currentFrame(), frame);
-    QCOMPARE(window.viewport().frameIndex(), frame);
-}
 
 Frames framesUpTo(const sim::FrameCache& cache, std::size_t last)
 {
@@ -118,11 +88,9 @@ private slots:
         MainWindow window;
         QVERIFY(showWithScene(window, m_dir, "crossroads.yaml"));
         SimulationController& sim = window.simulation();
-        playTo(window, kLastFrame);
-        if (QTest::currentTestFailed())
-            return;
+        QVERIFY(playUntilRecorded(window, kLastFrame));
         const Frames before = framesUpTo(sim.cache(), kLastFrame);
-        scrubTo(window, kEditFrame);
+        QVERIFY(scrubWithKeys(window, kEditFrame));
 
         // A wall across the north-west sidewalk, where the nw_round walkers go north.
         const glm::vec2 a(-8.9f, -25.0f), b(-5.2f, -25.0f);
@@ -140,9 +108,7 @@ private slots:
         QCOMPARE(window.timeline().scrubBar()->maximum(), int(kEditFrame));
         QVERIFY(samePositions(sim.cache(), before, 0, kEditFrame));
 
-        playTo(window, kLastFrame);
-        if (QTest::currentTestFailed())
-            return;
+        QVERIFY(playUntilRecorded(window, kLastFrame));
         QVERIFY(samePositions(sim.cache(), before, 0, kEditFrame));
         std::size_t nearChanged = 0, far = 0, farSame = 0, veryFar = 0, veryFarSame = 0, crossings = 0;
         for (std::size_t i = 0; i < sim.cache().agentCount(); ++i) {
@@ -171,14 +137,12 @@ private slots:
                  qPrintable(QString("%1 of %2 walkers 30 m away as before").arg(veryFarSame).arg(veryFar)));
 
         // Undo at frame 40: recomputed from there again, and now as before the wall.
-        scrubTo(window, kEditFrame);
+        QVERIFY(scrubWithKeys(window, kEditFrame));
         QTest::keyClick(&window.viewport(), Qt::Key_Z, Qt::ControlModifier);
         QCOMPARE(window.document().scene().walls.size(), std::size_t(4));
         QTRY_COMPARE(sim.recordedFrames(), kEditFrame + 1);
         QCOMPARE(sim.currentFrame(), kEditFrame);
-        playTo(window, kLastFrame);
-        if (QTest::currentTestFailed())
-            return;
+        QVERIFY(playUntilRecorded(window, kLastFrame));
         QVERIFY(samePositions(sim.cache(), before, 0, kLastFrame));
     }
 
@@ -187,11 +151,9 @@ private slots:
         MainWindow window;
         QVERIFY(showWithScene(window, m_dir, "crossroads.yaml"));
         SimulationController& sim = window.simulation();
-        playTo(window, kLastFrame);
-        if (QTest::currentTestFailed())
-            return;
+        QVERIFY(playUntilRecorded(window, kLastFrame));
         const Frames before = framesUpTo(sim.cache(), kLastFrame);
-        scrubTo(window, kEditFrame);
+        QVERIFY(scrubWithKeys(window, kEditFrame));
 
         // The pedestrian type, picked in the outliner, gets 0.5 m/s in the properties panel.
         QTreeWidgetItem* types = window.outliner().kindRow(ItemKind::AgentType);
@@ -208,9 +170,7 @@ private slots:
         QTRY_COMPARE(sim.recordedFrames(), kEditFrame + 1);
         QCOMPARE(sim.currentFrame(), kEditFrame);
 
-        playTo(window, kLastFrame);
-        if (QTest::currentTestFailed())
-            return;
+        QVERIFY(playUntilRecorded(window, kLastFrame));
         QVERIFY(samePositions(sim.cache(), before, 0, kEditFrame));
         // Pedestrians above the new top speed (speed factors reach 1.2) at the last frame.
         std::size_t pedestrians = 0, fastBefore = 0, fastAfter = 0;

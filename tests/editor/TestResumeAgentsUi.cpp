@@ -7,16 +7,13 @@
 #include "EditorUiDriver.h"
 #include "TestRegistry.h"
 
-#include "editor/panels/TimelinePanel.h"
 #include "editor/simulation/SimulationController.h"
 #include "editor/viewport/Viewport.h"
 
 #include <glm/geometric.hpp>
 
-#include <QSlider>
 #include <QStandardPaths>
 #include <QTest>
-#include <QToolButton>
 
 #include <set>
 
@@ -27,33 +24,6 @@ using namespace throng::editor::test;
 namespace {
 
 constexpr std::size_t kEditFrame = 40, kEraseFrame = 50, kLastFrame = 60;
-
-void click(MainWindow& window, const char* name)
-{
-    auto* button = window.findChild<QToolButton*>(name);
-    QVERIFY2(button, name);
-    QTest::mouseClick(button, Qt::LeftButton);
-}
-
-void playTo(MainWindow& window, std::size_t last)
-{
-    SimulationController& sim = window.simulation();
-    click(window, "playButton");
-    QTRY_VERIFY_WITH_TIMEOUT(sim.recordedFrames() > last, 90000);
-    click(window, "playButton");
-    QVERIFY(!sim.isPlaying());
-}
-
-void scrubTo(MainWindow& window, std::size_t frame)
-{
-    QSlider* scrub = window.timeline().scrubBar();
-    scrub->setFocus();
-    QTest::keyClick(scrub, Qt::Key_Home);
-    for (std::size_t f = 0; f < frame; ++f)
-        QTest::keyClick(scrub, Qt::Key_Right);
-    QCOMPARE(window.simulation().currentFrame(), frame);
-    QCOMPARE(window.viewport().frameIndex(), frame);
-}
 
 // The recording's first `frames` frames (all of it, agent sets included).
 std::uint64_t hashOfFirst(const sim::FrameCache& cache, std::size_t frames)
@@ -90,9 +60,7 @@ private slots:
         dragOnGround(window, {{-38, -25}, {-26, -25}});
         const std::size_t painted = window.document().scene().agents.size();
         QVERIFY(painted >= 4);
-        playTo(window, 24);
-        if (QTest::currentTestFailed())
-            return;
+        QVERIFY(playUntilRecorded(window, 24));
         QCOMPARE(sim.cache().agentCount(), kCrossroadsAgents + painted);
     }
 
@@ -101,13 +69,11 @@ private slots:
         MainWindow window;
         QVERIFY(showWithScene(window, m_dir, "crossroads.yaml"));
         SimulationController& sim = window.simulation();
-        playTo(window, kLastFrame);
-        if (QTest::currentTestFailed())
-            return;
+        QVERIFY(playUntilRecorded(window, kLastFrame));
         const std::uint64_t original = hashOfFirst(sim.cache(), kLastFrame + 1);
         const std::uint64_t keptFrames = sim.cache().hashFrames(0, kEditFrame + 1);
         const std::size_t restarts = sim.restarts();
-        scrubTo(window, kEditFrame);
+        QVERIFY(scrubWithKeys(window, kEditFrame));
 
         // Paint on the north-west block's sidewalk side at frame 40.
         QVERIFY(clickToolButton(window, "crowdBrush"));
@@ -121,7 +87,7 @@ private slots:
         QCOMPARE(window.viewport().agentCount(), kCrossroadsAgents);
 
         // Step: frame 41 follows from frame 40, not from a restart, with the new agents.
-        click(window, "stepButton");
+        QVERIFY(clickButton(window, "stepButton"));
         QTRY_COMPARE(sim.currentFrame(), kEditFrame + 1);
         QCOMPARE(sim.lastResumedAt(), kEditFrame);
         QCOMPARE(sim.restarts(), restarts);
@@ -131,9 +97,7 @@ private slots:
         for (const sim::AgentInfo& a : sim.cache().agents())
             ids.insert(a.id);
         QCOMPARE(ids.size(), sim.cache().agentCount());
-        playTo(window, kLastFrame);
-        if (QTest::currentTestFailed())
-            return;
+        QVERIFY(playUntilRecorded(window, kLastFrame));
         QCOMPARE(sim.restarts(), restarts);
         QCOMPARE(sim.cache().hashFrames(0, kEditFrame + 1), keptFrames);
         // The new agents (the last cache agents) are there from frame 41 only, where painted.
@@ -149,39 +113,35 @@ private slots:
             QVERIFY(glm::distance(glm::vec2(cache.at(kEditFrame + 1, i).position.x, cache.at(kEditFrame + 1, i).position.z),
                                   glm::vec2(placed->position.x, placed->position.z)) < 0.2f);
         }
-        scrubTo(window, kEditFrame);
+        QVERIFY(scrubWithKeys(window, kEditFrame));
         QCOMPARE(window.viewport().agentCount(), kCrossroadsAgents);
 
         // Erase the painted agents of the stroke's first half at frame 50.
-        scrubTo(window, kEraseFrame);
+        QVERIFY(scrubWithKeys(window, kEraseFrame));
         QVERIFY(clickToolButton(window, "eraseBrush"));
         dragOnGround(window, {{-38, -25}, {-33, -25}});
         const std::size_t left = window.document().scene().agents.size();
         QVERIFY(left < painted && left > 0);
         QTRY_COMPARE(sim.recordedFrames(), kEraseFrame + 1);
-        playTo(window, kLastFrame);
-        if (QTest::currentTestFailed())
-            return;
+        QVERIFY(playUntilRecorded(window, kLastFrame));
         QCOMPARE(sim.restarts(), restarts);
         QCOMPARE(sim.lastResumedAt(), kEraseFrame);
-        scrubTo(window, kEraseFrame + 1);
+        QVERIFY(scrubWithKeys(window, kEraseFrame + 1));
         QCOMPARE(window.viewport().agentCount(), kCrossroadsAgents + left);
-        scrubTo(window, kEraseFrame - 5);
+        QVERIFY(scrubWithKeys(window, kEraseFrame - 5));
         QCOMPARE(window.viewport().agentCount(), kCrossroadsAgents + painted);
 
         // Undo the erase at frame 50 and the stroke at frame 40: the original recording.
-        scrubTo(window, kEraseFrame);
+        QVERIFY(scrubWithKeys(window, kEraseFrame));
         QTest::keyClick(&window.viewport(), Qt::Key_Z, Qt::ControlModifier);
         QCOMPARE(window.document().scene().agents.size(), painted);
         QTRY_COMPARE(sim.recordedFrames(), kEraseFrame + 1);
-        scrubTo(window, kEditFrame);
+        QVERIFY(scrubWithKeys(window, kEditFrame));
         QTest::keyClick(&window.viewport(), Qt::Key_Z, Qt::ControlModifier);
         QVERIFY(window.document().scene().agents.empty());
         QTRY_COMPARE(sim.recordedFrames(), kEditFrame + 1);
         QCOMPARE(sim.cache().agentCount(), kCrossroadsAgents);
-        playTo(window, kLastFrame);
-        if (QTest::currentTestFailed())
-            return;
+        QVERIFY(playUntilRecorded(window, kLastFrame));
         QCOMPARE(sim.restarts(), restarts);
         QCOMPARE(hashOfFirst(sim.cache(), kLastFrame + 1), original);
     }
