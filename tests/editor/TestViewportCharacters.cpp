@@ -9,7 +9,10 @@
 #include "export/character/BuiltinCharacters.h"
 #include "simcore/world/FrameCache.h"
 
+#include <QAction>
 #include <QApplication>
+#include <QSettings>
+#include <QStandardPaths>
 #include <QTest>
 #include <QWheelEvent>
 
@@ -163,6 +166,37 @@ private:
     }
 
 private slots:
+    void initTestCase()
+    {
+        QStandardPaths::setTestModeEnabled(true);
+        QCoreApplication::setOrganizationName("ThrongTests");
+        QCoreApplication::setApplicationName("TestViewportCharacters");
+        QSettings().remove("viewport/agentsAs");
+    }
+
+    void viewMenuChoosesCharactersOrGlyphsAndRemembers()
+    {
+        {
+            MainWindow window;
+            QVERIFY(window.viewport().agentsAsCharacters());  // characters unless chosen otherwise
+            auto* glyphs = window.findChild<QAction*>("agentsAsGlyphsAction");
+            auto* characters = window.findChild<QAction*>("agentsAsCharactersAction");
+            QVERIFY(glyphs && characters);
+            QVERIFY(characters->isChecked());
+            QVERIFY(!glyphs->toolTip().isEmpty() && !characters->toolTip().isEmpty());
+            glyphs->trigger();
+            QVERIFY(!window.viewport().agentsAsCharacters());
+        }
+        {
+            MainWindow reopened;
+            QVERIFY(!reopened.viewport().agentsAsCharacters());
+            QVERIFY(reopened.findChild<QAction*>("agentsAsGlyphsAction")->isChecked());
+            reopened.findChild<QAction*>("agentsAsCharactersAction")->trigger();
+            QVERIFY(reopened.viewport().agentsAsCharacters());
+        }
+        QCOMPARE(QSettings().value("viewport/agentsAs").toString(), QString("characters"));
+    }
+
     void walkerStandsAsItsCharacterInItsTint()
     {
         Viewport viewport;
@@ -252,14 +286,15 @@ private slots:
     void crowdCloseUpShowsEveryAgentNearOnesAsCharacters()
     {
         QByteArray yaml = "throng: 1\n"
-                          "settings: {bounds: {min: [-40, -30], max: [40, 30]}}\n"
+                          "settings: {bounds: {min: [-75, -50], max: [75, 50]}}\n"
                           "agent_types:\n"
                           "  - {name: walker, radius: 0.3, variation: {tints: [[0.9, 0.35, 0.1]]}}\n"
                           "agents:\n";
         std::vector<glm::vec3> at;
-        for (int z = -12; z <= 12; ++z)
-            for (int x = -16; x <= 16; ++x) {
-                at.push_back({2.5f * float(x), 0.0f, 2.5f * float(z)});
+        // 24 x 16 walkers 6 m apart: close up, near ones large and far ones a few pixels.
+        for (int z = -8; z < 8; ++z)
+            for (int x = -12; x < 12; ++x) {
+                at.push_back({6.0f * float(x) + 3.0f, 0.0f, 6.0f * float(z) + 3.0f});
                 yaml += QStringLiteral("  - {type: walker, position: [%1, %2], heading: %3}\n")
                             .arg(at.back().x)
                             .arg(at.back().z)
@@ -276,7 +311,7 @@ private slots:
         const QImage image = viewport.grabFramebuffer();
         saveForInspection(image, "crowd");
         const std::array<int, kAgentDetailLevels> drawn = viewport.agentsDrawnByDetail();
-        QVERIFY2(viewport.charactersDrawn() >= 20, qPrintable(QString::number(viewport.charactersDrawn())));
+        QVERIFY2(viewport.charactersDrawn() >= 10, qPrintable(QString::number(viewport.charactersDrawn())));
         QVERIFY2(drawn[2] > 0, "no agent far enough for an impostor: the view does not test both");
         QCOMPARE(viewport.charactersDrawn(), drawn[0] + drawn[1]);  // every near agent as its character
 
@@ -293,7 +328,7 @@ private slots:
                     found = isWalker(pixelAt(image, viewport, pos + QPointF(dx, dy)));
             QVERIFY2(found, qPrintable(QString("no agent at (%1, %2)").arg(pos.x()).arg(pos.y())));
         }
-        QVERIFY2(inside > 100, qPrintable(QString::number(inside)));
+        QVERIFY2(inside > 80, qPrintable(QString::number(inside)));
     }
 };
 
