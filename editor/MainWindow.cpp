@@ -16,6 +16,7 @@
 #include <QAction>
 #include <QActionGroup>
 #include <QDockWidget>
+#include <QFileInfo>
 #include <QLabel>
 #include <QMenuBar>
 #include <QSettings>
@@ -50,6 +51,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
 
     connect(&m_document, &SceneDocument::sceneReset, this, [this] {
         m_editTimer->stop();
+        const QString path = m_document.filePath();
+        m_viewport->setSceneDirectory(path.isEmpty() ? QString() : QFileInfo(path).absolutePath());
         m_viewport->setScene(m_document.scene());
         m_viewport->setHighlight(m_document.scene(), m_document.selection());
         m_simulation->setScene(m_document.scene());
@@ -183,6 +186,7 @@ void MainWindow::createViewMenu()
     top->setChecked(true);
     connect(m_viewport, &Viewport::viewModeChanged, this,
             [top, orbit](ViewMode mode) { (mode == ViewMode::Top ? top : orbit)->setChecked(true); });
+    addAgentsAsMenu(*menu);
     menu->addSeparator();
     QAction* frame = menu->addAction(tr("&Frame All"), m_viewport, &Viewport::frameAll);
     frame->setShortcut(Qt::Key_F);
@@ -191,6 +195,32 @@ void MainWindow::createViewMenu()
     for (QDockWidget* dock : m_docks)
         menu->addAction(dock->toggleViewAction());
     menu->setToolTipsVisible(true);
+}
+
+void MainWindow::addAgentsAsMenu(QMenu& viewMenu)
+{
+    QMenu* agentsAs = viewMenu.addMenu(tr("&Agents as"));
+    agentsAs->setObjectName("agentsAsMenu");
+    agentsAs->setToolTipsVisible(true);
+    auto* group = new QActionGroup(this);
+    QAction* characters = agentsAs->addAction(tr("&Characters"));
+    characters->setObjectName("agentsAsCharactersAction");
+    characters->setToolTip(tr("In 3D, near agents wear the character export gives them, walking as recorded"));
+    QAction* glyphs = agentsAs->addAction(tr("&Glyphs"));
+    glyphs->setObjectName("agentsAsGlyphsAction");
+    glyphs->setToolTip(tr("Every agent as a simple oriented body shape (lighter to draw)"));
+    for (QAction* a : {characters, glyphs}) {
+        a->setCheckable(true);
+        group->addAction(a);
+    }
+    const bool asCharacters = QSettings().value("viewport/agentsAs", "characters").toString() != "glyphs";
+    (asCharacters ? characters : glyphs)->setChecked(true);
+    m_viewport->setAgentsAsCharacters(asCharacters);
+    connect(group, &QActionGroup::triggered, this, [this, characters](QAction* chosen) {
+        const bool on = chosen == characters;
+        m_viewport->setAgentsAsCharacters(on);
+        QSettings().setValue("viewport/agentsAs", on ? "characters" : "glyphs");
+    });
 }
 
 void MainWindow::createSimulationMenu()

@@ -13,6 +13,7 @@
 
 class QDockWidget;
 class QLabel;
+class QMenu;
 class QTimer;
 
 namespace throng::editor {
@@ -68,6 +69,7 @@ private:
     void createFileMenu();
     void createEditMenu();
     void createViewMenu();
+    void addAgentsAsMenu(QMenu& viewMenu);
     void createSimulationMenu();
     void createToolBars();
     void createStatusBar();

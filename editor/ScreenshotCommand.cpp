@@ -5,6 +5,7 @@
 #include "simcore/world/World.h"
 
 #include <QFile>
+#include <QFileInfo>
 #include <QImage>
 
 #include <exception>
@@ -41,6 +42,8 @@ int ScreenshotCommand::run()
     viewport.setAttribute(Qt::WA_DontShowOnScreen);
     viewport.resize(m_options.sizePx);
     viewport.setViewMode(m_options.view);
+    viewport.setAgentsAsCharacters(true);
+    viewport.setSceneDirectory(QFileInfo(m_options.scenePath).absolutePath());
     viewport.setScene(loaded.scene, *world);
     viewport.show();
     const QImage image = viewport.grabFramebuffer().convertToFormat(QImage::Format_RGB32);

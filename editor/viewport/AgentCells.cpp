@@ -34,6 +34,7 @@ void AgentCells::build(std::span<const AgentGlyph> glyphs)
 {
     m_cells.clear();
     m_sorted.resize(glyphs.size());
+    m_order.resize(glyphs.size());
     if (glyphs.empty())
         return;
     glm::vec2 lo{glyphs[0].position.x, glyphs[0].position.z}, hi = lo;
@@ -58,8 +59,11 @@ void AgentCells::build(std::span<const AgentGlyph> glyphs)
     for (std::size_t c = 1; c < start.size(); ++c)
         start[c] += start[c - 1];
     std::vector<int> next(start.begin(), start.end() - 1);
-    for (std::size_t i = 0; i < glyphs.size(); ++i)
-        m_sorted[std::size_t(next[std::size_t(m_cellOf[i])]++)] = glyphs[i];
+    for (std::size_t i = 0; i < glyphs.size(); ++i) {
+        const std::size_t at = std::size_t(next[std::size_t(m_cellOf[i])]++);
+        m_sorted[at] = glyphs[i];
+        m_order[at] = int(i);
+    }
 
     for (std::size_t c = 0; c + 1 < start.size(); ++c) {
         const int first = start[c], count = start[c + 1] - start[c];

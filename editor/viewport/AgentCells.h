@@ -48,6 +48,8 @@ public:
     // Sorts `glyphs` by cell, stable within a cell (same input, same order).
     void build(std::span<const AgentGlyph> glyphs);
     std::span<const AgentGlyph> sorted() const { return m_sorted; }
+    // order()[k]: the index in build()'s input of sorted()[k].
+    std::span<const int> order() const { return m_order; }
     int cellCount() const { return int(m_cells.size()); }
 
     // Fills `plan` (its vectors are reused: no allocation once they have grown) for the
@@ -65,6 +67,7 @@ private:
         float maxRadiusM = 0.0f;
     };
     std::vector<AgentGlyph> m_sorted;
+    std::vector<int> m_order;   // sorted -> input index
     std::vector<Cell> m_cells;  // non-empty cells only, in sorted() order
     std::vector<int> m_cellOf;  // scratch for build()
 };

@@ -51,8 +51,9 @@ bool AgentRenderer::initialize(QOpenGLFunctions_3_3_Core& gl)
     createShape(gl, m_coarsePrism, AgentGlyphMesh::prism(AgentGlyphMesh::kCoarse), m_bodies.buffer);
     createShape(gl, m_carFlat, CarGlyphMesh::flat(), m_cars.buffer);
     createShape(gl, m_carSolid, CarGlyphMesh::solid(), m_cars.buffer);
+    gl.glGenBuffers(1, &m_fallbackBuffer);
     m_spriteProgram = buildShaderProgram("agent impostor", shaders::kImpostorVertex, shaders::kImpostorFragment);
-    return bool(m_spriteProgram);
+    return m_spriteProgram && m_characters.initialize(gl);
 }
 
 void AgentRenderer::bindInstanceAttributes(QOpenGLFunctions_3_3_Core& gl, unsigned instances, bool divisor)
@@ -102,22 +103,31 @@ void AgentRenderer::destroy(QOpenGLFunctions_3_3_Core& gl)
         gl.glDeleteBuffers(1, &set->buffer);
         *set = {};
     }
+    gl.glDeleteBuffers(1, &m_fallbackBuffer);
+    m_fallbackBuffer = 0;
+    m_characters.destroy(gl);
     m_spriteProgram.reset();
     m_program.reset();
 }
 
 void AgentRenderer::upload(QOpenGLFunctions_3_3_Core& gl, std::span<const AgentGlyph> bodies,
-                           std::span<const AgentGlyph> cars)
+                           std::span<const AgentGlyph> cars, std::span<const AgentPose> bodyPoses,
+                           std::span<const AgentPose> carPoses)
 {
     static_assert(sizeof(AgentGlyph) == 8 * sizeof(float), "the shader reads two vec4 per instance");
     if (!m_program)
         return;
-    uploadInstances(gl, m_bodies, bodies);
-    uploadInstances(gl, m_cars, cars);
+    uploadInstances(gl, m_bodies, bodies, bodyPoses);
+    uploadInstances(gl, m_cars, cars, carPoses);
 }
 
-void AgentRenderer::uploadInstances(QOpenGLFunctions_3_3_Core& gl, Instances& set, std::span<const AgentGlyph> glyphs)
+void AgentRenderer::uploadInstances(QOpenGLFunctions_3_3_Core& gl, Instances& set, std::span<const AgentGlyph> glyphs,
+                                    std::span<const AgentPose> poses)
 {
+    if (poses.size() == glyphs.size())
+        set.poses.assign(poses.begin(), poses.end());
+    else
+        set.poses.clear();
     // Uploaded in cell order, whether level of detail is on or not: the draw order of
     // agents that overlap is not part of what they show.
     set.cells.build(glyphs);
@@ -141,17 +151,44 @@ void AgentRenderer::draw(QOpenGLFunctions_3_3_Core& gl, const RenderView& view)
         return;
     }
     m_lastDrawn = {};
+    m_characters.clear();
+    m_characterBudget = kCharacterLimit;
     const bool p = view.perspective;
+    // Cars first: few, and their characters matter most near the walkers they pass.
+    const Shape& car = p ? m_carSolid : m_carFlat;
+    drawPlanned(gl, view, m_cars, car, car, DetailThresholds{0.0f, 0.0f});
     // Past kDetailedLimit agents even the near ones keep the coarse glyph, as without
     // level of detail: under a software renderer each of its triangles costs.
     const bool coarse = m_bodies.count + m_cars.count > kDetailedLimit;
     const Shape& coarseBody = p ? m_coarsePrism : m_coarseFlat;
     drawPlanned(gl, view, m_bodies, coarse ? coarseBody : (p ? m_prism : m_flat), coarseBody,
                 p ? kPerspectiveDetail : kTopDetail);
-    // Cars keep their mesh at any size: a car's outline is not a walker's, and scenes
-    // hold far fewer of them.
-    const Shape& car = p ? m_carSolid : m_carFlat;
-    drawPlanned(gl, view, m_cars, car, car, DetailThresholds{0.0f, 0.0f});
+    m_characters.draw(gl, view);
+}
+
+void AgentRenderer::takeCharacters(const Instances& set)
+{
+    m_fallback.clear();
+    const std::span<const AgentGlyph> sorted = set.cells.sorted();
+    const std::span<const int> order = set.cells.order();
+    for (int level = 0; level < 2; ++level) {
+        std::vector<InstanceRange>& kept = m_glyphRanges[std::size_t(level)];
+        kept.clear();
+        for (const InstanceRange& r : set.plan.ranges[std::size_t(level)]) {
+            int k = r.first;
+            for (; k < r.first + r.count && m_characterBudget > 0; ++k) {
+                const AgentPose& pose = set.poses[std::size_t(order[std::size_t(k)])];
+                if (m_characters.hasCharacter(pose.character)) {
+                    m_characters.add(sorted[std::size_t(k)], pose);
+                    --m_characterBudget;
+                } else {
+                    m_fallback.push_back(sorted[std::size_t(k)]);
+                }
+            }
+            if (k < r.first + r.count)
+                kept.push_back({k, r.first + r.count - k});
+        }
+    }
 }
 
 void AgentRenderer::drawPlanned(QOpenGLFunctions_3_3_Core& gl, const RenderView& view, Instances& set,
@@ -160,11 +197,26 @@ void AgentRenderer::drawPlanned(QOpenGLFunctions_3_3_Core& gl, const RenderView&
     if (set.count == 0)
         return;
     set.cells.plan(view, thresholds, set.plan);
-    const auto& byDetail = set.plan.ranges;
-    if (!byDetail[0].empty() || !byDetail[1].empty()) {
+    std::span<const InstanceRange> near = set.plan.at(AgentDetail::Detailed);
+    std::span<const InstanceRange> mid = set.plan.at(AgentDetail::Coarse);
+    m_fallback.clear();
+    if (m_agentsAsCharacters && view.perspective && !set.poses.empty() && m_characters.characterCount() > 0) {
+        takeCharacters(set);
+        near = m_glyphRanges[0];
+        mid = m_glyphRanges[1];
+    }
+    if (!near.empty() || !mid.empty() || !m_fallback.empty()) {
         bindGlyphProgram(gl, view);
-        drawRanges(gl, detailed.vao, set.buffer, detailed.vertexCount, set.plan.at(AgentDetail::Detailed));
-        drawRanges(gl, coarse.vao, set.buffer, coarse.vertexCount, set.plan.at(AgentDetail::Coarse));
+        drawRanges(gl, detailed.vao, set.buffer, detailed.vertexCount, near);
+        drawRanges(gl, coarse.vao, set.buffer, coarse.vertexCount, mid);
+        if (!m_fallback.empty()) {
+            // Near agents whose type has no character: the detailed glyph, from a buffer of their own.
+            gl.glBindBuffer(GL_ARRAY_BUFFER, m_fallbackBuffer);
+            gl.glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(m_fallback.size() * sizeof(AgentGlyph)), m_fallback.data(),
+                            GL_STREAM_DRAW);
+            const InstanceRange all{0, int(m_fallback.size())};
+            drawRanges(gl, detailed.vao, m_fallbackBuffer, detailed.vertexCount, {&all, 1});
+        }
         m_program->release();
     }
     if (!set.plan.at(AgentDetail::Impostor).empty())

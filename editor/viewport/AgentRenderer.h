@@ -5,11 +5,15 @@
 // cells once per upload, and each frame draws only the cells in view: near ones with the
 // detailed glyph, farther ones with the coarse glyph, and those only a few pixels wide as
 // impostors (one small quad each, showing the same silhouette, shading and nose).
+// In perspective, near agents whose type has a character are drawn as that character
+// (CharacterRenderer), posed and scaled per agent, up to kCharacterLimit of them.
 // Owns its GL buffers; create, draw and destroy it with the context current. Knows
 // nothing of scenes or worlds.
 
 #include "editor/viewport/AgentCells.h"
 #include "editor/viewport/AgentGlyph.h"
+#include "editor/viewport/AgentPose.h"
+#include "editor/viewport/CharacterRenderer.h"
 #include "editor/viewport/RenderView.h"
 
 #include <QOpenGLShaderProgram>
@@ -38,11 +42,28 @@ public:
     // Level-of-detail switches, radius on screen in pixels (AgentCells).
     static constexpr DetailThresholds kTopDetail{kSpriteBelowPx, kCoarseBelowPx};
     static constexpr DetailThresholds kPerspectiveDetail{3.0f, 12.0f};
+    // At most this many agents are drawn as characters in a frame (cars first, then the
+    // walkers of the nearest cells); the rest keep glyphs and impostors. Under llvmpipe a
+    // character costs about 0.05 ms a frame (editor_figures --characters), so 5,000 of
+    // them keep a close-up of 100,000 agents interactive.
+    static constexpr int kCharacterLimit = 5000;
 
     bool initialize(QOpenGLFunctions_3_3_Core& gl);
     void destroy(QOpenGLFunctions_3_3_Core& gl);
-    // `bodies` are walkers and fliers, `cars` vehicles.
-    void upload(QOpenGLFunctions_3_3_Core& gl, std::span<const AgentGlyph> bodies, std::span<const AgentGlyph> cars);
+    // `bodies` are walkers and fliers, `cars` vehicles; `bodyPoses` and `carPoses` are
+    // empty or one per glyph (the character each wears, see setCharacters).
+    void upload(QOpenGLFunctions_3_3_Core& gl, std::span<const AgentGlyph> bodies, std::span<const AgentGlyph> cars,
+                std::span<const AgentPose> bodyPoses = {}, std::span<const AgentPose> carPoses = {});
+    // The characters AgentPose::character indexes.
+    void setCharacters(QOpenGLFunctions_3_3_Core& gl, std::span<const PoseTable> tables)
+    {
+        m_characters.setCharacters(gl, tables);
+    }
+    // On: near agents as characters in perspective; off (the default): glyphs only.
+    void setAgentsAsCharacters(bool on) { m_agentsAsCharacters = on; }
+    bool agentsAsCharacters() const { return m_agentsAsCharacters; }
+    // Agents the last draw() drew as characters.
+    int lastCharactersDrawn() const { return m_characters.lastDrawn(); }
     void draw(QOpenGLFunctions_3_3_Core& gl, const RenderView& view);
 
     // Off: every agent of a set drawn with one shape chosen for the whole set, as before
@@ -63,11 +84,14 @@ private:
         float maxRadiusM = 0.0f;
         AgentCells cells;
         AgentDrawPlan plan;
+        std::vector<AgentPose> poses;  // by upload index (cells.order() maps to it); may be empty
     };
     void createShape(QOpenGLFunctions_3_3_Core& gl, Shape& shape, const std::vector<GlyphVertex>& vertices,
                      unsigned instances);
     void bindInstanceAttributes(QOpenGLFunctions_3_3_Core& gl, unsigned instances, bool divisor);
-    void uploadInstances(QOpenGLFunctions_3_3_Core& gl, Instances& set, std::span<const AgentGlyph> glyphs);
+    void uploadInstances(QOpenGLFunctions_3_3_Core& gl, Instances& set, std::span<const AgentGlyph> glyphs,
+                         std::span<const AgentPose> poses);
+    void takeCharacters(const Instances& set);
     void drawSet(QOpenGLFunctions_3_3_Core& gl, const RenderView& view, const Instances& set, const Shape& flat,
                  const Shape& solid, bool coarse);
     void drawSprites(QOpenGLFunctions_3_3_Core& gl, const RenderView& view, const Instances& set,
@@ -83,6 +107,13 @@ private:
     Shape m_flat, m_prism, m_coarseFlat, m_coarsePrism, m_carFlat, m_carSolid;
     Instances m_bodies, m_cars;
     bool m_levelOfDetail = true;
+    bool m_agentsAsCharacters = false;
+    CharacterRenderer m_characters;
+    int m_characterBudget = 0;
+    // This set's near ranges left to glyphs, and near agents without a character.
+    std::array<std::vector<InstanceRange>, 2> m_glyphRanges;
+    std::vector<AgentGlyph> m_fallback;
+    unsigned m_fallbackBuffer = 0;
     std::array<int, kAgentDetailLevels> m_lastDrawn{};
 };
 

@@ -158,6 +158,7 @@ void Viewport::setSet(const sim::Scene& scene)
     m_traffic.trafficLights = scene.trafficLights;
     m_terrain = scene.terrain;
     m_agentColours.setScene(scene);
+    m_charactersChanged = m_agentCharacters.setScene(scene, m_sceneDirectory) || m_charactersChanged;
     m_typeRadiusM.clear();
     m_typeIsVehicle.clear();
     for (const sim::AgentType& t : scene.agentTypes) {
@@ -177,8 +178,11 @@ void Viewport::setAgents(std::span<const sim::AgentFrame> frames, std::span<cons
 {
     const std::size_t n = std::min(frames.size(), agents.size());
     const std::vector<glm::vec3>& colours = m_agentColours.coloursFor(agents.first(n));
+    m_agentCharacters.posesFor(frames.first(n), agents.first(n), m_shownPoses);
     m_glyphs.clear();
     m_carGlyphs.clear();
+    m_glyphPoses.clear();
+    m_carPoses.clear();
     m_glyphs.reserve(n);
     m_agentBox = {};
     for (std::size_t i = 0; i < n; ++i) {
@@ -188,6 +192,7 @@ void Viewport::setAgents(std::span<const sim::AgentFrame> frames, std::span<cons
         const float radius = type < m_typeRadiusM.size() ? m_typeRadiusM[type] : kFallbackRadiusM;
         const bool car = type < m_typeIsVehicle.size() && m_typeIsVehicle[type];
         (car ? m_carGlyphs : m_glyphs).push_back({frames[i].position, frames[i].headingRad, radius, colours[i]});
+        (car ? m_carPoses : m_glyphPoses).push_back(m_shownPoses[i]);
         m_agentBox.include({frames[i].position.x, frames[i].position.z}, radius);
     }
     m_agentsChanged = true;
@@ -228,6 +233,12 @@ void Viewport::rebuildHighlight()
 void Viewport::setAgentLevelOfDetail(bool on)
 {
     m_agentRenderer.setLevelOfDetail(on);
+    update();
+}
+
+void Viewport::setAgentsAsCharacters(bool on)
+{
+    m_agentRenderer.setAgentsAsCharacters(on);
     update();
 }
 
@@ -292,7 +303,7 @@ void Viewport::initializeGL()
         releaseGl();
         doneCurrent();
     });
-    m_setChanged = m_lightsChanged = m_agentsChanged = m_highlightChanged = true;
+    m_setChanged = m_lightsChanged = m_agentsChanged = m_highlightChanged = m_charactersChanged = true;
     m_glReady = true;
 }
 
@@ -321,11 +332,13 @@ void Viewport::uploadChanged()
         m_setRenderer.upload(*this, m_setMesh);
     if (m_lightsChanged)
         m_lightRenderer.upload(*this, m_lightMesh);
+    if (m_charactersChanged)
+        m_agentRenderer.setCharacters(*this, m_agentCharacters.poseTables());
     if (m_agentsChanged)
-        m_agentRenderer.upload(*this, m_glyphs, m_carGlyphs);
+        m_agentRenderer.upload(*this, m_glyphs, m_carGlyphs, m_glyphPoses, m_carPoses);
     if (m_highlightChanged)
         m_highlightRenderer.upload(*this, m_highlightMesh);
-    m_setChanged = m_lightsChanged = m_agentsChanged = m_highlightChanged = false;
+    m_setChanged = m_lightsChanged = m_agentsChanged = m_highlightChanged = m_charactersChanged = false;
 }
 
 void Viewport::paintGL()

@@ -5,6 +5,7 @@
 
 #include "editor/SceneItem.h"
 #include "editor/tools/ViewportTool.h"
+#include "editor/viewport/AgentCharacters.h"
 #include "editor/viewport/AgentColours.h"
 #include "editor/viewport/AgentRenderer.h"
 #include "editor/viewport/CameraRig.h"
@@ -88,6 +89,17 @@ public:
         return m_agentRenderer.lastDrawnByDetail();
     }
 
+    // On: near agents in 3D wear their type's character (as export dresses them: look,
+    // tint, height, posed by their recorded clip and phase). Off (the default, the
+    // reference the glyph tests use): glyphs. The main window and screenshots turn it on.
+    void setAgentsAsCharacters(bool on);
+    bool agentsAsCharacters() const { return m_agentRenderer.agentsAsCharacters(); }
+    // Agents the last paint drew as characters.
+    int charactersDrawn() const { return m_agentRenderer.lastCharactersDrawn(); }
+    // The folder character files named relative to the scene are found in (the scene
+    // file's folder); set it before setScene. Empty: the working directory.
+    void setSceneDirectory(const QString& directory) { m_sceneDirectory = directory.toStdString(); }
+
     // False when no OpenGL 3.3 core context could be made; glProblem() says why.
     bool isGlReady() const { return m_glReady; }
     QString glProblem() const { return m_glProblem; }
@@ -136,6 +148,9 @@ private:
     std::vector<glm::vec2> m_shownXZ;        // their (x, z), by World index
     std::vector<AgentGlyph> m_glyphs;     // walkers and fliers
     std::vector<AgentGlyph> m_carGlyphs;  // vehicles, drawn as cars
+    std::vector<AgentPose> m_glyphPoses, m_carPoses;  // the characters they wear, one per glyph
+    std::vector<AgentPose> m_shownPoses;              // scratch: one per shown agent
+    bool m_charactersChanged = true;
     bool m_setChanged = true, m_lightsChanged = true, m_agentsChanged = true, m_highlightChanged = true;
 
     sim::Scene m_traffic;               // lanes, crosswalks and lights only: relit every frame
@@ -143,6 +158,8 @@ private:
     std::vector<float> m_typeRadiusM;   // by Scene::agentTypes index
     std::vector<bool> m_typeIsVehicle;  // by Scene::agentTypes index
     AgentColours m_agentColours;
+    AgentCharacters m_agentCharacters;
+    std::string m_sceneDirectory;
     glm::vec2 m_boundsMin{-50.0f}, m_boundsMax{50.0f};
     GroundBox m_setBox, m_agentBox;
     std::optional<double> m_timeS;

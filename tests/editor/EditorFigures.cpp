@@ -1,8 +1,10 @@
 // editor_figures: the editor's figures as JSON on stdout (never a test; timings are not
 // asserted anywhere). Start-up time to a shown window with the crossroads demo, viewport
 // frame time with 10,000 and 100,000 agents (top, 3D, 3D close-up; level of detail off
-// and on in one run), crowd-brush stroke latency per mouse move.
+// and on in one run), crowd-brush stroke latency per mouse move, and the 3D frame time
+// with near agents as characters against glyphs.
 // Run under a display: xvfb-run -a -s "-screen 0 1920x1080x24" editor_figures [WINDOW.png]
+// (`editor_figures --characters`: the characters-against-glyphs figures only).
 #include "EditorUiDriver.h"
 
 #include "editor/simulation/SimulationController.h"
@@ -100,6 +102,47 @@ FrameTimes frameTimes(Viewport& viewport, ViewMode mode, int zoomSteps, int fram
     return {median(full), median(lod), viewport.agentsDrawnByDetail()};
 }
 
+// Median milliseconds per repaint in 3D with level of detail, agents as glyphs and as
+// characters, frames of the two taken in turn.
+struct CharacterTimes {
+    double glyphsMs = 0.0, charactersMs = 0.0;
+    int characters = 0;
+};
+
+CharacterTimes characterTimes(Viewport& viewport, int zoomSteps, int frames)
+{
+    viewport.setViewMode(ViewMode::Orbit);
+    viewport.setAgentLevelOfDetail(true);
+    viewport.frameAll();
+    for (int k = 0; k < zoomSteps; ++k) {
+        const QPointF centre(viewport.width() / 2.0, viewport.height() / 2.0);
+        QWheelEvent wheel(centre, viewport.mapToGlobal(centre), QPoint(), QPoint(0, 120), Qt::NoButton,
+                          Qt::NoModifier, Qt::NoScrollPhase, false);
+        QApplication::sendEvent(&viewport, &wheel);
+    }
+    std::vector<double> glyphs, characters;
+    int drawn = 0;
+    for (int i = 0; i <= frames; ++i) {
+        viewport.setAgentsAsCharacters(false);
+        const double g = repaintMs(viewport);
+        viewport.setAgentsAsCharacters(true);
+        const double c = repaintMs(viewport);
+        drawn = viewport.charactersDrawn();
+        if (i > 0) {
+            glyphs.push_back(g);
+            characters.push_back(c);
+        }
+    }
+    viewport.setAgentsAsCharacters(false);
+    return {median(glyphs), median(characters), drawn};
+}
+
+void printCharacterTimes(const char* name, const CharacterTimes& t, bool last)
+{
+    std::cout << "    \"" << name << "\": {\"glyphs_ms\": " << t.glyphsMs << ", \"characters_ms\": " << t.charactersMs
+              << ", \"drawn_as_characters\": " << t.characters << "}" << (last ? "\n" : ",\n");
+}
+
 void printTimes(const char* name, const FrameTimes& t, bool last)
 {
     std::cout << "    \"" << name << "\": {\"full_ms\": " << t.fullMs << ", \"lod_ms\": " << t.lodMs
@@ -118,6 +161,24 @@ int main(int argc, char** argv)
     QApplication app(argc, argv);
     QApplication::setOrganizationName("ThrongFigures");
     QTemporaryDir dir;
+    const bool charactersOnly = argc > 1 && QByteArray(argv[1]) == "--characters";
+    if (charactersOnly) {
+        Viewport viewport;
+        viewport.resize(1280, 720);
+        viewport.show();
+        if (!QTest::qWaitForWindowExposed(&viewport))
+            return 1;
+        std::cout << "{\n";
+        for (std::size_t n : {std::size_t(10000), std::size_t(100000)}) {
+            viewport.setScene(crowdOf(n));
+            std::cout << "  \"agents_" << n << "\": {\n";
+            printCharacterTimes("3d", characterTimes(viewport, 0, 3), false);
+            printCharacterTimes("3d_close", characterTimes(viewport, 15, 3), true);
+            std::cout << "  }" << (n == 100000 ? "\n" : ",\n");
+        }
+        std::cout << "}\n";
+        return 0;
+    }
 
     // Start-up: QApplication to a shown, exposed window with the crossroads demo open.
     auto* window = new MainWindow;

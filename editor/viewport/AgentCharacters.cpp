@@ -1,0 +1,114 @@
+#include "editor/viewport/AgentCharacters.h"
+
+#include "export/character/AgentVariation.h"
+#include "export/character/CharacterLibrary.h"
+
+#include <QDebug>
+
+#include <algorithm>
+
+namespace throng::editor {
+
+namespace {
+
+// What the characters depend on: each type's kind, character, clips and looks.
+std::string signatureOf(const sim::Scene& scene, const std::string& sceneDirectory)
+{
+    std::string s = sceneDirectory;
+    for (const sim::AgentType& t : scene.agentTypes) {
+        s += '\n' + std::to_string(int(t.kind)) + '|' + t.character + '|' + t.clips.idle + '|' + t.clips.walk + '|' +
+             t.clips.run;
+        for (const std::string& look : t.variation.looks)
+            s += '|' + look;
+    }
+    return s;
+}
+
+}  // namespace
+
+bool AgentCharacters::setScene(const sim::Scene& scene, const std::string& sceneDirectory)
+{
+    m_variations.clear();
+    for (const sim::AgentType& t : scene.agentTypes)
+        m_variations.push_back(t.variation);
+    m_handSet.clear();
+    for (const sim::Agent& a : scene.agents)
+        if (a.look >= 0 || a.heightScale > 0.0f)
+            m_handSet.emplace(a.id, a);
+    m_seed = scene.settings.seed;
+    m_cachedFor.clear();
+    m_looks.clear();
+
+    const std::string signature = signatureOf(scene, sceneDirectory);
+    if (signature == m_signature && m_looksOfType.size() == scene.agentTypes.size())
+        return false;
+    m_signature = signature;
+    m_tables.clear();
+    m_problems.clear();
+    m_looksOfType.assign(scene.agentTypes.size(), {});
+    // Each type alone first: one type's missing file must not take the others' characters.
+    const std::size_t types = scene.agentTypes.size();
+    std::vector<bool> resolvable(types, false);
+    for (std::size_t t = 0; t < types; ++t) {
+        std::vector<bool> only(types, false);
+        only[t] = true;
+        exporting::CharacterLibrary probe;
+        const std::string error = probe.resolve(scene, sceneDirectory, only);
+        resolvable[t] = error.empty();
+        if (!error.empty())
+            m_problems += (m_problems.empty() ? "" : "\n") + error;
+    }
+    exporting::CharacterLibrary library;
+    if (const std::string error = library.resolve(scene, sceneDirectory, resolvable); !error.empty()) {
+        m_problems += (m_problems.empty() ? "" : "\n") + error;
+        return true;
+    }
+    for (std::size_t c = 0; c < library.characterCount(); ++c)
+        m_tables.push_back(buildPoseTable(library.character(c)));
+    for (std::size_t t = 0; t < types; ++t)
+        if (resolvable[t])
+            for (std::size_t c : library.looksOf(t))
+                m_looksOfType[t].push_back(int(c));
+    if (!m_problems.empty())
+        qWarning().noquote() << "throng: these agent types are drawn as glyphs:" << QString::fromStdString(m_problems);
+    return true;
+}
+
+const std::vector<AgentCharacters::Look>& AgentCharacters::looksFor(std::span<const sim::AgentInfo> agents)
+{
+    const bool same = agents.size() == m_cachedFor.size() &&
+                      std::equal(agents.begin(), agents.end(), m_cachedFor.begin(), [](const auto& a, const auto& b) {
+                          return a.id == b.id && a.typeIndex == b.typeIndex;
+                      });
+    if (same)
+        return m_looks;
+    m_cachedFor.assign(agents.begin(), agents.end());
+    m_looks.assign(agents.size(), Look{});
+    for (std::size_t i = 0; i < agents.size(); ++i) {
+        const std::size_t type = agents[i].typeIndex;
+        if (type >= m_looksOfType.size() || m_looksOfType[type].empty())
+            continue;
+        const std::vector<int>& looks = m_looksOfType[type];
+        // As GltfExporter draws and overrides each agent's variation.
+        exporting::AgentVariation v = exporting::drawVariation(m_variations[type], m_seed, agents[i].id, looks.size());
+        if (const auto it = m_handSet.find(agents[i].id); it != m_handSet.end())
+            exporting::applyHandSetVariation(v, it->second, looks.size(), m_variations[type].tints.size());
+        m_looks[i] = {looks[std::min(v.look, looks.size() - 1)], v.heightScale};
+    }
+    return m_looks;
+}
+
+void AgentCharacters::posesFor(std::span<const sim::AgentFrame> frames, std::span<const sim::AgentInfo> agents,
+                               std::vector<AgentPose>& poses)
+{
+    const std::vector<Look>& looks = looksFor(agents);
+    poses.resize(frames.size());
+    for (std::size_t i = 0; i < frames.size(); ++i) {
+        const Look& look = looks[i];
+        poses[i] = {look.character, 0, look.heightScale};
+        if (look.character >= 0)
+            poses[i].pose = m_tables[std::size_t(look.character)].poseFor(frames[i].clip, frames[i].phase);
+    }
+}
+
+}  // namespace throng::editor

@@ -1,0 +1,52 @@
+#pragma once
+// The characters the viewport dresses agents in, as export resolves them: each agent
+// type's character and looks (CharacterLibrary), skinned into pose tables, and per agent
+// the look and height scale export would give it. Types whose character cannot be
+// resolved keep the glyph. CPU data only, no GL; rebuilt only when the types change.
+
+#include "editor/viewport/AgentPose.h"
+#include "editor/viewport/PoseTable.h"
+#include "simcore/scene/Scene.h"
+#include "simcore/world/FrameCache.h"
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+namespace throng::editor {
+
+class AgentCharacters {
+public:
+    // `sceneDirectory` resolves character files named relative to the scene. Returns
+    // true when the pose tables changed (the renderer must upload them again).
+    bool setScene(const sim::Scene& scene, const std::string& sceneDirectory);
+
+    const std::vector<PoseTable>& poseTables() const { return m_tables; }
+    // Why some types keep the glyph; empty when every type has its character.
+    const std::string& problems() const { return m_problems; }
+
+    // One pose per agent of `frames`/`agents` (same length), in order.
+    void posesFor(std::span<const sim::AgentFrame> frames, std::span<const sim::AgentInfo> agents,
+                  std::vector<AgentPose>& poses);
+
+private:
+    struct Look {
+        int character = -1;
+        float heightScale = 1.0f;
+    };
+    const std::vector<Look>& looksFor(std::span<const sim::AgentInfo> agents);
+
+    std::string m_signature;                        // what the tables were built from
+    std::vector<PoseTable> m_tables;                // by character of the library
+    std::vector<std::vector<int>> m_looksOfType;    // type -> characters; empty = unresolved
+    std::vector<sim::Variation> m_variations;       // by type index
+    std::unordered_map<std::uint32_t, sim::Agent> m_handSet;  // placed agents with a hand-set look or height
+    std::uint64_t m_seed = 1;
+    std::string m_problems;
+    std::vector<sim::AgentInfo> m_cachedFor;
+    std::vector<Look> m_looks;
+};
+
+}  // namespace throng::editor

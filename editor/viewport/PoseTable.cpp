@@ -1,0 +1,76 @@
+#include "editor/viewport/PoseTable.h"
+
+#include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/mat4x4.hpp>
+
+#include <cmath>
+
+namespace throng::editor {
+
+namespace {
+
+int sampleOf(float phase, int samples)
+{
+    const float wrapped = phase - std::floor(phase);
+    return int(std::lround(double(wrapped) * samples)) % samples;
+}
+
+}  // namespace
+
+int PoseTable::poseFor(sim::Clip clip, float phase) const
+{
+    switch (clip) {
+    case sim::Clip::Run: return runPose(sampleOf(phase, kRunPoses));
+    case sim::Clip::Walk: return walkPose(sampleOf(phase, kWalkPoses));
+    case sim::Clip::Idle: break;
+    }
+    return hasIdle ? 0 : walkPose(sampleOf(phase, kWalkPoses));
+}
+
+void skinMesh(const exporting::Character& character, const exporting::Pose& pose, std::vector<glm::vec3>& positions,
+              std::vector<glm::vec3>& normals)
+{
+    const exporting::CharacterMesh& mesh = character.mesh;
+    const std::vector<glm::mat4> globals = exporting::jointGlobalTransforms(character, pose);
+    std::vector<glm::mat4> skin(globals.size());
+    for (std::size_t j = 0; j < globals.size(); ++j)
+        skin[j] = globals[j] * mesh.inverseBindMatrices[j];
+    positions.resize(mesh.positions.size());
+    normals.resize(mesh.positions.size());
+    for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
+        glm::mat4 m(0.0f);
+        for (int k = 0; k < 4; ++k)
+            if (mesh.weights[v][k] > 0.0f)
+                m += mesh.weights[v][k] * skin[mesh.joints[v][std::size_t(k)]];
+        positions[v] = glm::vec3(m * glm::vec4(mesh.positions[v], 1.0f));
+        // Joints carry rotation and uniform scale only: the upper 3 x 3 turns normals too.
+        const glm::vec3 n = glm::mat3(m) * mesh.normals[v];
+        const float length = glm::length(n);
+        normals[v] = length > 0.0f ? n / length : mesh.normals[v];
+    }
+}
+
+PoseTable buildPoseTable(const exporting::Character& character)
+{
+    PoseTable table;
+    table.vertexCount = character.mesh.positions.size();
+    table.indices = character.mesh.indices;
+    table.hasIdle = character.hasIdle;
+    table.positions.reserve(table.vertexCount * PoseTable::kPoseCount);
+    table.normals.reserve(table.vertexCount * PoseTable::kPoseCount);
+    std::vector<glm::vec3> p, n;
+    auto add = [&](const exporting::Pose& pose) {
+        skinMesh(character, pose, p, n);
+        table.positions.insert(table.positions.end(), p.begin(), p.end());
+        table.normals.insert(table.normals.end(), n.begin(), n.end());
+    };
+    add(exporting::sampleClip(character.idle, 0.0));
+    for (int k = 0; k < PoseTable::kWalkPoses; ++k)
+        add(exporting::sampleClip(character.walk, double(k) / PoseTable::kWalkPoses));
+    for (int k = 0; k < PoseTable::kRunPoses; ++k)
+        add(exporting::sampleClip(character.run, double(k) / PoseTable::kRunPoses));
+    return table;
+}
+
+}  // namespace throng::editor

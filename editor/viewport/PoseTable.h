@@ -1,0 +1,40 @@
+#pragma once
+// One character's mesh skinned on the CPU into a few static poses (the idle pose, then
+// walk and run poses evenly over their cycles), so the viewport draws a posed crowd as
+// instanced static meshes. Plain data, no GL; never knows which agent wears which pose.
+
+#include "export/character/Character.h"
+#include "simcore/world/FrameCache.h"
+
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace throng::editor {
+
+struct PoseTable {
+    static constexpr int kWalkPoses = 8;
+    static constexpr int kRunPoses = 8;
+    static constexpr int kPoseCount = 1 + kWalkPoses + kRunPoses;  // idle, walk 0..7, run 0..7
+
+    std::size_t vertexCount = 0;               // vertices of one pose
+    std::vector<glm::vec3> positions;          // pose-major: pose p's vertex v at p * vertexCount + v, m
+    std::vector<glm::vec3> normals;            // unit length, same layout
+    std::vector<std::uint32_t> indices;        // the mesh's triangles, into one pose's vertices
+    bool hasIdle = true;                       // false: a stopped agent holds the walk (wheels, wings)
+
+    // The pose an agent shows for its recorded clip and gait phase (cycles; wraps).
+    int poseFor(sim::Clip clip, float phase) const;
+    // Pose index of walk sample k (0..kWalkPoses-1) and run sample k.
+    static int walkPose(int k) { return 1 + k; }
+    static int runPose(int k) { return 1 + kWalkPoses + k; }
+};
+
+// Linear blend skinning of `character`'s mesh in `pose`, in the character's space.
+void skinMesh(const exporting::Character& character, const exporting::Pose& pose, std::vector<glm::vec3>& positions,
+              std::vector<glm::vec3>& normals);
+// The idle pose, then walk pose k = sampleClip(walk, k / kWalkPoses), then run likewise.
+PoseTable buildPoseTable(const exporting::Character& character);
+
+}  // namespace throng::editor

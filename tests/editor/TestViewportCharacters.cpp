@@ -1,0 +1,336 @@
+// Agents as characters in the 3D view, as a user sees them: a walker stands as a figure
+// of its character's height in its tint, differs from its glyph, moves its legs from one
+// recorded phase to another; a type without a character keeps its glyph; a crowd seen
+// close up shows every agent, near ones as characters.
+#include "EditorTestSupport.h"
+#include "TestRegistry.h"
+
+#include "editor/viewport/PoseTable.h"
+#include "export/character/BuiltinCharacters.h"
+#include "simcore/world/FrameCache.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QTest>
+#include <QWheelEvent>
+
+#include <algorithm>
+#include <cmath>
+
+using namespace throng;
+using namespace throng::editor;
+using namespace throng::editor::test;
+
+namespace {
+
+const QSize kSize{640, 480};
+const glm::vec3 kTint{0.9f, 0.35f, 0.1f};
+
+// One walker at the origin facing east (seen from the side by the default 3D camera, which
+// looks north), framed by two walls; its type wears the man in one orange tint at height 1.
+QByteArray walkerYaml(const char* character = "man")
+{
+    return QStringLiteral("throng: 1\n"
+                          "settings: {bounds: {min: [-6, -6], max: [6, 6]}}\n"
+                          "agent_types:\n"
+                          "  - {name: walker, radius: 0.3, character: %1,\n"
+                          "     variation: {tints: [[0.9, 0.35, 0.1]], height: [1, 1]}}\n"
+                          "agents:\n"
+                          "  - {type: walker, position: [0, 0], heading: 0}\n"
+                          "walls:\n"
+                          "  - {points: [[-3, -2], [3, -2]]}\n"
+                          "  - {points: [[-3, 2], [3, 2]]}\n")
+        .arg(character)
+        .toUtf8();
+}
+
+// The walker's pixels: orange, lit or in shade (ground, grid, walls and background are grey).
+bool isWalker(QRgb p)
+{
+    return qRed(p) - qBlue(p) > 60 && qRed(p) > qGreen(p) + 25;
+}
+
+struct Silhouette {
+    QRect box;
+    int pixels = 0;
+    QRgb brightest = 0;
+    int legsWidth = 0;  // width of the lowest quarter of the box, px
+};
+
+Silhouette silhouetteOf(const QImage& image)
+{
+    Silhouette s;
+    int left = image.width(), right = -1, top = image.height(), bottom = -1, best = -1;
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x) {
+            const QRgb p = image.pixel(x, y);
+            if (!isWalker(p))
+                continue;
+            ++s.pixels;
+            left = std::min(left, x);
+            right = std::max(right, x);
+            top = std::min(top, y);
+            bottom = std::max(bottom, y);
+            if (qRed(p) > best) {
+                best = qRed(p);
+                s.brightest = p;
+            }
+        }
+    if (s.pixels == 0)
+        return s;
+    s.box = QRect(QPoint(left, top), QPoint(right, bottom));
+    int legsLeft = right, legsRight = left;
+    for (int y = bottom - s.box.height() / 4; y <= bottom; ++y)
+        for (int x = left; x <= right; ++x)
+            if (isWalker(image.pixel(x, y))) {
+                legsLeft = std::min(legsLeft, x);
+                legsRight = std::max(legsRight, x);
+            }
+    s.legsWidth = legsRight - legsLeft + 1;
+    return s;
+}
+
+// Share of pixels covered by the walker in one image and not the other, of those in either.
+double difference(const QImage& a, const QImage& b)
+{
+    int either = 0, one = 0;
+    for (int y = 0; y < a.height(); ++y)
+        for (int x = 0; x < a.width(); ++x) {
+            const bool inA = isWalker(a.pixel(x, y)), inB = isWalker(b.pixel(x, y));
+            either += inA || inB;
+            one += inA != inB;
+        }
+    return either ? double(one) / double(either) : 0.0;
+}
+
+// The man's height standing in his idle pose, m.
+float manHeightM()
+{
+    const PoseTable table = buildPoseTable(*exporting::makeBuiltinCharacter("man"));
+    float top = 0.0f;
+    for (std::size_t v = 0; v < table.vertexCount; ++v)
+        top = std::max(top, table.positions[v].y);
+    return top;
+}
+
+// A recording of the walker: one frame per phase, walking east on the spot.
+sim::FrameCache walkingFrames(std::initializer_list<float> phases)
+{
+    sim::FrameCache cache;
+    cache.reset({sim::AgentInfo{1, 0}}, 24.0f);
+    for (float phase : phases) {
+        sim::AgentFrame f;
+        f.speed = 1.3f;
+        f.phase = phase;
+        f.clip = sim::Clip::Walk;
+        cache.append({&f, 1});
+    }
+    return cache;
+}
+
+void zoomIn(Viewport& viewport, int angleDelta)
+{
+    const QPointF centre(viewport.width() / 2.0, viewport.height() / 2.0);
+    QWheelEvent event(centre, viewport.mapToGlobal(centre), QPoint(), QPoint(0, angleDelta), Qt::NoButton,
+                      Qt::NoModifier, Qt::NoScrollPhase, false);
+    QApplication::sendEvent(&viewport, &event);
+}
+
+QString describe(const Silhouette& s)
+{
+    return QString("%1 x %2 px at (%3, %4), %5 pixels, legs %6 px wide")
+        .arg(s.box.width())
+        .arg(s.box.height())
+        .arg(s.box.left())
+        .arg(s.box.top())
+        .arg(s.pixels)
+        .arg(s.legsWidth);
+}
+
+}  // namespace
+
+class TestViewportCharacters : public QObject {
+    Q_OBJECT
+
+private:
+    QTemporaryDir m_dir;
+
+    void saveForInspection(const QImage& image, const QString& name)
+    {
+        // THRONG_TEST_IMAGES=folder keeps the renders to look at.
+        const QString folder = qEnvironmentVariable("THRONG_TEST_IMAGES");
+        if (!folder.isEmpty())
+            image.save(folder + "/" + name + ".png");
+    }
+
+private slots:
+    void initTestCase()
+    {
+        QStandardPaths::setTestModeEnabled(true);
+        QCoreApplication::setOrganizationName("ThrongTests");
+        QCoreApplication::setApplicationName("TestViewportCharacters");
+        QSettings().remove("viewport/agentsAs");
+    }
+
+    void viewMenuChoosesCharactersOrGlyphsAndRemembers()
+    {
+        {
+            MainWindow window;
+            QVERIFY(window.viewport().agentsAsCharacters());  // characters unless chosen otherwise
+            auto* glyphs = window.findChild<QAction*>("agentsAsGlyphsAction");
+            auto* characters = window.findChild<QAction*>("agentsAsCharactersAction");
+            QVERIFY(glyphs && characters);
+            QVERIFY(characters->isChecked());
+            QVERIFY(!glyphs->toolTip().isEmpty() && !characters->toolTip().isEmpty());
+            glyphs->trigger();
+            QVERIFY(!window.viewport().agentsAsCharacters());
+        }
+        {
+            MainWindow reopened;
+            QVERIFY(!reopened.viewport().agentsAsCharacters());
+            QVERIFY(reopened.findChild<QAction*>("agentsAsGlyphsAction")->isChecked());
+            reopened.findChild<QAction*>("agentsAsCharactersAction")->trigger();
+            QVERIFY(reopened.viewport().agentsAsCharacters());
+        }
+        QCOMPARE(QSettings().value("viewport/agentsAs").toString(), QString("characters"));
+    }
+
+    void walkerStandsAsItsCharacterInItsTint()
+    {
+        Viewport viewport;
+        viewport.setAgentsAsCharacters(true);
+        viewport.setViewMode(ViewMode::Orbit);
+        viewport.setScene(loadTestScene(m_dir, walkerYaml()));
+        const QImage image = renderOffscreen(viewport, kSize);
+        QVERIFY2(viewport.isGlReady(), qPrintable(viewport.glProblem()));
+        saveForInspection(image, "character");
+        QCOMPARE(viewport.charactersDrawn(), 1);
+        const Silhouette s = silhouetteOf(image);
+        QVERIFY2(s.pixels > 200, qPrintable(describe(s)));
+
+        // As tall on screen as the man's height where he stands, feet on the ground.
+        const QPointF feet = viewport.worldToPixel({0.0f, 0.0f, 0.0f});
+        const QPointF head = viewport.worldToPixel({0.0f, manHeightM(), 0.0f});
+        const double expected = feet.y() - head.y();
+        QVERIFY2(std::abs(s.box.height() - expected) < 0.15 * expected,
+                 qPrintable(describe(s) + QString(", expected %1 px tall").arg(expected)));
+        QVERIFY2(std::abs(s.box.bottom() - feet.y()) < 0.1 * expected,
+                 qPrintable(describe(s) + QString(", feet at y %1").arg(feet.y())));
+        // A standing figure: taller than wide.
+        QVERIFY2(s.box.height() > 1.5 * s.box.width(), qPrintable(describe(s)));
+
+        // Its lit side in the tint, shaded: the channels keep the tint's proportions.
+        const double r = qRed(s.brightest);
+        QVERIFY2(r > 0.8 * 255 * kTint.r, qPrintable(editor::test::describe(s.brightest)));
+        QVERIFY2(std::abs(qGreen(s.brightest) / r - kTint.g / kTint.r) < 0.06 &&
+                     std::abs(qBlue(s.brightest) / r - kTint.b / kTint.r) < 0.06,
+                 qPrintable(editor::test::describe(s.brightest) + " is not the tint (0.9, 0.35, 0.1) shaded"));
+    }
+
+    void glyphsChosenDrawTheGlyphInstead()
+    {
+        Viewport viewport;
+        viewport.setViewMode(ViewMode::Orbit);
+        viewport.setAgentsAsCharacters(true);
+        viewport.setScene(loadTestScene(m_dir, walkerYaml()));
+        const QImage character = renderOffscreen(viewport, kSize);
+        viewport.setAgentsAsCharacters(false);
+        const QImage glyph = viewport.grabFramebuffer();
+        saveForInspection(glyph, "glyph");
+        QCOMPARE(viewport.charactersDrawn(), 0);
+        const Silhouette g = silhouetteOf(glyph);
+        QVERIFY2(g.pixels > 100, qPrintable(describe(g)));  // the glyph is there, in the tint too
+        const double d = difference(character, glyph);
+        QVERIFY2(d > 0.3, qPrintable(QString("the character and the glyph differ in %1 of their pixels").arg(d)));
+    }
+
+    void legsMoveWithTheRecordedPhase()
+    {
+        Viewport viewport;
+        viewport.setViewMode(ViewMode::Orbit);
+        viewport.setAgentsAsCharacters(true);
+        viewport.setScene(loadTestScene(m_dir, walkerYaml()));
+        renderOffscreen(viewport, kSize);
+        const sim::FrameCache cache = walkingFrames({0.0f, 0.25f});
+        viewport.showFrame(cache, 0);
+        const QImage stride = viewport.grabFramebuffer();
+        viewport.showFrame(cache, 1);
+        const QImage passing = viewport.grabFramebuffer();
+        saveForInspection(stride, "phase0");
+        saveForInspection(passing, "phase25");
+        const Silhouette a = silhouetteOf(stride), b = silhouetteOf(passing);
+        QVERIFY2(a.pixels > 200 && b.pixels > 200, qPrintable(describe(a) + " / " + describe(b)));
+        // A quarter cycle apart the feet are apart and then together (or the reverse).
+        const double wider = std::max(a.legsWidth, b.legsWidth), narrower = std::min(a.legsWidth, b.legsWidth);
+        QVERIFY2(wider > 1.3 * narrower, qPrintable(describe(a) + " / " + describe(b)));
+        QVERIFY2(difference(stride, passing) > 0.1, qPrintable(QString::number(difference(stride, passing))));
+    }
+
+    void typeWithoutItsCharacterKeepsTheGlyph()
+    {
+        // Built in code: a scene file naming a missing character would not load at all.
+        sim::Scene scene = loadTestScene(m_dir, walkerYaml());
+        scene.agentTypes[0].character = "no_such_character.glb";
+        Viewport viewport;
+        viewport.setViewMode(ViewMode::Orbit);
+        viewport.setAgentsAsCharacters(true);
+        viewport.setScene(scene);
+        const QImage image = renderOffscreen(viewport, kSize);
+        QCOMPARE(viewport.charactersDrawn(), 0);
+        const QRgb body = pixelAt(image, viewport, viewport.worldToPixel({0.0f, 0.8f, 0.0f}));
+        QVERIFY2(isWalker(body), qPrintable(editor::test::describe(body) + " where the walker's glyph should stand"));
+    }
+
+    void crowdCloseUpShowsEveryAgentNearOnesAsCharacters()
+    {
+        QByteArray yaml = "throng: 1\n"
+                          "settings: {bounds: {min: [-75, -50], max: [75, 50]}}\n"
+                          "agent_types:\n"
+                          "  - {name: walker, radius: 0.3, variation: {tints: [[0.9, 0.35, 0.1]]}}\n"
+                          "agents:\n";
+        std::vector<glm::vec3> at;
+        // 24 x 16 walkers 6 m apart: close up, near ones large and far ones a few pixels.
+        for (int z = -8; z < 8; ++z)
+            for (int x = -12; x < 12; ++x) {
+                at.push_back({6.0f * float(x) + 3.0f, 0.0f, 6.0f * float(z) + 3.0f});
+                yaml += QStringLiteral("  - {type: walker, position: [%1, %2], heading: %3}\n")
+                            .arg(at.back().x)
+                            .arg(at.back().z)
+                            .arg((x * 37 + z * 11) % 360)
+                            .toUtf8();
+            }
+        Viewport viewport;
+        viewport.setViewMode(ViewMode::Orbit);
+        viewport.setAgentsAsCharacters(true);
+        viewport.setScene(loadTestScene(m_dir, yaml));
+        renderOffscreen(viewport, kSize);
+        viewport.frameAll();
+        zoomIn(viewport, 1000);
+        const QImage image = viewport.grabFramebuffer();
+        saveForInspection(image, "crowd");
+        const std::array<int, kAgentDetailLevels> drawn = viewport.agentsDrawnByDetail();
+        QVERIFY2(viewport.charactersDrawn() >= 10, qPrintable(QString::number(viewport.charactersDrawn())));
+        QVERIFY2(drawn[2] > 0, "no agent far enough for an impostor: the view does not test both");
+        QCOMPARE(viewport.charactersDrawn(), drawn[0] + drawn[1]);  // every near agent as its character
+
+        // Every agent whose waist projects inside the image shows there.
+        int inside = 0;
+        for (const glm::vec3& p : at) {
+            const QPointF pos = viewport.worldToPixel(p + glm::vec3(0.0f, 0.9f, 0.0f));
+            if (pos.x() < 4 || pos.y() < 4 || pos.x() > kSize.width() - 5 || pos.y() > kSize.height() - 5)
+                continue;
+            ++inside;
+            bool found = false;
+            for (int dy = -2; dy <= 2 && !found; ++dy)
+                for (int dx = -2; dx <= 2 && !found; ++dx)
+                    found = isWalker(pixelAt(image, viewport, pos + QPointF(dx, dy)));
+            QVERIFY2(found, qPrintable(QString("no agent at (%1, %2)").arg(pos.x()).arg(pos.y())));
+        }
+        QVERIFY2(inside > 80, qPrintable(QString::number(inside)));
+    }
+};
+
+THRONG_REGISTER_TEST(TestViewportCharacters)
+#include "TestViewportCharacters.moc"
