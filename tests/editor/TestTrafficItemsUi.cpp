@@ -12,6 +12,7 @@
 #include "editor/panels/OutlinerPanel.h"
 #include "editor/simulation/SimulationController.h"
 #include "editor/viewport/Viewport.h"
+#include "editor/viewport/ViewportPalette.h"
 
 #include <glm/geometric.hpp>
 
@@ -22,6 +23,7 @@
 #include <QStandardPaths>
 #include <QTest>
 
+#include <cmath>
 #include <optional>
 
 using namespace throng;
@@ -87,6 +89,17 @@ std::optional<glm::vec2> startOf(MainWindow& window, sim::AgentId id)
         if (cache.agents()[k].id == id)
             return glm::vec2(cache.at(0, k).position.x, cache.at(0, k).position.z);
     return std::nullopt;
+}
+
+// Of `points` on the ground, how many show the selection colour in the shown viewport.
+int selectionPixels(MainWindow& window, const std::vector<glm::vec2>& points)
+{
+    const QImage image = window.viewport().grabFramebuffer();
+    int hits = 0;
+    for (glm::vec2 p : points)
+        hits += sameColour(pixelAt(image, window.viewport(), window.viewport().worldToPixel({p.x, 0.0f, p.y})),
+                           palette::kSelection, 40);
+    return hits;
 }
 
 }  // namespace
@@ -241,6 +254,28 @@ private slots:
         undo(window);
         QCOMPARE(sceneYaml(window), before);
         QTRY_COMPARE(window.viewport().agentCount(), shown);
+    }
+
+    void aSelectedCrosswalkAndVehicleAreOutlined()
+    {
+        MainWindow window;
+        QVERIFY(showWithYaml(window, m_dir, "outline.yaml", trafficScene()));
+        // Zebra's band is 3 m wide round x = 12: the outline runs 0.25 m outside, at x = 13.75.
+        std::vector<glm::vec2> edge;
+        for (float z = 21.0f; z <= 28.0f; z += 1.0f)
+            edge.emplace_back(13.75f, z);
+        // Car 50 (radius 1.1) starts at (-20, -27): its ring has a radius of 1.35 m.
+        std::vector<glm::vec2> ring;
+        for (int k = 0; k < 24; ++k)
+            ring.push_back(glm::vec2(-20, -27) + 1.35f * glm::vec2(std::cos(k * 0.2618f), std::sin(k * 0.2618f)));
+        QTest::qWait(50);
+        QCOMPARE(selectionPixels(window, edge), 0);
+        QCOMPARE(selectionPixels(window, ring), 0);
+        selectInOutliner(window, {{ItemKind::Crosswalk, 0}, {ItemKind::Vehicle, 1}});
+        QTest::qWait(50);
+        QVERIFY2(selectionPixels(window, edge) >= 6, qPrintable(QString::number(selectionPixels(window, edge))));
+        // The car (4.2 m long) is drawn over the ring's front and back.
+        QVERIFY2(selectionPixels(window, ring) >= 10, qPrintable(QString::number(selectionPixels(window, ring))));
     }
 
     void messagesAboutCrosswalksAndVehiclesSelectThem()
