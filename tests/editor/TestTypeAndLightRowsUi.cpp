@@ -1,4 +1,4 @@
-// An agent type's look and collisions and a traffic light's stop lines in the properties
+// An agent type's look, collisions and flier rows and a traffic light's stop lines in the properties
 // panel, driven like a user: looks typed as a list, a tint picked in the colour dialog,
 // tints added and removed, an inverted range and an unknown character refused, layers
 // set; a light's stop lines moved along their lane, put on another lane, turned into a
@@ -174,6 +174,46 @@ private slots:
         QCOMPARE(field<QLineEdit>(window, "looks")->text(), QString("(mixed)"));
         QCOMPARE(field<QLineEdit>(window, "collidesWith")->text(), QString("(mixed)"));
         for (int k = 0; k < 7; ++k)
+            undo(window);
+        QCOMPARE(sceneYaml(window), before);
+    }
+
+    void fliersShowTheirMinSpeedBankingAndAltitude()
+    {
+        QByteArray yaml = tablesScene();
+        yaml.replace("  - {name: runner, max_speed: 3, max_force: 6}\n",
+                     "  - {name: runner, max_speed: 3, max_force: 6}\n"
+                     "  - {name: gull, kind: flier, max_speed: 8, max_force: 20}\n");
+        yaml.replace("groups:\n", "groups:\n  - {name: flock, type: gull, count: 3, circle: {center: [10, -20], radius: 2}, "
+                                  "altitude: [5, 10]}\n");
+        MainWindow window;
+        QVERIFY(showWithYaml(window, m_dir, "gulls.yaml", yaml));
+        const QByteArray before = sceneYaml(window);
+        const sim::Scene& scene = window.document().scene();
+        QWidget* panel = window.findChild<QWidget*>("properties");
+        selectInOutliner(window, {{ItemKind::AgentType, 0}});  // walker: no flier rows
+        QVERIFY(!field<QDoubleSpinBox>(window, "banking")->isVisibleTo(panel));
+        QVERIFY(!field<QDoubleSpinBox>(window, "minSpeed")->isVisibleTo(panel));
+
+        selectInOutliner(window, {{ItemKind::AgentType, 2}});  // gull
+        QVERIFY(field<QDoubleSpinBox>(window, "banking")->isVisibleTo(panel));
+        typeInto(window, field<QDoubleSpinBox>(window, "minSpeed"), "9");  // above max speed 8
+        QCOMPARE(scene.agentTypes[2].minSpeed, 0.0f);
+        QVERIFY2(lastMessage(window).contains("cannot exceed"), qPrintable(lastMessage(window)));
+        typeInto(window, field<QDoubleSpinBox>(window, "minSpeed"), "2");
+        typeInto(window, field<QDoubleSpinBox>(window, "banking"), "0.2");
+        QCOMPARE(scene.agentTypes[2].minSpeed, 2.0f);
+        QCOMPARE(scene.agentTypes[2].banking, 0.2f);
+
+        selectInOutliner(window, {{ItemKind::Group, 0}});  // the flock
+        QCOMPARE(field<QDoubleSpinBox>(window, "altitudeMin")->value(), 5.0);
+        typeInto(window, field<QDoubleSpinBox>(window, "altitudeMax"), "4");  // below the minimum
+        QCOMPARE(scene.groups[0].altitudeM, glm::vec2(5, 10));
+        QVERIFY2(lastMessage(window).contains("cannot be below"), qPrintable(lastMessage(window)));
+        typeInto(window, field<QDoubleSpinBox>(window, "altitudeMax"), "12");
+        QCOMPARE(scene.groups[0].altitudeM, glm::vec2(5, 12));
+        QCOMPARE(window.document().undoStack()->count(), 3);
+        for (int k = 0; k < 3; ++k)
             undo(window);
         QCOMPARE(sceneYaml(window), before);
     }
