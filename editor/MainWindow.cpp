@@ -143,13 +143,11 @@ void MainWindow::createEditMenu()
     QAction* remove = menu->addAction(tr("&Delete"));
     remove->setObjectName("deleteAction");
     remove->setShortcut(QKeySequence::Delete);
-    remove->setToolTip(tr("Delete the selected items (agents, paths, goals, lanes, lights, heroes, groups, ...)"));
+    remove->setToolTip(tr("Delete the selected items (agents, paths, goals, lanes, crosswalks, vehicles, lights, brains, ...)"));
     connect(remove, &QAction::triggered, this, [this] {
         const Selection& selection = m_document.selection();
         auto* command = new DeleteItemsCommand(m_document, selection);
-        QString why = command->refusal();
-        if (command->isEmpty() && !selection.empty() && selection.front().kind == ItemKind::Brain)
-            why = tr("Brains are deleted in the brain editor (View > Brains, Ctrl+B), which knows who runs them.");
+        const QString why = command->refusal();
         if (command->isEmpty() || !why.isEmpty()) {
             if (!why.isEmpty()) {
                 m_messages->showNote(why);

@@ -37,6 +37,8 @@ std::size_t itemCount(const sim::Scene& s, ItemKind kind)
     case ItemKind::FlowStroke: return s.flowStrokes.size();
     case ItemKind::Hero: return s.heroes.size();
     case ItemKind::Brain: return s.brains.size();
+    case ItemKind::Crosswalk: return s.crosswalks.size();
+    case ItemKind::Vehicle: return s.vehicles.size();
     }
     return 0;
 }
@@ -57,6 +59,8 @@ QString kindTitle(ItemKind kind)
     case ItemKind::FlowStroke: return tr("Flow Strokes");
     case ItemKind::Hero: return tr("Heroes");
     case ItemKind::Brain: return tr("Brains");
+    case ItemKind::Crosswalk: return tr("Crosswalks");
+    case ItemKind::Vehicle: return tr("Vehicles");
     }
     return {};
 }
@@ -82,6 +86,14 @@ QString itemLabel(const sim::Scene& s, SceneItem item)
                                         : QString();
     case ItemKind::Hero: return named(s.heroes, i, tr("Hero"));
     case ItemKind::Brain: return named(s.brains, i, tr("Brain"));
+    case ItemKind::Crosswalk: return named(s.crosswalks, i, tr("Crosswalk"));
+    case ItemKind::Vehicle:
+        if (i >= s.vehicles.size())
+            return QString();
+        // Vehicles carry no name: the number, type and lane tell them apart.
+        return tr("Vehicle %1 (%2 on %3)")
+            .arg(i + 1)
+            .arg(QString::fromStdString(s.vehicles[i].type), QString::fromStdString(s.vehicles[i].lane));
     }
     return {};
 }
@@ -93,7 +105,8 @@ std::optional<SceneItem> itemForKey(const std::string& key)
         {"paths", ItemKind::Path},             {"walls", ItemKind::Wall},     {"obstacles", ItemKind::Obstacle},
         {"goals", ItemKind::Goal},             {"traffic_lights", ItemKind::TrafficLight},
         {"lanes", ItemKind::Lane},             {"heroes", ItemKind::Hero},    {"brains", ItemKind::Brain},
-        {"flow_strokes", ItemKind::FlowStroke}};
+        {"flow_strokes", ItemKind::FlowStroke}, {"crosswalks", ItemKind::Crosswalk},
+        {"vehicles", ItemKind::Vehicle}};
     if (key.rfind("settings", 0) == 0)
         return SceneItem{ItemKind::Settings, 0};
     const std::size_t open = key.find('['), close = key.find(']');

@@ -14,8 +14,11 @@
 namespace throng::editor {
 
 enum class ItemKind {
-    Settings, AgentType, Group, Agent, Path, Wall, Obstacle, Goal, TrafficLight, Lane, FlowStroke, Hero, Brain
+    Settings, AgentType, Group, Agent, Path, Wall, Obstacle, Goal, TrafficLight, Lane, FlowStroke, Hero, Brain,
+    Crosswalk, Vehicle
 };
+// How many kinds there are (the last kind + 1).
+inline constexpr int kItemKindCount = int(ItemKind::Vehicle) + 1;
 
 struct SceneItem {
     ItemKind kind = ItemKind::Settings;

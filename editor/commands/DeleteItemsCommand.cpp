@@ -44,7 +44,7 @@ void restoreAll(std::vector<Item>& list, const std::vector<std::pair<std::size_t
 
 bool DeleteItemsCommand::deletable(ItemKind kind)
 {
-    return kind != ItemKind::Settings && kind != ItemKind::Brain;
+    return kind != ItemKind::Settings;
 }
 
 template <class Scene, class F>
@@ -61,6 +61,9 @@ void DeleteItemsCommand::forEachList(Scene& s, F f)
     f(s.lanes, m_lanes, ItemKind::Lane);
     f(s.flowStrokes, m_strokes, ItemKind::FlowStroke);
     f(s.heroes, m_heroes, ItemKind::Hero);
+    f(s.crosswalks, m_crosswalks, ItemKind::Crosswalk);
+    f(s.vehicles, m_vehicles, ItemKind::Vehicle);
+    f(s.brains, m_brains, ItemKind::Brain);
 }
 
 DeleteItemsCommand::DeleteItemsCommand(SceneDocument& document, const Selection& items) : m_document(document)
@@ -79,7 +82,7 @@ DeleteItemsCommand::DeleteItemsCommand(SceneDocument& document, const Selection&
 }
 
 // The rules, item by item, for what others refer to:
-// - A path, goal, lane or agent type still named by an item that stays (a group following
+// - A path, goal, lane, crosswalk, brain or agent type still named by an item that stays (a group following
 //   the path, agents walking to the goal, vehicles or a stop line on the lane, anything of
 //   the type) is refused, naming who uses it: clearing the reference would silently change
 //   what a whole group does far from the selection, and a vehicle or hero cannot live
@@ -98,7 +101,7 @@ void DeleteItemsCommand::checkReferences(const sim::Scene& scene, const Selectio
     QStringList problems;
     for (const SceneItem& item : items) {
         if (item.kind != ItemKind::Path && item.kind != ItemKind::Goal && item.kind != ItemKind::Lane &&
-            item.kind != ItemKind::AgentType)
+            item.kind != ItemKind::AgentType && item.kind != ItemKind::Crosswalk && item.kind != ItemKind::Brain)
             continue;
         if (item.index >= itemCount(scene, item.kind))
             continue;
@@ -124,6 +127,8 @@ void DeleteItemsCommand::checkReferences(const sim::Scene& scene, const Selectio
         ids.push_back(agent.id);
     for (const auto& [index, hero] : m_heroes)
         ids.push_back(hero.id);
+    for (const auto& [index, vehicle] : m_vehicles)
+        ids.push_back(vehicle.id);
     for (std::uint32_t id : ids)
         for (const LeaderUse& use : leaderUses(scene, id))
             m_clearedLeaders.emplace_back(use.locate, id);

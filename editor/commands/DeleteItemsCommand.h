@@ -1,6 +1,7 @@
 #pragma once
 // Deletes the selected items: placed agents, agent types, groups, paths, walls,
-// obstacles, goals, traffic lights, lanes, flow strokes and heroes. Records each removed
+// obstacles, goals, traffic lights, lanes, crosswalks, vehicles, flow strokes, heroes and
+// brains. Records each removed
 // item with its index (and every reference it changed), so undo puts the scene back bit
 // for bit. An item others still refer to by name is not deleted: refusal() says who uses
 // it. Never touches widgets or the selection.
@@ -56,7 +57,10 @@ private:
     Removed<sim::Lane> m_lanes;
     Removed<sim::FlowStroke> m_strokes;
     Removed<sim::Hero> m_heroes;
-    // Leaders cleared because the agent or hero they name is deleted, with the old id.
+    Removed<sim::Crosswalk> m_crosswalks;
+    Removed<sim::Vehicle> m_vehicles;
+    Removed<sim::BrainGraph> m_brains;
+    // Leaders cleared because the agent, vehicle or hero they name is deleted, with the old id.
     std::vector<std::pair<std::function<std::uint32_t&(sim::Scene&)>, std::uint32_t>> m_clearedLeaders;
 };
 

@@ -33,6 +33,7 @@ void forEachPoint(Scene& s, SceneItem item, Visit visit)
     case ItemKind::Wall: for (auto& p : s.walls[i].points) visit(p); return;
     case ItemKind::Lane: for (auto& p : s.lanes[i].points) visit(p); return;
     case ItemKind::FlowStroke: for (auto& p : s.flowStrokes[i].points) visit(p); return;
+    case ItemKind::Crosswalk: visit(s.crosswalks[i].from); visit(s.crosswalks[i].to); return;
     default: return;
     }
 }
@@ -49,7 +50,8 @@ bool MoveItemsCommand::movable(ItemKind kind)
     case ItemKind::Path:
     case ItemKind::Wall:
     case ItemKind::Lane:
-    case ItemKind::FlowStroke: return true;
+    case ItemKind::FlowStroke:
+    case ItemKind::Crosswalk: return true;
     default: return false;
     }
 }

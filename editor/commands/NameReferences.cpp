@@ -39,20 +39,33 @@ void collect(std::vector<NameUse>& out, const sim::Scene& scene, std::size_t cou
     }
 }
 
+// The stop lines whose `field` (lane or crosswalk) is `name`.
+void collectStopLines(std::vector<NameUse>& out, const sim::Scene& scene, const std::string& name,
+                      std::string sim::StopLine::*field)
+{
+    for (std::size_t l = 0; l < scene.trafficLights.size(); ++l)
+        for (std::size_t k = 0; k < scene.trafficLights[l].stopLines.size(); ++k)
+            if (scene.trafficLights[l].stopLines[k].*field == name)
+                out.push_back({[l, k, field](sim::Scene& s) -> std::string& { return s.trafficLights[l].stopLines[k].*field; },
+                               SceneItem{ItemKind::TrafficLight, l},
+                               tr("the stop line of traffic light %1").arg(itemLabel(scene, {ItemKind::TrafficLight, l}))});
+}
+
 void collectVehicles(std::vector<NameUse>& out, const sim::Scene& scene, const std::string& name, FieldOf field)
 {
     auto& readable = const_cast<sim::Scene&>(scene);
     for (std::size_t i = 0; i < scene.vehicles.size(); ++i)
         if (field(readable, i) == name)
-            out.push_back({[field, i](sim::Scene& s) -> std::string& { return field(s, i); }, std::nullopt,
-                           tr("vehicle %1").arg(i + 1)});
+            out.push_back({[field, i](sim::Scene& s) -> std::string& { return field(s, i); },
+                           SceneItem{ItemKind::Vehicle, i}, tr("vehicle %1").arg(i + 1)});
 }
 
 }  // namespace
 
 bool hasName(ItemKind kind)
 {
-    return kind != ItemKind::Settings && kind != ItemKind::Agent && kind != ItemKind::FlowStroke;
+    return kind != ItemKind::Settings && kind != ItemKind::Agent && kind != ItemKind::FlowStroke &&
+           kind != ItemKind::Vehicle;
 }
 
 std::function<std::string&(sim::Scene&)> nameLocate(SceneItem item)
@@ -69,6 +82,7 @@ std::function<std::string&(sim::Scene&)> nameLocate(SceneItem item)
     case ItemKind::Lane: return [i](sim::Scene& s) -> std::string& { return s.lanes[i].name; };
     case ItemKind::Hero: return [i](sim::Scene& s) -> std::string& { return s.heroes[i].name; };
     case ItemKind::Brain: return [i](sim::Scene& s) -> std::string& { return s.brains[i].name; };
+    case ItemKind::Crosswalk: return [i](sim::Scene& s) -> std::string& { return s.crosswalks[i].name; };
     default: return {};
     }
 }
@@ -122,17 +136,11 @@ std::vector<NameUse> nameUses(const sim::Scene& scene, ItemKind kind, const std:
         collect(out, scene, scene.agents.size(), name, ItemKind::Agent,
                 [](sim::Scene& s, std::size_t i) -> std::string& { return s.agents[i].goal; });
         break;
-    case ItemKind::Lane: {
+    case ItemKind::Lane:
         collectVehicles(out, scene, name, [](sim::Scene& s, std::size_t i) -> std::string& { return s.vehicles[i].lane; });
-        for (std::size_t l = 0; l < scene.trafficLights.size(); ++l)
-            for (std::size_t k = 0; k < scene.trafficLights[l].stopLines.size(); ++k)
-                if (scene.trafficLights[l].stopLines[k].lane == name)
-                    out.push_back({[l, k](sim::Scene& s) -> std::string& { return s.trafficLights[l].stopLines[k].lane; },
-                                   SceneItem{ItemKind::TrafficLight, l},
-                                   tr("the stop line of traffic light %1")
-                                       .arg(itemLabel(scene, {ItemKind::TrafficLight, l}))});
+        collectStopLines(out, scene, name, &sim::StopLine::lane);
         break;
-    }
+    case ItemKind::Crosswalk: collectStopLines(out, scene, name, &sim::StopLine::crosswalk); break;
     default:
         break;
     }

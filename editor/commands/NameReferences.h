@@ -18,7 +18,7 @@ namespace throng::editor {
 // One reference to a name: where the referring string lives and who holds it.
 struct NameUse {
     std::function<std::string&(sim::Scene&)> locate;
-    std::optional<SceneItem> user;  // empty for things the outliner does not list (vehicles)
+    std::optional<SceneItem> user;  // empty for things the outliner does not list
     QString who;                    // "group nw_walkers", "vehicle 3"
 };
 
@@ -29,7 +29,8 @@ std::function<std::string&(sim::Scene&)> nameLocate(SceneItem item);
 std::string nameOf(const sim::Scene& scene, SceneItem item);
 // The names every item of `kind` carries, in scene order.
 std::vector<std::string> namesOf(const sim::Scene& scene, ItemKind kind);
-// Every reference to `name` as an item of `kind` (types, brains, paths, goals, lanes).
+// Every reference to `name` as an item of `kind` (types, brains, paths, goals, lanes,
+// crosswalks).
 std::vector<NameUse> nameUses(const sim::Scene& scene, ItemKind kind, const std::string& name);
 
 // One reference to an agent id (a `leader`): the agents and groups that follow it.

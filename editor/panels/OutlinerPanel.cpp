@@ -17,8 +17,8 @@ constexpr int kGroupRole = Qt::UserRole + 2;  // agent-group rows: the group's n
 constexpr int kAgentGroups = -100;            // kKindRole of the agent-group heading and rows
 constexpr ItemKind kListed[] = {ItemKind::Settings, ItemKind::AgentType, ItemKind::Group,    ItemKind::Agent,
                                 ItemKind::Path,     ItemKind::Wall,      ItemKind::Obstacle, ItemKind::Goal,
-                                ItemKind::TrafficLight, ItemKind::Lane,  ItemKind::FlowStroke, ItemKind::Hero,
-                                ItemKind::Brain};
+                                ItemKind::TrafficLight, ItemKind::Lane,  ItemKind::Crosswalk, ItemKind::Vehicle,
+                                ItemKind::FlowStroke, ItemKind::Hero,    ItemKind::Brain};
 }  // namespace
 
 OutlinerPanel::OutlinerPanel(SceneDocument& document, QWidget* parent) : QTreeWidget(parent), m_document(document)

@@ -11,6 +11,63 @@ QString tr(const char* text)
     return QCoreApplication::translate("PropertyFields", text);
 }
 
+// Refuses a coordinate of a crosswalk's end (`to` or from, axis 0 = x, 1 = z) that would
+// put both ends on one point, which the scene check rejects.
+std::function<QString(const sim::Scene&, std::size_t, float)> crosswalkEnd(bool to, int axis)
+{
+    return [to, axis](const sim::Scene& s, std::size_t i, float value) {
+        const sim::Crosswalk& c = s.crosswalks[i];
+        glm::vec2 moved = to ? c.to : c.from;
+        moved[axis] = value;
+        if (moved != (to ? c.from : c.to))
+            return QString();
+        return tr("The ends of crosswalk %1 cannot be the same point: it stays as it is.")
+            .arg(itemLabel(s, {ItemKind::Crosswalk, i}));
+    };
+}
+
+using Refusal = std::function<QString(const sim::Scene&, std::size_t, float)>;
+using RangeOf = std::function<glm::vec2(const sim::Scene&, std::size_t)>;
+
+// Refuses the lower end of a [min, max] pair (`lower`) above its upper end, or the upper
+// end below the lower one: the scene check rejects both.
+Refusal rangeEnd(ItemKind kind, RangeOf range, bool lower)
+{
+    return [kind, range, lower](const sim::Scene& s, std::size_t i, float value) {
+        const glm::vec2 r = range(s, i);
+        if (lower ? value <= r.y : value >= r.x)
+            return QString();
+        const QString item = itemLabel(s, {kind, i});
+        return lower ? tr("%1: a minimum cannot exceed its maximum (%2); it stays as it is.").arg(item).arg(double(r.y))
+                     : tr("%1: a maximum cannot be below its minimum (%2); it stays as it is.").arg(item).arg(double(r.x));
+    };
+}
+
+// A group's rectangle along one axis (0 = x, 1 = z), its altitude range, a type's ranges.
+Refusal cornerEnd(int axis, bool lower)
+{
+    return rangeEnd(ItemKind::Group, [axis](const sim::Scene& s, std::size_t i) {
+        return glm::vec2(s.groups[i].min[axis], s.groups[i].max[axis]);
+    }, lower);
+}
+
+Refusal altitudeEnd(bool lower)
+{
+    return rangeEnd(ItemKind::Group, [](const sim::Scene& s, std::size_t i) { return s.groups[i].altitudeM; }, lower);
+}
+
+Refusal variationEnd(glm::vec2 sim::Variation::*range, bool lower)
+{
+    return rangeEnd(ItemKind::AgentType, [range](const sim::Scene& s, std::size_t i) {
+        return s.agentTypes[i].variation.*range;
+    }, lower);
+}
+
+bool isFlier(const sim::Scene& s, std::size_t i)
+{
+    return s.agentTypes[i].kind == sim::AgentKind::Flier;
+}
+
 #define THRONG_SETTING(member) [](sim::Scene& s, std::size_t) -> float& { return s.settings.member; }
 #define THRONG_FIELD(list, member) [](sim::Scene& s, std::size_t i) -> float& { return s.list[i].member; }
 
@@ -28,13 +85,32 @@ std::vector<PropertyField> make(ItemKind kind)
                 {"navCell", tr("Navigation cell (m)"), 0.05, 10, 0.05, 2, THRONG_SETTING(navCellM)}};
     case ItemKind::AgentType:
         return {{"radius", tr("Radius (m)"), 0.05, 20, 0.05, 2, THRONG_FIELD(agentTypes, radiusM)},
-                {"maxSpeed", tr("Max speed (m/s)"), 0, 100, 0.1, 2, THRONG_FIELD(agentTypes, maxSpeed)},
+                {"maxSpeed", tr("Max speed (m/s)"), 0, 100, 0.1, 2, THRONG_FIELD(agentTypes, maxSpeed),
+                 rangeEnd(ItemKind::AgentType, [](const sim::Scene& s, std::size_t i) {
+                     return glm::vec2(s.agentTypes[i].minSpeed, s.agentTypes[i].maxSpeed);
+                 }, false)},
                 {"maxForce", tr("Max force (N)"), 0, 1e6, 0.5, 1, THRONG_FIELD(agentTypes, maxForce)},
                 {"mass", tr("Mass (kg)"), 0.01, 1e5, 1, 2, THRONG_FIELD(agentTypes, mass)},
                 {"perception", tr("Perception (m)"), 0.1, 200, 0.5, 1, THRONG_FIELD(agentTypes, perceptionM)},
                 {"viewAngle", tr("View angle (deg)"), 1, 360, 5, 0, THRONG_FIELD(agentTypes, viewAngleDeg)},
-                {"minSpeed", tr("Min speed (m/s)"), 0, 100, 0.1, 2, THRONG_FIELD(agentTypes, minSpeed)},
-                {"priority", tr("Priority"), -1e6, 1e6, 1, 1, THRONG_FIELD(agentTypes, priority)}};
+                {"minSpeed", tr("Min speed (m/s)"), 0, 100, 0.1, 2, THRONG_FIELD(agentTypes, minSpeed),
+                 rangeEnd(ItemKind::AgentType, [](const sim::Scene& s, std::size_t i) {
+                     return glm::vec2(s.agentTypes[i].minSpeed, s.agentTypes[i].maxSpeed);
+                 }, true), isFlier},
+                {"banking", tr("Banking (s^2/m)"), 0, 10, 0.01, 3, THRONG_FIELD(agentTypes, banking), {}, isFlier},
+                {"priority", tr("Priority"), -1e6, 1e6, 1, 1, THRONG_FIELD(agentTypes, priority)},
+                {"heightMin", tr("Height scale min"), 0.01, 10, 0.05, 2, THRONG_FIELD(agentTypes, variation.heightScale.x),
+                 variationEnd(&sim::Variation::heightScale, true)},
+                {"heightMax", tr("Height scale max"), 0.01, 10, 0.05, 2, THRONG_FIELD(agentTypes, variation.heightScale.y),
+                 variationEnd(&sim::Variation::heightScale, false)},
+                {"speedFactorMin", tr("Speed factor min"), 0.01, 10, 0.05, 2, THRONG_FIELD(agentTypes, variation.speedFactor.x),
+                 variationEnd(&sim::Variation::speedFactor, true)},
+                {"speedFactorMax", tr("Speed factor max"), 0.01, 10, 0.05, 2, THRONG_FIELD(agentTypes, variation.speedFactor.y),
+                 variationEnd(&sim::Variation::speedFactor, false)},
+                {"phaseMin", tr("Phase offset min"), 0, 1, 0.05, 2, THRONG_FIELD(agentTypes, variation.phaseOffset.x),
+                 variationEnd(&sim::Variation::phaseOffset, true)},
+                {"phaseMax", tr("Phase offset max"), 0, 1, 0.05, 2, THRONG_FIELD(agentTypes, variation.phaseOffset.y),
+                 variationEnd(&sim::Variation::phaseOffset, false)}};
     case ItemKind::Agent:
         return {{"x", tr("X (m)"), -1e5, 1e5, 0.1, 2, THRONG_FIELD(agents, position.x)},
                 {"z", tr("Z (m)"), -1e5, 1e5, 0.1, 2, THRONG_FIELD(agents, position.z)},
@@ -42,11 +118,16 @@ std::vector<PropertyField> make(ItemKind kind)
     case ItemKind::Path:
         return {{"radius", tr("Radius (m)"), 0.05, 100, 0.1, 2, THRONG_FIELD(paths, radiusM)},
                 {"clearance", tr("Plan clearance (m)"), 0.05, 50, 0.1, 2, THRONG_FIELD(paths, clearanceM)}};
-    case ItemKind::Obstacle:
+    case ItemKind::Obstacle: {
+        const auto box = [](const sim::Scene& s, std::size_t i) { return s.obstacles[i].shape == sim::ObstacleShape::Box; };
+        const auto circle = [box](const sim::Scene& s, std::size_t i) { return !box(s, i); };
         return {{"x", tr("Centre X (m)"), -1e5, 1e5, 0.1, 2, THRONG_FIELD(obstacles, center.x)},
                 {"z", tr("Centre Z (m)"), -1e5, 1e5, 0.1, 2, THRONG_FIELD(obstacles, center.y)},
-                {"radius", tr("Radius (m)"), 0.05, 100, 0.1, 2, THRONG_FIELD(obstacles, radiusM)},
-                {"angle", tr("Angle (deg)"), -360, 360, 5, 1, THRONG_FIELD(obstacles, angleDeg)}};
+                {"radius", tr("Radius (m)"), 0.05, 100, 0.1, 2, THRONG_FIELD(obstacles, radiusM), {}, circle},
+                {"width", tr("Width (m)"), 0.05, 1000, 0.1, 2, THRONG_FIELD(obstacles, size.x), {}, box},
+                {"depth", tr("Depth (m)"), 0.05, 1000, 0.1, 2, THRONG_FIELD(obstacles, size.y), {}, box},
+                {"angle", tr("Angle (deg)"), -360, 360, 5, 1, THRONG_FIELD(obstacles, angleDeg), {}, box}};
+    }
     case ItemKind::Goal:
         return {{"x", tr("X (m)"), -1e5, 1e5, 0.1, 2, THRONG_FIELD(goals, position.x)},
                 {"z", tr("Z (m)"), -1e5, 1e5, 0.1, 2, THRONG_FIELD(goals, position.y)},
@@ -63,8 +144,34 @@ std::vector<PropertyField> make(ItemKind kind)
         return {{"width", tr("Width (m)"), 0.1, 100, 0.5, 2, THRONG_FIELD(flowStrokes, widthM)}};
     case ItemKind::Hero:
         return {{"clearance", tr("Clearance (m)"), 0, 50, 0.1, 2, THRONG_FIELD(heroes, clearanceM)}};
-    case ItemKind::Group:
-        return {{"radius", tr("Circle radius (m)"), 0, 1e4, 0.5, 2, THRONG_FIELD(groups, radiusM)}};
+    case ItemKind::Group: {
+        const auto circle = [](const sim::Scene& s, std::size_t i) { return s.groups[i].shape == sim::AreaShape::Circle; };
+        const auto rect = [circle](const sim::Scene& s, std::size_t i) { return !circle(s, i); };
+        const auto flier = [](const sim::Scene& s, std::size_t i) {
+            const sim::AgentType* type = s.findAgentType(s.groups[i].type);
+            return type && type->kind == sim::AgentKind::Flier;
+        };
+        return {{"minX", tr("Min X (m)"), -1e5, 1e5, 0.5, 2, THRONG_FIELD(groups, min.x), cornerEnd(0, true), rect},
+                {"minZ", tr("Min Z (m)"), -1e5, 1e5, 0.5, 2, THRONG_FIELD(groups, min.y), cornerEnd(1, true), rect},
+                {"maxX", tr("Max X (m)"), -1e5, 1e5, 0.5, 2, THRONG_FIELD(groups, max.x), cornerEnd(0, false), rect},
+                {"maxZ", tr("Max Z (m)"), -1e5, 1e5, 0.5, 2, THRONG_FIELD(groups, max.y), cornerEnd(1, false), rect},
+                {"centreX", tr("Centre X (m)"), -1e5, 1e5, 0.5, 2, THRONG_FIELD(groups, center.x), {}, circle},
+                {"centreZ", tr("Centre Z (m)"), -1e5, 1e5, 0.5, 2, THRONG_FIELD(groups, center.y), {}, circle},
+                {"radius", tr("Radius (m)"), 0.05, 1e4, 0.5, 2, THRONG_FIELD(groups, radiusM), {}, circle},
+                {"altitudeMin", tr("Altitude min (m)"), 0, 1e4, 0.5, 2, THRONG_FIELD(groups, altitudeM.x),
+                 altitudeEnd(true), flier},
+                {"altitudeMax", tr("Altitude max (m)"), 0, 1e4, 0.5, 2, THRONG_FIELD(groups, altitudeM.y),
+                 altitudeEnd(false), flier}};
+    }
+    case ItemKind::Crosswalk:
+        return {{"fromX", tr("From X (m)"), -1e5, 1e5, 0.1, 2, THRONG_FIELD(crosswalks, from.x), crosswalkEnd(false, 0)},
+                {"fromZ", tr("From Z (m)"), -1e5, 1e5, 0.1, 2, THRONG_FIELD(crosswalks, from.y), crosswalkEnd(false, 1)},
+                {"toX", tr("To X (m)"), -1e5, 1e5, 0.1, 2, THRONG_FIELD(crosswalks, to.x), crosswalkEnd(true, 0)},
+                {"toZ", tr("To Z (m)"), -1e5, 1e5, 0.1, 2, THRONG_FIELD(crosswalks, to.y), crosswalkEnd(true, 1)},
+                {"width", tr("Width (m)"), 0.1, 50, 0.1, 2, THRONG_FIELD(crosswalks, widthM)}};
+    case ItemKind::Vehicle:
+        return {{"at", tr("Start distance (m)"), 0, 1e5, 0.5, 2, THRONG_FIELD(vehicles, atM)},
+                {"speed", tr("Initial speed (m/s)"), 0, 100, 0.5, 2, THRONG_FIELD(vehicles, speed)}};
     default:
         return {};
     }
@@ -79,7 +186,7 @@ const std::vector<PropertyField>& propertyFields(ItemKind kind)
 {
     static const std::vector<std::vector<PropertyField>> all = [] {
         std::vector<std::vector<PropertyField>> v;
-        for (int k = 0; k <= int(ItemKind::Brain); ++k)
+        for (int k = 0; k < kItemKindCount; ++k)
             v.push_back(make(ItemKind(k)));
         return v;
     }();

@@ -18,6 +18,11 @@ struct PropertyField {
     int decimals = 2;
     // The value of item `index` in the scene.
     std::function<float&(sim::Scene&, std::size_t index)> locate;
+    // Why item `index` may not take `value` (a crosswalk whose ends would meet), or empty.
+    std::function<QString(const sim::Scene&, std::size_t index, float value)> refusal = {};
+    // Whether the row applies to item `index` (a box's size, not a circle's); empty = always.
+    // The row shows while it applies to any selected item.
+    std::function<bool(const sim::Scene&, std::size_t index)> shown = {};
 };
 
 const std::vector<PropertyField>& propertyFields(ItemKind kind);

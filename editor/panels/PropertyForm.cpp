@@ -111,12 +111,32 @@ void PropertyForm::addNumber(const PropertyField& field)
     connect(spin, &QDoubleSpinBox::valueChanged, this, [this, spin, field, locate](double v) {
         if (!spin->specialValueText().isEmpty() && v == spin->minimum())
             return;  // still "(mixed)"
+        if (field.refusal) {
+            for (std::size_t i : indices())
+                if (const QString why = field.refusal(scene(), i, float(v)); !why.isEmpty()) {
+                    refuse(spin, why);
+                    return;
+                }
+        }
+        spin->setToolTip(QString());
         apply(field.key, field.label, locate, float(v));
     });
     addRow(field.label, spin, [this, spin, field, locate] {
+        if (field.shown) {
+            const std::vector<std::size_t> items = indices();
+            m_layout->setRowVisible(spin, std::any_of(items.begin(), items.end(),
+                                                      [&](std::size_t i) { return field.shown(scene(), i); }));
+        }
         const std::optional<float> value = common(locate);
         showNumber(spin, value ? std::optional<double>(*value) : std::nullopt, field.min);
     });
+}
+
+void PropertyForm::refuse(QWidget* widget, const QString& why)
+{
+    widget->setToolTip(why);
+    emit problem(why);
+    refresh();  // shows the value that stayed
 }
 
 void PropertyForm::addIntegerRow(const QString& key, const QString& label, int min, int max,
@@ -153,7 +173,7 @@ void PropertyForm::addCheck(const QString& key, const QString& label, Locate<boo
     });
 }
 
-void PropertyForm::addIndexChoice(const QString& key, const QString& label, const QStringList& names,
+void PropertyForm::addIndexChoice(const QString& key, const QString& label, std::function<QStringList()> names,
                                   std::function<std::optional<int>()> value, std::function<void(int)> apply)
 {
     auto* combo = new QComboBox(m_owner);
@@ -167,8 +187,9 @@ void PropertyForm::addIndexChoice(const QString& key, const QString& label, cons
     addRow(label, combo, [combo, names, value] {
         const QSignalBlocker block(combo);
         combo->clear();
-        for (int i = 0; i < names.size(); ++i)
-            combo->addItem(names[i], i);
+        const QStringList list = names();
+        for (int i = 0; i < list.size(); ++i)
+            combo->addItem(list[i], i);
         const std::optional<int> v = value();
         if (!v)
             combo->insertItem(0, mixedText());

@@ -51,12 +51,16 @@ public:
     template <class Enum>
     void addEnum(const QString& key, const QString& label, const QStringList& names, Locate<Enum> locate)
     {
-        addIndexChoice(key, label, names, [this, locate]() -> std::optional<int> {
+        addIndexChoice(key, label, [names] { return names; }, [this, locate]() -> std::optional<int> {
             const auto value = common(locate);
             return value ? std::optional<int>(int(*value)) : std::nullopt;
         }, [this, key, label, locate](int index) { apply(key, label, locate, Enum(index)); });
     }
     void addCheck(const QString& key, const QString& label, Locate<bool> locate);
+    // A combo box of `names()` (read again on every refresh): `value` is the selection's
+    // common index (empty = "(mixed)"), `apply` takes the picked one.
+    void addIndexChoice(const QString& key, const QString& label, std::function<QStringList()> names,
+                        std::function<std::optional<int>()> value, std::function<void(int)> apply);
     template <class Int>
     void addInteger(const QString& key, const QString& label, int min, int max, Locate<Int> locate)
     {
@@ -110,6 +114,9 @@ public:
 
     // Re-reads every field from the scene (not while an edit of ours is being pushed).
     void refresh();
+    // Refuses an edit: `why` goes to the widget's tooltip and the message log (problem()),
+    // and the fields show the scene's values again.
+    void refuse(QWidget* widget, const QString& why);
 
 protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
@@ -132,8 +139,6 @@ private:
         refresh();
     }
     QString mergeKey(const QString& key) const;
-    void addIndexChoice(const QString& key, const QString& label, const QStringList& names,
-                        std::function<std::optional<int>()> value, std::function<void(int)> apply);
     void addIntegerRow(const QString& key, const QString& label, int min, int max,
                        std::function<std::optional<long long>()> value, std::function<void(int)> apply);
     void rename(const QString& text);

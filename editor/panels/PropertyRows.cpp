@@ -2,8 +2,11 @@
 
 #include "editor/commands/NameReferences.h"
 #include "editor/panels/BehaviourTable.h"
+#include "editor/panels/PointTable.h"
+#include "editor/panels/StopLineTable.h"
 #include "editor/panels/PropertyForm.h"
 
+#include <algorithm>
 #include <set>
 
 namespace throng::editor {
@@ -38,6 +41,12 @@ QStringList agentGroups(const sim::Scene& s)
     return out;
 }
 
+void addPoints(PropertyForm& form, PropertyForm::Locate<PointTable::Points> locate)
+{
+    auto* table = new PointTable(form, std::move(locate), form.owner());
+    form.addRow(tr("Points"), table, [table] { table->refresh(); });
+}
+
 void addNumbers(PropertyForm& form)
 {
     for (const PropertyField& field : propertyFields(form.kind()))
@@ -54,6 +63,8 @@ void addPropertyRows(PropertyForm& form)
     case ItemKind::Agent: addAgentRows(form); break;
     case ItemKind::AgentType: addAgentTypeRows(form); break;
     case ItemKind::Group: addGroupRows(form); break;
+    case ItemKind::Crosswalk: addCrosswalkRows(form); break;
+    case ItemKind::Vehicle: addVehicleRows(form); break;
     default: addSetRows(form); break;
     }
 }
@@ -66,7 +77,9 @@ void addAgentRows(PropertyForm& form)
     form.addChoice("group", tr("Group"), agentGroups, THRONG_AT(agents, group), true, true);
     form.addChoice("goal", tr("Goal"), namesOfKind(ItemKind::Goal), THRONG_AT(agents, goal), true);
     form.addChoice("path", tr("Path"), namesOfKind(ItemKind::Path), THRONG_AT(agents, path), true);
+    addLeaderRow(form, THRONG_AT(agents, leader), true);
     addNumbers(form);
+    addAgentVariationRows(form);
 }
 
 void addAgentTypeRows(PropertyForm& form)
@@ -79,6 +92,8 @@ void addAgentTypeRows(PropertyForm& form)
                                   THRONG_AT(agentTypes, navigation));
     form.addCheck("priorityCombination", tr("Prioritised behaviours"), THRONG_AT(agentTypes, priorityCombination));
     addNumbers(form);
+    addAgentTypeLookRows(form);
+    addAgentTypeCollisionRows(form);
     auto* table = new BehaviourTable(form, form.owner());
     form.addRow(tr("Behaviours"), table, [table] { table->refresh(); });
 }
@@ -90,11 +105,29 @@ void addGroupRows(PropertyForm& form)
     form.addInteger<std::uint32_t>("count", tr("Count"), 0, 1000000, THRONG_AT(groups, count));
     form.addChoice("goal", tr("Goal"), namesOfKind(ItemKind::Goal), THRONG_AT(groups, goal), true);
     form.addChoice("path", tr("Path"), namesOfKind(ItemKind::Path), THRONG_AT(groups, path), true);
-    form.addInfo("shape", tr("Area"), [](const sim::Scene& s, std::size_t i) {
-        const sim::SpawnGroup& g = s.groups[i];
-        return g.shape == sim::AreaShape::Circle
-                   ? tr("circle at (%1, %2)").arg(g.center.x).arg(g.center.y)
-                   : tr("rectangle (%1, %2) to (%3, %4)").arg(g.min.x).arg(g.min.y).arg(g.max.x).arg(g.max.y);
+    addLeaderRow(form, THRONG_AT(groups, leader), false);
+    // The area's shape; a switch carries the area over (the circle round the rectangle's
+    // middle, the rectangle round the circle) so that the group stays valid and in place.
+    const PropertyForm::Locate<sim::SpawnGroup> group = [](sim::Scene& s, std::size_t i) -> auto& { return s.groups[i]; };
+    form.addIndexChoice("shape", tr("Area"), [] { return QStringList{tr("Rectangle"), tr("Circle")}; }, [&form] {
+        const auto shape = form.common<sim::AreaShape>(THRONG_AT(groups, shape));
+        return shape ? std::optional<int>(int(*shape)) : std::nullopt;
+    }, [&form, group](int index) {
+        form.applyEach<sim::SpawnGroup>("shape", tr("Area"), group, [index](const sim::SpawnGroup& now) {
+            sim::SpawnGroup next = now;
+            next.shape = sim::AreaShape(index);
+            if (next.shape == now.shape)
+                return next;
+            if (next.shape == sim::AreaShape::Circle) {
+                next.center = 0.5f * (now.min + now.max);
+                const glm::vec2 extent = now.max - now.min;
+                next.radiusM = std::max(0.5f, 0.5f * std::min(extent.x, extent.y));
+            } else {
+                next.min = now.center - glm::vec2(now.radiusM);
+                next.max = now.center + glm::vec2(now.radiusM);
+            }
+            return next;
+        });
     });
     addNumbers(form);
 }
@@ -112,20 +145,21 @@ void addSetRows(PropertyForm& form)
     case ItemKind::Path:
         form.addCheck("closed", tr("Closed loop"), THRONG_AT(paths, closed));
         form.addCheck("planned", tr("Planned (A*)"), THRONG_AT(paths, planned));
-        form.addInfo("points", tr("Points"),
-                     [](const sim::Scene& s, std::size_t i) { return QString::number(s.paths[i].points.size()); });
+        addPoints(form, THRONG_AT(paths, points));
         break;
     case ItemKind::Goal: form.addCheck("exit", tr("Exit"), THRONG_AT(goals, exit)); break;
-    case ItemKind::Lane: form.addCheck("loop", tr("Loop"), THRONG_AT(lanes, loop)); break;
-    case ItemKind::TrafficLight:
-        form.addInfo("stopLines", tr("Stop lines"), [](const sim::Scene& s, std::size_t i) {
-            QStringList lines;
-            for (const sim::StopLine& line : s.trafficLights[i].stopLines)
-                lines << (line.lane.empty() ? tr("crosswalk %1").arg(QString::fromStdString(line.crosswalk))
-                                            : tr("lane %1 at %2 m").arg(QString::fromStdString(line.lane)).arg(line.atM));
-            return lines.isEmpty() ? tr("none") : lines.join("\n");
-        });
+    case ItemKind::Lane:
+        form.addCheck("loop", tr("Loop"), THRONG_AT(lanes, loop));
+        addPoints(form, THRONG_AT(lanes, points));
         break;
+    case ItemKind::Obstacle:
+        form.addEnum<sim::ObstacleShape>("shape", tr("Shape"), {tr("Circle"), tr("Box")}, THRONG_AT(obstacles, shape));
+        break;
+    case ItemKind::TrafficLight: {
+        auto* table = new StopLineTable(form, form.owner());
+        form.addRow(tr("Stop lines"), table, [table] { table->refresh(); });
+        break;
+    }
     case ItemKind::Hero:
         form.addChoice("type", tr("Type"), namesOfKind(ItemKind::AgentType), THRONG_AT(heroes, type), false);
         form.addInfo("keyframes", tr("Keyframes"), [](const sim::Scene& s, std::size_t i) {
@@ -136,8 +170,7 @@ void addSetRows(PropertyForm& form)
         });
         break;
     case ItemKind::Wall:
-        form.addInfo("points", tr("Points"),
-                     [](const sim::Scene& s, std::size_t i) { return QString::number(s.walls[i].points.size()); });
+        addPoints(form, THRONG_AT(walls, points));
         break;
     case ItemKind::Brain:
         form.addInfo("name", tr("Name"),

@@ -3,6 +3,12 @@
 // kind adds its fields to a PropertyForm (names, combo boxes of the scene's types,
 // brains, groups, paths and goals, check boxes, counts, number fields, read-only info).
 
+#include "simcore/scene/Scene.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+
 namespace throng::editor {
 
 class PropertyForm;
@@ -15,5 +21,14 @@ void addAgentRows(PropertyForm& form);
 void addAgentTypeRows(PropertyForm& form);
 void addGroupRows(PropertyForm& form);
 void addSetRows(PropertyForm& form);  // paths, walls, obstacles, goals, lanes, lights, heroes, settings
+void addCrosswalkRows(PropertyForm& form);  // PropertyRowsTraffic.cpp
+void addVehicleRows(PropertyForm& form);
+// PropertyRowsAgent.cpp: the leader (an agent id, "(none)" = 0; `agents`: the selection
+// is placed agents, which may not lead themselves), and an agent's look, tint and height.
+void addLeaderRow(PropertyForm& form, std::function<std::uint32_t&(sim::Scene&, std::size_t)> locate, bool agents);
+void addAgentVariationRows(PropertyForm& form);
+// PropertyRowsType.cpp: a type's looks, tints and character; its collision layers.
+void addAgentTypeLookRows(PropertyForm& form);
+void addAgentTypeCollisionRows(PropertyForm& form);
 
 }  // namespace throng::editor

@@ -19,7 +19,8 @@ namespace throng::editor {
 
 namespace {
 
-constexpr ItemKind kPointKinds[] = {ItemKind::Agent, ItemKind::Obstacle, ItemKind::Goal, ItemKind::TrafficLight};
+constexpr ItemKind kPointKinds[] = {ItemKind::Agent,        ItemKind::Obstacle,  ItemKind::Goal,
+                                    ItemKind::TrafficLight, ItemKind::Crosswalk, ItemKind::Vehicle};
 constexpr ItemKind kLineKinds[] = {ItemKind::Path, ItemKind::Wall, ItemKind::Lane, ItemKind::FlowStroke};
 constexpr double kClickPx = 3.0;  // a box smaller than this is a click
 
@@ -51,7 +52,8 @@ std::optional<SceneItem> SelectTool::pick(QPointF pixel) const
     double bestPx = kPickPx;
     for (ItemKind kind : kPointKinds)
         for (std::size_t i = 0; i < itemCount(s, kind); ++i) {
-            const double d = distancePx(pixelOf(*itemAnchor(s, {kind, i})), pixel);
+            const std::optional<glm::vec2> anchor = itemAnchor(s, {kind, i});
+            const double d = anchor ? distancePx(pixelOf(*anchor), pixel) : bestPx;
             if (d < bestPx) {
                 bestPx = d;
                 best = SceneItem{kind, i};
@@ -175,7 +177,11 @@ void SelectTool::dragTo(const ToolMouse& mouse)
     const sim::Scene& scene = document().scene();
     if (m_drag == Drag::Move) {
         const glm::vec2 delta = ground - m_lastGround;
-        if (delta == glm::vec2(0.0f))
+        const Selection& selection = document().selection();
+        // A vehicle stays on its lane: a drag of nothing movable pushes nothing.
+        if (delta == glm::vec2(0.0f) || std::none_of(selection.begin(), selection.end(), [](SceneItem item) {
+                return MoveItemsCommand::movable(item.kind);
+            }))
             return;
         m_lastGround = ground;
         stack->push(new MoveItemsCommand(document(), document().selection(), delta, m_dragSerial));
@@ -227,7 +233,8 @@ void SelectTool::finishBox(Qt::KeyboardModifiers modifiers)
         };
         for (ItemKind kind : kPointKinds)
             for (std::size_t i = 0; i < itemCount(s, kind); ++i)
-                if (box.contains(pixelOf(*itemAnchor(s, {kind, i}))))
+                if (const std::optional<glm::vec2> anchor = itemAnchor(s, {kind, i});
+                    anchor && box.contains(pixelOf(*anchor)))
                     add({kind, i});
         for (ItemKind kind : kLineKinds)
             for (std::size_t i = 0; i < itemCount(s, kind); ++i) {

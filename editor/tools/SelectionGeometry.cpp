@@ -6,6 +6,23 @@
 
 namespace throng::editor {
 
+std::optional<glm::vec2> vehicleStart(const sim::Scene& scene, const sim::Vehicle& vehicle)
+{
+    const sim::Lane* lane = scene.findLane(vehicle.lane);
+    if (!lane || lane->points.empty())
+        return std::nullopt;
+    float left = vehicle.atM;
+    for (std::size_t k = 1; k < lane->points.size(); ++k) {
+        const glm::vec2 a = lane->points[k - 1], b = lane->points[k];
+        const float len = glm::length(b - a);
+        if (left <= len)
+            return len > 0.0f ? a + (b - a) * (left / len) : a;
+        left -= len;
+    }
+    // Past the end: shown at the lane's end.
+    return lane->points.back();
+}
+
 std::optional<glm::vec2> itemAnchor(const sim::Scene& s, SceneItem item)
 {
     if (item.index >= itemCount(s, item.kind))
@@ -15,6 +32,8 @@ std::optional<glm::vec2> itemAnchor(const sim::Scene& s, SceneItem item)
     case ItemKind::Obstacle: return s.obstacles[item.index].center;
     case ItemKind::Goal: return s.goals[item.index].position;
     case ItemKind::TrafficLight: return s.trafficLights[item.index].position;
+    case ItemKind::Crosswalk: return 0.5f * (s.crosswalks[item.index].from + s.crosswalks[item.index].to);
+    case ItemKind::Vehicle: return vehicleStart(s, s.vehicles[item.index]);
     default: return std::nullopt;
     }
 }

@@ -13,7 +13,11 @@
 
 namespace throng::editor {
 
-// The point an agent, obstacle, goal or light stands on; empty for other kinds.
+// Where a vehicle starts: `atM` along its lane (clamped to the lane's end); empty when
+// the lane is unknown.
+std::optional<glm::vec2> vehicleStart(const sim::Scene& scene, const sim::Vehicle& vehicle);
+// The point an agent, obstacle, goal, light, vehicle (its start) or crosswalk (its middle)
+// stands on; empty for other kinds and for a vehicle on an unknown lane.
 std::optional<glm::vec2> itemAnchor(const sim::Scene& scene, SceneItem item);
 // The polyline of a path, wall or lane; empty for other kinds.
 std::span<const glm::vec2> itemPolyline(const sim::Scene& scene, SceneItem item);

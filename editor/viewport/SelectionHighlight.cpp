@@ -1,5 +1,6 @@
 #include "editor/viewport/SelectionHighlight.h"
 
+#include "editor/tools/SelectionGeometry.h"
 #include "editor/viewport/ViewportPalette.h"
 
 #include <array>
@@ -74,6 +75,26 @@ void SelectionHighlight::addItems(const sim::Scene& s, const Selection& selectio
             for (const sim::Keyframe& k : s.heroes[i].keyframes)
                 way.emplace_back(k.position.x, k.position.z);
             mesh.addPolyline(way, false, kLineM, c);
+            break;
+        }
+        case ItemKind::Crosswalk: {
+            // The band's outline: the centre line pushed out by half the width each side.
+            const sim::Crosswalk& w = s.crosswalks[i];
+            const glm::vec2 d = w.to - w.from;
+            const float len = std::hypot(d.x, d.y);
+            if (!(len > 0.0f))
+                break;
+            const glm::vec2 side = glm::vec2(-d.y, d.x) * ((0.5f * w.widthM + kMarginM) / len);
+            const std::array<glm::vec2, 4> band{w.from + side, w.to + side, w.to - side, w.from - side};
+            mesh.addPolyline(band, true, kLineM, c);
+            break;
+        }
+        case ItemKind::Vehicle: {
+            // The car's ring where it starts (the renderer shows it moving during playback).
+            const sim::Vehicle& v = s.vehicles[i];
+            const sim::AgentType* type = s.findAgentType(v.type);
+            if (const std::optional<glm::vec2> at = vehicleStart(s, v))
+                mesh.addRing(*at, (type ? type->radiusM : 1.0f) + kMarginM, kLineM, c);
             break;
         }
         case ItemKind::Group: {

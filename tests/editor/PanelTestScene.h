@@ -2,7 +2,8 @@
 // A small scene for the properties-panel and delete tests: two brains, three types (one
 // with listed behaviours), six walkers in a row 4 m apart heading for a goal, a group on
 // a path, a spare path and goal, two lanes (one driven, with a stop line), a light and a
-// hero. What refers to what is spelled out in panelScene().
+// hero. What refers to what is spelled out in panelScene(); trafficScene() and
+// tablesScene() add crosswalks, a second car and type, obstacles, a wall and variation.
 
 #include <QByteArray>
 
@@ -59,6 +60,40 @@ agents:
                 QByteArray::number(-10 + 4 * k) + ", 0, 0], goal: east";
         yaml += k == 5 ? ", leader: 1}\n" : "}\n";
     }
+    return yaml;
+}
+
+// The panel scene with a second vehicle type, two crosswalks ("zebra" is a stop line of
+// light "signal") and a second car (id 50) on lane "side", 10 m in at 4 m/s.
+inline QByteArray trafficScene()
+{
+    QByteArray yaml = panelScene();
+    yaml.replace("  - {name: car, kind: vehicle, radius: 1.1, max_speed: 10, max_force: 5000, mass: 1200}\n",
+                 "  - {name: car, kind: vehicle, radius: 1.1, max_speed: 10, max_force: 5000, mass: 1200}\n"
+                 "  - {name: bus, kind: vehicle, radius: 1.5, max_speed: 8, max_force: 9000, mass: 8000}\n");
+    yaml.replace("stop_lines: [{lane: main, at: 30}]}\n",
+                 "stop_lines: [{lane: main, at: 30}, {crosswalk: zebra}]}\n"
+                 "crosswalks:\n"
+                 "  - {name: zebra, from: [12, 20], to: [12, 29], width: 3}\n"
+                 "  - {name: ladder, from: [-15, 5], to: [-15, 12], width: 2}\n");
+    yaml.replace("  - {type: car, lane: main, at: 5}\n",
+                 "  - {type: car, lane: main, at: 5}\n  - {id: 50, type: car, lane: side, at: 10, speed: 4}\n");
+    return yaml;
+}
+
+// The panel scene with a wall, a box and a round obstacle, and looks and tints for walkers.
+inline QByteArray tablesScene()
+{
+    QByteArray yaml = panelScene();
+    yaml.replace("  - {name: walker, max_speed: 1.4, max_force: 3, behaviours: {arrival: 1, separation: 1.5}}\n",
+                 "  - {name: walker, max_speed: 1.4, max_force: 3, behaviours: {arrival: 1, separation: 1.5},\n"
+                 "     variation: {looks: [casual, formal], tints: [[1, 0, 0], [0, 0, 1]]}}\n");
+    yaml.replace("goals:\n", "obstacles:\n"
+                             "  - {name: crate, shape: box, center: [5, -10], size: [2, 1]}\n"
+                             "  - {name: post, center: [8, -10], radius: 0.5}\n"
+                             "walls:\n"
+                             "  - {name: fence, points: [[-5, 15], [5, 15]]}\n"
+                             "goals:\n");
     return yaml;
 }
 

@@ -1,0 +1,261 @@
+// An agent type's look, collisions and flier rows and a traffic light's stop lines in the properties
+// panel, driven like a user: looks typed as a list, a tint picked in the colour dialog,
+// tints added and removed, an inverted range and an unknown character refused, layers
+// set; a light's stop lines moved along their lane, put on another lane, turned into a
+// crosswalk stop, added and removed. Each edit is one undo step, and undoing them all
+// gives back the same saved bytes.
+#include "EditorTestSupport.h"
+#include "EditorUiDriver.h"
+#include "PanelTestScene.h"
+#include "TestRegistry.h"
+
+#include "editor/MessagesPanel.h"
+#include "editor/panels/OutlinerPanel.h"
+#include "editor/viewport/Viewport.h"
+
+#include <QColorDialog>
+#include <QComboBox>
+#include <QDialogButtonBox>
+#include <QDoubleSpinBox>
+#include <QHeaderView>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QScrollArea>
+#include <QSpinBox>
+#include <QStandardPaths>
+#include <QTableWidget>
+#include <QTest>
+
+using namespace throng;
+using namespace throng::editor;
+using namespace throng::editor::test;
+
+namespace {
+
+template <class Widget>
+Widget* field(MainWindow& window, const QString& name)
+{
+    return window.findChild<QWidget*>("properties")->findChild<Widget*>(name);
+}
+
+void showInPanel(MainWindow& window, QWidget* widget)
+{
+    // Rows added to a shown panel are laid out on the next event loop pass.
+    QTRY_VERIFY(widget->isVisible() && widget->height() > 0);
+    window.findChild<QWidget*>("properties")->findChild<QScrollArea*>()->ensureWidgetVisible(widget);
+}
+
+void pick(MainWindow& window, const QString& name, const QString& text)
+{
+    auto* combo = field<QComboBox>(window, name);
+    QVERIFY2(combo, qPrintable(name));
+    showInPanel(window, combo);
+    combo->setFocus();
+    QTest::keyClicks(combo, text);
+    QCOMPARE(combo->currentText(), text);
+}
+
+void typeInto(MainWindow& window, QWidget* widget, const QString& text)
+{
+    QVERIFY(widget);
+    showInPanel(window, widget);
+    widget->setFocus();
+    if (auto* spin = qobject_cast<QAbstractSpinBox*>(widget))
+        spin->selectAll();
+    else if (auto* edit = qobject_cast<QLineEdit*>(widget))
+        edit->selectAll();
+    QTest::keyClick(widget, Qt::Key_Backspace);
+    QTest::keyClicks(widget, text);
+    QTest::keyClick(widget, Qt::Key_Return);
+}
+
+void press(MainWindow& window, const char* button)
+{
+    auto* b = field<QPushButton>(window, button);
+    QVERIFY2(b, button);
+    showInPanel(window, b);
+    QTest::mouseClick(b, Qt::LeftButton);
+}
+
+void clickRow(MainWindow& window, QTableWidget* table, int row)
+{
+    showInPanel(window, table);
+    QHeaderView* header = table->verticalHeader();
+    const QPoint at(header->width() / 2, header->sectionViewportPosition(row) + header->sectionSize(row) / 2);
+    QTest::mouseClick(header->viewport(), Qt::LeftButton, {}, at);
+    QCOMPARE(table->currentRow(), row);
+}
+
+void undo(MainWindow& window)
+{
+    QTest::keyClick(&window.viewport(), Qt::Key_Z, Qt::ControlModifier);
+}
+
+QString lastMessage(MainWindow& window)
+{
+    return window.messages().count() > 0 ? window.messages().item(0)->text() : QString();
+}
+
+}  // namespace
+
+class TestTypeAndLightRowsUi : public QObject {
+    Q_OBJECT
+
+private:
+    QTemporaryDir m_dir;
+
+private slots:
+    void initTestCase()
+    {
+        QStandardPaths::setTestModeEnabled(true);
+        QCoreApplication::setOrganizationName("ThrongTests");
+        QCoreApplication::setApplicationName("TestTypeAndLightRowsUi");
+    }
+
+    void aTypesLooksTintsCharacterAndLayers()
+    {
+        MainWindow window;
+        QVERIFY(showWithYaml(window, m_dir, "type.yaml", tablesScene()));
+        const QByteArray before = sceneYaml(window);
+        const sim::AgentType& walker = window.document().scene().agentTypes[0];
+        selectInOutliner(window, {{ItemKind::AgentType, 0}});
+        QCOMPARE(field<QLineEdit>(window, "looks")->text(), QString("casual, formal"));
+
+        typeInto(window, field<QLineEdit>(window, "looks"), "casual, formal, sporty");
+        QCOMPARE(walker.variation.looks, (std::vector<std::string>{"casual", "formal", "sporty"}));
+        QCOMPARE(window.document().undoStack()->count(), 1);
+
+        auto* tints = field<QTableWidget>(window, "tints");
+        QCOMPARE(tints->rowCount(), 2);
+        QCOMPARE(tints->item(0, 0)->text(), QString("#ff0000"));
+        showInPanel(window, tints);
+        QTest::mouseClick(tints->viewport(), Qt::LeftButton, {}, tints->visualItemRect(tints->item(1, 0)).center());
+        QCOMPARE(tints->currentRow(), 1);
+        press(window, "pickTint");
+        auto* dialog = window.findChild<QColorDialog*>("tintDialog");
+        QVERIFY(dialog);
+        QTRY_VERIFY(dialog->isVisible());
+        QCOMPARE(dialog->currentColor(), QColor("#0000ff"));
+        dialog->setCurrentColor(QColor("#00ff00"));
+        QTest::mouseClick(dialog->findChild<QDialogButtonBox*>()->button(QDialogButtonBox::Ok), Qt::LeftButton);
+        QCOMPARE(walker.variation.tints[1], glm::vec3(0, 1, 0));
+        QCOMPARE(tints->item(1, 0)->text(), QString("#00ff00"));
+        press(window, "addTint");
+        QCOMPARE(walker.variation.tints.size(), std::size_t(3));
+        QCOMPARE(walker.variation.tints[2], glm::vec3(1));
+        press(window, "removeTint");  // the new one, selected
+        QCOMPARE(walker.variation.tints.size(), std::size_t(2));
+        QCOMPARE(window.document().undoStack()->count(), 4);
+
+        // A minimum above its maximum, a character that is not one: refused.
+        typeInto(window, field<QDoubleSpinBox>(window, "heightMin"), "2");
+        QCOMPARE(walker.variation.heightScale.x, 1.0f);
+        QVERIFY2(lastMessage(window).contains("cannot exceed"), qPrintable(lastMessage(window)));
+        auto* character = field<QComboBox>(window, "character");
+        typeInto(window, character->lineEdit(), "robot");
+        QCOMPARE(walker.character, std::string());
+        QVERIFY2(lastMessage(window).contains("neither a built-in"), qPrintable(lastMessage(window)));
+        QVERIFY(character->toolTip().contains("neither a built-in"));
+        typeInto(window, field<QComboBox>(window, "character")->lineEdit(), "woman");
+        QCOMPARE(walker.character, std::string("woman"));
+
+        typeInto(window, field<QSpinBox>(window, "layer"), "3");
+        typeInto(window, field<QLineEdit>(window, "collidesWith"), "0, 3");
+        QCOMPARE(walker.layer, 3u);
+        QCOMPARE(walker.collidesWith, 0b1001u);
+        typeInto(window, field<QLineEdit>(window, "collidesWith"), "0, 40");
+        QCOMPARE(walker.collidesWith, 0b1001u);
+        QVERIFY2(lastMessage(window).contains("\"40\""), qPrintable(lastMessage(window)));
+        QCOMPARE(field<QLineEdit>(window, "collidesWith")->text(), QString("0, 3"));
+        QCOMPARE(window.document().undoStack()->count(), 7);
+
+        // Two types: their looks differ.
+        selectInOutliner(window, {{ItemKind::AgentType, 0}, {ItemKind::AgentType, 1}});
+        QCOMPARE(field<QLineEdit>(window, "looks")->text(), QString("(mixed)"));
+        QCOMPARE(field<QLineEdit>(window, "collidesWith")->text(), QString("(mixed)"));
+        for (int k = 0; k < 7; ++k)
+            undo(window);
+        QCOMPARE(sceneYaml(window), before);
+    }
+
+    void fliersShowTheirMinSpeedBankingAndAltitude()
+    {
+        QByteArray yaml = tablesScene();
+        yaml.replace("  - {name: runner, max_speed: 3, max_force: 6}\n",
+                     "  - {name: runner, max_speed: 3, max_force: 6}\n"
+                     "  - {name: gull, kind: flier, max_speed: 8, max_force: 20}\n");
+        yaml.replace("groups:\n", "groups:\n  - {name: flock, type: gull, count: 3, circle: {center: [10, -20], radius: 2}, "
+                                  "altitude: [5, 10]}\n");
+        MainWindow window;
+        QVERIFY(showWithYaml(window, m_dir, "gulls.yaml", yaml));
+        const QByteArray before = sceneYaml(window);
+        const sim::Scene& scene = window.document().scene();
+        QWidget* panel = window.findChild<QWidget*>("properties");
+        selectInOutliner(window, {{ItemKind::AgentType, 0}});  // walker: no flier rows
+        QVERIFY(!field<QDoubleSpinBox>(window, "banking")->isVisibleTo(panel));
+        QVERIFY(!field<QDoubleSpinBox>(window, "minSpeed")->isVisibleTo(panel));
+
+        selectInOutliner(window, {{ItemKind::AgentType, 2}});  // gull
+        QVERIFY(field<QDoubleSpinBox>(window, "banking")->isVisibleTo(panel));
+        typeInto(window, field<QDoubleSpinBox>(window, "minSpeed"), "9");  // above max speed 8
+        QCOMPARE(scene.agentTypes[2].minSpeed, 0.0f);
+        QVERIFY2(lastMessage(window).contains("cannot exceed"), qPrintable(lastMessage(window)));
+        typeInto(window, field<QDoubleSpinBox>(window, "minSpeed"), "2");
+        typeInto(window, field<QDoubleSpinBox>(window, "banking"), "0.2");
+        QCOMPARE(scene.agentTypes[2].minSpeed, 2.0f);
+        QCOMPARE(scene.agentTypes[2].banking, 0.2f);
+
+        selectInOutliner(window, {{ItemKind::Group, 0}});  // the flock
+        QCOMPARE(field<QDoubleSpinBox>(window, "altitudeMin")->value(), 5.0);
+        typeInto(window, field<QDoubleSpinBox>(window, "altitudeMax"), "4");  // below the minimum
+        QCOMPARE(scene.groups[0].altitudeM, glm::vec2(5, 10));
+        QVERIFY2(lastMessage(window).contains("cannot be below"), qPrintable(lastMessage(window)));
+        typeInto(window, field<QDoubleSpinBox>(window, "altitudeMax"), "12");
+        QCOMPARE(scene.groups[0].altitudeM, glm::vec2(5, 12));
+        QCOMPARE(window.document().undoStack()->count(), 3);
+        for (int k = 0; k < 3; ++k)
+            undo(window);
+        QCOMPARE(sceneYaml(window), before);
+    }
+
+    void aLightsStopLinesAreEditedInTheirTable()
+    {
+        MainWindow window;
+        QVERIFY(showWithYaml(window, m_dir, "light.yaml", trafficScene()));
+        const QByteArray before = sceneYaml(window);
+        const sim::TrafficLight& light = window.document().scene().trafficLights[0];
+        selectInOutliner(window, {{ItemKind::TrafficLight, 0}});
+        auto* table = field<QTableWidget>(window, "stopLines");
+        QVERIFY(table);
+        QCOMPARE(table->rowCount(), 2);
+        QCOMPARE(field<QComboBox>(window, "stopTarget1")->currentText(), QString("zebra"));
+
+        typeInto(window, field<QDoubleSpinBox>(window, "stopAt0"), "20");
+        QCOMPARE(light.stopLines[0].atM, 20.0f);
+        pick(window, "stopTarget0", "side");
+        QCOMPARE(light.stopLines[0].lane, std::string("side"));
+        pick(window, "stopTarget1", "ladder");
+        QCOMPARE(light.stopLines[1].crosswalk, std::string("ladder"));
+        pick(window, "stopKind0", "Crosswalk");  // the first crosswalk
+        QCOMPARE(light.stopLines[0], (sim::StopLine{"", 0.0f, "zebra"}));
+        QCOMPARE(window.document().undoStack()->count(), 4);
+
+        press(window, "addStopLine");  // on the first lane at 0 m
+        QCOMPARE(light.stopLines.size(), std::size_t(3));
+        QCOMPARE(light.stopLines[2], (sim::StopLine{"main", 0.0f, ""}));
+        QCOMPARE(table->rowCount(), 3);
+        clickRow(window, table, 0);
+        press(window, "removeStopLine");
+        QCOMPARE(light.stopLines.size(), std::size_t(2));
+        QCOMPARE(light.stopLines[0].crosswalk, std::string("ladder"));
+        QCOMPARE(window.document().undoStack()->count(), 6);
+
+        for (int k = 0; k < 6; ++k)
+            undo(window);
+        QCOMPARE(sceneYaml(window), before);
+        QTRY_COMPARE(field<QDoubleSpinBox>(window, "stopAt0")->value(), 30.0);
+    }
+};
+
+THRONG_REGISTER_TEST(TestTypeAndLightRowsUi)
+#include "TestTypeAndLightRowsUi.moc"
