@@ -256,8 +256,18 @@ void World::stepBoid(std::size_t i)
         const glm::vec3 prev = wanderNext.target;
         const glm::vec3 target = normalizeOr(prev * wanderRadius + jitter, prev);
         wanderNext.target = target;
-        const glm::vec3 up = normalizeOr(m_up[i] - heading * glm::dot(m_up[i], heading), kWorldUp);
-        const glm::vec3 right = normalizeOr(glm::cross(heading, up), rightOfForward(heading));
+        // Up made square to the heading; heading x up is then unit already (both unit and
+        // square), so it is normalised only where up had to fall back.
+        const glm::vec3 upRaw = m_up[i] - heading * glm::dot(m_up[i], heading);
+        const float upLen = glm::length(upRaw);
+        glm::vec3 up, right;
+        if (upLen > 0.5f && upLen < kInfinity) {
+            up = upRaw * (1.0f / upLen);
+            right = glm::cross(heading, up);
+        } else {
+            up = normalizeOr(upRaw, kWorldUp);
+            right = normalizeOr(glm::cross(heading, up), rightOfForward(heading));
+        }
         const glm::vec3 aim = heading * b.wanderDistanceM +
                               (right * target.x + up * target.y + heading * target.z) * wanderRadius;
         sum += towards(normalizeOr(aim, glm::vec3(0.0f)) * maxSpeed, b.gainWander) * b.wWander;
@@ -284,8 +294,17 @@ void World::stepBoid(std::size_t i)
     const glm::vec3 bankedUp = normalizeOr(kWorldUp + lateral * b.bankGain, kWorldUp);
     const glm::vec3 up0 = m_up[i];
     const glm::vec3 up = normalizeOr(up0 + (bankedUp - up0) * b.bankBlend, kWorldUp);
-    const glm::vec3 side = normalizeOr(glm::cross(nextFwd, up), m_side[i]);
-    const glm::vec3 nextUp = normalizeOr(glm::cross(side, nextFwd), kWorldUp);
+    // As for wander's frame: side x forward is unit once side is (both unit and square).
+    const glm::vec3 sideRaw = glm::cross(nextFwd, up);
+    const float sideLen = glm::length(sideRaw);
+    glm::vec3 side, nextUp;
+    if (sideLen > 0.5f && sideLen < kInfinity) {
+        side = sideRaw * (1.0f / sideLen);
+        nextUp = glm::cross(side, nextFwd);
+    } else {
+        side = normalizeOr(sideRaw, m_side[i]);
+        nextUp = normalizeOr(glm::cross(side, nextFwd), kWorldUp);
+    }
 
     // Fliers may skim the ground but never pass through it (as in World::step).
     if (const float floor = groundHeight(pos.x, pos.z) + radius; pos.y < floor) {
