@@ -118,13 +118,12 @@ void World::buildBoidKernel(bool enabled, bool collideShortcut)
 
 void World::prepareBoidStep()
 {
-    float top = 0.0f;
-    bool finite = true;
-    for (const float s : m_maxSpeed) {
-        top = std::max(top, std::fabs(s));
-        finite = finite && std::isfinite(s);
-    }
-    m_boidSpeedMax = finite ? top : INFINITY;
+    // On the bits of |s|, whose order as integers is the floats' order, and where inf and
+    // NaN lie above every finite value: one integer max, which vectorises.
+    std::int32_t top = 0;
+    for (const float s : m_maxSpeed)
+        top = std::max(top, std::int32_t(std::bit_cast<std::uint32_t>(s) & 0x7fffffffu));
+    m_boidSpeedMax = top < 0x7f800000 ? std::bit_cast<float>(top) : INFINITY;
 }
 
 void World::stepBoid(std::size_t i)
@@ -307,7 +306,9 @@ void World::stepBoid(std::size_t i)
     }
 
     // Fliers may skim the ground but never pass through it (as in World::step).
-    if (const float floor = groundHeight(pos.x, pos.z) + radius; pos.y < floor) {
+    // (terrainHeight is 0 without a height field: no call for the common flat ground.)
+    const float ground = m_terrain.heights.empty() ? 0.0f : groundHeight(pos.x, pos.z);
+    if (const float floor = ground + radius; pos.y < floor) {
         pos.y = floor;
         vel.y = std::max(vel.y, 0.0f);
         const float stall = std::min(s.vehicle.minSpeed, m_maxSpeed[i]), now = glm::length(vel);

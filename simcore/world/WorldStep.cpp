@@ -156,9 +156,11 @@ void World::resolveCollision(std::size_t i, bool collideFree, bool hasStatics)
     // back only the walker's progress: pushes may move it aside or back, so a walker
     // its brain stops still gives way, but never on past where its brain holds it.
     glm::vec3 move = p - m_pos[i];
-    if (const glm::vec3 held = brainLimited(i, move, m_maxSpeed[i], m_dt); held != move) {
-        move = held;
-        p = m_pos[i] + move;
+    if (m_brains) {
+        if (const glm::vec3 held = brainLimited(i, move, m_maxSpeed[i], m_dt); held != move) {
+            move = held;
+            p = m_pos[i] + move;
+        }
     }
     const float maxMove = m_maxSpeed[i] * m_dt, moved = glm::length(move);
     if (moved > maxMove && moved > 0.0f)
