@@ -50,7 +50,8 @@ int main(int argc, char** argv)
         } else if (!arg.empty() && arg[0] != '-') {
             numbers.push_back(arg);
         } else {
-            std::fprintf(stderr, "usage: throng-bench-flock [AGENTS] [STEPS] [THREADS] [--no-kernel] [--no-shortcut]\n");
+            std::fprintf(stderr,
+                         "usage: throng-bench-flock [AGENTS] [STEPS] [THREADS] [--no-kernel] [--no-shortcut]\n");
             return 2;
         }
     }
@@ -64,7 +65,8 @@ int main(int argc, char** argv)
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     const double agentSteps = double(world.agentCount()) * double(steps);
     std::printf("{\"agents\": %zu, \"steps\": %d, \"kernel\": %s, \"shortcut\": %s, \"seconds\": %.4f, "
-                "\"agent_steps_per_second\": %.0f, \"overlapping_pairs_per_step\": %.3f, \"state_hash\": \"%016llx\"}\n",
+                "\"agent_steps_per_second\": %.0f, \"overlapping_pairs_per_step\": %.3f, "
+                "\"state_hash\": \"%016llx\"}\n",
                 world.agentCount(), steps, options.boidKernel ? "true" : "false",
                 options.collideShortcut ? "true" : "false", seconds, seconds > 0.0 ? agentSteps / seconds : 0.0,
                 double(world.counters().overlappingPairs) / double(steps > 0 ? steps : 1),

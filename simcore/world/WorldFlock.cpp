@@ -112,7 +112,8 @@ void World::buildBoidKernel(bool enabled, bool collideShortcut)
     bool allFly = true;
     for (const TypeSteering& s : m_steering)
         allFly = allFly && s.vehicle.flying;
-    m_boidCountsOverlaps = collideShortcut && anyKernel && allFly && m_traffic.vehicleAgent.empty() && m_traffic.heroAgent.empty();
+    m_boidCountsOverlaps =
+        collideShortcut && anyKernel && allFly && m_traffic.vehicleAgent.empty() && m_traffic.heroAgent.empty();
     m_boidSlackM = collideShortcut && anyKernel && std::isfinite(slack) ? slack : 0.0f;
 }
 
