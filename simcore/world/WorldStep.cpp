@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <utility>
 
 namespace throng::sim {
 
@@ -134,12 +135,21 @@ void World::step()
     }
     trafficAfterCollide();
 
-    // Commit: swap in the new state, animate, and note arrivals.
+    // Commit: animate and note arrivals, then swap in the new state (no copying: every path
+    // of the step (stopped, boids, walkers, the general one, traffic and heroes over those)
+    // writes all six next columns of every agent, so the old state left in m_next* is never
+    // read before it is overwritten).
     m_stoppedBefore = m_stopped;
     std::uint64_t crossings = 0;
 #pragma omp parallel for schedule(static, 256) num_threads(m_threads) reduction(+ : crossings)
     for (std::size_t i = 0; i < n; ++i)
         commit(i, crossings);
+    std::swap(m_pos, m_nextPos);
+    std::swap(m_vel, m_nextVel);
+    std::swap(m_fwd, m_nextFwd);
+    std::swap(m_side, m_nextSide);
+    std::swap(m_up, m_nextUp);
+    std::swap(m_wander, m_nextWander);
     m_counters.wallPenetrations += crossings;
     ++m_step;
     countStep();
@@ -206,12 +216,6 @@ void World::commit(std::size_t i, std::uint64_t& wallCrossings)
                  : phase >= 1.0f && phase < 2.0f          ? phase - 1.0f
                  : phase >= 2.0f && phase < 2147483648.0f ? phase - float(std::int32_t(phase))
                                                           : std::fmod(phase, 1.0f);
-    m_pos[i] = m_nextPos[i];
-    m_vel[i] = m_nextVel[i];
-    m_fwd[i] = m_nextFwd[i];
-    m_side[i] = m_nextSide[i];
-    m_up[i] = m_nextUp[i];
-    m_wander[i] = m_nextWander[i];
     if (m_stopped[i])
         return;
     // Arrived (the stats' figure) = entered the goal's area, or joined the pile of those
@@ -273,7 +277,7 @@ void World::commit(std::size_t i, std::uint64_t& wallCrossings)
     }
     if (stop) {
         m_stopped[i] = 1;
-        m_vel[i] = glm::vec3(0.0f);
+        m_nextVel[i] = glm::vec3(0.0f);  // the velocity World::step swaps in
     }
 }
 
