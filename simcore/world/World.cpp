@@ -88,7 +88,7 @@ World::World(const Scene& scene, const WorldOptions& options)
     }
     m_grid.configure(scene.settings.boundsMin, scene.settings.boundsMax, cell);
     m_grid.rebuild(m_pos, m_hasFliers, m_out);
-    buildBoidKernel(options.boidKernel);
+    buildBoidKernel(options.boidKernel, options.collideShortcut);
 }
 
 void World::buildStatics(const Scene& scene)
@@ -292,6 +292,7 @@ void World::addAgent(const Scene& scene, AgentId id, std::uint16_t type, glm::ve
     m_nextWander.push_back(m_wander.back());
     m_nearIndex.resize(m_nearIndex.size() + kMaxNeighbours);
     m_nearCount.push_back(0);
+    m_collideFree.push_back(0);
     m_resolvedPos.push_back(pos);
 }
 

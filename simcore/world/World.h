@@ -37,6 +37,9 @@ struct WorldOptions {
     bool overrideSeed = false;
     int threads = 0;            // 0 = OpenMP's default
     bool boidKernel = true;     // false: boids take the general steering path too (tests compare the two)
+    // false: the collide pass searches every boid's neighbours for overlaps, and so does
+    // the overlap count, instead of trusting what the boids kernel found (tests compare)
+    bool collideShortcut = true;
 };
 
 class World {
@@ -168,8 +171,12 @@ private:
     void commit(std::size_t i, std::uint64_t& wallCrossings);
     // The boids kernel (WorldFlock.cpp): sense, steer and integrate fused for a flier type
     // whose behaviours are only separation, alignment, cohesion, pursuit, containment, wander.
-    void buildBoidKernel(bool enabled);
+    void buildBoidKernel(bool enabled, bool collideShortcut);
     void stepBoid(std::size_t i);
+    void prepareBoidStep();  // m_boidSpeedMax, before the agents step
+    // The collide pass for agent i: m_resolvedPos[i] from m_nextPos[i] and the overlaps
+    // with its neighbours (none looked for when the kernel found it collide-free).
+    void resolveCollision(std::size_t i, bool collideFree, bool hasStatics);
     void countStep();
     // Leader overtakes (WorldLeaders.cpp): followers ahead of their leader this step.
     void countLeaderOvertakes();
@@ -225,6 +232,16 @@ private:
         float minSpeed, bankGain, bankBlend;
     };
     std::vector<BoidType> m_boidTypes;
+    // Per agent, written by stepBoid: 1 when none of its k nearest can be within contact
+    // distance after the step, provided every agent's next position lies within
+    // m_boidSlackM of where its old velocity would take it (the collide pass checks that).
+    // Bit 2: its k nearest hold every agent that can end the step within contact
+    // distance of it, so countStep counts its overlaps from them (worlds of fliers only).
+    std::vector<std::uint8_t> m_collideFree;
+    static constexpr std::uint8_t kCollideFree = 1, kOverlapsListed = 2;  // its bits
+    float m_boidSlackM = 0.0f;
+    bool m_boidCountsOverlaps = false;  // bit 2 is in use
+    float m_boidSpeedMax = 0.0f;         // this step: the largest |max speed| of any agent (inf if any is not finite)
     bool m_makingWay = false;  // some types differ in layers or priority (else all collide as equals)
 
     // The set, static during a run.

@@ -57,16 +57,24 @@ bool fusable(const TypeSteering& s)
 
 }  // namespace
 
-void World::buildBoidKernel(bool enabled)
+void World::buildBoidKernel(bool enabled, bool collideShortcut)
 {
     // Brains change weights and speeds per agent, layers or priorities change whom an
     // agent perceives, and signals hold agents back: those worlds keep the general path.
     const bool plain = enabled && !m_brains && !m_makingWay && m_traffic.signal.empty();
     m_boidKernel.assign(m_steering.size(), 0);
+    m_collideFree.assign(m_pos.size(), 0);
+    // How far a flier's next position may lie from where its old velocity takes it: the
+    // force changes the velocity by at most maxForce / mass * dt, and lifting it back to
+    // its min speed by as much again. The collide pass checks it holds for every agent.
+    float accelMax = 0.0f;
+    bool anyKernel = false;
     m_boidTypes.assign(m_steering.size(), BoidType{});
     for (std::size_t t = 0; t < m_steering.size(); ++t) {
         const TypeSteering& s = m_steering[t];
         m_boidKernel[t] = plain && fusable(s) ? 1 : 0;
+        anyKernel = anyKernel || m_boidKernel[t];
+        accelMax = std::max(accelMax, nonNegative(m_types[t].maxForce) / effectiveMass(m_types[t].mass));
         // As steerTowards, separate and integrateVehicle make each parameter usable.
         const float mass = effectiveMass(m_types[t].mass);
         auto gain = [&](float responseTimeS) {
@@ -98,6 +106,25 @@ void World::buildBoidKernel(bool enabled)
         const float response = std::max(nonNegative(s.vehicle.bankingResponseS), kMinResponseTimeS);
         b.bankBlend = 1.0f - std::exp(-m_dt / response);
     }
+    const float slack = 2.0f * accelMax * m_dt * m_dt;
+    // Listed overlaps need every agent to go through the collide pass's speed cap last:
+    // fliers only (walkers are constrained after it), no vehicles or heroes.
+    bool allFly = true;
+    for (const TypeSteering& s : m_steering)
+        allFly = allFly && s.vehicle.flying;
+    m_boidCountsOverlaps =
+        collideShortcut && anyKernel && allFly && m_traffic.vehicleAgent.empty() && m_traffic.heroAgent.empty();
+    m_boidSlackM = collideShortcut && anyKernel && std::isfinite(slack) ? slack : 0.0f;
+}
+
+void World::prepareBoidStep()
+{
+    // On the bits of |s|, whose order as integers is the floats' order, and where inf and
+    // NaN lie above every finite value: one integer max, which vectorises.
+    std::int32_t top = 0;
+    for (const float s : m_maxSpeed)
+        top = std::max(top, std::int32_t(std::bit_cast<std::uint32_t>(s) & 0x7fffffffu));
+    m_boidSpeedMax = top < 0x7f800000 ? std::bit_cast<float>(top) : INFINITY;
 }
 
 void World::stepBoid(std::size_t i)
@@ -114,6 +141,9 @@ void World::stepBoid(std::size_t i)
     constexpr std::size_t k = kMaxNeighbours;
     NearestList<k> best;
     float bound = t.perception * t.perception;
+    // The nearest candidate left out for being outside the view cone (squared distance):
+    // with the final bound, it tells how near an agent outside the list can be.
+    float nearestUnseen2 = INFINITY;
     const float c = t.cosHalfView;
     m_grid.forEachNearest(p, t.perception, [&] { return bound; }, [&](std::uint32_t j, const glm::vec3& q) {
         const glm::vec3 d = q - p;
@@ -122,8 +152,10 @@ void World::stepBoid(std::size_t i)
             return;
         if (outsideViewCone(d, d2, fwd, c)) {
             const float contact = radius + m_radius[j];
-            if (d2 > contact * contact)
+            if (d2 > contact * contact) {
+                nearestUnseen2 = std::min(nearestUnseen2, d2);
                 return;
+            }
         }
         if (best.insert(nearestKey(d2, j)) && best.full())
             bound = best.worstDistance2();
@@ -135,6 +167,10 @@ void World::stepBoid(std::size_t i)
     const float range = b.range, damping = b.damping, maxForce = b.maxForce;
     glm::vec3 push(0.0f), headings(0.0f), velocities(0.0f), centre(0.0f);
     std::uint32_t* nearIndex = &m_nearIndex[i * k];
+    // Where each neighbour's old velocity takes it, and how close it may come (for the
+    // collide pass: see collideFree below).
+    std::array<glm::vec3, k> drift;
+    std::array<float, k> keepOut;
     for (std::size_t n = 0; n < count; ++n) {
         const auto j = best.index(n);
         nearIndex[n] = j;
@@ -142,8 +178,10 @@ void World::stepBoid(std::size_t i)
         headings += m_fwd[j];
         velocities += vj;
         centre += q;
+        drift[n] = q + vj * m_dt;
         // Separation (FlockingBehaviours.cpp): the squared distance is the search key's.
         const float contact = radius + m_radius[j], reach = contact + range;
+        keepOut[n] = contact + m_boidSlackM;
         const float d2 = std::bit_cast<float>(std::uint32_t(best.keys[n] >> 32));
         if (!(d2 < reach * reach))
             continue;
@@ -218,8 +256,18 @@ void World::stepBoid(std::size_t i)
         const glm::vec3 prev = wanderNext.target;
         const glm::vec3 target = normalizeOr(prev * wanderRadius + jitter, prev);
         wanderNext.target = target;
-        const glm::vec3 up = normalizeOr(m_up[i] - heading * glm::dot(m_up[i], heading), kWorldUp);
-        const glm::vec3 right = normalizeOr(glm::cross(heading, up), rightOfForward(heading));
+        // Up made square to the heading; heading x up is then unit already (both unit and
+        // square), so it is normalised only where up had to fall back.
+        const glm::vec3 upRaw = m_up[i] - heading * glm::dot(m_up[i], heading);
+        const float upLen = glm::length(upRaw);
+        glm::vec3 up, right;
+        if (upLen > 0.5f && upLen < kInfinity) {
+            up = upRaw * (1.0f / upLen);
+            right = glm::cross(heading, up);
+        } else {
+            up = normalizeOr(upRaw, kWorldUp);
+            right = normalizeOr(glm::cross(heading, up), rightOfForward(heading));
+        }
         const glm::vec3 aim = heading * b.wanderDistanceM +
                               (right * target.x + up * target.y + heading * target.z) * wanderRadius;
         sum += towards(normalizeOr(aim, glm::vec3(0.0f)) * maxSpeed, b.gainWander) * b.wWander;
@@ -246,17 +294,46 @@ void World::stepBoid(std::size_t i)
     const glm::vec3 bankedUp = normalizeOr(kWorldUp + lateral * b.bankGain, kWorldUp);
     const glm::vec3 up0 = m_up[i];
     const glm::vec3 up = normalizeOr(up0 + (bankedUp - up0) * b.bankBlend, kWorldUp);
-    const glm::vec3 side = normalizeOr(glm::cross(nextFwd, up), m_side[i]);
-    const glm::vec3 nextUp = normalizeOr(glm::cross(side, nextFwd), kWorldUp);
+    // As for wander's frame: side x forward is unit once side is (both unit and square).
+    const glm::vec3 sideRaw = glm::cross(nextFwd, up);
+    const float sideLen = glm::length(sideRaw);
+    glm::vec3 side, nextUp;
+    if (sideLen > 0.5f && sideLen < kInfinity) {
+        side = sideRaw * (1.0f / sideLen);
+        nextUp = glm::cross(side, nextFwd);
+    } else {
+        side = normalizeOr(sideRaw, m_side[i]);
+        nextUp = normalizeOr(glm::cross(side, nextFwd), kWorldUp);
+    }
 
     // Fliers may skim the ground but never pass through it (as in World::step).
-    if (const float floor = groundHeight(pos.x, pos.z) + radius; pos.y < floor) {
+    // (terrainHeight is 0 without a height field: no call for the common flat ground.)
+    const float ground = m_terrain.heights.empty() ? 0.0f : groundHeight(pos.x, pos.z);
+    if (const float floor = ground + radius; pos.y < floor) {
         pos.y = floor;
         vel.y = std::max(vel.y, 0.0f);
         const float stall = std::min(s.vehicle.minSpeed, m_maxSpeed[i]), now = glm::length(vel);
         if (now < stall)
             vel = now > 1e-6f ? vel * (stall / now) : nextFwd * stall;
     }
+    // Collide-free: none of the k nearest can end the step within contact distance, as
+    // long as each lies within m_boidSlackM of where its old velocity takes it (what the
+    // collide pass checks before it trusts this flag); the margin covers the rounding of
+    // these sums and of the pass's own.
+    const float margin = 1e-4f + 4e-6f * (std::fabs(pos.x) + std::fabs(pos.y) + std::fabs(pos.z));
+    bool collideFree = m_boidSlackM > 0.0f;
+    for (std::size_t n = 0; n < count; ++n) {
+        const glm::vec3 d = pos - drift[n];
+        const float keep = keepOut[n] + margin;
+        collideFree = collideFree && glm::dot(d, d) > keep * keep;
+    }
+    // Overlaps listed: every agent outside the list was at least sqrt(outside2) away, and
+    // after the collide pass each agent has moved at most its max speed times dt, so
+    // none outside can end the step within contact distance (countStep relies on it).
+    const float outside2 = std::min(bound, nearestUnseen2);
+    const float need = radius + m_maxRadius + (m_maxSpeed[i] + m_boidSpeedMax) * m_dt * 1.0001f + margin;
+    const bool listed = m_boidCountsOverlaps && m_maxSpeed[i] >= 0.0f && outside2 > need * need;
+    m_collideFree[i] = std::uint8_t((collideFree ? kCollideFree : 0) | (listed ? kOverlapsListed : 0));
     m_nextPos[i] = pos;
     m_nextVel[i] = vel;
     m_nextFwd[i] = nextFwd;

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <utility>
 
 namespace throng::sim {
 
@@ -36,6 +37,8 @@ void World::step()
     if (m_brains)
         runBrains();
     trafficBeforeStep();
+    if (m_boidCountsOverlaps)
+        prepareBoidStep();
 
 #pragma omp parallel for schedule(static, 256) num_threads(m_threads)
     for (std::size_t i = 0; i < n; ++i) {
@@ -98,29 +101,27 @@ void World::step()
 
     // Collide: bodies still overlapping after steering move apart, each by its share of
     // the overlap (DetourCrowd's collision handling, done Jacobi-style: every agent reads
-    // the others' proposed positions and moves only itself). Walls stay hard.
-#pragma omp parallel for schedule(static, 256) num_threads(m_threads)
+    // the others' proposed positions and moves only itself). Walls stay hard. Boids the
+    // kernel found collide-free skip the search for overlaps (it would find none) once
+    // every agent is seen to lie within the kernel's slack of its old velocity's reach;
+    // should one not, the pass runs again in full, so the result is the same either way.
+    const bool trustKernel = m_boidSlackM > 0.0f && m_collideFree.size() == n;
+    const float slack2 = m_boidSlackM * m_boidSlackM;
+    int slackHeld = 1;
+#pragma omp parallel for schedule(static, 256) num_threads(m_threads) reduction(&& : slackHeld)
     for (std::size_t i = 0; i < n; ++i) {
-        glm::vec3 p = m_nextPos[i] + separateBodies(i);
-        const bool flying = m_steering[m_info[i].typeIndex].vehicle.flying;
-        // Nobody moves faster than its max speed, nudges included, so what the viewer
-        // sees and the gait it is animated with always agree. A brain's lower speed holds
-        // back only the walker's progress: pushes may move it aside or back, so a walker
-        // its brain stops still gives way, but never on past where its brain holds it.
-        glm::vec3 move = p - m_pos[i];
-        if (const glm::vec3 held = brainLimited(i, move, m_maxSpeed[i], m_dt); held != move) {
-            move = held;
-            p = m_pos[i] + move;
+        bool collideFree = false;
+        if (trustKernel) {
+            const glm::vec3 drift = m_nextPos[i] - (m_pos[i] + m_vel[i] * m_dt);
+            slackHeld = slackHeld && glm::dot(drift, drift) <= slack2;
+            collideFree = (m_collideFree[i] & kCollideFree) != 0;
         }
-        const float maxMove = m_maxSpeed[i] * m_dt, moved = glm::length(move);
-        if (moved > maxMove && moved > 0.0f)
-            p = m_pos[i] + move * (maxMove / moved);
-        if (!flying) {
-            if (hasStatics)
-                constrain(i, m_pos[i], p);
-            p.y = m_nextPos[i].y;
-        }
-        m_resolvedPos[i] = p;
+        resolveCollision(i, collideFree, hasStatics);
+    }
+    if (trustKernel && !slackHeld) {
+#pragma omp parallel for schedule(static, 256) num_threads(m_threads)
+        for (std::size_t i = 0; i < n; ++i)
+            resolveCollision(i, false, hasStatics);
     }
 #pragma omp parallel for schedule(static, 256) num_threads(m_threads)
     for (std::size_t i = 0; i < n; ++i) {
@@ -134,12 +135,21 @@ void World::step()
     }
     trafficAfterCollide();
 
-    // Commit: swap in the new state, animate, and note arrivals.
+    // Commit: animate and note arrivals, then swap in the new state (no copying: every path
+    // of the step (stopped, boids, walkers, the general one, traffic and heroes over those)
+    // writes all six next columns of every agent, so the old state left in m_next* is never
+    // read before it is overwritten).
     m_stoppedBefore = m_stopped;
     std::uint64_t crossings = 0;
 #pragma omp parallel for schedule(static, 256) num_threads(m_threads) reduction(+ : crossings)
     for (std::size_t i = 0; i < n; ++i)
         commit(i, crossings);
+    std::swap(m_pos, m_nextPos);
+    std::swap(m_vel, m_nextVel);
+    std::swap(m_fwd, m_nextFwd);
+    std::swap(m_side, m_nextSide);
+    std::swap(m_up, m_nextUp);
+    std::swap(m_wander, m_nextWander);
     m_counters.wallPenetrations += crossings;
     ++m_step;
     countStep();
@@ -206,12 +216,6 @@ void World::commit(std::size_t i, std::uint64_t& wallCrossings)
                  : phase >= 1.0f && phase < 2.0f          ? phase - 1.0f
                  : phase >= 2.0f && phase < 2147483648.0f ? phase - float(std::int32_t(phase))
                                                           : std::fmod(phase, 1.0f);
-    m_pos[i] = m_nextPos[i];
-    m_vel[i] = m_nextVel[i];
-    m_fwd[i] = m_nextFwd[i];
-    m_side[i] = m_nextSide[i];
-    m_up[i] = m_nextUp[i];
-    m_wander[i] = m_nextWander[i];
     if (m_stopped[i])
         return;
     // Arrived (the stats' figure) = entered the goal's area, or joined the pile of those
@@ -273,7 +277,7 @@ void World::commit(std::size_t i, std::uint64_t& wallCrossings)
     }
     if (stop) {
         m_stopped[i] = 1;
-        m_vel[i] = glm::vec3(0.0f);
+        m_nextVel[i] = glm::vec3(0.0f);  // the velocity World::step swaps in
     }
 }
 
@@ -335,6 +339,7 @@ void World::countStep()
     std::uint64_t overlaps = 0, nonFinite = 0, inObstacle = 0, red = 0;
     m_grid.rebuild(m_pos, m_hasFliers, m_out, m_threads);
     m_gridCurrent = true;
+    const bool listedOverlaps = m_boidCountsOverlaps && m_collideFree.size() == n;
 #pragma omp parallel for schedule(static, 256) num_threads(m_threads) reduction(+ : overlaps, nonFinite, inObstacle, red)
     for (std::size_t i = 0; i < n; ++i) {
         if (!isFinite(m_pos[i]) || !isFinite(m_vel[i]))
@@ -351,11 +356,18 @@ void World::countStep()
             if (glm::dot(d, d) < contact * contact)
                 ++overlaps;
         };
-        // Only a body within r + the largest radius can overlap this one.
-        if (m_hasFliers)
+        // Only a body within r + the largest radius can overlap this one. The boids kernel
+        // may have found them all among the agent's k nearest (WorldFlock.cpp).
+        if (listedOverlaps && (m_collideFree[i] & kOverlapsListed) && !m_stoppedBefore[i]) {
+            const std::uint32_t* near = &m_nearIndex[i * kMaxNeighbours];
+            for (std::size_t k = 0; k < m_nearCount[i]; ++k)
+                if (!m_out[near[k]])
+                    overlap(near[k], m_pos[near[k]]);
+        } else if (m_hasFliers) {
             m_grid.forEachNear3D(m_pos[i], r + m_maxRadius, overlap);
-        else
+        } else {
             m_grid.forEachNear(p, r + m_maxRadius, overlap);
+        }
         if (m_types[m_info[i].typeIndex].kind == AgentKind::Flier)
             continue;
         m_obstacleGrid.forEachNear(p, r, [&](std::uint32_t k) {
