@@ -4,8 +4,10 @@
 // scene from the checkpoint to F, adopt the state into the edited scene, step once).
 // EDIT: wall (a wall across the crossroads' north-west sidewalk) or brush (a crowd-brush
 // stroke: 30 placed agents on that sidewalk, ids after every id of the scene, which
-// changes the agent set). Prints one JSON object.
-// Usage: throng-bench-resume SCENE.yaml [FRAME] [INTERVAL] [wall|brush]
+// changes the agent set) or lane (a lane drawn in the north-west block, as the lane tool
+// makes it: the traffic system is rebuilt and the vehicles carried over by id). Prints
+// one JSON object.
+// Usage: throng-bench-resume SCENE.yaml [FRAME] [INTERVAL] [wall|brush|lane]
 #include "simcore/io/SceneIO.h"
 #include "simcore/world/World.h"
 #include "simcore/world/WorldState.h"
@@ -33,7 +35,7 @@ double msSince(std::chrono::steady_clock::time_point t)
 int main(int argc, char** argv)
 {
     if (argc < 2) {
-        std::fprintf(stderr, "usage: throng-bench-resume SCENE.yaml [FRAME] [INTERVAL] [wall|brush]\n");
+        std::fprintf(stderr, "usage: throng-bench-resume SCENE.yaml [FRAME] [INTERVAL] [wall|brush|lane]\n");
         return 2;
     }
     const LoadResult loaded = loadScene(argv[1]);
@@ -58,6 +60,8 @@ int main(int argc, char** argv)
             a.position = {-8.2f + 0.8f * float(k % 3), 0.0f, -38.0f + 1.0f * float(k / 3)};
             edited.agents.push_back(a);
         }
+    } else if (edit == "lane") {
+        edited.lanes.push_back({"drawn", {{-40.0f, -30.0f}, {-20.0f, -30.0f}, {-20.0f, -20.0f}}, 3.5f, 13.9f, true});
     } else {
         edited.walls.push_back({"", {{-8.9f, -25.0f}, {-5.2f, -25.0f}}});
     }

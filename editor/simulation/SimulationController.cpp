@@ -112,12 +112,13 @@ void SimulationController::takeFrames()
             m_current = 0;
         }
     } else if (resumed) {
-        // A resumed run hands over frames from resumedAt + 1 on, of the edited World's
-        // agents (an edit may have added or removed some: the cache keeps both sets).
-        if (m_cache.frameCount() > batch.resumedAt + 1)
-            m_cache.truncate(batch.resumedAt + 1);
-        m_brainValues.resize(std::min(m_brainValues.size(), batch.resumedAt + 1));
-        m_runFrames = batch.resumedAt + 1;
+        // A resumed run hands over frames from resumedAt on (the edit frame again, from
+        // the edited World), of the edited World's agents (an edit may have added or
+        // removed some: the cache keeps both sets).
+        if (m_cache.frameCount() > batch.resumedAt)
+            m_cache.truncate(batch.resumedAt);
+        m_brainValues.resize(std::min(m_brainValues.size(), batch.resumedAt));
+        m_runFrames = batch.resumedAt;
         m_lastResumedAt = batch.resumedAt;
         if (!batch.agents.empty() && batch.previous.size() == batch.agents.size())
             m_cache.changeAgents(batch.agents, batch.previous);
@@ -153,6 +154,9 @@ void SimulationController::takeFrames()
     emit recordedChanged(m_cache.frameCount());
     if (restarted && m_current == 0)
         emit frameChanged(0);
+    // The frame shown was recorded again (the edit frame): show it as it is now.
+    if (resumed && m_current >= batch.resumedAt && m_current < m_cache.frameCount())
+        emit frameChanged(m_current);
     if (m_stepPending && m_current + 1 < m_cache.frameCount()) {
         m_stepPending = false;
         setCurrent(m_current + 1);

@@ -294,6 +294,12 @@ void SimulationRunner::run(std::shared_ptr<const sim::Scene> scene, std::size_t 
     if (resumeFrame == 0) {
         publish(true);
         produced = 1;
+    } else if (!replay.on) {
+        // The edit frame again, from the edited World: what the edit added shows at once
+        // (a stroke's agents at their spawn state, erased ones gone).
+        publish(true);
+        std::lock_guard lock(m_mutex);
+        m_target = std::max(m_target, produced);
     } else {
         std::lock_guard lock(m_mutex);
         m_pending.fps = scene->settings.fps;

@@ -40,8 +40,9 @@ public:
     // Stops any run, then runs the edited `scene` on from frame `editFrame` (> 0) of the
     // recorded run: from the last checkpoint at or before it, the run is stepped again to
     // editFrame with the scene it was recorded with, and the edited scene takes over that
-    // state (World::adoptState). Frames 0..editFrame stay as recorded; the batches that
-    // follow carry frames from editFrame + 1 (Batch::resumedAt) and, in their first batch,
+    // state (World::adoptState). Frames 0..editFrame - 1 stay as recorded; the batches
+    // that follow carry frames from editFrame on (Batch::resumedAt; frame editFrame again,
+    // as the edited World has it: a stroke's agents show there at once) and, in their first batch,
     // the edited World's agents and what they were before (Batch::agents, previous): an
     // edit may add or remove agents. When the edit cannot be resumed (settings, lanes,
     // crosswalks or vehicles changed; see WorldState.h), the run starts again from frame
@@ -76,8 +77,8 @@ public:
 
     struct Batch {
         // Set with frame 0, and with the first batch of a resumed run (the edited World's
-        // agents from resumedAt + 1 on; previous[i]: agent i's index in the World that
-        // recorded frame resumedAt, -1 = new).
+        // agents from resumedAt on; previous[i]: agent i's index in the World that
+        // recorded frame resumedAt before the edit, -1 = new).
         std::vector<sim::AgentInfo> agents;
         std::vector<std::int32_t> previous;
         float fps = 24.0f;
@@ -86,8 +87,9 @@ public:
         std::string error;                   // the World could not be built
         // Per frame of `frames`: the picked agent's brain node values (see pickBrainAgent).
         std::vector<PickedBrainValues> brainValues;
-        // Set on the first batch of a resumed run: its frames start at resumedAt + 1 and
-        // frames 0..resumedAt of the recording stay. 0 otherwise.
+        // Set on the first batch of a resumed run: its frames start at resumedAt (that
+        // frame recorded again from the edited World) and frames 0..resumedAt - 1 of the
+        // recording stay. 0 otherwise.
         std::size_t resumedAt = 0;
     };
     // Moves out what was computed since the last call.

@@ -68,6 +68,10 @@ public:
 
     std::size_t laneCount() const { return m_lanes.size(); }
     int findLane(const std::string& name) const;
+    const std::string& laneName(int lane) const { return m_lanes[std::size_t(lane)].name; }
+    // True when lane a of this network and lane b of `other` have the same centre line
+    // (points and loop): s along one is the same place on the other.
+    bool sameCentreLine(int a, const LaneNetwork& other, int b) const;
     float length(int lane) const { return m_lanes[std::size_t(lane)].cumulative.back(); }
     float widthM(int lane) const { return m_lanes[std::size_t(lane)].widthM; }
     float speedLimit(int lane) const { return m_lanes[std::size_t(lane)].speedLimit; }

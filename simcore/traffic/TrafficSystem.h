@@ -136,6 +136,16 @@ public:
     // Takes the lights' edited phases and timing (same lights in the same order: what they
     // control stays); the clock (the step) goes on. For resuming after an edit.
     void retime(const std::vector<TrafficLight>& lights) { m_lights = lights; }
+    // Resuming after an edit of the lanes, crosswalks, lights' stop lines, vehicles or a
+    // vehicle type (the rule is in WorldState.h; TrafficAdopt.cpp): this system, built
+    // from the edited scene, takes old's clock (the step), counters and per stop line its
+    // throughput, and per vehicle kept by id and lane name its motion and car-following
+    // state; on a lane whose centre line changed, s is that of the nearest point to where
+    // it stood. Returns per vehicle of this system its index in old (-1: it starts from
+    // its scene state, being new or on another lane).
+    std::vector<std::int32_t> adoptFrom(const TrafficSystem& old);
+    // The clock of a system whose World had none before the edit: `step` steps done.
+    void startAt(std::uint64_t step);
     // The stop line ahead of vehicle i's front at the current time (its light's phase).
     VehicleStopLine stopLineAhead(std::size_t i) const;
 

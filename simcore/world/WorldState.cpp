@@ -9,7 +9,6 @@
 #include "simcore/world/detail/WorldStateColumns.h"
 
 #include <algorithm>
-
 #include <map>
 #include <stdexcept>
 
@@ -85,22 +84,14 @@ bool sameCells(const NavGrid& a, const NavGrid& b)
 WorldState World::saveState() const
 {
     WorldState s;
-    s.step = m_step;
     s.seed = m_seed;
     s.agents = m_info;
-    s.counters = m_counters;
-    s.grid = m_grid;
-    s.gridCurrent = m_gridCurrent;
+#define THRONG_SAVE(member, name, rule) s.name = member;
+    THRONG_WHOLE_MEMBERS(THRONG_SAVE)
+#undef THRONG_SAVE
 #define THRONG_SAVE(name) s.name = m_##name;
     THRONG_AGENT_COLUMNS(THRONG_SAVE)
 #undef THRONG_SAVE
-    s.trafficSystem = m_traffic.system;
-    s.signal = m_traffic.signal;
-    s.pedestriansBefore = m_traffic.before;
-    s.pedestriansAfter = m_traffic.after;
-    s.navCounters = m_nav.counters;
-    s.navGrid = m_nav.grid;
-    s.planCache = m_nav.cache;
 #define THRONG_SAVE(world, name) s.name = m_nav.world;
     THRONG_NAV_COLUMNS(THRONG_SAVE)
 #undef THRONG_SAVE
@@ -109,12 +100,9 @@ WorldState World::saveState() const
         s.hasBrains = true;
         for (const detail::TypeBrain& tb : wb.types)
             s.brainState.push_back(tb.evaluator ? tb.evaluator->stateColumns() : std::vector<std::vector<float>>{});
-        s.brainBatch = wb.batch;
-        s.brainLocal = wb.local;
-        s.brainAction = wb.action;
-        s.tags = wb.tags;
-        s.tagValues = wb.tagValues;
-        s.vehicleSpeed = wb.vehicleSpeed;
+#define THRONG_SAVE(member, name) s.name = wb.member;
+        THRONG_BRAIN_MEMBERS(THRONG_SAVE)
+#undef THRONG_SAVE
     }
     return s;
 }
@@ -136,17 +124,20 @@ void World::restoreState(const WorldState& state)
 // parameters back afterwards.
 void World::restoreDynamicState(const WorldState& s, const std::vector<std::uint8_t>& keepBrain)
 {
-    m_step = s.step;
-    m_counters = s.counters;
+#define THRONG_RESTORE_Plain(member, name) member = s.name;
+#define THRONG_RESTORE_Kept(member, name)
+#define THRONG_RESTORE(member, name, rule) THRONG_RESTORE_##rule(member, name)
+    THRONG_WHOLE_MEMBERS(THRONG_RESTORE)
+#undef THRONG_RESTORE
+#undef THRONG_RESTORE_Kept
+#undef THRONG_RESTORE_Plain
 #define THRONG_RESTORE(name) m_##name = s.name;
     THRONG_AGENT_COLUMNS(THRONG_RESTORE)
 #undef THRONG_RESTORE
+    // Kept: the traffic system only into a World that has one (an edit that took every
+    // lane and vehicle away leaves none).
     if (m_traffic.system && s.trafficSystem)
         m_traffic.system = s.trafficSystem;
-    m_traffic.signal = s.signal;
-    m_traffic.before = s.pedestriansBefore;
-    m_traffic.after = s.pedestriansAfter;
-    m_nav.counters = s.navCounters;
     // Navigation columns exist only in a World with A* or flow-field walkers: when an edit
     // gave or took the last of them, the World keeps its own (fresh legs, plans anew).
     if (s.navMode.size() == m_nav.mode.size()) {
@@ -245,7 +236,7 @@ const BrainGraph* brainOf(const Scene& scene, std::size_t i, std::size_t type)
 bool World::adoptState(const WorldState& stateIn, const Scene& stateScene, const Scene& thisScene,
                        std::vector<std::int32_t>* previousOut)
 {
-    if (stateIn.seed != m_seed || !sameTrafficSet(stateScene, thisScene))
+    if (stateIn.seed != m_seed || !(stateScene.settings == thisScene.settings))
         return false;
     // Agents by key, not by dense index: an added or removed agent moves the others.
     const std::vector<std::int32_t> previous = matchAgents(stateIn.agents, stateScene, m_info, thisScene);
@@ -261,7 +252,8 @@ bool World::adoptState(const WorldState& stateIn, const Scene& stateScene, const
         remapped = remapState(stateIn, saveState(), previous);
     const WorldState& s = identity ? stateIn : remapped;
     const auto before = [&](std::size_t i) { return identity ? std::int32_t(i) : previous[i]; };
-    if (thisScene.trafficLights != stateScene.trafficLights && m_traffic.system && s.trafficSystem) {
+    if (thisScene.trafficLights != stateScene.trafficLights && m_traffic.system && s.trafficSystem &&
+        sameTrafficSet(stateScene, thisScene)) {
         // A light's phases or timing changed: the vehicles keep their state and the
         // signal its clock (the step), with the edited timing.
         WorldState retimed = s;
@@ -288,7 +280,33 @@ bool World::adoptMatched(const WorldState& s, const Scene& stateScene, const Sce
     const auto goalSpot = m_goalSpot;
     const auto mode = m_nav.mode;
     const auto waypointRadiusM = m_nav.waypointRadiusM;
+    // An edit of the lanes, crosswalks, stop lines, vehicles or vehicle types: the traffic
+    // system of the edited scene, with the clock and the kept vehicles' state of the old.
+    const bool network = !sameTrafficSet(stateScene, thisScene);
+    std::optional<TrafficSystem> edited = network ? m_traffic.system : std::nullopt;
+    const std::vector<PedestrianSignal> signal = m_traffic.signal;
     restoreDynamicState(s, keepBrain);
+    if (network) {
+        m_traffic.system = std::move(edited);
+        if (m_traffic.system && s.trafficSystem)
+            m_traffic.system->adoptFrom(*s.trafficSystem);
+        else if (m_traffic.system)
+            m_traffic.system->startAt(m_step);
+        // Walkers keep the answer they steered by while the crosswalks stay; else they ask anew.
+        if (stateScene.crosswalks != thisScene.crosswalks || m_traffic.signal.size() != signal.size())
+            m_traffic.signal = signal;
+        // Vehicles stand where their (re-projected or new) lane state puts them, as a step
+        // leaves them (driveTrafficAgents).
+        for (std::size_t v = 0; m_traffic.system && v < m_traffic.vehicleAgent.size(); ++v) {
+            const TrafficSystem& ts = *m_traffic.system;
+            const std::size_t i = m_traffic.vehicleAgent[v];
+            const glm::vec2 p = ts.position(v), f = ts.forward(v);
+            m_pos[i] = glm::vec3(p.x, groundHeight(p.x, p.y), p.y);
+            m_vel[i] = glm::vec3(f.x, 0.0f, f.y) * (ts.active(v) ? ts.speed(v) : 0.0f);
+            m_fwd[i] = glm::vec3(f.x, 0.0f, f.y);
+            m_side[i] = glm::vec3(-f.y, 0.0f, f.x);
+        }
+    }
     m_radius = radius;
     m_maxSpeed = maxSpeed;
     m_stride = stride;

@@ -18,11 +18,22 @@
 //    a World gives group members. The FrameCache keeps both sets (changeAgents);
 //  - a traffic light's phases or timing may change: the vehicles keep their state and
 //    the signal its clock (the step), with the edited timing;
+//  - lanes, crosswalks, vehicles, vehicle types, where a light stands and what it
+//    controls may change too (TrafficSystem::adoptFrom): the traffic system is the one
+//    of the edited scene, on the old clock (the signals keep their phase), with the old
+//    counters and, per stop line still there (light and lane or crosswalk), its
+//    throughput. Vehicles are matched by id, like agents: an added vehicle starts from its
+//    scene state (atM, speed) at the edit frame; a removed one is gone from the edit frame
+//    on; a kept one on a lane of the same name keeps its motion and car-following state
+//    (speed, start-up timer, stops, off-stage wait, respawns, its yellow decision while
+//    that stop line stays), and its s along the lane -- exactly when the lane's centre
+//    line is unchanged, else the nearest point of the edited lane to where it stood. A
+//    vehicle whose lane was deleted is gone with it (the traffic system takes no vehicle
+//    on a lane it does not have), and one that the edit put on another lane starts there
+//    from its scene state. Walkers keep their crosswalk answer while the crosswalks stay;
 //  - it refuses (returns false; the caller restarts from frame 0) when the edit changes
-//    the settings (fps, seed, bounds: the frames before would be of another run; that is
-//    the right answer for them), lanes, crosswalks, vehicles, a vehicle type, or where a
-//    light stands or what it controls (the traffic system's network is then not the
-//    edited scene's);
+//    the settings (fps, duration, seed, bounds, navigation cell): the frames before would
+//    be of another run, and that is the right answer for them;
 //  - otherwise every kept agent keeps its motion (position, velocity, frame, wander, gait
 //    phase), arrival, signal and exit state, and its brain memory when its type keeps the
 //    same brain; its body and type parameters (type, radius, max speed, stride, leader,
@@ -32,6 +43,9 @@
 //  - when the navigation grid changed (walls, obstacles, a walker's radius), every A*
 //    walker plans again from where it stands; walls, obstacles, lights, paths and fields
 //    always come from the edited scene.
+//
+// saveState / restoreDynamicState copy the World's members through the lists in
+// detail/WorldStateColumns.h: a new piece of state is named there once.
 
 #include "simcore/nav/NavFollow.h"
 #include "simcore/nav/PlanCache.h"
@@ -117,8 +131,9 @@ std::vector<std::int32_t> matchAgents(const std::vector<AgentInfo>& before, cons
 // state (step, counters, traffic, navigation, brain memory) is old's.
 WorldState remapState(const WorldState& old, const WorldState& fresh, const std::vector<std::int32_t>& previous);
 
-// True when a World of `b` may take a checkpoint of a World of `a` (see the rule above):
-// same settings, lanes, crosswalks, lights, vehicles and vehicle types.
+// True when a World of `b` runs the same traffic system as a World of `a` (same settings,
+// lanes, crosswalks, vehicles, vehicle types, and lights at the same place controlling
+// the same lines; their timing may differ): adoptState then keeps the system as it was.
 bool sameTrafficSet(const Scene& a, const Scene& b);
 
 }  // namespace throng::sim

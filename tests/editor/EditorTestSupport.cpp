@@ -117,6 +117,13 @@ bool scrubWithKeys(MainWindow& window, std::size_t frame)
     return window.simulation().currentFrame() == frame && window.viewport().frameIndex() == frame;
 }
 
+std::uint64_t hashOfFirst(const sim::FrameCache& cache, std::size_t frames)
+{
+    sim::FrameCache copy = cache;
+    copy.truncate(frames);
+    return copy.hash();
+}
+
 QString frameText(MainWindow& window)
 {
     return window.findChild<QLabel*>("frameLabel")->text();

@@ -6,10 +6,12 @@
 
 #include "editor/MainWindow.h"
 #include "editor/viewport/Viewport.h"
+#include "simcore/world/FrameCache.h"
 
 #include <glm/vec4.hpp>
 
 #include <cstddef>
+#include <cstdint>
 
 #include <QByteArray>
 #include <QImage>
@@ -53,6 +55,8 @@ bool playUntilRecorded(MainWindow& window, std::size_t last, int timeoutMs = 900
 // Scrubs to `frame` with the keyboard on the timeline's scrub bar (Home, then Right).
 // False unless the simulation and the viewport then show that frame.
 bool scrubWithKeys(MainWindow& window, std::size_t frame);
+// The hash of a recording's first `frames` frames (agent sets included).
+std::uint64_t hashOfFirst(const sim::FrameCache& cache, std::size_t frames);
 // The status bar's texts: "Frame 12", "227 agents".
 QString frameText(MainWindow& window);
 QString agentCountText(MainWindow& window);

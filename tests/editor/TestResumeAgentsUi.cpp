@@ -1,7 +1,7 @@
 // Edits that add or remove agents resume from the edit frame (issue 6), driven as a user
-// does: play the crossroads, scrub to frame 40, paint with the crowd brush. Frames 0..40
-// stay as recorded (the old crowd), frame 41 follows without a restart and shows the
-// new agents; erasing some at frame 50 hides them from 51 on while scrubbing back still
+// does: play the crossroads, scrub to frame 40, paint with the crowd brush. Frames 0..39
+// stay as recorded (the old crowd), frame 40 shows the new agents at once and frame 41
+// follows without a restart; erasing some at frame 50 hides them from 50 on while scrubbing back still
 // shows them; undoing both gives the original recording back bit for bit.
 #include "EditorTestSupport.h"
 #include "EditorUiDriver.h"
@@ -24,14 +24,6 @@ using namespace throng::editor::test;
 namespace {
 
 constexpr std::size_t kEditFrame = 40, kEraseFrame = 50, kLastFrame = 60;
-
-// The recording's first `frames` frames (all of it, agent sets included).
-std::uint64_t hashOfFirst(const sim::FrameCache& cache, std::size_t frames)
-{
-    sim::FrameCache copy = cache;
-    copy.truncate(frames);
-    return copy.hash();
-}
 
 }  // namespace
 
@@ -71,7 +63,7 @@ private slots:
         SimulationController& sim = window.simulation();
         QVERIFY(playUntilRecorded(window, kLastFrame));
         const std::uint64_t original = hashOfFirst(sim.cache(), kLastFrame + 1);
-        const std::uint64_t keptFrames = sim.cache().hashFrames(0, kEditFrame + 1);
+        const std::uint64_t keptFrames = sim.cache().hashFrames(0, kEditFrame);
         const std::size_t restarts = sim.restarts();
         QVERIFY(scrubWithKeys(window, kEditFrame));
 
@@ -84,7 +76,7 @@ private slots:
         QTRY_VERIFY(sim.recordedFrames() == kEditFrame + 1);
         QTRY_COMPARE(sim.recordedFrames(), kEditFrame + 1);
         QCOMPARE(sim.currentFrame(), kEditFrame);
-        QCOMPARE(window.viewport().agentCount(), kCrossroadsAgents);
+        QTRY_COMPARE(window.viewport().agentCount(), kCrossroadsAgents + painted);  // TestPaintedAgentsShowUi
 
         // Step: frame 41 follows from frame 40, not from a restart, with the new agents.
         QVERIFY(clickButton(window, "stepButton"));
@@ -99,12 +91,12 @@ private slots:
         QCOMPARE(ids.size(), sim.cache().agentCount());
         QVERIFY(playUntilRecorded(window, kLastFrame));
         QCOMPARE(sim.restarts(), restarts);
-        QCOMPARE(sim.cache().hashFrames(0, kEditFrame + 1), keptFrames);
-        // The new agents (the last cache agents) are there from frame 41 only, where painted.
+        QCOMPARE(sim.cache().hashFrames(0, kEditFrame), keptFrames);
+        // The new agents (the last cache agents) are there from frame 40 only, where painted.
         const sim::FrameCache& cache = sim.cache();
         for (std::size_t i = kCrossroadsAgents; i < cache.agentCount(); ++i) {
-            QVERIFY(!cache.at(kEditFrame, i).present);
-            QVERIFY(cache.at(kEditFrame + 1, i).present);
+            QVERIFY(!cache.at(kEditFrame - 1, i).present);
+            QVERIFY(cache.at(kEditFrame, i).present);
             const sim::Agent* placed = nullptr;
             for (const sim::Agent& a : window.document().scene().agents)
                 if (a.id == cache.agents()[i].id)
@@ -113,7 +105,7 @@ private slots:
             QVERIFY(glm::distance(glm::vec2(cache.at(kEditFrame + 1, i).position.x, cache.at(kEditFrame + 1, i).position.z),
                                   glm::vec2(placed->position.x, placed->position.z)) < 0.2f);
         }
-        QVERIFY(scrubWithKeys(window, kEditFrame));
+        QVERIFY(scrubWithKeys(window, kEditFrame - 1));
         QCOMPARE(window.viewport().agentCount(), kCrossroadsAgents);
 
         // Erase the painted agents of the stroke's first half at frame 50.
@@ -126,7 +118,7 @@ private slots:
         QVERIFY(playUntilRecorded(window, kLastFrame));
         QCOMPARE(sim.restarts(), restarts);
         QCOMPARE(sim.lastResumedAt(), kEraseFrame);
-        QVERIFY(scrubWithKeys(window, kEraseFrame + 1));
+        QVERIFY(scrubWithKeys(window, kEraseFrame));
         QCOMPARE(window.viewport().agentCount(), kCrossroadsAgents + left);
         QVERIFY(scrubWithKeys(window, kEraseFrame - 5));
         QCOMPARE(window.viewport().agentCount(), kCrossroadsAgents + painted);
@@ -140,7 +132,7 @@ private slots:
         QTest::keyClick(&window.viewport(), Qt::Key_Z, Qt::ControlModifier);
         QVERIFY(window.document().scene().agents.empty());
         QTRY_COMPARE(sim.recordedFrames(), kEditFrame + 1);
-        QCOMPARE(sim.cache().agentCount(), kCrossroadsAgents);
+        QTRY_COMPARE(sim.cache().agentCount(), kCrossroadsAgents);  // once frame 40 is recorded again
         QVERIFY(playUntilRecorded(window, kLastFrame));
         QCOMPARE(sim.restarts(), restarts);
         QCOMPARE(hashOfFirst(sim.cache(), kLastFrame + 1), original);

@@ -87,19 +87,21 @@ private slots:
         walled.walls.push_back({"", {{30.0f, 20.0f}, {40.0f, 20.0f}}});
         runner.resume(walled, 50);
         runner.setTarget(60);
-        const SimulationRunner::Batch resumed = collect(runner, 9);
+        const SimulationRunner::Batch resumed = collect(runner, 10);
         QCOMPARE(resumed.resumedAt, std::size_t(50));
         QCOMPARE(resumed.agents.size(), first.agents.size());
         for (std::size_t i = 0; i < resumed.previous.size(); ++i)
             QCOMPARE(resumed.previous[i], std::int32_t(i));
-        QCOMPARE(resumed.frameCount, std::size_t(9));  // frames 51..59
+        QCOMPARE(resumed.frameCount, std::size_t(10));  // frames 50..59: the edit frame again, then on
         QCOMPARE(runner.checkpointFrames(), (std::vector<std::size_t>{0, 24, 48, 50}));
-        // A wall 12 m from the nearest walker: frame 51 is the recorded one for every
-        // walker on a path (the A* errands plan again on the edited grid).
+        // A wall 12 m from the nearest walker: frame 50 is the recorded one for everyone,
+        // frame 51 for every walker on a path (the A* errands plan again on the edited grid).
         const std::size_t n = first.agents.size();
-        for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t i = 0; i < n; ++i) {
+            QCOMPARE(resumed.frames[i].position, first.frames[50 * n + i].position);
             if (first.agents[i].typeIndex == 0)
-                QCOMPARE(resumed.frames[i].position, first.frames[51 * n + i].position);
+                QCOMPARE(resumed.frames[n + i].position, first.frames[51 * n + i].position);
+        }
 
         sim::Scene crowded = walled;
         sim::Agent extra;

@@ -200,19 +200,24 @@ private slots:
         QVERIFY(differs > 24);
     }
 
-    void settingsLanesAndVehiclesStillStartOver()
+    void settingsEditsStillStartOver()
     {
+        // The frames before would be of another run: fps, seed and bounds start over.
+        // (Lanes, vehicles and crosswalks resume: TestWorldStateTraffic.)
         const Scene scene = crossroads();
         const WorldState state = World(scene).saveState();
-        Scene faster = scene;
-        faster.vehicles[0].speed += 2.0f;
-        QVERIFY(!World(faster).adoptState(state, scene, faster));
         Scene seeded = scene;
         seeded.settings.seed += 1;
         QVERIFY(!World(seeded).adoptState(state, scene, seeded));
+        Scene faster = scene;
+        faster.settings.fps = 30;
+        QVERIFY(!World(faster).adoptState(state, scene, faster));
+        Scene wider = scene;
+        wider.settings.boundsMax.x += 10.0f;
+        QVERIFY(!World(wider).adoptState(state, scene, wider));
         Scene lane = scene;
         lane.lanes[0].speedLimit += 1.0f;
-        QVERIFY(!World(lane).adoptState(state, scene, lane));
+        QVERIFY(World(lane).adoptState(state, scene, lane));
     }
 };
 

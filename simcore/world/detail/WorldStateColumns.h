@@ -15,3 +15,20 @@
     X(sideStepS, sideStepS) X(stall, stall) X(replan, replan) X(hasTarget, hasTarget) X(waiting, waiting) \
     X(waitingNext, waitingNext) X(lostSteps, lostSteps) X(sideDir, sideDir) X(target, target) X(mode, navMode)
 
+
+// Whole members of the World (its member expression) and of the WorldState (NAME),
+// copied as they are by saveState. restoreDynamicState puts back those marked Plain as
+// they are; the others (Kept) it puts back by the rule written there (a traffic system
+// only into a World that has one, the plan grid and cache only onto the same cells).
+#define THRONG_WHOLE_MEMBERS(X)                                                                     \
+    X(m_step, step, Plain) X(m_counters, counters, Plain) X(m_traffic.system, trafficSystem, Kept)  \
+    X(m_traffic.signal, signal, Plain) X(m_traffic.before, pedestriansBefore, Plain)                \
+    X(m_traffic.after, pedestriansAfter, Plain) X(m_nav.counters, navCounters, Plain)               \
+    X(m_nav.grid, navGrid, Kept) X(m_nav.cache, planCache, Kept) X(m_grid, grid, Kept)              \
+    X(m_gridCurrent, gridCurrent, Kept)
+
+// Brain members of the World's WorldBrains (wb.NAME) and of the WorldState (STATE), saved
+// as they are; restoreDynamicState takes them agent by agent (memory, actions) or by tag.
+#define THRONG_BRAIN_MEMBERS(X)                                                                      \
+    X(batch, brainBatch) X(local, brainLocal) X(action, brainAction) X(tags, tags) X(tagValues, tagValues) \
+    X(vehicleSpeed, vehicleSpeed)
