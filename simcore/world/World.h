@@ -37,6 +37,7 @@ struct WorldOptions {
     bool overrideSeed = false;
     int threads = 0;            // 0 = OpenMP's default
     bool boidKernel = true;     // false: boids take the general steering path too (tests compare the two)
+    bool walkKernel = true;     // false: walkers take the general steering path too (tests compare the two)
 };
 
 class World {
@@ -76,6 +77,8 @@ public:
     AgentKind agentKind(std::size_t i) const { return m_types[m_info[i].typeIndex].kind; }
     // Agents of this type step through the fused boids kernel (WorldFlock.cpp).
     bool usesBoidKernel(std::size_t typeIndex) const { return m_boidKernel[typeIndex] != 0; }
+    // Agents of this type without a path step through the fused walker kernel (WorldWalk.cpp).
+    bool usesWalkKernel(std::size_t typeIndex) const { return m_walkKernel[typeIndex] != 0; }
     // Navigation (WorldNav.cpp): agent i left through an exit goal; it is no longer
     // simulated or perceived and stays where it left (arrivalTimeS says when).
     bool isOut(std::size_t i) const { return m_out[i] != 0; }
@@ -170,6 +173,10 @@ private:
     // whose behaviours are only separation, alignment, cohesion, pursuit, containment, wander.
     void buildBoidKernel(bool enabled);
     void stepBoid(std::size_t i);
+    // The walker kernel (WorldWalk.cpp): the same for a ground type whose behaviours are only
+    // arrival, seek, separation, unaligned collision and reciprocal avoidance, containment, wander.
+    void buildWalkKernel(bool enabled);
+    void stepWalker(std::size_t i);
     void countStep();
     // Leader overtakes (WorldLeaders.cpp): followers ahead of their leader this step.
     void countLeaderOvertakes();
@@ -225,6 +232,15 @@ private:
         float minSpeed, bankGain, bankBlend;
     };
     std::vector<BoidType> m_boidTypes;
+    std::vector<std::uint8_t> m_walkKernel;  // per type: walkers without a path step through stepWalker
+    // Per type, the walker kernel's parameters made usable once (WorldWalk.cpp).
+    struct WalkType {
+        float wContainment, wSeparation, wUnaligned, wArrival, wSeek, wWander;
+        bool reciprocal;
+        float maxForce, range, damping, horizonS, marginM, brake, lateral;
+        float toleranceM, slowingM, gainArrival, gainSeek, dtOverMass;
+    };
+    std::vector<WalkType> m_walkTypes;
     bool m_makingWay = false;  // some types differ in layers or priority (else all collide as equals)
 
     // The set, static during a run.

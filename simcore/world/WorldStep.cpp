@@ -55,6 +55,10 @@ void World::step()
             stepBoid(i);  // boids: sense, steer and integrate in one pass (WorldFlock.cpp)
             continue;
         }
+        if (m_walkKernel[m_info[i].typeIndex] && m_path[i] < 0) {
+            stepWalker(i);  // walkers in the open: the same (WorldWalk.cpp)
+            continue;
+        }
         const SteeringAgent self = steeringAgent(i);
         // Sense: nearby agents in the perception cone.
         // (Uninitialised: only the first `count` are written, and only they are read.)
