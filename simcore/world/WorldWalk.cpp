@@ -38,7 +38,7 @@ constexpr float kDeadAheadM = 1e-3f;
 constexpr float kStandStillResponseS = 0.5f;
 
 // steerTowards (SteeringMath.h) with its gain (mass / response time) made once per type.
-glm::vec3 towardsVelocity(glm::vec3 velocity, glm::vec3 desired, float gain, float maxForce)
+[[gnu::always_inline]] inline glm::vec3 towardsVelocity(glm::vec3 velocity, glm::vec3 desired, float gain, float maxForce)
 {
     const glm::vec3 dv = finiteOrZero(desired) - velocity;
     if (dv == glm::vec3(0.0f))
@@ -239,8 +239,11 @@ void World::stepWalker(std::size_t i)
         }
         add(force, w.wUnaligned);
     }
-    const glm::vec3 goal =
-        hasGoal ? navGoal(i, glm::vec3(m_goalSpot[i].x, p.y, m_goalSpot[i].y)) : p + fwd;
+    // Where seek and arrival aim: the goal's spot for this agent, or its navigation target (navGoal).
+    const glm::vec3 goal = !hasGoal ? p + fwd
+                           : m_nav.active && m_nav.hasTarget[i]
+                               ? glm::vec3(m_nav.target[i].x, p.y, m_nav.target[i].y)
+                               : glm::vec3(m_goalSpot[i].x, p.y, m_goalSpot[i].y);
     if (hasGoal && w.wArrival > 0.0f) {
         // Arrival: the desired speed falls linearly to zero at the goal (arrivalVelocity).
         const glm::vec3 offset = finiteOrZero(goal - p);
@@ -302,7 +305,7 @@ void World::stepWalker(std::size_t i)
         const glm::vec3 unit = normalizeOr(fwd, glm::vec3(0.0f, 0.0f, 1.0f));
         nextFwd = normalizeOr(glm::vec3(unit.x, 0.0f, unit.z), glm::vec3(0.0f, 0.0f, 1.0f));
     }
-    pos.y = groundHeight(pos.x, pos.z);
+    pos.y = m_terrain.heights.empty() ? 0.0f : groundHeight(pos.x, pos.z);  // no terrain: flat at 0
     glm::vec3 nextVel = (pos - p) / m_dt;
     nextVel.y = 0.0f;
     m_nextPos[i] = pos;
