@@ -148,12 +148,12 @@ private slots:
 
     void crossIsBitIdenticalToTheGeneralPath()
     {
-        // 30 s: the first rings meet in the middle after about 21 s.
-        const Scene s = makeCrossScenario(1000);
+        // 25 s: the first rings meet in the middle after about 21 s.
+        const Scene s = makeCrossScenario(600);
         World kernel = makeWorld(s, true), general = makeWorld(s, false);
         float moved = 0.0f;
         std::size_t threats = 0;
-        for (int k = 0; k < 24 * 30; ++k) {
+        for (int k = 0; k < 24 * 25; ++k) {
             kernel.step();
             general.step();
             QVERIFY2(sameState(kernel, general), qPrintable(QString("the paths differ after step %1").arg(k)));
@@ -168,7 +168,7 @@ private slots:
             }
             moved = std::max(moved, glm::length(kernel.positions()[0] - s.agents[0].position));
         }
-        qInfo("cross 1000, 720 steps: identical; %zu agent-steps off the straight line, %llu overlapping pairs",
+        qInfo("cross 600, 600 steps: identical; %zu agent-steps off the straight line, %llu overlapping pairs",
               threats, static_cast<unsigned long long>(kernel.counters().overlappingPairs));
         QVERIFY(moved > 20.0f);
         QVERIFY(threats > 1000);  // avoidance did act, so the comparison covers it
@@ -194,7 +194,7 @@ private slots:
 
     void kernelIsBitIdenticalForOneAndTwoThreads()
     {
-        const Scene s = makeCrossScenario(1000);
+        const Scene s = makeCrossScenario(600);
         World one = makeWorld(s, true, 1), two = makeWorld(s, true, 2);
         for (int k = 0; k < 24 * 25; ++k) {
             one.step();
