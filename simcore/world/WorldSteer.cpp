@@ -20,8 +20,6 @@ using namespace detail;
 
 namespace {
 
-enum StepStream : std::uint64_t { kWanderX = 101, kWanderY, kWanderZ };
-
 // Wall following (Reynolds 1999): an agent whose way leads into a nearby wall travels
 // along it toward the end nearer its way, instead of pressing against its face (the
 // local minimum a goal straight behind a wall makes). Zero when no wall is in the way.

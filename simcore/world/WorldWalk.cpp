@@ -11,8 +11,10 @@
 #include "simcore/world/NearestList.h"
 
 #include "simcore/steering/UninitialisedArray.h"
+#include "simcore/steering/detail/SteeringConstants.h"
 #include "simcore/steering/detail/SteeringMath.h"
 #include "simcore/world/Rng.h"
+#include "simcore/world/detail/StepConstants.h"
 
 #include <glm/geometric.hpp>
 
@@ -25,17 +27,6 @@ namespace throng::sim {
 using namespace detail;
 
 namespace {
-
-enum StepStream : std::uint64_t { kWanderX = 101, kWanderY, kWanderZ };
-
-// Below this speed (m/s) the velocity no longer says where the agent faces (VehicleModel.cpp).
-constexpr float kStoppedSpeed = 1e-3f;
-// Below this lateral offset (m) a threat counts as dead ahead (UnalignedCollisionAvoidance.cpp).
-constexpr float kDeadAheadM = 1e-3f;
-// World::steer's response time of a walker with nowhere to go coming to rest
-// (detail/StepGeometry.h, which cannot be included beside SteeringMath.h; TestWalkKernel
-// fails if the two part).
-constexpr float kStandStillResponseS = 0.5f;
 
 // steerTowards (SteeringMath.h) with its gain (mass / response time) made once per type.
 [[gnu::always_inline]] inline glm::vec3 towardsVelocity(glm::vec3 velocity, glm::vec3 desired, float gain, float maxForce)
