@@ -161,6 +161,8 @@ private:
     glm::vec3 separateBodies(std::size_t i) const;
     glm::vec3 steer(std::size_t i, const SteeringAgent& self, std::span<const Neighbour> near,
                     WanderState& wanderOut) const;
+    void steerAroundStatics(std::size_t i, const SteeringAgent& self, glm::vec3 goal,
+                            SteeringRequestList& requests) const;
     std::span<const Neighbour> neighboursToAvoid(std::size_t i, std::span<const Neighbour> near,
                                                  Neighbour* buffer) const;
     glm::vec3 avoidReciprocally(std::size_t i, const SteeringAgent& self, glm::vec3 force,
@@ -237,6 +239,8 @@ private:
     struct WalkType {
         float wContainment, wSeparation, wUnaligned, wArrival, wSeek, wWander;
         bool reciprocal;
+        bool aroundStatics;  // wall following or obstacle avoidance, and walls or obstacles to steer round
+        bool constrained;    // walls or circles to hold the body out of (World::constrain)
         float maxForce, range, damping, horizonS, marginM, brake, lateral;
         float toleranceM, slowingM, gainArrival, gainSeek, dtOverMass;
     };

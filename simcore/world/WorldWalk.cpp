@@ -1,7 +1,7 @@
-// The walker kernel: one agent step (sense, steer, avoid, integrate) for a ground type
-// whose behaviours are only arrival, seek, separation, unaligned collision avoidance,
-// containment, wander and reciprocal avoidance (those of `cross` and of an ordinary crowd
-// in the open), fused. It computes what World::steer, World::avoidReciprocally and
+// The walker kernel: one agent step (sense, steer, avoid, integrate, constrain) for a
+// ground type whose behaviours are only arrival, seek, separation, unaligned collision
+// avoidance, containment, wall following, obstacle avoidance, wander and reciprocal
+// avoidance (those of `cross`, `corridor` and of an ordinary crowd), fused. It computes what World::steer, World::avoidReciprocally and
 // integrateVehicle compute for such an agent, operation for operation in the same order,
 // so the result is bit-identical to the general path (TestWalkKernel checks it); but in
 // one pass over the neighbours, read by index (no Neighbour copies, no request list),
@@ -37,8 +37,8 @@ namespace {
     return truncate(dv * gain, maxForce);
 }
 
-// Behaviours the kernel computes. Path, wall, obstacle following only when the world has
-// none of those (then World::steer asks nothing of them either; see buildWalkKernel).
+// Behaviours the kernel computes. Path following only for agents without a path (then
+// World::steer asks nothing of it either; World::step sends the others the general way).
 bool fusable(const TypeSteering& s)
 {
     using B = Behaviour;
@@ -62,10 +62,11 @@ bool fusable(const TypeSteering& s)
 void World::buildWalkKernel(bool enabled)
 {
     // Brains change weights and speeds per agent, layers or priorities change whom an agent
-    // perceives and avoids, signals hold agents back, and walls and obstacles add
-    // behaviours and constraints: those worlds keep the general path.
-    const bool plain = enabled && !m_brains && !m_makingWay && m_traffic.signal.empty() &&
-                       m_walls.segments().empty() && m_circles.empty() && m_boxes.empty();
+    // perceives and avoids, and signals hold agents back: those worlds keep the general path.
+    // Walls and obstacles the kernel steers round and constrains against as steer and
+    // World::step do, through the same functions (steerAroundStatics, constrain).
+    const bool plain = enabled && !m_brains && !m_makingWay && m_traffic.signal.empty();
+    const bool walls = !m_walls.segments().empty(), obstacles = !m_circles.empty() || !m_boxes.empty();
     m_walkKernel.assign(m_steering.size(), 0);
     m_walkTypes.assign(m_steering.size(), WalkType{});
     for (std::size_t t = 0; t < m_steering.size(); ++t) {
@@ -85,6 +86,8 @@ void World::buildWalkKernel(bool enabled)
         w.wSeek = weight(Behaviour::Seek);
         w.wWander = weight(Behaviour::Wander);
         w.reciprocal = s.on(Behaviour::ReciprocalAvoidance);
+        w.aroundStatics = (walls && s.on(Behaviour::WallFollowing)) || (obstacles && s.on(Behaviour::ObstacleAvoidance));
+        w.constrained = walls || !m_circles.empty();  // as World::step's hasStatics
         w.maxForce = nonNegative(m_types[t].maxForce);
         w.range = nonNegative(s.separation.rangeM);
         w.damping = mass / std::max(nonNegative(s.separation.dampingTimeS), kMinResponseTimeS);
@@ -202,12 +205,24 @@ void World::stepWalker(std::size_t i)
         if (isFinite(f))
             sum += f;
     };
+    // Where seek and arrival aim: the goal's spot for this agent, or its navigation target (navGoal).
+    const glm::vec3 goal = !hasGoal ? p + fwd
+                           : m_nav.active && m_nav.hasTarget[i]
+                               ? glm::vec3(m_nav.target[i].x, p.y, m_nav.target[i].y)
+                               : glm::vec3(m_goalSpot[i].x, p.y, m_goalSpot[i].y);
     const float speedNow = glm::length(v);
     if (w.wContainment > 0.0f) {
         const float probe = s.containment.probeMinM + s.containment.probeLookaheadS * speedNow + radius;
         const glm::vec3 lo = p - m_bounds.min, hi = m_bounds.max - p;
         if (std::min({lo.x, lo.z, hi.x, hi.z}) < probe)
             add(stayInside(steeringAgent(i), m_bounds, s.containment), w.wContainment);
+    }
+    if (w.aroundStatics) {
+        // Wall following and obstacle avoidance: steer's own requests (WorldSteer.cpp).
+        SteeringRequestList around;
+        steerAroundStatics(i, steeringAgent(i), goal, around);
+        for (const SteeringRequest& request : around.requests())
+            add(request.force, request.weight);
     }
     if (w.wSeparation > 0.0f)
         add(push, w.wSeparation);
@@ -230,11 +245,6 @@ void World::stepWalker(std::size_t i)
         }
         add(force, w.wUnaligned);
     }
-    // Where seek and arrival aim: the goal's spot for this agent, or its navigation target (navGoal).
-    const glm::vec3 goal = !hasGoal ? p + fwd
-                           : m_nav.active && m_nav.hasTarget[i]
-                               ? glm::vec3(m_nav.target[i].x, p.y, m_nav.target[i].y)
-                               : glm::vec3(m_goalSpot[i].x, p.y, m_goalSpot[i].y);
     if (hasGoal && w.wArrival > 0.0f) {
         // Arrival: the desired speed falls linearly to zero at the goal (arrivalVelocity).
         const glm::vec3 offset = finiteOrZero(goal - p);
@@ -296,6 +306,9 @@ void World::stepWalker(std::size_t i)
         const glm::vec3 unit = normalizeOr(fwd, glm::vec3(0.0f, 0.0f, 1.0f));
         nextFwd = normalizeOr(glm::vec3(unit.x, 0.0f, unit.z), glm::vec3(0.0f, 0.0f, 1.0f));
     }
+    // Constrain: out of walls and obstacles, never through a wall (World::constrain).
+    if (w.constrained)
+        constrain(i, p, pos);
     pos.y = m_terrain.heights.empty() ? 0.0f : groundHeight(pos.x, pos.z);  // no terrain: flat at 0
     glm::vec3 nextVel = (pos - p) / m_dt;
     nextVel.y = 0.0f;
