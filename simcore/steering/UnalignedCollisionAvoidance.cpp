@@ -1,6 +1,7 @@
 // Unaligned collision avoidance (Reynolds 1999, "Unaligned Collision Avoidance").
 #include "simcore/steering/UnalignedCollisionAvoidance.h"
 
+#include "simcore/steering/detail/SteeringConstants.h"
 #include "simcore/steering/detail/SteeringMath.h"
 
 #include <glm/common.hpp>
@@ -14,9 +15,6 @@ namespace throng::sim {
 using namespace detail;
 
 namespace {
-
-// Below this lateral offset (m) the threat counts as dead ahead and the agent passes on its right.
-constexpr float kDeadAheadM = 1e-3f;
 
 struct Threat {
     float timeS = -1.0f;  // < 0: none

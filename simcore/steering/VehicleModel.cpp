@@ -2,6 +2,7 @@
 // fliers as in OpenSteer's SimpleVehicle::applySteeringForce.
 #include "simcore/steering/VehicleModel.h"
 
+#include "simcore/steering/detail/SteeringConstants.h"
 #include "simcore/steering/detail/SteeringMath.h"
 
 #include <glm/geometric.hpp>
@@ -14,9 +15,6 @@ namespace throng::sim {
 using namespace detail;
 
 namespace {
-
-// Below this speed (m/s) the velocity no longer says where the agent faces.
-constexpr float kStoppedSpeed = 1e-3f;
 
 SteeringAgent sanitised(const SteeringAgent& s)
 {

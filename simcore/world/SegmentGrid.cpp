@@ -12,18 +12,6 @@ namespace {
 constexpr int kMaxCellsPerAxis = 2048;
 }
 
-int SegmentGrid::cellX(float x) const
-{
-    const float c = std::floor((x - m_min.x) * m_inv);
-    return c != c ? 0 : int(std::clamp(c, -1.0f, float(m_cols)));
-}
-
-int SegmentGrid::cellZ(float z) const
-{
-    const float c = std::floor((z - m_min.y) * m_inv);
-    return c != c ? 0 : int(std::clamp(c, -1.0f, float(m_rows)));
-}
-
 void SegmentGrid::build(std::span<const Segment> segments, float cellM)
 {
     m_segments.assign(segments.begin(), segments.end());

@@ -5,6 +5,8 @@
 
 #include <glm/vec2.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -62,8 +64,17 @@ public:
     const Segment& segment(std::uint32_t i) const { return m_segments[i]; }
 
 private:
-    int cellX(float x) const;
-    int cellZ(float z) const;
+    // Inline: every wall query (steering, constraint, commit) asks for four of these.
+    int cellX(float x) const
+    {
+        const float c = std::floor((x - m_min.x) * m_inv);
+        return c != c ? 0 : int(std::clamp(c, -1.0f, float(m_cols)));
+    }
+    int cellZ(float z) const
+    {
+        const float c = std::floor((z - m_min.y) * m_inv);
+        return c != c ? 0 : int(std::clamp(c, -1.0f, float(m_rows)));
+    }
 
     std::vector<Segment> m_segments;
     glm::vec2 m_min{0.0f};

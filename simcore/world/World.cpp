@@ -89,6 +89,7 @@ World::World(const Scene& scene, const WorldOptions& options)
     m_grid.configure(scene.settings.boundsMin, scene.settings.boundsMax, cell);
     m_grid.rebuild(m_pos, m_hasFliers, m_out);
     buildBoidKernel(options.boidKernel, options.collideShortcut);
+    buildWalkKernel(options.walkKernel);
 }
 
 void World::buildStatics(const Scene& scene)

@@ -40,6 +40,7 @@ struct WorldOptions {
     // false: the collide pass searches every boid's neighbours for overlaps, and so does
     // the overlap count, instead of trusting what the boids kernel found (tests compare)
     bool collideShortcut = true;
+    bool walkKernel = true;     // false: walkers take the general steering path too (tests compare the two)
 };
 
 class World {
@@ -79,6 +80,8 @@ public:
     AgentKind agentKind(std::size_t i) const { return m_types[m_info[i].typeIndex].kind; }
     // Agents of this type step through the fused boids kernel (WorldFlock.cpp).
     bool usesBoidKernel(std::size_t typeIndex) const { return m_boidKernel[typeIndex] != 0; }
+    // Agents of this type without a path step through the fused walker kernel (WorldWalk.cpp).
+    bool usesWalkKernel(std::size_t typeIndex) const { return m_walkKernel[typeIndex] != 0; }
     // Navigation (WorldNav.cpp): agent i left through an exit goal; it is no longer
     // simulated or perceived and stays where it left (arrivalTimeS says when).
     bool isOut(std::size_t i) const { return m_out[i] != 0; }
@@ -161,6 +164,8 @@ private:
     glm::vec3 separateBodies(std::size_t i) const;
     glm::vec3 steer(std::size_t i, const SteeringAgent& self, std::span<const Neighbour> near,
                     WanderState& wanderOut) const;
+    void steerAroundStatics(std::size_t i, const SteeringAgent& self, glm::vec3 goal,
+                            SteeringRequestList& requests) const;
     std::span<const Neighbour> neighboursToAvoid(std::size_t i, std::span<const Neighbour> near,
                                                  Neighbour* buffer) const;
     glm::vec3 avoidReciprocally(std::size_t i, const SteeringAgent& self, glm::vec3 force,
@@ -177,6 +182,10 @@ private:
     // The collide pass for agent i: m_resolvedPos[i] from m_nextPos[i] and the overlaps
     // with its neighbours (none looked for when the kernel found it collide-free).
     void resolveCollision(std::size_t i, bool collideFree, bool hasStatics);
+    // The walker kernel (WorldWalk.cpp): the same for a ground type whose behaviours are only
+    // arrival, seek, separation, unaligned collision and reciprocal avoidance, containment, wander.
+    void buildWalkKernel(bool enabled);
+    void stepWalker(std::size_t i);
     void countStep();
     // Leader overtakes (WorldLeaders.cpp): followers ahead of their leader this step.
     void countLeaderOvertakes();
@@ -242,6 +251,17 @@ private:
     float m_boidSlackM = 0.0f;
     bool m_boidCountsOverlaps = false;  // bit 2 is in use
     float m_boidSpeedMax = 0.0f;         // this step: the largest |max speed| of any agent (inf if any is not finite)
+    std::vector<std::uint8_t> m_walkKernel;  // per type: walkers without a path step through stepWalker
+    // Per type, the walker kernel's parameters made usable once (WorldWalk.cpp).
+    struct WalkType {
+        float wContainment, wSeparation, wUnaligned, wArrival, wSeek, wWander;
+        bool reciprocal;
+        bool aroundStatics;  // wall following or obstacle avoidance, and walls or obstacles to steer round
+        bool constrained;    // walls or circles to hold the body out of (World::constrain)
+        float maxForce, range, damping, horizonS, marginM, brake, lateral;
+        float toleranceM, slowingM, gainArrival, gainSeek, dtOverMass;
+    };
+    std::vector<WalkType> m_walkTypes;
     bool m_makingWay = false;  // some types differ in layers or priority (else all collide as equals)
 
     // The set, static during a run.

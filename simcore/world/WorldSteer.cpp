@@ -20,8 +20,6 @@ using namespace detail;
 
 namespace {
 
-enum StepStream : std::uint64_t { kWanderX = 101, kWanderY, kWanderZ };
-
 // Wall following (Reynolds 1999): an agent whose way leads into a nearby wall travels
 // along it toward the end nearer its way, instead of pressing against its face (the
 // local minimum a goal straight behind a wall makes). Zero when no wall is in the way.
@@ -145,37 +143,19 @@ glm::vec3 World::flowDirection(glm::vec3 p) const
     return {dir.x, 0.0f, dir.y};
 }
 
-// Steer: every behaviour the type runs, in priority order, combined by blending or by
-// prioritised allocation. Pure in the previous state; the new wander state goes out.
-glm::vec3 World::steer(std::size_t i, const SteeringAgent& self, std::span<const Neighbour> near,
-                       WanderState& wanderOut) const
+// Wall following and obstacle avoidance's requests, in steer's order (after containment):
+// shared by World::steer and the walker kernel (WorldWalk.cpp), so the two add the same
+// forces with the same weights. Nothing when the world has no walls or obstacles.
+void World::steerAroundStatics(std::size_t i, const SteeringAgent& self, glm::vec3 goal,
+                               SteeringRequestList& requests) const
 {
     const TypeSteering& s = m_steering[m_info[i].typeIndex];
     using B = Behaviour;
-    SteeringRequestList requests;
     auto request = [&](B b, auto&& force) {
         if (s.on(b))
             requests.add(force(), s.w(b) * brainWeight(i, b));
     };
     const glm::vec3 p = self.position;
-    const bool hasGoal = m_goal[i] >= 0;
-    const glm::vec3 goal = hasGoal ? navGoal(i, glm::vec3(m_goalSpot[i].x, p.y, m_goalSpot[i].y)) : p + self.forward;
-    const std::int32_t leaderIndex = m_leader[i];
-    Neighbour leader;
-    if (leaderIndex >= 0) {
-        const auto j = std::size_t(leaderIndex);
-        leader = {m_pos[j], m_vel[j], m_fwd[j], m_radius[j], m_info[j].id};
-    }
-
-    if (s.on(B::Containment)) {
-        // Only agents whose probes can reach the bounds ask; the rest are far inside.
-        const float probe = s.containment.probeMinM + s.containment.probeLookaheadS * self.speed() + self.radius;
-        const glm::vec3 lo = p - m_bounds.min, hi = m_bounds.max - p;
-        const float nearest = s.vehicle.flying ? std::min({lo.x, lo.y, lo.z, hi.x, hi.y, hi.z})
-                                               : std::min({lo.x, lo.z, hi.x, hi.z});  // walkers ignore height
-        if (nearest < probe)
-            requests.add(stayInside(self, m_bounds, s.containment), s.w(B::Containment) * brainWeight(i, B::Containment));
-    }
     if (s.on(B::WallFollowing) && !m_walls.segments().empty()) {
         std::array<WallSegment, kMaxNearWalls> walls;
         std::size_t n = 0;
@@ -209,6 +189,40 @@ glm::vec3 World::steer(std::size_t i, const SteeringAgent& self, std::span<const
         request(B::ObstacleAvoidance,
                 [&] { return avoidObstacles(self, {circles.data(), nc}, {boxes.data(), nb}, goal, s.obstacles); });
     }
+}
+
+// Steer: every behaviour the type runs, in priority order, combined by blending or by
+// prioritised allocation. Pure in the previous state; the new wander state goes out.
+glm::vec3 World::steer(std::size_t i, const SteeringAgent& self, std::span<const Neighbour> near,
+                       WanderState& wanderOut) const
+{
+    const TypeSteering& s = m_steering[m_info[i].typeIndex];
+    using B = Behaviour;
+    SteeringRequestList requests;
+    auto request = [&](B b, auto&& force) {
+        if (s.on(b))
+            requests.add(force(), s.w(b) * brainWeight(i, b));
+    };
+    const glm::vec3 p = self.position;
+    const bool hasGoal = m_goal[i] >= 0;
+    const glm::vec3 goal = hasGoal ? navGoal(i, glm::vec3(m_goalSpot[i].x, p.y, m_goalSpot[i].y)) : p + self.forward;
+    const std::int32_t leaderIndex = m_leader[i];
+    Neighbour leader;
+    if (leaderIndex >= 0) {
+        const auto j = std::size_t(leaderIndex);
+        leader = {m_pos[j], m_vel[j], m_fwd[j], m_radius[j], m_info[j].id};
+    }
+
+    if (s.on(B::Containment)) {
+        // Only agents whose probes can reach the bounds ask; the rest are far inside.
+        const float probe = s.containment.probeMinM + s.containment.probeLookaheadS * self.speed() + self.radius;
+        const glm::vec3 lo = p - m_bounds.min, hi = m_bounds.max - p;
+        const float nearest = s.vehicle.flying ? std::min({lo.x, lo.y, lo.z, hi.x, hi.y, hi.z})
+                                               : std::min({lo.x, lo.z, hi.x, hi.z});  // walkers ignore height
+        if (nearest < probe)
+            requests.add(stayInside(self, m_bounds, s.containment), s.w(B::Containment) * brainWeight(i, B::Containment));
+    }
+    steerAroundStatics(i, self, goal, requests);
     // Separation and collision avoidance leave to lower-priority neighbours the whole
     // of making way (WorldPriority.h).
     // (The buffer is only written when priorities differ, and only as far as it is read.)

@@ -52,10 +52,15 @@ void World::step()
             m_nextUp[i] = m_up[i];
             m_nextWander[i] = m_wander[i];
             m_nearCount[i] = 0;
+            m_collideFree[i] = 0;  // a stopped boid's last flag no longer holds: others may come
             continue;
         }
         if (m_boidKernel[m_info[i].typeIndex]) {
             stepBoid(i);  // boids: sense, steer and integrate in one pass (WorldFlock.cpp)
+            continue;
+        }
+        if (m_walkKernel[m_info[i].typeIndex] && m_path[i] < 0) {
+            stepWalker(i);  // walkers in the open: the same (WorldWalk.cpp)
             continue;
         }
         const SteeringAgent self = steeringAgent(i);

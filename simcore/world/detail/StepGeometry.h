@@ -1,6 +1,8 @@
 #pragma once
-// Small planar geometry and tuning constants shared by the step's phases (WorldStep.cpp,
-// WorldSteer.cpp). Internal to simcore/world; inline, no state.
+// Small planar geometry shared by the step's phases (WorldStep.cpp, WorldSteer.cpp), and
+// their constants (StepConstants.h). Internal to simcore/world; inline, no state.
+
+#include "simcore/world/detail/StepConstants.h"
 
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
@@ -35,16 +37,5 @@ inline glm::vec2 closestOnSegment(glm::vec2 p, glm::vec2 a, glm::vec2 b)
 }
 
 inline bool isFinite(glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
-
-// Most walls and obstacles one agent considers in a step.
-constexpr std::size_t kMaxNearWalls = 16, kMaxNearObstacles = 8;
-// How near its own spot in the goal area an agent stops for good.
-constexpr float kSpotToleranceM = 0.1f;
-// How quickly an agent with nowhere to go brakes to a stand, s.
-constexpr float kStandStillResponseS = 0.5f;
-// Inside its goal, an agent this near (body to body) a stopped agent settles too.
-constexpr float kSettleGapM = 0.05f;
-// Overlap tolerance: touching within 1 cm is contact, not overlap.
-constexpr float kOverlapToleranceM = 0.01f;
 
 }  // namespace throng::sim::detail

@@ -1,0 +1,13 @@
+#pragma once
+// Thresholds of the steering functions that the fused kernels (world/WorldWalk.cpp)
+// repeat inline; one definition, so the kernel and the function cannot part.
+
+namespace throng::sim::detail {
+
+// Below this speed (m/s) the velocity no longer says where the agent faces (VehicleModel.cpp).
+constexpr float kStoppedSpeed = 1e-3f;
+// Below this lateral offset (m) a threat counts as dead ahead and the agent passes on its
+// right (UnalignedCollisionAvoidance.cpp).
+constexpr float kDeadAheadM = 1e-3f;
+
+}  // namespace throng::sim::detail

@@ -1,0 +1,323 @@
+// The walker kernel: one agent step (sense, steer, avoid, integrate, constrain) for a
+// ground type whose behaviours are only arrival, seek, separation, unaligned collision
+// avoidance, containment, wall following, obstacle avoidance, wander and reciprocal
+// avoidance (those of `cross`, `corridor` and of an ordinary crowd), fused. It computes what World::steer, World::avoidReciprocally and
+// integrateVehicle compute for such an agent, operation for operation in the same order,
+// so the result is bit-identical to the general path (TestWalkKernel checks it); but in
+// one pass over the neighbours, read by index (no Neighbour copies, no request list),
+// with the squared distances the search already has and the type's constants made
+// usable once instead of per agent.
+#include "simcore/world/World.h"
+#include "simcore/world/NearestList.h"
+
+#include "simcore/steering/UninitialisedArray.h"
+#include "simcore/steering/detail/SteeringConstants.h"
+#include "simcore/steering/detail/SteeringMath.h"
+#include "simcore/world/Rng.h"
+#include "simcore/world/detail/StepConstants.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+
+namespace throng::sim {
+
+using namespace detail;
+
+namespace {
+
+// steerTowards (SteeringMath.h) with its gain (mass / response time) made once per type.
+[[gnu::always_inline]] inline glm::vec3 towardsVelocity(glm::vec3 velocity, glm::vec3 desired, float gain, float maxForce)
+{
+    const glm::vec3 dv = finiteOrZero(desired) - velocity;
+    if (dv == glm::vec3(0.0f))
+        return glm::vec3(0.0f);
+    return truncate(dv * gain, maxForce);
+}
+
+// Behaviours the kernel computes. Path following only for agents without a path (then
+// World::steer asks nothing of it either; World::step sends the others the general way).
+bool fusable(const TypeSteering& s)
+{
+    using B = Behaviour;
+    if (s.vehicle.flying || s.wander.flying || s.priority)
+        return false;
+    for (std::size_t b = 0; b < kBehaviourCount; ++b) {
+        const auto behaviour = Behaviour(b);
+        const bool allowed = behaviour == B::Containment || behaviour == B::WallFollowing ||
+                             behaviour == B::ObstacleAvoidance || behaviour == B::Separation ||
+                             behaviour == B::UnalignedCollisionAvoidance || behaviour == B::PathFollowing ||
+                             behaviour == B::Arrival || behaviour == B::Seek || behaviour == B::Wander ||
+                             behaviour == B::ReciprocalAvoidance;
+        if (s.weight[b] > 0.0f && !allowed)
+            return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+void World::buildWalkKernel(bool enabled)
+{
+    // Brains change weights and speeds per agent, layers or priorities change whom an agent
+    // perceives and avoids, and signals hold agents back: those worlds keep the general path.
+    // Walls and obstacles the kernel steers round and constrains against as steer and
+    // World::step do, through the same functions (steerAroundStatics, constrain).
+    const bool plain = enabled && !m_brains && !m_makingWay && m_traffic.signal.empty();
+    const bool walls = !m_walls.segments().empty(), obstacles = !m_circles.empty() || !m_boxes.empty();
+    m_walkKernel.assign(m_steering.size(), 0);
+    m_walkTypes.assign(m_steering.size(), WalkType{});
+    for (std::size_t t = 0; t < m_steering.size(); ++t) {
+        const TypeSteering& s = m_steering[t];
+        m_walkKernel[t] = plain && m_types[t].kind != AgentKind::Flier && fusable(s) ? 1 : 0;
+        // Each constant as the behaviour's function computes it from the parameters.
+        const float mass = effectiveMass(m_types[t].mass);
+        auto gain = [&](float responseTimeS) {
+            return mass / (std::isfinite(responseTimeS) ? std::max(responseTimeS, kMinResponseTimeS) : kMinResponseTimeS);
+        };
+        auto weight = [&](Behaviour b) { return s.on(b) ? s.w(b) : 0.0f; };
+        WalkType& w = m_walkTypes[t];
+        w.wContainment = weight(Behaviour::Containment);
+        w.wSeparation = weight(Behaviour::Separation);
+        w.wUnaligned = weight(Behaviour::UnalignedCollisionAvoidance);
+        w.wArrival = weight(Behaviour::Arrival);
+        w.wSeek = weight(Behaviour::Seek);
+        w.wWander = weight(Behaviour::Wander);
+        w.reciprocal = s.on(Behaviour::ReciprocalAvoidance);
+        w.aroundStatics = (walls && s.on(Behaviour::WallFollowing)) || (obstacles && s.on(Behaviour::ObstacleAvoidance));
+        w.constrained = walls || !m_circles.empty();  // as World::step's hasStatics
+        w.maxForce = nonNegative(m_types[t].maxForce);
+        w.range = nonNegative(s.separation.rangeM);
+        w.damping = mass / std::max(nonNegative(s.separation.dampingTimeS), kMinResponseTimeS);
+        w.horizonS = nonNegative(s.unaligned.horizonS);
+        w.marginM = nonNegative(s.unaligned.marginM);
+        w.brake = std::clamp(finiteOr(s.unaligned.brakeFraction, 0.0f), 0.0f, 1.0f);
+        w.lateral = std::sqrt(1.0f - w.brake * w.brake);
+        w.toleranceM = nonNegative(s.arrival.toleranceM);
+        w.slowingM = std::max(nonNegative(s.arrival.slowingDistanceM), kTiny);
+        w.gainArrival = gain(s.arrival.responseTimeS);
+        w.gainSeek = gain(s.seek.responseTimeS);
+        w.dtOverMass = m_dt / mass;
+    }
+}
+
+void World::stepWalker(std::size_t i)
+{
+    const std::uint16_t type = m_info[i].typeIndex;
+    const TypeSteering& s = m_steering[type];
+    const TypeParams& t = m_types[type];
+    const WalkType& w = m_walkTypes[type];
+    const glm::vec3 p = m_pos[i], v = m_vel[i], fwd = m_fwd[i];
+    const float radius = m_radius[i], maxSpeed = m_maxSpeed[i];
+    const AgentId id = m_info[i].id;
+
+    // Sense: the k nearest in the perception radius and view cone, nearest first, ties by
+    // index (gatherNeighbours, without the layers and priorities this world lacks).
+    constexpr std::size_t k = kMaxNeighbours;
+    NearestList<k> best;
+    float bound = t.perception * t.perception;
+    const float c = t.cosHalfView;
+    m_grid.forEachNearest(p, t.perception, [&] { return bound; }, [&](std::uint32_t j, const glm::vec3& q) {
+        const glm::vec3 d = q - p;
+        const float d2 = glm::dot(d, d);
+        if (d2 > bound || j == i)
+            return;
+        if (outsideViewCone(d, d2, fwd, c)) {
+            const float contact = radius + m_radius[j];
+            if (d2 > contact * contact)
+                return;
+        }
+        if (best.insert(nearestKey(d2, j)) && best.full())
+            bound = best.worstDistance2();
+    });
+    const std::size_t count = best.count;
+    m_nearCount[i] = std::uint8_t(count);
+
+    // One pass over the neighbours: separation's push (separate), the soonest threat
+    // (avoidUnalignedCollisions), and the planar neighbours and oncoming walkers of
+    // reciprocal avoidance (World::avoidReciprocally).
+    const float r = nonNegative(radius), range = w.range, maxForce = w.maxForce;
+    const float horizon = w.horizonS;
+    const bool unaligned = w.wUnaligned > 0.0f && horizon > kTiny;
+    glm::vec3 push(0.0f);
+    float threatT = -1.0f;
+    AgentId threatId = 0;
+    std::uint32_t threatJ = 0;
+    glm::vec3 threatOffset(0.0f);
+    UninitialisedArray<PlanarNeighbour, kMaxNeighbours> others;  // the first `count` are written, and read
+    std::size_t oncoming = 0;
+    const glm::vec2 fwd2 = xz(fwd), p2 = xz(p);
+    std::uint32_t* nearIndex = &m_nearIndex[i * k];
+    for (std::size_t n = 0; n < count; ++n) {
+        const auto j = best.index(n);
+        nearIndex[n] = j;
+        const glm::vec3 q = m_pos[j], vj = m_vel[j];
+        const float rj = m_radius[j];
+        if (w.wSeparation > 0.0f) {
+            // The squared distance is the search key's (the same dot product, negated offset).
+            const float contact = r + nonNegative(rj), reach = contact + range;
+            const float d = std::sqrt(std::bit_cast<float>(std::uint32_t(best.keys[n] >> 32)));
+            if (d < reach) {
+                const glm::vec3 rel = p - q;
+                const float reference = contact > kTiny ? contact : range;
+                const float weight = reference / std::max(d, reference / kMaxSeparationWeight);
+                const float fade = range > kTiny ? std::min(1.0f, (reach - d) / range) : 1.0f;
+                const glm::vec3 away = d > kTiny ? rel / d : separationAxis(id, m_info[j].id);
+                const float opening = glm::dot(v - vj, away);
+                push += away * (fade * (maxForce * weight - w.damping * opening));
+            }
+        }
+        if (unaligned) {
+            const glm::vec3 dp = q - p, dv = vj - v;
+            const float dv2 = glm::dot(dv, dv);
+            if (dv2 > kTiny * kTiny) {
+                const float tc = -glm::dot(dp, dv) / dv2;
+                if (tc >= 0.0f && tc <= horizon) {
+                    const glm::vec3 offset = dp + dv * tc;
+                    const float clear = r + nonNegative(rj) + w.marginM;
+                    const AgentId other = m_info[j].id;
+                    if (glm::length(offset) < clear &&
+                        (threatT < 0.0f || tc < threatT || (tc == threatT && other < threatId))) {
+                        threatT = tc;
+                        threatId = other;
+                        threatJ = j;
+                        threatOffset = offset;
+                    }
+                }
+            }
+        }
+        if (w.reciprocal) {
+            const bool stopped = m_stopped[j] != 0;
+            PlanarNeighbour& o = others[n];
+            o = {xz(q), xz(vj), rj, stopped ? 1.0f : 0.5f};
+            if (!stopped && glm::dot(xz(m_fwd[j]), fwd2) < -0.5f && glm::dot(o.position - p2, fwd2) > 0.0f)
+                ++oncoming;
+        }
+    }
+
+    // Steer: World::steer's requests in its order, blended (blendWeighted).
+    const bool hasGoal = m_goal[i] >= 0;
+    glm::vec3 sum(0.0f);
+    auto add = [&](glm::vec3 force, float weight) {
+        const glm::vec3 f = force * weight;
+        if (isFinite(f))
+            sum += f;
+    };
+    // Where seek and arrival aim: the goal's spot for this agent, or its navigation target (navGoal).
+    const glm::vec3 goal = !hasGoal ? p + fwd
+                           : m_nav.active && m_nav.hasTarget[i]
+                               ? glm::vec3(m_nav.target[i].x, p.y, m_nav.target[i].y)
+                               : glm::vec3(m_goalSpot[i].x, p.y, m_goalSpot[i].y);
+    const float speedNow = glm::length(v);
+    if (w.wContainment > 0.0f) {
+        const float probe = s.containment.probeMinM + s.containment.probeLookaheadS * speedNow + radius;
+        const glm::vec3 lo = p - m_bounds.min, hi = m_bounds.max - p;
+        if (std::min({lo.x, lo.z, hi.x, hi.z}) < probe)
+            add(stayInside(steeringAgent(i), m_bounds, s.containment), w.wContainment);
+    }
+    if (w.aroundStatics) {
+        // Wall following and obstacle avoidance: steer's own requests (WorldSteer.cpp).
+        SteeringRequestList around;
+        steerAroundStatics(i, steeringAgent(i), goal, around);
+        for (const SteeringRequest& request : around.requests())
+            add(request.force, request.weight);
+    }
+    if (w.wSeparation > 0.0f)
+        add(push, w.wSeparation);
+    if (w.wUnaligned > 0.0f) {
+        glm::vec3 force(0.0f);
+        if (threatT >= 0.0f) {
+            // heading(agent), the agent's right, and the side and brake of the avoidance.
+            const glm::vec3 h = speedNow > kTiny && speedNow < kInfinity ? v * (1.0f / speedNow)
+                                                                          : normalizeOr(fwd, glm::vec3(0.0f, 0.0f, 1.0f));
+            const glm::vec3 right = normalizeOr(glm::cross(h, normalizeOr(m_up[i], kWorldUp)), rightOfForward(h));
+            const float sideSign = glm::dot(threatOffset, right) > kDeadAheadM ? -1.0f : 1.0f;
+            const float urgency = 1.0f - threatT / horizon;
+            const glm::vec3 threatForward =
+                normalizeOr(m_vel[threatJ], normalizeOr(m_fwd[threatJ], glm::vec3(0.0f)));
+            const bool headOn = glm::dot(h, threatForward) < s.unaligned.headOnCosine;
+            const float brake = headOn ? w.brake : 0.0f;
+            const glm::vec3 lateralPart = right * (sideSign * (headOn ? w.lateral : 1.0f));
+            const glm::vec3 brakePart = v == glm::vec3(0.0f) ? glm::vec3(0.0f) : -h * brake;
+            force = (lateralPart + brakePart) * (maxForce * urgency);
+        }
+        add(force, w.wUnaligned);
+    }
+    if (hasGoal && w.wArrival > 0.0f) {
+        // Arrival: the desired speed falls linearly to zero at the goal (arrivalVelocity).
+        const glm::vec3 offset = finiteOrZero(goal - p);
+        const float dist = glm::length(offset);
+        glm::vec3 desired(0.0f);
+        if (!(dist <= w.toleranceM || dist <= kTiny))
+            desired = offset * (nonNegative(maxSpeed) * std::min(1.0f, dist / w.slowingM) / dist);
+        add(towardsVelocity(v, desired, w.gainArrival, maxForce), w.wArrival);
+    }
+    if (hasGoal && w.wSeek > 0.0f)
+        add(towardsVelocity(v, normalizeOr(finiteOrZero(goal - p), glm::vec3(0.0f)) * nonNegative(maxSpeed),
+                            w.gainSeek, maxForce),
+            w.wSeek);
+    WanderState wanderNext = m_wander[i];
+    if (w.wWander > 0.0f) {
+        const std::uint64_t key = rngKey(m_seed, id, m_step);
+        const glm::vec3 random(rngRangeOf(key, kWanderX, -1.0f, 1.0f), rngRangeOf(key, kWanderY, -1.0f, 1.0f),
+                               rngRangeOf(key, kWanderZ, -1.0f, 1.0f));
+        const WanderResult result = wander(steeringAgent(i), m_wander[i], random, s.wander);
+        wanderNext = result.state;
+        add(result.force, w.wWander);
+    }
+    // A walker with nowhere to go comes to rest (as World::steer).
+    if (!hasGoal && m_leader[i] < 0 && !(w.wWander > 0.0f))
+        add(-v * (t.mass / kStandStillResponseS), 1.0f);
+    glm::vec3 force = truncate(sum, t.maxForce) + glm::vec3(0.0f);  // + the brain's turn: none
+
+    // Avoid: the velocity the blend asks for becomes the nearest that touches no neighbour
+    // within the horizon (World::avoidReciprocally between equals).
+    if (w.reciprocal && t.mass > 0.0f && m_dt > 0.0f) {
+        const glm::vec3 wanted = v + force * (m_dt / t.mass);
+        glm::vec2 preferred(wanted.x, wanted.z);
+        const float speed = glm::length(preferred);
+        if (speed > maxSpeed && speed > 0.0f)
+            preferred *= maxSpeed / speed;
+        if (oncoming > 0 && s.reciprocal.keepRightRad > 0.0f) {
+            const glm::vec2 turn = s.keepRightTurn[std::min<std::size_t>(oncoming, 3) - 1];
+            const glm::vec2 right(-preferred.y, preferred.x);
+            preferred = preferred * turn.x + right * turn.y;
+        }
+        const PlanarBody body{p2, xz(v), radius, maxSpeed};
+        const glm::vec2 chosen = sim::avoidReciprocally(body, preferred, {others.data(), count}, m_dt, s.reciprocal);
+        force = (glm::vec3(chosen.x, 0.0f, chosen.y) - glm::vec3(v.x, 0.0f, v.z)) * (t.mass / m_dt);
+    }
+
+    // Integrate: integrateVehicle's walker step (VehicleModel.cpp) on a finite state, then
+    // stand on the ground (World::step).
+    const glm::vec3 f = truncate(finiteOrZero(force), t.maxForce);
+    glm::vec3 vel = truncate(v + f * w.dtOverMass, nonNegative(maxSpeed));
+    vel.y = 0.0f;
+    vel = finiteOrZero(vel);
+    glm::vec3 pos = finiteOrZero(p + vel * m_dt);
+    vel.y = 0.0f;
+    const float speed = glm::length(vel);
+    glm::vec3 nextFwd;
+    if (speed > kStoppedSpeed) {
+        nextFwd = vel / speed;
+    } else {
+        const glm::vec3 unit = normalizeOr(fwd, glm::vec3(0.0f, 0.0f, 1.0f));
+        nextFwd = normalizeOr(glm::vec3(unit.x, 0.0f, unit.z), glm::vec3(0.0f, 0.0f, 1.0f));
+    }
+    // Constrain: out of walls and obstacles, never through a wall (World::constrain).
+    if (w.constrained)
+        constrain(i, p, pos);
+    pos.y = m_terrain.heights.empty() ? 0.0f : groundHeight(pos.x, pos.z);  // no terrain: flat at 0
+    glm::vec3 nextVel = (pos - p) / m_dt;
+    nextVel.y = 0.0f;
+    m_nextPos[i] = pos;
+    m_nextVel[i] = nextVel;
+    m_nextFwd[i] = nextFwd;
+    m_nextSide[i] = rightOfForward(nextFwd);
+    m_nextUp[i] = kWorldUp;
+    m_nextWander[i] = wanderNext;
+}
+
+}  // namespace throng::sim

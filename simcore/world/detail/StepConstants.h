@@ -1,0 +1,25 @@
+#pragma once
+// Tuning constants and random streams of the step's phases, in one place for the general
+// path (WorldStep.cpp, WorldSteer.cpp) and the walker kernel (WorldWalk.cpp). Only
+// constants: includable beside steering/detail/SteeringMath.h, unlike StepGeometry.h.
+
+#include <cstddef>
+#include <cstdint>
+
+namespace throng::sim::detail {
+
+// The counter-based generator's streams a step draws (Rng.h): wander's random vector.
+enum StepStream : std::uint64_t { kWanderX = 101, kWanderY, kWanderZ };
+
+// Most walls and obstacles one agent considers in a step.
+constexpr std::size_t kMaxNearWalls = 16, kMaxNearObstacles = 8;
+// How near its own spot in the goal area an agent stops for good.
+constexpr float kSpotToleranceM = 0.1f;
+// How quickly an agent with nowhere to go brakes to a stand, s.
+constexpr float kStandStillResponseS = 0.5f;
+// Inside its goal, an agent this near (body to body) a stopped agent settles too.
+constexpr float kSettleGapM = 0.05f;
+// Overlap tolerance: touching within 1 cm is contact, not overlap.
+constexpr float kOverlapToleranceM = 0.01f;
+
+}  // namespace throng::sim::detail
