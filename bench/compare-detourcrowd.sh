@@ -36,10 +36,12 @@ threads=(); [ -n "${THREADS:-}" ] && threads=(--threads "$THREADS")
 throng=() detour=()
 for ((r = 0; r < runs; ++r)); do
   # Alternate the two so machine noise hits both alike.
-  t=$("$cli" bench --scenario cross --agents "$agents" --steps "$steps" "${threads[@]}" --quiet |
-      python3 -c 'import json,sys; print(json.load(sys.stdin)["agent_steps_per_second"])')
-  d=$("$peer_bin" --layout "$layout" --steps "$steps" |
-      sed -n 's/.*agent_steps_per_s=\([0-9.e+]*\).*/\1/p')
+  # Each run's output is read only after it ends: a reader starting up beside a
+  # half-second run on two cores takes one of them from it.
+  out=$("$cli" bench --scenario cross --agents "$agents" --steps "$steps" "${threads[@]}" --quiet)
+  t=$(python3 -c 'import json,sys; print(json.load(sys.stdin)["agent_steps_per_second"])' <<< "$out")
+  out=$("$peer_bin" --layout "$layout" --steps "$steps")
+  d=$(sed -n 's/.*agent_steps_per_s=\([0-9.e+]*\).*/\1/p' <<< "$out")
   throng+=("$t") detour+=("$d")
 done
 python3 - "$agents" "$steps" "${throng[*]}" "${detour[*]}" <<'PY'
