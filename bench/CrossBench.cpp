@@ -10,11 +10,11 @@
 // CROSS_DUMP lists the agents that did not arrive. "state_hash" (FNV-1a over the bits of
 // every position and velocity at the end) tells whether a change left the trajectories
 // bit-identical, and whether 1 and 2 threads agree.
+#include "bench/StateHash.h"
 #include "simcore/scenarios/BenchScenarios.h"
 #include "simcore/world/World.h"
 
 #include <algorithm>
-#include <bit>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -39,22 +39,6 @@ int writeLayout(const Scene& scene, const char* path)
         std::fprintf(f, "%.9g %.9g %.9g %.9g\n", double(scene.agents[i].position.x), double(scene.agents[i].position.z),
                      double(scene.goals[i].position.x), double(scene.goals[i].position.y));
     return std::fclose(f) == 0 ? 0 : 1;
-}
-
-// FNV-1a over the bits of the final positions and velocities.
-std::uint64_t stateHash(const World& world)
-{
-    std::uint64_t h = 1469598103934665603ull;
-    auto add = [&](float v) {
-        h ^= std::bit_cast<std::uint32_t>(v);
-        h *= 1099511628211ull;
-    };
-    for (std::size_t i = 0; i < world.agentCount(); ++i)
-        for (int c = 0; c < 3; ++c) {
-            add(world.positions()[i][c]);
-            add(world.velocities()[i][c]);
-        }
-    return h;
 }
 
 }  // namespace
@@ -146,6 +130,6 @@ int main(int argc, char** argv)
                 crossLayoutDescription(layout).c_str(), n, world.threads(), (unsigned long long)steps, world.timeS(),
                 seconds, double(steps) * double(n) / std::max(seconds, 1e-9), double(arrived) * perAgent, t95,
                 double(last), arrived ? sum / double(arrived) : -1.0, overlaps, overlaps * perAgent,
-                (unsigned long long)world.counters().nonFiniteValues, (unsigned long long)stateHash(world));
+                (unsigned long long)world.counters().nonFiniteValues, (unsigned long long)throng::bench::stateHash(world));
     return 0;
 }

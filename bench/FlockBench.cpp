@@ -6,10 +6,10 @@
 // pairs per step, and "state_hash" (FNV-1a over the bits of every position and velocity
 // at the end: whether a switch left the trajectories bit-identical).
 // Usage: throng-bench-flock [AGENTS=100000] [STEPS=60] [THREADS=0] [--no-kernel] [--no-shortcut]
+#include "bench/StateHash.h"
 #include "simcore/scenarios/BenchScenarios.h"
 #include "simcore/world/World.h"
 
-#include <bit>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
@@ -17,25 +17,6 @@
 #include <vector>
 
 using namespace throng::sim;
-
-namespace {
-
-std::uint64_t stateHash(const World& world)
-{
-    std::uint64_t h = 1469598103934665603ull;
-    auto add = [&](float v) {
-        h ^= std::bit_cast<std::uint32_t>(v);
-        h *= 1099511628211ull;
-    };
-    for (std::size_t i = 0; i < world.agentCount(); ++i)
-        for (int c = 0; c < 3; ++c) {
-            add(world.positions()[i][c]);
-            add(world.velocities()[i][c]);
-        }
-    return h;
-}
-
-}  // namespace
 
 int main(int argc, char** argv)
 {
@@ -70,6 +51,6 @@ int main(int argc, char** argv)
                 world.agentCount(), steps, options.boidKernel ? "true" : "false",
                 options.collideShortcut ? "true" : "false", seconds, seconds > 0.0 ? agentSteps / seconds : 0.0,
                 double(world.counters().overlappingPairs) / double(steps > 0 ? steps : 1),
-                static_cast<unsigned long long>(stateHash(world)));
+                static_cast<unsigned long long>(throng::bench::stateHash(world)));
     return 0;
 }
