@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <string>
 #include <system_error>
 
 namespace throng::exporting {
@@ -20,13 +21,17 @@ bool writeAgentFile(const sim::FrameCache& cache, std::size_t agent, const std::
         return false;
     std::string text;
     text.reserve(cache.frameCount() * 48);
-    // Ends where it left, or where an edit removed it (present before, not now).
-    bool seen = false;
-    for (std::size_t f = 0; f < cache.frameCount() && !cache.at(f, agent).out; ++f) {
+    // Starts where an edit added it (a first line names that frame), ends where it left
+    // or where an edit removed it (present before, not now).
+    std::size_t first = 0;
+    while (first < cache.frameCount() && !cache.at(first, agent).present)
+        ++first;
+    if (first > 0 && first < cache.frameCount())
+        text += "# first_frame " + std::to_string(first) + "\n";
+    for (std::size_t f = first; f < cache.frameCount() && !cache.at(f, agent).out; ++f) {
         const sim::AgentFrame& a = cache.at(f, agent);
-        if (seen && !a.present)
+        if (!a.present)
             break;
-        seen = seen || a.present;
         detail::appendFloat(text, a.position.x);
         text += ' ';
         detail::appendFloat(text, a.position.y);

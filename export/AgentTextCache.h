@@ -14,7 +14,9 @@ namespace throng::exporting {
 // `x y z rotYdeg speed` per recorded frame: metres, degrees about +Y (0 = +x,
 // counter-clockwise seen from above, as AgentFrame::headingRad), m/s; floats as the shortest
 // text that reads back exactly. An agent that leaves through an exit (AgentFrame::out)
-// has lines only for the frames before it left, so its file may be shorter. Creates `directory` when missing. All files are written to
+// has lines only for the frames before it left, so its file may be shorter; one an edit
+// added at frame k (AgentFrame::present) starts with the line `# first_frame k`, then
+// its lines from frame k; one an edit removed ends there. Creates `directory` when missing. All files are written to
 // a staging directory first and renamed into place only when every one is complete.
 ExportResult writeAgentTextCache(const sim::FrameCache& cache, const std::string& directory,
                                  const ProgressFn& progress = {});

@@ -6,6 +6,7 @@
 #include "GltfReadBack.h"
 #include "TestRegistry.h"
 
+#include "export/AgentTextCache.h"
 #include "export/GltfExporter.h"
 #include "export/TrajectoryCsv.h"
 #include "simcore/io/SceneIO.h"
@@ -17,6 +18,7 @@
 #include <QTest>
 
 #include <fstream>
+#include <string>
 
 using namespace throng;
 using namespace throng::sim;
@@ -51,6 +53,14 @@ std::size_t countLines(const std::string& path)
     for (std::string line; std::getline(in, line);)
         ++n;
     return n;
+}
+
+std::string firstLine(const std::string& path)
+{
+    std::ifstream in(path);
+    std::string line;
+    std::getline(in, line);
+    return line;
 }
 
 constexpr std::size_t kEdit = 24, kFrames = 49;
@@ -143,6 +153,14 @@ private slots:
         const std::string csv = dir.filePath("trajectories.csv").toStdString();
         QVERIFY(exporting::writeTrajectoryCsv(cache, csv).ok());
         QCOMPARE(countLines(csv), 5 * kFrames + (kEdit + 1) + (kFrames - kEdit - 1) + 1);
+        // Text cache: agent 7's file starts at frame 25 and says so; agent 2's ends at 24.
+        const std::string cacheDir = dir.filePath("cache").toStdString();
+        QVERIFY(exporting::writeAgentTextCache(cache, cacheDir).ok());
+        QCOMPARE(countLines(cacheDir + "/agent_7.txt"), 1 + (kFrames - kEdit - 1));
+        QCOMPARE(firstLine(cacheDir + "/agent_7.txt"), "# first_frame " + std::to_string(kEdit + 1));
+        QCOMPARE(countLines(cacheDir + "/agent_2.txt"), kEdit + 1);
+        QCOMPARE(countLines(cacheDir + "/agent_1.txt"), kFrames);
+        QVERIFY(firstLine(cacheDir + "/agent_1.txt").rfind('#', 0) == std::string::npos);
     }
 };
 
