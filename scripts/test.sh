@@ -19,5 +19,9 @@ if [ ! -f "$san/build.ninja" ]; then
     -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DTHRONG_BUILD_EDITOR=OFF >/dev/null
 fi
 cmake --build "$san" --target test_simcore test_worldbrain test_worldstate test_demos test_worldnav test_nav test_traffic test_brain test_export -- -j"$jobs"
+# TestExternalReaders is left out here: it runs third-party readers (Blender, three.js,
+# assimp) on our files in their own processes, which the sanitizers do not watch; the
+# export suite's other classes write the same files under them.
 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
-  ctest --test-dir "$san" --output-on-failure -j"$jobs" -L '^(simcore|worldbrain|nav|traffic|brain|export)$'
+  ctest --test-dir "$san" --output-on-failure -j"$jobs" -L '^(simcore|worldbrain|nav|traffic|brain|export)$' \
+  -E '^export\.TestExternalReaders$'
