@@ -28,8 +28,9 @@ public:
     // frame is dropped. At a later shown frame f, frames 0..f stay and the frames after
     // it are recomputed with the edited scene from frame f's state; playback goes on.
     // An edit may add or remove agents (the cache then keeps both sets: the frames before
-    // show the old crowd). When the runner cannot resume the edit (settings, lanes,
-    // crosswalks or vehicles changed) it starts over: frames dropped, playback paused at frame 0. An
+    // show the old crowd). When the runner cannot resume the edit (the settings changed:
+    // fps, duration, seed, bounds, navigation cell) it starts over: frames dropped, playback
+    // paused at frame 0. An
     // edit that changes nothing the simulation reads (a placed agent's hand-set look,
     // tint or height) keeps the frames and the playback as they are.
     void setScene(const sim::Scene& scene);
