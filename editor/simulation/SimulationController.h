@@ -30,9 +30,8 @@ public:
     // An edit may add or remove agents (the cache then keeps both sets: the frames before
     // show the old crowd). When the runner cannot resume the edit (the settings changed:
     // fps, duration, seed, bounds, navigation cell) it starts over: frames dropped, playback
-    // paused at frame 0. An
-    // edit that changes nothing the simulation reads (a placed agent's hand-set look,
-    // tint or height) keeps the frames and the playback as they are.
+    // paused at frame 0. An edit that changes nothing the simulation reads (a placed
+    // agent's hand-set look, tint or height) keeps the frames and the playback as they are.
     void setScene(const sim::Scene& scene);
 
     void play();
