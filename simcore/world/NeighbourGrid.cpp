@@ -124,6 +124,36 @@ void NeighbourGrid::rebuild(std::span<const glm::vec3> positions, bool sortByHei
     }
 }
 
+bool NeighbourGrid::aimSweep(glm::vec3 p, float r, Sweep& sweep) const
+{
+    const int cx = cellX(p.x), cz = cellZ(p.z);
+    const auto cell = std::uint32_t(cz * m_cols + cx);
+    if (sweep.cell == cell && sweep.radius == r)
+        return true;
+    // Cells span floor(d / cell) + 1 at most over a distance d: ceil(r / cell) around.
+    const float span = std::ceil(r * m_inv * 1.0001f);
+    if (!(span <= 3.0f))
+        return false;
+    const int s = std::max(1, int(span));
+    sweep.cell = cell;
+    sweep.radius = r;
+    sweep.count = 0;
+    auto add = [&](int x, int z) {
+        const std::size_t c = std::size_t(z) * std::size_t(m_cols) + std::size_t(x);
+        const int k = sweep.count++;
+        sweep.begin[k] = sweep.lo[k] = m_start[c];
+        sweep.end[k] = m_start[c + 1];
+        sweep.x0[k] = m_min.x + float(x) * m_cell;
+        sweep.z0[k] = m_min.y + float(z) * m_cell;
+    };
+    add(cx, cz);  // first: forEachNearestSweep never skips it (p may lie outside it, clamped in)
+    for (int z = std::max(0, cz - s); z <= std::min(m_rows - 1, cz + s); ++z)
+        for (int x = std::max(0, cx - s); x <= std::min(m_cols - 1, cx + s); ++x)
+            if (x != cx || z != cz)
+                add(x, z);
+    return true;
+}
+
 // One chunk: the same order with fewer passes over the cells (most of them empty).
 void NeighbourGrid::rebuildSerial(std::span<const glm::vec3> positions, std::span<const std::uint8_t> skip)
 {

@@ -114,6 +114,53 @@ public:
                 return;
         }
     }
+    // A cursor for forEachNearestSweep: the columns around one cell, and in each where
+    // the last query's height window began. One per thread; any state is valid.
+    struct Sweep {
+        static constexpr int kMaxColumns = 49;  // 7 x 7: a radius of up to 3 cells
+        std::uint32_t cell = UINT32_MAX;
+        float radius = -1.0f;
+        int count = 0;
+        std::uint32_t begin[kMaxColumns], end[kMaxColumns], lo[kMaxColumns];
+        float x0[kMaxColumns], z0[kMaxColumns];  // each column's low corner; the own column first
+    };
+    // forEachNearest for queries made in the grid's own order (order()): consecutive
+    // queries then lie in the same cell at rising heights, so each column's height window
+    // is found by moving the last one a step or two instead of by a search. Offers every
+    // agent within the bound as forEachNearest does (which others, is unspecified).
+    template <typename B, typename F>
+    void forEachNearestSweep(glm::vec3 p, float r, B&& boundSq, F&& f, Sweep& sweep) const
+    {
+        if (!m_byHeight || !(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && std::isfinite(r)) ||
+            !aimSweep(p, r, sweep)) {
+            forEachNearest(p, r, boundSq, f);
+            return;
+        }
+        const float reach = std::sqrt(std::min(r * r, boundSq())) * 1.0001f + 1e-4f;  // never skip on rounding
+        const float yLo = p.y - reach, yHi = p.y + reach, reach2 = reach * reach;
+        const glm::vec3* pos = m_sortedPos.data();
+        for (int k = 0; k < sweep.count; ++k) {
+            // How far across x and z the column lies (agents clamped into a border column
+            // lie beyond its edge, so this still bounds them).
+            const float cx = sweep.x0[k], cz = sweep.z0[k];
+            const float dx = std::max({0.0f, cx - p.x, p.x - (cx + m_cell)});
+            const float dz = std::max({0.0f, cz - p.z, p.z - (cz + m_cell)});
+            if (k > 0 && dx * dx + dz * dz > std::min(reach2, boundSq() * 1.0002f))
+                continue;
+            std::uint32_t lo = sweep.lo[k];
+            const std::uint32_t b = sweep.begin[k], e = sweep.end[k];
+            while (lo > b && pos[lo - 1].y >= yLo)
+                --lo;
+            while (lo < e && pos[lo].y < yLo)
+                ++lo;
+            sweep.lo[k] = lo;
+            for (std::uint32_t j = lo; j < e && pos[j].y <= yHi; ++j)
+                f(m_sorted[j], pos[j]);
+        }
+    }
+    // The agents in the grid's order (by cell, then by height): the order to make
+    // forEachNearestSweep queries in. Holds every agent only when none was skipped.
+    std::span<const std::uint32_t> order() const { return m_sorted; }
     bool sortedByHeight() const { return m_byHeight; }
     float cellM() const { return m_cell; }
     std::size_t memoryBytes() const
@@ -124,6 +171,10 @@ public:
     }
 
 private:
+    // Points the sweep at the columns around p's cell that a radius r can reach (the own
+    // column first), keeping it if it already is; false when they are too many.
+    bool aimSweep(glm::vec3 p, float r, Sweep& sweep) const;
+
     // rebuild with one chunk: count, prefix sums and scatter in place.
     void rebuildSerial(std::span<const glm::vec3> positions, std::span<const std::uint8_t> skip);
     // Sorts cells [firstCell, endCell) by height (rebuild's last pass).

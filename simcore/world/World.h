@@ -41,6 +41,10 @@ struct WorldOptions {
     // the overlap count, instead of trusting what the boids kernel found (tests compare)
     bool collideShortcut = true;
     bool walkKernel = true;     // false: walkers take the general steering path too (tests compare the two)
+    // false: agents step in index order and every boid's neighbour search starts from its
+    // perception radius, instead of in the grid's order from last step's neighbours (the
+    // result is the same; tests compare)
+    bool neighbourSweep = true;
 };
 
 class World {
@@ -177,7 +181,9 @@ private:
     // The boids kernel (WorldFlock.cpp): sense, steer and integrate fused for a flier type
     // whose behaviours are only separation, alignment, cohesion, pursuit, containment, wander.
     void buildBoidKernel(bool enabled, bool collideShortcut);
-    void stepBoid(std::size_t i);
+    // sweep: the thread's cursor when agents are stepped in the grid's order, else null.
+    void stepAgent(std::size_t i, bool hasStatics, NeighbourGrid::Sweep* sweep);
+    void stepBoid(std::size_t i, NeighbourGrid::Sweep* sweep);
     void prepareBoidStep();  // m_boidSpeedMax, before the agents step
     // The collide pass for agent i: m_resolvedPos[i] from m_nextPos[i] and the overlaps
     // with its neighbours (none looked for when the kernel found it collide-free).
@@ -297,6 +303,7 @@ private:
     NeighbourGrid m_grid;
     bool m_gridCurrent = false;  // the grid indexes the current positions
     bool m_hasFliers = false;    // then the grid also sorts by height for 3D queries
+    bool m_neighbourSweep = true;  // WorldOptions::neighbourSweep
     float m_maxRadius = 0.0f;    // the largest body radius, m
     StepCounters m_counters;
     std::uint64_t m_seed = 1;

@@ -127,7 +127,7 @@ void World::prepareBoidStep()
     m_boidSpeedMax = top < 0x7f800000 ? std::bit_cast<float>(top) : INFINITY;
 }
 
-void World::stepBoid(std::size_t i)
+void World::stepBoid(std::size_t i, NeighbourGrid::Sweep* sweep)
 {
     const std::uint16_t type = m_info[i].typeIndex;
     const TypeSteering& s = m_steering[type];
@@ -140,26 +140,56 @@ void World::stepBoid(std::size_t i)
     // index (as gatherNeighbours, without the layers and priorities a boid world lacks).
     constexpr std::size_t k = kMaxNeighbours;
     NearestList<k> best;
-    float bound = t.perception * t.perception;
+    const float perception2 = t.perception * t.perception;
+    float bound = perception2;
     // The nearest candidate left out for being outside the view cone (squared distance):
     // with the final bound, it tells how near an agent outside the list can be.
     float nearestUnseen2 = INFINITY;
     const float c = t.cosHalfView;
-    m_grid.forEachNearest(p, t.perception, [&] { return bound; }, [&](std::uint32_t j, const glm::vec3& q) {
-        const glm::vec3 d = q - p;
-        const float d2 = glm::dot(d, d);
-        if (d2 > bound || j == i)
-            return;
-        if (outsideViewCone(d, d2, fwd, c)) {
-            const float contact = radius + m_radius[j];
-            if (d2 > contact * contact) {
-                nearestUnseen2 = std::min(nearestUnseen2, d2);
+    auto search = [&](float startBound) {
+        best.count = 0;
+        bound = startBound;
+        nearestUnseen2 = INFINITY;
+        auto consider = [&](std::uint32_t j, const glm::vec3& q) {
+            const glm::vec3 d = q - p;
+            const float d2 = glm::dot(d, d);
+            if (d2 > bound || j == i)
                 return;
+            if (outsideViewCone(d, d2, fwd, c)) {
+                const float contact = radius + m_radius[j];
+                if (d2 > contact * contact) {
+                    nearestUnseen2 = std::min(nearestUnseen2, d2);
+                    return;
+                }
             }
+            if (best.insert(nearestKey(d2, j)) && best.full())
+                bound = best.worstDistance2();
+        };
+        if (sweep)
+            m_grid.forEachNearestSweep(p, t.perception, [&] { return bound; }, consider, *sweep);
+        else
+            m_grid.forEachNearest(p, t.perception, [&] { return bound; }, consider);
+    };
+    // Flocks move little in a step: last step's k nearest, where they are now, bound this
+    // step's k-th nearest from above. Searching within that bound visits far fewer cells
+    // and candidates; when k are found in it they are exactly the k nearest within the
+    // perception radius (everyone nearer lies inside the bound, and the grid offers all of
+    // them), and when fewer are found the search runs again in full. So the result never
+    // depends on the guess.
+    float guess2 = perception2;
+    if (m_neighbourSweep && m_nearCount[i] == k) {
+        const std::uint32_t* last = &m_nearIndex[i * k];
+        float far2 = 0.0f;
+        for (std::size_t n = 0; n < k; ++n) {
+            const std::uint32_t j = last[n];
+            const glm::vec3 d = j < m_pos.size() ? m_pos[j] - p : glm::vec3(INFINITY);
+            far2 = std::max(far2, glm::dot(d, d));
         }
-        if (best.insert(nearestKey(d2, j)) && best.full())
-            bound = best.worstDistance2();
-    });
+        guess2 = std::min(guess2, far2);
+    }
+    search(guess2);
+    if (!best.full() && guess2 < perception2)
+        search(perception2);
 
     const std::size_t count = best.count;
 

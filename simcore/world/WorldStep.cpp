@@ -40,67 +40,20 @@ void World::step()
     if (m_boidCountsOverlaps)
         prepareBoidStep();
 
-#pragma omp parallel for schedule(static, 256) num_threads(m_threads)
-    for (std::size_t i = 0; i < n; ++i) {
-        const TypeSteering& s = m_steering[m_info[i].typeIndex];
-        if (m_stopped[i]) {
-            // An agent that has arrived stays put: no dodging, no yo-yo.
-            m_nextPos[i] = m_pos[i];
-            m_nextVel[i] = glm::vec3(0.0f);
-            m_nextFwd[i] = m_fwd[i];
-            m_nextSide[i] = m_side[i];
-            m_nextUp[i] = m_up[i];
-            m_nextWander[i] = m_wander[i];
-            m_nearCount[i] = 0;
-            m_collideFree[i] = 0;  // a stopped boid's last flag no longer holds: others may come
-            continue;
-        }
-        if (m_boidKernel[m_info[i].typeIndex]) {
-            stepBoid(i);  // boids: sense, steer and integrate in one pass (WorldFlock.cpp)
-            continue;
-        }
-        if (m_walkKernel[m_info[i].typeIndex] && m_path[i] < 0) {
-            stepWalker(i);  // walkers in the open: the same (WorldWalk.cpp)
-            continue;
-        }
-        const SteeringAgent self = steeringAgent(i);
-        // Sense: nearby agents in the perception cone.
-        // (Uninitialised: only the first `count` are written, and only they are read.)
-        UninitialisedArray<Neighbour, kMaxNeighbours> near;
-        const std::size_t count = neighboursThisStep(i, near.data());
-        // Steer: the type's behaviours, combined.
-        WanderState wanderNext;
-        glm::vec3 force = steer(i, self, {near.data(), count}, wanderNext) + brainTurnForce(i, self);
-        if (s.on(Behaviour::ReciprocalAvoidance) && !s.vehicle.flying)
-            force = avoidReciprocally(i, self, force, {near.data(), count}, s);
-        force = obeySignal(i, self, force);
-        // Integrate: the simple vehicle model (Reynolds 1999).
-        SteeringAgent next = integrateVehicle(self, force, m_dt, s.vehicle);
-        capToBrainSpeed(i, self, next);
-        holdAtSignal(i, next.position);
-        // Constrain: no agent ends a step inside a wall or obstacle; walkers stand on the ground.
-        if (!s.vehicle.flying) {
-            if (hasStatics)
-                constrain(i, self.position, next.position);
-            next.position.y = groundHeight(next.position.x, next.position.z);
-            next.velocity = (next.position - self.position) / m_dt;
-            next.velocity.y = 0.0f;
-        } else if (const float floor = groundHeight(next.position.x, next.position.z) + self.radius;
-                   next.position.y < floor) {
-            // Fliers may skim the ground but never pass through it; the dive turns into
-            // level flight at no less than the stall speed.
-            next.position.y = floor;
-            next.velocity.y = std::max(next.velocity.y, 0.0f);
-            const float stall = std::min(s.vehicle.minSpeed, m_maxSpeed[i]), v = glm::length(next.velocity);
-            if (v < stall)
-                next.velocity = v > 1e-6f ? next.velocity * (stall / v) : next.forward * stall;
-        }
-        m_nextPos[i] = next.position;
-        m_nextVel[i] = next.velocity;
-        m_nextFwd[i] = next.forward;
-        m_nextSide[i] = next.side;
-        m_nextUp[i] = next.up;
-        m_nextWander[i] = wanderNext;
+    // With fliers, agents are stepped in the grid's order (by cell, then by height) when it
+    // holds them all: consecutive boids then query the same columns at rising heights
+    // (NeighbourGrid::forEachNearestSweep) and read neighbours that are already in cache.
+    // Each agent still reads only the old state and writes only its own next state, so
+    // the order changes nothing in the result.
+    const std::span<const std::uint32_t> gridOrder = m_grid.order();
+    const std::uint32_t* order =
+        m_neighbourSweep && m_grid.sortedByHeight() && gridOrder.size() == n ? gridOrder.data() : nullptr;
+#pragma omp parallel num_threads(m_threads)
+    {
+        NeighbourGrid::Sweep sweep;
+#pragma omp for schedule(static, 256)
+        for (std::size_t k = 0; k < n; ++k)
+            stepAgent(order ? order[k] : k, hasStatics, order ? &sweep : nullptr);
     }
     driveTrafficAgents();
 
@@ -160,6 +113,70 @@ void World::step()
     countStep();
     countLeaderOvertakes();
     trafficAfterStep();
+}
+
+// One agent's sense, steer and integrate: its next state from the old one.
+void World::stepAgent(std::size_t i, bool hasStatics, NeighbourGrid::Sweep* sweep)
+{
+    const TypeSteering& s = m_steering[m_info[i].typeIndex];
+    if (m_stopped[i]) {
+        // An agent that has arrived stays put: no dodging, no yo-yo.
+        m_nextPos[i] = m_pos[i];
+        m_nextVel[i] = glm::vec3(0.0f);
+        m_nextFwd[i] = m_fwd[i];
+        m_nextSide[i] = m_side[i];
+        m_nextUp[i] = m_up[i];
+        m_nextWander[i] = m_wander[i];
+        m_nearCount[i] = 0;
+        m_collideFree[i] = 0;  // a stopped boid's last flag no longer holds: others may come
+        return;
+    }
+    if (m_boidKernel[m_info[i].typeIndex]) {
+        stepBoid(i, sweep);  // boids: sense, steer and integrate in one pass (WorldFlock.cpp)
+        return;
+    }
+    if (m_walkKernel[m_info[i].typeIndex] && m_path[i] < 0) {
+        stepWalker(i);  // walkers in the open: the same (WorldWalk.cpp)
+        return;
+    }
+    const SteeringAgent self = steeringAgent(i);
+    // Sense: nearby agents in the perception cone.
+    // (Uninitialised: only the first `count` are written, and only they are read.)
+    UninitialisedArray<Neighbour, kMaxNeighbours> near;
+    const std::size_t count = neighboursThisStep(i, near.data());
+    // Steer: the type's behaviours, combined.
+    WanderState wanderNext;
+    glm::vec3 force = steer(i, self, {near.data(), count}, wanderNext) + brainTurnForce(i, self);
+    if (s.on(Behaviour::ReciprocalAvoidance) && !s.vehicle.flying)
+        force = avoidReciprocally(i, self, force, {near.data(), count}, s);
+    force = obeySignal(i, self, force);
+    // Integrate: the simple vehicle model (Reynolds 1999).
+    SteeringAgent next = integrateVehicle(self, force, m_dt, s.vehicle);
+    capToBrainSpeed(i, self, next);
+    holdAtSignal(i, next.position);
+    // Constrain: no agent ends a step inside a wall or obstacle; walkers stand on the ground.
+    if (!s.vehicle.flying) {
+        if (hasStatics)
+            constrain(i, self.position, next.position);
+        next.position.y = groundHeight(next.position.x, next.position.z);
+        next.velocity = (next.position - self.position) / m_dt;
+        next.velocity.y = 0.0f;
+    } else if (const float floor = groundHeight(next.position.x, next.position.z) + self.radius;
+               next.position.y < floor) {
+        // Fliers may skim the ground but never pass through it; the dive turns into
+        // level flight at no less than the stall speed.
+        next.position.y = floor;
+        next.velocity.y = std::max(next.velocity.y, 0.0f);
+        const float stall = std::min(s.vehicle.minSpeed, m_maxSpeed[i]), v = glm::length(next.velocity);
+        if (v < stall)
+            next.velocity = v > 1e-6f ? next.velocity * (stall / v) : next.forward * stall;
+    }
+    m_nextPos[i] = next.position;
+    m_nextVel[i] = next.velocity;
+    m_nextFwd[i] = next.forward;
+    m_nextSide[i] = next.side;
+    m_nextUp[i] = next.up;
+    m_nextWander[i] = wanderNext;
 }
 
 glm::vec3 World::separateBodies(std::size_t i) const

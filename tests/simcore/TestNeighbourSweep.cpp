@@ -1,0 +1,164 @@
+// The neighbour sweep (NeighbourGrid::forEachNearestSweep, WorldOptions::neighbourSweep):
+// boids step in the grid's order, each search moving the last one's height windows and
+// starting from last step's k nearest. It must change nothing: a k-nearest search through
+// the sweep finds exactly what a brute-force scan finds, and a flock run with and without
+// it ends bit-identical, for 1 and 2 threads, from a packed start and once it has gathered.
+#include "TestRegistry.h"
+
+#include "simcore/scenarios/BenchScenarios.h"
+#include "simcore/world/NearestList.h"
+#include "simcore/world/NeighbourGrid.h"
+#include "simcore/world/World.h"
+
+#include <QTest>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <random>
+#include <set>
+#include <vector>
+
+using namespace throng::sim;
+
+namespace {
+
+constexpr std::size_t kK = 8;
+
+// Agent i's k nearest within r (ties by index), by brute force.
+std::vector<std::uint64_t> bruteNearest(const std::vector<glm::vec3>& pos, std::size_t i, float r)
+{
+    std::vector<std::uint64_t> keys;
+    for (std::size_t j = 0; j < pos.size(); ++j) {
+        const glm::vec3 d = pos[j] - pos[i];
+        const float d2 = glm::dot(d, d);
+        if (j != i && d2 <= r * r)
+            keys.push_back(nearestKey(d2, std::uint32_t(j)));
+    }
+    std::sort(keys.begin(), keys.end());
+    keys.resize(std::min(keys.size(), kK));
+    return keys;
+}
+
+struct Run {
+    std::vector<glm::vec3> pos, vel, up;
+    std::uint64_t overlaps = 0;
+};
+
+Run run(const Scene& s, bool sweep, int threads, int steps)
+{
+    WorldOptions o;
+    o.threads = threads;
+    o.neighbourSweep = sweep;
+    World w(s, o);
+    for (int k = 0; k < steps; ++k)
+        w.step();
+    return {{w.positions().begin(), w.positions().end()},
+            {w.velocities().begin(), w.velocities().end()},
+            {w.ups().begin(), w.ups().end()},
+            w.counters().overlappingPairs};
+}
+
+bool same(const std::vector<glm::vec3>& a, const std::vector<glm::vec3>& b)
+{
+    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(glm::vec3)) == 0;
+}
+
+}  // namespace
+
+class TestNeighbourSweep : public QObject {
+    Q_OBJECT
+private slots:
+    void sweepFindsTheNearest_data()
+    {
+        QTest::addColumn<float>("cell");
+        QTest::newRow("cells as large as the radius") << 3.0f;
+        QTest::newRow("half the radius") << 1.5f;
+        QTest::newRow("a little over a third of the radius") << 1.1f;
+    }
+
+    // Every agent's 8 nearest within 3 m, searched in the grid's order through one sweep
+    // with the bound shrinking as the list fills, as the boids kernel does: the same as
+    // brute force, each candidate offered at most once. The crowd has a sparse part, a
+    // dense clump, agents stacked in one column and agents outside the bounds (clamped
+    // into border cells).
+    void sweepFindsTheNearest()
+    {
+        QFETCH(float, cell);
+        const float r = 3.0f;
+        std::mt19937 gen(7);
+        std::uniform_real_distribution<float> wide(-24.0f, 24.0f), clump(-2.0f, 2.0f), height(0.0f, 40.0f);
+        std::vector<glm::vec3> pos;
+        for (int k = 0; k < 2500; ++k)
+            pos.push_back({wide(gen), height(gen), wide(gen)});
+        for (int k = 0; k < 1500; ++k)
+            pos.push_back({5.0f + clump(gen), 20.0f + clump(gen), -3.0f + clump(gen)});
+        for (int k = 0; k < 200; ++k)
+            pos.push_back({-10.2f, 0.1f * float(k), 7.7f});
+        for (int k = 0; k < 60; ++k)
+            pos.push_back({27.0f + 0.05f * float(k), 10.0f, -26.0f - 0.1f * float(k)});
+        NeighbourGrid grid;
+        grid.configure({-25.0f, -25.0f}, {25.0f, 25.0f}, cell);
+        grid.rebuild(pos, true);
+        QCOMPARE(grid.order().size(), pos.size());
+        NeighbourGrid::Sweep sweep;
+        std::size_t full = 0;
+        for (const std::uint32_t i : grid.order()) {
+            NearestList<kK> best;
+            float bound = r * r;
+            std::set<std::uint32_t> offered;
+            bool twice = false;
+            auto consider = [&](std::uint32_t j, const glm::vec3& q) {
+                twice = twice || !offered.insert(j).second;
+                const glm::vec3 d = q - pos[i];
+                const float d2 = glm::dot(d, d);
+                if (j == i || d2 > bound)
+                    return;
+                if (best.insert(nearestKey(d2, j)) && best.full())
+                    bound = best.worstDistance2();
+            };
+            grid.forEachNearestSweep(pos[i], r, [&] { return bound; }, consider, sweep);
+            QVERIFY2(!twice, "an agent was offered twice");
+            const std::vector<std::uint64_t> expected = bruteNearest(pos, i, r);
+            QCOMPARE(best.count, expected.size());
+            QVERIFY2(std::equal(expected.begin(), expected.end(), best.keys.begin()),
+                     qPrintable(QString("agent %1: not its nearest").arg(i)));
+            full += best.full();
+        }
+        QVERIFY(full > pos.size() / 3);  // the dense part fills its lists and shrinks the bound
+    }
+
+    void flockIsUnchanged_data()
+    {
+        QTest::addColumn<float>("spacing");
+        QTest::addColumn<int>("steps");
+        QTest::newRow("packed, overlapping") << 0.38f << 30;
+        QTest::newRow("the bench flock, gathering") << 0.0f << 200;
+    }
+
+    // With the sweep (1 and 2 threads) and without it (1 thread): the same bits, and the
+    // same overlap count.
+    void flockIsUnchanged()
+    {
+        QFETCH(float, spacing);
+        QFETCH(int, steps);
+        Scene s = makeFlockScenario(1500, 3);
+        if (spacing > 0.0f)
+            for (std::size_t k = 1; k < s.agents.size(); ++k) {
+                const auto i = float(k);
+                s.agents[k].position = glm::vec3(100.0f + spacing * std::fmod(i, 12.0f),
+                                                 30.0f + spacing * std::fmod(std::floor(i / 12.0f), 12.0f),
+                                                 -12.0f + spacing * std::floor(i / 144.0f));
+            }
+        const Run plain = run(s, false, 1, steps);
+        for (int threads : {1, 2}) {
+            const Run swept = run(s, true, threads, steps);
+            QVERIFY2(same(plain.pos, swept.pos) && same(plain.vel, swept.vel) && same(plain.up, swept.up),
+                     qPrintable(QString("%1 threads: the sweep changed the flock").arg(threads)));
+            QCOMPARE(swept.overlaps, plain.overlaps);
+        }
+    }
+};
+
+THRONG_REGISTER_TEST(TestNeighbourSweep)
+#include "TestNeighbourSweep.moc"
