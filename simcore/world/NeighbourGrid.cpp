@@ -130,14 +130,20 @@ bool NeighbourGrid::aimSweep(glm::vec3 p, float r, Sweep& sweep) const
     const auto cell = std::uint32_t(cz * m_cols + cx);
     if (sweep.cell == cell && sweep.radius == r)
         return true;
-    // Cells span floor(d / cell) + 1 at most over a distance d: ceil(r / cell) around.
-    const float span = std::ceil(r * m_inv * 1.0001f);
+    // Two points a distance d apart lie at most ceil(d / cell) cells apart; a query
+    // whose reach rounds past the columns found here goes the slow way (see
+    // forEachNearestSweep).
+    const float span = std::ceil(r * m_inv);
     if (!(span <= 3.0f))
         return false;
     const int s = std::max(1, int(span));
     sweep.cell = cell;
     sweep.radius = r;
     sweep.count = 0;
+    sweep.xLo = std::max(0, cx - s);
+    sweep.xHi = std::min(m_cols - 1, cx + s);
+    sweep.zLo = std::max(0, cz - s);
+    sweep.zHi = std::min(m_rows - 1, cz + s);
     auto add = [&](int x, int z) {
         const std::size_t c = std::size_t(z) * std::size_t(m_cols) + std::size_t(x);
         const int k = sweep.count++;
@@ -147,8 +153,8 @@ bool NeighbourGrid::aimSweep(glm::vec3 p, float r, Sweep& sweep) const
         sweep.z0[k] = m_min.y + float(z) * m_cell;
     };
     add(cx, cz);  // first: forEachNearestSweep never skips it (p may lie outside it, clamped in)
-    for (int z = std::max(0, cz - s); z <= std::min(m_rows - 1, cz + s); ++z)
-        for (int x = std::max(0, cx - s); x <= std::min(m_cols - 1, cx + s); ++x)
+    for (int z = sweep.zLo; z <= sweep.zHi; ++z)
+        for (int x = sweep.xLo; x <= sweep.xHi; ++x)
             if (x != cx || z != cz)
                 add(x, z);
     return true;

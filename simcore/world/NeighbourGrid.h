@@ -121,6 +121,7 @@ public:
         std::uint32_t cell = UINT32_MAX;
         float radius = -1.0f;
         int count = 0;
+        int xLo = 0, xHi = -1, zLo = 0, zHi = -1;  // the columns' range of cells
         std::uint32_t begin[kMaxColumns], end[kMaxColumns], lo[kMaxColumns];
         float x0[kMaxColumns], z0[kMaxColumns];  // each column's low corner; the own column first
     };
@@ -137,6 +138,16 @@ public:
             return;
         }
         const float reach = std::sqrt(std::min(r * r, boundSq())) * 1.0001f + 1e-4f;  // never skip on rounding
+        // Does the reach stay within the sweep's columns, computed as cellX and cellZ do
+        // (which round monotonically, so no agent within reach lies in a cell outside)?
+        // Only a query within a hair of its cell's edge goes the slow way.
+        const float ux0 = (p.x - reach - m_min.x) * m_inv, ux1 = (p.x + reach - m_min.x) * m_inv;
+        const float uz0 = (p.z - reach - m_min.y) * m_inv, uz1 = (p.z + reach - m_min.y) * m_inv;
+        if ((sweep.xLo > 0 && ux0 < float(sweep.xLo)) || (sweep.xHi < m_cols - 1 && ux1 >= float(sweep.xHi + 1)) ||
+            (sweep.zLo > 0 && uz0 < float(sweep.zLo)) || (sweep.zHi < m_rows - 1 && uz1 >= float(sweep.zHi + 1))) {
+            forEachNearest(p, r, boundSq, f);
+            return;
+        }
         const float yLo = p.y - reach, yHi = p.y + reach, reach2 = reach * reach;
         const glm::vec3* pos = m_sortedPos.data();
         for (int k = 0; k < sweep.count; ++k) {
