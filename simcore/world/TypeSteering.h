@@ -70,6 +70,7 @@ struct TypeSteering {
 
     float w(Behaviour b) const { return weight[std::size_t(b)]; }
     bool on(Behaviour b) const { return weight[std::size_t(b)] > 0.0f; }
+    float weightIfOn(Behaviour b) const { return on(b) ? w(b) : 0.0f; }
 };
 
 // Builds a type's steering from its scene description. A type that names no behaviours

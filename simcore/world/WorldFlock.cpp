@@ -9,8 +9,10 @@
 #include "simcore/world/World.h"
 #include "simcore/world/NearestList.h"
 
+#include "simcore/steering/detail/SteeringConstants.h"
 #include "simcore/steering/detail/SteeringMath.h"
 #include "simcore/world/Rng.h"
+#include "simcore/world/detail/StepConstants.h"
 
 #include <glm/geometric.hpp>
 
@@ -24,12 +26,6 @@ namespace throng::sim {
 using namespace detail;
 
 namespace {
-
-enum StepStream : std::uint64_t { kWanderX = 101, kWanderY, kWanderZ };
-
-// Below this speed (m/s) the velocity no longer says where the agent faces (as in
-// VehicleModel.cpp).
-constexpr float kStoppedSpeed = 1e-3f;
 
 // steerTowards (SteeringMath.h) for finite inputs: the velocity change, as a force that
 // reaches it in the response time (gain = mass / response time), truncated to maxForce.
@@ -77,25 +73,21 @@ void World::buildBoidKernel(bool enabled, bool collideShortcut)
         accelMax = std::max(accelMax, nonNegative(m_types[t].maxForce) / effectiveMass(m_types[t].mass));
         // As steerTowards, separate and integrateVehicle make each parameter usable.
         const float mass = effectiveMass(m_types[t].mass);
-        auto gain = [&](float responseTimeS) {
-            return mass / (std::isfinite(responseTimeS) ? std::max(responseTimeS, kMinResponseTimeS) : kMinResponseTimeS);
-        };
-        auto weight = [&](Behaviour b) { return s.on(b) ? s.w(b) : 0.0f; };
         BoidType& b = m_boidTypes[t];
-        b.wContainment = weight(Behaviour::Containment);
-        b.wSeparation = weight(Behaviour::Separation);
-        b.wPursuit = weight(Behaviour::Pursuit);
-        b.wAlignment = weight(Behaviour::Alignment);
-        b.wCohesion = weight(Behaviour::Cohesion);
-        b.wWander = weight(Behaviour::Wander);
+        b.wContainment = s.weightIfOn(Behaviour::Containment);
+        b.wSeparation = s.weightIfOn(Behaviour::Separation);
+        b.wPursuit = s.weightIfOn(Behaviour::Pursuit);
+        b.wAlignment = s.weightIfOn(Behaviour::Alignment);
+        b.wCohesion = s.weightIfOn(Behaviour::Cohesion);
+        b.wWander = s.weightIfOn(Behaviour::Wander);
         b.mass = mass;
         b.maxForce = nonNegative(m_types[t].maxForce);
         b.range = nonNegative(s.separation.rangeM);
         b.damping = mass / std::max(nonNegative(s.separation.dampingTimeS), kMinResponseTimeS);
-        b.gainPursuit = gain(s.pursuit.responseTimeS);
-        b.gainAlignment = gain(s.alignment.responseTimeS);
-        b.gainCohesion = gain(s.cohesion.responseTimeS);
-        b.gainWander = gain(s.wander.responseTimeS);
+        b.gainPursuit = responseGain(mass, s.pursuit.responseTimeS);
+        b.gainAlignment = responseGain(mass, s.alignment.responseTimeS);
+        b.gainCohesion = responseGain(mass, s.cohesion.responseTimeS);
+        b.gainWander = responseGain(mass, s.wander.responseTimeS);
         b.predictionCapS = nonNegative(s.pursuit.maxPredictionS);
         b.slowingM = std::max(nonNegative(s.cohesion.slowingDistanceM), kTiny);
         b.jitterM = nonNegative(s.wander.jitterM);

@@ -74,17 +74,13 @@ void World::buildWalkKernel(bool enabled)
         m_walkKernel[t] = plain && m_types[t].kind != AgentKind::Flier && fusable(s) ? 1 : 0;
         // Each constant as the behaviour's function computes it from the parameters.
         const float mass = effectiveMass(m_types[t].mass);
-        auto gain = [&](float responseTimeS) {
-            return mass / (std::isfinite(responseTimeS) ? std::max(responseTimeS, kMinResponseTimeS) : kMinResponseTimeS);
-        };
-        auto weight = [&](Behaviour b) { return s.on(b) ? s.w(b) : 0.0f; };
         WalkType& w = m_walkTypes[t];
-        w.wContainment = weight(Behaviour::Containment);
-        w.wSeparation = weight(Behaviour::Separation);
-        w.wUnaligned = weight(Behaviour::UnalignedCollisionAvoidance);
-        w.wArrival = weight(Behaviour::Arrival);
-        w.wSeek = weight(Behaviour::Seek);
-        w.wWander = weight(Behaviour::Wander);
+        w.wContainment = s.weightIfOn(Behaviour::Containment);
+        w.wSeparation = s.weightIfOn(Behaviour::Separation);
+        w.wUnaligned = s.weightIfOn(Behaviour::UnalignedCollisionAvoidance);
+        w.wArrival = s.weightIfOn(Behaviour::Arrival);
+        w.wSeek = s.weightIfOn(Behaviour::Seek);
+        w.wWander = s.weightIfOn(Behaviour::Wander);
         w.reciprocal = s.on(Behaviour::ReciprocalAvoidance);
         w.aroundStatics = (walls && s.on(Behaviour::WallFollowing)) || (obstacles && s.on(Behaviour::ObstacleAvoidance));
         w.constrained = walls || !m_circles.empty();  // as World::step's hasStatics
@@ -97,8 +93,8 @@ void World::buildWalkKernel(bool enabled)
         w.lateral = std::sqrt(1.0f - w.brake * w.brake);
         w.toleranceM = nonNegative(s.arrival.toleranceM);
         w.slowingM = std::max(nonNegative(s.arrival.slowingDistanceM), kTiny);
-        w.gainArrival = gain(s.arrival.responseTimeS);
-        w.gainSeek = gain(s.seek.responseTimeS);
+        w.gainArrival = responseGain(mass, s.arrival.responseTimeS);
+        w.gainSeek = responseGain(mass, s.seek.responseTimeS);
         w.dtOverMass = m_dt / mass;
     }
 }

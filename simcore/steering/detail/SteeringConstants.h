@@ -1,6 +1,6 @@
 #pragma once
-// Thresholds of the steering functions that the fused kernels (world/WorldWalk.cpp)
-// repeat inline; one definition, so the kernel and the function cannot part.
+// Thresholds of the steering functions that the fused kernels (world/WorldWalk.cpp,
+// world/WorldFlock.cpp) repeat inline; one definition, so kernel and function cannot part.
 
 namespace throng::sim::detail {
 

@@ -96,6 +96,13 @@ inline glm::vec3 rightOfForward(glm::vec3 forward)
     return normalizeOr(glm::cross(forward, kWorldUp), glm::vec3(-1.0f, 0.0f, 0.0f));
 }
 
+// The force per unit of velocity change that reaches it in responseTimeS (clamped to at
+// least kMinResponseTimeS; a non-finite time counts as the minimum): mass / time.
+inline float responseGain(float mass, float responseTimeS)
+{
+    return mass / (std::isfinite(responseTimeS) ? std::max(responseTimeS, kMinResponseTimeS) : kMinResponseTimeS);
+}
+
 // Reynolds 1999: steering = desired velocity - current velocity, here made a force by the mass
 // and the time the agent should take to reach the desired velocity, truncated to maxForce.
 inline glm::vec3 steerTowards(const SteeringAgent& agent, glm::vec3 desiredVelocity, float responseTimeS)
@@ -104,8 +111,7 @@ inline glm::vec3 steerTowards(const SteeringAgent& agent, glm::vec3 desiredVeloc
     const glm::vec3 dv = finiteOrZero(desiredVelocity) - v;
     if (dv == glm::vec3(0.0f))
         return glm::vec3(0.0f);
-    const float t = std::isfinite(responseTimeS) ? std::max(responseTimeS, kMinResponseTimeS) : kMinResponseTimeS;
-    return truncate(dv * (effectiveMass(agent.mass) / t), agent.maxForce);
+    return truncate(dv * responseGain(effectiveMass(agent.mass), responseTimeS), agent.maxForce);
 }
 
 // A velocity of the agent's top speed along direction (need not be unit); zero for a zero direction.

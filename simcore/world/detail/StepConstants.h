@@ -1,6 +1,6 @@
 #pragma once
 // Tuning constants and random streams of the step's phases, in one place for the general
-// path (WorldStep.cpp, WorldSteer.cpp) and the walker kernel (WorldWalk.cpp). Only
+// path (WorldStep.cpp, WorldSteer.cpp) and the kernels (WorldWalk.cpp, WorldFlock.cpp). Only
 // constants: includable beside steering/detail/SteeringMath.h, unlike StepGeometry.h.
 
 #include <cstddef>
