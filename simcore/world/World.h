@@ -41,9 +41,9 @@ struct WorldOptions {
     // the overlap count, instead of trusting what the boids kernel found (tests compare)
     bool collideShortcut = true;
     bool walkKernel = true;     // false: walkers take the general steering path too (tests compare the two)
-    // false: agents step in index order and every boid's neighbour search starts from its
-    // perception radius, instead of in the grid's order from last step's neighbours (the
-    // result is the same; tests compare)
+    // false: agents step in index order and the kernels' neighbour searches start from the
+    // perception radius, instead of in the grid's order (fliers) from last step's
+    // neighbours (the result is the same; tests compare)
     bool neighbourSweep = true;
 };
 
@@ -184,6 +184,9 @@ private:
     // sweep: the thread's cursor when agents are stepped in the grid's order, else null.
     void stepAgent(std::size_t i, bool hasStatics, NeighbourGrid::Sweep* sweep);
     void stepBoid(std::size_t i, NeighbourGrid::Sweep* sweep);
+    // Agents move little in a step: last step's k nearest of agent i, where they are now,
+    // bound its k-th nearest from above (squared; perception2 when it had fewer than k).
+    float lastNearestBound(std::size_t i, glm::vec3 p, float perception2) const;
     void prepareBoidStep();  // m_boidSpeedMax, before the agents step
     // The collide pass for agent i: m_resolvedPos[i] from m_nextPos[i] and the overlaps
     // with its neighbours (none looked for when the kernel found it collide-free).

@@ -119,6 +119,21 @@ void World::prepareBoidStep()
     m_boidSpeedMax = top < 0x7f800000 ? std::bit_cast<float>(top) : INFINITY;
 }
 
+float World::lastNearestBound(std::size_t i, glm::vec3 p, float perception2) const
+{
+    constexpr std::size_t k = kMaxNeighbours;
+    if (m_nearCount[i] != k)
+        return perception2;
+    const std::uint32_t* last = &m_nearIndex[i * k];
+    float far2 = 0.0f;
+    for (std::size_t n = 0; n < k; ++n) {
+        const std::uint32_t j = last[n];
+        const glm::vec3 d = j < m_pos.size() ? m_pos[j] - p : glm::vec3(INFINITY);
+        far2 = std::max(far2, glm::dot(d, d));
+    }
+    return std::min(perception2, far2);
+}
+
 void World::stepBoid(std::size_t i, NeighbourGrid::Sweep* sweep)
 {
     const std::uint16_t type = m_info[i].typeIndex;
@@ -162,23 +177,12 @@ void World::stepBoid(std::size_t i, NeighbourGrid::Sweep* sweep)
         else
             m_grid.forEachNearest(p, t.perception, [&] { return bound; }, consider);
     };
-    // Flocks move little in a step: last step's k nearest, where they are now, bound this
-    // step's k-th nearest from above. Searching within that bound visits far fewer cells
-    // and candidates; when k are found in it they are exactly the k nearest within the
+    // Searching within last step's k nearest (lastNearestBound) visits far fewer cells and
+    // candidates; when k are found in it they are exactly the k nearest within the
     // perception radius (everyone nearer lies inside the bound, and the grid offers all of
     // them), and when fewer are found the search runs again in full. So the result never
     // depends on the guess.
-    float guess2 = perception2;
-    if (m_neighbourSweep && m_nearCount[i] == k) {
-        const std::uint32_t* last = &m_nearIndex[i * k];
-        float far2 = 0.0f;
-        for (std::size_t n = 0; n < k; ++n) {
-            const std::uint32_t j = last[n];
-            const glm::vec3 d = j < m_pos.size() ? m_pos[j] - p : glm::vec3(INFINITY);
-            far2 = std::max(far2, glm::dot(d, d));
-        }
-        guess2 = std::min(guess2, far2);
-    }
+    const float guess2 = m_neighbourSweep ? lastNearestBound(i, p, perception2) : perception2;
     search(guess2);
     if (!best.full() && guess2 < perception2)
         search(perception2);

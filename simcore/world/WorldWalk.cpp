@@ -113,21 +113,32 @@ void World::stepWalker(std::size_t i)
     // index (gatherNeighbours, without the layers and priorities this world lacks).
     constexpr std::size_t k = kMaxNeighbours;
     NearestList<k> best;
-    float bound = t.perception * t.perception;
+    const float perception2 = t.perception * t.perception;
+    float bound = perception2;
     const float c = t.cosHalfView;
-    m_grid.forEachNearest(p, t.perception, [&] { return bound; }, [&](std::uint32_t j, const glm::vec3& q) {
-        const glm::vec3 d = q - p;
-        const float d2 = glm::dot(d, d);
-        if (d2 > bound || j == i)
-            return;
-        if (outsideViewCone(d, d2, fwd, c)) {
-            const float contact = radius + m_radius[j];
-            if (d2 > contact * contact)
+    auto search = [&](float startBound) {
+        best.count = 0;
+        bound = startBound;
+        m_grid.forEachNearest(p, t.perception, [&] { return bound; }, [&](std::uint32_t j, const glm::vec3& q) {
+            const glm::vec3 d = q - p;
+            const float d2 = glm::dot(d, d);
+            if (d2 > bound || j == i)
                 return;
-        }
-        if (best.insert(nearestKey(d2, j)) && best.full())
-            bound = best.worstDistance2();
-    });
+            if (outsideViewCone(d, d2, fwd, c)) {
+                const float contact = radius + m_radius[j];
+                if (d2 > contact * contact)
+                    return;
+            }
+            if (best.insert(nearestKey(d2, j)) && best.full())
+                bound = best.worstDistance2();
+        });
+    };
+    // As in the boids kernel: start from last step's k nearest, and search in full only
+    // when fewer than k lie within them (the result is the same either way).
+    const float guess2 = m_neighbourSweep ? lastNearestBound(i, p, perception2) : perception2;
+    search(guess2);
+    if (!best.full() && guess2 < perception2)
+        search(perception2);
     const std::size_t count = best.count;
     m_nearCount[i] = std::uint8_t(count);
 

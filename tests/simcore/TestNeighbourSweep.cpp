@@ -1,8 +1,9 @@
 // The neighbour sweep (NeighbourGrid::forEachNearestSweep, WorldOptions::neighbourSweep):
 // boids step in the grid's order, each search moving the last one's height windows and
-// starting from last step's k nearest. It must change nothing: a k-nearest search through
-// the sweep finds exactly what a brute-force scan finds, and a flock run with and without
-// it ends bit-identical, for 1 and 2 threads, from a packed start and once it has gathered.
+// starting from last step's k nearest (walkers start from theirs too). It must change
+// nothing: a k-nearest search through the sweep finds exactly what a brute-force scan
+// finds, and a flock or a crowd run with and without it ends bit-identical, for 1 and 2
+// threads, from a packed start, once it has gathered, and in the jam of `cross`.
 #include "TestRegistry.h"
 
 #include "simcore/scenarios/BenchScenarios.h"
@@ -136,8 +137,6 @@ private slots:
         QTest::newRow("the bench flock, gathering") << 0.0f << 200;
     }
 
-    // With the sweep (1 and 2 threads) and without it (1 thread): the same bits, and the
-    // same overlap count.
     void flockIsUnchanged()
     {
         QFETCH(float, spacing);
@@ -150,11 +149,22 @@ private slots:
                                                  30.0f + spacing * std::fmod(std::floor(i / 12.0f), 12.0f),
                                                  -12.0f + spacing * std::floor(i / 144.0f));
             }
+        checkSame(s, steps);
+    }
+
+    // Walkers: `cross` (the agents of a circle meet in a jam at its centre).
+    void crowdIsUnchanged() { checkSame(makeCrossScenario(600), 900); }
+
+private:
+    // With the sweep (1 and 2 threads) and without it (1 thread): the same bits, and the
+    // same overlap count.
+    void checkSame(const Scene& s, int steps)
+    {
         const Run plain = run(s, false, 1, steps);
         for (int threads : {1, 2}) {
             const Run swept = run(s, true, threads, steps);
             QVERIFY2(same(plain.pos, swept.pos) && same(plain.vel, swept.vel) && same(plain.up, swept.up),
-                     qPrintable(QString("%1 threads: the sweep changed the flock").arg(threads)));
+                     qPrintable(QString("%1 threads: the sweep changed the result").arg(threads)));
             QCOMPARE(swept.overlaps, plain.overlaps);
         }
     }
