@@ -2,13 +2,19 @@
 
 #include "EditorUiDriver.h"
 
+#include "editor/MessagesPanel.h"
 #include "editor/panels/OutlinerPanel.h"
 #include "editor/panels/TimelinePanel.h"
 #include "editor/simulation/SimulationController.h"
 #include "simcore/io/SceneIO.h"
 
 #include <QAbstractButton>
+#include <QAbstractSpinBox>
+#include <QComboBox>
 #include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QScrollArea>
 #include <QSlider>
 
 #include <QFile>
@@ -152,6 +158,61 @@ void selectInOutliner(MainWindow& window, const Selection& items)
 QByteArray sceneYaml(MainWindow& window)
 {
     return QByteArray::fromStdString(sim::sceneToYaml(window.document().scene()));
+}
+
+void showInPanel(MainWindow& window, QWidget* widget)
+{
+    QTRY_VERIFY(widget->isVisible() && widget->height() > 0);
+    window.findChild<QWidget*>("properties")->findChild<QScrollArea*>()->ensureWidgetVisible(widget);
+}
+
+void pick(MainWindow& window, const QString& name, const QString& text, Scroll scroll)
+{
+    auto* combo = field<QComboBox>(window, name);
+    QVERIFY2(combo, qPrintable(name));
+    if (scroll == Scroll::ToWidget)
+        showInPanel(window, combo);
+    combo->setFocus();
+    QTest::keyClicks(combo, text);
+    QCOMPARE(combo->currentText(), text);
+}
+
+void typeInto(QWidget* widget, const QString& text)
+{
+    QVERIFY(widget);
+    widget->setFocus();
+    if (auto* spin = qobject_cast<QAbstractSpinBox*>(widget))
+        spin->selectAll();
+    else if (auto* edit = qobject_cast<QLineEdit*>(widget))
+        edit->selectAll();
+    QTest::keyClick(widget, Qt::Key_Backspace);
+    QTest::keyClicks(widget, text);
+    QTest::keyClick(widget, Qt::Key_Return);
+}
+
+void typeInto(MainWindow& window, QWidget* widget, const QString& text)
+{
+    QVERIFY(widget);
+    showInPanel(window, widget);
+    typeInto(widget, text);
+}
+
+void press(MainWindow& window, const QString& name)
+{
+    auto* button = field<QPushButton>(window, name);
+    QVERIFY2(button, qPrintable(name));
+    showInPanel(window, button);
+    QTest::mouseClick(button, Qt::LeftButton);
+}
+
+void undo(MainWindow& window)
+{
+    QTest::keyClick(&window.viewport(), Qt::Key_Z, Qt::ControlModifier);
+}
+
+QString lastMessage(MainWindow& window)
+{
+    return window.messages().count() > 0 ? window.messages().item(0)->text() : QString();
 }
 
 }  // namespace throng::editor::test

@@ -65,4 +65,29 @@ void selectInOutliner(MainWindow& window, const Selection& items);
 // The scene as Save would write it.
 QByteArray sceneYaml(MainWindow& window);
 
+// The properties panel driven like a user.
+// The panel's widget of this type and object name ("width", "brain"); null when none.
+template <class Widget>
+Widget* field(MainWindow& window, const QString& name)
+{
+    return window.findChild<QWidget*>("properties")->findChild<Widget*>(name);
+}
+// Waits until `widget` is laid out in the panel (rows added to a shown panel are laid out
+// on the next event loop pass) and scrolls the panel to it.
+void showInPanel(MainWindow& window, QWidget* widget);
+// Whether pick() first scrolls the panel to the combo box.
+enum class Scroll { No, ToWidget };
+// Picks `text` in the panel's combo box `name` with the keyboard, as a user does.
+void pick(MainWindow& window, const QString& name, const QString& text, Scroll scroll = Scroll::No);
+// Types `text` over all that a spin box or line edit shows and presses Return.
+void typeInto(QWidget* widget, const QString& text);
+// The same, after scrolling the panel to the widget (showInPanel).
+void typeInto(MainWindow& window, QWidget* widget, const QString& text);
+// Clicks the panel's push button `name`, scrolled into view.
+void press(MainWindow& window, const QString& name);
+// Ctrl+Z on the viewport.
+void undo(MainWindow& window);
+// The newest line of the messages panel; empty when there is none.
+QString lastMessage(MainWindow& window);
+
 }  // namespace throng::editor::test

@@ -8,7 +8,6 @@
 #include "PanelTestScene.h"
 #include "TestRegistry.h"
 
-#include "editor/MessagesPanel.h"
 #include "editor/panels/OutlinerPanel.h"
 #include "editor/viewport/Viewport.h"
 
@@ -41,11 +40,6 @@ bool selects(MainWindow& window, glm::vec2 at, SceneItem item)
 int outlinerRows(MainWindow& window, ItemKind kind)
 {
     return window.outliner().kindRow(kind)->childCount();
-}
-
-QString lastMessage(MainWindow& window)
-{
-    return window.messages().count() > 0 ? window.messages().item(0)->text() : QString();
 }
 
 }  // namespace

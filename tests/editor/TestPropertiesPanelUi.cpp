@@ -34,38 +34,6 @@ using namespace throng::editor::test;
 
 namespace {
 
-template <class Widget>
-Widget* field(MainWindow& window, const char* name)
-{
-    return window.findChild<QWidget*>("properties")->findChild<Widget*>(name);
-}
-
-// Picks `text` in a combo box of the panel with the keyboard, as a user does.
-void pick(MainWindow& window, const char* name, const QString& text)
-{
-    auto* combo = field<QComboBox>(window, name);
-    QVERIFY2(combo, name);
-    combo->setFocus();
-    QTest::keyClicks(combo, text);
-    QCOMPARE(combo->currentText(), text);
-}
-
-// Types `text` into a line edit (a name, an editable combo) and presses Return.
-void typeInto(QLineEdit* edit, const QString& text)
-{
-    QVERIFY(edit);
-    edit->setFocus();
-    edit->selectAll();
-    QTest::keyClick(edit, Qt::Key_Backspace);
-    QTest::keyClicks(edit, text);
-    QTest::keyClick(edit, Qt::Key_Return);
-}
-
-void undo(MainWindow& window)
-{
-    QTest::keyClick(&window.viewport(), Qt::Key_Z, Qt::ControlModifier);
-}
-
 void redo(MainWindow& window)
 {
     QTest::keyClick(&window.viewport(), Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);

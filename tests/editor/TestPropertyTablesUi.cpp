@@ -9,7 +9,6 @@
 #include "PanelTestScene.h"
 #include "TestRegistry.h"
 
-#include "editor/MessagesPanel.h"
 #include "editor/panels/OutlinerPanel.h"
 #include "editor/simulation/SimulationController.h"
 #include "editor/viewport/Viewport.h"
@@ -20,8 +19,6 @@
 #include <QDoubleSpinBox>
 #include <QLabel>
 #include <QLineEdit>
-#include <QPushButton>
-#include <QScrollArea>
 #include <QStandardPaths>
 #include <QTableWidget>
 #include <QTest>
@@ -31,49 +28,6 @@ using namespace throng::editor;
 using namespace throng::editor::test;
 
 namespace {
-
-template <class Widget>
-Widget* field(MainWindow& window, const char* name)
-{
-    return window.findChild<QWidget*>("properties")->findChild<Widget*>(name);
-}
-
-void pick(MainWindow& window, const char* name, const QString& text)
-{
-    auto* combo = field<QComboBox>(window, name);
-    QVERIFY2(combo, name);
-    combo->setFocus();
-    QTest::keyClicks(combo, text);
-    QCOMPARE(combo->currentText(), text);
-}
-
-void typeInto(QWidget* widget, const QString& text)
-{
-    QVERIFY(widget);
-    widget->setFocus();
-    if (auto* spin = qobject_cast<QAbstractSpinBox*>(widget))
-        spin->selectAll();
-    QTest::keyClick(widget, Qt::Key_Backspace);
-    QTest::keyClicks(widget, text);
-    QTest::keyClick(widget, Qt::Key_Return);
-}
-
-void undo(MainWindow& window)
-{
-    QTest::keyClick(&window.viewport(), Qt::Key_Z, Qt::ControlModifier);
-}
-
-QString lastMessage(MainWindow& window)
-{
-    return window.messages().count() > 0 ? window.messages().item(0)->text() : QString();
-}
-
-void showInPanel(MainWindow& window, QWidget* widget)
-{
-    // Rows added to a shown panel are laid out on the next event loop pass.
-    QTRY_VERIFY(widget->isVisible() && widget->height() > 0);
-    window.findChild<QWidget*>("properties")->findChild<QScrollArea*>()->ensureWidgetVisible(widget);
-}
 
 // Double-clicks a cell of the points table, types `text` over it and presses Return.
 void editCell(MainWindow& window, QTableWidget* table, int row, int column, const QString& text)
@@ -93,14 +47,6 @@ void clickRow(MainWindow& window, QTableWidget* table, int row)
 {
     showInPanel(window, table);
     QTest::mouseClick(table->viewport(), Qt::LeftButton, {}, table->visualItemRect(table->item(row, 0)).center());
-}
-
-void press(MainWindow& window, const char* button)
-{
-    auto* b = field<QPushButton>(window, button);
-    QVERIFY2(b, button);
-    showInPanel(window, b);
-    QTest::mouseClick(b, Qt::LeftButton);
 }
 
 }  // namespace

@@ -32,45 +32,6 @@ using namespace throng::editor::test;
 
 namespace {
 
-template <class Widget>
-Widget* field(MainWindow& window, const char* name)
-{
-    return window.findChild<QWidget*>("properties")->findChild<Widget*>(name);
-}
-
-void pick(MainWindow& window, const char* name, const QString& text)
-{
-    auto* combo = field<QComboBox>(window, name);
-    QVERIFY2(combo, name);
-    combo->setFocus();
-    QTest::keyClicks(combo, text);
-    QCOMPARE(combo->currentText(), text);
-}
-
-// Types `text` over what a spin box or line edit of the panel shows and presses Return.
-void typeInto(QWidget* widget, const QString& text)
-{
-    QVERIFY(widget);
-    widget->setFocus();
-    if (auto* spin = qobject_cast<QAbstractSpinBox*>(widget))
-        spin->selectAll();
-    else if (auto* edit = qobject_cast<QLineEdit*>(widget))
-        edit->selectAll();
-    QTest::keyClick(widget, Qt::Key_Backspace);
-    QTest::keyClicks(widget, text);
-    QTest::keyClick(widget, Qt::Key_Return);
-}
-
-void undo(MainWindow& window)
-{
-    QTest::keyClick(&window.viewport(), Qt::Key_Z, Qt::ControlModifier);
-}
-
-QString lastMessage(MainWindow& window)
-{
-    return window.messages().count() > 0 ? window.messages().item(0)->text() : QString();
-}
-
 QStringList comboItems(QComboBox* combo)
 {
     QStringList out;

@@ -9,7 +9,6 @@
 #include "PanelTestScene.h"
 #include "TestRegistry.h"
 
-#include "editor/MessagesPanel.h"
 #include "editor/panels/OutlinerPanel.h"
 #include "editor/viewport/Viewport.h"
 
@@ -20,7 +19,6 @@
 #include <QHeaderView>
 #include <QLineEdit>
 #include <QPushButton>
-#include <QScrollArea>
 #include <QSpinBox>
 #include <QStandardPaths>
 #include <QTableWidget>
@@ -32,51 +30,6 @@ using namespace throng::editor::test;
 
 namespace {
 
-template <class Widget>
-Widget* field(MainWindow& window, const QString& name)
-{
-    return window.findChild<QWidget*>("properties")->findChild<Widget*>(name);
-}
-
-void showInPanel(MainWindow& window, QWidget* widget)
-{
-    // Rows added to a shown panel are laid out on the next event loop pass.
-    QTRY_VERIFY(widget->isVisible() && widget->height() > 0);
-    window.findChild<QWidget*>("properties")->findChild<QScrollArea*>()->ensureWidgetVisible(widget);
-}
-
-void pick(MainWindow& window, const QString& name, const QString& text)
-{
-    auto* combo = field<QComboBox>(window, name);
-    QVERIFY2(combo, qPrintable(name));
-    showInPanel(window, combo);
-    combo->setFocus();
-    QTest::keyClicks(combo, text);
-    QCOMPARE(combo->currentText(), text);
-}
-
-void typeInto(MainWindow& window, QWidget* widget, const QString& text)
-{
-    QVERIFY(widget);
-    showInPanel(window, widget);
-    widget->setFocus();
-    if (auto* spin = qobject_cast<QAbstractSpinBox*>(widget))
-        spin->selectAll();
-    else if (auto* edit = qobject_cast<QLineEdit*>(widget))
-        edit->selectAll();
-    QTest::keyClick(widget, Qt::Key_Backspace);
-    QTest::keyClicks(widget, text);
-    QTest::keyClick(widget, Qt::Key_Return);
-}
-
-void press(MainWindow& window, const char* button)
-{
-    auto* b = field<QPushButton>(window, button);
-    QVERIFY2(b, button);
-    showInPanel(window, b);
-    QTest::mouseClick(b, Qt::LeftButton);
-}
-
 void clickRow(MainWindow& window, QTableWidget* table, int row)
 {
     showInPanel(window, table);
@@ -84,16 +37,6 @@ void clickRow(MainWindow& window, QTableWidget* table, int row)
     const QPoint at(header->width() / 2, header->sectionViewportPosition(row) + header->sectionSize(row) / 2);
     QTest::mouseClick(header->viewport(), Qt::LeftButton, {}, at);
     QCOMPARE(table->currentRow(), row);
-}
-
-void undo(MainWindow& window)
-{
-    QTest::keyClick(&window.viewport(), Qt::Key_Z, Qt::ControlModifier);
-}
-
-QString lastMessage(MainWindow& window)
-{
-    return window.messages().count() > 0 ? window.messages().item(0)->text() : QString();
 }
 
 }  // namespace
@@ -232,11 +175,11 @@ private slots:
 
         typeInto(window, field<QDoubleSpinBox>(window, "stopAt0"), "20");
         QCOMPARE(light.stopLines[0].atM, 20.0f);
-        pick(window, "stopTarget0", "side");
+        pick(window, "stopTarget0", "side", Scroll::ToWidget);
         QCOMPARE(light.stopLines[0].lane, std::string("side"));
-        pick(window, "stopTarget1", "ladder");
+        pick(window, "stopTarget1", "ladder", Scroll::ToWidget);
         QCOMPARE(light.stopLines[1].crosswalk, std::string("ladder"));
-        pick(window, "stopKind0", "Crosswalk");  // the first crosswalk
+        pick(window, "stopKind0", "Crosswalk", Scroll::ToWidget);  // the first crosswalk
         QCOMPARE(light.stopLines[0], (sim::StopLine{"", 0.0f, "zebra"}));
         QCOMPARE(window.document().undoStack()->count(), 4);
 

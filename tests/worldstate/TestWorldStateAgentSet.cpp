@@ -2,6 +2,7 @@
 // the edit frame (issue 6): agents are matched by key, kept ones carry their state over
 // exactly, new ones start from their scene state, removed ones are gone; the resumed run
 // is the same on 1 and 2 threads and the same again from its own checkpoint.
+#include "ResumeChecks.h"
 #include "StateScenes.h"
 #include "TestRegistry.h"
 
@@ -102,22 +103,7 @@ private slots:
         }
 
         // Bit-identical on 1 and 2 threads, and again from the resumed run's own checkpoint.
-        std::uint64_t hashes[2] = {0, 0};
-        for (int threads : {1, 2}) {
-            WorldOptions options;
-            options.threads = threads;
-            World a(scene, options);
-            for (std::size_t s = 0; s < 30; ++s)
-                a.step();
-            World b(edited, options);
-            QVERIFY(b.adoptState(a.saveState(), scene, edited));
-            const WorldState atEdit = b.saveState();
-            hashes[threads - 1] = record(b, 12).hash();
-            World c(edited, options);
-            c.restoreState(atEdit);
-            QCOMPARE(record(c, 12).hash(), hashes[threads - 1]);
-        }
-        QCOMPARE(hashes[0], hashes[1]);
+        checkResumeIsDeterministic(scene, [&](const World&) { return edited; }, 12);
     }
 
     void erasedAgentsAreGoneAndTheOthersCarryOn()
