@@ -44,16 +44,23 @@ void World::step()
     // holds them all: consecutive boids then query the same columns at rising heights
     // (NeighbourGrid::forEachNearestSweep) and read neighbours that are already in cache.
     // Each agent still reads only the old state and writes only its own next state, so
-    // the order changes nothing in the result.
+    // the order changes nothing in the result. Each thread takes one run of the order, a
+    // region of space: in short interleaved runs both threads wrote the same cache lines
+    // of the next state (2 threads gained 2 % over 1 thread's 19 %, instead of 17 %).
     const std::span<const std::uint32_t> gridOrder = m_grid.order();
-    const std::uint32_t* order =
-        m_neighbourSweep && m_grid.sortedByHeight() && gridOrder.size() == n ? gridOrder.data() : nullptr;
+    if (m_neighbourSweep && m_grid.sortedByHeight() && gridOrder.size() == n) {
+        const std::uint32_t* order = gridOrder.data();
 #pragma omp parallel num_threads(m_threads)
-    {
-        NeighbourGrid::Sweep sweep;
-#pragma omp for schedule(static, 256)
-        for (std::size_t k = 0; k < n; ++k)
-            stepAgent(order ? order[k] : k, hasStatics, order ? &sweep : nullptr);
+        {
+            NeighbourGrid::Sweep sweep;
+#pragma omp for schedule(static)
+            for (std::size_t k = 0; k < n; ++k)
+                stepAgent(order[k], hasStatics, &sweep);
+        }
+    } else {
+#pragma omp parallel for schedule(static, 256) num_threads(m_threads)
+        for (std::size_t i = 0; i < n; ++i)
+            stepAgent(i, hasStatics, nullptr);
     }
     driveTrafficAgents();
 
