@@ -4,6 +4,7 @@
 // the shortcut ends bit-identical, for 1 and 2 threads, whether birds start packed
 // (overlaps everywhere), at the bench's density, or skimming the ground (where the floor
 // lifts birds further than the kernel's slack and the pass must run in full).
+#include "RunBits.h"
 #include "TestRegistry.h"
 
 #include "simcore/scenarios/BenchScenarios.h"
@@ -12,7 +13,6 @@
 #include <QTest>
 
 #include <cmath>
-#include <cstring>
 
 using namespace throng::sim;
 
@@ -32,39 +32,22 @@ Scene packedFlock(float spacingM, float y0 = 30.0f)
     return s;
 }
 
-struct Run {
-    std::vector<glm::vec3> pos, vel, up;
-    std::uint64_t overlaps = 0;
-};
-
-Run run(const Scene& s, bool shortcut, int threads, int steps)
+throng::test::RunBits run(const Scene& s, bool shortcut, int threads, int steps)
 {
     WorldOptions o;
     o.threads = threads;
     o.collideShortcut = shortcut;
-    World w(s, o);
-    for (int k = 0; k < steps; ++k)
-        w.step();
-    return {{w.positions().begin(), w.positions().end()},
-            {w.velocities().begin(), w.velocities().end()},
-            {w.ups().begin(), w.ups().end()},
-            w.counters().overlappingPairs};
-}
-
-bool same(const std::vector<glm::vec3>& a, const std::vector<glm::vec3>& b)
-{
-    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(glm::vec3)) == 0;
+    return throng::test::runToEnd(s, o, steps);
 }
 
 // Runs the scene without the shortcut (1 thread) and with it (1 and 2 threads); all three
 // must agree bit for bit. Returns the overlaps counted.
 std::uint64_t checkSame(const Scene& s, int steps)
 {
-    const Run full = run(s, false, 1, steps);
+    const throng::test::RunBits full = run(s, false, 1, steps);
     for (int threads : {1, 2}) {
-        const Run fast = run(s, true, threads, steps);
-        if (!same(full.pos, fast.pos) || !same(full.vel, fast.vel) || !same(full.up, fast.up) ||
-            full.overlaps != fast.overlaps) {
+        const throng::test::RunBits fast = run(s, true, threads, steps);
+        if (!full.sameStateAs(fast) || full.overlaps != fast.overlaps) {
             qWarning("shortcut with %d threads differs: overlaps %llu vs %llu", threads,
                      static_cast<unsigned long long>(fast.overlaps), static_cast<unsigned long long>(full.overlaps));
             return UINT64_MAX;

@@ -4,6 +4,7 @@
 // nothing: a k-nearest search through the sweep finds exactly what a brute-force scan
 // finds, and a flock or a crowd run with and without it ends bit-identical, for 1 and 2
 // threads, from a packed start, once it has gathered, and in the jam of `cross`.
+#include "RunBits.h"
 #include "TestRegistry.h"
 
 #include "simcore/scenarios/BenchScenarios.h"
@@ -15,7 +16,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <random>
 #include <set>
 #include <vector>
@@ -41,28 +41,12 @@ std::vector<std::uint64_t> bruteNearest(const std::vector<glm::vec3>& pos, std::
     return keys;
 }
 
-struct Run {
-    std::vector<glm::vec3> pos, vel, up;
-    std::uint64_t overlaps = 0;
-};
-
-Run run(const Scene& s, bool sweep, int threads, int steps)
+throng::test::RunBits run(const Scene& s, bool sweep, int threads, int steps)
 {
     WorldOptions o;
     o.threads = threads;
     o.neighbourSweep = sweep;
-    World w(s, o);
-    for (int k = 0; k < steps; ++k)
-        w.step();
-    return {{w.positions().begin(), w.positions().end()},
-            {w.velocities().begin(), w.velocities().end()},
-            {w.ups().begin(), w.ups().end()},
-            w.counters().overlappingPairs};
-}
-
-bool same(const std::vector<glm::vec3>& a, const std::vector<glm::vec3>& b)
-{
-    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(glm::vec3)) == 0;
+    return throng::test::runToEnd(s, o, steps);
 }
 
 }  // namespace
@@ -160,10 +144,10 @@ private:
     // same overlap count.
     void checkSame(const Scene& s, int steps)
     {
-        const Run plain = run(s, false, 1, steps);
+        const throng::test::RunBits plain = run(s, false, 1, steps);
         for (int threads : {1, 2}) {
-            const Run swept = run(s, true, threads, steps);
-            QVERIFY2(same(plain.pos, swept.pos) && same(plain.vel, swept.vel) && same(plain.up, swept.up),
+            const throng::test::RunBits swept = run(s, true, threads, steps);
+            QVERIFY2(plain.sameStateAs(swept),
                      qPrintable(QString("%1 threads: the sweep changed the result").arg(threads)));
             QCOMPARE(swept.overlaps, plain.overlaps);
         }
