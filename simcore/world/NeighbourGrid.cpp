@@ -128,8 +128,6 @@ bool NeighbourGrid::aimSweep(glm::vec3 p, float r, Sweep& sweep) const
 {
     const int cx = cellX(p.x), cz = cellZ(p.z);
     const auto cell = std::uint32_t(cz * m_cols + cx);
-    if (sweep.cell == cell && sweep.radius == r)
-        return true;
     // Two points a distance d apart lie at most ceil(d / cell) cells apart; a query
     // whose reach rounds past the columns found here goes the slow way (see
     // forEachNearestSweep).

@@ -133,7 +133,7 @@ public:
     void forEachNearestSweep(glm::vec3 p, float r, B&& boundSq, F&& f, Sweep& sweep) const
     {
         if (!m_byHeight || !(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && std::isfinite(r)) ||
-            !aimSweep(p, r, sweep)) {
+            !(aimedAt(p, r, sweep) || aimSweep(p, r, sweep))) {
             forEachNearest(p, r, boundSq, f);
             return;
         }
@@ -150,12 +150,14 @@ public:
         }
         const float yLo = p.y - reach, yHi = p.y + reach, reach2 = reach * reach;
         const glm::vec3* pos = m_sortedPos.data();
+        const std::uint32_t* sorted = m_sorted.data();
         for (int k = 0; k < sweep.count; ++k) {
             // How far across x and z the column lies (agents clamped into a border column
-            // lie beyond its edge, so this still bounds them).
+            // lie beyond its edge, so this still bounds them): p less its nearest point of
+            // the column, by min and max, which compile to instructions and not branches.
             const float cx = sweep.x0[k], cz = sweep.z0[k];
-            const float dx = std::max({0.0f, cx - p.x, p.x - (cx + m_cell)});
-            const float dz = std::max({0.0f, cz - p.z, p.z - (cz + m_cell)});
+            const float dx = p.x - std::min(std::max(p.x, cx), cx + m_cell);
+            const float dz = p.z - std::min(std::max(p.z, cz), cz + m_cell);
             if (k > 0 && dx * dx + dz * dz > std::min(reach2, boundSq() * 1.0002f))
                 continue;
             std::uint32_t lo = sweep.lo[k];
@@ -166,7 +168,7 @@ public:
                 ++lo;
             sweep.lo[k] = lo;
             for (std::uint32_t j = lo; j < e && pos[j].y <= yHi; ++j)
-                f(m_sorted[j], pos[j]);
+                f(sorted[j], pos[j]);
         }
     }
     // The agents in the grid's order (by cell, then by height): the order to make
@@ -182,8 +184,13 @@ public:
     }
 
 private:
+    // Whether the sweep already holds the columns for a query at p with radius r.
+    bool aimedAt(glm::vec3 p, float r, const Sweep& sweep) const
+    {
+        return sweep.radius == r && sweep.cell == std::uint32_t(cellZ(p.z) * m_cols + cellX(p.x));
+    }
     // Points the sweep at the columns around p's cell that a radius r can reach (the own
-    // column first), keeping it if it already is; false when they are too many.
+    // column first); false when they are too many. Called only when !aimedAt(p, r, sweep).
     bool aimSweep(glm::vec3 p, float r, Sweep& sweep) const;
 
     // rebuild with one chunk: count, prefix sums and scatter in place.

@@ -184,6 +184,30 @@ private:
     // sweep: the thread's cursor when agents are stepped in the grid's order, else null.
     void stepAgent(std::size_t i, bool hasStatics, NeighbourGrid::Sweep* sweep);
     void stepBoid(std::size_t i, NeighbourGrid::Sweep* sweep);
+    // stepBoid in two passes (WorldFlock.cpp): senseBoid finds the k nearest and sums
+    // over them (the branchy part), steerBoid steers and integrates (chains of square
+    // roots and divisions, few branches). stepInGridOrder runs them over batches of boids,
+    // one pass after the other: the same arithmetic, about 5 % faster than boid by boid
+    // (the steering of consecutive boids can overlap in the core, no mispredicted search
+    // branch between them), and the steering then goes four boids at a time (steerBoids).
+    struct BoidSense {
+        glm::vec3 push, headings, velocities, centre;
+        std::uint32_t count;
+        float bound, nearestUnseen2;
+        glm::vec3 drift[kMaxNeighbours];  // where each neighbour's old velocity takes it
+        float keepOut[kMaxNeighbours];    // and how close it may come
+    };
+    void senseBoid(std::size_t i, NeighbourGrid::Sweep* sweep, BoidSense& out);
+    void steerBoid(std::size_t i, const BoidSense& in);
+    // steerBoid for boid[0, count), four at a time where it can (WorldFlockLanes.cpp).
+    void steerBoids(const std::uint32_t* boid, const BoidSense* sensed, std::size_t count);
+    void steerFourBoids(const std::uint32_t* boid, const BoidSense* sensed);
+    // steerBoid's last part: the ground, the collide pass's flags, the next state.
+    void finishBoid(std::size_t i, const BoidSense& in, glm::vec3 pos, glm::vec3 vel, glm::vec3 nextFwd,
+                    glm::vec3 side, glm::vec3 nextUp, WanderState wanderNext);
+    // Steps agents order[begin, end) (the grid's order), boids in batches.
+    void stepInGridOrder(const std::uint32_t* order, std::size_t begin, std::size_t end, bool hasStatics,
+                         NeighbourGrid::Sweep& sweep);
     // Agents move little in a step: last step's k nearest of agent i, where they are now,
     // bound its k-th nearest from above (squared; perception2 when it had fewer than k).
     float lastNearestBound(std::size_t i, glm::vec3 p, float perception2) const;

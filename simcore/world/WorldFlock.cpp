@@ -5,7 +5,9 @@
 // velocities and headings are read by index (no Neighbour copies, no request list), the
 // three flocking sums accumulate together, and the vehicle step skips the re-normalising
 // of a frame that is already orthonormal. Only the last bits differ from the general path
-// (TestBoidKernel compares the two on the quality figures).
+// (TestBoidKernel compares the two on the quality figures). A step has two halves,
+// senseBoid and steerBoid (World.h); WorldFlockLanes.cpp does the second for four boids
+// at once.
 #include "simcore/world/World.h"
 #include "simcore/world/NearestList.h"
 
@@ -17,7 +19,6 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
-#include <array>
 #include <bit>
 #include <cmath>
 
@@ -119,29 +120,20 @@ void World::prepareBoidStep()
     m_boidSpeedMax = top < 0x7f800000 ? std::bit_cast<float>(top) : INFINITY;
 }
 
-float World::lastNearestBound(std::size_t i, glm::vec3 p, float perception2) const
-{
-    constexpr std::size_t k = kMaxNeighbours;
-    if (m_nearCount[i] != k)
-        return perception2;
-    const std::uint32_t* last = &m_nearIndex[i * k];
-    float far2 = 0.0f;
-    for (std::size_t n = 0; n < k; ++n) {
-        const std::uint32_t j = last[n];
-        const glm::vec3 d = j < m_pos.size() ? m_pos[j] - p : glm::vec3(INFINITY);
-        far2 = std::max(far2, glm::dot(d, d));
-    }
-    return std::min(perception2, far2);
-}
-
 void World::stepBoid(std::size_t i, NeighbourGrid::Sweep* sweep)
 {
+    BoidSense sense;
+    senseBoid(i, sweep, sense);
+    steerBoid(i, sense);
+}
+
+void World::senseBoid(std::size_t i, NeighbourGrid::Sweep* sweep, BoidSense& out)
+{
     const std::uint16_t type = m_info[i].typeIndex;
-    const TypeSteering& s = m_steering[type];
     const TypeParams& t = m_types[type];
     const BoidType& b = m_boidTypes[type];
     const glm::vec3 p = m_pos[i], v = m_vel[i], fwd = m_fwd[i];
-    const float radius = m_radius[i], maxSpeed = nonNegative(m_maxSpeed[i]);
+    const float radius = m_radius[i];
 
     // Sense: the k nearest in the perception radius and view cone, nearest first, ties by
     // index (as gatherNeighbours, without the layers and priorities a boid world lacks).
@@ -153,6 +145,7 @@ void World::stepBoid(std::size_t i, NeighbourGrid::Sweep* sweep)
     // with the final bound, it tells how near an agent outside the list can be.
     float nearestUnseen2 = INFINITY;
     const float c = t.cosHalfView;
+    const auto self = std::uint32_t(i);
     auto search = [&](float startBound) {
         best.count = 0;
         bound = startBound;
@@ -160,7 +153,7 @@ void World::stepBoid(std::size_t i, NeighbourGrid::Sweep* sweep)
         auto consider = [&](std::uint32_t j, const glm::vec3& q) {
             const glm::vec3 d = q - p;
             const float d2 = glm::dot(d, d);
-            if (d2 > bound || j == i)
+            if (d2 > bound || j == self)
                 return;
             if (outsideViewCone(d, d2, fwd, c)) {
                 const float contact = radius + m_radius[j];
@@ -189,14 +182,14 @@ void World::stepBoid(std::size_t i, NeighbourGrid::Sweep* sweep)
 
     const std::size_t count = best.count;
 
-    // Steer: separation, alignment and cohesion in one pass over the neighbours.
+    // Separation, and the sums for alignment and cohesion, in one pass over the neighbours.
     const float range = b.range, damping = b.damping, maxForce = b.maxForce;
     glm::vec3 push(0.0f), headings(0.0f), velocities(0.0f), centre(0.0f);
     std::uint32_t* nearIndex = &m_nearIndex[i * k];
     // Where each neighbour's old velocity takes it, and how close it may come (for the
-    // collide pass: see collideFree below).
-    std::array<glm::vec3, k> drift;
-    std::array<float, k> keepOut;
+    // collide pass: see collideFree in finishBoid).
+    glm::vec3* drift = out.drift;
+    float* keepOut = out.keepOut;
     for (std::size_t n = 0; n < count; ++n) {
         const auto j = best.index(n);
         nearIndex[n] = j;
@@ -221,6 +214,28 @@ void World::stepBoid(std::size_t i, NeighbourGrid::Sweep* sweep)
         push += away * (fade * (maxForce * w - damping * opening));
     }
     m_nearCount[i] = std::uint8_t(count);
+    out.push = push;
+    out.headings = headings;
+    out.velocities = velocities;
+    out.centre = centre;
+    out.count = std::uint32_t(count);
+    out.bound = bound;
+    out.nearestUnseen2 = nearestUnseen2;
+}
+
+// steerFourBoids (WorldFlockLanes.cpp) repeats this, operation for operation, for four
+// boids at once: a change here needs the same change there. TestNeighbourSweep fails when
+// the two differ in a bit (the grid-order path steers by fours, the index-order one here).
+void World::steerBoid(std::size_t i, const BoidSense& in)
+{
+    const std::uint16_t type = m_info[i].typeIndex;
+    const TypeSteering& s = m_steering[type];
+    const BoidType& b = m_boidTypes[type];
+    const glm::vec3 p = m_pos[i], v = m_vel[i], fwd = m_fwd[i];
+    const float radius = m_radius[i], maxSpeed = nonNegative(m_maxSpeed[i]);
+    const std::size_t count = in.count;
+    const glm::vec3 push = in.push, headings = in.headings, velocities = in.velocities, centre = in.centre;
+    const float maxForce = b.maxForce;
 
     // Blended in World::steer's order (containment, separation, pursuit, alignment,
     // cohesion, wander), each behaviour as its function in simcore/steering computes it
@@ -332,6 +347,14 @@ void World::stepBoid(std::size_t i, NeighbourGrid::Sweep* sweep)
         nextUp = normalizeOr(glm::cross(side, nextFwd), kWorldUp);
     }
 
+    finishBoid(i, in, pos, vel, nextFwd, side, nextUp, wanderNext);
+}
+
+void World::finishBoid(std::size_t i, const BoidSense& in, glm::vec3 pos, glm::vec3 vel, glm::vec3 nextFwd,
+                       glm::vec3 side, glm::vec3 nextUp, WanderState wanderNext)
+{
+    const TypeSteering& s = m_steering[m_info[i].typeIndex];
+    const float radius = m_radius[i];
     // Fliers may skim the ground but never pass through it (as in World::step).
     // (terrainHeight is 0 without a height field: no call for the common flat ground.)
     const float ground = m_terrain.heights.empty() ? 0.0f : groundHeight(pos.x, pos.z);
@@ -348,15 +371,15 @@ void World::stepBoid(std::size_t i, NeighbourGrid::Sweep* sweep)
     // these sums and of the pass's own.
     const float margin = 1e-4f + 4e-6f * (std::fabs(pos.x) + std::fabs(pos.y) + std::fabs(pos.z));
     bool collideFree = m_boidSlackM > 0.0f;
-    for (std::size_t n = 0; n < count; ++n) {
-        const glm::vec3 d = pos - drift[n];
-        const float keep = keepOut[n] + margin;
+    for (std::size_t n = 0; n < in.count; ++n) {
+        const glm::vec3 d = pos - in.drift[n];
+        const float keep = in.keepOut[n] + margin;
         collideFree = collideFree && glm::dot(d, d) > keep * keep;
     }
     // Overlaps listed: every agent outside the list was at least sqrt(outside2) away, and
     // after the collide pass each agent has moved at most its max speed times dt, so
     // none outside can end the step within contact distance (countStep relies on it).
-    const float outside2 = std::min(bound, nearestUnseen2);
+    const float outside2 = std::min(in.bound, in.nearestUnseen2);
     const float need = radius + m_maxRadius + (m_maxSpeed[i] + m_boidSpeedMax) * m_dt * 1.0001f + margin;
     const bool listed = m_boidCountsOverlaps && m_maxSpeed[i] >= 0.0f && outside2 > need * need;
     m_collideFree[i] = std::uint8_t((collideFree ? kCollideFree : 0) | (listed ? kOverlapsListed : 0));

@@ -81,6 +81,22 @@ SteeringAgent World::steeringAgent(std::size_t i) const
     return a;
 }
 
+// The boids and walker kernels' first search bound (World.h).
+float World::lastNearestBound(std::size_t i, glm::vec3 p, float perception2) const
+{
+    constexpr std::size_t k = kMaxNeighbours;
+    if (m_nearCount[i] != k)
+        return perception2;
+    const std::uint32_t* last = &m_nearIndex[i * k];
+    float far2 = 0.0f;
+    for (std::size_t n = 0; n < k; ++n) {
+        const std::uint32_t j = last[n];
+        const glm::vec3 d = j < m_pos.size() ? m_pos[j] - p : glm::vec3(INFINITY);
+        far2 = std::max(far2, glm::dot(d, d));
+    }
+    return std::min(perception2, far2);
+}
+
 // Sense: the nearest kMaxNeighbours agents within the perception radius and view cone
 // (Reynolds 1987), nearest first, ties by id, so the choice never depends on grid order.
 std::size_t World::gatherNeighbours(std::size_t i, Neighbour* out, std::uint32_t* indices) const

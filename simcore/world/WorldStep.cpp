@@ -10,6 +10,8 @@
 
 #include <glm/geometric.hpp>
 
+#include <omp.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -53,9 +55,8 @@ void World::step()
 #pragma omp parallel num_threads(m_threads)
         {
             NeighbourGrid::Sweep sweep;
-#pragma omp for schedule(static)
-            for (std::size_t k = 0; k < n; ++k)
-                stepAgent(order[k], hasStatics, &sweep);
+            const auto threads = std::size_t(omp_get_num_threads()), t = std::size_t(omp_get_thread_num());
+            stepInGridOrder(order, n * t / threads, n * (t + 1) / threads, hasStatics, sweep);
         }
     } else {
 #pragma omp parallel for schedule(static, 256) num_threads(m_threads)
@@ -120,6 +121,32 @@ void World::step()
     countStep();
     countLeaderOvertakes();
     trafficAfterStep();
+}
+
+// Boids in batches of kBoidBatch (World.h, BoidSense): their senses, then their steering.
+void World::stepInGridOrder(const std::uint32_t* order, std::size_t begin, std::size_t end, bool hasStatics,
+                            NeighbourGrid::Sweep& sweep)
+{
+    constexpr std::size_t kBoidBatch = 16;  // 8 to 32 measured alike, 1 about 5 % slower
+    BoidSense sensed[kBoidBatch];
+    std::uint32_t boid[kBoidBatch];
+    std::size_t held = 0;
+    auto steerHeld = [&] {
+        steerBoids(boid, sensed, held);
+        held = 0;
+    };
+    for (std::size_t k = begin; k < end; ++k) {
+        const std::uint32_t i = order[k];
+        if (!m_boidKernel[m_info[i].typeIndex] || m_stopped[i]) {
+            stepAgent(i, hasStatics, &sweep);
+            continue;
+        }
+        senseBoid(i, &sweep, sensed[held]);
+        boid[held++] = i;
+        if (held == kBoidBatch)
+            steerHeld();
+    }
+    steerHeld();
 }
 
 // One agent's sense, steer and integrate: its next state from the old one.
@@ -369,8 +396,14 @@ void World::countStep()
     m_grid.rebuild(m_pos, m_hasFliers, m_out, m_threads);
     m_gridCurrent = true;
     const bool listedOverlaps = m_boidCountsOverlaps && m_collideFree.size() == n;
-#pragma omp parallel for schedule(static, 256) num_threads(m_threads) reduction(+ : overlaps, nonFinite, inObstacle, red)
-    for (std::size_t i = 0; i < n; ++i) {
+    // In the grid's order when it holds every agent, as the step does: each agent's
+    // neighbours then lie near it in memory too. (Counts add up the same in any order.)
+    const std::span<const std::uint32_t> gridOrder = m_grid.order();
+    const bool inGridOrder = m_neighbourSweep && gridOrder.size() == n;
+    const std::uint32_t* order = gridOrder.data();
+#pragma omp parallel for schedule(static) num_threads(m_threads) reduction(+ : overlaps, nonFinite, inObstacle, red)
+    for (std::size_t k = 0; k < n; ++k) {
+        const std::size_t i = inGridOrder ? order[k] : k;
         if (!isFinite(m_pos[i]) || !isFinite(m_vel[i]))
             ++nonFinite;
         if (m_out[i])

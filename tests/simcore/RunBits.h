@@ -1,11 +1,13 @@
 #pragma once
-// A World stepped to its end state, and whether two such runs agree bit for bit: for the
-// tests that prove a fast path changes nothing (TestCollideShortcut, TestNeighbourSweep).
+// A World stepped to its end state, and whether two such runs agree bit for bit, and a
+// packed flock to run: for the tests that prove a fast path changes nothing
+// (TestCollideShortcut, TestNeighbourSweep).
 
 #include "simcore/world/World.h"
 
 #include <glm/vec3.hpp>
 
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <vector>
@@ -25,6 +27,19 @@ private:
         return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(glm::vec3)) == 0;
     }
 };
+
+// Packs the birds of a flock scene (every agent but the first, the lead bird) on a lattice
+// 12 wide and 12 high from (100, y0, -12), spacingM apart, each nudged across by up to
+// jitterM in a fixed pattern: a dense start where many birds touch.
+inline void packOnLattice(sim::Scene& s, float spacingM, float jitterM = 0.0f, float y0 = 30.0f)
+{
+    for (std::size_t k = 1; k < s.agents.size(); ++k) {
+        const auto i = float(k);
+        s.agents[k].position = glm::vec3(100.0f + spacingM * std::fmod(i, 12.0f) + jitterM * std::sin(i * 12.9898f),
+                                         y0 + spacingM * std::fmod(std::floor(i / 12.0f), 12.0f),
+                                         -12.0f + spacingM * std::floor(i / 144.0f) + jitterM * std::cos(i * 78.233f));
+    }
+}
 
 // The scene stepped `steps` times with these options.
 inline RunBits runToEnd(const sim::Scene& s, const sim::WorldOptions& options, int steps)

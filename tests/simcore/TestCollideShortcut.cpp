@@ -12,8 +12,6 @@
 
 #include <QTest>
 
-#include <cmath>
-
 using namespace throng::sim;
 
 namespace {
@@ -22,13 +20,7 @@ namespace {
 Scene packedFlock(float spacingM, float y0 = 30.0f)
 {
     Scene s = makeFlockScenario(1500, 5);
-    for (std::size_t k = 1; k < s.agents.size(); ++k) {
-        const auto i = float(k);
-        const float jitter = 0.15f * spacingM;
-        s.agents[k].position = glm::vec3(100.0f + spacingM * std::fmod(i, 12.0f) + jitter * std::sin(i * 12.9898f),
-                                         y0 + spacingM * std::fmod(std::floor(i / 12.0f), 12.0f),
-                                         -12.0f + spacingM * std::floor(i / 144.0f) + jitter * std::cos(i * 78.233f));
-    }
+    throng::test::packOnLattice(s, spacingM, 0.15f * spacingM, y0);
     return s;
 }
 
