@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <system_error>
 
 namespace throng::sim {
 
@@ -309,13 +310,27 @@ SaveResult writeFileAtomically(const std::string& path, const std::string& text)
     return {true, {}};
 }
 
+namespace {
+
+// A file the scene refers to (a brain, keyframes), written where the reference points
+// from the scene's new folder. Its folder is made if missing: a demo's "../brains/" does
+// not exist beside a Save As into a fresh folder. (The scene's own folder must exist.)
+SaveResult writeReferencedFile(const std::string& path, const std::string& text)
+{
+    std::error_code ec;
+    std::filesystem::create_directories(std::filesystem::path(path).parent_path(), ec);
+    return writeFileAtomically(path, text);  // reports the folder if it could not be made
+}
+
+}  // namespace
+
 SaveResult saveScene(const Scene& scene, const std::string& path)
 {
     const std::string baseDir = std::filesystem::path(path).parent_path().string();
     for (const BrainGraph& b : scene.brains) {
         if (b.file.empty())
             continue;
-        SaveResult r = writeFileAtomically(detail::resolvePath(baseDir, b.file), brainToYaml(b));
+        SaveResult r = writeReferencedFile(detail::resolvePath(baseDir, b.file), brainToYaml(b));
         if (!r.ok)
             return r;
     }
@@ -327,7 +342,7 @@ SaveResult saveScene(const Scene& scene, const std::string& path)
         std::string text;
         for (const Keyframe& k : h.keyframes)
             text += num(k.position.x) + ' ' + num(k.position.y) + ' ' + num(k.position.z) + '\n';
-        SaveResult r = writeFileAtomically(detail::resolvePath(baseDir, h.keyframesFile), text);
+        SaveResult r = writeReferencedFile(detail::resolvePath(baseDir, h.keyframesFile), text);
         if (!r.ok)
             return r;
     }

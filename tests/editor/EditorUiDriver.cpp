@@ -2,6 +2,7 @@
 
 #include "editor/viewport/Viewport.h"
 
+#include <QDir>
 #include <QFile>
 #include <QTest>
 #include <QToolButton>
@@ -10,10 +11,17 @@ namespace throng::editor::test {
 
 bool showWithScene(MainWindow& window, const QTemporaryDir& dir, const QString& name)
 {
-    const QString source = QStringLiteral(THRONG_SOURCE_DIR "/resources/scenes/") + name;
-    const QString copy = dir.filePath(name);
+    // The demos refer to their brains as "../brains/": copy the two folders side by side.
+    const QString resources = QStringLiteral(THRONG_SOURCE_DIR "/resources/");
+    if (!QDir(dir.path()).mkpath("scenes") || !QDir(dir.path()).mkpath("brains"))
+        return false;
+    for (const QString& brain : QDir(resources + "brains").entryList({"*.brain.yaml"}, QDir::Files))
+        if (!QFile::exists(dir.filePath("brains/" + brain)) &&
+            !QFile::copy(resources + "brains/" + brain, dir.filePath("brains/" + brain)))
+            return false;
+    const QString copy = dir.filePath("scenes/" + name);
     QFile::remove(copy);
-    if (!QFile::copy(source, copy))
+    if (!QFile::copy(resources + "scenes/" + name, copy))
         return false;
     QFile(copy).setPermissions(QFile::ReadOwner | QFile::WriteOwner);
     return showWithSceneFile(window, copy);

@@ -157,7 +157,7 @@ private slots:
         MainWindow window;
         QVERIFY(showWithScene(window, m_dir, "crossroads.yaml"));
         QVERIFY(clickToolButton(window, "hero"));
-        const QString good = m_dir.filePath("run.xyz");
+        const QString good = m_dir.filePath("scenes/run.xyz");  // beside the scene's copy
         writeText(good, "# x y z per frame\n-30 0 -30\n-29.5 0 -30\n-29 0 -30.25\n");
         QVERIFY(importThroughDialog(window, good));
         const auto& heroes = window.document().scene().heroes;

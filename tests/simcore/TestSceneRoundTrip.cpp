@@ -49,7 +49,10 @@ private slots:
         QFETCH(QString, path);
         const LoadResult loaded = loadScene(path.toStdString());
         QVERIFY2(loaded.diagnostics.empty(), loaded.diagnostics.empty() ? "" : loaded.diagnostics[0].format().c_str());
-        QTemporaryDir dir;
+        // Saved one folder down: a demo's "../brains/" then stays inside the temporary folder.
+        QTemporaryDir top;
+        QVERIFY(QDir(top.path()).mkpath("scenes"));
+        const QDir dir(top.filePath("scenes"));
         // Referenced files (brains, keyframes) live beside the scene: copy them along.
         for (const QString& f : QDir(QFileInfo(path).path()).entryList(QDir::Files))
             if (!f.endsWith(".yaml") || f.endsWith(".brain.yaml"))
@@ -102,6 +105,25 @@ private slots:
         QTemporaryDir dir;
         const std::string path = dir.filePath("copy.yaml").toStdString();
         QVERIFY(saveScene(loaded.scene, path).ok);
+        const LoadResult again = loadScene(path);
+        QVERIFY2(again.ok(), again.diagnostics.empty() ? "" : again.diagnostics[0].format().c_str());
+        QVERIFY(again.scene == loaded.scene);
+    }
+
+    // A shipped demo refers to "../brains/": saved into a fresh folder, that folder's
+    // sibling is made, and the copy loads.
+    void saveMakesTheFoldersOfReferencedFiles()
+    {
+        const QString source = QStringLiteral(THRONG_SOURCE_DIR "/resources/scenes/crossroads.yaml");
+        const LoadResult loaded = loadScene(source.toStdString());
+        QVERIFY(loaded.ok());
+        QTemporaryDir dir;
+        QVERIFY(QDir(dir.path()).mkpath("shots"));
+        const std::string path = dir.filePath("shots/crossroads.yaml").toStdString();
+        const SaveResult saved = saveScene(loaded.scene, path);
+        QVERIFY2(saved.ok, saved.error.c_str());
+        QVERIFY(QFile::exists(dir.filePath("brains/pedestrian.brain.yaml")));
+        QVERIFY(QFile::exists(dir.filePath("brains/car.brain.yaml")));
         const LoadResult again = loadScene(path);
         QVERIFY2(again.ok(), again.diagnostics.empty() ? "" : again.diagnostics[0].format().c_str());
         QVERIFY(again.scene == loaded.scene);
