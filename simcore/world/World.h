@@ -7,6 +7,7 @@
 #include "simcore/steering/Steering.h"
 #include "simcore/world/FrameCache.h"
 #include "simcore/world/NeighbourGrid.h"
+#include "simcore/world/RunSplit.h"
 #include "simcore/world/SegmentGrid.h"
 #include "simcore/world/StepCounters.h"
 #include "simcore/world/TypeSteering.h"
@@ -329,6 +330,7 @@ private:
 
     NeighbourGrid m_grid;
     bool m_gridCurrent = false;  // the grid indexes the current positions
+    RunSplit m_gridSplit;        // each thread's run of the grid order (WorldStep.cpp)
     bool m_hasFliers = false;    // then the grid also sorts by height for 3D queries
     bool m_neighbourSweep = true;  // WorldOptions::neighbourSweep
     float m_maxRadius = 0.0f;    // the largest body radius, m
