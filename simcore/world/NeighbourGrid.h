@@ -2,6 +2,8 @@
 // A uniform grid over agent positions, rebuilt each step by counting sort (O(N)); a
 // query visits only the cells a radius overlaps. Holds indices, never agent data.
 
+#include "simcore/world/detail/Lanes.h"
+
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
@@ -138,13 +140,7 @@ public:
             return;
         }
         const float reach = std::sqrt(std::min(r * r, boundSq())) * 1.0001f + 1e-4f;  // never skip on rounding
-        // Does the reach stay within the sweep's columns, computed as cellX and cellZ do
-        // (which round monotonically, so no agent within reach lies in a cell outside)?
-        // Only a query within a hair of its cell's edge goes the slow way.
-        const float ux0 = (p.x - reach - m_min.x) * m_inv, ux1 = (p.x + reach - m_min.x) * m_inv;
-        const float uz0 = (p.z - reach - m_min.y) * m_inv, uz1 = (p.z + reach - m_min.y) * m_inv;
-        if ((sweep.xLo > 0 && ux0 < float(sweep.xLo)) || (sweep.xHi < m_cols - 1 && ux1 >= float(sweep.xHi + 1)) ||
-            (sweep.zLo > 0 && uz0 < float(sweep.zLo)) || (sweep.zHi < m_rows - 1 && uz1 >= float(sweep.zHi + 1))) {
+        if (!withinColumns(p, reach, sweep)) {
             forEachNearest(p, r, boundSq, f);
             return;
         }
@@ -171,6 +167,62 @@ public:
                 f(sorted[j], pos[j]);
         }
     }
+    // forEachNearestSweep for four queries at once, all in one cell and with one radius
+    // (consecutive boids of the grid's order): each column's window is scanned once for
+    // the four, from the lowest query's reach to the highest's, and skipped only when it
+    // lies beyond every query's bound. boundSq() gives the four squared bounds, lane by
+    // lane (each only shrinks; a negative one leaves its lane out); f(j, position of j) is
+    // offered every agent within any query's bound (which others, is unspecified). False,
+    // having offered nothing, when the sweep cannot serve all four or a reach leaves its
+    // columns: the caller then queries one by one.
+    template <typename B, typename F>
+    bool forEachNearestSweep4(const glm::vec3 (&p)[4], float r, B&& boundSq, F&& f, Sweep& sweep) const
+    {
+        using detail::F4;
+        if (!m_byHeight || !std::isfinite(r))
+            return false;
+        for (const glm::vec3& q : p)
+            if (!(std::isfinite(q.x) && std::isfinite(q.y) && std::isfinite(q.z)))
+                return false;
+        if (!(aimedAt(p[0], r, sweep) || aimSweep(p[0], r, sweep)) || !aimedAt(p[1], r, sweep) ||
+            !aimedAt(p[2], r, sweep) || !aimedAt(p[3], r, sweep))
+            return false;
+        const F4 bounds = boundSq();
+        F4 reach2;
+        float yLo = INFINITY, yHi = -INFINITY;
+        for (int l = 0; l < 4; ++l) {
+            // As forEachNearestSweep (a negative bound: a lane left empty).
+            const float reach = std::sqrt(std::min(r * r, std::max(bounds[l], 0.0f))) * 1.0001f + 1e-4f;
+            if (!withinColumns(p[l], reach, sweep))
+                return false;
+            reach2[l] = reach * reach;
+            yLo = std::min(yLo, p[l].y - reach);
+            yHi = std::max(yHi, p[l].y + reach);
+        }
+        const F4 px{p[0].x, p[1].x, p[2].x, p[3].x}, pz{p[0].z, p[1].z, p[2].z, p[3].z};
+        const glm::vec3* pos = m_sortedPos.data();
+        const std::uint32_t* sorted = m_sorted.data();
+        for (int k = 0; k < sweep.count; ++k) {
+            // As forEachNearestSweep, lane by lane: skipped when no query can reach it.
+            const F4 cx = detail::f4(sweep.x0[k]), cz = detail::f4(sweep.z0[k]);
+            const F4 dx = px - detail::minOf(detail::maxOf(px, cx), cx + m_cell);
+            const F4 dz = pz - detail::minOf(detail::maxOf(pz, cz), cz + m_cell);
+            if (k > 0 && !detail::any(dx * dx + dz * dz <= detail::minOf(reach2, boundSq() * 1.0002f)))
+                continue;
+            std::uint32_t lo = sweep.lo[k];
+            const std::uint32_t b = sweep.begin[k], e = sweep.end[k];
+            while (lo > b && pos[lo - 1].y >= yLo)
+                --lo;
+            while (lo < e && pos[lo].y < yLo)
+                ++lo;
+            sweep.lo[k] = lo;
+            for (std::uint32_t j = lo; j < e && pos[j].y <= yHi; ++j)
+                f(sorted[j], pos[j]);
+        }
+        return true;
+    }
+    // The cell a point lies in (forEachNearestSweep4's queries share one).
+    std::uint32_t cellIndex(glm::vec3 p) const { return std::uint32_t(cellZ(p.z) * m_cols + cellX(p.x)); }
     // The agents in the grid's order (by cell, then by height): the order to make
     // forEachNearestSweep queries in. Holds every agent only when none was skipped.
     std::span<const std::uint32_t> order() const { return m_sorted; }
@@ -184,6 +236,16 @@ public:
     }
 
 private:
+    // Whether a reach around p stays within the sweep's columns, computed as cellX and cellZ
+    // do (which round monotonically, so no agent within reach lies in a cell outside).
+    // Only a query within a hair of its cell's edge fails.
+    bool withinColumns(glm::vec3 p, float reach, const Sweep& sweep) const
+    {
+        const float ux0 = (p.x - reach - m_min.x) * m_inv, ux1 = (p.x + reach - m_min.x) * m_inv;
+        const float uz0 = (p.z - reach - m_min.y) * m_inv, uz1 = (p.z + reach - m_min.y) * m_inv;
+        return !((sweep.xLo > 0 && ux0 < float(sweep.xLo)) || (sweep.xHi < m_cols - 1 && ux1 >= float(sweep.xHi + 1)) ||
+                 (sweep.zLo > 0 && uz0 < float(sweep.zLo)) || (sweep.zHi < m_rows - 1 && uz1 >= float(sweep.zHi + 1)));
+    }
     // Whether the sweep already holds the columns for a query at p with radius r.
     bool aimedAt(glm::vec3 p, float r, const Sweep& sweep) const
     {

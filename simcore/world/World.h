@@ -6,6 +6,7 @@
 #include "simcore/scene/Scene.h"
 #include "simcore/steering/Steering.h"
 #include "simcore/world/FrameCache.h"
+#include "simcore/world/NearestList.h"
 #include "simcore/world/NeighbourGrid.h"
 #include "simcore/world/RunSplit.h"
 #include "simcore/world/SegmentGrid.h"
@@ -199,6 +200,16 @@ private:
         float keepOut[kMaxNeighbours];    // and how close it may come
     };
     void senseBoid(std::size_t i, NeighbourGrid::Sweep* sweep, BoidSense& out);
+    // senseBoid's two parts: the k nearest within a squared bound, then the sums over them.
+    struct BoidNearest {
+        NearestList<kMaxNeighbours> best;
+        float bound, nearestUnseen2;  // see senseBoid
+    };
+    void searchBoid(std::size_t i, NeighbourGrid::Sweep* sweep, float startBound, BoidNearest& found) const;
+    void sumBoid(std::size_t i, const BoidNearest& found, BoidSense& out);
+    // senseBoid for boid[0, count), up to four consecutive boids of the grid's order in one
+    // cell, searched together (WorldFlockSense.cpp).
+    void senseFourBoids(const std::uint32_t* boid, int count, NeighbourGrid::Sweep& sweep, BoidSense* out);
     void steerBoid(std::size_t i, const BoidSense& in);
     // steerBoid for boid[0, count), four at a time where it can (WorldFlockLanes.cpp).
     void steerBoids(const std::uint32_t* boid, const BoidSense* sensed, std::size_t count);

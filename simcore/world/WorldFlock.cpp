@@ -129,57 +129,65 @@ void World::stepBoid(std::size_t i, NeighbourGrid::Sweep* sweep)
 
 void World::senseBoid(std::size_t i, NeighbourGrid::Sweep* sweep, BoidSense& out)
 {
-    const std::uint16_t type = m_info[i].typeIndex;
-    const TypeParams& t = m_types[type];
-    const BoidType& b = m_boidTypes[type];
-    const glm::vec3 p = m_pos[i], v = m_vel[i], fwd = m_fwd[i];
-    const float radius = m_radius[i];
-
-    // Sense: the k nearest in the perception radius and view cone, nearest first, ties by
-    // index (as gatherNeighbours, without the layers and priorities a boid world lacks).
-    constexpr std::size_t k = kMaxNeighbours;
-    NearestList<k> best;
-    const float perception2 = t.perception * t.perception;
-    float bound = perception2;
-    // The nearest candidate left out for being outside the view cone (squared distance):
-    // with the final bound, it tells how near an agent outside the list can be.
-    float nearestUnseen2 = INFINITY;
-    const float c = t.cosHalfView;
-    const auto self = std::uint32_t(i);
-    auto search = [&](float startBound) {
-        best.count = 0;
-        bound = startBound;
-        nearestUnseen2 = INFINITY;
-        auto consider = [&](std::uint32_t j, const glm::vec3& q) {
-            const glm::vec3 d = q - p;
-            const float d2 = glm::dot(d, d);
-            if (d2 > bound || j == self)
-                return;
-            if (outsideViewCone(d, d2, fwd, c)) {
-                const float contact = radius + m_radius[j];
-                if (d2 > contact * contact) {
-                    nearestUnseen2 = std::min(nearestUnseen2, d2);
-                    return;
-                }
-            }
-            if (best.insert(nearestKey(d2, j)) && best.full())
-                bound = best.worstDistance2();
-        };
-        if (sweep)
-            m_grid.forEachNearestSweep(p, t.perception, [&] { return bound; }, consider, *sweep);
-        else
-            m_grid.forEachNearest(p, t.perception, [&] { return bound; }, consider);
-    };
+    const float perception = m_types[m_info[i].typeIndex].perception, perception2 = perception * perception;
     // Searching within last step's k nearest (lastNearestBound) visits far fewer cells and
     // candidates; when k are found in it they are exactly the k nearest within the
     // perception radius (everyone nearer lies inside the bound, and the grid offers all of
     // them), and when fewer are found the search runs again in full. So the result never
     // depends on the guess.
-    const float guess2 = m_neighbourSweep ? lastNearestBound(i, p, perception2) : perception2;
-    search(guess2);
-    if (!best.full() && guess2 < perception2)
-        search(perception2);
+    const float guess2 = m_neighbourSweep ? lastNearestBound(i, m_pos[i], perception2) : perception2;
+    BoidNearest found;
+    searchBoid(i, sweep, guess2, found);
+    if (!found.best.full() && guess2 < perception2)
+        searchBoid(i, sweep, perception2, found);
+    sumBoid(i, found, out);
+}
 
+void World::searchBoid(std::size_t i, NeighbourGrid::Sweep* sweep, float startBound, BoidNearest& found) const
+{
+    const TypeParams& t = m_types[m_info[i].typeIndex];
+    const glm::vec3 p = m_pos[i], fwd = m_fwd[i];
+    const float radius = m_radius[i];
+    // Sense: the k nearest in the perception radius and view cone, nearest first, ties by
+    // index (as gatherNeighbours, without the layers and priorities a boid world lacks).
+    NearestList<kMaxNeighbours>& best = found.best;
+    best.count = 0;
+    float bound = startBound;
+    // The nearest candidate left out for being outside the view cone (squared distance):
+    // with the final bound, it tells how near an agent outside the list can be.
+    float nearestUnseen2 = INFINITY;
+    const float c = t.cosHalfView;
+    const auto self = std::uint32_t(i);
+    auto consider = [&](std::uint32_t j, const glm::vec3& q) {
+        const glm::vec3 d = q - p;
+        const float d2 = glm::dot(d, d);
+        if (d2 > bound || j == self)
+            return;
+        if (outsideViewCone(d, d2, fwd, c)) {
+            const float contact = radius + m_radius[j];
+            if (d2 > contact * contact) {
+                nearestUnseen2 = std::min(nearestUnseen2, d2);
+                return;
+            }
+        }
+        if (best.insert(nearestKey(d2, j)) && best.full())
+            bound = best.worstDistance2();
+    };
+    if (sweep)
+        m_grid.forEachNearestSweep(p, t.perception, [&] { return bound; }, consider, *sweep);
+    else
+        m_grid.forEachNearest(p, t.perception, [&] { return bound; }, consider);
+    found.bound = bound;
+    found.nearestUnseen2 = nearestUnseen2;
+}
+
+void World::sumBoid(std::size_t i, const BoidNearest& found, BoidSense& out)
+{
+    const BoidType& b = m_boidTypes[m_info[i].typeIndex];
+    const glm::vec3 p = m_pos[i], v = m_vel[i];
+    const float radius = m_radius[i];
+    constexpr std::size_t k = kMaxNeighbours;
+    const NearestList<k>& best = found.best;
     const std::size_t count = best.count;
 
     // Separation, and the sums for alignment and cohesion, in one pass over the neighbours.
@@ -219,8 +227,8 @@ void World::senseBoid(std::size_t i, NeighbourGrid::Sweep* sweep, BoidSense& out
     out.velocities = velocities;
     out.centre = centre;
     out.count = std::uint32_t(count);
-    out.bound = bound;
-    out.nearestUnseen2 = nearestUnseen2;
+    out.bound = found.bound;
+    out.nearestUnseen2 = found.nearestUnseen2;
 }
 
 // steerFourBoids (WorldFlockLanes.cpp) repeats this, operation for operation, for four

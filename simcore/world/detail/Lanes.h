@@ -1,10 +1,11 @@
 #pragma once
-// Four floats side by side, for the boids kernel's steering of four boids at once
-// (WorldFlockLanes.cpp). GCC's vector extension: SSE on x86-64, plain code elsewhere; a
-// mask picks lanes with the vector form of ?:, which GCC has in C++. Each helper does per
-// lane exactly what its glm or SteeringMath.h counterpart does for one float, operation
-// for operation (no reciprocal estimates; simcore builds with -ffp-contract=off, so no
-// fused multiply-add either), so the results are the same to the bit.
+// Four floats side by side, for the boids kernel's search and steering of four boids at
+// once (WorldFlockSense.cpp, WorldFlockLanes.cpp). GCC's vector extension: SSE on x86-64,
+// plain code elsewhere; a mask picks lanes with the vector form of ?:, which GCC has in
+// C++. Each helper does per lane exactly what its glm or SteeringMath.h counterpart does
+// for one float, operation for operation (no reciprocal estimates; simcore builds with
+// -ffp-contract=off, so no fused multiply-add either), so the results are the same to the
+// bit.
 
 #include <cstdint>
 #include <limits>
@@ -22,6 +23,8 @@ inline F4 f4(float x) { return F4{x, x, x, x}; }
 inline F4 select(M4 m, F4 a, F4 b) { return m ? a : b; }
 // std::min, lane by lane: b < a ? b : a.
 inline F4 minOf(F4 a, F4 b) { return select(b < a, b, a); }
+// std::max, lane by lane: a < b ? b : a.
+inline F4 maxOf(F4 a, F4 b) { return select(a < b, b, a); }
 inline F4 sqrtOf(F4 x)
 {
 #if defined(__SSE__)
@@ -31,6 +34,15 @@ inline F4 sqrtOf(F4 x)
 #endif
 }
 inline bool any(M4 m) { return (m[0] | m[1] | m[2] | m[3]) != 0; }
+// The lanes a mask holds, as bits 0 to 3.
+inline unsigned bitsOf(M4 m)
+{
+#if defined(__SSE__)
+    return unsigned(_mm_movemask_ps(__m128(m)));
+#else
+    return unsigned(m[0] & 1) | unsigned(m[1] & 2) | unsigned(m[2] & 4) | unsigned(m[3] & 8);
+#endif
+}
 
 // A glm::vec3 per lane.
 struct V4 {

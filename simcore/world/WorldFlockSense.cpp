@@ -1,0 +1,96 @@
+// The boids kernel's search (WorldFlock.cpp, searchBoid) for up to four consecutive boids of
+// the grid's order at once. They lie in one cell at rising heights, so the same columns hold
+// their neighbours: each column's window is read once for the four
+// (NeighbourGrid::forEachNearestSweep4), and each candidate's squared distance to the four
+// is one 4-wide sum (detail/Lanes.h). A candidate is then ranked only for the boids whose
+// bound it lies within, exactly as searchBoid ranks it, so each boid's k nearest, bound
+// and nearest unseen candidate are what searchBoid finds for it alone: the kept
+// neighbours and their order are the same, and so is the result to the bit
+// (TestNeighbourSweep and the flock's state hash show it).
+#include "simcore/world/World.h"
+
+#include "simcore/world/detail/Lanes.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+
+namespace throng::sim {
+
+using namespace detail;
+
+void World::senseFourBoids(const std::uint32_t* boid, int count, NeighbourGrid::Sweep& sweep, BoidSense* out)
+{
+    constexpr int kLanes = 4;
+    const float perception = m_types[m_info[boid[0]].typeIndex].perception;
+    const float perception2 = perception * perception;
+    bool together = m_neighbourSweep && count > 1 && count <= kLanes;
+    for (int l = 1; l < count; ++l)
+        together = together && m_types[m_info[boid[l]].typeIndex].perception == perception;
+    if (!together) {
+        for (int l = 0; l < count; ++l)
+            senseBoid(boid[l], &sweep, out[l]);
+        return;
+    }
+    glm::vec3 p[kLanes], fwd[kLanes];
+    float radius[kLanes], cone[kLanes], guess2[kLanes], nearestUnseen2[kLanes];
+    std::uint32_t self[kLanes];
+    F4 bound;
+    BoidNearest found[kLanes];
+    for (int l = 0; l < kLanes; ++l) {
+        // Lanes past count copy lane 0's point, to aim the sweep, and take no candidate.
+        const std::size_t i = boid[l < count ? l : 0];
+        self[l] = std::uint32_t(i);
+        p[l] = m_pos[i];
+        fwd[l] = m_fwd[i];
+        radius[l] = m_radius[i];
+        cone[l] = m_types[m_info[i].typeIndex].cosHalfView;
+        guess2[l] = lastNearestBound(i, p[l], perception2);  // as senseBoid
+        bound[l] = l < count ? guess2[l] : -1.0f;
+        nearestUnseen2[l] = INFINITY;
+        found[l].best.count = 0;
+    }
+    const F4 px{p[0].x, p[1].x, p[2].x, p[3].x}, py{p[0].y, p[1].y, p[2].y, p[3].y},
+        pz{p[0].z, p[1].z, p[2].z, p[3].z};
+    // searchBoid's consider, for the lanes whose bound the candidate lies within (the same
+    // test: not d2 > bound), one lane at a time.
+    auto consider = [&](std::uint32_t j, const glm::vec3& q) {
+        const F4 dx = q.x - px, dy = q.y - py, dz = q.z - pz;
+        const F4 d2 = dx * dx + dy * dy + dz * dz;  // glm::dot's order
+        for (unsigned lanes = ~bitsOf(d2 > bound) & 15u; lanes != 0; lanes &= lanes - 1) {
+            const int l = std::countr_zero(lanes);
+            if (j == self[l])
+                continue;
+            const glm::vec3 d(dx[l], dy[l], dz[l]);
+            const float dd = d2[l];
+            if (outsideViewCone(d, dd, fwd[l], cone[l])) {
+                const float contact = radius[l] + m_radius[j];
+                if (dd > contact * contact) {
+                    nearestUnseen2[l] = std::min(nearestUnseen2[l], dd);
+                    continue;
+                }
+            }
+            NearestList<kMaxNeighbours>& best = found[l].best;
+            if (best.insert(nearestKey(dd, j)) && best.full())
+                bound[l] = best.worstDistance2();
+        }
+    };
+    if (!m_grid.forEachNearestSweep4(p, perception, [&] { return bound; }, consider, sweep)) {
+        for (int l = 0; l < count; ++l)
+            senseBoid(boid[l], &sweep, out[l]);
+        return;
+    }
+    for (int l = 0; l < count; ++l) {
+        const std::size_t i = boid[l];
+        found[l].bound = bound[l];
+        found[l].nearestUnseen2 = nearestUnseen2[l];
+        // As senseBoid: fewer than k within the guess, so search the whole radius.
+        if (!found[l].best.full() && guess2[l] < perception2)
+            searchBoid(i, &sweep, perception2, found[l]);
+        sumBoid(i, found[l], out[l]);
+    }
+}
+
+}  // namespace throng::sim
