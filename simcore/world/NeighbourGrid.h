@@ -221,11 +221,39 @@ public:
         }
         return true;
     }
+    // For visiting each close pair once, in the grid's order: calls f(j, position of j)
+    // for the agents j after the k-th of order() (later in its cell, or in a later cell)
+    // whose cell overlaps the square of half-size r around it and, once sorted by height,
+    // whose height lies within r of its. So every pair within r of each other on each
+    // axis is offered once, from the earlier of the two. (Cells round monotonically, so
+    // the later one's cell lies in the earlier one's square.)
+    template <typename F>
+    void forEachLaterNear(std::size_t k, float r, F&& f) const
+    {
+        const glm::vec3 p = m_sortedPos[k];
+        const int xc = cellX(p.x), zc = cellZ(p.z);
+        const int x0 = cellX(p.x - r), x1 = cellX(p.x + r), z1 = cellZ(p.z + r);
+        const float yLo = p.y - r, yHi = p.y + r;
+        auto visit = [&](std::uint32_t from, std::uint32_t end) {
+            for (std::uint32_t j = from; j < end && (!m_byHeight || m_sortedPos[j].y <= yHi); ++j)
+                f(m_sorted[j], m_sortedPos[j]);
+        };
+        const std::size_t own = std::size_t(zc) * std::size_t(m_cols) + std::size_t(xc);
+        visit(std::uint32_t(k + 1), m_start[own + 1]);
+        for (int z = zc; z <= z1; ++z)
+            for (int x = z == zc ? xc + 1 : x0; x <= x1; ++x) {
+                const std::size_t c = std::size_t(z) * std::size_t(m_cols) + std::size_t(x);
+                const std::uint32_t end = m_start[c + 1];
+                visit(m_byHeight ? firstAtOrAbove(m_start[c], end, yLo) : m_start[c], end);
+            }
+    }
     // The cell a point lies in (forEachNearestSweep4's queries share one).
     std::uint32_t cellIndex(glm::vec3 p) const { return std::uint32_t(cellZ(p.z) * m_cols + cellX(p.x)); }
     // The agents in the grid's order (by cell, then by height): the order to make
     // forEachNearestSweep queries in. Holds every agent only when none was skipped.
     std::span<const std::uint32_t> order() const { return m_sorted; }
+    // The position of the k-th agent of order(), from the grid's copy.
+    glm::vec3 orderedPosition(std::size_t k) const { return m_sortedPos[k]; }
     bool sortedByHeight() const { return m_byHeight; }
     float cellM() const { return m_cell; }
     std::size_t memoryBytes() const

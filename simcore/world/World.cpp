@@ -85,6 +85,7 @@ World::World(const Scene& scene, const WorldOptions& options)
     buildNav(scene);
     for (const TypeParams& t : m_types) {
         m_hasFliers = m_hasFliers || t.kind == AgentKind::Flier;
+        m_allFliers = m_allFliers && t.kind == AgentKind::Flier;
         m_maxRadius = std::max(m_maxRadius, t.radius);
     }
     m_grid.configure(scene.settings.boundsMin, scene.settings.boundsMax, cell);

@@ -39,8 +39,8 @@ struct WorldOptions {
     bool overrideSeed = false;
     int threads = 0;            // 0 = OpenMP's default
     bool boidKernel = true;     // false: boids take the general steering path too (tests compare the two)
-    // false: the collide pass searches every boid's neighbours for overlaps, and so does
-    // the overlap count, instead of trusting what the boids kernel found (tests compare)
+    // false: the collide pass searches every boid's neighbours for overlaps, instead of
+    // trusting what the boids kernel found (tests compare)
     bool collideShortcut = true;
     bool walkKernel = true;     // false: walkers take the general steering path too (tests compare the two)
     // false: agents step in index order and the kernels' neighbour searches start from the
@@ -195,18 +195,14 @@ private:
     struct BoidSense {
         glm::vec3 push, headings, velocities, centre;
         std::uint32_t count;
-        float bound, nearestUnseen2;
         glm::vec3 drift[kMaxNeighbours];  // where each neighbour's old velocity takes it
         float keepOut[kMaxNeighbours];    // and how close it may come
     };
     void senseBoid(std::size_t i, NeighbourGrid::Sweep* sweep, BoidSense& out);
     // senseBoid's two parts: the k nearest within a squared bound, then the sums over them.
-    struct BoidNearest {
-        NearestList<kMaxNeighbours> best;
-        float bound, nearestUnseen2;  // see senseBoid
-    };
-    void searchBoid(std::size_t i, NeighbourGrid::Sweep* sweep, float startBound, BoidNearest& found) const;
-    void sumBoid(std::size_t i, const BoidNearest& found, BoidSense& out);
+    using BoidNearest = NearestList<kMaxNeighbours>;
+    void searchBoid(std::size_t i, NeighbourGrid::Sweep* sweep, float startBound, BoidNearest& best) const;
+    void sumBoid(std::size_t i, const BoidNearest& best, BoidSense& out);
     // senseBoid for boid[0, count), up to four consecutive boids of the grid's order in one
     // cell, searched together (WorldFlockSense.cpp).
     void senseFourBoids(const std::uint32_t* boid, int count, NeighbourGrid::Sweep& sweep, BoidSense* out);
@@ -223,7 +219,6 @@ private:
     // Agents move little in a step: last step's k nearest of agent i, where they are now,
     // bound its k-th nearest from above (squared; perception2 when it had fewer than k).
     float lastNearestBound(std::size_t i, glm::vec3 p, float perception2) const;
-    void prepareBoidStep();  // m_boidSpeedMax, before the agents step
     // The collide pass for agent i: m_resolvedPos[i] from m_nextPos[i] and the overlaps
     // with its neighbours (none looked for when the kernel found it collide-free).
     void resolveCollision(std::size_t i, bool collideFree, bool hasStatics);
@@ -232,6 +227,13 @@ private:
     void buildWalkKernel(bool enabled);
     void stepWalker(std::size_t i);
     void countStep();
+    // countStep's overlapping pairs: whether i (at p) and j (at q) overlap; those of i with the
+    // agents of higher index; those of the k-th of the grid's order with the agents after
+    // it (NeighbourGrid::forEachLaterNear). Only a body within i's radius plus the
+    // largest one can overlap i.
+    bool overlapping(std::size_t i, glm::vec3 p, std::uint32_t j, glm::vec3 q) const;
+    std::uint64_t overlapsAfter(std::size_t i) const;
+    std::uint64_t laterOverlaps(std::size_t k) const;
     // Leader overtakes (WorldLeaders.cpp): followers ahead of their leader this step.
     void countLeaderOvertakes();
     float routeProgress(std::size_t path, glm::vec2 p) const;
@@ -289,13 +291,9 @@ private:
     // Per agent, written by stepBoid: 1 when none of its k nearest can be within contact
     // distance after the step, provided every agent's next position lies within
     // m_boidSlackM of where its old velocity would take it (the collide pass checks that).
-    // Bit 2: its k nearest hold every agent that can end the step within contact
-    // distance of it, so countStep counts its overlaps from them (worlds of fliers only).
     std::vector<std::uint8_t> m_collideFree;
-    static constexpr std::uint8_t kCollideFree = 1, kOverlapsListed = 2;  // its bits
+    static constexpr std::uint8_t kCollideFree = 1;
     float m_boidSlackM = 0.0f;
-    bool m_boidCountsOverlaps = false;  // bit 2 is in use
-    float m_boidSpeedMax = 0.0f;         // this step: the largest |max speed| of any agent (inf if any is not finite)
     std::vector<std::uint8_t> m_walkKernel;  // per type: walkers without a path step through stepWalker
     // Per type, the walker kernel's parameters made usable once (WorldWalk.cpp).
     struct WalkType {
@@ -343,6 +341,7 @@ private:
     bool m_gridCurrent = false;  // the grid indexes the current positions
     RunSplit m_gridSplit;        // each thread's run of the grid order (WorldStep.cpp)
     bool m_hasFliers = false;    // then the grid also sorts by height for 3D queries
+    bool m_allFliers = true;     // no obstacles or crosswalks to count for anyone
     bool m_neighbourSweep = true;  // WorldOptions::neighbourSweep
     float m_maxRadius = 0.0f;    // the largest body radius, m
     StepCounters m_counters;

@@ -100,24 +100,7 @@ void World::buildBoidKernel(bool enabled, bool collideShortcut)
         b.bankBlend = 1.0f - std::exp(-m_dt / response);
     }
     const float slack = 2.0f * accelMax * m_dt * m_dt;
-    // Listed overlaps need every agent to go through the collide pass's speed cap last:
-    // fliers only (walkers are constrained after it), no vehicles or heroes.
-    bool allFly = true;
-    for (const TypeSteering& s : m_steering)
-        allFly = allFly && s.vehicle.flying;
-    m_boidCountsOverlaps =
-        collideShortcut && anyKernel && allFly && m_traffic.vehicleAgent.empty() && m_traffic.heroAgent.empty();
     m_boidSlackM = collideShortcut && anyKernel && std::isfinite(slack) ? slack : 0.0f;
-}
-
-void World::prepareBoidStep()
-{
-    // On the bits of |s|, whose order as integers is the floats' order, and where inf and
-    // NaN lie above every finite value: one integer max, which vectorises.
-    std::int32_t top = 0;
-    for (const float s : m_maxSpeed)
-        top = std::max(top, std::int32_t(std::bit_cast<std::uint32_t>(s) & 0x7fffffffu));
-    m_boidSpeedMax = top < 0x7f800000 ? std::bit_cast<float>(top) : INFINITY;
 }
 
 void World::stepBoid(std::size_t i, NeighbourGrid::Sweep* sweep)
@@ -136,26 +119,22 @@ void World::senseBoid(std::size_t i, NeighbourGrid::Sweep* sweep, BoidSense& out
     // them), and when fewer are found the search runs again in full. So the result never
     // depends on the guess.
     const float guess2 = m_neighbourSweep ? lastNearestBound(i, m_pos[i], perception2) : perception2;
-    BoidNearest found;
-    searchBoid(i, sweep, guess2, found);
-    if (!found.best.full() && guess2 < perception2)
-        searchBoid(i, sweep, perception2, found);
-    sumBoid(i, found, out);
+    BoidNearest best;
+    searchBoid(i, sweep, guess2, best);
+    if (!best.full() && guess2 < perception2)
+        searchBoid(i, sweep, perception2, best);
+    sumBoid(i, best, out);
 }
 
-void World::searchBoid(std::size_t i, NeighbourGrid::Sweep* sweep, float startBound, BoidNearest& found) const
+void World::searchBoid(std::size_t i, NeighbourGrid::Sweep* sweep, float startBound, BoidNearest& best) const
 {
     const TypeParams& t = m_types[m_info[i].typeIndex];
     const glm::vec3 p = m_pos[i], fwd = m_fwd[i];
     const float radius = m_radius[i];
     // Sense: the k nearest in the perception radius and view cone, nearest first, ties by
     // index (as gatherNeighbours, without the layers and priorities a boid world lacks).
-    NearestList<kMaxNeighbours>& best = found.best;
     best.count = 0;
     float bound = startBound;
-    // The nearest candidate left out for being outside the view cone (squared distance):
-    // with the final bound, it tells how near an agent outside the list can be.
-    float nearestUnseen2 = INFINITY;
     const float c = t.cosHalfView;
     const auto self = std::uint32_t(i);
     auto consider = [&](std::uint32_t j, const glm::vec3& q) {
@@ -165,10 +144,8 @@ void World::searchBoid(std::size_t i, NeighbourGrid::Sweep* sweep, float startBo
             return;
         if (outsideViewCone(d, d2, fwd, c)) {
             const float contact = radius + m_radius[j];
-            if (d2 > contact * contact) {
-                nearestUnseen2 = std::min(nearestUnseen2, d2);
+            if (d2 > contact * contact)
                 return;
-            }
         }
         if (best.insert(nearestKey(d2, j)) && best.full())
             bound = best.worstDistance2();
@@ -177,17 +154,14 @@ void World::searchBoid(std::size_t i, NeighbourGrid::Sweep* sweep, float startBo
         m_grid.forEachNearestSweep(p, t.perception, [&] { return bound; }, consider, *sweep);
     else
         m_grid.forEachNearest(p, t.perception, [&] { return bound; }, consider);
-    found.bound = bound;
-    found.nearestUnseen2 = nearestUnseen2;
 }
 
-void World::sumBoid(std::size_t i, const BoidNearest& found, BoidSense& out)
+void World::sumBoid(std::size_t i, const BoidNearest& best, BoidSense& out)
 {
     const BoidType& b = m_boidTypes[m_info[i].typeIndex];
     const glm::vec3 p = m_pos[i], v = m_vel[i];
     const float radius = m_radius[i];
     constexpr std::size_t k = kMaxNeighbours;
-    const NearestList<k>& best = found.best;
     const std::size_t count = best.count;
 
     // Separation, and the sums for alignment and cohesion, in one pass over the neighbours.
@@ -227,8 +201,6 @@ void World::sumBoid(std::size_t i, const BoidNearest& found, BoidSense& out)
     out.velocities = velocities;
     out.centre = centre;
     out.count = std::uint32_t(count);
-    out.bound = found.bound;
-    out.nearestUnseen2 = found.nearestUnseen2;
 }
 
 // steerFourBoids (WorldFlockLanes.cpp) repeats this, operation for operation, for four
@@ -384,13 +356,7 @@ void World::finishBoid(std::size_t i, const BoidSense& in, glm::vec3 pos, glm::v
         const float keep = in.keepOut[n] + margin;
         collideFree = collideFree && glm::dot(d, d) > keep * keep;
     }
-    // Overlaps listed: every agent outside the list was at least sqrt(outside2) away, and
-    // after the collide pass each agent has moved at most its max speed times dt, so
-    // none outside can end the step within contact distance (countStep relies on it).
-    const float outside2 = std::min(in.bound, in.nearestUnseen2);
-    const float need = radius + m_maxRadius + (m_maxSpeed[i] + m_boidSpeedMax) * m_dt * 1.0001f + margin;
-    const bool listed = m_boidCountsOverlaps && m_maxSpeed[i] >= 0.0f && outside2 > need * need;
-    m_collideFree[i] = std::uint8_t((collideFree ? kCollideFree : 0) | (listed ? kOverlapsListed : 0));
+    m_collideFree[i] = collideFree ? kCollideFree : 0;
     m_nextPos[i] = pos;
     m_nextVel[i] = vel;
     m_nextFwd[i] = nextFwd;

@@ -72,38 +72,23 @@ void World::steerFourBoids(const std::uint32_t* boid, const BoidSense* sensed)
     // wander's random jitter).
     glm::vec3 p[kLanes], v[kLanes], fwd[kLanes], up0[kLanes], contain[kLanes], quarry[kLanes], quarryVel[kLanes],
         jitter[kLanes], prevTarget[kLanes], push[kLanes], headings[kLanes], velocities[kLanes], centre[kLanes];
-    F4 maxSpeed, wSep, wPur, wAli, wCoh, wWan, maxForce, mass, gPur, gAli, gCoh, gWan, cap, slowing, wanderR,
-        wanderD, minSpeedType, bankGain, bankBlend, n;
+    F4 maxSpeed, n;
     M4 contained, pursues, matchSpeed, wanders;
+    const BoidType* types[kLanes];
+    bool oneType = true;
     for (int l = 0; l < kLanes; ++l) {
         const std::size_t i = boid[l];
         const std::uint16_t type = m_info[i].typeIndex;
         const TypeSteering& s = m_steering[type];
         const BoidType& b = m_boidTypes[type];
+        types[l] = &b;
+        oneType = oneType && types[l] == types[0];
         const BoidSense& in = sensed[l];
         p[l] = m_pos[i];
         v[l] = m_vel[i];
         fwd[l] = m_fwd[i];
         up0[l] = m_up[i];
         maxSpeed[l] = nonNegative(m_maxSpeed[i]);
-        wSep[l] = b.wSeparation;
-        wPur[l] = b.wPursuit;
-        wAli[l] = b.wAlignment;
-        wCoh[l] = b.wCohesion;
-        wWan[l] = b.wWander;
-        maxForce[l] = b.maxForce;
-        mass[l] = b.mass;
-        gPur[l] = b.gainPursuit;
-        gAli[l] = b.gainAlignment;
-        gCoh[l] = b.gainCohesion;
-        gWan[l] = b.gainWander;
-        cap[l] = b.predictionCapS;
-        slowing[l] = b.slowingM;
-        wanderR[l] = b.wanderRadiusM;
-        wanderD[l] = b.wanderDistanceM;
-        minSpeedType[l] = b.minSpeed;
-        bankGain[l] = b.bankGain;
-        bankBlend[l] = b.bankBlend;
         push[l] = in.push;
         headings[l] = in.headings;
         velocities[l] = in.velocities;
@@ -136,6 +121,20 @@ void World::steerFourBoids(const std::uint32_t* boid, const BoidSense* sensed)
                         b.jitterM;
         }
     }
+    // A type's parameter in each lane (one load when the four share their type, as a
+    // flock mostly does).
+    auto param = [&](float BoidType::*m) {
+        return oneType ? f4(types[0]->*m) : F4{types[0]->*m, types[1]->*m, types[2]->*m, types[3]->*m};
+    };
+    const F4 wSep = param(&BoidType::wSeparation), wPur = param(&BoidType::wPursuit),
+             wAli = param(&BoidType::wAlignment), wCoh = param(&BoidType::wCohesion),
+             wWan = param(&BoidType::wWander), maxForce = param(&BoidType::maxForce), mass = param(&BoidType::mass),
+             gPur = param(&BoidType::gainPursuit), gAli = param(&BoidType::gainAlignment),
+             gCoh = param(&BoidType::gainCohesion), gWan = param(&BoidType::gainWander),
+             cap = param(&BoidType::predictionCapS), slowing = param(&BoidType::slowingM),
+             wanderR = param(&BoidType::wanderRadiusM), wanderD = param(&BoidType::wanderDistanceM),
+             minSpeedType = param(&BoidType::minSpeed), bankGain = param(&BoidType::bankGain),
+             bankBlend = param(&BoidType::bankBlend);
     const V4 P = lanes(p), V = lanes(v), Fwd = lanes(fwd);
 
     // Steer, in steerBoid's order: containment, separation, pursuit, alignment, cohesion,

@@ -3,9 +3,8 @@
 // their neighbours: each column's window is read once for the four
 // (NeighbourGrid::forEachNearestSweep4), and each candidate's squared distance to the four
 // is one 4-wide sum (detail/Lanes.h). A candidate is then ranked only for the boids whose
-// bound it lies within, exactly as searchBoid ranks it, so each boid's k nearest, bound
-// and nearest unseen candidate are what searchBoid finds for it alone: the kept
-// neighbours and their order are the same, and so is the result to the bit
+// bound it lies within, exactly as searchBoid ranks it, so each boid's k nearest, and
+// their order, are what searchBoid finds for it alone, and so is the result to the bit
 // (TestNeighbourSweep and the flock's state hash show it).
 #include "simcore/world/World.h"
 
@@ -35,10 +34,10 @@ void World::senseFourBoids(const std::uint32_t* boid, int count, NeighbourGrid::
         return;
     }
     glm::vec3 p[kLanes], fwd[kLanes];
-    float radius[kLanes], cone[kLanes], guess2[kLanes], nearestUnseen2[kLanes];
+    float radius[kLanes], cone[kLanes], guess2[kLanes];
     std::uint32_t self[kLanes];
     F4 bound;
-    BoidNearest found[kLanes];
+    BoidNearest best[kLanes];
     for (int l = 0; l < kLanes; ++l) {
         // Lanes past count copy lane 0's point, to aim the sweep, and take no candidate.
         const std::size_t i = boid[l < count ? l : 0];
@@ -49,8 +48,7 @@ void World::senseFourBoids(const std::uint32_t* boid, int count, NeighbourGrid::
         cone[l] = m_types[m_info[i].typeIndex].cosHalfView;
         guess2[l] = lastNearestBound(i, p[l], perception2);  // as senseBoid
         bound[l] = l < count ? guess2[l] : -1.0f;
-        nearestUnseen2[l] = INFINITY;
-        found[l].best.count = 0;
+        best[l].count = 0;
     }
     const F4 px{p[0].x, p[1].x, p[2].x, p[3].x}, py{p[0].y, p[1].y, p[2].y, p[3].y},
         pz{p[0].z, p[1].z, p[2].z, p[3].z};
@@ -67,14 +65,11 @@ void World::senseFourBoids(const std::uint32_t* boid, int count, NeighbourGrid::
             const float dd = d2[l];
             if (outsideViewCone(d, dd, fwd[l], cone[l])) {
                 const float contact = radius[l] + m_radius[j];
-                if (dd > contact * contact) {
-                    nearestUnseen2[l] = std::min(nearestUnseen2[l], dd);
+                if (dd > contact * contact)
                     continue;
-                }
             }
-            NearestList<kMaxNeighbours>& best = found[l].best;
-            if (best.insert(nearestKey(dd, j)) && best.full())
-                bound[l] = best.worstDistance2();
+            if (best[l].insert(nearestKey(dd, j)) && best[l].full())
+                bound[l] = best[l].worstDistance2();
         }
     };
     if (!m_grid.forEachNearestSweep4(p, perception, [&] { return bound; }, consider, sweep)) {
@@ -84,12 +79,10 @@ void World::senseFourBoids(const std::uint32_t* boid, int count, NeighbourGrid::
     }
     for (int l = 0; l < count; ++l) {
         const std::size_t i = boid[l];
-        found[l].bound = bound[l];
-        found[l].nearestUnseen2 = nearestUnseen2[l];
         // As senseBoid: fewer than k within the guess, so search the whole radius.
-        if (!found[l].best.full() && guess2[l] < perception2)
-            searchBoid(i, &sweep, perception2, found[l]);
-        sumBoid(i, found[l], out[l]);
+        if (!best[l].full() && guess2[l] < perception2)
+            searchBoid(i, &sweep, perception2, best[l]);
+        sumBoid(i, best[l], out[l]);
     }
 }
 

@@ -39,8 +39,6 @@ void World::step()
     if (m_brains)
         runBrains();
     trafficBeforeStep();
-    if (m_boidCountsOverlaps)
-        prepareBoidStep();
 
     // With fliers, agents are stepped in the grid's order (by cell, then by height) when it
     // holds them all: consecutive boids then query the same columns at rising heights
@@ -424,41 +422,35 @@ void World::countStep()
     std::uint64_t overlaps = 0, nonFinite = 0, inObstacle = 0, red = 0;
     m_grid.rebuild(m_pos, m_hasFliers, m_out, m_threads);
     m_gridCurrent = true;
-    const bool listedOverlaps = m_boidCountsOverlaps && m_collideFree.size() == n;
-    // In the grid's order when it holds every agent, as the step does: each agent's
-    // neighbours then lie near it in memory too. (Counts add up the same in any order.)
-    const std::span<const std::uint32_t> gridOrder = m_grid.order();
-    const bool inGridOrder = m_neighbourSweep && gridOrder.size() == n;
-    const std::uint32_t* order = gridOrder.data();
-#pragma omp parallel for schedule(static) num_threads(m_threads) reduction(+ : overlaps, nonFinite, inObstacle, red)
-    for (std::size_t k = 0; k < n; ++k) {
-        const std::size_t i = inGridOrder ? order[k] : k;
-        if (!isFinite(m_pos[i]) || !isFinite(m_vel[i]))
-            ++nonFinite;
+    // Overlapping pairs in the grid's order when it holds every agent: each close pair is
+    // met once, from the earlier of the two (NeighbourGrid::forEachLaterNear), and the
+    // positions are read in the grid's copy, near each other in memory. A position that
+    // is not a number breaks the order by height, so then they are counted by index.
+    const bool inGridOrder = m_grid.order().size() == n;
+#pragma omp parallel for schedule(static) num_threads(m_threads) reduction(+ : nonFinite)
+    for (std::size_t i = 0; i < n; ++i)
+        nonFinite += !isFinite(m_pos[i]) || !isFinite(m_vel[i]);
+    if (inGridOrder && nonFinite == 0) {
+#pragma omp parallel for schedule(static) num_threads(m_threads) reduction(+ : overlaps)
+        for (std::size_t k = 0; k < n; ++k)
+            overlaps += laterOverlaps(k);
+    } else {
+#pragma omp parallel for schedule(static) num_threads(m_threads) reduction(+ : overlaps)
+        for (std::size_t i = 0; i < n; ++i)
+            overlaps += m_out[i] ? 0 : overlapsAfter(i);  // out: left through an exit
+    }
+    if (m_allFliers) {
+        m_counters.overlappingPairs += overlaps;
+        m_counters.nonFiniteValues += nonFinite;
+        m_counters.agentSteps += n;
+        return;
+    }
+#pragma omp parallel for schedule(static) num_threads(m_threads) reduction(+ : inObstacle, red)
+    for (std::size_t i = 0; i < n; ++i) {
         if (m_out[i])
-            continue;  // left through an exit: no longer in the scene
+            continue;
         const glm::vec2 p = xz(m_pos[i]);
         const float r = m_radius[i];
-        auto overlap = [&](std::uint32_t j, const glm::vec3& q) {
-            if (j <= i || (m_makingWay && !collide(collision(i), collision(j))))
-                return;  // layers that do not collide may overlap
-            const float contact = r + m_radius[j] - kOverlapToleranceM;
-            const glm::vec3 d = m_pos[i] - q;
-            if (glm::dot(d, d) < contact * contact)
-                ++overlaps;
-        };
-        // Only a body within r + the largest radius can overlap this one. The boids kernel
-        // may have found them all among the agent's k nearest (WorldFlock.cpp).
-        if (listedOverlaps && (m_collideFree[i] & kOverlapsListed) && !m_stoppedBefore[i]) {
-            const std::uint32_t* near = &m_nearIndex[i * kMaxNeighbours];
-            for (std::size_t k = 0; k < m_nearCount[i]; ++k)
-                if (!m_out[near[k]])
-                    overlap(near[k], m_pos[near[k]]);
-        } else if (m_hasFliers) {
-            m_grid.forEachNear3D(m_pos[i], r + m_maxRadius, overlap);
-        } else {
-            m_grid.forEachNear(p, r + m_maxRadius, overlap);
-        }
         if (m_types[m_info[i].typeIndex].kind == AgentKind::Flier)
             continue;
         m_obstacleGrid.forEachNear(p, r, [&](std::uint32_t k) {
@@ -489,6 +481,38 @@ void World::countStep()
     m_counters.obstaclePenetrations += inObstacle;
     m_counters.redLightViolations += red;
     m_counters.agentSteps += n;
+}
+
+bool World::overlapping(std::size_t i, glm::vec3 p, std::uint32_t j, glm::vec3 q) const
+{
+    if (m_makingWay && !collide(collision(i), collision(j)))
+        return false;  // layers that do not collide may overlap
+    const float contact = m_radius[i] + m_radius[j] - kOverlapToleranceM;
+    const glm::vec3 d = p - q;
+    return glm::dot(d, d) < contact * contact;
+}
+
+std::uint64_t World::overlapsAfter(std::size_t i) const
+{
+    std::uint64_t count = 0;
+    const glm::vec3 p = m_pos[i];
+    auto overlap = [&](std::uint32_t j, const glm::vec3& q) { count += j > i && overlapping(i, p, j, q); };
+    const float reach = m_radius[i] + m_maxRadius;
+    if (m_hasFliers)
+        m_grid.forEachNear3D(p, reach, overlap);
+    else
+        m_grid.forEachNear(xz(p), reach, overlap);
+    return count;
+}
+
+std::uint64_t World::laterOverlaps(std::size_t k) const
+{
+    const std::size_t i = m_grid.order()[k];
+    const glm::vec3 p = m_grid.orderedPosition(k);
+    std::uint64_t count = 0;
+    m_grid.forEachLaterNear(k, m_radius[i] + m_maxRadius,
+                            [&](std::uint32_t j, const glm::vec3& q) { count += overlapping(i, p, j, q); });
+    return count;
 }
 
 }  // namespace throng::sim

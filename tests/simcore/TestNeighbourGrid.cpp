@@ -53,6 +53,60 @@ private slots:
         }
     }
 
+    // forEachLaterNear (the overlap count's pairs): from the agents in the grid's order,
+    // every pair within r of each other is offered exactly once.
+    void laterNearOffersEveryClosePairOnce_data()
+    {
+        QTest::addColumn<bool>("byHeight");
+        QTest::addColumn<float>("radius");
+        QTest::newRow("walkers") << false << 0.8f;
+        QTest::newRow("fliers") << true << 0.8f;
+        QTest::newRow("fliers, radius above cell") << true << 2.5f;
+    }
+
+    void laterNearOffersEveryClosePairOnce()
+    {
+        QFETCH(bool, byHeight);
+        QFETCH(float, radius);
+        std::mt19937 gen(23);
+        std::uniform_real_distribution<float> u(-12.0f, 12.0f), h(0.0f, 6.0f);
+        std::vector<glm::vec3> pos(2500);
+        for (glm::vec3& p : pos)
+            p = {u(gen), byHeight ? h(gen) : 0.0f, u(gen)};
+        pos[7] = {40.0f, pos[7].y, -40.0f};  // outside the bounds: clamped into a border cell
+        pos[8] = {39.8f, pos[7].y, -39.7f};  // near it, at the same height
+        for (std::size_t i = 20; i < 40; ++i)  // a stack at one point, some at one height
+            pos[i] = {2.0f, byHeight ? 0.05f * float(i % 5) : 0.0f, 2.0f};
+        NeighbourGrid grid;
+        grid.configure({-10.0f, -10.0f}, {10.0f, 10.0f}, 2.0f);
+        grid.rebuild(pos, byHeight);
+        std::set<std::pair<std::uint32_t, std::uint32_t>> offered;
+        std::size_t offers = 0;
+        const auto order = grid.order();
+        for (std::size_t k = 0; k < order.size(); ++k) {
+            const std::uint32_t i = order[k];
+            QCOMPARE(grid.orderedPosition(k), pos[i]);
+            grid.forEachLaterNear(k, radius, [&](std::uint32_t j, const glm::vec3& q) {
+                QVERIFY(j != i);
+                QCOMPARE(q, pos[j]);
+                ++offers;
+                offered.insert({std::min(i, j), std::max(i, j)});
+            });
+        }
+        QCOMPARE(offers, offered.size());  // no pair twice
+        std::size_t close = 0;
+        for (std::uint32_t a = 0; a < pos.size(); ++a)
+            for (std::uint32_t b = a + 1; b < pos.size(); ++b) {
+                const glm::vec3 d = pos[a] - pos[b];
+                if (d.x * d.x + d.y * d.y + d.z * d.z <= radius * radius) {
+                    ++close;
+                    QVERIFY2(offered.count({a, b}), qPrintable(QString("pair %1, %2 not offered").arg(a).arg(b)));
+                }
+            }
+        QVERIFY(close > 100);
+        QVERIFY(offered.count({7, 8}));
+    }
+
     void rebuildTracksMovement()
     {
         std::vector<glm::vec3> pos{{0, 0, 0}, {10, 0, 10}};
