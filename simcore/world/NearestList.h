@@ -37,28 +37,34 @@ inline bool outsideViewCone(const glm::vec3& d, float d2, const glm::vec3& fwd, 
 
 template <std::size_t K>
 struct NearestList {
-    std::array<std::uint64_t, K> keys;  // the first `count` are valid, ascending
+    std::array<std::uint64_t, K> keys;  // the first `count` are valid, ascending; the rest all ones
     std::size_t count = 0;
 
+    NearestList() { clear(); }
+    void clear()
+    {
+        count = 0;
+        keys.fill(~std::uint64_t(0));
+    }
     bool full() const { return count == K; }
     std::uint32_t index(std::size_t n) const { return std::uint32_t(keys[n]); }
     // The squared distance of the farthest kept candidate (its flag masked off).
     float worstDistance2() const { return std::bit_cast<float>(std::uint32_t(keys[K - 1] >> 32) & 0x7fffffffu); }
 
-    // Keeps `key` if it is among the K smallest so far; returns whether it was kept.
+    // Keeps `key` (never all ones) if it is among the K smallest so far; returns whether
+    // it was kept. Without branches on where it goes (each slot takes the larger of its
+    // key and the new one, or its left neighbour's key): the place of a near neighbour
+    // among the others is what a branch cannot predict.
     bool insert(std::uint64_t key)
     {
-        std::size_t at = count;
-        if (count == K) {
-            if (key >= keys[K - 1])
-                return false;
-            at = K - 1;
-        } else {
-            ++count;
+        if (!(key < keys[K - 1]))
+            return false;
+        for (std::size_t a = K - 1; a > 0; --a) {
+            const std::uint64_t left = keys[a - 1], here = keys[a];
+            keys[a] = key < left ? left : (key < here ? key : here);
         }
-        for (; at > 0 && key < keys[at - 1]; --at)
-            keys[at] = keys[at - 1];
-        keys[at] = key;
+        keys[0] = key < keys[0] ? key : keys[0];
+        count += count < K ? 1 : 0;
         return true;
     }
 };

@@ -133,7 +133,7 @@ void World::searchBoid(std::size_t i, NeighbourGrid::Sweep* sweep, float startBo
     const float radius = m_radius[i];
     // Sense: the k nearest in the perception radius and view cone, nearest first, ties by
     // index (as gatherNeighbours, without the layers and priorities a boid world lacks).
-    best.count = 0;
+    best.clear();
     float bound = startBound;
     const float c = t.cosHalfView;
     const auto self = std::uint32_t(i);

@@ -48,7 +48,6 @@ void World::senseFourBoids(const std::uint32_t* boid, int count, NeighbourGrid::
         cone[l] = m_types[m_info[i].typeIndex].cosHalfView;
         guess2[l] = lastNearestBound(i, p[l], perception2);  // as senseBoid
         bound[l] = l < count ? guess2[l] : -1.0f;
-        best[l].count = 0;
     }
     const F4 px{p[0].x, p[1].x, p[2].x, p[3].x}, py{p[0].y, p[1].y, p[2].y, p[3].y},
         pz{p[0].z, p[1].z, p[2].z, p[3].z};

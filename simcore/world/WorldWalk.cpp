@@ -117,7 +117,7 @@ void World::stepWalker(std::size_t i)
     float bound = perception2;
     const float c = t.cosHalfView;
     auto search = [&](float startBound) {
-        best.count = 0;
+        best.clear();
         bound = startBound;
         m_grid.forEachNearest(p, t.perception, [&] { return bound; }, [&](std::uint32_t j, const glm::vec3& q) {
             const glm::vec3 d = q - p;

@@ -15,6 +15,7 @@
 #include <QTest>
 
 #include <algorithm>
+#include <cmath>
 #include <random>
 #include <set>
 #include <vector>
@@ -53,6 +54,31 @@ throng::test::RunBits run(const Scene& s, bool sweep, int threads, int steps)
 class TestNeighbourSweep : public QObject {
     Q_OBJECT
 private slots:
+    // The list itself: after each insert it holds the k smallest keys so far, ascending,
+    // and says whether the new key is among them.
+    void nearestListKeepsTheSmallest()
+    {
+        std::mt19937 gen(3);
+        std::uniform_real_distribution<float> u(0.0f, 4.0f);
+        for (int round = 0; round < 50; ++round) {
+            NearestList<kK> best;
+            std::vector<std::uint64_t> seen;
+            for (std::uint32_t j = 0; j < 30; ++j) {
+                // Coarse distances, so ties (broken by index) are common.
+                const std::uint64_t key = nearestKey(std::floor(u(gen) * 4.0f) * 0.25f, j, j % 11 == 5);
+                seen.push_back(key);
+                std::vector<std::uint64_t> expected = seen;
+                std::sort(expected.begin(), expected.end());
+                expected.resize(std::min(expected.size(), kK));
+                const bool kept = best.insert(key);
+                QCOMPARE(kept, std::find(expected.begin(), expected.end(), key) != expected.end());
+                QCOMPARE(best.count, expected.size());
+                QVERIFY(std::equal(expected.begin(), expected.end(), best.keys.begin()));
+            }
+            QVERIFY(best.full());
+        }
+    }
+
     void sweepFindsTheNearest_data()
     {
         QTest::addColumn<float>("cell");
