@@ -14,6 +14,7 @@
 #include "simcore/steering/detail/SteeringConstants.h"
 #include "simcore/steering/detail/SteeringMath.h"
 #include "simcore/world/Rng.h"
+#include "simcore/world/detail/Lanes.h"
 #include "simcore/world/detail/StepConstants.h"
 
 #include <glm/geometric.hpp>
@@ -172,6 +173,9 @@ void World::sumBoid(std::size_t i, const BoidNearest& best, BoidSense& out)
     // collide pass: see collideFree in finishBoid).
     glm::vec3* drift = out.drift;
     float* keepOut = out.keepOut;
+    // The weight's floor, reference / kMaxSeparationWeight, is the same for neighbours of
+    // the same contact distance (all of them, where the flock has one radius).
+    float limitContact = NAN, limit = 0.0f;
     for (std::size_t n = 0; n < count; ++n) {
         const auto j = best.index(n);
         nearIndex[n] = j;
@@ -189,9 +193,16 @@ void World::sumBoid(std::size_t i, const BoidNearest& best, BoidSense& out)
         const float d = std::sqrt(d2);
         const glm::vec3 rel = p - q;
         const float reference = contact > kTiny ? contact : range;
-        const float w = reference / std::max(d, reference / kMaxSeparationWeight);
-        const float fade = range > kTiny ? std::min(1.0f, (reach - d) / range) : 1.0f;
-        const glm::vec3 away = d > kTiny ? rel / d : separationAxis(m_info[i].id, m_info[j].id);
+        if (!(contact == limitContact)) {
+            limitContact = contact;
+            limit = reference / kMaxSeparationWeight;
+        }
+        const float w = reference / std::max(d, limit);
+        // rel / d and (reach - d) / range, the same divisions in one instruction.
+        const F4 quotient = F4{rel.x, rel.y, rel.z, reach - d} / F4{d, d, d, range};
+        const float fade = range > kTiny ? std::min(1.0f, quotient[3]) : 1.0f;
+        const glm::vec3 away = d > kTiny ? glm::vec3(quotient[0], quotient[1], quotient[2])
+                                         : separationAxis(m_info[i].id, m_info[j].id);
         const float opening = glm::dot(v - vj, away);
         push += away * (fade * (maxForce * w - damping * opening));
     }
