@@ -145,8 +145,6 @@ public:
             return;
         }
         const float yLo = p.y - reach, yHi = p.y + reach, reach2 = reach * reach;
-        const glm::vec3* pos = m_sortedPos.data();
-        const std::uint32_t* sorted = m_sorted.data();
         for (int k = 0; k < sweep.count; ++k) {
             // How far across x and z the column lies (agents clamped into a border column
             // lie beyond its edge, so this still bounds them): p less its nearest point of
@@ -156,15 +154,7 @@ public:
             const float dz = p.z - std::min(std::max(p.z, cz), cz + m_cell);
             if (k > 0 && dx * dx + dz * dz > std::min(reach2, boundSq() * 1.0002f))
                 continue;
-            std::uint32_t lo = sweep.lo[k];
-            const std::uint32_t b = sweep.begin[k], e = sweep.end[k];
-            while (lo > b && pos[lo - 1].y >= yLo)
-                --lo;
-            while (lo < e && pos[lo].y < yLo)
-                ++lo;
-            sweep.lo[k] = lo;
-            for (std::uint32_t j = lo; j < e && pos[j].y <= yHi; ++j)
-                f(sorted[j], pos[j]);
+            scanColumn(k, yLo, yHi, f, sweep);
         }
     }
     // forEachNearestSweep for four queries at once, all in one cell and with one radius
@@ -200,8 +190,6 @@ public:
             yHi = std::max(yHi, p[l].y + reach);
         }
         const F4 px{p[0].x, p[1].x, p[2].x, p[3].x}, pz{p[0].z, p[1].z, p[2].z, p[3].z};
-        const glm::vec3* pos = m_sortedPos.data();
-        const std::uint32_t* sorted = m_sorted.data();
         for (int k = 0; k < sweep.count; ++k) {
             // As forEachNearestSweep, lane by lane: skipped when no query can reach it.
             const F4 cx = detail::f4(sweep.x0[k]), cz = detail::f4(sweep.z0[k]);
@@ -209,15 +197,7 @@ public:
             const F4 dz = pz - detail::minOf(detail::maxOf(pz, cz), cz + m_cell);
             if (k > 0 && !detail::any(dx * dx + dz * dz <= detail::minOf(reach2, boundSq() * 1.0002f)))
                 continue;
-            std::uint32_t lo = sweep.lo[k];
-            const std::uint32_t b = sweep.begin[k], e = sweep.end[k];
-            while (lo > b && pos[lo - 1].y >= yLo)
-                --lo;
-            while (lo < e && pos[lo].y < yLo)
-                ++lo;
-            sweep.lo[k] = lo;
-            for (std::uint32_t j = lo; j < e && pos[j].y <= yHi; ++j)
-                f(sorted[j], pos[j]);
+            scanColumn(k, yLo, yHi, f, sweep);
         }
         return true;
     }
@@ -264,6 +244,22 @@ public:
     }
 
 private:
+    // The sweep's k-th column from height yLo to yHi: its window moved from where the last
+    // query left it (queries come at rising heights, so a few steps), then f for each agent.
+    template <typename F>
+    void scanColumn(int k, float yLo, float yHi, F& f, Sweep& sweep) const
+    {
+        const glm::vec3* pos = m_sortedPos.data();
+        std::uint32_t lo = sweep.lo[k];
+        const std::uint32_t b = sweep.begin[k], e = sweep.end[k];
+        while (lo > b && pos[lo - 1].y >= yLo)
+            --lo;
+        while (lo < e && pos[lo].y < yLo)
+            ++lo;
+        sweep.lo[k] = lo;
+        for (std::uint32_t j = lo; j < e && pos[j].y <= yHi; ++j)
+            f(m_sorted[j], pos[j]);
+    }
     // Whether a reach around p stays within the sweep's columns, computed as cellX and cellZ
     // do (which round monotonically, so no agent within reach lies in a cell outside).
     // Only a query within a hair of its cell's edge fails.
