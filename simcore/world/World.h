@@ -227,9 +227,9 @@ private:
     void buildWalkKernel(bool enabled);
     void stepWalker(std::size_t i);
     void countStep();
-    // countStep's overlapping pairs: whether i (at p) and j (at q) overlap; those of i with the
-    // agents of higher index; those of the k-th of the grid's order with the agents after
-    // it (NeighbourGrid::forEachLaterNear). Only a body within i's radius plus the
+    // countStep's overlapping pairs: whether i (at p) and j (at q) overlap; those of i with
+    // the agents of higher index; those of the k-th of the grid's order with the agents
+    // after it (NeighbourGrid::forEachLaterNear). Only a body within i's radius plus the
     // largest one can overlap i.
     bool overlapping(std::size_t i, glm::vec3 p, std::uint32_t j, glm::vec3 q) const;
     std::uint64_t overlapsAfter(std::size_t i) const;

@@ -448,7 +448,7 @@ void World::countStep()
 #pragma omp parallel for schedule(static) num_threads(m_threads) reduction(+ : inObstacle, red)
     for (std::size_t i = 0; i < n; ++i) {
         if (m_out[i])
-            continue;
+            continue;  // left through an exit: no longer in the scene
         const glm::vec2 p = xz(m_pos[i]);
         const float r = m_radius[i];
         if (m_types[m_info[i].typeIndex].kind == AgentKind::Flier)
