@@ -39,7 +39,8 @@ void RunSplit::rebalance()
     }
     // Each range's cost spreads evenly over it; the new boundary k lies where the cost
     // summed from the start reaches k / threads of the whole.
-    std::vector<double> target(threads, 1.0);
+    std::vector<double>& target = m_target;
+    target.assign(threads, 1.0);
     std::size_t seg = 0;
     double costBefore = 0.0;
     for (std::size_t k = 0; k + 1 < threads; ++k) {

@@ -28,6 +28,7 @@ public:
 private:
     std::vector<double> m_end;   // per thread: where its range ends, as a fraction of the run
     std::vector<double> m_busy;  // per thread: seconds for its range in the last step
+    std::vector<double> m_target;  // rebalance's scratch: where each boundary would go
 };
 
 }  // namespace throng::sim
