@@ -220,7 +220,8 @@ private:
     // bound its k-th nearest from above (squared; perception2 when it had fewer than k).
     float lastNearestBound(std::size_t i, glm::vec3 p, float perception2) const;
     // The collide pass for agent i: m_resolvedPos[i] from m_nextPos[i] and the overlaps
-    // with its neighbours (none looked for when the kernel found it collide-free).
+    // with its neighbours (none looked for when the kernel found it collide-free), and a
+    // walker's next velocity from its move.
     void resolveCollision(std::size_t i, bool collideFree, bool hasStatics);
     // The walker kernel (WorldWalk.cpp): the same for a ground type whose behaviours are only
     // arrival, seek, separation, unaligned collision and reciprocal avoidance, containment, wander.

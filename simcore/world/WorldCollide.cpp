@@ -12,6 +12,10 @@ namespace throng::sim {
 
 void World::resolveCollision(std::size_t i, bool collideFree, bool hasStatics)
 {
+    if (m_stopped[i]) {  // frozen where it stands
+        m_resolvedPos[i] = m_nextPos[i];
+        return;
+    }
     glm::vec3 p = m_nextPos[i] + (collideFree ? glm::vec3(0.0f) : separateBodies(i));
     const bool flying = m_steering[m_info[i].typeIndex].vehicle.flying;
     // Nobody moves faster than its max speed, nudges included, so what the viewer
@@ -32,6 +36,9 @@ void World::resolveCollision(std::size_t i, bool collideFree, bool hasStatics)
         if (hasStatics)
             constrain(i, m_pos[i], p);
         p.y = m_nextPos[i].y;
+        // A walker's velocity is the move it made (nobody reads another's in this pass).
+        m_nextVel[i] = (p - m_pos[i]) / m_dt;
+        m_nextVel[i].y = 0.0f;
     }
     m_resolvedPos[i] = p;
 }

@@ -103,16 +103,8 @@ void World::step()
         for (std::size_t i = 0; i < n; ++i)
             resolveCollision(i, false, hasStatics);
     }
-#pragma omp parallel for schedule(static, 256) num_threads(m_threads)
-    for (std::size_t i = 0; i < n; ++i) {
-        if (m_stopped[i])
-            continue;
-        if (!m_steering[m_info[i].typeIndex].vehicle.flying) {
-            m_nextVel[i] = (m_resolvedPos[i] - m_pos[i]) / m_dt;
-            m_nextVel[i].y = 0.0f;
-        }
-        m_nextPos[i] = m_resolvedPos[i];
-    }
+    // The resolved positions are the next ones (the pass wrote every agent's).
+    std::swap(m_nextPos, m_resolvedPos);
     trafficAfterCollide();
 
     // Commit: animate and note arrivals, then swap in the new state (no copying: every path
