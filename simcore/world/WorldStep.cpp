@@ -135,6 +135,7 @@ void World::stepInGridOrder(const std::uint32_t* order, std::size_t begin, std::
 {
     constexpr std::size_t kBoidBatch = 16;  // 8 to 32 measured alike, 1 about 5 % slower
     constexpr std::size_t kSenseLanes = 4;  // boids sensed together (senseFourBoids)
+    constexpr std::size_t kPrefetchAhead = 32;
     BoidSense sensed[kBoidBatch];
     std::uint32_t boid[kBoidBatch];
     static_assert(kBoidBatch % kSenseLanes == 0);
@@ -147,6 +148,23 @@ void World::stepInGridOrder(const std::uint32_t* order, std::size_t begin, std::
     };
     for (std::size_t k = begin; k < end; ++k) {
         const std::uint32_t i = order[k];
+        // The grid's order is not the index order, so the agents' own states lie scattered
+        // in memory. Asked for two batches ahead, they are in cache when their turn comes
+        // (32 and 64 ahead measured alike; prefetching the neighbours' states gained nothing).
+        if (k + kPrefetchAhead < end) {
+            const std::uint32_t a = order[k + kPrefetchAhead];
+            __builtin_prefetch(&m_info[a]);
+            __builtin_prefetch(&m_pos[a]);
+            __builtin_prefetch(&m_vel[a]);
+            __builtin_prefetch(&m_fwd[a]);
+            __builtin_prefetch(&m_up[a]);
+            __builtin_prefetch(&m_nearIndex[std::size_t(a) * kMaxNeighbours]);
+            __builtin_prefetch(&m_wander[a]);
+            __builtin_prefetch(&m_radius[a]);
+            __builtin_prefetch(&m_nextPos[a], 1);
+            __builtin_prefetch(&m_nextVel[a], 1);
+            __builtin_prefetch(&m_nextFwd[a], 1);
+        }
         if (!m_boidKernel[m_info[i].typeIndex] || m_stopped[i]) {
             stepAgent(i, hasStatics, &sweep);
             continue;
