@@ -1,6 +1,7 @@
 // `flock` with the boids kernel's switches: the built-in flock scenario (BenchScenarios.h,
 // the same scene as `throng-cli bench --scenario flock`) stepped a fixed number of times,
-// with the kernel, the collide pass's shortcut and the neighbour sweep on or off, so a
+// with the kernel, the collide pass's shortcut, the neighbour sweep and the eight-wide
+// steering (AVX2, where the CPU has it; "lanes" says which ran) on or off, so a
 // change can be measured against the path it replaces in one build (under callgrind:
 // instructions per agent-step).
 // Prints one JSON object: agents, steps, seconds, agent_steps_per_second, overlapping
@@ -10,7 +11,7 @@
 // gathered (it grows denser over its first few hundred steps). Under callgrind,
 // --toggle-collect='*measuredStep*' counts only the timed steps.
 // Usage: throng-bench-flock [AGENTS=100000] [STEPS=60] [THREADS=0] [--warmup W] [--no-kernel]
-//                           [--no-shortcut] [--no-sweep]
+//                           [--no-shortcut] [--no-sweep] [--four-lanes]
 #include "bench/StateHash.h"
 #include "simcore/scenarios/BenchScenarios.h"
 #include "simcore/world/World.h"
@@ -46,12 +47,14 @@ int main(int argc, char** argv)
             options.neighbourSweep = false;
         } else if (arg == "--no-shortcut") {
             options.collideShortcut = false;
+        } else if (arg == "--four-lanes") {
+            options.steerEight = false;
         } else if (!arg.empty() && arg[0] != '-') {
             numbers.push_back(arg);
         } else {
             std::fprintf(stderr,
                          "usage: throng-bench-flock [AGENTS] [STEPS] [THREADS] [--warmup W] [--no-kernel] "
-                         "[--no-shortcut] [--no-sweep]\n");
+                         "[--no-shortcut] [--no-sweep] [--four-lanes]\n");
             return 2;
         }
     }
@@ -68,11 +71,11 @@ int main(int argc, char** argv)
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     const double agentSteps = double(world.agentCount()) * double(steps);
     std::printf("{\"agents\": %zu, \"warmup\": %d, \"steps\": %d, \"kernel\": %s, \"shortcut\": %s, \"sweep\": %s, "
-                "\"seconds\": %.4f, "
+                "\"lanes\": %d, \"seconds\": %.4f, "
                 "\"agent_steps_per_second\": %.0f, \"overlapping_pairs_per_step\": %.3f, "
                 "\"state_hash\": \"%016llx\"}\n",
                 world.agentCount(), warmup, steps, options.boidKernel ? "true" : "false",
-                options.collideShortcut ? "true" : "false", options.neighbourSweep ? "true" : "false", seconds, seconds > 0.0 ? agentSteps / seconds : 0.0,
+                options.collideShortcut ? "true" : "false", options.neighbourSweep ? "true" : "false", world.boidLanes(), seconds, seconds > 0.0 ? agentSteps / seconds : 0.0,
                 double(world.counters().overlappingPairs - overlapsBefore) / double(steps > 0 ? steps : 1),
                 static_cast<unsigned long long>(throng::bench::stateHash(world)));
     return 0;

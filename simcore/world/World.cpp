@@ -53,6 +53,7 @@ World::World(const Scene& scene, const WorldOptions& options)
     m_dt = 1.0f / scene.settings.fps;
     m_threads = options.threads > 0 ? options.threads : omp_get_max_threads();
     m_neighbourSweep = options.neighbourSweep;
+    m_steerEight = options.steerEight && canSteerEight();
 
     // Cells of half the perception radius on the ground: a nearest-first query then
     // stops a little beyond the k-th neighbour. Fliers get cells as large as the radius,

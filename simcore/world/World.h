@@ -47,6 +47,9 @@ struct WorldOptions {
     // perception radius, instead of in the grid's order (fliers) from last step's
     // neighbours (the result is the same; tests compare)
     bool neighbourSweep = true;
+    // false: the boids kernel steers four boids at a time even where the CPU has AVX2,
+    // instead of eight (the result is the same; tests compare)
+    bool steerEight = true;
 };
 
 class World {
@@ -86,6 +89,10 @@ public:
     AgentKind agentKind(std::size_t i) const { return m_types[m_info[i].typeIndex].kind; }
     // Agents of this type step through the fused boids kernel (WorldFlock.cpp).
     bool usesBoidKernel(std::size_t typeIndex) const { return m_boidKernel[typeIndex] != 0; }
+    // How many boids the kernel steers at once: 8 where the CPU has AVX2 (canSteerEight)
+    // and WorldOptions::steerEight asks for it, else 4.
+    int boidLanes() const { return m_steerEight ? 8 : 4; }
+    static bool canSteerEight();
     // Agents of this type without a path step through the fused walker kernel (WorldWalk.cpp).
     bool usesWalkKernel(std::size_t typeIndex) const { return m_walkKernel[typeIndex] != 0; }
     // Navigation (WorldNav.cpp): agent i left through an exit goal; it is no longer
@@ -207,9 +214,13 @@ private:
     // cell, searched together (WorldFlockSense.cpp).
     void senseFourBoids(const std::uint32_t* boid, int count, NeighbourGrid::Sweep& sweep, BoidSense* out);
     void steerBoid(std::size_t i, const BoidSense& in);
-    // steerBoid for boid[0, count), four at a time where it can (WorldFlockLanes.cpp).
+    // steerBoid for boid[0, count), eight or four at a time where it can
+    // (WorldFlockLanes.cpp): steerLanes, with F four or eight floats, for boid[0, width).
     void steerBoids(const std::uint32_t* boid, const BoidSense* sensed, std::size_t count);
+    template <class F>
+    void steerLanes(const std::uint32_t* boid, const BoidSense* sensed);
     void steerFourBoids(const std::uint32_t* boid, const BoidSense* sensed);
+    void steerEightBoids(const std::uint32_t* boid, const BoidSense* sensed);  // only where canSteerEight
     // steerBoid's last part: the ground, the collide pass's flags, the next state.
     void finishBoid(std::size_t i, const BoidSense& in, glm::vec3 pos, glm::vec3 vel, glm::vec3 nextFwd,
                     glm::vec3 side, glm::vec3 nextUp, WanderState wanderNext);
@@ -344,6 +355,7 @@ private:
     bool m_hasFliers = false;    // then the grid also sorts by height for 3D queries
     bool m_allFliers = true;     // no obstacles or crosswalks to count for anyone
     bool m_neighbourSweep = true;  // WorldOptions::neighbourSweep
+    bool m_steerEight = false;     // WorldOptions::steerEight, where canSteerEight
     float m_maxRadius = 0.0f;    // the largest body radius, m
     StepCounters m_counters;
     std::uint64_t m_seed = 1;

@@ -41,11 +41,12 @@ std::vector<std::uint64_t> bruteNearest(const std::vector<glm::vec3>& pos, std::
     return keys;
 }
 
-throng::test::RunBits run(const Scene& s, bool sweep, int threads, int steps)
+throng::test::RunBits run(const Scene& s, bool sweep, int threads, int steps, bool steerEight = true)
 {
     WorldOptions o;
     o.threads = threads;
     o.neighbourSweep = sweep;
+    o.steerEight = steerEight;
     return throng::test::runToEnd(s, o, steps);
 }
 
@@ -158,8 +159,8 @@ private slots:
             throng::test::packOnLattice(s, spacing);
         if (twoTypes) {
             // Every third bird a swift: faster, matching its neighbours' speed, neither
-            // wandering nor pursuing. The grid-order path steers four birds at a time, so
-            // its lanes then hold both types, with behaviours on in some lanes only.
+            // wandering nor pursuing. The grid-order path steers four or eight birds at a
+            // time, so its lanes then hold both types, with behaviours on in some lanes only.
             AgentType swift = s.agentTypes[0];
             swift.name = "swift";
             swift.maxSpeed = 16.0f;
@@ -178,17 +179,38 @@ private slots:
     // Walkers: `cross` (the agents of a circle meet in a jam at its centre).
     void crowdIsUnchanged() { checkSame(makeCrossScenario(600), 900); }
 
+    // The kernel steers eight boids at once exactly where the CPU has AVX2, unless told
+    // not to; flockIsUnchanged compares both widths with the plain path.
+    void steersEightWhereTheCpuCan()
+    {
+        const Scene s = makeFlockScenario(100, 3);
+#if defined(__x86_64__)
+        const bool avx2 = __builtin_cpu_supports("avx2");
+#else
+        const bool avx2 = false;
+#endif
+        QCOMPARE(World::canSteerEight(), avx2);
+        QCOMPARE(World(s).boidLanes(), avx2 ? 8 : 4);
+        WorldOptions four;
+        four.steerEight = false;
+        QCOMPARE(World(s, four).boidLanes(), 4);
+    }
+
 private:
-    // With the sweep (1 and 2 threads) and without it (1 thread): the same bits, and the
-    // same overlap count.
+    // With the sweep (1 and 2 threads; steering eight boids at once where the CPU can, and
+    // four) and without it (1 thread): the same bits, and the same overlap count.
     void checkSame(const Scene& s, int steps)
     {
         const throng::test::RunBits plain = run(s, false, 1, steps);
         for (int threads : {1, 2}) {
-            const throng::test::RunBits swept = run(s, true, threads, steps);
-            QVERIFY2(plain.sameStateAs(swept),
-                     qPrintable(QString("%1 threads: the sweep changed the result").arg(threads)));
-            QCOMPARE(swept.overlaps, plain.overlaps);
+            for (bool eight : {true, false}) {
+                const throng::test::RunBits swept = run(s, true, threads, steps, eight);
+                QVERIFY2(plain.sameStateAs(swept),
+                         qPrintable(QString("%1 threads, steerEight %2: the sweep changed the result")
+                                        .arg(threads)
+                                        .arg(eight ? "on" : "off")));
+                QCOMPARE(swept.overlaps, plain.overlaps);
+            }
         }
     }
 };

@@ -1,11 +1,16 @@
 #pragma once
-// Four floats side by side, for the boids kernel's search and steering of four boids at
-// once (WorldFlockSense.cpp, WorldFlockLanes.cpp). GCC's vector extension: SSE on x86-64,
-// plain code elsewhere; a mask picks lanes with the vector form of ?:, which GCC has in
-// C++. Each helper does per lane exactly what its glm or SteeringMath.h counterpart does
-// for one float, operation for operation (no reciprocal estimates; simcore builds with
-// -ffp-contract=off, so no fused multiply-add either), so the results are the same to the
-// bit.
+// Floats side by side, four (F4) or eight (F8), for the boids kernel's search and steering
+// of several boids at once (WorldFlockSense.cpp, WorldFlockLanes.cpp). GCC's vector
+// extension: SSE on x86-64, plain code elsewhere; eight lanes are one AVX register inside
+// a function built for AVX2 (World::steerEightBoids) and two SSE ones anywhere else. A
+// mask picks lanes with the vector form of ?:, which GCC has in C++. Each helper does per
+// lane exactly what its glm or SteeringMath.h counterpart does for one float, operation
+// for operation (no reciprocal estimates; simcore builds with -ffp-contract=off, so no
+// fused multiply-add either), so the results are the same to the bit at either width.
+//
+// The helpers are templates on the lane type, written for any width, so one kernel serves
+// both; none uses an instruction beyond baseline x86-64, so any copy of one that the
+// compiler keeps out of line runs on every machine.
 
 #include <cstdint>
 #include <limits>
@@ -17,64 +22,149 @@
 namespace throng::sim::detail {
 
 using F4 = float __attribute__((vector_size(16)));
+using F8 = float __attribute__((vector_size(32)));
 using M4 = std::int32_t __attribute__((vector_size(16)));  // lane masks: all ones or zero
 
-inline F4 f4(float x) { return F4{x, x, x, x}; }
-inline F4 select(M4 m, F4 a, F4 b) { return m ? a : b; }
-// std::min, lane by lane: b < a ? b : a.
-inline F4 minOf(F4 a, F4 b) { return select(b < a, b, a); }
-// std::max, lane by lane: a < b ? b : a.
-inline F4 maxOf(F4 a, F4 b) { return select(a < b, b, a); }
-inline F4 sqrtOf(F4 x)
+// The lanes of a lane type, and the mask type its comparisons give.
+template <class F>
+inline constexpr int kWidth = int(sizeof(F) / sizeof(float));
+template <class F>
+using MaskOf = decltype(F{} < F{});
+
+template <class F>
+inline F splat(float x)
 {
-#if defined(__SSE__)
-    return _mm_sqrt_ps(x);
-#else
-    return F4{__builtin_sqrtf(x[0]), __builtin_sqrtf(x[1]), __builtin_sqrtf(x[2]), __builtin_sqrtf(x[3])};
-#endif
+    F r;
+    for (int l = 0; l < kWidth<F>; ++l)
+        r[l] = x;
+    return r;
 }
-inline bool any(M4 m) { return (m[0] | m[1] | m[2] | m[3]) != 0; }
-// The lanes a mask holds, as bits 0 to 3.
-inline unsigned bitsOf(M4 m)
+inline F4 f4(float x) { return splat<F4>(x); }
+template <class M, class F>
+inline F select(M m, F a, F b)
+{
+    return m ? a : b;
+}
+// std::min, lane by lane: b < a ? b : a.
+template <class F>
+inline F minOf(F a, F b)
+{
+    return select(b < a, b, a);
+}
+// std::max, lane by lane: a < b ? b : a.
+template <class F>
+inline F maxOf(F a, F b)
+{
+    return select(a < b, b, a);
+}
+template <class F>
+inline F sqrtOf(F x)
 {
 #if defined(__SSE__)
-    return unsigned(_mm_movemask_ps(__m128(m)));
-#else
-    return unsigned(m[0] & 1) | unsigned(m[1] & 2) | unsigned(m[2] & 4) | unsigned(m[3] & 8);
+    if constexpr (sizeof(F) == sizeof(F4))
+        return _mm_sqrt_ps(x);
 #endif
+    // Lane by lane; with -fno-math-errno GCC makes one vector square root of it where the
+    // width has one.
+    F r;
+    for (int l = 0; l < kWidth<F>; ++l)
+        r[l] = __builtin_sqrtf(x[l]);
+    return r;
+}
+// The lanes a mask holds, as bits 0 to width - 1.
+template <class M>
+inline unsigned bitsOf(M m)
+{
+#if defined(__SSE__)
+    if constexpr (sizeof(M) == sizeof(M4))
+        return unsigned(_mm_movemask_ps(__m128(m)));
+#endif
+    unsigned bits = 0;
+    for (int l = 0; l < int(sizeof(M) / sizeof(std::int32_t)); ++l)
+        bits |= unsigned(m[l] & 1) << l;
+    return bits;
+}
+template <class M>
+inline bool any(M m)
+{
+    return bitsOf(m) != 0;
 }
 
 // A glm::vec3 per lane.
-struct V4 {
-    F4 x, y, z;
+template <class F>
+struct Lanes3 {
+    F x, y, z;
 };
-inline V4 operator+(V4 a, V4 b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-inline V4 operator-(V4 a, V4 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-inline V4 operator*(V4 a, F4 s) { return {a.x * s, a.y * s, a.z * s}; }
-inline V4 operator/(V4 a, F4 s) { return {a.x / s, a.y / s, a.z / s}; }
-inline V4 select(M4 m, V4 a, V4 b) { return {m ? a.x : b.x, m ? a.y : b.y, m ? a.z : b.z}; }
+using V4 = Lanes3<F4>;
+template <class F>
+inline Lanes3<F> operator+(Lanes3<F> a, Lanes3<F> b)
+{
+    return {a.x + b.x, a.y + b.y, a.z + b.z};
+}
+template <class F>
+inline Lanes3<F> operator-(Lanes3<F> a, Lanes3<F> b)
+{
+    return {a.x - b.x, a.y - b.y, a.z - b.z};
+}
+template <class F>
+inline Lanes3<F> operator*(Lanes3<F> a, F s)
+{
+    return {a.x * s, a.y * s, a.z * s};
+}
+template <class F>
+inline Lanes3<F> operator/(Lanes3<F> a, F s)
+{
+    return {a.x / s, a.y / s, a.z / s};
+}
+template <class M, class F>
+inline Lanes3<F> select(M m, Lanes3<F> a, Lanes3<F> b)
+{
+    return {m ? a.x : b.x, m ? a.y : b.y, m ? a.z : b.z};
+}
 // glm::dot: (x + y) + z of the products.
-inline F4 dot(V4 a, V4 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-inline F4 length(V4 v) { return sqrtOf(dot(v, v)); }
+template <class F>
+inline F dot(Lanes3<F> a, Lanes3<F> b)
+{
+    return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+template <class F>
+inline F length(Lanes3<F> v)
+{
+    return sqrtOf(dot(v, v));
+}
 // glm::cross, term for term.
-inline V4 cross(V4 a, V4 b) { return {a.y * b.z - b.y * a.z, a.z * b.x - b.z * a.x, a.x * b.y - b.x * a.y}; }
+template <class F>
+inline Lanes3<F> cross(Lanes3<F> a, Lanes3<F> b)
+{
+    return {a.y * b.z - b.y * a.z, a.z * b.x - b.z * a.x, a.x * b.y - b.x * a.y};
+}
 
 inline constexpr float kLaneInfinity = std::numeric_limits<float>::infinity();
 
 // SteeringMath.h's nonNegative, normalizeOr and truncate, and isFinite of a vector.
-inline F4 nonNegativeOf(F4 x) { return select((x > 0.0f) & (x < kLaneInfinity), x, f4(0.0f)); }
-inline V4 normalizeOr(V4 v, V4 fallback, float tiny)
+template <class F>
+inline F nonNegativeOf(F x)
 {
-    const F4 l = length(v);
+    return select((x > 0.0f) & (x < kLaneInfinity), x, F{});
+}
+template <class F>
+inline Lanes3<F> normalizeOr(Lanes3<F> v, Lanes3<F> fallback, float tiny)
+{
+    const F l = length(v);
     return select((l > tiny) & (l < kLaneInfinity), v * (1.0f / l), fallback);
 }
-inline V4 truncate(V4 v, F4 maxLength)
+template <class F>
+inline Lanes3<F> truncate(Lanes3<F> v, F maxLength)
 {
     maxLength = nonNegativeOf(maxLength);
-    const F4 l2 = dot(v, v);
-    const V4 cut = select(l2 > maxLength * maxLength, v * (maxLength / sqrtOf(l2)), v);
-    return select(l2 < kLaneInfinity, cut, V4{f4(0.0f), f4(0.0f), f4(0.0f)});
+    const F l2 = dot(v, v);
+    const Lanes3<F> cut = select(l2 > maxLength * maxLength, v * (maxLength / sqrtOf(l2)), v);
+    return select(l2 < kLaneInfinity, cut, Lanes3<F>{});
 }
-inline M4 finite(V4 v) { return v.x * 0.0f + v.y * 0.0f + v.z * 0.0f == 0.0f; }
+template <class F>
+inline MaskOf<F> finite(Lanes3<F> v)
+{
+    return v.x * 0.0f + v.y * 0.0f + v.z * 0.0f == 0.0f;
+}
 
 }  // namespace throng::sim::detail
