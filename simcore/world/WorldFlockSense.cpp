@@ -33,17 +33,19 @@ void World::senseFourBoids(const std::uint32_t* boid, int count, NeighbourGrid::
             senseBoid(boid[l], &sweep, out[l]);
         return;
     }
-    glm::vec3 p[kLanes], fwd[kLanes];
-    float radius[kLanes], cone[kLanes], guess2[kLanes];
-    std::uint32_t self[kLanes];
-    F4 bound;
+    glm::vec3 p[kLanes];
+    float guess2[kLanes];
+    F4 bound, fx, fy, fz, radius, cone;
+    M4 self;
     BoidNearest best[kLanes];
     for (int l = 0; l < kLanes; ++l) {
         // Lanes past count copy lane 0's point, to aim the sweep, and take no candidate.
         const std::size_t i = boid[l < count ? l : 0];
-        self[l] = std::uint32_t(i);
+        self[l] = std::int32_t(i);
         p[l] = m_pos[i];
-        fwd[l] = m_fwd[i];
+        fx[l] = m_fwd[i].x;
+        fy[l] = m_fwd[i].y;
+        fz[l] = m_fwd[i].z;
         radius[l] = m_radius[i];
         cone[l] = m_types[m_info[i].typeIndex].cosHalfView;
         guess2[l] = lastNearestBound(i, p[l], perception2);  // as senseBoid
@@ -52,22 +54,26 @@ void World::senseFourBoids(const std::uint32_t* boid, int count, NeighbourGrid::
     const F4 px{p[0].x, p[1].x, p[2].x, p[3].x}, py{p[0].y, p[1].y, p[2].y, p[3].y},
         pz{p[0].z, p[1].z, p[2].z, p[3].z};
     // searchBoid's consider, for the lanes whose bound the candidate lies within (the same
-    // test: not d2 > bound), one lane at a time.
+    // test: not d2 > bound), with the view cone's test (outsideViewCone's operations) and
+    // the contact distance's for all four at once; then ranked one lane at a time.
+    const F4 cone2 = cone * cone;
+    const M4 allRound = cone <= -1.0f, coneAhead = cone >= 0.0f;
     auto consider = [&](std::uint32_t j, const glm::vec3& q) {
         const F4 dx = q.x - px, dy = q.y - py, dz = q.z - pz;
         const F4 d2 = dx * dx + dy * dy + dz * dz;  // glm::dot's order
-        for (unsigned lanes = ~bitsOf(d2 > bound) & 15u; lanes != 0; lanes &= lanes - 1) {
+        M4 take = ~(d2 > bound) & (self != std::int32_t(j));
+        if (!any(take))
+            return;
+        const F4 along = dx * fx + dy * fy + dz * fz, along2 = along * along, c2d2 = cone2 * d2;
+        const M4 outside =
+            ~allRound & select(coneAhead, (along < 0.0f) | (along2 < c2d2), (along < 0.0f) & (along2 > c2d2));
+        if (any(take & outside)) {
+            const F4 contact = radius + m_radius[j];
+            take &= ~(outside & (d2 > contact * contact));
+        }
+        for (unsigned lanes = bitsOf(take); lanes != 0; lanes &= lanes - 1) {
             const int l = std::countr_zero(lanes);
-            if (j == self[l])
-                continue;
-            const glm::vec3 d(dx[l], dy[l], dz[l]);
-            const float dd = d2[l];
-            if (outsideViewCone(d, dd, fwd[l], cone[l])) {
-                const float contact = radius[l] + m_radius[j];
-                if (dd > contact * contact)
-                    continue;
-            }
-            if (best[l].insert(nearestKey(dd, j)) && best[l].full())
+            if (best[l].insert(nearestKey(d2[l], j)) && best[l].full())
                 bound[l] = best[l].worstDistance2();
         }
     };

@@ -144,9 +144,13 @@ private slots:
         QTest::addColumn<float>("spacing");
         QTest::addColumn<int>("steps");
         QTest::addColumn<bool>("twoTypes");
-        QTest::newRow("packed, overlapping") << 0.38f << 30 << false;
-        QTest::newRow("the bench flock, gathering") << 0.0f << 200 << false;
-        QTest::newRow("two bird types mixed") << 0.0f << 100 << true;
+        QTest::addColumn<float>("viewDeg");  // 0: the scenario's (300 degrees)
+        QTest::newRow("packed, overlapping") << 0.38f << 30 << false << 0.0f;
+        QTest::newRow("the bench flock, gathering") << 0.0f << 200 << false << 0.0f;
+        QTest::newRow("two bird types mixed") << 0.0f << 100 << true << 0.0f;
+        // The view cone's other cases: under 180 degrees, and all round.
+        QTest::newRow("narrow view, packed") << 0.38f << 30 << false << 100.0f;
+        QTest::newRow("all-round view, packed") << 0.38f << 30 << false << 360.0f;
     }
 
     void flockIsUnchanged()
@@ -154,9 +158,12 @@ private slots:
         QFETCH(float, spacing);
         QFETCH(int, steps);
         QFETCH(bool, twoTypes);
+        QFETCH(float, viewDeg);
         Scene s = makeFlockScenario(1500, 3);
         if (spacing > 0.0f)
             throng::test::packOnLattice(s, spacing);
+        if (viewDeg > 0.0f)
+            s.agentTypes[0].viewAngleDeg = viewDeg;
         if (twoTypes) {
             // Every third bird a swift: faster, matching its neighbours' speed, neither
             // wandering nor pursuing. The grid-order path steers four or eight birds at a
