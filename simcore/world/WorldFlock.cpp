@@ -214,9 +214,10 @@ void World::sumBoid(std::size_t i, const BoidNearest& best, BoidSense& out)
     out.count = std::uint32_t(count);
 }
 
-// steerFourBoids (WorldFlockLanes.cpp) repeats this, operation for operation, for four
-// boids at once: a change here needs the same change there. TestNeighbourSweep fails when
-// the two differ in a bit (the grid-order path steers by fours, the index-order one here).
+// steerLanes (WorldFlockLanes.cpp) repeats this, operation for operation, for four or
+// eight boids at once: a change here needs the same change there. TestNeighbourSweep fails
+// when they differ in a bit (the grid-order path steers by eights or fours, the index-order
+// one here).
 void World::steerBoid(std::size_t i, const BoidSense& in)
 {
     const std::uint16_t type = m_info[i].typeIndex;

@@ -1,8 +1,9 @@
 // The boids kernel's search (WorldFlock.cpp, searchBoid) for up to four consecutive boids of
 // the grid's order at once. They lie in one cell at rising heights, so the same columns hold
 // their neighbours: each column's window is read once for the four
-// (NeighbourGrid::forEachNearestSweep4), and each candidate's squared distance to the four
-// is one 4-wide sum (detail/Lanes.h). A candidate is then ranked only for the boids whose
+// (NeighbourGrid::forEachNearestSweep4), and each candidate's squared distance to the four,
+// and whether it lies in their view cones, are 4-wide sums and masks (detail/Lanes.h),
+// with searchBoid's operations. A candidate is then ranked only for the boids whose
 // bound it lies within, exactly as searchBoid ranks it, so each boid's k nearest, and
 // their order, are what searchBoid finds for it alone, and so is the result to the bit
 // (TestNeighbourSweep and the flock's state hash show it).
