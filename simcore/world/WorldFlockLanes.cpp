@@ -29,7 +29,7 @@ using namespace detail;
 namespace {
 
 template <class F>
-Lanes3<F> lanes(const glm::vec3* v)
+[[gnu::always_inline]] inline Lanes3<F> lanes(const glm::vec3* v)
 {
     Lanes3<F> r;
     for (int l = 0; l < kWidth<F>; ++l) {
@@ -41,13 +41,13 @@ Lanes3<F> lanes(const glm::vec3* v)
 }
 
 template <class F>
-glm::vec3 lane(const Lanes3<F>& v, int l)
+[[gnu::always_inline]] inline glm::vec3 lane(const Lanes3<F>& v, int l)
 {
     return {v.x[l], v.y[l], v.z[l]};
 }
 
 template <class F>
-void setLane(Lanes3<F>& v, int l, glm::vec3 x)
+[[gnu::always_inline]] inline void setLane(Lanes3<F>& v, int l, glm::vec3 x)
 {
     v.x[l] = x.x;
     v.y[l] = x.y;
@@ -56,7 +56,7 @@ void setLane(Lanes3<F>& v, int l, glm::vec3 x)
 
 // towardsVelocity (WorldFlock.cpp): (desired - velocity) * gain, truncated to maxForce.
 template <class F>
-Lanes3<F> towards(Lanes3<F> velocity, Lanes3<F> desired, F gain, F maxForce)
+[[gnu::always_inline]] inline Lanes3<F> towards(Lanes3<F> velocity, Lanes3<F> desired, F gain, F maxForce)
 {
     const Lanes3<F> f = (desired - velocity) * gain;
     const F f2 = dot(f, f);
@@ -65,7 +65,8 @@ Lanes3<F> towards(Lanes3<F> velocity, Lanes3<F> desired, F gain, F maxForce)
 
 }  // namespace
 
-// Always inlined, so that in steerEightBoids all of it is built for AVX2.
+// Always inlined, as its helpers are, so that in steerEightBoids all of it is built for
+// AVX2 and no eight-float value crosses a call (detail/Lanes.h).
 template <class F>
 [[gnu::always_inline]] inline void World::steerLanes(const std::uint32_t* boid, const BoidSense* sensed)
 {
@@ -129,7 +130,7 @@ template <class F>
     }
     // A type's parameter in each lane (one load when the lanes share their type, as a
     // flock mostly does).
-    auto param = [&](float BoidType::*m) {
+    auto param = [&](float BoidType::*m) __attribute__((always_inline)) {
         if (oneType)
             return splat<F>(types[0]->*m);
         F r;
@@ -138,14 +139,14 @@ template <class F>
         return r;
     };
     const F wSep = param(&BoidType::wSeparation), wPur = param(&BoidType::wPursuit),
-             wAli = param(&BoidType::wAlignment), wCoh = param(&BoidType::wCohesion),
-             wWan = param(&BoidType::wWander), maxForce = param(&BoidType::maxForce), mass = param(&BoidType::mass),
-             gPur = param(&BoidType::gainPursuit), gAli = param(&BoidType::gainAlignment),
-             gCoh = param(&BoidType::gainCohesion), gWan = param(&BoidType::gainWander),
-             cap = param(&BoidType::predictionCapS), slowing = param(&BoidType::slowingM),
-             wanderR = param(&BoidType::wanderRadiusM), wanderD = param(&BoidType::wanderDistanceM),
-             minSpeedType = param(&BoidType::minSpeed), bankGain = param(&BoidType::bankGain),
-             bankBlend = param(&BoidType::bankBlend);
+            wAli = param(&BoidType::wAlignment), wCoh = param(&BoidType::wCohesion),
+            wWan = param(&BoidType::wWander), maxForce = param(&BoidType::maxForce), mass = param(&BoidType::mass),
+            gPur = param(&BoidType::gainPursuit), gAli = param(&BoidType::gainAlignment),
+            gCoh = param(&BoidType::gainCohesion), gWan = param(&BoidType::gainWander),
+            cap = param(&BoidType::predictionCapS), slowing = param(&BoidType::slowingM),
+            wanderR = param(&BoidType::wanderRadiusM), wanderD = param(&BoidType::wanderDistanceM),
+            minSpeedType = param(&BoidType::minSpeed), bankGain = param(&BoidType::bankGain),
+            bankBlend = param(&BoidType::bankBlend);
     const V3 P = lanes<F>(p), V = lanes<F>(v), Fwd = lanes<F>(fwd);
 
     // Steer, in steerBoid's order: containment, separation, pursuit, alignment, cohesion,

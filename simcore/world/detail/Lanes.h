@@ -9,8 +9,9 @@
 // fused multiply-add either), so the results are the same to the bit at either width.
 //
 // The helpers are templates on the lane type, written for any width, so one kernel serves
-// both; none uses an instruction beyond baseline x86-64, so any copy of one that the
-// compiler keeps out of line runs on every machine.
+// both, and none uses an instruction beyond baseline x86-64. They are always inlined: an
+// eight-float value passed to a function not built for AVX would be passed another way
+// than AVX code passes it, so no call may take one (at any optimisation level).
 
 #include <cstdint>
 #include <limits>
@@ -32,33 +33,33 @@ template <class F>
 using MaskOf = decltype(F{} < F{});
 
 template <class F>
-inline F splat(float x)
+[[gnu::always_inline]] inline F splat(float x)
 {
     F r;
     for (int l = 0; l < kWidth<F>; ++l)
         r[l] = x;
     return r;
 }
-inline F4 f4(float x) { return splat<F4>(x); }
+[[gnu::always_inline]] inline F4 f4(float x) { return splat<F4>(x); }
 template <class M, class F>
-inline F select(M m, F a, F b)
+[[gnu::always_inline]] inline F select(M m, F a, F b)
 {
     return m ? a : b;
 }
 // std::min, lane by lane: b < a ? b : a.
 template <class F>
-inline F minOf(F a, F b)
+[[gnu::always_inline]] inline F minOf(F a, F b)
 {
     return select(b < a, b, a);
 }
 // std::max, lane by lane: a < b ? b : a.
 template <class F>
-inline F maxOf(F a, F b)
+[[gnu::always_inline]] inline F maxOf(F a, F b)
 {
     return select(a < b, b, a);
 }
 template <class F>
-inline F sqrtOf(F x)
+[[gnu::always_inline]] inline F sqrtOf(F x)
 {
 #if defined(__SSE__)
     if constexpr (sizeof(F) == sizeof(F4))
@@ -73,7 +74,7 @@ inline F sqrtOf(F x)
 }
 // The lanes a mask holds, as bits 0 to width - 1.
 template <class M>
-inline unsigned bitsOf(M m)
+[[gnu::always_inline]] inline unsigned bitsOf(M m)
 {
 #if defined(__SSE__)
     if constexpr (sizeof(M) == sizeof(M4))
@@ -85,7 +86,7 @@ inline unsigned bitsOf(M m)
     return bits;
 }
 template <class M>
-inline bool any(M m)
+[[gnu::always_inline]] inline bool any(M m)
 {
     return bitsOf(m) != 0;
 }
@@ -97,44 +98,44 @@ struct Lanes3 {
 };
 using V4 = Lanes3<F4>;
 template <class F>
-inline Lanes3<F> operator+(Lanes3<F> a, Lanes3<F> b)
+[[gnu::always_inline]] inline Lanes3<F> operator+(Lanes3<F> a, Lanes3<F> b)
 {
     return {a.x + b.x, a.y + b.y, a.z + b.z};
 }
 template <class F>
-inline Lanes3<F> operator-(Lanes3<F> a, Lanes3<F> b)
+[[gnu::always_inline]] inline Lanes3<F> operator-(Lanes3<F> a, Lanes3<F> b)
 {
     return {a.x - b.x, a.y - b.y, a.z - b.z};
 }
 template <class F>
-inline Lanes3<F> operator*(Lanes3<F> a, F s)
+[[gnu::always_inline]] inline Lanes3<F> operator*(Lanes3<F> a, F s)
 {
     return {a.x * s, a.y * s, a.z * s};
 }
 template <class F>
-inline Lanes3<F> operator/(Lanes3<F> a, F s)
+[[gnu::always_inline]] inline Lanes3<F> operator/(Lanes3<F> a, F s)
 {
     return {a.x / s, a.y / s, a.z / s};
 }
 template <class M, class F>
-inline Lanes3<F> select(M m, Lanes3<F> a, Lanes3<F> b)
+[[gnu::always_inline]] inline Lanes3<F> select(M m, Lanes3<F> a, Lanes3<F> b)
 {
     return {m ? a.x : b.x, m ? a.y : b.y, m ? a.z : b.z};
 }
 // glm::dot: (x + y) + z of the products.
 template <class F>
-inline F dot(Lanes3<F> a, Lanes3<F> b)
+[[gnu::always_inline]] inline F dot(Lanes3<F> a, Lanes3<F> b)
 {
     return a.x * b.x + a.y * b.y + a.z * b.z;
 }
 template <class F>
-inline F length(Lanes3<F> v)
+[[gnu::always_inline]] inline F length(Lanes3<F> v)
 {
     return sqrtOf(dot(v, v));
 }
 // glm::cross, term for term.
 template <class F>
-inline Lanes3<F> cross(Lanes3<F> a, Lanes3<F> b)
+[[gnu::always_inline]] inline Lanes3<F> cross(Lanes3<F> a, Lanes3<F> b)
 {
     return {a.y * b.z - b.y * a.z, a.z * b.x - b.z * a.x, a.x * b.y - b.x * a.y};
 }
@@ -143,18 +144,18 @@ inline constexpr float kLaneInfinity = std::numeric_limits<float>::infinity();
 
 // SteeringMath.h's nonNegative, normalizeOr and truncate, and isFinite of a vector.
 template <class F>
-inline F nonNegativeOf(F x)
+[[gnu::always_inline]] inline F nonNegativeOf(F x)
 {
     return select((x > 0.0f) & (x < kLaneInfinity), x, F{});
 }
 template <class F>
-inline Lanes3<F> normalizeOr(Lanes3<F> v, Lanes3<F> fallback, float tiny)
+[[gnu::always_inline]] inline Lanes3<F> normalizeOr(Lanes3<F> v, Lanes3<F> fallback, float tiny)
 {
     const F l = length(v);
     return select((l > tiny) & (l < kLaneInfinity), v * (1.0f / l), fallback);
 }
 template <class F>
-inline Lanes3<F> truncate(Lanes3<F> v, F maxLength)
+[[gnu::always_inline]] inline Lanes3<F> truncate(Lanes3<F> v, F maxLength)
 {
     maxLength = nonNegativeOf(maxLength);
     const F l2 = dot(v, v);
@@ -162,7 +163,7 @@ inline Lanes3<F> truncate(Lanes3<F> v, F maxLength)
     return select(l2 < kLaneInfinity, cut, Lanes3<F>{});
 }
 template <class F>
-inline MaskOf<F> finite(Lanes3<F> v)
+[[gnu::always_inline]] inline MaskOf<F> finite(Lanes3<F> v)
 {
     return v.x * 0.0f + v.y * 0.0f + v.z * 0.0f == 0.0f;
 }
