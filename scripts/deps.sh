@@ -9,8 +9,11 @@ packages=(g++ cmake ninja-build pkg-config
           libgl-dev libgl1-mesa-dri libglx-mesa0)
 if [ "${1:-build}" = test ]; then
   packages+=(xvfb xauth)
-  # The external glTF readers the export tests run (../shared/tools: the Khronos
-  # validator, Blender, three.js, assimp) install what they need on first use.
+  # What the external glTF readers the export tests run (../shared/tools: the Khronos
+  # validator, Blender, three.js, assimp) would install with apt-get on first use: here,
+  # one after the other, since tests running in parallel cannot all hold dpkg's lock.
+  # (Their npm packages they install themselves, each atomically.)
+  packages+=(nodejs npm assimp-utils blender python3-numpy)
 fi
 
 missing=()
