@@ -12,8 +12,12 @@ if [ "${1:-build}" = test ]; then
   # What the external glTF readers the export tests run (../shared/tools: the Khronos
   # validator, Blender, three.js, assimp) would install with apt-get on first use: here,
   # one after the other, since tests running in parallel cannot all hold dpkg's lock.
-  # (Their npm packages they install themselves, each atomically.)
-  packages+=(nodejs npm assimp-utils blender python3-numpy)
+  # (Their npm packages they install themselves, each atomically.) Node and npm only when
+  # missing: a machine may have them from elsewhere (NodeSource's nodejs bundles npm and
+  # conflicts with Debian's).
+  packages+=(assimp-utils blender python3-numpy)
+  command -v node >/dev/null || packages+=(nodejs)
+  command -v npm >/dev/null || packages+=(npm)
 fi
 
 missing=()
