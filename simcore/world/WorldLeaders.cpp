@@ -38,6 +38,8 @@ float World::routeProgress(std::size_t path, glm::vec2 p) const
 // (the arc length to its nearest point) exceeds the leader's.
 void World::countLeaderOvertakes()
 {
+    if (m_allFliers)
+        return;  // a flier is never counted (below): no pass over a flock for nothing
     const std::size_t n = m_pos.size();
     std::uint64_t ahead = 0;
 #pragma omp parallel for schedule(static, 256) num_threads(m_threads) reduction(+ : ahead)
