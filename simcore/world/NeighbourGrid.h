@@ -227,6 +227,70 @@ public:
                 visit(m_byHeight ? firstAtOrAbove(m_start[c], end, yLo) : m_start[c], end);
             }
     }
+    // forEachLaterNear for the k-th agents of order(), k in [begin, end), in one walk:
+    // f(k, j, position of j), with r(k) the k-th agent's reach. Offers what
+    // forEachLaterNear(k, r(k), ...) offers. With every reach below a cell's edge (rMax),
+    // the later cells a reach can touch are the own cell's right and the three below it;
+    // as a cell's agents come at rising heights, the window of each of those cells is
+    // found by moving the last one a step (as scanColumn does) instead of by a search.
+    // False, having offered nothing, where it cannot: not sorted by height, or a reach
+    // too long.
+    template <typename R, typename F>
+    bool forEachLaterNearRun(std::size_t begin, std::size_t end, float rMax, R&& r, F&& f) const
+    {
+        if (!m_byHeight || !(rMax >= 0.0f && rMax < 0.99f * m_cell))
+            return false;
+        if (begin >= end)
+            return true;
+        const glm::vec3* pos = m_sortedPos.data();
+        // The cell of the first agent: the last whose start is at or before it.
+        std::size_t c = std::size_t(std::upper_bound(m_start.begin(), m_start.end(), std::uint32_t(begin)) -
+                                    m_start.begin()) - 1;
+        for (std::size_t k = begin; k < end; ++c) {
+            const std::uint32_t cellEnd = m_start[c + 1];
+            if (k >= cellEnd)
+                continue;
+            const int x = int(c % std::size_t(m_cols)), z = int(c / std::size_t(m_cols));
+            // The later cells a reach can touch: right, below left, below, below right
+            // (one past the grid's edge: none). Each with its window's first agent.
+            const std::size_t below = c + std::size_t(m_cols);
+            const bool hasRight = x + 1 < m_cols, hasLeft = x > 0, hasBelow = z + 1 < m_rows;
+            const std::uint32_t first[4] = {m_start[c + 1], hasBelow && hasLeft ? m_start[below - 1] : 0,
+                                            hasBelow ? m_start[below] : 0, hasBelow ? m_start[below + 1] : 0};
+            const std::uint32_t last[4] = {hasRight ? m_start[c + 2] : first[0], hasBelow && hasLeft ? m_start[below] : 0,
+                                           hasBelow ? m_start[below + 1] : 0,
+                                           hasBelow && hasRight ? m_start[below + 2] : first[3]};
+            std::uint32_t lo[4] = {first[0], first[1], first[2], first[3]};
+            auto scan = [&](int n, std::size_t from, float yLo, float yHi) {
+                std::uint32_t at = lo[n];
+                while (at > first[n] && pos[at - 1].y >= yLo)
+                    --at;
+                while (at < last[n] && pos[at].y < yLo)
+                    ++at;
+                lo[n] = at;
+                for (std::uint32_t j = at; j < last[n] && pos[j].y <= yHi; ++j)
+                    f(from, m_sorted[j], pos[j]);
+            };
+            for (const std::size_t stop = std::min<std::size_t>(cellEnd, end); k < stop; ++k) {
+                const glm::vec3 p = pos[k];
+                const float reach = r(k), yLo = p.y - reach, yHi = p.y + reach;
+                for (std::size_t j = k + 1; j < cellEnd && pos[j].y <= yHi; ++j)
+                    f(k, m_sorted[j], pos[j]);
+                // As forEachLaterNear: the cells the square of half-size reach overlaps.
+                const bool right = cellX(p.x + reach) > x, left = cellX(p.x - reach) < x;
+                if (right)
+                    scan(0, k, yLo, yHi);
+                if (cellZ(p.z + reach) > z) {
+                    if (left)
+                        scan(1, k, yLo, yHi);
+                    scan(2, k, yLo, yHi);
+                    if (right)
+                        scan(3, k, yLo, yHi);
+                }
+            }
+        }
+        return true;
+    }
     // The cell a point lies in (forEachNearestSweep4's queries share one).
     std::uint32_t cellIndex(glm::vec3 p) const { return std::uint32_t(cellZ(p.z) * m_cols + cellX(p.x)); }
     // The agents in the grid's order (by cell, then by height): the order to make

@@ -238,14 +238,16 @@ private:
     // arrival, seek, separation, unaligned collision and reciprocal avoidance, containment, wander.
     void buildWalkKernel(bool enabled);
     void stepWalker(std::size_t i);
-    void countStep();
+    // The step's counters (StepCounters.h), given the values that are not numbers, which
+    // step counts as it commits.
+    void countStep(std::uint64_t nonFinite);
     // countStep's overlapping pairs: whether i (at p) and j (at q) overlap; those of i with
-    // the agents of higher index; those of the k-th of the grid's order with the agents
-    // after it (NeighbourGrid::forEachLaterNear). Only a body within i's radius plus the
-    // largest one can overlap i.
+    // the agents of higher index; those of the k-th of the grid's order, k in [begin, end),
+    // with the agents after it (NeighbourGrid::forEachLaterNearRun, or forEachLaterNear
+    // for each). Only a body within i's radius plus the largest one can overlap i.
     bool overlapping(std::size_t i, glm::vec3 p, std::uint32_t j, glm::vec3 q) const;
     std::uint64_t overlapsAfter(std::size_t i) const;
-    std::uint64_t laterOverlaps(std::size_t k) const;
+    std::uint64_t laterOverlaps(std::size_t begin, std::size_t end) const;
     // Leader overtakes (WorldLeaders.cpp): followers ahead of their leader this step.
     void countLeaderOvertakes();
     float routeProgress(std::size_t path, glm::vec2 p) const;

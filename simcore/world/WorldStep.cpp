@@ -112,10 +112,14 @@ void World::step()
     // writes all six next columns of every agent, so the old state left in m_next* is never
     // read before it is overwritten).
     m_stoppedBefore = m_stopped;
-    std::uint64_t crossings = 0;
-#pragma omp parallel for schedule(static, 256) num_threads(m_threads) reduction(+ : crossings)
-    for (std::size_t i = 0; i < n; ++i)
+    // The new state's values that are not numbers are counted here, where each agent's
+    // are already in cache, not in a pass of their own (countStep).
+    std::uint64_t crossings = 0, nonFinite = 0;
+#pragma omp parallel for schedule(static, 256) num_threads(m_threads) reduction(+ : crossings, nonFinite)
+    for (std::size_t i = 0; i < n; ++i) {
         commit(i, crossings);
+        nonFinite += !isFinite(m_nextPos[i]) || !isFinite(m_nextVel[i]);
+    }
     std::swap(m_pos, m_nextPos);
     std::swap(m_vel, m_nextVel);
     std::swap(m_fwd, m_nextFwd);
@@ -124,7 +128,7 @@ void World::step()
     std::swap(m_wander, m_nextWander);
     m_counters.wallPenetrations += crossings;
     ++m_step;
-    countStep();
+    countStep(nonFinite);
     countLeaderOvertakes();
     trafficAfterStep();
 }
@@ -426,10 +430,10 @@ void World::constrain(std::size_t i, glm::vec3 from, glm::vec3& to) const
     to.z = p.y;
 }
 
-void World::countStep()
+void World::countStep(std::uint64_t nonFinite)
 {
     const std::size_t n = m_pos.size();
-    std::uint64_t overlaps = 0, nonFinite = 0, inObstacle = 0, red = 0;
+    std::uint64_t overlaps = 0, inObstacle = 0, red = 0;
     m_grid.rebuild(m_pos, m_hasFliers, m_out, m_threads);
     m_gridCurrent = true;
     // Overlapping pairs in the grid's order when it holds every agent: each close pair is
@@ -437,13 +441,12 @@ void World::countStep()
     // positions are read in the grid's copy, near each other in memory. A position that
     // is not a number breaks the order by height, so then they are counted by index.
     const bool inGridOrder = m_grid.order().size() == n;
-#pragma omp parallel for schedule(static) num_threads(m_threads) reduction(+ : nonFinite)
-    for (std::size_t i = 0; i < n; ++i)
-        nonFinite += !isFinite(m_pos[i]) || !isFinite(m_vel[i]);
     if (inGridOrder && nonFinite == 0) {
-#pragma omp parallel for schedule(static) num_threads(m_threads) reduction(+ : overlaps)
-        for (std::size_t k = 0; k < n; ++k)
-            overlaps += laterOverlaps(k);
+#pragma omp parallel num_threads(m_threads) reduction(+ : overlaps)
+        {
+            const auto threads = std::size_t(omp_get_num_threads()), t = std::size_t(omp_get_thread_num());
+            overlaps += laterOverlaps(n * t / threads, n * (t + 1) / threads);
+        }
     } else {
 #pragma omp parallel for schedule(static) num_threads(m_threads) reduction(+ : overlaps)
         for (std::size_t i = 0; i < n; ++i)
@@ -515,13 +518,18 @@ std::uint64_t World::overlapsAfter(std::size_t i) const
     return count;
 }
 
-std::uint64_t World::laterOverlaps(std::size_t k) const
+std::uint64_t World::laterOverlaps(std::size_t begin, std::size_t end) const
 {
-    const std::size_t i = m_grid.order()[k];
-    const glm::vec3 p = m_grid.orderedPosition(k);
+    const std::span<const std::uint32_t> order = m_grid.order();
     std::uint64_t count = 0;
-    m_grid.forEachLaterNear(k, m_radius[i] + m_maxRadius,
-                            [&](std::uint32_t j, const glm::vec3& q) { count += overlapping(i, p, j, q); });
+    auto reach = [&](std::size_t k) { return m_radius[order[k]] + m_maxRadius; };
+    auto overlap = [&](std::size_t k, std::uint32_t j, const glm::vec3& q) {
+        count += overlapping(order[k], m_grid.orderedPosition(k), j, q);
+    };
+    if (m_grid.forEachLaterNearRun(begin, end, 2.0f * m_maxRadius, reach, overlap))
+        return count;
+    for (std::size_t k = begin; k < end; ++k)
+        m_grid.forEachLaterNear(k, reach(k), [&](std::uint32_t j, const glm::vec3& q) { overlap(k, j, q); });
     return count;
 }
 

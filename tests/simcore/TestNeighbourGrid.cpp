@@ -6,6 +6,8 @@
 #include <QTest>
 
 #include <algorithm>
+#include <iterator>
+#include <optional>
 #include <random>
 #include <set>
 #include <tuple>
@@ -54,20 +56,27 @@ private slots:
     }
 
     // forEachLaterNear (the overlap count's pairs): from the agents in the grid's order,
-    // every pair within r of each other is offered exactly once.
+    // every pair within r of each other is offered exactly once. forEachLaterNearRun, over
+    // runs of the order (one per thread), offers the same pairs, or declines (walkers, or
+    // a reach longer than a cell).
     void laterNearOffersEveryClosePairOnce_data()
     {
         QTest::addColumn<bool>("byHeight");
         QTest::addColumn<float>("radius");
-        QTest::newRow("walkers") << false << 0.8f;
-        QTest::newRow("fliers") << true << 0.8f;
-        QTest::newRow("fliers, radius above cell") << true << 2.5f;
+        QTest::addColumn<bool>("inRuns");
+        QTest::newRow("walkers") << false << 0.8f << false;
+        QTest::newRow("walkers, in runs") << false << 0.8f << true;
+        QTest::newRow("fliers") << true << 0.8f << false;
+        QTest::newRow("fliers, in runs") << true << 0.8f << true;
+        QTest::newRow("fliers, radius above cell") << true << 2.5f << false;
+        QTest::newRow("fliers, radius above cell, in runs") << true << 2.5f << true;
     }
 
     void laterNearOffersEveryClosePairOnce()
     {
         QFETCH(bool, byHeight);
         QFETCH(float, radius);
+        QFETCH(bool, inRuns);
         std::mt19937 gen(23);
         std::uniform_real_distribution<float> u(-12.0f, 12.0f), h(0.0f, 6.0f);
         std::vector<glm::vec3> pos(2500);
@@ -80,20 +89,41 @@ private slots:
         NeighbourGrid grid;
         grid.configure({-10.0f, -10.0f}, {10.0f, 10.0f}, 2.0f);
         grid.rebuild(pos, byHeight);
-        std::set<std::pair<std::uint32_t, std::uint32_t>> offered;
-        std::size_t offers = 0;
         const auto order = grid.order();
-        for (std::size_t k = 0; k < order.size(); ++k) {
-            const std::uint32_t i = order[k];
-            QCOMPARE(grid.orderedPosition(k), pos[i]);
-            grid.forEachLaterNear(k, radius, [&](std::uint32_t j, const glm::vec3& q) {
-                QVERIFY(j != i);
+        // Every (k, j) offered, one by one or in runs (cut mid-cell, one empty).
+        auto offersOf = [&](bool runs) {
+            std::multiset<std::pair<std::uint32_t, std::uint32_t>> offers;
+            auto offer = [&](std::size_t k, std::uint32_t j, const glm::vec3& q) {
+                QVERIFY(j != order[k]);
                 QCOMPARE(q, pos[j]);
-                ++offers;
-                offered.insert({std::min(i, j), std::max(i, j)});
-            });
+                offers.insert({order[k], j});
+            };
+            if (runs) {
+                const std::size_t cuts[] = {0, 701, 701, 1903, order.size()};
+                for (std::size_t r = 0; r + 1 < std::size(cuts); ++r)
+                    if (!grid.forEachLaterNearRun(cuts[r], cuts[r + 1], radius, [&](std::size_t) { return radius; },
+                                                  offer))
+                        return std::optional<decltype(offers)>();
+                return std::optional(offers);
+            }
+            for (std::size_t k = 0; k < order.size(); ++k)
+                grid.forEachLaterNear(k, radius, [&](std::uint32_t j, const glm::vec3& q) { offer(k, j, q); });
+            return std::optional(offers);
+        };
+        for (std::size_t k = 0; k < order.size(); ++k)
+            QCOMPARE(grid.orderedPosition(k), pos[order[k]]);
+        const auto offers = offersOf(inRuns);
+        if (inRuns) {
+            const bool runs = byHeight && radius < 2.0f;  // sorted by height, and a reach within a cell
+            QCOMPARE(offers.has_value(), runs);
+            if (!runs)
+                return;
+            QVERIFY2(*offers == *offersOf(false), "not the pairs forEachLaterNear offers");
         }
-        QCOMPARE(offers, offered.size());  // no pair twice
+        std::set<std::pair<std::uint32_t, std::uint32_t>> offered;
+        for (const auto& [i, j] : *offers)
+            offered.insert({std::min(i, j), std::max(i, j)});
+        QCOMPARE(offers->size(), offered.size());  // no pair twice
         std::size_t close = 0;
         for (std::uint32_t a = 0; a < pos.size(); ++a)
             for (std::uint32_t b = a + 1; b < pos.size(); ++b) {
