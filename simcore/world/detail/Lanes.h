@@ -79,6 +79,10 @@ template <class M>
 #if defined(__SSE__)
     if constexpr (sizeof(M) == sizeof(M4))
         return unsigned(_mm_movemask_ps(__m128(m)));
+    // Eight: each half's four (lane by lane, GCC made eight extracts of it).
+    if constexpr (sizeof(M) == 2 * sizeof(M4))
+        return bitsOf(M4(__builtin_shufflevector(m, m, 0, 1, 2, 3))) |
+               bitsOf(M4(__builtin_shufflevector(m, m, 4, 5, 6, 7))) << 4;
 #endif
     unsigned bits = 0;
     for (int l = 0; l < int(sizeof(M) / sizeof(std::int32_t)); ++l)
