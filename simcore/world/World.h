@@ -202,8 +202,11 @@ private:
     struct BoidSense {
         glm::vec3 push, headings, velocities, centre;
         std::uint32_t count;
-        glm::vec3 drift[kMaxNeighbours];  // where each neighbour's old velocity takes it
-        float keepOut[kMaxNeighbours];    // and how close it may come
+        // Where each neighbour's old velocity takes it (x, y and z apart, so the check of
+        // a boid's next position against all of them is one vector's), and how close it
+        // may come.
+        float driftX[kMaxNeighbours], driftY[kMaxNeighbours], driftZ[kMaxNeighbours];
+        float keepOut[kMaxNeighbours];
     };
     void senseBoid(std::size_t i, NeighbourGrid::Sweep* sweep, BoidSense& out);
     // senseBoid's two parts: the k nearest within a squared bound, then the sums over them.
@@ -221,9 +224,14 @@ private:
     void steerLanes(const std::uint32_t* boid, const BoidSense* sensed);
     void steerFourBoids(const std::uint32_t* boid, const BoidSense* sensed);
     void steerEightBoids(const std::uint32_t* boid, const BoidSense* sensed);  // only where canSteerEight
-    // steerBoid's last part: the ground, the collide pass's flags, the next state.
+    // steerBoid's last part: the ground, the collide pass's flags, the next state. Its
+    // parts: the ground (for a boid below its floor, or over a height field), and the
+    // flag and state stored (steerLanes checks the k nearest itself).
     void finishBoid(std::size_t i, const BoidSense& in, glm::vec3 pos, glm::vec3 vel, glm::vec3 nextFwd,
                     glm::vec3 side, glm::vec3 nextUp, WanderState wanderNext);
+    void groundBoid(std::size_t i, glm::vec3& pos, glm::vec3& vel, glm::vec3 nextFwd) const;
+    void storeBoid(std::size_t i, bool collideFree, glm::vec3 pos, glm::vec3 vel, glm::vec3 nextFwd, glm::vec3 side,
+                   glm::vec3 nextUp, const WanderState& wanderNext);
     // Steps agents order[begin, end) (the grid's order), boids in batches.
     void stepInGridOrder(const std::uint32_t* order, std::size_t begin, std::size_t end, bool hasStatics,
                          NeighbourGrid::Sweep& sweep);

@@ -171,7 +171,6 @@ void World::sumBoid(std::size_t i, const BoidNearest& best, BoidSense& out)
     std::uint32_t* nearIndex = &m_nearIndex[i * k];
     // Where each neighbour's old velocity takes it, and how close it may come (for the
     // collide pass: see collideFree in finishBoid).
-    glm::vec3* drift = out.drift;
     float* keepOut = out.keepOut;
     // The weight's floor, reference / kMaxSeparationWeight, is the same for neighbours of
     // the same contact distance (all of them, where the flock has one radius).
@@ -183,7 +182,10 @@ void World::sumBoid(std::size_t i, const BoidNearest& best, BoidSense& out)
         headings += m_fwd[j];
         velocities += vj;
         centre += q;
-        drift[n] = q + vj * m_dt;
+        const glm::vec3 drift = q + vj * m_dt;
+        out.driftX[n] = drift.x;
+        out.driftY[n] = drift.y;
+        out.driftZ[n] = drift.z;
         // Separation (FlockingBehaviours.cpp): the squared distance is the search key's.
         const float contact = radius + m_radius[j], reach = contact + range;
         keepOut[n] = contact + m_boidSlackM;
@@ -345,29 +347,40 @@ void World::steerBoid(std::size_t i, const BoidSense& in)
 void World::finishBoid(std::size_t i, const BoidSense& in, glm::vec3 pos, glm::vec3 vel, glm::vec3 nextFwd,
                        glm::vec3 side, glm::vec3 nextUp, WanderState wanderNext)
 {
-    const TypeSteering& s = m_steering[m_info[i].typeIndex];
-    const float radius = m_radius[i];
-    // Fliers may skim the ground but never pass through it (as in World::step).
-    // (terrainHeight is 0 without a height field: no call for the common flat ground.)
-    const float ground = m_terrain.heights.empty() ? 0.0f : groundHeight(pos.x, pos.z);
-    if (const float floor = ground + radius; pos.y < floor) {
-        pos.y = floor;
-        vel.y = std::max(vel.y, 0.0f);
-        const float stall = std::min(s.vehicle.minSpeed, m_maxSpeed[i]), now = glm::length(vel);
-        if (now < stall)
-            vel = now > 1e-6f ? vel * (stall / now) : nextFwd * stall;
-    }
+    groundBoid(i, pos, vel, nextFwd);
     // Collide-free: none of the k nearest can end the step within contact distance, as
     // long as each lies within m_boidSlackM of where its old velocity takes it (what the
     // collide pass checks before it trusts this flag); the margin covers the rounding of
-    // these sums and of the pass's own.
+    // these sums and of the pass's own. (steerLanes repeats this, a vector of neighbours
+    // at a time.)
     const float margin = 1e-4f + 4e-6f * (std::fabs(pos.x) + std::fabs(pos.y) + std::fabs(pos.z));
     bool collideFree = m_boidSlackM > 0.0f;
     for (std::size_t n = 0; n < in.count; ++n) {
-        const glm::vec3 d = pos - in.drift[n];
+        const glm::vec3 d = pos - glm::vec3(in.driftX[n], in.driftY[n], in.driftZ[n]);
         const float keep = in.keepOut[n] + margin;
         collideFree = collideFree && glm::dot(d, d) > keep * keep;
     }
+    storeBoid(i, collideFree, pos, vel, nextFwd, side, nextUp, wanderNext);
+}
+
+void World::groundBoid(std::size_t i, glm::vec3& pos, glm::vec3& vel, glm::vec3 nextFwd) const
+{
+    // Fliers may skim the ground but never pass through it (as in World::step).
+    // (terrainHeight is 0 without a height field: no call for the common flat ground.)
+    const float ground = m_terrain.heights.empty() ? 0.0f : groundHeight(pos.x, pos.z);
+    if (const float floor = ground + m_radius[i]; pos.y < floor) {
+        pos.y = floor;
+        vel.y = std::max(vel.y, 0.0f);
+        const float stall = std::min(m_steering[m_info[i].typeIndex].vehicle.minSpeed, m_maxSpeed[i]);
+        const float now = glm::length(vel);
+        if (now < stall)
+            vel = now > 1e-6f ? vel * (stall / now) : nextFwd * stall;
+    }
+}
+
+void World::storeBoid(std::size_t i, bool collideFree, glm::vec3 pos, glm::vec3 vel, glm::vec3 nextFwd,
+                      glm::vec3 side, glm::vec3 nextUp, const WanderState& wanderNext)
+{
     m_collideFree[i] = collideFree ? kCollideFree : 0;
     m_nextPos[i] = pos;
     m_nextVel[i] = vel;

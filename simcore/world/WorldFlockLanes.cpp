@@ -20,7 +20,9 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstring>
 
 namespace throng::sim {
 
@@ -63,6 +65,35 @@ template <class F>
     return select(f2 > maxForce * maxForce, f * (maxForce / sqrtOf(f2)), f);
 }
 
+// finishBoid's collide-free check for one boid at `at`, its k nearest a vector at a time:
+// none of them within its keep-out distance (plus the margin) of where it drifts. The
+// lanes past `count` hold another boid's neighbours (or zeros) and are left out.
+template <class F>
+[[gnu::always_inline]] inline bool collideFree(glm::vec3 at, const float* driftX, const float* driftY,
+                                               const float* driftZ, const float* keepOut, std::size_t count,
+                                               float slack)
+{
+    constexpr std::size_t kLanes = std::size_t(kWidth<F>);
+    static_assert(World::kMaxNeighbours % kLanes == 0);
+    if (!(slack > 0.0f))
+        return false;
+    const float margin = 1e-4f + 4e-6f * (std::fabs(at.x) + std::fabs(at.y) + std::fabs(at.z));
+    for (std::size_t first = 0; first < count; first += kLanes) {
+        F x, y, z, keep;
+        std::memcpy(&x, driftX + first, sizeof x);
+        std::memcpy(&y, driftY + first, sizeof y);
+        std::memcpy(&z, driftZ + first, sizeof z);
+        std::memcpy(&keep, keepOut + first, sizeof keep);
+        const F dx = at.x - x, dy = at.y - y, dz = at.z - z;
+        const F reach = keep + margin;
+        const unsigned near = bitsOf(~(dx * dx + dy * dy + dz * dz > reach * reach));
+        const std::size_t valid = std::min(count - first, kLanes);
+        if ((near & ((1u << valid) - 1u)) != 0)
+            return false;
+    }
+    return true;
+}
+
 }  // namespace
 
 // Always inlined, as its helpers are, so that in steerEightBoids all of it is built for
@@ -79,8 +110,8 @@ template <class F>
     // wander's random jitter).
     glm::vec3 p[kLanes], v[kLanes], fwd[kLanes], up0[kLanes], contain[kLanes], quarry[kLanes], quarryVel[kLanes],
         jitter[kLanes], prevTarget[kLanes], push[kLanes], headings[kLanes], velocities[kLanes], centre[kLanes];
-    F maxSpeed, n;
-    M contained, pursues, matchSpeed, wanders;
+    F maxSpeed, n, radius, probeMin, probeAhead;
+    M pursues, matchSpeed, wanders;
     const BoidType* types[kLanes];
     bool oneType = true;
     for (int l = 0; l < kLanes; ++l) {
@@ -96,24 +127,16 @@ template <class F>
         fwd[l] = m_fwd[i];
         up0[l] = m_up[i];
         maxSpeed[l] = nonNegative(m_maxSpeed[i]);
+        radius[l] = m_radius[i];
+        probeMin[l] = s.containment.probeMinM;
+        probeAhead[l] = s.containment.probeLookaheadS;
         push[l] = in.push;
         headings[l] = in.headings;
         velocities[l] = in.velocities;
         centre[l] = in.centre;
         n[l] = float(in.count);
         matchSpeed[l] = s.alignment.matchSpeed ? -1 : 0;
-        // Containment, as steerBoid: only near the bounds, where the probe reaches them.
-        contained[l] = 0;
         contain[l] = glm::vec3(0.0f);
-        if (b.wContainment > 0.0f) {
-            const float speedNow = glm::length(v[l]);
-            const float probe = s.containment.probeMinM + s.containment.probeLookaheadS * speedNow + m_radius[i];
-            const glm::vec3 lo = p[l] - m_bounds.min, hi = m_bounds.max - p[l];
-            if (std::min({lo.x, lo.y, lo.z, hi.x, hi.y, hi.z}) < probe) {
-                contained[l] = -1;
-                contain[l] = stayInside(steeringAgent(i), m_bounds, s.containment) * b.wContainment;
-            }
-        }
         const std::int32_t leader = m_leader[i];
         pursues[l] = leader >= 0 && b.wPursuit > 0.0f ? -1 : 0;
         quarry[l] = pursues[l] ? m_pos[std::size_t(leader)] : glm::vec3(0.0f);
@@ -146,12 +169,31 @@ template <class F>
             cap = param(&BoidType::predictionCapS), slowing = param(&BoidType::slowingM),
             wanderR = param(&BoidType::wanderRadiusM), wanderD = param(&BoidType::wanderDistanceM),
             minSpeedType = param(&BoidType::minSpeed), bankGain = param(&BoidType::bankGain),
-            bankBlend = param(&BoidType::bankBlend);
+            bankBlend = param(&BoidType::bankBlend), wContain = param(&BoidType::wContainment);
     const V3 P = lanes<F>(p), V = lanes<F>(v), Fwd = lanes<F>(fwd);
+    const F speedNow = length(V);
+    // Containment, as steerBoid: only near the bounds, where the probe reaches them (the
+    // nearest of the six faces found as std::min of a list finds it), and there for each
+    // lane alone.
+    M contained;
+    {
+        const F probe = probeMin + probeAhead * speedNow + radius;
+        const V3 lo = P - V3{splat<F>(m_bounds.min.x), splat<F>(m_bounds.min.y), splat<F>(m_bounds.min.z)};
+        const V3 hi = V3{splat<F>(m_bounds.max.x), splat<F>(m_bounds.max.y), splat<F>(m_bounds.max.z)} - P;
+        F nearest = lo.x;
+        for (const F face : {lo.y, lo.z, hi.x, hi.y, hi.z})
+            nearest = select(face < nearest, face, nearest);
+        contained = (wContain > 0.0f) & (nearest < probe);
+        for (unsigned bits = bitsOf(contained); bits != 0; bits &= bits - 1) {
+            const int l = std::countr_zero(bits);
+            const std::size_t i = boid[l];
+            contain[l] = stayInside(steeringAgent(i), m_bounds, m_steering[m_info[i].typeIndex].containment) *
+                         types[l]->wContainment;
+        }
+    }
 
     // Steer, in steerBoid's order: containment, separation, pursuit, alignment, cohesion,
     // wander.
-    const F speedNow = length(V);
     const V3 heading = select(speedNow > kTiny, V * (1.0f / speedNow), Fwd);
     V3 sum = select(contained, lanes<F>(contain), V3{});
     sum = select(wSep > 0.0f, sum + lanes<F>(push) * wSep, sum);
@@ -235,14 +277,20 @@ template <class F>
         }
     }
 
-    // Scatter: the ground, the collide pass's flags and the next state, lane by lane.
+    // Scatter, lane by lane (finishBoid's work): the ground, where a lane lies below its
+    // floor or over a height field; whether the collide pass may skip it; the next state.
+    const bool flat = m_terrain.heights.empty();
     for (int l = 0; l < kLanes; ++l) {
         const std::size_t i = boid[l];
         WanderState wanderNext = m_wander[i];
         if (wanders[l])
             wanderNext.target = lane(target, l);
-        finishBoid(i, sensed[l], lane(pos, l), lane(vel, l), lane(nextFwd, l), lane(side, l), lane(nextUp, l),
-                   wanderNext);
+        glm::vec3 at = lane(pos, l), velocity = lane(vel, l);
+        if (!flat || at.y < radius[l])
+            groundBoid(i, at, velocity, lane(nextFwd, l));
+        const BoidSense& in = sensed[l];
+        const bool free = collideFree<F>(at, in.driftX, in.driftY, in.driftZ, in.keepOut, in.count, m_boidSlackM);
+        storeBoid(i, free, at, velocity, lane(nextFwd, l), lane(side, l), lane(nextUp, l), wanderNext);
     }
 }
 

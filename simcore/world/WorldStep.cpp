@@ -140,7 +140,7 @@ void World::stepInGridOrder(const std::uint32_t* order, std::size_t begin, std::
     constexpr std::size_t kBoidBatch = 16;  // 8 to 32 measured alike, 1 about 5 % slower
     constexpr std::size_t kSenseLanes = 4;  // boids sensed together (senseFourBoids)
     constexpr std::size_t kPrefetchAhead = 32;
-    BoidSense sensed[kBoidBatch];
+    BoidSense sensed[kBoidBatch]{};  // zeros: the lanes past a boid's count are read (steerLanes)
     std::uint32_t boid[kBoidBatch];
     static_assert(kBoidBatch % kSenseLanes == 0);
     // boid[held - unsensed, held) await their senses, all in cell unsensedCell.
