@@ -252,15 +252,18 @@ public:
                 continue;
             const int x = int(c % std::size_t(m_cols)), z = int(c / std::size_t(m_cols));
             // The later cells a reach can touch: right, below left, below, below right
-            // (one past the grid's edge: none). Each with its window's first agent.
-            const std::size_t below = c + std::size_t(m_cols);
-            const bool hasRight = x + 1 < m_cols, hasLeft = x > 0, hasBelow = z + 1 < m_rows;
-            const std::uint32_t first[4] = {m_start[c + 1], hasBelow && hasLeft ? m_start[below - 1] : 0,
-                                            hasBelow ? m_start[below] : 0, hasBelow ? m_start[below + 1] : 0};
-            const std::uint32_t last[4] = {hasRight ? m_start[c + 2] : first[0], hasBelow && hasLeft ? m_start[below] : 0,
-                                           hasBelow ? m_start[below + 1] : 0,
-                                           hasBelow && hasRight ? m_start[below + 2] : first[3]};
-            std::uint32_t lo[4] = {first[0], first[1], first[2], first[3]};
+            // (past the grid's edge: empty), each [first, last) of the order, and the
+            // first agent of its window (lo).
+            std::uint32_t first[4] = {}, last[4] = {}, lo[4] = {};
+            const int at[4][2] = {{x + 1, z}, {x - 1, z + 1}, {x, z + 1}, {x + 1, z + 1}};
+            for (int n = 0; n < 4; ++n) {
+                const auto [cx, cz] = at[n];
+                if (cx < 0 || cx >= m_cols || cz >= m_rows)
+                    continue;
+                const std::size_t d = std::size_t(cz) * std::size_t(m_cols) + std::size_t(cx);
+                first[n] = lo[n] = m_start[d];
+                last[n] = m_start[d + 1];
+            }
             auto scan = [&](int n, std::size_t from, float yLo, float yHi) {
                 std::uint32_t at = lo[n];
                 while (at > first[n] && pos[at - 1].y >= yLo)
