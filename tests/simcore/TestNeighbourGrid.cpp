@@ -58,18 +58,21 @@ private slots:
     // forEachLaterNear (the overlap count's pairs): from the agents in the grid's order,
     // every pair within r of each other is offered exactly once. forEachLaterNearRun, over
     // runs of the order (one per thread), offers the same pairs, or declines (walkers, or
-    // a reach longer than a cell).
+    // a reach longer than a cell). Reaches that differ from agent to agent (as bodies'
+    // radii do) move its windows down as well as up.
     void laterNearOffersEveryClosePairOnce_data()
     {
         QTest::addColumn<bool>("byHeight");
         QTest::addColumn<float>("radius");
         QTest::addColumn<bool>("inRuns");
-        QTest::newRow("walkers") << false << 0.8f << false;
-        QTest::newRow("walkers, in runs") << false << 0.8f << true;
-        QTest::newRow("fliers") << true << 0.8f << false;
-        QTest::newRow("fliers, in runs") << true << 0.8f << true;
-        QTest::newRow("fliers, radius above cell") << true << 2.5f << false;
-        QTest::newRow("fliers, radius above cell, in runs") << true << 2.5f << true;
+        QTest::addColumn<bool>("mixedReach");  // every third agent's reach half the radius
+        QTest::newRow("walkers") << false << 0.8f << false << false;
+        QTest::newRow("walkers, in runs") << false << 0.8f << true << false;
+        QTest::newRow("fliers") << true << 0.8f << false << false;
+        QTest::newRow("fliers, in runs") << true << 0.8f << true << false;
+        QTest::newRow("fliers, mixed reaches, in runs") << true << 0.8f << true << true;
+        QTest::newRow("fliers, radius above cell") << true << 2.5f << false << false;
+        QTest::newRow("fliers, radius above cell, in runs") << true << 2.5f << true << false;
     }
 
     void laterNearOffersEveryClosePairOnce()
@@ -77,6 +80,7 @@ private slots:
         QFETCH(bool, byHeight);
         QFETCH(float, radius);
         QFETCH(bool, inRuns);
+        QFETCH(bool, mixedReach);
         std::mt19937 gen(23);
         std::uniform_real_distribution<float> u(-12.0f, 12.0f), h(0.0f, 6.0f);
         std::vector<glm::vec3> pos(2500);
@@ -90,6 +94,8 @@ private slots:
         grid.configure({-10.0f, -10.0f}, {10.0f, 10.0f}, 2.0f);
         grid.rebuild(pos, byHeight);
         const auto order = grid.order();
+        auto reachOf = [&](std::uint32_t i) { return mixedReach && i % 3 == 0 ? 0.5f * radius : radius; };
+        auto reach = [&](std::size_t k) { return reachOf(order[k]); };
         // Every (k, j) offered, one by one or in runs (cut mid-cell, one empty).
         auto offersOf = [&](bool runs) {
             std::multiset<std::pair<std::uint32_t, std::uint32_t>> offers;
@@ -101,13 +107,12 @@ private slots:
             if (runs) {
                 const std::size_t cuts[] = {0, 701, 701, 1903, order.size()};
                 for (std::size_t r = 0; r + 1 < std::size(cuts); ++r)
-                    if (!grid.forEachLaterNearRun(cuts[r], cuts[r + 1], radius, [&](std::size_t) { return radius; },
-                                                  offer))
+                    if (!grid.forEachLaterNearRun(cuts[r], cuts[r + 1], radius, reach, offer))
                         return std::optional<decltype(offers)>();
                 return std::optional(offers);
             }
             for (std::size_t k = 0; k < order.size(); ++k)
-                grid.forEachLaterNear(k, radius, [&](std::uint32_t j, const glm::vec3& q) { offer(k, j, q); });
+                grid.forEachLaterNear(k, reach(k), [&](std::uint32_t j, const glm::vec3& q) { offer(k, j, q); });
             return std::optional(offers);
         };
         for (std::size_t k = 0; k < order.size(); ++k)
@@ -128,7 +133,8 @@ private slots:
         for (std::uint32_t a = 0; a < pos.size(); ++a)
             for (std::uint32_t b = a + 1; b < pos.size(); ++b) {
                 const glm::vec3 d = pos[a] - pos[b];
-                if (d.x * d.x + d.y * d.y + d.z * d.z <= radius * radius) {
+                const float within = std::min(reachOf(a), reachOf(b));  // the earlier one's reach
+                if (d.x * d.x + d.y * d.y + d.z * d.z <= within * within) {
                     ++close;
                     QVERIFY2(offered.count({a, b}), qPrintable(QString("pair %1, %2 not offered").arg(a).arg(b)));
                 }
