@@ -12,8 +12,6 @@
 #include "simcore/scenarios/BenchScenarios.h"
 #include "simcore/world/World.h"
 
-#include <omp.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cstdlib>
@@ -172,14 +170,14 @@ int main(int argc, char** argv)
 
     double brainMs[2] = {0, 0}, stepMs[2] = {0, 0}, brainStepMs[2] = {0, 0}, soundStepMs[2] = {0, 0};
     for (int threads = 1; threads <= 2; ++threads) {
-        omp_set_num_threads(threads);
+        const ThreadTeam team(threads);
         BrainEvaluator eval(compiled.program);
         eval.resize(agents);
         std::vector<double> times;
         for (int s = 0; s < 23; ++s) {
             in.timeS = float(s) * in.dtS;
             const auto t0 = std::chrono::steady_clock::now();
-            eval.evaluate(in);
+            eval.evaluate(in, nullptr, &team);
             if (s >= 3)
                 times.push_back(since(t0));
         }

@@ -10,6 +10,7 @@
 #include "export/detail/GltfBuilder.h"
 #include "export/detail/GltfFiles.h"
 #include "export/detail/KeyReduction.h"
+#include "simcore/base/ThreadTeam.h"
 
 #include <tiny_gltf.h>
 
@@ -272,10 +273,9 @@ ExportResult exportGltf(const sim::Scene& scene, const sim::FrameCache& cache, c
             w.joints = detail::bakeJoints(jointClock, character, w.gait, options.positionToleranceM,
                                           options.rotationToleranceDeg * kDegToRad);
     };
+    const sim::ThreadTeam team(options.threads);
     auto forBlock = [&](std::size_t begin, std::size_t count, std::vector<AgentWork>& work, bool bakeJoints) {
-#pragma omp parallel for schedule(dynamic, 4)
-        for (std::ptrdiff_t k = 0; k < static_cast<std::ptrdiff_t>(count); ++k)
-            prepare(begin + static_cast<std::size_t>(k), work[static_cast<std::size_t>(k)], bakeJoints);
+        team.forEach(count, 4, [&](std::size_t k) { prepare(begin + k, work[k], bakeJoints); });
     };
     constexpr std::size_t kBlock = 256;
     std::vector<AgentWork> work(kBlock);

@@ -29,6 +29,7 @@ struct GltfOptions {
     float rotationToleranceDeg = 0.2f;   // joint rotations, degrees, >= 0
     float rootRotationToleranceDeg = 0.05f;
     bool prettyJson = false;             // .gltf only: indented JSON
+    int threads = 0;                     // agents prepared on this many threads; 0 = one per core
 };
 
 // Where an export's bytes went (binary buffer only; the JSON is the file's remainder).

@@ -30,6 +30,7 @@ bool writeRunOutputs(const CliArguments& args, const sim::Scene& scene, const si
         options.path = args.exportPath;
         options.mode = args.exportMode == "compact" ? exporting::GltfMode::Compact : exporting::GltfMode::Exact;
         options.sceneDirectory = std::filesystem::path(args.scene).parent_path().string();
+        options.threads = args.threads;
         options.seed = args.seed;
         if (args.exportJointStep)
             options.jointFrameStep = static_cast<int>(*args.exportJointStep);

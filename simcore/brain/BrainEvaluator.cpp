@@ -66,7 +66,7 @@ const float* BrainEvaluator::column(std::uint32_t slot) const
     return m_values.data() + m_offset[slot];
 }
 
-bool BrainEvaluator::evaluate(const BrainInputs& inputs, std::string* error)
+bool BrainEvaluator::evaluate(const BrainInputs& inputs, std::string* error, const ThreadTeam* team)
 {
     const BrainProgram& p = *m_program;
     const auto fail = [&](std::string why) {
@@ -112,12 +112,15 @@ bool BrainEvaluator::evaluate(const BrainInputs& inputs, std::string* error)
     frame.dtS = inputs.dtS;
 
     // Evaluate: every instruction over one block of agents, blocks in parallel.
-    const auto blocks = std::int64_t((m_agents + kBlock - 1) / kBlock);
-#pragma omp parallel for schedule(static) if (blocks > 1)
-    for (std::int64_t blk = 0; blk < blocks; ++blk) {
-        const std::size_t b = std::size_t(blk) * kBlock, e = std::min(m_agents, b + kBlock);
+    auto evaluateBlock = [&](std::size_t b, std::size_t e, int) {
         for (const BrainInstr& in : p.code)
             detail::runInstr(p, in, frame, b, e);
+    };
+    if (team) {
+        team->forChunks(m_agents, kBlock, evaluateBlock);
+    } else {
+        for (std::size_t b = 0; b < m_agents; b += kBlock)
+            evaluateBlock(b, std::min(m_agents, b + kBlock), 0);
     }
 
     // Live view: copy the picked agent's values while the sensor columns are valid.

@@ -1,9 +1,10 @@
 #pragma once
 // Runs a compiled brain for all agents of a type: instruction by instruction over
-// contiguous float columns, in blocks of agents spread over OpenMP threads, with the
+// contiguous float columns, in blocks of agents spread over a ThreadTeam's threads, with the
 // state nodes' per-agent state kept between steps. Knows nothing of the World: the caller
 // fills BrainInputs and reads BrainOutputs. Identical results for any thread count.
 
+#include "simcore/base/ThreadTeam.h"
 #include "simcore/brain/BrainProgram.h"
 
 #include <cstddef>
@@ -67,7 +68,8 @@ public:
 
     // Runs one step for every agent. Returns false and says why in `error` when the
     // inputs do not match the program (a missing column); nothing is evaluated then.
-    bool evaluate(const BrainInputs& inputs, std::string* error = nullptr);
+    // Blocks of agents run on `team` where given, else on the calling thread.
+    bool evaluate(const BrainInputs& inputs, std::string* error = nullptr, const ThreadTeam* team = nullptr);
     BrainOutputs outputs() const;
     // Every agent's value of a node's output after the last evaluate (agentCount values,
     // or × kBrainNeighbours when per-neighbour); null for a sensor node or an unknown port.

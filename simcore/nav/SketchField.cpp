@@ -1,5 +1,7 @@
 #include "simcore/nav/SketchField.h"
 
+#include "simcore/base/ThreadTeam.h"
+
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
 #include <glm/geometric.hpp>
@@ -80,7 +82,7 @@ bool SketchField::build(const Scene& scene, const NavGrid& grid, const SketchPar
     const std::vector<BoundarySample> boundary = boundarySamples(navShapes(scene), params.boundarySpacingM, strokes, params.wallReachM);
     if (!solve(strokes, boundary, params))
         return false;
-    bake(grid);
+    bake(grid, params.threads);
     return true;
 }
 
@@ -94,14 +96,15 @@ glm::vec2 SketchField::evaluate(glm::vec2 p) const
     return glm::vec2(v);
 }
 
-void SketchField::bake(const NavGrid& grid)
+void SketchField::bake(const NavGrid& grid, int threads)
 {
     m_grid = grid;
     const int cols = grid.cols(), rows = grid.rows();
     m_dir.assign(std::size_t(grid.cellCount()), glm::vec2(0.0f));
     m_strength.assign(std::size_t(grid.cellCount()), 0.0f);
-#pragma omp parallel for schedule(static)
-    for (int z = 0; z < rows; ++z)
+    const ThreadTeam team(threads);
+    team.forEach(std::size_t(rows), 1, [&](std::size_t row) {
+        const int z = int(row);
         for (int x = 0; x < cols; ++x) {
             const NavCell c{x, z};
             if (!grid.walkable(c) || m_strokes.empty())
@@ -146,6 +149,7 @@ void SketchField::bake(const NavGrid& grid)
             }
             m_dir[i] = d;
         }
+    });
 }
 
 glm::vec2 SketchField::direction(NavCell c) const

@@ -24,6 +24,7 @@ struct SketchParams {
     float wallReachM = 12.0f;       // m, >= 0: boundary samples farther from every stroke sample are left out
     float ridge = 1e-3f;            // >= 0: Tikhonov term relative to the kernel's peak (1): keeps dense
                                     // samples well conditioned; 1e-6 lets a 0.25 m spacing ring by 60 degrees
+    int threads = 0;                // bake on this many threads; 0 = one per core
 };
 
 class SketchField {
@@ -38,10 +39,10 @@ public:
     // O(samples).
     glm::vec2 evaluate(glm::vec2 p) const;
 
-    // Samples evaluate() at every walkable cell centre (OpenMP over rows; each cell is
+    // Samples evaluate() at every walkable cell centre (rows on all cores; each cell is
     // independent, so the result does not depend on the thread count), then turns any cell
     // direction that leads into a blocked cell along the boundary.
-    void bake(const NavGrid& grid);
+    void bake(const NavGrid& grid, int threads = 0);
     const NavGrid& grid() const { return m_grid; }
     // Unit direction at a cell after bake; zero for blocked cells or where the field vanishes.
     glm::vec2 direction(NavCell c) const;

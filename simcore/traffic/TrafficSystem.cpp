@@ -4,7 +4,6 @@
 
 #include <glm/geometric.hpp>
 
-#include <omp.h>
 
 #include <algorithm>
 #include <cmath>
@@ -20,7 +19,7 @@ TrafficSystem::TrafficSystem(const Scene& scene, const TrafficOptions& options)
 {
     m_seed = options.overrideSeed ? options.seed : scene.settings.seed;
     m_dt = 1.0f / scene.settings.fps;
-    m_threads = options.threads > 0 ? options.threads : omp_get_max_threads();
+    m_threads = ThreadTeam::resolve(options.threads);
 
     std::vector<std::string> paramType;
     for (const Vehicle& v : scene.vehicles) {
@@ -93,12 +92,18 @@ void TrafficSystem::step(std::span<const PedestrianView> pedestrians)
     collectPedestrians(pedestrians);
     // Each vehicle's next speed and position from the previous state only (threads pay
     // off only for a few hundred vehicles; the result is the same either way).
-    const std::ptrdiff_t n = std::ptrdiff_t(m_s.size());
-#pragma omp parallel for schedule(static, 64) num_threads(m_threads) if (n >= 256)
-    for (std::ptrdiff_t i = 0; i < n; ++i) {
-        const std::size_t k = std::size_t(i);
+    const std::size_t n = m_s.size();
+    auto advance = [&](std::size_t k) {
         m_next[k] = m_active[k] ? advanceVehicle(k, pedestrians)
                                 : NextState{m_s[k], 0.0f, 0.0f, m_stops[k], kNone, -1};
+    };
+    if (n >= 256 && m_threads > 1) {
+        if (!m_team)
+            m_team = std::make_shared<ThreadTeam>(m_threads);
+        m_team->forEach(n, 64, advance);
+    } else {
+        for (std::size_t k = 0; k < n; ++k)
+            advance(k);
     }
     // Commit in index order: stop-line crossings, lane ends.
     commit(t0);

@@ -13,6 +13,7 @@
 //   5. traffic.observePedestrians(pedsBefore, pedsAfter)   red-light entries, contacts
 // Stats: counters().redLightViolations(), carPedestrianCollisions; throughput().
 
+#include "simcore/base/ThreadTeam.h"
 #include "simcore/scene/Scene.h"
 #include "simcore/traffic/CarFollowing.h"
 #include "simcore/traffic/LaneNetwork.h"
@@ -21,6 +22,7 @@
 #include <glm/vec2.hpp>
 
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <string>
 #include <utility>
@@ -38,7 +40,7 @@ struct PedestrianView {
 struct TrafficOptions {
     std::uint64_t seed = 0;     // used when overrideSeed; else the scene's seed
     bool overrideSeed = false;
-    int threads = 0;            // 0 = OpenMP's default
+    int threads = 0;            // 0 = one per core this process may run on
     // Car-following model and parameters per vehicle agent type name; a type not listed
     // gets the IDM defaults with desiredSpeed = the type's max speed.
     std::vector<std::pair<std::string, FollowingParams>> modelByType;
@@ -215,6 +217,7 @@ private:
     std::uint64_t m_step = 0;
     float m_dt = 1.0f / 24.0f;
     int m_threads = 1;
+    std::shared_ptr<ThreadTeam> m_team;  // made when a step has enough vehicles to share out
     float m_maxRadius = 1.0f;
 
     // Structure of arrays, dense vehicle index.

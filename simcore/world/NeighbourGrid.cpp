@@ -38,12 +38,15 @@ void NeighbourGrid::configure(glm::vec2 boundsMin, glm::vec2 boundsMax, float ce
 // within a cell (the order is the serial stable sort's) and the scatter needs no
 // cursors. Cells, the prefix sums over cells and the scatter run in parallel.
 void NeighbourGrid::rebuild(std::span<const glm::vec3> positions, bool sortByHeight, std::span<const std::uint8_t> skip,
-                            int threads)
+                            const ThreadTeam* team)
 {
     const std::size_t n = positions.size();
     const std::size_t cells = m_start.size() - 1;
-    const std::size_t chunks = std::clamp<std::size_t>(n / kMinAgentsPerChunk, 1, std::size_t(std::max(threads, 1)));
-    const int team = int(chunks);
+    // Chunks in multiples of the team, so that a thread the machine holds back leaves
+    // little for the others to wait on; the order is the stable sort's for any count.
+    const std::size_t threads = team ? std::size_t(team->size()) : 1;
+    const std::size_t chunks = threads == 1 ? 1 : std::clamp<std::size_t>(n / kMinAgentsPerChunk, 1, 4 * threads);
+    auto forChunks = [&](auto&& fn) { team->forEach(chunks, 1, fn); };
     m_cellOf.resize(n);
     m_byHeight = sortByHeight;
     if (chunks == 1) {
@@ -58,8 +61,7 @@ void NeighbourGrid::rebuild(std::span<const glm::vec3> positions, bool sortByHei
     m_partTotal.assign(chunks + 1, 0u);
     std::uint32_t* start = m_start.data();
     // Each agent's cell; the counts (m_start[c + 1] for cell c) cleared.
-#pragma omp parallel for schedule(static, 1) num_threads(team)
-    for (std::size_t t = 0; t < chunks; ++t) {
+    forChunks([&](std::size_t t) {
         const auto [cb, ce] = part(cells + 1, chunks, t);
         std::fill(start + cb, start + ce, 0u);
         const auto [b, e] = part(n, chunks, t);
@@ -67,7 +69,7 @@ void NeighbourGrid::rebuild(std::span<const glm::vec3> positions, bool sortByHei
             m_cellOf[i] = i < skip.size() && skip[i]
                               ? kSkipped
                               : std::uint32_t(cellZ(positions[i].z) * m_cols + cellX(positions[i].x));
-    }
+    });
     // Count, in index order.
     for (std::size_t i = 0; i < n; ++i) {
         const std::uint32_t c = m_cellOf[i];
@@ -76,32 +78,29 @@ void NeighbourGrid::rebuild(std::span<const glm::vec3> positions, bool sortByHei
     }
     // Prefix sums over cells, in blocks: each block's total, the blocks' starts, then
     // each block on its own. m_start[c] becomes the first slot of cell c.
-#pragma omp parallel for schedule(static, 1) num_threads(team)
-    for (std::size_t t = 0; t < chunks; ++t) {
+    forChunks([&](std::size_t t) {
         const auto [b, e] = part(cells, chunks, t);
         std::uint32_t sum = 0;
         for (std::size_t c = b; c < e; ++c)
             sum += start[c + 1];
         m_partTotal[t + 1] = sum;
-    }
+    });
     for (std::size_t t = 0; t < chunks; ++t)
         m_partTotal[t + 1] += m_partTotal[t];
-#pragma omp parallel for schedule(static, 1) num_threads(team)
-    for (std::size_t t = 0; t < chunks; ++t) {
+    forChunks([&](std::size_t t) {
         const auto [b, e] = part(cells, chunks, t);
         std::uint32_t run = m_partTotal[t];
         for (std::size_t c = b; c < e; ++c) {
             run += start[c + 1];
             start[c + 1] = run;
         }
-    }
+    });
     start[0] = 0;
     const std::uint32_t indexed = start[cells];
     // Scatter: every agent to its own slot.
     m_sorted.resize(indexed);
     m_sortedPos.resize(indexed);
-#pragma omp parallel for schedule(static, 1) num_threads(team)
-    for (std::size_t t = 0; t < chunks; ++t) {
+    forChunks([&](std::size_t t) {
         const auto [b, e] = part(n, chunks, t);
         for (std::size_t i = b; i < e; ++i) {
             const std::uint32_t c = m_cellOf[i];
@@ -111,17 +110,16 @@ void NeighbourGrid::rebuild(std::span<const glm::vec3> positions, bool sortByHei
             m_sorted[k] = std::uint32_t(i);
             m_sortedPos[k] = positions[i];
         }
-    }
+    });
     if (!sortByHeight)
         return;
     // Within each cell by height, ties by index: the order is fully determined, and each
     // cell is sorted on its own, so in parallel over blocks of cells.
     m_heightScratch.resize(chunks);
-#pragma omp parallel for schedule(static, 1) num_threads(team)
-    for (std::size_t t = 0; t < chunks; ++t) {
+    forChunks([&](std::size_t t) {
         const auto [cb, ce] = part(cells, chunks, t);
         sortCellsByHeight(positions, cb, ce, m_heightScratch[t]);
-    }
+    });
 }
 
 bool NeighbourGrid::aimSweep(glm::vec3 p, float r, Sweep& sweep) const

@@ -2,6 +2,7 @@
 // A uniform grid over agent positions, rebuilt each step by counting sort (O(N)); a
 // query visits only the cells a radius overlaps. Holds indices, never agent data.
 
+#include "simcore/base/ThreadTeam.h"
 #include "simcore/world/detail/Lanes.h"
 
 #include <glm/vec2.hpp>
@@ -24,10 +25,10 @@ public:
     // Sorts agent indices into cells by their (x, z); with sortByHeight, each cell is also
     // ordered by y so forEachNear3D can skip the agents far above or below. Reuses its
     // buffers. Agents with skip[i] != 0 (agents that left through an exit) are not indexed;
-    // an empty skip indexes everyone. Runs on up to `threads` OpenMP threads; the order
-    // it leaves is the same for any number of them.
+    // an empty skip indexes everyone. Runs on `team` where given (else on the calling
+    // thread); the order it leaves is the same for any number of threads.
     void rebuild(std::span<const glm::vec3> positions, bool sortByHeight = false,
-                 std::span<const std::uint8_t> skip = {}, int threads = 1);
+                 std::span<const std::uint8_t> skip = {}, const ThreadTeam* team = nullptr);
 
     // Calls f(j) or f(j, position of j) for every agent j whose cell overlaps the square
     // around p of half-size r. Positions come from a copy kept in cell order, so a query

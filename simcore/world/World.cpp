@@ -8,7 +8,6 @@
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
-#include <omp.h>
 
 #include <algorithm>
 #include <cmath>
@@ -47,11 +46,10 @@ private:
 
 }  // namespace
 
-World::World(const Scene& scene, const WorldOptions& options)
+World::World(const Scene& scene, const WorldOptions& options) : m_team(options.threads)
 {
     m_seed = options.overrideSeed ? options.seed : scene.settings.seed;
     m_dt = 1.0f / scene.settings.fps;
-    m_threads = options.threads > 0 ? options.threads : omp_get_max_threads();
     m_neighbourSweep = options.neighbourSweep;
     m_steerEight = options.steerEight && canSteerEight();
 
@@ -90,7 +88,7 @@ World::World(const Scene& scene, const WorldOptions& options)
         m_maxRadius = std::max(m_maxRadius, t.radius);
     }
     m_grid.configure(scene.settings.boundsMin, scene.settings.boundsMax, cell);
-    m_grid.rebuild(m_pos, m_hasFliers, m_out);
+    m_grid.rebuild(m_pos, m_hasFliers, m_out, &m_team);
     buildBoidKernel(options.boidKernel, options.collideShortcut);
     buildWalkKernel(options.walkKernel);
 }

@@ -3,12 +3,12 @@
 // Reads only the previous state within a step, so results do not depend on the thread
 // count. Never reads a clock, never allocates inside step(), never draws.
 
+#include "simcore/base/ThreadTeam.h"
 #include "simcore/scene/Scene.h"
 #include "simcore/steering/Steering.h"
 #include "simcore/world/FrameCache.h"
 #include "simcore/world/NearestList.h"
 #include "simcore/world/NeighbourGrid.h"
-#include "simcore/world/RunSplit.h"
 #include "simcore/world/SegmentGrid.h"
 #include "simcore/world/StepCounters.h"
 #include "simcore/world/TypeSteering.h"
@@ -37,7 +37,7 @@ struct WorldBrains;
 struct WorldOptions {
     std::uint64_t seed = 0;     // used when overrideSeed; else the scene's seed
     bool overrideSeed = false;
-    int threads = 0;            // 0 = OpenMP's default
+    int threads = 0;            // 0 = one per core this process may run on
     bool boidKernel = true;     // false: boids take the general steering path too (tests compare the two)
     // false: the collide pass searches every boid's neighbours for overlaps, instead of
     // trusting what the boids kernel found (tests compare)
@@ -70,7 +70,9 @@ public:
     float dt() const { return m_dt; }
     double timeS() const { return double(m_step) * double(m_dt); }
     std::uint64_t seed() const { return m_seed; }
-    int threads() const { return m_threads; }
+    int threads() const { return m_team.size(); }
+    // The threads that step this World (tests ask it which threads did work).
+    const ThreadTeam& team() const { return m_team; }
 
     std::span<const glm::vec3> positions() const { return m_pos; }
     std::span<const glm::vec3> velocities() const { return m_vel; }
@@ -361,7 +363,6 @@ private:
 
     NeighbourGrid m_grid;
     bool m_gridCurrent = false;  // the grid indexes the current positions
-    RunSplit m_gridSplit;        // each thread's run of the grid order (WorldStep.cpp)
     bool m_hasFliers = false;    // then the grid also sorts by height for 3D queries
     bool m_allFliers = true;     // no obstacles or crosswalks to count for anyone
     bool m_neighbourSweep = true;  // WorldOptions::neighbourSweep
@@ -371,7 +372,7 @@ private:
     std::uint64_t m_seed = 1;
     std::uint64_t m_step = 0;
     float m_dt = 1.0f / 24.0f;
-    int m_threads = 1;
+    ThreadTeam m_team;
     WorldTraffic m_traffic;
     WorldNav m_nav;
     std::vector<std::uint8_t> m_out;  // left through an exit: never simulated or perceived again

@@ -185,7 +185,7 @@ void World::runBrains()
         in.timeS = float(timeS());
         in.dtS = m_dt;
         std::string error;
-        if (!tb.evaluator->evaluate(in, &error)) {
+        if (!tb.evaluator->evaluate(in, &error, &m_team)) {
             wb.errors.push_back(error);
             tb.program.reset();
             continue;
@@ -205,17 +205,16 @@ void World::runBrains()
                 if (name == behaviourName(Behaviour(b)))
                     tb.weight[b] = column;
         const std::size_t n = tb.agents.size();
-#pragma omp parallel for schedule(static, 1024) num_threads(m_threads)
-        for (std::size_t k = 0; k < n; ++k) {
+        m_team.forEach(n, 1024, [&](std::size_t k) {
             const std::size_t i = tb.agents[k];
             if (tb.action)
                 wb.action[i] = std::int16_t(tb.action[k]);
             if (!tb.goal || m_stopped[i])
-                continue;
+                return;
             const auto choice = std::size_t(std::max(0.0f, tb.goal[k]));
             const std::int32_t g = choice < tb.goalIndex.size() ? tb.goalIndex[choice] : -1;
             if (g < 0 || g == m_goal[i])
-                continue;
+                return;
             // A new goal: the agent heads for its own spot in it, drawn as at the start.
             m_goal[i] = g;
             const Goal& goal = m_goals[std::size_t(g)];
@@ -223,7 +222,7 @@ void World::runBrains()
             const float r = 0.8f * goal.radiusM * std::sqrt(rngUniform(m_seed, id, std::uint64_t(g) + 1, kGoalSpotR));
             const float a = 6.28318531f * rngUniform(m_seed, id, std::uint64_t(g) + 1, kGoalSpotA);
             m_goalSpot[i] = goal.position + r * glm::vec2(std::cos(a), std::sin(a));
-        }
+        });
     }
     // Vehicles with a speed output are driven by it along their lanes (this step's traffic
     // step comes after the brains).

@@ -77,8 +77,7 @@ void World::senseForBrain(TypeBrain& tb)
     const std::size_t n = tb.agents.size(), sensors = tb.fills.size();
     const float time = float(timeS());
     const float third = tb.viewDeg / 6.0f;
-#pragma omp parallel for schedule(static, 256) num_threads(m_threads)
-    for (std::size_t k = 0; k < n; ++k) {
+    m_team.forEach(n, 256, [&](std::size_t k) {
         const std::size_t i = tb.agents[k];
         const TypeParams& type = m_types[m_info[i].typeIndex];
         const TypeSteering& steering = m_steering[m_info[i].typeIndex];
@@ -311,7 +310,7 @@ void World::senseForBrain(TypeBrain& tb)
                 if (tb.itemSetChannel[set] == std::int32_t(c))
                     tb.itemCounts[set][k] = std::uint8_t(loud);
         }
-    }
+    });
 }
 
 }  // namespace throng::sim

@@ -41,32 +41,36 @@ void World::countLeaderOvertakes()
     if (m_allFliers)
         return;  // a flier is never counted (below): no pass over a flock for nothing
     const std::size_t n = m_pos.size();
-    std::uint64_t ahead = 0;
-#pragma omp parallel for schedule(static, 256) num_threads(m_threads) reduction(+ : ahead)
-    for (std::size_t i = 0; i < n; ++i) {
+    auto isAhead = [&](std::size_t i) -> bool {
         if (m_leader[i] < 0 || m_traffic.isDriven(i))
-            continue;
+            return false;
         const TypeSteering& s = m_steering[m_info[i].typeIndex];
         if (s.vehicle.flying ||
             !(s.on(Behaviour::Pursuit) || s.on(Behaviour::OffsetPursuit) || s.on(Behaviour::LeaderFollowing)))
-            continue;
+            return false;
         const auto l = std::size_t(m_leader[i]);
         if (m_stopped[l])
-            continue;
+            return false;
         const glm::vec2 fwd = xz(m_fwd[l]), rel = xz(m_pos[i]) - xz(m_pos[l]);
         if (glm::dot(fwd, fwd) < 1e-12f)
-            continue;
+            return false;
         const glm::vec2 heading = glm::normalize(fwd);
         const float along = glm::dot(rel, heading), aside = std::fabs(cross(heading, rel));
         if (along <= m_radius[i] + m_radius[l] || along <= aside)
-            continue;
+            return false;
         if (m_path[l] >= 0 && !m_paths[std::size_t(m_path[l])].closed) {
             const auto path = std::size_t(m_path[l]);
             if (routeProgress(path, xz(m_pos[i])) <= routeProgress(path, xz(m_pos[l])))
-                continue;
+                return false;
         }
-        ++ahead;
-    }
+        return true;
+    };
+    const std::uint64_t ahead = m_team.sumChunks(n, 256, [&](std::size_t begin, std::size_t end, int) {
+        std::uint64_t count = 0;
+        for (std::size_t i = begin; i < end; ++i)
+            count += isAhead(i);
+        return count;
+    });
     m_counters.leaderOvertaken += ahead;
 }
 

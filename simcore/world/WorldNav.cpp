@@ -162,11 +162,10 @@ void World::navBeforeStep()
         }
     }
     // Target: each walker from its own state.
-#pragma omp parallel for schedule(static, 256) num_threads(m_threads)
-    for (std::size_t i = 0; i < n; ++i) {
+    m_team.forEach(n, 256, [&](std::size_t i) {
         m_nav.waitingNext[i] = queueDepth(i);
         updateNavTarget(i);
-    }
+    });
     m_nav.waiting.swap(m_nav.waitingNext);
 }
 

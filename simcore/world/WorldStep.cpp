@@ -10,9 +10,8 @@
 
 #include <glm/geometric.hpp>
 
-#include <omp.h>
-
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <utility>
@@ -30,7 +29,7 @@ void World::step()
     // Grid: index agents by cell for neighbour queries (the last step's count left it
     // current for these positions).
     if (!m_gridCurrent)
-        m_grid.rebuild(m_pos, m_hasFliers, m_out, m_threads);
+        m_grid.rebuild(m_pos, m_hasFliers, m_out, &m_team);
     m_gridCurrent = false;
     // Navigate: plans and each walker's waypoint or flow direction (WorldNav.cpp).
     navBeforeStep();
@@ -44,38 +43,22 @@ void World::step()
     // holds them all: consecutive boids then query the same columns at rising heights
     // (NeighbourGrid::forEachNearestSweep) and read neighbours that are already in cache.
     // Each agent still reads only the old state and writes only its own next state, so
-    // the order changes nothing in the result. Each thread takes one run of the order, a
-    // region of space: in short interleaved runs both threads wrote the same cache lines
-    // of the next state (2 threads gained 2 % over 1 thread's 19 %, instead of 17 %).
-    // The runs' lengths follow the threads' last times (RunSplit.h): a flock that gathers
-    // in one part of the order made halves by count up to 19 % apart.
+    // the order changes nothing in the result. The order is cut into runs of consecutive
+    // cells, and each thread takes runs as it comes free: a run is a region of space, so
+    // the threads write the next state in regions of their own (in short interleaved runs
+    // both threads wrote the same cache lines: 2 threads gained 2 % over 1 thread's 19 %,
+    // instead of 17 %), and a flock that gathers in one part of the order, or a thread
+    // that the machine holds off its core, unbalances nothing.
     const std::span<const std::uint32_t> gridOrder = m_grid.order();
     if (m_neighbourSweep && m_grid.sortedByHeight() && gridOrder.size() == n) {
         const std::uint32_t* order = gridOrder.data();
-        m_gridSplit.prepare(m_threads);
-        bool fullTeam = true;
-#pragma omp parallel num_threads(m_threads)
-        {
+        const std::size_t run = std::max<std::size_t>(1024, n / (std::size_t(m_team.size()) * 16));
+        m_team.forChunks(n, run, [&](std::size_t first, std::size_t last, int) {
             NeighbourGrid::Sweep sweep;
-            const int threads = omp_get_num_threads(), t = omp_get_thread_num();
-            if (threads == m_threads) {
-                const double start = omp_get_wtime();
-                const auto [first, last] = m_gridSplit.range(n, t);
-                stepInGridOrder(order, first, last, hasStatics, sweep);
-                m_gridSplit.record(t, omp_get_wtime() - start);
-            } else {  // OpenMP gave fewer threads than asked: equal runs, and no timing
-#pragma omp single
-                fullTeam = false;
-                stepInGridOrder(order, n * std::size_t(t) / std::size_t(threads),
-                                n * std::size_t(t + 1) / std::size_t(threads), hasStatics, sweep);
-            }
-        }
-        if (fullTeam)
-            m_gridSplit.rebalance();
+            stepInGridOrder(order, first, last, hasStatics, sweep);
+        });
     } else {
-#pragma omp parallel for schedule(static, 256) num_threads(m_threads)
-        for (std::size_t i = 0; i < n; ++i)
-            stepAgent(i, hasStatics, nullptr);
+        m_team.forEach(n, 256, [&](std::size_t i) { stepAgent(i, hasStatics, nullptr); });
     }
     driveTrafficAgents();
 
@@ -87,22 +70,21 @@ void World::step()
     // should one not, the pass runs again in full, so the result is the same either way.
     const bool trustKernel = m_boidSlackM > 0.0f && m_collideFree.size() == n;
     const float slack2 = m_boidSlackM * m_boidSlackM;
-    int slackHeld = 1;
-#pragma omp parallel for schedule(static, 256) num_threads(m_threads) reduction(&& : slackHeld)
-    for (std::size_t i = 0; i < n; ++i) {
-        bool collideFree = false;
-        if (trustKernel) {
-            const glm::vec3 drift = m_nextPos[i] - (m_pos[i] + m_vel[i] * m_dt);
-            slackHeld = slackHeld && glm::dot(drift, drift) <= slack2;
-            collideFree = (m_collideFree[i] & kCollideFree) != 0;
+    const std::uint64_t slackBroken = m_team.sumChunks(n, 256, [&](std::size_t begin, std::size_t end, int) {
+        std::uint64_t broken = 0;
+        for (std::size_t i = begin; i < end; ++i) {
+            bool collideFree = false;
+            if (trustKernel) {
+                const glm::vec3 drift = m_nextPos[i] - (m_pos[i] + m_vel[i] * m_dt);
+                broken += glm::dot(drift, drift) > slack2;
+                collideFree = (m_collideFree[i] & kCollideFree) != 0;
+            }
+            resolveCollision(i, collideFree, hasStatics);
         }
-        resolveCollision(i, collideFree, hasStatics);
-    }
-    if (trustKernel && !slackHeld) {
-#pragma omp parallel for schedule(static, 256) num_threads(m_threads)
-        for (std::size_t i = 0; i < n; ++i)
-            resolveCollision(i, false, hasStatics);
-    }
+        return broken;
+    });
+    if (trustKernel && slackBroken > 0)
+        m_team.forEach(n, 256, [&](std::size_t i) { resolveCollision(i, false, hasStatics); });
     // The resolved positions are the next ones (the pass wrote every agent's).
     std::swap(m_nextPos, m_resolvedPos);
     trafficAfterCollide();
@@ -114,21 +96,25 @@ void World::step()
     m_stoppedBefore = m_stopped;
     // The new state's values that are not numbers are counted here, where each agent's
     // are already in cache, not in a pass of their own (countStep).
-    std::uint64_t crossings = 0, nonFinite = 0;
-#pragma omp parallel for schedule(static, 256) num_threads(m_threads) reduction(+ : crossings, nonFinite)
-    for (std::size_t i = 0; i < n; ++i) {
-        commit(i, crossings);
-        nonFinite += !isFinite(m_nextPos[i]) || !isFinite(m_nextVel[i]);
-    }
+    std::atomic<std::uint64_t> crossings{0}, nonFinite{0};
+    m_team.forChunks(n, 256, [&](std::size_t begin, std::size_t end, int) {
+        std::uint64_t crossed = 0, notNumbers = 0;
+        for (std::size_t i = begin; i < end; ++i) {
+            commit(i, crossed);
+            notNumbers += !isFinite(m_nextPos[i]) || !isFinite(m_nextVel[i]);
+        }
+        crossings.fetch_add(crossed, std::memory_order_relaxed);
+        nonFinite.fetch_add(notNumbers, std::memory_order_relaxed);
+    });
     std::swap(m_pos, m_nextPos);
     std::swap(m_vel, m_nextVel);
     std::swap(m_fwd, m_nextFwd);
     std::swap(m_side, m_nextSide);
     std::swap(m_up, m_nextUp);
     std::swap(m_wander, m_nextWander);
-    m_counters.wallPenetrations += crossings;
+    m_counters.wallPenetrations += crossings.load();
     ++m_step;
-    countStep(nonFinite);
+    countStep(nonFinite.load());
     countLeaderOvertakes();
     trafficAfterStep();
 }
@@ -433,8 +419,8 @@ void World::constrain(std::size_t i, glm::vec3 from, glm::vec3& to) const
 void World::countStep(std::uint64_t nonFinite)
 {
     const std::size_t n = m_pos.size();
-    std::uint64_t overlaps = 0, inObstacle = 0, red = 0;
-    m_grid.rebuild(m_pos, m_hasFliers, m_out, m_threads);
+    std::uint64_t overlaps = 0;
+    m_grid.rebuild(m_pos, m_hasFliers, m_out, &m_team);
     m_gridCurrent = true;
     // Overlapping pairs in the grid's order when it holds every agent: each close pair is
     // met once, from the earlier of the two (NeighbourGrid::forEachLaterNear), and the
@@ -442,15 +428,17 @@ void World::countStep(std::uint64_t nonFinite)
     // is not a number breaks the order by height, so then they are counted by index.
     const bool inGridOrder = m_grid.order().size() == n;
     if (inGridOrder && nonFinite == 0) {
-#pragma omp parallel num_threads(m_threads) reduction(+ : overlaps)
-        {
-            const auto threads = std::size_t(omp_get_num_threads()), t = std::size_t(omp_get_thread_num());
-            overlaps += laterOverlaps(n * t / threads, n * (t + 1) / threads);
-        }
+        const std::size_t run = std::max<std::size_t>(1024, n / (std::size_t(m_team.size()) * 16));
+        overlaps = m_team.sumChunks(n, run, [&](std::size_t begin, std::size_t end, int) {
+            return laterOverlaps(begin, end);
+        });
     } else {
-#pragma omp parallel for schedule(static) num_threads(m_threads) reduction(+ : overlaps)
-        for (std::size_t i = 0; i < n; ++i)
-            overlaps += m_out[i] ? 0 : overlapsAfter(i);  // out: left through an exit
+        overlaps = m_team.sumChunks(n, 1024, [&](std::size_t begin, std::size_t end, int) {
+            std::uint64_t count = 0;
+            for (std::size_t i = begin; i < end; ++i)
+                count += m_out[i] ? 0 : overlapsAfter(i);  // out: left through an exit
+            return count;
+        });
     }
     if (m_allFliers) {
         m_counters.overlappingPairs += overlaps;
@@ -458,41 +446,46 @@ void World::countStep(std::uint64_t nonFinite)
         m_counters.agentSteps += n;
         return;
     }
-#pragma omp parallel for schedule(static) num_threads(m_threads) reduction(+ : inObstacle, red)
-    for (std::size_t i = 0; i < n; ++i) {
-        if (m_out[i])
-            continue;  // left through an exit: no longer in the scene
-        const glm::vec2 p = xz(m_pos[i]);
-        const float r = m_radius[i];
-        if (m_types[m_info[i].typeIndex].kind == AgentKind::Flier)
-            continue;
-        m_obstacleGrid.forEachNear(p, r, [&](std::uint32_t k) {
-            if (k < m_circles.size() && glm::distance(p, xz(m_circles[k].centre)) < m_circles[k].radius + r - kOverlapToleranceM)
-                ++inObstacle;
-        });
-        // A pedestrian stepping onto a crosswalk while its light is red violates it.
-        std::uint8_t on = 0;
-        int light = -1;
-        for (const CrosswalkBox& c : m_crosswalks) {
-            const glm::vec2 ab = c.b - c.a;
-            const float len = glm::length(ab);
-            const float along = glm::dot(p - c.a, ab) / len;
-            const float across = std::fabs(cross(ab, p - c.a)) / len;
-            if (along > 0.0f && along < len && across < c.halfWidth) {
-                on = 1;
-                light = c.light;
+    std::atomic<std::uint64_t> inObstacleAll{0}, redAll{0};
+    m_team.forChunks(n, 1024, [&](std::size_t begin, std::size_t end, int) {
+        std::uint64_t inObstacle = 0, red = 0;
+        for (std::size_t i = begin; i < end; ++i) {
+            if (m_out[i])
+                continue;  // left through an exit: no longer in the scene
+            const glm::vec2 p = xz(m_pos[i]);
+            const float r = m_radius[i];
+            if (m_types[m_info[i].typeIndex].kind == AgentKind::Flier)
+                continue;
+            m_obstacleGrid.forEachNear(p, r, [&](std::uint32_t k) {
+                if (k < m_circles.size() && glm::distance(p, xz(m_circles[k].centre)) < m_circles[k].radius + r - kOverlapToleranceM)
+                    ++inObstacle;
+            });
+            // A pedestrian stepping onto a crosswalk while its light is red violates it.
+            std::uint8_t on = 0;
+            int light = -1;
+            for (const CrosswalkBox& c : m_crosswalks) {
+                const glm::vec2 ab = c.b - c.a;
+                const float len = glm::length(ab);
+                const float along = glm::dot(p - c.a, ab) / len;
+                const float across = std::fabs(cross(ab, p - c.a)) / len;
+                if (along > 0.0f && along < len && across < c.halfWidth) {
+                    on = 1;
+                    light = c.light;
+                }
             }
+            if (on && !m_onCrosswalk[i] && light >= 0 && m_types[m_info[i].typeIndex].kind == AgentKind::Pedestrian &&
+                !m_traffic.isDriven(i) &&
+                lightState(std::size_t(light)) == 2)
+                ++red;
+            m_onCrosswalk[i] = on;
         }
-        if (on && !m_onCrosswalk[i] && light >= 0 && m_types[m_info[i].typeIndex].kind == AgentKind::Pedestrian &&
-            !m_traffic.isDriven(i) &&
-            lightState(std::size_t(light)) == 2)
-            ++red;
-        m_onCrosswalk[i] = on;
-    }
+        inObstacleAll.fetch_add(inObstacle, std::memory_order_relaxed);
+        redAll.fetch_add(red, std::memory_order_relaxed);
+    });
     m_counters.overlappingPairs += overlaps;
     m_counters.nonFiniteValues += nonFinite;
-    m_counters.obstaclePenetrations += inObstacle;
-    m_counters.redLightViolations += red;
+    m_counters.obstaclePenetrations += inObstacleAll.load();
+    m_counters.redLightViolations += redAll.load();
     m_counters.agentSteps += n;
 }
 

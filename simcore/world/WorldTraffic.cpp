@@ -31,7 +31,7 @@ void World::buildTraffic(const Scene& scene)
         TrafficOptions options;
         options.seed = m_seed;
         options.overrideSeed = true;
-        options.threads = m_threads;
+        options.threads = m_team.size();
         m_traffic.system.emplace(scene, options);
     }
     for (const Hero& h : scene.heroes)
@@ -218,10 +218,9 @@ void World::trafficAfterCollide()
     if (m_traffic.heroAgent.empty() && m_traffic.signal.empty())
         return;
     const std::size_t n = m_pos.size();
-#pragma omp parallel for schedule(static, 256) num_threads(m_threads)
-    for (std::size_t i = 0; i < n; ++i) {
+    m_team.forEach(n, 256, [&](std::size_t i) {
         if (m_stopped[i] || m_types[m_info[i].typeIndex].kind == AgentKind::Flier)
-            continue;
+            return;
         glm::vec3 p = m_nextPos[i];
         // Heroes are never pushed; a walker inside a hero's clearance steps out of it.
         bool moved = false;
@@ -241,11 +240,11 @@ void World::trafficAfterCollide()
         holdAtSignal(i, p);
         keepOffRedCrosswalks(i, p);
         if (!moved && p == m_nextPos[i])
-            continue;
+            return;
         m_nextPos[i] = p;
         m_nextVel[i] = (p - m_pos[i]) / m_dt;
         m_nextVel[i].y = 0.0f;
-    }
+    });
 }
 
 void World::keepOffRedCrosswalks(std::size_t i, glm::vec3& p) const

@@ -80,7 +80,7 @@ public:
         in.timeS = timeS;
         in.dtS = dtS;
         std::string why;
-        if (!eval->evaluate(in, &why))
+        if (!eval->evaluate(in, &why, team.get()))
             errors += why;
         timeS += dtS;
     }
@@ -91,6 +91,7 @@ public:
     }
 
     std::unique_ptr<sim::BrainEvaluator> eval;
+    std::unique_ptr<sim::ThreadTeam> team;  // evaluate on it when set, else on the calling thread
     std::map<std::string, std::vector<float>> columns;
     std::vector<std::uint8_t> counts;  // neighbours per agent
     std::map<std::string, std::vector<std::uint8_t>> sourceCounts;  // "sound:<channel>" -> sources per agent

@@ -7,8 +7,6 @@
 
 #include <QTest>
 
-#include <omp.h>
-
 #include <algorithm>
 #include <cstring>
 
@@ -24,13 +22,15 @@ sim::BrainGraph loadShipped(const std::string& name)
     return r.ok() ? r.scene.brains[0] : sim::BrainGraph{};
 }
 
-// Every computed node value of every agent after `steps` steps, as raw bytes.
-std::vector<float> runAll(const sim::BrainGraph& g, int threads, std::size_t agents, int steps)
+// Every computed node value of every agent after `steps` steps, as raw bytes; `chunks`
+// gets how many blocks of agents each thread evaluated.
+std::vector<float> runAll(const sim::BrainGraph& g, int threads, std::size_t agents, int steps,
+                          std::vector<std::uint64_t>* chunks = nullptr)
 {
-    omp_set_num_threads(threads);
     BrainRig rig(g, agents);
     if (!rig.ok())
         return {};
+    rig.team = std::make_unique<sim::ThreadTeam>(threads);
     std::mt19937 gen(17);
     std::uniform_real_distribution<float> u(-3.0f, 40.0f);
     for (const sim::BrainSensorUse& s : rig.eval->program().sensors) {
@@ -48,7 +48,8 @@ std::vector<float> runAll(const sim::BrainGraph& g, int threads, std::size_t age
             if (const float* v = rig.eval->nodeValues(ns.node, ns.port))
                 all.insert(all.end(), v, v + agents * (rig.eval->program().valueSlots[ns.slot].perNeighbour ? sim::kBrainNeighbours : 1));
     }
-    omp_set_num_threads(2);
+    if (chunks)
+        *chunks = rig.team->chunksRun();
     return all;
 }
 
@@ -103,8 +104,13 @@ private slots:
     {
         QFETCH(QString, name);
         const sim::BrainGraph g = loadShipped(name.toStdString());
-        const std::vector<float> one = runAll(g, 1, 3001, 4), two = runAll(g, 2, 3001, 4);
+        // 40 blocks of agents a step over 12 steps: the second thread takes some of them.
+        std::vector<std::uint64_t> chunks;
+        const std::vector<float> one = runAll(g, 1, 40001, 12), two = runAll(g, 2, 40001, 12, &chunks);
         QVERIFY(!one.empty());
+        // Both threads evaluated agents, else agreeing would prove nothing.
+        QCOMPARE(chunks.size(), std::size_t(2));
+        QVERIFY2(chunks[0] > 0 && chunks[1] > 0, qPrintable(QString("blocks per thread: %1, %2").arg(chunks[0]).arg(chunks[1])));
         QCOMPARE(one.size(), two.size());
         QVERIFY2(std::memcmp(one.data(), two.data(), one.size() * sizeof(float)) == 0, "bit-identical node values");
     }

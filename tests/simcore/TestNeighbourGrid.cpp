@@ -184,7 +184,8 @@ private slots:
         auto order = [&](int threads) {
             NeighbourGrid grid;
             grid.configure({-40.0f, -40.0f}, {40.0f, 40.0f}, 2.5f);
-            grid.rebuild(pos, byHeight, skip, threads);
+            const ThreadTeam team(threads);
+            grid.rebuild(pos, byHeight, skip, &team);
             std::vector<std::uint32_t> seen;
             if (byHeight)
                 grid.forEachNear3D({0.0f, 15.0f, 0.0f}, 45.0f, [&](std::uint32_t j, const glm::vec3&) { seen.push_back(j); });
