@@ -38,6 +38,7 @@ RunStats RunStats::from(const World& world, std::uint64_t frames, double wallSec
     s.frames = frames;
     s.seed = world.seed();
     s.threads = world.threads();
+    s.chunksPerThread = world.team().chunksRun();
     s.simulatedSeconds = world.timeS();
     s.wallSeconds = wallSeconds;
     s.counters = world.counters();
@@ -89,6 +90,10 @@ std::string RunStats::toJson() const
     field("steps", std::to_string(frames > 0 ? frames - 1 : 0));
     field("seed", std::to_string(seed));
     field("threads", std::to_string(threads));
+    std::string chunks;
+    for (const std::uint64_t c : chunksPerThread)
+        chunks += (chunks.empty() ? "" : ", ") + std::to_string(c);
+    field("chunks_per_thread", "[" + chunks + "]");
     field("simulated_seconds", number(simulatedSeconds));
     field("wall_seconds", number(wallSeconds));
     field("agent_steps_per_second", number(agentStepsPerSecond));

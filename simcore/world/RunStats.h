@@ -26,6 +26,7 @@ struct RunStats {
     std::uint64_t frames = 0;  // recorded frames including frame 0
     std::uint64_t seed = 0;
     int threads = 1;
+    std::vector<std::uint64_t> chunksPerThread;  // work chunks each thread ran (thread 0: the caller)
     double simulatedSeconds = 0.0;
     double wallSeconds = 0.0;
     double agentStepsPerSecond = 0.0;

@@ -23,6 +23,19 @@ walls: [{points: [[4, -20], [4, -1.5]]}, {points: [[4, 1.5], [4, 20]]}]
 groups: [{name: g, type: walker, count: 40, rect: {min: [-6, -5], max: [0, 5]}, goal: exit}]
 )";
 
+// 3,000 walkers cross a hall with a wall and posts in it to two doors on the far sides,
+// and leave: enough agents that a second thread takes part of every step.
+const char* kBigScene = R"(throng: 1
+settings: {fps: 12, duration: 4, seed: 8, bounds: {min: [-40, -40], max: [40, 40]}}
+agent_types: [{name: walker, radius: 0.3, max_speed: 1.4, max_force: 6}]
+goals: [{name: east, position: [31, 0], radius: 1.5, exit: true}, {name: west, position: [-31, 0], radius: 1.5, exit: true}]
+walls: [{points: [[0, -10], [0, 10]]}]
+obstacles: [{shape: circle, center: [10, 5], radius: 1}, {shape: box, center: [-10, -5], size: [3, 2], angle: 20}]
+groups:
+  - {name: a, type: walker, count: 1500, rect: {min: [-28, -25], max: [-2, 25]}, goal: east}
+  - {name: b, type: walker, count: 1500, rect: {min: [2, -25], max: [28, 25]}, goal: west}
+)";
+
 QJsonObject readJson(const QString& path)
 {
     QFile f(path);
@@ -120,6 +133,35 @@ private slots:
         QCOMPARE(csvFor("two.csv", {"--frames", "12", "--threads", "2"}), one);
         // Another seed spawns another crowd.
         QVERIFY(csvFor("seed.csv", {"--frames", "12", "--seed", "99"}) != one);
+    }
+
+    // 3,000 walkers on 1 and on 2 threads: the same trajectories and figures, and the
+    // stats show that the second thread stepped agents (40 walkers, as above, fit in one
+    // chunk of work: there the second thread never runs).
+    void twoThreadsWorkAndAgreeWithOne()
+    {
+        QTemporaryDir tmp;
+        const QString scene = throng::test::writeText(tmp.filePath("big.yaml"), kBigScene);
+        QStringList csv[2];
+        QJsonObject stats[2];
+        for (int t = 0; t < 2; ++t) {
+            const QString c = tmp.filePath(QString("t%1.csv").arg(t + 1)), j = tmp.filePath(QString("t%1.json").arg(t + 1));
+            const auto r = runCli({"run", scene.toStdString(), "--threads", std::to_string(t + 1), "--trajectories",
+                                   c.toStdString(), "--stats", j.toStdString(), "--quiet"});
+            QCOMPARE(r.status, 0);
+            csv[t] = readLines(c);
+            stats[t] = readJson(j);
+        }
+        QCOMPARE(stats[0]["agents"].toInt(), 3000);
+        QCOMPARE(csv[0].size(), 1 + 48 * 3000);
+        QCOMPARE(stats[1]["threads"].toInt(), 2);
+        const QJsonArray chunks = stats[1]["chunks_per_thread"].toArray();
+        QCOMPARE(chunks.size(), 2);
+        QVERIFY2(chunks[0].toDouble() > 0 && chunks[1].toDouble() > 0, "the second thread did no work");
+        QVERIFY(csv[1] == csv[0]);
+        for (const QString& key : stats[0].keys())
+            if (key != "wall_seconds" && key != "agent_steps_per_second" && key != "threads" && key != "chunks_per_thread")
+                QVERIFY2(stats[1][key] == stats[0][key], qPrintable(key));
     }
 
     void exportWritesAGlb()
