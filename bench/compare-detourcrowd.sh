@@ -5,8 +5,7 @@
 # (BenchScenarios.h: concentric rings, antipodal goals) and the peer, patched with
 # bench/peers/detourcrowd-layout.patch (its --layout option), reads it.
 # Usage: bench/compare-detourcrowd.sh [AGENTS] [STEPS] [RUNS]; THREADS=N in the environment
-# sets Throng's thread count (default: OpenMP's). On a loaded machine run it with
-# OMP_WAIT_POLICY=passive: spinning OpenMP threads then wait on each other (10x slower).
+# sets Throng's thread count (default: one per core).
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 agents="${1:-10000}" steps="${2:-240}" runs="${3:-3}"
