@@ -146,10 +146,25 @@ private:
             return {};
         }
         for (const std::string& s : m_stack)
-            if (s == name || m_stack.size() > 16) {
+            if (s == name) {
                 m_errors.at(m_out[std::size_t(i)], "macro '" + name + "' uses itself");
                 return {};
             }
+        // A chain is legal however it nests; these bounds keep a macro used twice at each of
+        // many levels (2^depth nodes) from exhausting memory instead of being reported.
+        if (m_stack.size() >= kMaxMacroDepth) {
+            m_errors.at(m_out[std::size_t(i)], "macro '" + name + "' nests macros more than " +
+                                                   std::to_string(kMaxMacroDepth) + " deep");
+            return {};
+        }
+        if (m_overflow)
+            return {};  // reported once, at the first macro past the limit
+        if (m_out.size() + inner->nodes.size() > kMaxExpandedNodes) {
+            m_errors.at(m_out[std::size_t(i)], "macro '" + name + "' expands the brain past " +
+                                                   std::to_string(kMaxExpandedNodes) + " nodes");
+            m_overflow = true;
+            return {};
+        }
         m_stack.push_back(name);
         MacroPorts p = flatten(*inner, origin, where + "in macro '" + name + "': ");
         m_stack.pop_back();
@@ -209,7 +224,14 @@ private:
         if (tn.node->type == "macro")
             return;
         const std::size_t inputs = tn.pass ? (tn.node->type == "macro.out" ? 1u : 0u) : tn.spec->inputs.size();
-        if (l.toPort >= inputs && !(tn.spec->variadic && l.toPort < 256)) {
+        if (tn.spec->variadic && l.toPort >= kMaxVariadicInputs) {
+            linkError(top, li, origin, where, "node " + std::to_string(l.toNode) + " (" + tn.node->type +
+                                                  ") takes at most " + std::to_string(kMaxVariadicInputs) +
+                                                  " inputs (ports 0 to " + std::to_string(kMaxVariadicInputs - 1) +
+                                                  "), not port " + std::to_string(l.toPort));
+            return;
+        }
+        if (l.toPort >= inputs && !tn.spec->variadic) {
             linkError(top, li, origin, where, "node " + std::to_string(l.toNode) + " (" + tn.node->type +
                                                   ") has no input port " + std::to_string(l.toPort));
             return;
@@ -235,6 +257,7 @@ private:
     BrainErrorList& m_errors;
     std::vector<FlatNode>& m_out;
     std::vector<std::string> m_stack;
+    bool m_overflow = false;
 };
 
 }  // namespace

@@ -6,6 +6,8 @@
 #include "simcore/brain/BrainProgram.h"
 #include "simcore/scene/BrainGraph.h"
 
+#include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -29,6 +31,11 @@ struct BrainCompileResult {
     std::vector<BrainError> errors;
     bool ok() const { return program != nullptr; }
 };
+
+// Limits a valid brain stays within; each is an error at the node that passes it.
+constexpr std::size_t kMaxMacroDepth = 64;         // macros inside macros inside ...
+constexpr std::size_t kMaxExpandedNodes = 200'000;  // nodes once every macro is expanded inline
+constexpr std::uint32_t kMaxVariadicInputs = 4096;  // inputs of a repeating node (rule.and, math.add, ...)
 
 // `library` holds the brains a `macro` node may name (usually Scene::brains); the graph
 // itself may be among them.

@@ -11,8 +11,17 @@ namespace {
 void readDocument(const YAML::Node& root, const std::string& text, const std::string& baseDir,
                   detail::YamlFields& fields, LoadResult& result)
 {
+    // A document of comments only, or a bare word, has no mark of its own: its start is
+    // where the map should begin.
+    const auto located = [](YAML::Mark m) {
+        if (m.line < 0) {
+            m.line = 0;
+            m.column = 0;
+        }
+        return m;
+    };
     if (!root.IsMap()) {
-        fields.error(root.Mark(), "", "a scene file is a map of sections starting with 'throng: 1'");
+        fields.error(located(root.Mark()), "", "a scene file is a map of sections starting with 'throng: 1'");
         return;
     }
     try {
@@ -20,7 +29,7 @@ void readDocument(const YAML::Node& root, const std::string& text, const std::st
         reader.read(root, result.scene);
     } catch (const YAML::Exception& e) {
         // The reader checks types before converting; this is a last line of defence.
-        fields.error(e.mark, "", "unexpected YAML structure: " + e.msg);
+        fields.error(located(e.mark), "", "unexpected YAML structure: " + e.msg);
     }
 }
 

@@ -2,8 +2,6 @@
 
 #include "simcore/base/ThreadTeam.h"
 
-#include <Eigen/Cholesky>
-#include <Eigen/Core>
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -11,68 +9,21 @@
 
 namespace throng::sim {
 
-double SketchField::kernel(glm::vec2 a, glm::vec2 b) const
-{
-    const double dx = double(a.x) - double(b.x), dz = double(a.y) - double(b.y);
-    return 1.0 / std::sqrt(1.0 + (dx * dx + dz * dz) * m_invLength2);
-}
-
 bool SketchField::solve(std::span<const VectorSample> strokes, std::span<const BoundarySample> boundary,
-                        const SketchParams& params)
+                        const SketchParams& params, glm::vec2 domainMin, glm::vec2 domainMax)
 {
-    m_strokes.assign(strokes.begin(), strokes.end());
-    m_boundary.assign(boundary.begin(), boundary.end());
-    m_strokeWeights.clear();
-    m_boundaryWeights.clear();
+    m_strokeCount = strokes.size();
+    m_boundaryCount = boundary.size();
     m_error.clear();
-    if (m_strokes.empty()) {
+    if (strokes.empty()) {
+        m_solution = {};
         m_error = "sketched field: no stroke samples (draw a flow stroke of some length)";
         return false;
     }
-    const double l = params.kernelLengthM > 0.0f ? double(params.kernelLengthM) : 1.0;
-    m_invLength2 = 1.0 / (l * l);
-    // Generalised (Hermite-Birkhoff) interpolation: the unknowns are a vector weight per
-    // stroke sample and a weight along the normal per boundary sample, so the matrix is the
-    // Gram matrix of the constraints under a positive definite kernel: symmetric positive
-    // definite, factorised by Cholesky. Order: x weights, z weights, boundary weights.
-    const Eigen::Index s = Eigen::Index(m_strokes.size()), b = Eigen::Index(m_boundary.size()), n = 2 * s + b;
-    Eigen::MatrixXd a = Eigen::MatrixXd::Zero(n, n);  // the x-z coupling blocks stay zero
-    Eigen::VectorXd rhs(n);
-    for (Eigen::Index i = 0; i < s; ++i) {
-        for (Eigen::Index j = 0; j <= i; ++j) {
-            const double k = kernel(m_strokes[std::size_t(i)].position, m_strokes[std::size_t(j)].position);
-            a(i, j) = k;
-            a(s + i, s + j) = k;
-        }
-        rhs(i) = double(m_strokes[std::size_t(i)].direction.x);
-        rhs(s + i) = double(m_strokes[std::size_t(i)].direction.y);
-    }
-    for (Eigen::Index m = 0; m < b; ++m) {
-        const BoundarySample& bm = m_boundary[std::size_t(m)];
-        for (Eigen::Index i = 0; i < s; ++i) {
-            const double k = kernel(bm.position, m_strokes[std::size_t(i)].position);
-            a(2 * s + m, i) = double(bm.normal.x) * k;
-            a(2 * s + m, s + i) = double(bm.normal.y) * k;
-        }
-        for (Eigen::Index j = 0; j <= m; ++j) {
-            const BoundarySample& bj = m_boundary[std::size_t(j)];
-            a(2 * s + m, 2 * s + j) = double(glm::dot(bm.normal, bj.normal)) * kernel(bm.position, bj.position);
-        }
-        rhs(2 * s + m) = 0.0;
-    }
-    a.diagonal().array() += double(std::max(params.ridge, 0.0f));
-    const Eigen::LLT<Eigen::MatrixXd, Eigen::Lower> llt(a.selfadjointView<Eigen::Lower>());
-    if (llt.info() != Eigen::Success) {
-        m_error = "sketched field: the RBF system is not positive definite (repeated samples? raise ridge)";
+    if (!m_solution.solve(strokes, boundary, double(params.kernelLengthM), double(params.ridge), domainMin, domainMax)) {
+        m_error = m_solution.error();
         return false;
     }
-    const Eigen::VectorXd w = llt.solve(rhs);
-    m_strokeWeights.resize(std::size_t(s));
-    for (Eigen::Index i = 0; i < s; ++i)
-        m_strokeWeights[std::size_t(i)] = {w(i), w(s + i)};
-    m_boundaryWeights.resize(std::size_t(b));
-    for (Eigen::Index m = 0; m < b; ++m)
-        m_boundaryWeights[std::size_t(m)] = w(2 * s + m);
     return true;
 }
 
@@ -80,7 +31,7 @@ bool SketchField::build(const Scene& scene, const NavGrid& grid, const SketchPar
 {
     const std::vector<VectorSample> strokes = strokeSamples(scene.flowStrokes, params.sampleSpacingM);
     const std::vector<BoundarySample> boundary = boundarySamples(navShapes(scene), params.boundarySpacingM, strokes, params.wallReachM);
-    if (!solve(strokes, boundary, params))
+    if (!solve(strokes, boundary, params, grid.origin(), grid.origin() + grid.cellM() * glm::vec2(float(grid.cols()), float(grid.rows()))))
         return false;
     bake(grid, params.threads);
     return true;
@@ -88,12 +39,7 @@ bool SketchField::build(const Scene& scene, const NavGrid& grid, const SketchPar
 
 glm::vec2 SketchField::evaluate(glm::vec2 p) const
 {
-    glm::dvec2 v(0.0);
-    for (std::size_t i = 0; i < m_strokes.size(); ++i)
-        v += m_strokeWeights[i] * kernel(p, m_strokes[i].position);
-    for (std::size_t m = 0; m < m_boundary.size(); ++m)
-        v += glm::dvec2(m_boundary[m].normal) * (m_boundaryWeights[m] * kernel(p, m_boundary[m].position));
-    return glm::vec2(v);
+    return m_solution.evaluate(p);
 }
 
 void SketchField::bake(const NavGrid& grid, int threads)
@@ -107,7 +53,7 @@ void SketchField::bake(const NavGrid& grid, int threads)
         const int z = int(row);
         for (int x = 0; x < cols; ++x) {
             const NavCell c{x, z};
-            if (!grid.walkable(c) || m_strokes.empty())
+            if (!grid.walkable(c) || m_strokeCount == 0)
                 continue;
             const glm::vec2 centre = grid.centre(c);
             const glm::vec2 v = evaluate(centre);

@@ -4,13 +4,15 @@
 // interpolated with radial basis functions over the walkable area, walls acting as boundary
 // constraints (the field's normal component is zero at boundary samples), then baked onto a
 // NavGrid for O(1) lookup where no cell's direction leads into a blocked cell.
-// Solves with Eigen (dense Cholesky); never steers agents itself.
+// Solves through SketchPatches (local dense Cholesky solves, blended); never steers agents itself.
 
 #include "simcore/nav/NavGrid.h"
+#include "simcore/nav/SketchPatches.h"
 #include "simcore/nav/SketchSamples.h"
 
 #include <glm/vec2.hpp>
 
+#include <cmath>
 #include <span>
 #include <string>
 #include <vector>
@@ -31,12 +33,14 @@ class SketchField {
 public:
     // Solves for the RBF weights. False (see error()) when there is no stroke sample or the
     // system cannot be factorised.
-    bool solve(std::span<const VectorSample> strokes, std::span<const BoundarySample> boundary, const SketchParams& params);
+    // [domainMin, domainMax]: where the field will be evaluated (the grid's extent), when known.
+    bool solve(std::span<const VectorSample> strokes, std::span<const BoundarySample> boundary, const SketchParams& params,
+               glm::vec2 domainMin = glm::vec2(INFINITY), glm::vec2 domainMax = glm::vec2(-INFINITY));
     // strokeSamples + boundarySamples of the scene's strokes, walls and obstacles, then solve and bake.
     bool build(const Scene& scene, const NavGrid& grid, const SketchParams& params = {});
 
     // The interpolated field at p (not unit; its length says how strongly strokes act there).
-    // O(samples).
+    // O(samples of the patches round p).
     glm::vec2 evaluate(glm::vec2 p) const;
 
     // Samples evaluate() at every walkable cell centre (rows on all cores; each cell is
@@ -52,18 +56,14 @@ public:
     // cell's direction (or zero) where the blend would lead into a blocked cell.
     glm::vec2 sample(glm::vec2 p) const;
 
-    std::size_t strokeSampleCount() const { return m_strokes.size(); }
-    std::size_t boundarySampleCount() const { return m_boundary.size(); }
+    std::size_t strokeSampleCount() const { return m_strokeCount; }
+    std::size_t boundarySampleCount() const { return m_boundaryCount; }
+    std::size_t patchCount() const { return m_solution.patchCount(); }
     const std::string& error() const { return m_error; }
 
 private:
-    double kernel(glm::vec2 a, glm::vec2 b) const;
-
-    std::vector<VectorSample> m_strokes;
-    std::vector<BoundarySample> m_boundary;
-    std::vector<glm::dvec2> m_strokeWeights;  // one vector weight per stroke sample
-    std::vector<double> m_boundaryWeights;    // one weight along the normal per boundary sample
-    double m_invLength2 = 1.0;
+    std::size_t m_strokeCount = 0, m_boundaryCount = 0;
+    SketchPatches m_solution;
     std::string m_error;
 
     NavGrid m_grid;

@@ -12,7 +12,7 @@ namespace {
 constexpr int kMaxCellsPerAxis = 2048;
 }
 
-void SegmentGrid::build(std::span<const Segment> segments, float cellM)
+void SegmentGrid::build(std::span<const Segment> segments, float cellM, glm::vec2 focusMin, glm::vec2 focusMax)
 {
     m_segments.assign(segments.begin(), segments.end());
     m_start.clear();
@@ -25,9 +25,21 @@ void SegmentGrid::build(std::span<const Segment> segments, float cellM)
         lo = glm::min(lo, glm::min(s.a, s.b));
         hi = glm::max(hi, glm::max(s.a, s.b));
     }
+    // Clip to the focus unless nothing is left of the extent on an axis (all segments
+    // lie beyond it, and a query at the focus finds none of them anyway).
+    const glm::vec2 clipLo = glm::max(lo, focusMin), clipHi = glm::min(hi, focusMax);
+    m_clippedLo = m_clippedHi = glm::bvec2(false);
+    for (int k = 0; k < 2; ++k)
+        if (clipLo[k] <= clipHi[k]) {
+            m_clippedLo[k] = clipLo[k] > lo[k];
+            m_clippedHi[k] = clipHi[k] < hi[k];
+            lo[k] = clipLo[k];
+            hi[k] = clipHi[k];
+        }
     const glm::vec2 size = glm::max(hi - lo, glm::vec2(1e-3f));
     const float cell = std::max({cellM, size.x / kMaxCellsPerAxis, size.y / kMaxCellsPerAxis});
     m_inv = 1.0f / cell;
+    m_cell = cell;
     m_min = lo;
     m_cols = std::max(1, int(std::ceil(size.x * m_inv)) + 1);
     m_rows = std::max(1, int(std::ceil(size.y * m_inv)) + 1);
@@ -37,8 +49,9 @@ void SegmentGrid::build(std::span<const Segment> segments, float cellM)
     std::vector<std::uint32_t> count(std::size_t(m_cols) * std::size_t(m_rows) + 1, 0);
     auto visit = [&](const Segment& s, auto&& f) {
         const glm::vec2 a = glm::min(s.a, s.b), b = glm::max(s.a, s.b);
-        for (int z = std::max(cellZ(a.y), 0); z <= std::min(cellZ(b.y), m_rows - 1); ++z)
-            for (int x = std::max(cellX(a.x), 0); x <= std::min(cellX(b.x), m_cols - 1); ++x)
+        const int x0 = std::clamp(cellX(a.x), 0, m_cols - 1), x1 = std::clamp(cellX(b.x), 0, m_cols - 1);
+        for (int z = std::clamp(cellZ(a.y), 0, m_rows - 1); z <= std::clamp(cellZ(b.y), 0, m_rows - 1); ++z)
+            for (int x = x0; x <= x1; ++x)
                 f(std::size_t(z) * std::size_t(m_cols) + std::size_t(x));
     };
     for (const Segment& s : m_segments)

@@ -4,6 +4,7 @@
 
 #include "simcore/scene/TerrainHeight.h"
 #include "simcore/traffic/LightPhase.h"
+#include "simcore/world/RepeatedStatics.h"
 #include "simcore/world/Rng.h"
 
 #include <glm/geometric.hpp>
@@ -99,12 +100,15 @@ void World::buildStatics(const Scene& scene)
     for (const Wall& w : scene.walls)
         for (std::size_t k = 0; k + 1 < w.points.size(); ++k)
             walls.push_back({w.points[k], w.points[k + 1]});
-    for (const Obstacle& o : scene.obstacles)
+    // Exact repeats (a paste gone wrong; `check` warns) would be met once each per query:
+    // 50,000 copies of one wall made 24 frames take minutes. One of each is the same set.
+    const std::vector<Obstacle> obstacles = uniqueObstacles(scene.obstacles);
+    for (const Obstacle& o : obstacles)
         if (o.shape == ObstacleShape::Circle) {
             m_circles.push_back({glm::vec3(o.center.x, 0.0f, o.center.y), o.radiusM});
             obstacleBoxes.push_back({o.center - glm::vec2(o.radiusM), o.center + glm::vec2(o.radiusM)});
         }
-    for (const Obstacle& o : scene.obstacles) {
+    for (const Obstacle& o : obstacles) {
         if (o.shape != ObstacleShape::Box)
             continue;
         // Scene angles turn counter-clockwise seen from above (+y up, z south).
@@ -120,9 +124,13 @@ void World::buildStatics(const Scene& scene)
         obstacleBoxes.push_back({o.center - glm::vec2(reach), o.center + glm::vec2(reach)});
     }
     appendKerbs(walls);
+    removeRepeatedSegments(walls);
     // The wall grid's cells fit a walker's feelers; obstacle boxes are found by their bounds.
-    m_walls.build(walls, 4.0f);
-    m_obstacleGrid.build(obstacleBoxes, 4.0f);
+    // Both grids cover the bounds and a margin only: one wall point at -1e30 m would
+    // otherwise stretch each cell over the whole set (every query seeing every wall).
+    const glm::vec2 margin(kStaticGridMarginM);
+    m_walls.build(walls, 4.0f, scene.settings.boundsMin - margin, scene.settings.boundsMax + margin);
+    m_obstacleGrid.build(obstacleBoxes, 4.0f, scene.settings.boundsMin - margin, scene.settings.boundsMax + margin);
 
     m_goals = scene.goals;
     // Paths marked `plan: astar` become their planned way round the set (PathPlanning).

@@ -92,6 +92,17 @@ bool usedByAType(const Scene& scene, const std::string& brain)
     return false;
 }
 
+// Whether the World compiles `brain`: a type's or a placed agent's brain (World::buildBrains).
+bool runByTheWorld(const Scene& scene, const std::string& brain)
+{
+    if (usedByAType(scene, brain))
+        return true;
+    for (const Agent& a : scene.agents)
+        if (a.brain == brain)
+            return true;
+    return false;
+}
+
 }  // namespace
 
 std::string worldSensorProblem(const BrainSensorUse& use, const Scene& /*scene*/)
@@ -111,8 +122,13 @@ std::vector<Diagnostic> checkSceneBrains(const Scene& scene)
         const BrainGraph& g = scene.brains[b];
         const std::string key = "brains[" + std::to_string(b) + "]";
         const BrainCompileResult r = compileBrain(g, scene.brains);
+        // `run` compiles only the brains agents run (a macro inside one is compiled with it),
+        // so a broken brain nobody runs is news, not a reason to refuse the scene.
+        const bool runs = runByTheWorld(scene, g.name);
+        const Severity severity = runs ? Severity::Error : Severity::Warning;
+        const std::string idle = runs ? std::string() : "brain '" + g.name + "' is run by no agent, so a run ignores this: ";
         for (const BrainError& e : r.errors)
-            out.push_back({Severity::Error, e.file, e.line, e.column, key, e.message});
+            out.push_back({severity, e.file, e.line, e.column, key, idle + e.message});
         if (!r.ok())
             continue;
         std::vector<std::string> silent;  // channels already warned about
@@ -121,7 +137,7 @@ std::vector<Diagnostic> checkSceneBrains(const Scene& scene)
             const BrainSourcePos pos = n ? g.source.node(n->id) : BrainSourcePos{};
             const std::string who = n ? "node " + std::to_string(n->id) + " (input): " : std::string();
             if (const std::string why = worldSensorProblem(use, scene); !why.empty()) {
-                out.push_back({Severity::Error, g.source.file, pos.line, pos.column, key, who + why});
+                out.push_back({severity, g.source.file, pos.line, pos.column, key, idle + who + why});
                 continue;
             }
             // A brain some type runs that listens where nothing sounds hears silence forever.

@@ -1,5 +1,6 @@
 #include "simcore/io/detail/SceneReader.h"
 
+#include "simcore/io/detail/SceneSizeCheck.h"
 #include "simcore/io/detail/YamlDocument.h"
 #include "simcore/world/TypeSteering.h"
 
@@ -78,6 +79,7 @@ void SceneReader::read(const YAML::Node& root, Scene& scene)
     for (const LeaderRef& r : m_leaderRefs)
         if (!all.count(r.id))
             m_f.error(r.at, r.key, "no agent, vehicle or hero with id " + std::to_string(r.id) + " to lead");
+    checkSceneSizes(m_f, root, scene);
 }
 
 bool SceneReader::readBehaviour(const YAML::Node& node, const std::string& key, BehaviourWeight& out)

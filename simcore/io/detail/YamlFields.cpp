@@ -1,8 +1,11 @@
 #include "simcore/io/detail/YamlFields.h"
 
+#include "simcore/io/SceneLimits.h"
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <map>
 
@@ -211,8 +214,22 @@ bool YamlFields::toVec2(const YAML::Node& node, const std::string& key, glm::vec
     glm::vec2 v;
     if (!toFloat(node[0], indexKey(key, 0), v.x, range) || !toFloat(node[1], indexKey(key, 1), v.y, range))
         return false;
+    for (int i = 0; i < 2; ++i)
+        if (!withinWorld(v[i], node[std::size_t(i)].Mark(), indexKey(key, std::size_t(i))))
+            return false;
     out = v;
     return true;
+}
+
+bool YamlFields::withinWorld(float v, const YAML::Mark& at, const std::string& key)
+{
+    if (std::abs(v) <= kMaxCoordinateM)
+        return true;
+    char m[128];
+    std::snprintf(m, sizeof m, "%g is beyond %g m from the origin (a typo? lengths this far overflow)", double(v),
+                  double(kMaxCoordinateM));
+    error(at, key, m);
+    return false;
 }
 
 bool YamlFields::readFloat(const YAML::Node& map, const char* name, const std::string& key, float& out,
@@ -335,7 +352,7 @@ bool YamlFields::readPoint3(const YAML::Node& map, const char* name, const std::
     }
     float v[3] = {0, 0, 0};
     for (std::size_t i = 0; i < node.size(); ++i)
-        if (!toFloat(node[i], indexKey(k, i), v[i], Range::Any))
+        if (!toFloat(node[i], indexKey(k, i), v[i], Range::Any) || !withinWorld(v[i], node[i].Mark(), indexKey(k, i)))
             return false;
     out = node.size() == 2 ? glm::vec3(v[0], 0.0f, v[1]) : glm::vec3(v[0], v[1], v[2]);
     return true;

@@ -70,6 +70,8 @@ private:
     void checkKeysImpl(const YAML::Node& map, const std::string& key, std::initializer_list<const char*> allowed,
                        bool warnUnknown);
     bool inRange(float v, Range range, const YAML::Mark& at, const std::string& key);
+    // Coordinates past SceneLimits' kMaxCoordinateM are errors (their squares overflow).
+    bool withinWorld(float v, const YAML::Mark& at, const std::string& key);
 
     std::string m_file;
     std::vector<Diagnostic>& m_out;
