@@ -20,7 +20,8 @@ bool SketchField::solve(std::span<const VectorSample> strokes, std::span<const B
         m_error = "sketched field: no stroke samples (draw a flow stroke of some length)";
         return false;
     }
-    if (!m_solution.solve(strokes, boundary, double(params.kernelLengthM), double(params.ridge), domainMin, domainMax)) {
+    if (!m_solution.solve(strokes, boundary, double(params.kernelLengthM), double(params.ridge), domainMin, domainMax,
+                          params.threads)) {
         m_error = m_solution.error();
         return false;
     }

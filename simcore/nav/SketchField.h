@@ -26,7 +26,7 @@ struct SketchParams {
     float wallReachM = 12.0f;       // m, >= 0: boundary samples farther from every stroke sample are left out
     float ridge = 1e-3f;            // >= 0: Tikhonov term relative to the kernel's peak (1): keeps dense
                                     // samples well conditioned; 1e-6 lets a 0.25 m spacing ring by 60 degrees
-    int threads = 0;                // bake on this many threads; 0 = one per core
+    int threads = 0;                // solve and bake on this many threads; 0 = one per core
 };
 
 class SketchField {

@@ -51,7 +51,7 @@ double SketchPatches::kernel(glm::vec2 a, glm::vec2 b) const
 }
 
 bool SketchPatches::solve(std::span<const VectorSample> strokes, std::span<const BoundarySample> boundary,
-                          double kernelLengthM, double ridge, glm::vec2 domainMin, glm::vec2 domainMax)
+                          double kernelLengthM, double ridge, glm::vec2 domainMin, glm::vec2 domainMax, int threads)
 {
     m_strokes.assign(strokes.begin(), strokes.end());
     m_boundary.assign(boundary.begin(), boundary.end());
@@ -80,7 +80,7 @@ bool SketchPatches::solve(std::span<const VectorSample> strokes, std::span<const
 
     std::vector<std::string> errors(m_patches.size());
     // Each patch is its own solve, written only to its own entry: the same for any threads.
-    const ThreadTeam team;
+    const ThreadTeam team(threads);
     team.forEach(m_patches.size(), 1, [&](std::size_t k) { solvePatch(m_patches[k], std::max(ridge, 0.0), errors[k]); });
     for (const std::string& e : errors)
         if (!e.empty()) {

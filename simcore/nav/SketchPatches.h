@@ -22,9 +22,10 @@ class SketchPatches {
 public:
     // kernelLengthM > 0: the inverse multiquadric's scale; ridge >= 0: Tikhonov term.
     // [domainMin, domainMax] is where evaluate() will be asked (it may also be asked
-    // outside). False (see error()) when a patch's system cannot be factorised.
+    // outside). False (see error()) when a patch's system cannot be factorised. Patches
+    // are solved on `threads` threads (0 = one per core); the result is the same for any.
     bool solve(std::span<const VectorSample> strokes, std::span<const BoundarySample> boundary, double kernelLengthM,
-               double ridge, glm::vec2 domainMin, glm::vec2 domainMax);
+               double ridge, glm::vec2 domainMin, glm::vec2 domainMax, int threads = 0);
     // O(samples of the few patches round p).
     glm::vec2 evaluate(glm::vec2 p) const;
     std::size_t patchCount() const { return m_patches.size(); }

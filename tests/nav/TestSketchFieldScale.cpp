@@ -13,7 +13,6 @@
 
 #include <QTest>
 
-#include <omp.h>
 
 #include <algorithm>
 #include <cmath>
@@ -93,12 +92,11 @@ private slots:
         NavGrid grid;
         grid.build(scene, {1.0f, 0.3f});
         SketchField one, two;
-        const int threads = omp_get_max_threads();
-        omp_set_num_threads(1);
-        QVERIFY(one.build(scene, grid));
-        omp_set_num_threads(2);
-        QVERIFY(two.build(scene, grid));
-        omp_set_num_threads(threads);
+        SketchParams oneThread, twoThreads;
+        oneThread.threads = 1;
+        twoThreads.threads = 2;
+        QVERIFY(one.build(scene, grid, oneThread));
+        QVERIFY(two.build(scene, grid, twoThreads));
         QVERIFY(one.patchCount() > 1);
         for (int i = 0; i < grid.cellCount(); ++i) {
             const glm::vec2 a = one.direction(grid.cellAt(i)), b = two.direction(grid.cellAt(i));
