@@ -63,6 +63,7 @@ LaneNetwork::LaneNetwork(const Scene& scene)
         strip.dir = strip.lengthM > 0.0f ? (cw.to - cw.from) / strip.lengthM : glm::vec2(1.0f, 0.0f);
         strip.halfWidthM = 0.5f * cw.widthM;
         strip.light = crosswalkLight[c];
+        findRoadPart(strip);
         m_crosswalks.push_back(strip);
         m_crosswalkStopLine.push_back(strip.light >= 0 ? int(m_stopLineCount++) : -1);
         addCrosswalkStretches(int(c));
@@ -177,9 +178,40 @@ int LaneNetwork::crosswalkAt(glm::vec2 p, float marginM) const
     return -1;
 }
 
+bool LaneNetwork::onRoadPart(int c, glm::vec2 p) const
+{
+    const CrosswalkStrip& s = m_crosswalks[std::size_t(c)];
+    const glm::vec2 d = p - s.a;
+    const float u = glm::dot(d, s.dir), w = glm::dot(d, leftOf(s.dir));
+    if (u <= 0.0f || u >= s.lengthM || std::abs(w) >= s.halfWidthM)
+        return false;
+    return !s.overLane || carriagewayAt(p).lane >= 0;
+}
+
 bool LaneNetwork::forbiddenForPedestrian(glm::vec2 p, float radiusM) const
 {
     return carriagewayAt(p, radiusM).lane >= 0 && crosswalkAt(p) < 0;
+}
+
+void LaneNetwork::findRoadPart(CrosswalkStrip& strip) const
+{
+    // Sampled every 2 cm: a waiting walker stands its radius and more before roadU0.
+    constexpr float kSampleM = 0.02f;
+    const glm::vec2 side = leftOf(strip.dir);
+    float lo = std::numeric_limits<float>::infinity(), hi = -lo;
+    const int samples = int(std::ceil(strip.lengthM / kSampleM));
+    for (int k = 0; k <= samples; ++k) {
+        const float u = std::min(strip.lengthM, float(k) * kSampleM);
+        for (const float w : {-strip.halfWidthM, 0.0f, strip.halfWidthM})
+            if (carriagewayAt(strip.a + strip.dir * u + side * w).lane >= 0) {
+                lo = std::min(lo, u);
+                hi = std::max(hi, u);
+            }
+    }
+    // A sample's width out: the kerb lies between the last sample off the road and the first on it.
+    strip.overLane = lo <= hi;
+    strip.roadU0 = lo <= hi ? std::max(0.0f, lo - kSampleM) : 0.0f;
+    strip.roadU1 = lo <= hi ? std::min(strip.lengthM, hi + kSampleM) : strip.lengthM;
 }
 
 void LaneNetwork::addCrosswalkStretches(int c)

@@ -42,6 +42,13 @@ struct CrosswalkStrip {
     float lengthM = 0.0f;
     float halfWidthM = 0.0f;
     int light = -1;  // the traffic light whose stop line names this crosswalk; -1 = none
+    // The road part: m along the centre line from a, where the strip first and last lies
+    // on a lane's carriageway (over its whole width: the smallest and largest such u on
+    // either side line or the centre line, widened by 2 cm, the sampling step). Walkers
+    // wait before roadU0 / after roadU1, not at the strip's ends, which may lie on the
+    // pavement. [0, lengthM] over no lane.
+    float roadU0 = 0.0f, roadU1 = 0.0f;
+    bool overLane = false;  // some of the strip lies on a carriageway
 };
 
 // A vehicles' stop line on a lane, controlled by one traffic light.
@@ -94,6 +101,10 @@ public:
     const CrosswalkStrip& crosswalk(int c) const { return m_crosswalks[std::size_t(c)]; }
     // The crosswalk whose strip (grown by marginM on every side) holds p; -1 when none.
     int crosswalkAt(glm::vec2 p, float marginM = 0.0f) const;
+    // Whether p is on crosswalk c's road part: inside its strip and on a lane's
+    // carriageway (anywhere inside a strip that lies over no lane). What the red-light
+    // counter and the walkers' red-light constraint both test.
+    bool onRoadPart(int c, glm::vec2 p) const;
     // Every lane stretch a crosswalk covers, in (lane, s0) order.
     const std::vector<LaneStretch>& stretches() const { return m_stretches; }
     // Stretches on one lane, ordered by s0.
@@ -132,6 +143,7 @@ private:
     };
     std::size_t segmentAt(const LaneGeometry& lane, float s) const;
     void addCrosswalkStretches(int c);
+    void findRoadPart(CrosswalkStrip& strip) const;
 
     std::vector<LaneGeometry> m_lanes;
     std::vector<CrosswalkStrip> m_crosswalks;

@@ -15,6 +15,7 @@ namespace {
 bool inRange(float x, float lo, float hi) { return x >= lo && x <= hi; }
 constexpr float kApproachM = 3.0f;     // m before a crosswalk end where a walker counts as approaching
 constexpr float kStopBackM = 0.1f;     // m between a waiting walker's body and the end line
+constexpr float kClearSideM = 0.2f;    // m: a clearing walker's aim, inside the strip's side walls
 constexpr float kAlongCos = 0.5f;      // heading within 60 degrees of a crosswalk's axis: walking along it
 constexpr float kBusyMarginM = 0.5f;   // m around a crosswalk strip where a vehicle still blocks it
 constexpr std::uint64_t kStreamPedGo = 0x706564676full;
@@ -39,10 +40,14 @@ void TrafficSystem::collectPedestrians(std::span<const PedestrianView> peds)
             if (std::abs(w) <= s.halfWidthM + p.radiusM && u >= -reach && u <= s.lengthM + reach)
                 m_crosswalkPeds[c].push_back(k);
         }
+        int onCarriageway = -1;  // unknown until a lane's corridor holds it
         for (std::size_t l = 0; l < m_net.laneCount(); ++l) {
             const LaneProjection pr = m_net.project(int(l), p.position);
-            if (pr.distanceM <= m_maxRadius + p.radiusM + 0.5f)
-                m_lanePeds[l].push_back({k, pr.s, pr.lateralM});
+            if (pr.distanceM > m_maxRadius + p.radiusM + 0.5f)
+                continue;
+            if (onCarriageway < 0)
+                onCarriageway = m_net.carriagewayAt(p.position).lane >= 0 ? 1 : 0;
+            m_lanePeds[l].push_back({k, pr.s, pr.lateralM, onCarriageway != 0});
         }
     }
 }
@@ -64,22 +69,41 @@ PedestrianSignal TrafficSystem::pedestrianSignal(glm::vec2 p, glm::vec2 heading,
             s.light >= 0 ? lightPhaseAt(m_lights[std::size_t(s.light)], timeS()) : LightPhase::Green;
         const float headingLength = glm::length(heading);
         const float alignment = headingLength > 0.0f ? glm::dot(heading, s.dir) / headingLength : 0.0f;
-        // On a strip and walking along it; strips that meet at a corner may overlap, and
-        // a walker crossing one sideways there is not on that crossing.
-        if (u >= 0.0f && u <= s.lengthM && std::abs(alignment) >= kAlongCos)
-            return PedestrianSignal{int(c), true, false, phase, p, 0.0f};
         const float wClamped = std::clamp(w, -std::max(0.0f, s.halfWidthM - radiusM), std::max(0.0f, s.halfWidthM - radiusM));
+        // On the road part and walking along the strip; strips that meet at a corner may
+        // overlap, and a walker crossing one sideways there is not on that crossing. The
+        // walk from a strip's end over the pavement to the kerb is no crossing yet: the
+        // kerb line is where it waits (walkers stepped onto the lane from there on red).
+        const bool onRoad = m_net.onRoadPart(int(c), p);
+        if (onRoad && std::abs(alignment) >= kAlongCos) {
+            PedestrianSignal on{int(c), true, false, phase, p, 0.0f};
+            if (phase == LightPhase::Red) {
+                // Caught on the road by the red: off it by the shorter way, never standing in a lane.
+                const bool back = u - s.roadU0 <= s.roadU1 - u;
+                const float clearU = back ? s.roadU0 - radiusM - kStopBackM : s.roadU1 + radiusM + kStopBackM;
+                // Aimed a little inside the strip's sides: along a side, the kerb's corner
+                // held a walker on the road through a whole red.
+                const float wInside = std::max(0.0f, s.halfWidthM - radiusM - kClearSideM);
+                on.clearing = true;
+                on.clearPoint = s.a + s.dir * clearU + side * std::clamp(w, -wInside, wInside);
+            }
+            return on;
+        }
         const float along = alignment;
         float dist = kFreeRoad;
         glm::vec2 in{0.0f}, at{0.0f};
-        if (u < 0.0f && u >= -(kApproachM + radiusM) && along >= kAlongCos) {
-            dist = -u;
+        // Approaching: from kApproachM before the strip's end (or before the kerb line, where
+        // the strip's end lies on the road) up to the kerb line.
+        const float middle = 0.5f * (s.roadU0 + s.roadU1);
+        if (!onRoad && u < middle && u >= std::min(0.0f, s.roadU0) - (kApproachM + radiusM) && along >= kAlongCos) {
+            dist = std::max(0.0f, s.roadU0 - u);
             in = s.dir;
-            at = s.a + side * wClamped;
-        } else if (u > s.lengthM && u <= s.lengthM + kApproachM + radiusM && along <= -kAlongCos) {
-            dist = u - s.lengthM;
+            at = s.a + s.dir * s.roadU0 + side * wClamped;
+        } else if (!onRoad && u > middle && u <= std::max(s.lengthM, s.roadU1) + kApproachM + radiusM &&
+                   along <= -kAlongCos) {
+            dist = std::max(0.0f, u - s.roadU1);
             in = -s.dir;
-            at = s.b + side * wClamped;
+            at = s.a + s.dir * s.roadU1 + side * wClamped;
         }
         if (dist < bestDist) {
             bestDist = dist;
@@ -111,9 +135,17 @@ PedestrianSignal TrafficSystem::pedestrianSignal(glm::vec2 p, glm::vec2 heading,
         best.mustStop = sinceGreen < double(delay);
         break;
     }
-    case LightPhase::Yellow:
-        best.mustStop = canStopWithin(speed, best.distanceToLineM - radiusM - kStopBackM, m_opt.pedestrianDecel);
+    case LightPhase::Yellow: {
+        // Stop when it still can, and when it would reach the kerb line only in the yellow's
+        // last step or later (it stepped onto the road as the red began).
+        const double cycle = double(light.greenS) + double(light.yellowS) + double(light.redS);
+        const double shifted = timeS() + double(light.offsetS);
+        const double yellowLeftS = double(light.greenS) + double(light.yellowS) - (shifted - std::floor(shifted / cycle) * cycle);
+        const bool lateForYellow = double(best.distanceToLineM) >= double(speed) * (yellowLeftS - double(m_dt));
+        best.mustStop =
+            lateForYellow || canStopWithin(speed, best.distanceToLineM - radiusM - kStopBackM, m_opt.pedestrianDecel);
         break;
+    }
     case LightPhase::Red:
         best.mustStop = true;
         break;
@@ -158,30 +190,25 @@ void TrafficSystem::markBusyCrosswalks()
 void TrafficSystem::observePedestrians(std::span<const PedestrianView> before, std::span<const PedestrianView> after)
 {
     const std::size_t n = std::min(before.size(), after.size());
-    const double t1 = timeS(), t0 = t1 - double(m_dt);
+    const double t1 = timeS();
     for (std::size_t i = 0; i < n; ++i) {
-        // Stepping onto a controlled crosswalk across one of its end lines.
         for (std::size_t c = 0; c < m_net.crosswalkCount(); ++c) {
             const int k = m_net.crosswalkStopLineIndex(int(c));
             if (k < 0)
                 continue;
+            // Onto the road part on red (the World's stats count the same way).
             const CrosswalkStrip& s = m_net.crosswalk(int(c));
+            if (m_net.onRoadPart(int(c), after[i].position) && !m_net.onRoadPart(int(c), before[i].position) &&
+                lightPhaseAt(m_lights[std::size_t(s.light)], t1) == LightPhase::Red)
+                ++m_counters.pedestrianRedLightViolations;
+            // Throughput: stepping onto the strip across one of its end lines.
             const float ub = glm::dot(before[i].position - s.a, s.dir);
             const float ua = glm::dot(after[i].position - s.a, s.dir);
             const float wa = glm::dot(after[i].position - s.a, leftOf(s.dir));
             if (std::abs(wa) > s.halfWidthM)
                 continue;
-            float frac = -1.0f;
-            if (ub < 0.0f && ua >= 0.0f)
-                frac = -ub / (ua - ub);
-            else if (ub > s.lengthM && ua <= s.lengthM)
-                frac = (ub - s.lengthM) / (ub - ua);
-            if (frac < 0.0f)
-                continue;
-            const double tc = t0 + double(m_dt) * double(frac);
-            if (lightPhaseAt(m_lights[std::size_t(s.light)], tc) == LightPhase::Red)
-                ++m_counters.pedestrianRedLightViolations;
-            ++m_throughput[std::size_t(k)].crossings;
+            if ((ub < 0.0f && ua >= 0.0f) || (ub > s.lengthM && ua <= s.lengthM))
+                ++m_throughput[std::size_t(k)].crossings;
         }
     }
     countPedestrianContacts(after.subspan(0, n));

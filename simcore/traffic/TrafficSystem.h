@@ -57,7 +57,7 @@ struct TrafficOptions {
 
 struct TrafficCounters {
     std::uint64_t vehicleRedLightViolations = 0;    // a vehicle's front crossed a stop line on red
-    std::uint64_t pedestrianRedLightViolations = 0; // a pedestrian stepped onto a crosswalk end on red
+    std::uint64_t pedestrianRedLightViolations = 0; // a pedestrian stepped onto a crosswalk's road part on red (LaneNetwork::onRoadPart, light at the step's end)
     std::uint64_t carPedestrianCollisions = 0;      // vehicle-pedestrian pairs closer than the sum of radii, summed over steps
     std::uint64_t vehicleCollisions = 0;            // vehicle pairs closer than the sum of radii, summed over steps
     std::uint64_t nonFiniteValues = 0;              // NaN/inf vehicle positions or speeds seen
@@ -76,9 +76,11 @@ struct StopLineThroughput {
     double perGreen() const { return greenPhases ? double(crossings) / double(greenPhases) : 0.0; }
 };
 
-// The answer to a pedestrian at p: whether it is about to step onto a controlled
-// crosswalk, must wait, and where (a point before the crosswalk end, at its own side
-// offset and a body radius back from the line).
+// The answer to a pedestrian at p: whether it is about to step onto the road part of a
+// crosswalk (CrosswalkStrip::roadU0 .. roadU1: the kerb, not the strip's end, which may
+// lie on the pavement), must wait, and where (a point before that kerb line, at its own
+// side offset and a body radius back from the line). On the road part when the light is
+// red it clears the road: `clearing`, to the nearer kerb's clearPoint.
 struct PedestrianSignal {
     int crosswalk = -1;      // the crosswalk it is approaching or on; -1 = none
     bool onCrosswalk = false;// already on the strip: keep going, never stop there
@@ -88,6 +90,8 @@ struct PedestrianSignal {
     float distanceToLineM = 0.0f;  // from its centre to the crosswalk end line
     bool vehicleCrossing = false;  // a vehicle is on the strip or too close to stop before it
     glm::vec2 inward{0.0f};        // unit: the direction onto the crosswalk at its end line
+    bool clearing = false;         // on the road part on red: leave it for clearPoint
+    glm::vec2 clearPoint{0.0f};    // just off the road past the nearer kerb line
 };
 
 // The next stop line ahead of a vehicle's front on its lane (within the lookahead).
@@ -113,8 +117,8 @@ public:
     // state at the start of the step (vehicles yield to them); may be empty.
     void step(std::span<const PedestrianView> pedestrians);
     // Counts what pedestrians did during the step that just ended: entries onto a
-    // crosswalk on red, crosswalk throughput, and contacts with the vehicles' current
-    // positions. before[i] and after[i] are the same pedestrian; sizes must match.
+    // crosswalk's road part on red, crosswalk throughput (entries over a strip's end), and
+    // contacts with the vehicles' current positions. before[i] and after[i] are the same pedestrian; sizes must match.
     void observePedestrians(std::span<const PedestrianView> before, std::span<const PedestrianView> after);
     // Whether a pedestrian at p must stop before a crosswalk at the current time: on red,
     // on yellow when it can still stop, on green until its own reaction delay is over,
@@ -185,12 +189,14 @@ private:
     struct LanePed {  // a pedestrian inside a lane's corridor
         std::uint32_t ped;
         float s, lateralM;
+        bool onCarriageway;  // its centre on some lane's carriageway (not at the kerb)
     };
 
     void sortByLane();
     void collectPedestrians(std::span<const PedestrianView> peds);
     NextState advanceVehicle(std::size_t i, std::span<const PedestrianView> peds) const;
     float stopLineLimit(std::size_t i, const FollowingParams& q, NextState& next) const;
+    float holdPastLine(std::size_t i) const;  // 0 for a vehicle standing past its line on red, else kFreeRoad
     float brainAcceleration(std::size_t i, const FollowingParams& q) const;  // TrafficBrain.cpp
     float yieldLimit(std::size_t i, const FollowingParams& p, std::span<const PedestrianView> peds) const;
     // approachingCount: also walkers about to step onto the strip, not only those on it.

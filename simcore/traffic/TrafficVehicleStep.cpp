@@ -15,6 +15,7 @@ constexpr float kStandingSpeed = 0.1f;  // m/s: below this a vehicle counts as s
 constexpr float kGoAccel = 0.2f;        // m/s^2: a standing driver moves off only for more than this
 constexpr float kYieldBeforeM = 1.0f;   // m: where a yielding vehicle waits before a crosswalk strip
 constexpr float kPedBufferM = 0.5f;     // m: kept clear around a pedestrian, beyond both radii
+constexpr float kLineSlackM = 0.05f;    // m: short of the stop line where a late stop must end
 }  // namespace
 
 TrafficSystem::NextState TrafficSystem::advanceVehicle(std::size_t i, std::span<const PedestrianView> peds) const
@@ -77,7 +78,7 @@ float TrafficSystem::stopLineLimit(std::size_t i, const FollowingParams& q, Next
     if (!nearest) {
         next.decision = kNone;
         next.decisionLine = -1;
-        return kFreeRoad;
+        return holdPastLine(i);
     }
     if (next.decisionLine != nearest->index) {
         next.decision = kNone;
@@ -88,23 +89,53 @@ float TrafficSystem::stopLineLimit(std::size_t i, const FollowingParams& q, Next
     switch (lightPhaseAt(m_lights[std::size_t(nearest->light)], timeS())) {
     case LightPhase::Green:
         next.decision = kNone;
-        return kFreeRoad;
+        return holdPastLine(i);
     case LightPhase::Yellow:
         // The dilemma zone: stop only when that needs no more than the yellow deceleration.
         if (next.decision == kNone)
             next.decision = canStopWithin(v, toWait, q.yellowDecel) ? kStop : kGo;
         break;
     case LightPhase::Red:
-        // A driver committed on yellow keeps going unless full braking still stops it.
-        if (next.decision != kGo || canStopWithin(v, toWait, q.maxDecel))
+        // A driver committed on yellow keeps going unless full braking still stops it before
+        // the line itself (a car slowed by its brain crept over the line on red when only
+        // its waiting point, past which it already was, was checked).
+        if (next.decision != kGo || canStopWithin(v, toWait, q.maxDecel) ||
+            canStopWithin(v, dist - kLineSlackM, q.maxDecel))
             next.decision = kStop;
         break;
     }
     if (next.decision != kStop)
-        return kFreeRoad;
+        return holdPastLine(i);
     // The waiting point acts as a standing leader: the model halts minGap behind a
     // leader, so the obstacle is placed minGap beyond the waiting point.
-    return followingAcceleration(q, v, toWait + q.minGapM, 0.0f);
+    const float a = followingAcceleration(q, v, toWait + q.minGapM, 0.0f);
+    // The model brakes softly for a small gap at a low speed: where that would carry the
+    // front over the line, brake as hard as it takes (up to maxDecel) to stop before it.
+    const float need = v * v / (2.0f * std::max(dist - kLineSlackM, 1e-3f));
+    return need > -a && (toWait <= 0.0f || need >= q.comfortDecel) ? std::max(-need, -q.maxDecel) : a;
+}
+
+float TrafficSystem::holdPastLine(std::size_t i) const
+{
+    // A vehicle standing past its stop line (it stopped late, or yielded there) on red
+    // stays until green: a car that stopped 3 cm past its line on the car brain then
+    // drove over the crosswalk on red. Only before the first crosswalk after the line:
+    // beyond it, in a junction, it clears the way.
+    if (m_speed[i] >= kStandingSpeed)
+        return kFreeRoad;
+    const int lane = m_lane[i];
+    const float front = m_s[i] + m_radius[i];
+    float previousS0 = -kFreeRoad;
+    for (const LaneStretch& st : m_net.stretchesOn(lane)) {
+        const bool first = st.boxEntryS < st.s0 && previousS0 <= st.boxEntryS;
+        previousS0 = st.s0;
+        if (!first || front < st.boxEntryS || front >= st.s0)
+            continue;
+        for (const LaneStopLine& line : m_net.stopLinesOn(lane))
+            if (line.s == st.boxEntryS && lightPhaseAt(m_lights[std::size_t(line.light)], timeS()) == LightPhase::Red)
+                return 0.0f;
+    }
+    return kFreeRoad;
 }
 
 float TrafficSystem::yieldLimit(std::size_t i, const FollowingParams& q, std::span<const PedestrianView> peds) const
@@ -135,7 +166,10 @@ float TrafficSystem::yieldLimit(std::size_t i, const FollowingParams& q, std::sp
     // Anyone inside the vehicle's own corridor ahead, on a crosswalk or not.
     for (const LanePed& lp : m_lanePeds[std::size_t(lane)]) {
         const PedestrianView& p = peds[lp.ped];
-        if (std::abs(lp.lateralM) > r + p.radiusM + kPedBufferM)
+        // The buffer only on the carriageway: a walker waiting at the kerb, its body clear
+        // of the vehicle's, is passed (with the buffer, a car in a junction waited for a
+        // walker at the kerb who waited for the car).
+        if (std::abs(lp.lateralM) > r + p.radiusM + (lp.onCarriageway ? kPedBufferM : 0.0f))
             continue;
         const float d = aheadM(lane, s, lp.s);
         if (d < 0.0f || d > m_opt.lookaheadM)
@@ -154,8 +188,9 @@ bool TrafficSystem::crosswalkConflict(int crosswalk, float uLane, float corridor
     for (std::uint32_t k : m_crosswalkPeds[std::size_t(crosswalk)]) {
         const PedestrianView& p = peds[k];
         const float u = glm::dot(p.position - strip.a, strip.dir);
-        const bool onStrip = u >= 0.0f && u <= strip.lengthM;
-        if (!onStrip && !walkGreen)
+        // On the road part; one waiting at the kerb, even a little past its stop point, is not.
+        const bool onRoad = m_net.onRoadPart(crosswalk, p.position);
+        if (!onRoad && !walkGreen)
             continue;  // waiting at the kerb for its own green
         const float apart = std::abs(u - uLane) - (corridorM + p.radiusM);
         if (apart <= 0.0f)

@@ -8,6 +8,7 @@
 #include "simcore/world/Rng.h"
 #include "simcore/world/detail/StepGeometry.h"
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -456,26 +457,40 @@ void World::countStep(std::uint64_t nonFinite)
             const float r = m_radius[i];
             if (m_types[m_info[i].typeIndex].kind == AgentKind::Flier)
                 continue;
+            // In an obstacle: the body reaches more than the tolerance into a circle or a box
+            // (boxes are walls too, but an agent inside one crosses none of them).
             m_obstacleGrid.forEachNear(p, r, [&](std::uint32_t k) {
-                if (k < m_circles.size() && glm::distance(p, xz(m_circles[k].centre)) < m_circles[k].radius + r - kOverlapToleranceM)
+                if (k < m_circles.size()) {
+                    if (glm::distance(p, xz(m_circles[k].centre)) < m_circles[k].radius + r - kOverlapToleranceM)
+                        ++inObstacle;
+                    return;
+                }
+                const BoxObstacle& b = m_boxes[k - m_circles.size()];
+                const glm::vec2 d = p - xz(b.centre), ax(b.axis.x, b.axis.z), az(-b.axis.z, b.axis.x);
+                const glm::vec2 outside = glm::max(glm::abs(glm::vec2(glm::dot(d, ax), glm::dot(d, az))) - b.halfSize, 0.0f);
+                if (glm::length(outside) < r - kOverlapToleranceM)
                     ++inObstacle;
             });
-            // A pedestrian stepping onto a crosswalk while its light is red violates it.
+            // A pedestrian (a hero too: it goes where its keyframes say) steps onto the road on
+            // red: its centre is on a controlled crosswalk's road part (LaneNetwork::onRoadPart:
+            // inside the strip and on a lane's carriageway) at the end of this step and was not
+            // at the end of the last. Over no lanes the whole strip is road.
             std::uint8_t on = 0;
             int light = -1;
-            for (const CrosswalkBox& c : m_crosswalks) {
-                const glm::vec2 ab = c.b - c.a;
-                const float len = glm::length(ab);
-                const float along = glm::dot(p - c.a, ab) / len;
-                const float across = std::fabs(cross(ab, p - c.a)) / len;
-                if (along > 0.0f && along < len && across < c.halfWidth) {
-                    on = 1;
-                    light = c.light;
+            if (m_types[m_info[i].typeIndex].kind == AgentKind::Pedestrian)
+                for (std::size_t k = 0; k < m_crosswalks.size(); ++k) {
+                    const CrosswalkBox& c = m_crosswalks[k];
+                    const glm::vec2 ab = c.b - c.a;
+                    const float len = glm::length(ab);
+                    const float along = glm::dot(p - c.a, ab) / len;
+                    const float across = std::fabs(cross(ab, p - c.a)) / len;
+                    const bool inStrip = along > 0.0f && along < len && across < c.halfWidth;
+                    if (inStrip && (!m_traffic.system || m_traffic.system->lanes().onRoadPart(int(k), p))) {
+                        on = 1;
+                        light = c.light;
+                    }
                 }
-            }
-            if (on && !m_onCrosswalk[i] && light >= 0 && m_types[m_info[i].typeIndex].kind == AgentKind::Pedestrian &&
-                !m_traffic.isDriven(i) &&
-                lightState(std::size_t(light)) == 2)
+            if (on && !m_onCrosswalk[i] && light >= 0 && lightState(std::size_t(light)) == 2)
                 ++red;
             m_onCrosswalk[i] = on;
         }

@@ -20,7 +20,7 @@ using namespace detail;
 
 namespace {
 constexpr float kHeadingLookaheadM = 2.0f;  // m along its path: where a walker "wants to go"
-constexpr float kEndLineMarginM = 1e-3f;    // m: how far behind a crosswalk's end line a held walker stays
+constexpr float kEndLineMarginM = 1e-3f;    // m: how far behind a crosswalk's kerb line a held walker stays
 
 glm::vec3 onGround(glm::vec2 p, float y) { return {p.x, y, p.y}; }
 }  // namespace
@@ -171,6 +171,10 @@ glm::vec3 World::obeySignal(std::size_t i, const SteeringAgent& self, glm::vec3 
     PedestrianSignal& sig = m_traffic.signal[i];
     sig = m_traffic.system->pedestrianSignal(xz(m_pos[i]), wantedHeading(i), glm::length(xz(m_vel[i])),
                                              m_radius[i], m_info[i].id);
+    if (sig.clearing) {
+        // Red caught it on the road: to the nearer kerb at full speed, whatever its path says.
+        return seek(self, onGround(sig.clearPoint, self.position.y));
+    }
     if (!sig.mustStop || sig.onCrosswalk || sig.crosswalk < 0)
         return force;
     // Stop at the stop point instead of following the path onto the crosswalk.
@@ -249,10 +253,10 @@ void World::trafficAfterCollide()
 
 void World::keepOffRedCrosswalks(std::size_t i, glm::vec3& p) const
 {
-    // A hard constraint like the walls: whoever is off a crosswalk stays off it while its
-    // light is red, however the crowd or a hero pushes (the signal answer already stops
-    // those who walk up to it; this catches a walker shoved over the end line, or one that
-    // just left the far end and is pushed back).
+    // A hard constraint like the walls: whoever is off a crosswalk's road part stays off it
+    // while its light is red, however the crowd or a hero pushes (the signal answer already
+    // stops those who walk up to the kerb; this catches a walker shoved over the kerb line,
+    // or one that just left the road and is pushed back).
     if (!m_traffic.system)
         return;
     const LaneNetwork& net = m_traffic.system->lanes();
@@ -263,16 +267,12 @@ void World::keepOffRedCrosswalks(std::size_t i, glm::vec3& p) const
         if (s.light < 0 || (lightPhaseAt(m_lights[std::size_t(s.light)], t0) != LightPhase::Red &&
                             lightPhaseAt(m_lights[std::size_t(s.light)], t1) != LightPhase::Red))
             continue;
-        const glm::vec2 side(-s.dir.y, s.dir.x);
-        const glm::vec2 from = xz(m_pos[i]) - s.a, to = glm::vec2(p.x, p.z) - s.a;
-        const float ub = glm::dot(from, s.dir), ua = glm::dot(to, s.dir);
-        if (std::abs(glm::dot(to, side)) > s.halfWidthM || ua < 0.0f || ua > s.lengthM)
+        if (!net.onRoadPart(int(c), xz(p)) || net.onRoadPart(int(c), xz(m_pos[i])))
             continue;
-        float back = 0.0f;
-        if (ub < 0.0f)
-            back = ua + kEndLineMarginM;
-        else if (ub > s.lengthM)
-            back = ua - s.lengthM - kEndLineMarginM;
+        // Back over the kerb line it came from (roadU0 and roadU1 lie just off the carriageway).
+        const float ub = glm::dot(xz(m_pos[i]) - s.a, s.dir), ua = glm::dot(glm::vec2(p.x, p.z) - s.a, s.dir);
+        const float back = ub < 0.5f * (s.roadU0 + s.roadU1) ? std::max(0.0f, ua - s.roadU0 + kEndLineMarginM)
+                                                              : std::min(0.0f, ua - s.roadU1 - kEndLineMarginM);
         p.x -= s.dir.x * back;
         p.z -= s.dir.y * back;
     }

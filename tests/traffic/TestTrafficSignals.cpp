@@ -151,24 +151,28 @@ private slots:
         QCOMPARE(scene.crosswalks[std::size_t(sig.crosswalk)].name, std::string("north"));
         QCOMPARE(sig.phase, LightPhase::Green);
         QVERIFY2(!sig.mustStop, "green, long after any reaction delay: walk");
-        QVERIFY(std::abs(sig.distanceToLineM - 1.5f) < 1e-4f);
+        // Measured to the kerb line (x = -3.5, the southbound lane's edge; 2 cm nearer for
+        // the road part's sampling), not to the strip's end at x = -5.5 on the pavement.
+        QVERIFY(std::abs(sig.distanceToLineM - 3.48f) < 1e-3f);
 
         runUntil(t, 21.0);
         sig = t.pedestrianSignal(kerb, east, 0.0f, 0.3f, 1);
         QCOMPARE(sig.phase, LightPhase::Yellow);
         QVERIFY2(sig.mustStop, "yellow: a standing walker does not start");
-        sig = t.pedestrianSignal({-5.8f, -6.2f}, east, 1.4f, 0.3f, 1);
+        // 0.3 m before the kerb line (the strip's end lies 2 m further back on the pavement).
+        sig = t.pedestrianSignal({-3.8f, -6.2f}, east, 1.4f, 0.3f, 1);
         QVERIFY2(!sig.mustStop, "yellow: a walker at the kerb edge at full pace goes on");
 
         runUntil(t, 30.0);
         sig = t.pedestrianSignal(kerb, east, 1.3f, 0.3f, 1);
         QCOMPARE(sig.phase, LightPhase::Red);
         QVERIFY(sig.mustStop);
-        QVERIFY2(glm::distance(sig.stopPoint, glm::vec2(-5.9f, -6.2f)) < 1e-4f,
+        // The line is the kerb (x = -3.5, sampled 2 cm out), not the strip's end.
+        QVERIFY2(glm::distance(sig.stopPoint, glm::vec2(-3.92f, -6.2f)) < 1e-3f,
                  "waits a body radius and 0.1 m before the line, on its own side offset");
         sig = t.pedestrianSignal({7.5f, -6.2f}, -east, 1.3f, 0.3f, 2);  // from the other end
         QVERIFY(sig.mustStop);
-        QVERIFY(glm::distance(sig.stopPoint, glm::vec2(5.9f, -6.2f)) < 1e-4f);
+        QVERIFY(glm::distance(sig.stopPoint, glm::vec2(3.92f, -6.2f)) < 1e-3f);
         // Pushed about by the crowd while it waits: nudged sideways or back, never over the line.
         {
             std::mt19937 gen(2);
@@ -181,7 +185,7 @@ private slots:
                 // The crowd leans toward the road; the walker keeps near its own spot sideways.
                 const glm::vec2 to = p + glm::vec2(push(gen) + 0.05f, push(gen) - 0.2f * (p.y - waiting.stopPoint.y));
                 const glm::vec2 held = holdBehindStopLine(here, to);
-                QVERIFY2(held.x <= -5.9f + 1e-5f, "never past the stop point");
+                QVERIFY2(held.x <= waiting.stopPoint.x + 1e-5f, "never past the stop point");
                 QVERIFY(held.y == to.y);  // sideways part of the push kept
                 sideways = std::max(sideways, std::abs(held.y - p.y));
                 p = held;

@@ -1,0 +1,298 @@
+// Every counter of `throng-cli run --stats` counts a violation that really happens, and
+// counts it as often as the trajectories CSV shows it, recomputed here from the rows and
+// the scene's own geometry and light timing. A user found them all at 0 while a car drove
+// over a crosswalk on red and walkers stepped onto the lane on red; box obstacles were
+// never counted at all. Where the simulation prevents a violation, the scene makes it
+// happen by construction (an agent placed in an obstacle by a wall, agents inside boxes, a
+// keyframed hero, a car too fast to stop, lanes that cross without a signal), and the real
+// World counts it.
+#include "CliRunner.h"
+#include "TestRegistry.h"
+#include "TrajectoryTable.h"
+
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+using namespace throng::test;
+
+namespace {
+
+struct Run {
+    TrajectoryTable table;
+    QJsonObject stats;
+};
+
+Run runScene(const QTemporaryDir& tmp, const char* yaml)
+{
+    const QString scene = writeText(tmp.filePath("scene.yaml"), yaml);
+    const QString csv = tmp.filePath("t.csv"), stats = tmp.filePath("s.json");
+    const auto r = runCli({"run", scene.toStdString(), "--threads", "2", "--trajectories", csv.toStdString(), "--stats",
+                           stats.toStdString(), "--quiet"});
+    if (r.status != 0)
+        qWarning("%s", r.err.c_str());
+    return {TrajectoryTable::read(csv), readStats(stats)};
+}
+
+// A ground box as the scene writes it: centre, full size along its own x and z, angle
+// counter-clockwise seen from above (its x axis is (cos a, -sin a) in x, z).
+struct Box {
+    double cx, cz, w, d, angleDeg;
+    std::array<std::array<double, 2>, 4> corners() const
+    {
+        const double a = angleDeg * M_PI / 180.0;
+        const double ux = std::cos(a), uz = -std::sin(a), vx = std::sin(a), vz = std::cos(a);
+        std::array<std::array<double, 2>, 4> c;
+        const double sx[4] = {-1, 1, 1, -1}, sz[4] = {-1, -1, 1, 1};
+        for (int k = 0; k < 4; ++k)
+            c[k] = {cx + ux * sx[k] * w / 2 + vx * sz[k] * d / 2, cz + uz * sx[k] * w / 2 + vz * sz[k] * d / 2};
+        return c;
+    }
+    // Distance from a point to the box (0 inside).
+    double distance(double x, double z) const
+    {
+        const double a = angleDeg * M_PI / 180.0;
+        const double px = x - cx, pz = z - cz;
+        const double u = px * std::cos(a) - pz * std::sin(a), v = px * std::sin(a) + pz * std::cos(a);
+        const double ou = std::max(std::abs(u) - w / 2, 0.0), ov = std::max(std::abs(v) - d / 2, 0.0);
+        return std::hypot(ou, ov);
+    }
+};
+
+constexpr double kToleranceM = 0.01;  // the stats' overlap and obstacle tolerance (docs)
+
+// Walls, circles and boxes. Walker 1 stands in a circle obstacle that overlaps a wall:
+// pushed out of the circle, it lands on the wall's other side. Walkers 2 and 3 stand
+// inside two boxes (one turned 30 degrees), whose sides hold them in for good. Hero 9
+// walks through a circle and a box turned 45 degrees.
+const char* kWallScene = R"(throng: 1
+settings: {fps: 20, duration: 6, seed: 5, bounds: {min: [-30, -30], max: [30, 30]}}
+agent_types:
+  - {name: walker, kind: pedestrian, radius: 0.3, max_speed: 1.4, max_force: 6}
+walls:
+  - {points: [[0, -5], [0, 5]]}
+obstacles:
+  - {shape: circle, center: [-1, 0], radius: 1}
+  - {shape: box, center: [10, 0], size: [3, 2]}
+  - {shape: box, center: [10, 10], size: [4, 2], angle: 30}
+  - {shape: circle, center: [-10, 10], radius: 1.5}
+  - {shape: box, center: [-10, -10], size: [2, 2], angle: 45}
+agents:
+  - {id: 1, type: walker, position: [-0.35, 0]}
+  - {id: 2, type: walker, position: [10.2, 0.1]}
+  - {id: 3, type: walker, position: [10.5, 10.2]}
+heroes:
+  - id: 9
+    name: cutter
+    type: walker
+    keyframes:
+      - {time: 0, position: [-15, 10]}
+      - {time: 3, position: [-5, 10]}
+      - {time: 6, position: [-10, -15]}
+)";
+
+// A mid-block crossing over a two-lane road running north-south (carriageway |x| <= 3.5),
+// the crosswalk strip from x = -6 to 6 over z in [-2, 2]. Walk light: green 0-10, yellow
+// 10-12, red 12-30 of each 30 s. Cars' light: red until 17, then green 10, yellow 3, red 17.
+// Hero 50 crosses on red (13-23 s), back on green (31-39 s) and again on red (45-55 s).
+// Car 60 starts 6 m (front to line) before its stop line at 13.9 m/s while its light is
+// red: braking at 8 m/s^2 it needs 12 m, so it runs the red.
+const char* kRedScene = R"(throng: 1
+settings: {fps: 25, duration: 60, seed: 9, bounds: {min: [-40, -70], max: [40, 70]}}
+agent_types:
+  - {name: walker, kind: pedestrian, radius: 0.3, max_speed: 1.4, max_force: 6}
+  - {name: car, kind: vehicle, radius: 1.1, max_speed: 13.9, max_force: 5000, mass: 1200}
+lanes:
+  - {name: north, points: [[1.75, 60], [1.75, -60]], width: 3.5, loop: false}
+  - {name: south, points: [[-1.75, -60], [-1.75, 60]], width: 3.5, loop: false}
+crosswalks:
+  - {name: mid, from: [-6, 0], to: [6, 0], width: 4}
+traffic_lights:
+  - {name: cars, green: 10, yellow: 3, red: 17, offset: 13, stop_lines: [{lane: north, at: 55}, {lane: south, at: 55}]}
+  - {name: walk, green: 10, yellow: 2, red: 18, stop_lines: [{crosswalk: mid}]}
+vehicles:
+  - {id: 60, type: car, lane: north, at: 47.9, speed: 13.9}
+heroes:
+  - id: 50
+    name: jaywalker
+    type: walker
+    keyframes:
+      - {time: 0, position: [-9, 0.5]}
+      - {time: 13, position: [-9, 0.5]}
+      - {time: 23, position: [9, 0.5]}
+      - {time: 31, position: [9, 0.5]}
+      - {time: 39, position: [-9, 0.5]}
+      - {time: 45, position: [-9, 0.5]}
+      - {time: 55, position: [9, 0.5]}
+      - {time: 60, position: [9, 0.5]}
+)";
+
+// Two lanes crossing at the origin with no signal: cars 101 (eastbound) and 102
+// (northbound) reach the crossing together and drive through each other. Hero 201 steps
+// onto the eastbound lane about 6 m in front of car 101 at 13 m/s (it needs 11 m to stop),
+// stands there 3 s, and leaves; the car cannot stop and drives through it. Heroes 202 and 203 walk through each other.
+const char* kContactScene = R"(throng: 1
+settings: {fps: 24, duration: 12, seed: 2, bounds: {min: [-70, -50], max: [70, 50]}}
+agent_types:
+  - {name: walker, kind: pedestrian, radius: 0.3, max_speed: 1.4, max_force: 6}
+  - {name: car, kind: vehicle, radius: 1.1, max_speed: 13.9, max_force: 5000, mass: 1200}
+lanes:
+  - {name: ew, points: [[-60, 0], [60, 0]], width: 3.5, loop: false}
+  - {name: ns, points: [[0, 40], [0, -40]], width: 3.5, loop: false}
+vehicles:
+  - {id: 101, type: car, lane: ew, at: 30, speed: 10}
+  - {id: 102, type: car, lane: ns, at: 10, speed: 10}
+heroes:
+  - id: 201
+    name: stepper
+    type: walker
+    keyframes:
+      - {time: 0, position: [35, -4]}
+      - {time: 4.6, position: [35, -4]}
+      - {time: 5, position: [35, 0]}
+      - {time: 8, position: [35, 0]}
+      - {time: 9, position: [35, -4]}
+  - id: 202
+    name: left
+    type: walker
+    keyframes: [{time: 0, position: [-10, 10]}, {time: 6, position: [10, 10]}]
+  - id: 203
+    name: right
+    type: walker
+    keyframes: [{time: 0, position: [10, 10.2]}, {time: 6, position: [-10, 10.2]}]
+)";
+
+}  // namespace
+
+class TestCliCounters : public QObject {
+    Q_OBJECT
+private slots:
+    void wallAndObstaclePenetrations()
+    {
+        QTemporaryDir tmp;
+        const Run run = runScene(tmp, kWallScene);
+        QVERIFY(run.table.frames == 120);
+        // Wall segments as walkers meet them: the wall, and each box's four sides.
+        std::vector<std::array<double, 4>> walls = {{0, -5, 0, 5}};
+        const std::vector<Box> boxes = {{10, 0, 3, 2, 0}, {10, 10, 4, 2, 30}, {-10, -10, 2, 2, 45}};
+        for (const Box& b : boxes) {
+            const auto c = b.corners();
+            for (int k = 0; k < 4; ++k)
+                walls.push_back({c[k][0], c[k][1], c[(k + 1) % 4][0], c[(k + 1) % 4][1]});
+        }
+        const std::vector<std::array<double, 3>> circles = {{-1, 0, 1}, {-10, 10, 1.5}};
+        std::uint64_t crossings = 0, inObstacle = 0, inBox = 0;
+        for (const auto& [id, rows] : run.table.agents) {
+            for (auto it = std::next(rows.begin()); it != rows.end(); ++it) {
+                const TrajectoryRow& a = std::prev(it)->second;
+                const TrajectoryRow& b = it->second;
+                if (id != 9)  // the hero goes where its keyframes say: no wall holds it
+                    for (const auto& w : walls)
+                        crossings += segmentsCrossD(a.x, a.z, b.x, b.z, w[0], w[1], w[2], w[3]);
+                for (const auto& c : circles)
+                    inObstacle += std::hypot(b.x - c[0], b.z - c[1]) < c[2] + 0.3 - kToleranceM;
+                for (const Box& box : boxes) {
+                    const bool in = box.distance(b.x, b.z) < 0.3 - kToleranceM;
+                    inObstacle += in;
+                    inBox += in;
+                }
+            }
+        }
+        const QJsonObject& s = run.stats;
+        qInfo("wall crossings %llu (stats %d); obstacle agent-steps %llu, %llu in boxes (stats %d)",
+              (unsigned long long)crossings, s["wall_penetrations"].toInt(), (unsigned long long)inObstacle,
+              (unsigned long long)inBox, s["obstacle_penetrations"].toInt());
+        // Walker 1 crossed the wall once (pushed out of the circle); walkers 2 and 3 are in
+        // their boxes on all 119 steps; the hero passes through a circle and a box.
+        QCOMPARE(crossings, std::uint64_t(1));
+        QCOMPARE(std::uint64_t(s["wall_penetrations"].toInt()), crossings);
+        QVERIFY(inBox > 2 * 119);
+        QVERIFY(inObstacle > inBox);
+        QCOMPARE(std::uint64_t(s["obstacle_penetrations"].toInt()), inObstacle);
+    }
+
+    void redLightViolationsOfWalkersAndVehicles()
+    {
+        QTemporaryDir tmp;
+        const Run run = runScene(tmp, kRedScene);
+        const double dt = 1.0 / 25.0;
+        const LightTiming walk{10, 2, 18, 0}, cars{10, 3, 17, 13};
+        QCOMPARE(run.table.frames, 1500);
+        // A walker steps onto the road on red: its centre inside the strip and on the
+        // carriageway (|x| <= 3.5, |z| < 2) on a frame whose time is red, and not on the frame before.
+        auto onRoad = [](const TrajectoryRow& r) { return std::abs(r.x) <= 3.5 && std::abs(r.z) < 2; };
+        std::uint64_t walkerRed = 0, walkerEntries = 0, vehicleRed = 0, vehicleCrossings = 0;
+        for (const auto& [id, rows] : run.table.agents)
+            for (auto it = std::next(rows.begin()); it != rows.end(); ++it) {
+                const TrajectoryRow& a = std::prev(it)->second;
+                const TrajectoryRow& b = it->second;
+                const double t = it->first * dt;
+                if (id == 50 && onRoad(b) && !onRoad(a)) {
+                    ++walkerEntries;
+                    walkerRed += walk.phaseAt(t) == 'R';
+                }
+                if (id == 60) {
+                    // The car's front (centre + heading x radius) over the line z = 5 (at 55 m
+                    // along a lane starting at z = 60), timed within the step.
+                    const double fa = a.z - std::sin(a.headingDeg * M_PI / 180.0) * 1.1;
+                    const double fb = b.z - std::sin(b.headingDeg * M_PI / 180.0) * 1.1;
+                    if (fa >= 5.0 && fb < 5.0) {
+                        ++vehicleCrossings;
+                        vehicleRed += cars.phaseAt(t - dt + dt * (fa - 5.0) / (fa - fb)) == 'R';
+                    }
+                }
+            }
+        const QJsonObject& s = run.stats;
+        qInfo("walker road entries %llu, %llu on red; car line crossings %llu, %llu on red",
+              (unsigned long long)walkerEntries, (unsigned long long)walkerRed, (unsigned long long)vehicleCrossings,
+              (unsigned long long)vehicleRed);
+        QCOMPARE(walkerEntries, std::uint64_t(3));
+        QCOMPARE(walkerRed, std::uint64_t(2));
+        QCOMPARE(std::uint64_t(s["pedestrian_red_light_violations"].toInt()), walkerRed);
+        QVERIFY(vehicleCrossings >= 1);
+        QCOMPARE(vehicleRed, std::uint64_t(1));
+        QCOMPARE(std::uint64_t(s["vehicle_red_light_violations"].toInt()), vehicleRed);
+        QCOMPARE(std::uint64_t(s["red_light_violations"].toInt()), walkerRed + vehicleRed);
+    }
+
+    void contactsAndOverlaps()
+    {
+        QTemporaryDir tmp;
+        const Run run = runScene(tmp, kContactScene);
+        QCOMPARE(run.table.frames, 288);
+        auto radius = [](std::uint32_t id) { return id < 200 ? 1.1 : 0.3; };
+        std::uint64_t carCar = 0, carWalker = 0, overlaps = 0;
+        std::vector<std::uint32_t> ids;
+        for (const auto& [id, rows] : run.table.agents)
+            ids.push_back(id);
+        for (int f = 1; f < run.table.frames; ++f)
+            for (std::size_t i = 0; i < ids.size(); ++i)
+                for (std::size_t j = i + 1; j < ids.size(); ++j) {
+                    const TrajectoryRow& a = run.table.agents.at(ids[i]).at(f);
+                    const TrajectoryRow& b = run.table.agents.at(ids[j]).at(f);
+                    const double d = std::hypot(a.x - b.x, a.z - b.z), r = radius(ids[i]) + radius(ids[j]);
+                    const bool cars = ids[i] < 200 && ids[j] < 200, mixed = (ids[i] < 200) != (ids[j] < 200);
+                    carCar += cars && d < r;
+                    carWalker += mixed && d < r;
+                    overlaps += d < r - kToleranceM;
+                }
+        const QJsonObject& s = run.stats;
+        qInfo("car-car contact steps %llu, car-walker %llu, overlapping pairs %llu",
+              (unsigned long long)carCar, (unsigned long long)carWalker, (unsigned long long)overlaps);
+        // Through each other at 10 m/s each: about 2.2 m * sqrt(2) * 2 / 14 m/s = 0.44 s.
+        QVERIFY(carCar >= 6);
+        // The car brakes at 8 m/s^2 from 13 m/s but reaches the hero at about 7.6 m/s and
+        // passes through it: 2 x 1.4 m at that speed, about 0.35 s.
+        QVERIFY(carWalker >= 5);
+        QVERIFY(overlaps > carCar + carWalker);  // the two heroes' pass too
+        QCOMPARE(std::uint64_t(s["vehicle_collisions"].toInt()), carCar);
+        QCOMPARE(std::uint64_t(s["car_pedestrian_collisions"].toInt()), carWalker);
+        QCOMPARE(std::uint64_t(s["overlapping_pairs"].toInt()), overlaps);
+    }
+};
+
+THRONG_REGISTER_TEST(TestCliCounters)
+#include "TestCliCounters.moc"
