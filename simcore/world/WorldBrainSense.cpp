@@ -194,38 +194,30 @@ void World::senseForBrain(TypeBrain& tb)
                         light = 0.5f * float(int(line.phase));
                     }
                 } else {
-                    // The stop line ahead: a kerb line of a lit crosswalk (where its strip
-                    // meets the road; its end over no lane) this agent walks toward and has
-                    // not passed; its light, and the gap from the body to the line.
+                    // The stop line ahead: an end of a lit crosswalk this agent walks toward
+                    // and has not passed; its light, and the gap from the body to the line.
                     // "Toward" as the traffic signal has it: the way it wants to go (its path
                     // or goal, not its facing, which wobbles while it waits) within 60
                     // degrees of the crosswalk's axis, so a walker passing the end of a
                     // crosswalk along the sidewalk is not held at it.
                     glm::vec2 w = wantedHeading(i);
                     w = glm::dot(w, w) > 1e-12f ? glm::normalize(w) : f;
-                    for (std::size_t k = 0; k < m_crosswalks.size(); ++k) {
-                        const CrosswalkBox& c = m_crosswalks[k];
+                    for (const CrosswalkBox& c : m_crosswalks) {
                         if (c.light < 0)
                             continue;
                         const glm::vec2 ab = c.b - c.a;
                         const float len = glm::length(ab);
                         if (len <= 0.0f)
                             continue;
-                        float u0 = 0.0f, u1 = len;
-                        if (m_traffic.system) {
-                            const CrosswalkStrip& strip = m_traffic.system->lanes().crosswalk(int(k));
-                            u0 = strip.roadU0;
-                            u1 = strip.roadU1;
-                        }
                         const glm::vec2 dir = ab / len;
                         const float along = glm::dot(p - c.a, dir), across = std::fabs(cross(dir, p - c.a));
                         if (across > c.halfWidth + kStopLineSideM)
                             continue;
                         float d = kNoneM;
-                        if (along < u0 && glm::dot(w, dir) > kAlongCos)
-                            d = u0 - along - m_radius[i];
-                        else if (along > u1 && glm::dot(w, dir) < -kAlongCos)
-                            d = along - u1 - m_radius[i];
+                        if (along < 0.0f && glm::dot(w, dir) > kAlongCos)
+                            d = -along - m_radius[i];
+                        else if (along > len && glm::dot(w, dir) < -kAlongCos)
+                            d = along - len - m_radius[i];
                         if (d < gap) {
                             gap = d;
                             light = 0.5f * float(lightState(std::size_t(c.light)));

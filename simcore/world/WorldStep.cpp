@@ -508,6 +508,8 @@ bool World::overlapping(std::size_t i, glm::vec3 p, std::uint32_t j, glm::vec3 q
 {
     if (m_makingWay && !collide(collision(i), collision(j)))
         return false;  // layers that do not collide may overlap
+    if (m_traffic.anyOffStage && (m_traffic.offStage[i] | m_traffic.offStage[j]))
+        return false;  // off stage: waiting at its lane's end with others that left it
     const float contact = m_radius[i] + m_radius[j] - kOverlapToleranceM;
     const glm::vec3 d = p - q;
     return glm::dot(d, d) < contact * contact;

@@ -98,6 +98,7 @@ void World::addTrafficAgents(const Scene& scene)
     }
     const std::size_t n = m_pos.size();
     m_traffic.driven.assign(n, 0);
+    m_traffic.offStage.assign(n, 0);
     for (std::size_t i = walkers; i < n; ++i) {
         m_traffic.driven[i] = 1;
         // A driven agent counts as standing for the step's phases: it is never steered,
@@ -196,9 +197,12 @@ void World::driveTrafficAgents()
 {
     if (m_traffic.system) {
         const TrafficSystem& ts = *m_traffic.system;
+        m_traffic.anyOffStage = false;
         for (std::size_t v = 0; v < m_traffic.vehicleAgent.size(); ++v) {
             const std::size_t i = m_traffic.vehicleAgent[v];
             const glm::vec2 p = ts.position(v), f = ts.forward(v);
+            m_traffic.offStage[i] = ts.active(v) ? 0 : 1;
+            m_traffic.anyOffStage = m_traffic.anyOffStage || !ts.active(v);
             m_nextPos[i] = onGround(p, groundHeight(p.x, p.y));
             m_nextVel[i] = glm::vec3(f.x, 0.0f, f.y) * (ts.active(v) ? ts.speed(v) : 0.0f);
             m_nextFwd[i] = glm::vec3(f.x, 0.0f, f.y);

@@ -22,6 +22,11 @@ struct WorldTraffic {
     std::vector<std::uint32_t> vehicleAgent, heroAgent;
     // Per World agent: 1 = moved only by traffic or a keyframe track (never steered, never pushed).
     std::vector<std::uint8_t> driven;
+    // Per World agent: 1 = a vehicle waiting off stage to re-enter its open lane (it stands
+    // at the lane's end, where others wait too: no overlap counts for it). anyOffStage
+    // when some is.
+    std::vector<std::uint8_t> offStage;
+    bool anyOffStage = false;
     // World agents the traffic treats as pedestrians (walkers and heroes), and their
     // state before and after the step being computed.
     std::vector<std::uint32_t> pedestrians;

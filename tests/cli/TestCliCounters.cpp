@@ -292,6 +292,41 @@ private slots:
         QCOMPARE(std::uint64_t(s["car_pedestrian_collisions"].toInt()), carWalker);
         QCOMPARE(std::uint64_t(s["overlapping_pairs"].toInt()), overlaps);
     }
+
+    void vehiclesWaitingOffStageDoNotOverlap()
+    {
+        // Cars that leave an open lane wait off stage at its end to re-enter; they stand
+        // on one point there. overlapping_pairs counted them every step (219 pair-steps in
+        // an 8-car mid-block scene whose vehicle_collisions was 0).
+        QTemporaryDir tmp;
+        const Run run = runScene(tmp, R"(throng: 1
+settings: {fps: 20, duration: 10, seed: 4, bounds: {min: [-30, -30], max: [30, 30]}}
+agent_types:
+  - {name: car, kind: vehicle, radius: 1.1, max_speed: 13.9, max_force: 5000, mass: 1200}
+lanes:
+  - {name: short, points: [[-20, 0], [20, 0]], width: 3.5, loop: false}
+vehicles:
+  - {id: 1, type: car, lane: short, at: 25, speed: 10}
+  - {id: 2, type: car, lane: short, at: 33, speed: 10}
+  - {id: 3, type: car, lane: short, at: 38, speed: 10}
+)");
+        auto offStage = [](const TrajectoryRow& r) { return r.x == 20.0 && r.z == 0.0 && r.speed == 0.0; };
+        std::uint64_t together = 0, overlaps = 0;
+        for (int f = 1; f < run.table.frames; ++f)
+            for (std::uint32_t a = 1; a <= 3; ++a)
+                for (std::uint32_t b = a + 1; b <= 3; ++b) {
+                    const TrajectoryRow& p = run.table.agents.at(a).at(f);
+                    const TrajectoryRow& q = run.table.agents.at(b).at(f);
+                    together += offStage(p) && offStage(q);
+                    if (!offStage(p) && !offStage(q))
+                        overlaps += std::hypot(p.x - q.x, p.z - q.z) < 2.2 - kToleranceM;
+                }
+        qInfo("pair-steps with both cars off stage at the lane's end: %llu; overlapping on stage: %llu",
+              (unsigned long long)together, (unsigned long long)overlaps);
+        QVERIFY(together >= 10);
+        QCOMPARE(std::uint64_t(run.stats["overlapping_pairs"].toInt()), overlaps);
+        QCOMPARE(run.stats["vehicle_collisions"].toInt(), 0);
+    }
 };
 
 THRONG_REGISTER_TEST(TestCliCounters)
