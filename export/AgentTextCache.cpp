@@ -21,6 +21,7 @@ bool writeAgentFile(const sim::FrameCache& cache, std::size_t agent, const std::
         return false;
     std::string text;
     text.reserve(cache.frameCount() * 48);
+    const glm::dvec3 origin = cache.origin();
     // Starts where an edit added it (a first line names that frame), ends where it left
     // or where an edit removed it (present before, not now).
     std::size_t first = 0;
@@ -32,11 +33,11 @@ bool writeAgentFile(const sim::FrameCache& cache, std::size_t agent, const std::
         const sim::AgentFrame& a = cache.at(f, agent);
         if (!a.present)
             break;
-        detail::appendFloat(text, a.position.x);
+        detail::appendCoordinate(text, a.position.x, origin.x);
         text += ' ';
-        detail::appendFloat(text, a.position.y);
+        detail::appendCoordinate(text, a.position.y, origin.y);
         text += ' ';
-        detail::appendFloat(text, a.position.z);
+        detail::appendCoordinate(text, a.position.z, origin.z);
         text += ' ';
         detail::appendFloat(text, detail::headingDegrees(a.headingRad));
         text += ' ';

@@ -134,6 +134,25 @@ int materialFor(tinygltf::Model& model, std::map<std::pair<std::size_t, int>, in
     return made[key] = static_cast<int>(model.materials.size()) - 1;
 }
 
+// A far scene's frames are relative to its origin (sim::FrameCache::origin): one node at
+// the origin (glTF's numbers are doubles) carries every agent's root, so the file is in
+// the scene's coordinates without rounding each key to the floats of 1e6 m. Skinned
+// bodies stay where they are: their nodes' transforms do not move them.
+void moveRootsToOrigin(tinygltf::Model& model, glm::dvec3 origin)
+{
+    if (origin == glm::dvec3(0.0))
+        return;
+    tinygltf::Node node;
+    node.name = "scene_origin";
+    node.translation = {origin.x, origin.y, origin.z};
+    std::vector<int> kept;
+    for (int n : model.scenes[0].nodes)
+        (model.nodes[static_cast<std::size_t>(n)].mesh < 0 ? node.children : kept).push_back(n);
+    kept.insert(kept.begin(), static_cast<int>(model.nodes.size()));
+    model.nodes.push_back(std::move(node));
+    model.scenes[0].nodes = std::move(kept);
+}
+
 }  // namespace
 
 ExportResult exportGltf(const sim::Scene& scene, const sim::FrameCache& cache, const GltfOptions& options,
@@ -346,6 +365,7 @@ ExportResult exportGltf(const sim::Scene& scene, const sim::FrameCache& cache, c
         }
     }
     builder.endAnimationData();
+    moveRootsToOrigin(model, cache.origin());
     if (detail::cancelledAt(progress, 0.8f))
         return detail::cancelledExport(options.path);
 

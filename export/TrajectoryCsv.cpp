@@ -9,17 +9,18 @@ namespace {
 
 constexpr std::size_t kFlushBytes = 1 << 16;
 
-void appendRow(std::string& out, std::size_t frame, sim::AgentId id, const sim::AgentFrame& a)
+void appendRow(std::string& out, std::size_t frame, sim::AgentId id, const sim::AgentFrame& a,
+               glm::dvec3 origin)
 {
     detail::appendUnsigned(out, frame);
     out += ',';
     detail::appendUnsigned(out, id);
     out += ',';
-    detail::appendFloat(out, a.position.x);
+    detail::appendCoordinate(out, a.position.x, origin.x);
     out += ',';
-    detail::appendFloat(out, a.position.y);
+    detail::appendCoordinate(out, a.position.y, origin.y);
     out += ',';
-    detail::appendFloat(out, a.position.z);
+    detail::appendCoordinate(out, a.position.z, origin.z);
     out += ',';
     detail::appendFloat(out, detail::headingDegrees(a.headingRad));
     out += ',';
@@ -54,7 +55,7 @@ ExportResult writeTrajectoryCsv(const sim::FrameCache& cache, const std::string&
         for (std::size_t i = 0; i < agents.size(); ++i) {
             if (cache.at(f, i).out || !cache.at(f, i).present)
                 continue;  // left, or not there on this frame (an edit added or removed it)
-            appendRow(text, f, agents[i].id, cache.at(f, i));
+            appendRow(text, f, agents[i].id, cache.at(f, i), cache.origin());
             if (text.size() >= kFlushBytes) {
                 file.stream().write(text.data(), static_cast<std::streamsize>(text.size()));
                 text.clear();

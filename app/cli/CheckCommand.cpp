@@ -1,6 +1,7 @@
 #include "CliCommands.h"
 
 #include "simcore/io/SceneIO.h"
+#include "simcore/world/GeometryCheck.h"
 #include "simcore/world/WorldBrain.h"
 
 #include <ostream>
@@ -14,9 +15,13 @@ int checkCommand(const CliArguments& args, std::ostream& out, std::ostream& err)
     const sim::LoadResult loaded = sim::loadScene(args.scene);
     std::vector<sim::Diagnostic> diagnostics = loaded.diagnostics;
     // Brains compile only once the scene around them is whole.
-    if (loaded.ok())
+    if (loaded.ok()) {
         for (sim::Diagnostic& d : sim::checkSceneBrains(loaded.scene))
             diagnostics.push_back(std::move(d));
+        // What a run would trip on: far coordinates, agents inside the set, goals out of reach.
+        for (sim::Diagnostic& d : sim::checkSceneGeometry(loaded.scene, args.scene))
+            diagnostics.push_back(std::move(d));
+    }
     int errors = 0, warnings = 0;
     for (const sim::Diagnostic& d : diagnostics) {
         err << d.format() << '\n';

@@ -268,6 +268,7 @@ void SimulationRunner::run(std::shared_ptr<const sim::Scene> scene, std::size_t 
     bool firstAfterResume = resumeFrame > 0 && !replay.on;
     auto publish = [&](bool first) {
         world->snapshot(frame);
+        sim::addOrigin(frame, world->origin());
         PickedBrainValues brain{first ? -1 : picked, {}};
         if (const sim::BrainEvaluator* e = first || picked < 0 ? nullptr : world->agentBrainEvaluator(std::size_t(picked)))
             brain.values = e->pickedValues();

@@ -122,6 +122,7 @@ void Viewport::setScene(const sim::Scene& scene)
     try {
         const sim::World world(scene);
         world.snapshot(frames);
+        sim::addOrigin(frames, world.origin());
         agents = world.agentInfo();
         timeS = world.timeS();
     } catch (const std::exception& e) {
@@ -136,6 +137,7 @@ void Viewport::setScene(const sim::Scene& scene, const sim::World& state)
 {
     std::vector<sim::AgentFrame> frames;
     state.snapshot(frames);
+    sim::addOrigin(frames, state.origin());
     setSet(scene);
     setAgents(frames, state.agentInfo(), state.timeS(), std::size_t(state.stepIndex()));
 }

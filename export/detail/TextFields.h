@@ -16,6 +16,27 @@ inline void appendFloat(std::string& out, float value)
     out.append(buf, result.ptr);
 }
 
+// Appends a coordinate of the scene: `relative` (a frame's float, relative to the cache's
+// origin) plus `origin`, added in double. Near (0, 0) (origin 0) exactly appendFloat; a
+// far scene's coordinate gets micrometres (a float relative to an origin holds less),
+// trailing zeros dropped, so 1e6 m keeps its centimetres.
+inline void appendCoordinate(std::string& out, float relative, double origin)
+{
+    if (origin == 0.0) {
+        appendFloat(out, relative);
+        return;
+    }
+    char buf[48];
+    const auto result = std::to_chars(buf, buf + sizeof buf, static_cast<double>(relative) + origin,
+                                      std::chars_format::fixed, 6);
+    char* end = result.ptr;
+    while (end > buf && end[-1] == '0')
+        --end;
+    if (end > buf && end[-1] == '.')
+        --end;
+    out.append(buf, end);
+}
+
 inline void appendUnsigned(std::string& out, unsigned long long value)
 {
     char buf[24];

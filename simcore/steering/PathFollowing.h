@@ -26,6 +26,25 @@ struct PathFollowParams {
 // (slowing distance max(aheadM, maxSpeed * 1 s)) and stops.
 glm::vec3 followPath(const SteeringAgent& agent, const SteeringPath& path, const PathFollowParams& params = {});
 
+// The same for a follower that remembers how far along the spine it has come
+// (progressM, m from the first point, as advancePathProgress keeps it): its projections
+// are sought only from there on, within pathReachM, so on a path that turns back on
+// itself (a hairpin) the nearest point of a leg already walked never draws it back.
+glm::vec3 followPath(const SteeringAgent& agent, const SteeringPath& path, const PathFollowParams& params,
+                     float progressM);
+
+// How far along the spine a follower's projection may move in one step (m): its step at
+// maxSpeed, the width of the path (cutting the inside of a corner jumps the projection
+// across it) and the seek distance ahead.
+float pathReachM(const SteeringPath& path, const PathFollowParams& params, float maxSpeed, float dtS);
+
+// The follower's progress after it moved to p: the distance along of its nearest spine
+// point within reachM past progressM (before it when params.reverse), never back. On a
+// closed path the distance wraps round. Start from startProgressM.
+float advancePathProgress(const SteeringPath& path, glm::vec3 p, float progressM, float reachM, bool reverse);
+// Where a follower at p starts: the distance along of its nearest spine point.
+float startPathProgress(const SteeringPath& path, glm::vec3 p);
+
 // The nearest point on the spine and its distance along the spine from the first point (m).
 struct PathProjection {
     glm::vec3 point{0.0f};
@@ -33,6 +52,10 @@ struct PathProjection {
     glm::vec3 tangent{0.0f};  // unit direction of the spine there, in point order; zero for a point path
 };
 PathProjection projectOntoPath(const SteeringPath& path, glm::vec3 p);
+// The nearest point among the spine points whose distance along lies in [fromM, toM]
+// (clamped to the spine on an open path; on a closed one the window may wrap past the
+// first point, and the distance returned lies in [0, length)).
+PathProjection projectOntoPathWithin(const SteeringPath& path, glm::vec3 p, float fromM, float toM);
 
 // The spine point at a distance along it: wrapped on closed paths, clamped on open ones.
 glm::vec3 pointAlongPath(const SteeringPath& path, float distanceAlongM);

@@ -30,6 +30,16 @@ glm::vec2 wallNormalToward(glm::vec2 p, glm::vec2 a, glm::vec2 b, glm::vec2 h)
     return glm::dot(h, n) > 0.0f ? -n : n;
 }
 
+// Whether the end point e of a wall is shared by no other wall of the list (a door post),
+// rather than a joint of a polyline or a box's corner.
+bool freeEnd(std::span<const WallSegment> walls, glm::vec2 e)
+{
+    int touching = 0;
+    for (const WallSegment& w : walls)
+        touching += (xz(finiteOrZero(w.a)) == e ? 1 : 0) + (xz(finiteOrZero(w.b)) == e ? 1 : 0);
+    return touching <= 1;
+}
+
 }  // namespace
 
 glm::vec3 avoidWalls(const SteeringAgent& agent, std::span<const WallSegment> walls, const WallAvoidanceParams& params)
@@ -60,7 +70,18 @@ glm::vec3 avoidWalls(const SteeringAgent& agent, std::span<const WallSegment> wa
         // Inside it the motion along the normal is also damped, so a pushed agent settles instead of bouncing.
         if (gap < standoff) {
             const float depth = (standoff - gap) / standoff;
-            force += n * (standoffForce * depth - glm::dot(v, n) * mass / damping * std::min(depth, 1.0f));
+            glm::vec2 push = n * (standoffForce * depth - glm::dot(v, n) * mass / damping * std::min(depth, 1.0f));
+            // At a wall's free end (a door post: an end no other wall here shares) the
+            // standoff only pushes sideways to the heading, never back: the two posts of a
+            // narrow door pushed a walker back out of the doorway harder than its goal drew
+            // it in, and it stood in front of the door for good (issue 23). The feelers
+            // still brake an approach at contact; corners where walls join push as before.
+            if ((c == a || c == b) && freeEnd(walls, c)) {
+                const float back = glm::dot(push, h);
+                if (back < 0.0f)
+                    push -= h * back;
+            }
+            force += push;
         }
         // Feeler term: a wall a feeler meets and the agent closes on gets the braking force that
         // stops the approach at contact.

@@ -27,8 +27,9 @@ AgentFrame absentFrame()
 
 }  // namespace
 
-void FrameCache::reset(std::vector<AgentInfo> agents, float fps)
+void FrameCache::reset(std::vector<AgentInfo> agents, float fps, glm::dvec3 origin)
 {
+    m_origin = origin;
     m_count = agents.size();
     Epoch e;
     e.width = m_count;
@@ -187,6 +188,9 @@ std::uint64_t FrameCache::hash() const
     }
     for (const AgentFrame& f : m_frames)
         h.frame(f);
+    // Only a far scene's origin is mixed in, so every hash near (0, 0) stays as it was.
+    if (m_origin != glm::dvec3(0.0))
+        h.mix(&m_origin, sizeof m_origin);
     return h.h;
 }
 
@@ -199,6 +203,14 @@ std::uint64_t FrameCache::hashFrames(std::size_t first, std::size_t last) const
             if (a.present)
                 h.frame(a);
     return h.h;
+}
+
+void addOrigin(std::span<AgentFrame> frames, glm::dvec3 origin)
+{
+    if (origin == glm::dvec3(0.0))
+        return;
+    for (AgentFrame& f : frames)
+        f.position = glm::vec3(glm::dvec3(f.position) + origin);
 }
 
 }  // namespace throng::sim

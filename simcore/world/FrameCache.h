@@ -47,8 +47,9 @@ struct AgentInfo {
 
 class FrameCache {
 public:
-    // Starts an empty recording for these agents (dense index order).
-    void reset(std::vector<AgentInfo> agents, float fps);
+    // Starts an empty recording for these agents (dense index order). Frame positions are
+    // relative to `origin` (World::origin): whoever writes them out adds it, in double.
+    void reset(std::vector<AgentInfo> agents, float fps, glm::dvec3 origin = glm::dvec3(0.0));
     // From the next appended frame on, the World's agents are `worldAgents` (dense order);
     // previous[i] is the World index agent i had before (-1: a new agent, which gets a new
     // cache agent). Cache agents no World agent maps to are absent from then on.
@@ -63,6 +64,7 @@ public:
     // Cache agents: every agent of the recording (the width of a frame).
     std::size_t agentCount() const { return m_count; }
     float fps() const { return m_fps; }
+    glm::dvec3 origin() const { return m_origin; }
     std::span<const AgentFrame> frame(std::size_t f) const { return {m_frames.data() + f * m_count, m_count}; }
     const AgentFrame& at(std::size_t f, std::size_t agent) const { return m_frames[f * m_count + agent]; }
     // Every cache agent, with the type of the latest agent set.
@@ -96,6 +98,11 @@ private:
     std::vector<AgentFrame> m_frames;  // frame-major, m_count per frame
     std::size_t m_count = 0;
     float m_fps = 24.0f;
+    glm::dvec3 m_origin{0.0};
 };
+
+// Adds `origin` to each frame's position, in floats: for the viewport, which draws the
+// set in the scene's coordinates at float precision anyway. Exports add it in double.
+void addOrigin(std::span<AgentFrame> frames, glm::dvec3 origin);
 
 }  // namespace throng::sim

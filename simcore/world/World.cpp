@@ -1,11 +1,14 @@
 #include "simcore/world/World.h"
 
 #include "simcore/nav/PathPlanning.h"
+#include "simcore/steering/PathFollowing.h"
 
+#include "simcore/scene/SceneOrigin.h"
 #include "simcore/scene/TerrainHeight.h"
 #include "simcore/traffic/LightPhase.h"
 #include "simcore/world/RepeatedStatics.h"
 #include "simcore/world/Rng.h"
+#include "simcore/world/detail/StepGeometry.h"
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
@@ -22,6 +25,8 @@ namespace {
 enum Stream : std::uint64_t {
     kSpawnX = 1, kSpawnZ, kSpawnHeading, kSpeedFactor, kPhaseOffset, kStride, kWanderStart, kSpotR, kSpotA, kSpawnY
 };
+
+constexpr std::uint64_t kSpawnTries = 16;  // draws of a spawned walker's place before it is walked out
 
 // Name -> index for one kind of scene item, built once so that resolving a million
 // agents' references costs O(N log K), not O(N K).
@@ -47,7 +52,18 @@ private:
 
 }  // namespace
 
-World::World(const Scene& scene, const WorldOptions& options) : m_team(options.threads)
+World::World(const Scene& scene, const WorldOptions& options)
+    : m_team(options.threads), m_origin(simulationOrigin(scene))
+{
+    // A set at map coordinates runs relative to its centre: at 1e6 m a float's spacing
+    // is 6 cm, and a walker's step of 6 cm rounded to nothing (issue 23).
+    if (m_origin == glm::dvec2(0.0))
+        build(scene, options);
+    else
+        build(shiftedScene(scene, m_origin), options);
+}
+
+void World::build(const Scene& scene, const WorldOptions& options)
 {
     m_seed = options.overrideSeed ? options.seed : scene.settings.seed;
     m_dt = 1.0f / scene.settings.fps;
@@ -82,6 +98,7 @@ World::World(const Scene& scene, const WorldOptions& options) : m_team(options.t
     buildAgents(scene);
     addTrafficAgents(scene);
     buildBrains(scene);
+    findEscapes();  // before the plans: one that starts inside an obstacle plans from outside it
     buildNav(scene);
     for (const TypeParams& t : m_types) {
         m_hasFliers = m_hasFliers || t.kind == AgentKind::Flier;
@@ -218,13 +235,24 @@ void World::spawnGroup(const Scene& scene, const SpawnGroup& group, std::size_t 
     std::vector<Spawn> spawns(group.count);
     for (std::uint32_t k = 0; k < group.count; ++k) {
         const std::uint64_t key = (std::uint64_t(groupIndex + 1) << 32) | k;
-        const float u = rngUniform(m_seed, key, 0, kSpawnX), v = rngUniform(m_seed, key, 0, kSpawnZ);
+        // A walker drawn where its body does not fit (a group's area over a pillar or
+        // across a wall) is drawn again, up to kSpawnTries times (draw k keyed by step k,
+        // so the first draw is the one every earlier release made); one that never fits
+        // is walked out by findEscapes (WorldEscape.cpp).
+        const bool walker = scene.agentTypes[type].kind == AgentKind::Pedestrian;
+        const float bodyR = scene.agentTypes[type].radiusM;
         glm::vec2 p;
-        if (group.shape == AreaShape::Rect) {
-            p = group.min + (group.max - group.min) * glm::vec2(u, v);
-        } else {
-            const float r = group.radiusM * std::sqrt(u), a = 6.28318531f * v;
-            p = group.center + r * glm::vec2(std::cos(a), std::sin(a));
+        for (std::uint64_t draw = 0; draw < kSpawnTries; ++draw) {
+            const float u = rngUniform(m_seed, key, draw, kSpawnX), v = rngUniform(m_seed, key, draw, kSpawnZ);
+            if (group.shape == AreaShape::Rect) {
+                p = group.min + (group.max - group.min) * glm::vec2(u, v);
+            } else {
+                const float r = group.radiusM * std::sqrt(u), a = 6.28318531f * v;
+                p = group.center + r * glm::vec2(std::cos(a), std::sin(a));
+            }
+            glm::vec2 clear;
+            if (!walker || !escapeTarget(p, bodyR, clear))
+                break;
         }
         float heading = 6.28318531f * rngUniform(m_seed, key, 0, kSpawnHeading);
         // Fliers spawn at a height drawn from the group's altitude range.
@@ -280,16 +308,19 @@ void World::addAgent(const Scene& scene, AgentId id, std::uint16_t type, glm::ve
     m_goal.push_back(goal);
     m_path.push_back(path);
     m_leader.push_back(std::int32_t(leader));
-    // A crowd sharing an exit spreads over it instead of converging on one point, so the
-    // first arrivals do not wall off the rest (uniform over 80 % of the goal's disk).
+    // A crowd sharing a goal spreads over it instead of converging on one point, so the
+    // first arrivals do not wall off the rest.
     glm::vec2 spot(0.0f);
     if (goal >= 0) {
         const Goal& g = scene.goals[std::size_t(goal)];
-        const float r = 0.8f * g.radiusM * std::sqrt(rngUniform(m_seed, id, 0, kSpotR));
-        const float a = 6.28318531f * rngUniform(m_seed, id, 0, kSpotA);
-        spot = g.position + r * glm::vec2(std::cos(a), std::sin(a));
+        spot = detail::goalSpot(g.position, g.radiusM, g.exit, t.radiusM, rngUniform(m_seed, id, 0, kSpotR),
+                                rngUniform(m_seed, id, 0, kSpotA));
     }
     m_goalSpot.push_back(spot);
+    m_pathAlong.push_back(path >= 0 ? startPathProgress(SteeringPath{m_pathPoints[std::size_t(path)], m_paths[std::size_t(path)].radiusM,
+                                                                  m_paths[std::size_t(path)].closed},
+                                                     pos)
+                                    : 0.0f);
     m_arrived.push_back(0);
     m_stopped.push_back(0);
     m_stoppedBefore.push_back(0);
@@ -343,7 +374,7 @@ void World::snapshot(std::vector<AgentFrame>& out) const
 
 void World::startRecording(FrameCache& cache) const
 {
-    cache.reset(m_info, 1.0f / m_dt);
+    cache.reset(m_info, 1.0f / m_dt, origin());
     std::vector<AgentFrame> frame;
     snapshot(frame);
     cache.append(frame);
@@ -352,8 +383,8 @@ void World::startRecording(FrameCache& cache) const
 std::size_t World::memoryBytes() const
 {
     const std::size_t n = m_pos.capacity();
-    return n * (sizeof(AgentInfo) + 11 * sizeof(glm::vec3) + 2 * sizeof(WanderState) + 5 * sizeof(float) +
-                3 * sizeof(std::int32_t) + sizeof(glm::vec2) + 4 + kMaxNeighbours * sizeof(std::uint32_t)) +
+    return n * (sizeof(AgentInfo) + 11 * sizeof(glm::vec3) + 2 * sizeof(WanderState) + 6 * sizeof(float) +
+                3 * sizeof(std::int32_t) + 2 * sizeof(glm::vec2) + 5 + kMaxNeighbours * sizeof(std::uint32_t)) +
            m_grid.memoryBytes();
 }
 

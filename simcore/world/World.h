@@ -74,7 +74,12 @@ public:
     // The threads that step this World (tests ask it which threads did work).
     const ThreadTeam& team() const { return m_team; }
 
+    // Positions are relative to origin(): add it (in double) for the scene's coordinates.
     std::span<const glm::vec3> positions() const { return m_pos; }
+    // Where this World's coordinates start in the scene's: (0, 0, 0) unless the scene lies
+    // far from it (simulationOrigin, SceneOrigin.h); goals(), navigation() and the frames
+    // of snapshot() are relative to it too.
+    glm::dvec3 origin() const { return {m_origin.x, 0.0, m_origin.y}; }
     std::span<const glm::vec3> velocities() const { return m_vel; }
     std::span<const glm::vec3> forwards() const { return m_fwd; }
     std::span<const glm::vec3> ups() const { return m_up; }
@@ -100,6 +105,10 @@ public:
     // Navigation (WorldNav.cpp): agent i left through an exit goal; it is no longer
     // simulated or perceived and stays where it left (arrivalTimeS says when).
     bool isOut(std::size_t i) const { return m_out[i] != 0; }
+    // Agent i started inside a wall or obstacle and is still walking out of it (its way
+    // out: escapeTarget in WorldEscape.cpp, in this World's coordinates).
+    bool isEscaping(std::size_t i) const { return m_escaping[i] != 0; }
+    glm::vec2 escapeTo(std::size_t i) const { return m_escapeTo[i]; }
     // Agent i's goal as an index into goals(), or -1.
     std::int32_t goalIndex(std::size_t i) const { return m_goal[i]; }
     const std::vector<Goal>& goals() const { return m_goals; }
@@ -166,6 +175,7 @@ private:
     struct CrosswalkBox { glm::vec2 a, b; float halfWidth; int light; };  // light -1 = uncontrolled
     struct FlowSegment { glm::vec2 a, b; float halfWidth; };
 
+    void build(const Scene& scene, const WorldOptions& options);  // the constructor, in this World's coordinates
     void buildStatics(const Scene& scene);
     void buildAgents(const Scene& scene);
     void spawnGroup(const Scene& scene, const SpawnGroup& group, std::size_t groupIndex, std::uint16_t type,
@@ -187,6 +197,11 @@ private:
                                 std::span<const Neighbour> near, const TypeSteering& s) const;
     glm::vec3 flowDirection(glm::vec3 p) const;
     void constrain(std::size_t i, glm::vec3 from, glm::vec3& to) const;
+    // Agents inside a wall or obstacle at the start (WorldEscape.cpp): where each walks out
+    // to, and its move there this step, which constrain makes instead of holding it in.
+    bool escapeTarget(glm::vec2 p, float radiusM, glm::vec2& out) const;  // false: not deeper than radiusM
+    void findEscapes();
+    void escapeStep(std::size_t i, glm::vec3 from, glm::vec3& to) const;
     float groundHeight(float x, float z) const;
     void commit(std::size_t i, std::uint64_t& wallCrossings);
     // The boids kernel (WorldFlock.cpp): sense, steer and integrate fused for a flier type
@@ -278,6 +293,8 @@ private:
     // Navigation phase; see WorldNav.cpp.
     void buildNav(const Scene& scene);
     void planNav(std::size_t i);
+    glm::vec2 navStart(std::size_t i) const;  // where its way starts: its place, or where it walks out to
+    bool noWayToGoal(std::size_t i);          // no body of its size gets to its goal (builds m_nav.reach)
     void navBeforeStep();
     void updateNavTarget(std::size_t i);
     std::uint8_t queueDepth(std::size_t i) const;
@@ -353,6 +370,13 @@ private:
     std::vector<float> m_radius, m_maxSpeed, m_phase, m_stride, m_arrivalTime;
     std::vector<std::int32_t> m_goal, m_path, m_leader;
     std::vector<glm::vec2> m_goalSpot;  // each agent's own point inside its goal's disk
+    // Path followers: how far along their path's spine they have come, m (never back; see
+    // advancePathProgress), so a hairpin's walked leg never draws them back. 0 without a path.
+    std::vector<float> m_pathAlong;
+    // Started inside a wall or obstacle and not yet out: walks straight to m_escapeTo
+    // (clear of every shape) at its own pace, through what holds it (WorldEscape.cpp).
+    std::vector<std::uint8_t> m_escaping;
+    std::vector<glm::vec2> m_escapeTo;
     // arrived: entered its goal's area or reached its path's end (the stats' figure);
     // stopped: frozen for good (see commit); m_stoppedBefore: m_stopped as the commit
     // phase began.
@@ -375,6 +399,7 @@ private:
     ThreadTeam m_team;
     WorldTraffic m_traffic;
     WorldNav m_nav;
+    glm::dvec2 m_origin{0.0};         // the scene's (x, z) of this World's (0, 0)
     std::vector<std::uint8_t> m_out;  // left through an exit: never simulated or perceived again
     std::shared_ptr<detail::WorldBrains> m_brains;  // null when no type has a brain
 };

@@ -6,6 +6,7 @@
 #include "simcore/brain/BrainCompiler.h"
 #include "simcore/world/Rng.h"
 #include "simcore/world/World.h"
+#include "simcore/world/detail/StepGeometry.h"
 #include "simcore/world/detail/WorldBrains.h"
 #include "simcore/world/detail/WorldSound.h"
 
@@ -219,9 +220,9 @@ void World::runBrains()
             m_goal[i] = g;
             const Goal& goal = m_goals[std::size_t(g)];
             const AgentId id = m_info[i].id;
-            const float r = 0.8f * goal.radiusM * std::sqrt(rngUniform(m_seed, id, std::uint64_t(g) + 1, kGoalSpotR));
-            const float a = 6.28318531f * rngUniform(m_seed, id, std::uint64_t(g) + 1, kGoalSpotA);
-            m_goalSpot[i] = goal.position + r * glm::vec2(std::cos(a), std::sin(a));
+            m_goalSpot[i] = detail::goalSpot(goal.position, goal.radiusM, goal.exit, m_radius[i],
+                                             rngUniform(m_seed, id, std::uint64_t(g) + 1, kGoalSpotR),
+                                             rngUniform(m_seed, id, std::uint64_t(g) + 1, kGoalSpotA));
         });
     }
     // Vehicles with a speed output are driven by it along their lanes (this step's traffic

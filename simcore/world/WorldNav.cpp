@@ -42,7 +42,7 @@ void World::buildNav(const Scene& scene)
 {
     const std::size_t n = m_pos.size();
     m_out.assign(n, 0);
-    float inflate = 0.0f;
+    float inflate = 0.0f, smallest = INFINITY;
     std::vector<Navigation> mode(n, Navigation::Direct);
     for (std::size_t i = 0; i < n; ++i) {
         const AgentType& t = scene.agentTypes[m_info[i].typeIndex];
@@ -50,6 +50,7 @@ void World::buildNav(const Scene& scene)
             continue;
         mode[i] = t.navigation;
         inflate = std::max(inflate, t.radiusM + kClearanceM);
+        smallest = std::min(smallest, t.radiusM);
     }
     m_nav.active = inflate > 0.0f;
     if (!m_nav.active && scene.flowStrokes.empty())
@@ -69,6 +70,8 @@ void World::buildNav(const Scene& scene)
     }
     if (!m_nav.active)
         return;
+    m_nav.reachShapes = std::move(shapes);
+    m_nav.reachRadiusM = smallest;
 
     m_nav.hasField.assign(m_goals.size(), 0);
     m_nav.fields.resize(m_goals.size());
@@ -98,17 +101,47 @@ void World::buildNav(const Scene& scene)
     m_nav.waiting.assign(n, 0);
     m_nav.waitingNext.assign(n, 0);
     m_nav.lostSteps.assign(n, 0);
+    m_nav.noWay.assign(n, 0);
     // Plans at load, in agent order: a group starting in one cell shares one plan.
     for (std::size_t i = 0; i < n; ++i)
         if (m_nav.mode[i] == Navigation::AStar && m_goal[i] >= 0 && m_path[i] < 0)
             planNav(i);
+    // Flow-field walkers where the field does not reach: is there a way at all?
+    for (std::size_t i = 0; i < n; ++i)
+        if (m_nav.mode[i] == Navigation::FlowField && m_goal[i] >= 0 && m_path[i] < 0) {
+            const FlowField& field = m_nav.fields[std::size_t(m_goal[i])];
+            const NavCell c = field.grid().nearestWalkable(field.grid().cellOf(navStart(i)));
+            if (!field.grid().walkable(c) || !field.reachable(c))
+                m_nav.noWay[i] = noWayToGoal(i) ? 1 : 0;
+        }
+}
+
+glm::vec2 World::navStart(std::size_t i) const
+{
+    // One that started inside a wall or obstacle walks out first (WorldEscape.cpp).
+    return m_escaping[i] ? m_escapeTo[i] : xz(m_pos[i]);
+}
+
+bool World::noWayToGoal(std::size_t i)
+{
+    if (!m_nav.reach.built()) {
+        const NavGrid& g = m_nav.grid;
+        const glm::vec2 lo = g.origin(), hi = lo + glm::vec2(float(g.cols()), float(g.rows())) * g.cellM();
+        m_nav.reach.build(m_nav.reachShapes, lo, hi, m_nav.reachRadiusM,
+                          NavReach::cellFor(lo, hi, std::min(0.5f * g.cellM(), 0.1f)));
+    }
+    // Only a walker found in a region that does not meet the goal waits; one pushed where
+    // the grid cannot place it (deep in a wall's margin) goes on as before.
+    const Goal& g = m_goals[std::size_t(m_goal[i])];
+    return m_nav.reach.regionAt(navStart(i)) >= 0 && !m_nav.reach.reaches(navStart(i), g.position, g.radiusM);
 }
 
 void World::planNav(std::size_t i)
 {
     const Goal& g = m_goals[std::size_t(m_goal[i])];
-    m_nav.plan[i] = planBetween(m_nav.cache, m_nav.grid, xz(m_pos[i]), g.position, m_nav.astar);
+    m_nav.plan[i] = planBetween(m_nav.cache, m_nav.grid, navStart(i), g.position, m_nav.astar);
     m_nav.planGoal[i] = m_goal[i];
+    m_nav.noWay[i] = m_nav.plan[i] && m_nav.plan[i]->found() ? 0 : noWayToGoal(i) ? 1 : 0;
     m_nav.waypoint[i] = 0;
     m_nav.stall[i] = StallWatch{};
 }
@@ -214,8 +247,19 @@ void World::updateNavTarget(std::size_t i)
     }
     const std::size_t goal = std::size_t(m_goal[i]);
     float remainingM = glm::distance(p, m_goalSpot[i]);
+    // No way to the goal (walls close it off, or its door is narrower than the body): the
+    // walker waits where it stands. Heading straight at the goal instead, it pressed against
+    // the set, stalled, side-stepped and tried again for the whole shot (issue 23). A plan
+    // made on a changed grid is stale and made again, so a door that opens lets it go.
+    auto wait = [&] {
+        m_nav.target[i] = p;
+        m_nav.hasTarget[i] = 1;
+        m_nav.stall[i] = StallWatch{};
+    };
     if (mode == Navigation::AStar) {
         const NavPlan* plan = m_nav.plan[i].get();
+        if (m_nav.noWay[i] && m_nav.planGoal[i] == m_goal[i])
+            return wait();
         if (plan && plan->found() && m_nav.planGoal[i] == m_goal[i]) {
             const std::vector<glm::vec2>& w = plan->waypoints;
             // Within its own radius of a corner the walker turns for the next one, but only
@@ -276,6 +320,8 @@ void World::updateNavTarget(std::size_t i)
             remainingM = field.distanceM(free) + len;
             if (len > 1e-4f)
                 aim(d / len, 0.0f);
+        } else if (m_nav.noWay[i]) {
+            return wait();
         }
     }
     // Stall watch: waiting at a light is not being stuck. A flow-field walker in a queue

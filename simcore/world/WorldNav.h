@@ -8,6 +8,7 @@
 #include "simcore/nav/FlowField.h"
 #include "simcore/nav/NavFollow.h"
 #include "simcore/nav/NavGrid.h"
+#include "simcore/nav/NavReach.h"
 #include "simcore/nav/PlanCache.h"
 #include "simcore/nav/SketchField.h"
 
@@ -36,6 +37,12 @@ struct WorldNav {
     std::vector<std::uint8_t> hasField;// per goal index
     std::optional<SketchField> sketch; // the scene's flow strokes as an RBF field, when it solved
     NavCounters counters;
+    // Which places the smallest navigating body can walk between (NavReach), built the
+    // first time a plan or a field finds no way (WorldNav.cpp): the grid above is
+    // inflated by a margin, and a door a body fits through may be closed on it.
+    NavReach reach;
+    NavShapes reachShapes;
+    float reachRadiusM = 0.0f;
 
     // Per World agent.
     std::vector<Navigation> mode;
@@ -55,6 +62,7 @@ struct WorldNav {
     // for the next with nobody held at a light stops counting as a queue within a second.
     std::vector<std::uint8_t> waiting, waitingNext;
     std::vector<std::uint8_t> lostSteps; // A* walkers: steps the current waypoint has been out of sight
+    std::vector<std::uint8_t> noWay;     // 1: no body of its size can get to its goal from where it is; it waits
 };
 
 }  // namespace throng::sim

@@ -84,6 +84,9 @@ struct WorldState {
     std::vector<float> radius, maxSpeed, phase, stride, arrivalTime;
     std::vector<std::int32_t> goal, path, leader;
     std::vector<glm::vec2> goalSpot;
+    std::vector<float> pathAlong;
+    std::vector<std::uint8_t> escaping;
+    std::vector<glm::vec2> escapeTo;
     std::vector<std::uint8_t> arrived, stopped, stoppedBefore, onCrosswalk, nearCount, out;
     std::vector<std::uint32_t> nearIndex;  // World::kMaxNeighbours per agent
 
@@ -102,7 +105,7 @@ struct WorldState {
     std::vector<std::uint32_t> waypoint;
     std::vector<float> waypointRadiusM, sideStepS;
     std::vector<StallWatch> stall;
-    std::vector<std::uint8_t> replan, hasTarget, waiting, waitingNext, lostSteps;
+    std::vector<std::uint8_t> replan, hasTarget, waiting, waitingNext, lostSteps, noWay;
     std::vector<glm::vec2> sideDir, target;
 
     // Brains (empty when no type has one).

@@ -262,12 +262,22 @@ glm::vec3 World::steer(std::size_t i, const SteeringAgent& self, std::span<const
         SteeringAgent flat = self;
         if (s.vehicle.flying)
             flat.position.y = flat.velocity.y = 0.0f;
-        request(B::PathFollowing, [&] { return followPath(flat, path, s.path); });
+        request(B::PathFollowing, [&] { return followPath(flat, path, s.path, m_pathAlong[i]); });
     }
     if (!m_flow.empty())
         request(B::FlowFieldFollowing, [&] { return followFlow(self, flowDirection(flowSamplePoint(self, s.flow)), s.flow); });
     if (hasGoal && m_path[i] < 0) {
-        request(B::Arrival, [&] { return arrive(self, goal, s.arrival); });
+        // An exit is walked through, not stopped at: slowing down short of it, a walker
+        // whose door posts pushed it back (wall following) stood in front of the door for
+        // good (issue 23). Walkers with a navigation target keep their slowing: it sets a
+        // flow-field walker's pace in a crowd (WorldNav.cpp, Weidmann).
+        request(B::Arrival, [&] {
+            if (!m_goals[std::size_t(m_goal[i])].exit || (m_nav.active && m_nav.hasTarget[i]))
+                return arrive(self, goal, s.arrival);
+            ArrivalParams through = s.arrival;
+            through.slowingDistanceM = 1e-6f;
+            return arrive(self, goal, through);
+        });
         request(B::Seek, [&] { return seek(self, goal, s.seek); });
     }
     request(B::Alignment, [&] { return align(self, near, s.alignment); });

@@ -285,7 +285,11 @@ void World::commit(std::size_t i, std::uint64_t& wallCrossings)
     const glm::vec2 from = xz(m_pos[i]), to = xz(m_nextPos[i]);
     // Fliers pass over walls; only walkers and vehicles can penetrate one.
     // Vehicles and heroes go where traffic and keyframes say (a car crosses a crosswalk's kerb).
-    if (!m_walls.segments().empty() && !m_steering[m_info[i].typeIndex].vehicle.flying && !m_traffic.isDriven(i))
+    // One walking out of a box it started in crosses the box's side on purpose.
+    if (m_escaping[i] && glm::distance(to, m_escapeTo[i]) < 1e-4f)
+        m_escaping[i] = 0;
+    else if (!m_walls.segments().empty() && !m_steering[m_info[i].typeIndex].vehicle.flying && !m_traffic.isDriven(i) &&
+             !m_escaping[i])
         m_walls.forEachNear((from + to) * 0.5f, 0.5f * glm::length(to - from) + 0.01f, [&](std::uint32_t k) {
         const Segment& s = m_walls.segment(k);
         if (segmentsCross(from, to, s.a, s.b))
@@ -316,6 +320,10 @@ void World::commit(std::size_t i, std::uint64_t& wallCrossings)
     };
     if (m_path[i] >= 0) {
         const Path& path = m_paths[std::size_t(m_path[i])];
+        const SteeringPath spine{m_pathPoints[std::size_t(m_path[i])], path.radiusM, path.closed};
+        const PathFollowParams& follow = m_steering[m_info[i].typeIndex].path;
+        m_pathAlong[i] = advancePathProgress(spine, m_nextPos[i], m_pathAlong[i],
+                                             pathReachM(spine, follow, m_maxSpeed[i], m_dt), follow.reverse);
         const float tolerance = std::max(0.1f, 0.25f * path.radiusM);
         const float toEnd = glm::distance(to, path.points.back());
         stop = !path.closed && toEnd < tolerance;
@@ -323,16 +331,18 @@ void World::commit(std::size_t i, std::uint64_t& wallCrossings)
         // still walks on to the end point itself before it stops.
         if (!path.closed && toEnd < path.radiusM)
             arrive();
-        // Against the pile at the end: a stopped walker of the same path, between this one
-        // and the end (as for goals below), so a group finishing one path queues up
-        // behind those already there instead of pressing on forever.
+        // Against the pile at the end: a stopped walker of the same path, nearer the end
+        // than this one and within half a body of touching it, so a group finishing one
+        // path queues up behind those already there instead of pressing on forever. (Only
+        // "between this one and the end" left walkers that had slid past the end beside
+        // the pile of a narrow path pressing on for good, issue 23.)
         const std::uint32_t* near = &m_nearIndex[i * kMaxNeighbours];
         for (std::size_t k = 0; !stop && !path.closed && k < m_nearCount[i]; ++k) {
             const std::uint32_t j = near[k];
-            const float contact = m_radius[i] + m_radius[j] + kSettleGapM;
+            const float reach = m_radius[i] * 1.5f + m_radius[j] + kSettleGapM;
             const glm::vec2 q = xz(m_nextPos[j]);
-            stop = m_stoppedBefore[j] && m_path[j] == m_path[i] && glm::distance(to, q) < contact &&
-                   glm::dot(q - to, path.points.back() - to) > 0.0f;
+            stop = m_stoppedBefore[j] && m_path[j] == m_path[i] && glm::distance(to, q) < reach &&
+                   glm::distance(q, path.points.back()) < toEnd;
         }
         if (stop)
             arrive();
@@ -367,6 +377,10 @@ void World::commit(std::size_t i, std::uint64_t& wallCrossings)
 
 void World::constrain(std::size_t i, glm::vec3 from, glm::vec3& to) const
 {
+    if (m_escaping[i]) {  // started inside a wall or obstacle: on its way out (WorldEscape.cpp)
+        escapeStep(i, from, to);
+        return;
+    }
     const float r = m_radius[i];
     glm::vec2 p = xz(to);
     const glm::vec2 p0 = xz(from);

@@ -257,8 +257,11 @@ void World::stepWalker(std::size_t i)
         const glm::vec3 offset = finiteOrZero(goal - p);
         const float dist = glm::length(offset);
         glm::vec3 desired(0.0f);
+        // Through an exit at full speed: it is walked through, not stopped at (World::steer).
+        const bool throughExit = m_goals[std::size_t(m_goal[i])].exit && !(m_nav.active && m_nav.hasTarget[i]);
+        const float slowing = throughExit ? 1e-6f : w.slowingM;
         if (!(dist <= w.toleranceM || dist <= kTiny))
-            desired = offset * (nonNegative(maxSpeed) * std::min(1.0f, dist / w.slowingM) / dist);
+            desired = offset * (nonNegative(maxSpeed) * std::min(1.0f, dist / slowing) / dist);
         add(towardsVelocity(v, desired, w.gainArrival, maxForce), w.wArrival);
     }
     if (hasGoal && w.wSeek > 0.0f)

@@ -17,6 +17,20 @@ namespace throng::sim::detail {
 
 inline glm::vec2 xz(glm::vec3 v) { return {v.x, v.z}; }
 
+// An agent's own spot in its goal's disk (centre, radius) from two uniform draws u, v in
+// [0, 1): uniform over 80 % of the disk, so a crowd sharing a goal spreads over it instead
+// of converging on one point. For an exit, over 80 % of the disk less the body's radius:
+// a disk placed across a door as wide as itself has its rim on the door posts, and a walker
+// aiming at a spot near the rim pressed into the wall beside the door, just outside the
+// disk, for good (issue 23).
+inline glm::vec2 goalSpot(glm::vec2 centre, float radiusM, bool exit, float bodyRadiusM, float u, float v)
+{
+    const float reach = exit ? std::max(0.0f, radiusM - bodyRadiusM) : radiusM;
+    const float r = 0.8f * reach * std::sqrt(u);
+    const float a = 6.28318531f * v;
+    return centre + r * glm::vec2(std::cos(a), std::sin(a));
+}
+
 inline float cross(glm::vec2 a, glm::vec2 b) { return a.x * b.y - a.y * b.x; }
 
 // True when segment p0-p1 properly crosses segment a-b.
