@@ -14,6 +14,10 @@ constexpr std::uint64_t kMaxNavCells = 20'000'000;
 // Agents of one scene: placed agents, group counts, vehicles and heroes together
 // (about 300 bytes each while stepping, more when frames are recorded).
 constexpr std::uint64_t kMaxSceneAgents = 10'000'000;
+// A group may start this many times as dense as its bodies pack (overlaps part in the
+// first steps), or hold up to kDenseGroupFloor agents whatever its area.
+constexpr double kDenseGroupFactor = 4.0;
+constexpr std::uint32_t kDenseGroupFloor = 100;
 // Metres of flow strokes: the sketched field takes a sample a metre (200 km of strokes).
 constexpr double kMaxFlowStrokeLengthM = 200'000.0;
 // Static geometry farther than this from the scene bounds draws a warning: no agent comes

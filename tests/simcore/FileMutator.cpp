@@ -2,7 +2,7 @@
 
 #include <algorithm>
 #include <array>
-#include <regex>
+#include <cctype>
 #include <vector>
 
 namespace throng::test {
@@ -68,9 +68,42 @@ std::size_t pickLine(const std::vector<std::string>& ls, Draw& d)
     return d.below(ls.size());
 }
 
+// Offsets and lengths of the numbers in text: -?digits(.digits)?([eE][-+]?digits)?, not
+// inside a word. (std::regex trips GCC 12's -Wmaybe-uninitialized under the sanitizers.)
+std::vector<std::pair<std::size_t, std::size_t>> numbers(const std::string& t)
+{
+    const auto digit = [&](std::size_t i) { return i < t.size() && std::isdigit(static_cast<unsigned char>(t[i])); };
+    const auto word = [&](std::size_t i) {
+        return std::isalnum(static_cast<unsigned char>(t[i])) || t[i] == '_' || t[i] == '.';
+    };
+    std::vector<std::pair<std::size_t, std::size_t>> out;
+    std::size_t i = 0;
+    while (i < t.size()) {
+        const std::size_t start = i;
+        std::size_t j = i + (t[i] == '-' ? 1 : 0);
+        if (!digit(j) || (start > 0 && word(start - 1))) {
+            ++i;
+            continue;
+        }
+        while (digit(j))
+            ++j;
+        if (j < t.size() && t[j] == '.' && digit(j + 1))
+            for (++j; digit(j); ++j) {}
+        if (j < t.size() && (t[j] == 'e' || t[j] == 'E')) {
+            std::size_t k = j + 1;
+            if (k < t.size() && (t[k] == '-' || t[k] == '+'))
+                ++k;
+            if (digit(k))
+                for (j = k; digit(j); ++j) {}
+        }
+        out.push_back({start, j - start});
+        i = j;
+    }
+    return out;
+}
+
 std::string mutateOnce(const std::string& text, Draw& d, std::string& what)
 {
-    static const std::regex number(R"((^|[^A-Za-z_0-9.])(-?[0-9]+(\.[0-9]+)?([eE][-+]?[0-9]+)?))");
     std::vector<std::string> ls = lines(text);
     if (ls.empty() || text.empty())
         return text;
@@ -78,9 +111,7 @@ std::string mutateOnce(const std::string& text, Draw& d, std::string& what)
     case 0:
     case 1:
     case 2: {  // a number (the most common way a file goes wrong), three times as often
-        std::vector<std::pair<std::size_t, std::size_t>> at;  // offset, length
-        for (auto it = std::sregex_iterator(text.begin(), text.end(), number); it != std::sregex_iterator(); ++it)
-            at.push_back({std::size_t(it->position(2)), std::size_t(it->length(2))});
+        const std::vector<std::pair<std::size_t, std::size_t>> at = numbers(text);
         if (at.empty())
             return text;
         const auto [pos, len] = at[d.below(at.size())];

@@ -34,7 +34,7 @@ using namespace throng::test;
 namespace {
 
 #if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-constexpr std::size_t kDefaultMutants = 200;  // ASan + UBSan make each run ~10 times slower
+constexpr std::size_t kDefaultMutants = 500;  // ASan + UBSan make each run ~10 times slower
 constexpr double kHangS = 120.0;
 #else
 constexpr std::size_t kDefaultMutants = 1500;

@@ -85,14 +85,28 @@ private slots:
     void aCrowdPastTheLimitIsAnErrorAtTheGroupThatPassesIt()
     {
         const std::string groups = kOneGroup +
-                                   "  - {name: b, type: walker, count: 6000000, rect: {min: [0, 0], max: [5, 5]}}\n"
-                                   "  - {name: c, type: walker, count: 6000000, rect: {min: [0, 0], max: [5, 5]}}\n";
+                                   "  - {name: b, type: walker, count: 6000000, rect: {min: [-2000, -2000], max: [2000, 2000]}}\n"
+                                   "  - {name: c, type: walker, count: 6000000, rect: {min: [-2000, -2000], max: [2000, 2000]}}\n";
         const LoadResult r = parseScene(walkers("  fps: 24\n", "direct", groups), "crowd.yaml", "");
         const Diagnostic* d = find(r, Severity::Error, "groups[2].count");
         QVERIFY(d);
         QCOMPARE(d->line, 11);
         QVERIFY2(d->message.find("12,000,010 agents") != std::string::npos, d->message.c_str());
         QVERIFY(!find(r, Severity::Error, "groups[1].count"));
+    }
+
+    void aGroupPackedPastItsBodiesIsAnError()
+    {
+        // 10,000,000 walkers on a 100 m square (1,000 a square metre) ran for hours: each
+        // had thousands of neighbours in reach. Bodies of 0.3 m fit about 32,000 there.
+        const std::string crammed = "  - {name: a, type: walker, count: 10000000, rect: {min: [-50, -50], max: [50, 50]}}\n";
+        const LoadResult r = parseScene(walkers("  fps: 24\n", "direct", crammed), "crammed.yaml", "");
+        const Diagnostic* d = find(r, Severity::Error, "groups[0].count");
+        QVERIFY(d);
+        QVERIFY2(d->message.find("312 times as tight") != std::string::npos, d->message.c_str());
+        // Four times the packing is still a start (overlaps part in the first steps).
+        const std::string tight = "  - {name: a, type: walker, count: 120000, rect: {min: [-50, -50], max: [50, 50]}}\n";
+        QVERIFY(parseScene(walkers("  fps: 24\n", "direct", tight), "tight.yaml", "").ok());
     }
 
     void flowStrokesPastTheLimitAreAnError()

@@ -106,6 +106,37 @@ void checkAgents(YamlFields& f, const YAML::Node& root, const Scene& scene)
     }
 }
 
+// A group packed far past the bodies' own packing: every agent would have thousands of
+// neighbours within reach, and each step would crawl (10,000,000 walkers on a 100 m
+// square ran for hours). Fliers pack in the volume their altitude range spans.
+void checkGroupDensity(YamlFields& f, const YAML::Node& root, const Scene& scene)
+{
+    const YAML::Node groups = section(root, "groups");
+    const bool located = groups.IsSequence() && groups.size() == scene.groups.size();
+    for (std::size_t i = 0; i < scene.groups.size(); ++i) {
+        const SpawnGroup& g = scene.groups[i];
+        const AgentType* type = nullptr;
+        for (const AgentType& t : scene.agentTypes)
+            if (t.name == g.type)
+                type = &t;
+        if (!type || g.count <= kDenseGroupFloor)
+            continue;
+        const double r = std::max(double(type->radiusM), 0.01);
+        const double area = g.shape == AreaShape::Circle ? 3.14159265358979 * double(g.radiusM) * double(g.radiusM)
+                                                         : double(g.max.x - g.min.x) * double(g.max.y - g.min.y);
+        const bool flier = type->kind == AgentKind::Flier;
+        // Hexagonal packing of discs on the ground, face-centred packing of balls in the air.
+        const double height = std::max(double(g.altitudeM.y - g.altitudeM.x), 2.0 * r);
+        const double fit = flier ? area * height * 0.74 / (4.18879 * r * r * r) : area / (3.4641 * r * r);
+        if (double(g.count) <= kDenseGroupFactor * fit)
+            continue;
+        char m[200];
+        std::snprintf(m, sizeof m, "%u agents of radius %g m would start packed %.0f times as tight as bodies fit in %s (room for about %.0f)",
+                      g.count, r, double(g.count) / std::max(fit, 1e-9), flier ? "its area and altitude range" : "its area", fit);
+        f.error(located ? markOf(groups[i], {"count"}, root.Mark()) : root.Mark(), "groups[" + std::to_string(i) + "].count", m);
+    }
+}
+
 void checkFlowStrokes(YamlFields& f, const YAML::Node& root, const Scene& scene)
 {
     const YAML::Node strokes = section(root, "flow_strokes");
@@ -207,6 +238,7 @@ void checkSceneSizes(YamlFields& f, const YAML::Node& root, const Scene& scene)
 {
     checkNavGrid(f, root, scene);
     checkAgents(f, root, scene);
+    checkGroupDensity(f, root, scene);
     checkFlowStrokes(f, root, scene);
     checkStatics(f, root, scene);
 }
