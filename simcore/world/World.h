@@ -202,6 +202,8 @@ private:
     bool escapeTarget(glm::vec2 p, float radiusM, glm::vec2& out) const;  // false: not deeper than radiusM
     void findEscapes();
     void escapeStep(std::size_t i, glm::vec3 from, glm::vec3& to) const;
+    // Whether wall segment s is a side of a box obstacle whose inside holds p (commit).
+    bool sideOfBoxAround(const Segment& s, glm::vec2 p) const;
     float groundHeight(float x, float z) const;
     void commit(std::size_t i, std::uint64_t& wallCrossings);
     // The boids kernel (WorldFlock.cpp): sense, steer and integrate fused for a flier type

@@ -270,7 +270,11 @@ glm::vec3 World::separateBodies(std::size_t i) const
         }
         // A standing neighbour, or one of higher priority, does not give way, so this
         // agent takes the whole overlap; against one of lower priority it takes none.
-        const float share = avoidanceShare(collision(i), collision(j), m_stopped[j] != 0);
+        float share = avoidanceShare(collision(i), collision(j), m_stopped[j] != 0);
+        // A walker that the red caught on the road goes first: those waiting at the kerb,
+        // where it must get to, make room for it (set by this step's steer phase).
+        if (!m_traffic.signal.empty() && m_traffic.signal[i].clearing != m_traffic.signal[j].clearing)
+            share = m_traffic.signal[i].clearing ? 0.0f : 1.0f;
         push += dir * ((contact - dist) * share);
     }
     // Cap the correction so a squeezed agent is nudged, never thrown: at most half its
@@ -285,16 +289,16 @@ void World::commit(std::size_t i, std::uint64_t& wallCrossings)
     const glm::vec2 from = xz(m_pos[i]), to = xz(m_nextPos[i]);
     // Fliers pass over walls; only walkers and vehicles can penetrate one.
     // Vehicles and heroes go where traffic and keyframes say (a car crosses a crosswalk's kerb).
-    // One walking out of a box it started in crosses the box's side on purpose.
-    if (m_escaping[i] && glm::distance(to, m_escapeTo[i]) < 1e-4f)
-        m_escaping[i] = 0;
-    else if (!m_walls.segments().empty() && !m_steering[m_info[i].typeIndex].vehicle.flying && !m_traffic.isDriven(i) &&
-             !m_escaping[i])
+    // One walking out of a box it started in crosses that box's side on purpose; any other
+    // wall it crosses on its way out counts, as the trajectories show it.
+    if (!m_walls.segments().empty() && !m_steering[m_info[i].typeIndex].vehicle.flying && !m_traffic.isDriven(i))
         m_walls.forEachNear((from + to) * 0.5f, 0.5f * glm::length(to - from) + 0.01f, [&](std::uint32_t k) {
         const Segment& s = m_walls.segment(k);
-        if (segmentsCross(from, to, s.a, s.b))
+        if (segmentsCross(from, to, s.a, s.b) && !(m_escaping[i] && sideOfBoxAround(s, from)))
             ++wallCrossings;
     });
+    if (m_escaping[i] && glm::distance(to, m_escapeTo[i]) < 1e-4f)
+        m_escaping[i] = 0;
     // Animate: the gait advances by distance over stride length, so feet don't slide.
     // (fmod's exact answer without its call: for 0 <= x < 2^31, x - trunc(x) is exact,
     // since trunc(x) <= x < 2 trunc(x) once x >= 1 (Sterbenz), and +0 for whole x, as fmod
@@ -373,6 +377,21 @@ void World::commit(std::size_t i, std::uint64_t& wallCrossings)
         m_stopped[i] = 1;
         m_nextVel[i] = glm::vec3(0.0f);  // the velocity World::step swaps in
     }
+}
+
+bool World::sideOfBoxAround(const Segment& s, glm::vec2 p) const
+{
+    constexpr float kOnSide = 1e-3f;  // relative: the side's midpoint lies on the box's outline
+    for (const BoxObstacle& b : m_boxes) {
+        const glm::vec2 ax = xz(b.axis), az(-ax.y, ax.x), c = xz(b.centre);
+        const glm::vec2 d = p - c, m = 0.5f * (s.a + s.b) - c;
+        if (std::fabs(glm::dot(d, ax)) >= b.halfSize.x || std::fabs(glm::dot(d, az)) >= b.halfSize.y)
+            continue;  // p is not inside this box
+        const float edge = std::max(std::fabs(glm::dot(m, ax)) / b.halfSize.x, std::fabs(glm::dot(m, az)) / b.halfSize.y);
+        if (std::fabs(edge - 1.0f) < kOnSide)
+            return true;
+    }
+    return false;
 }
 
 void World::constrain(std::size_t i, glm::vec3 from, glm::vec3& to) const

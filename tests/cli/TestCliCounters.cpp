@@ -65,9 +65,9 @@ struct Box {
 constexpr double kToleranceM = 0.01;  // the stats' overlap and obstacle tolerance (docs)
 
 // Walls, circles and boxes. Walker 1 stands in a circle obstacle that overlaps a wall:
-// pushed out of the circle, it lands on the wall's other side. Walkers 2 and 3 stand
-// inside two boxes (one turned 30 degrees), whose sides hold them in for good. Hero 9
-// walks through a circle and a box turned 45 degrees.
+// walked out of the circle the shortest way, it ends on the wall's other side. Walkers 2
+// and 3 stand inside two boxes (one turned 30 degrees) and walk out of them. Hero 9 walks
+// through a circle and a box turned 45 degrees.
 const char* kWallScene = R"(throng: 1
 settings: {fps: 20, duration: 6, seed: 5, bounds: {min: [-30, -30], max: [30, 30]}}
 agent_types:
@@ -189,9 +189,18 @@ private slots:
             for (auto it = std::next(rows.begin()); it != rows.end(); ++it) {
                 const TrajectoryRow& a = std::prev(it)->second;
                 const TrajectoryRow& b = it->second;
+                // A walker that starts inside a box walks out across that box's side: that
+                // crossing is the way out of a bad placement, not a penetration (docs/stats.md).
+                auto ownBoxSide = [&](const std::array<double, 4>& w) {
+                    for (const Box& box : boxes)
+                        if (box.distance(a.x, a.z) == 0.0 && box.distance(rows.begin()->second.x, rows.begin()->second.z) == 0.0 &&
+                            box.distance(0.5 * (w[0] + w[2]), 0.5 * (w[1] + w[3])) < 1e-6)
+                            return true;
+                    return false;
+                };
                 if (id != 9)  // the hero goes where its keyframes say: no wall holds it
                     for (const auto& w : walls)
-                        crossings += segmentsCrossD(a.x, a.z, b.x, b.z, w[0], w[1], w[2], w[3]);
+                        crossings += segmentsCrossD(a.x, a.z, b.x, b.z, w[0], w[1], w[2], w[3]) && !ownBoxSide(w);
                 for (const auto& c : circles)
                     inObstacle += std::hypot(b.x - c[0], b.z - c[1]) < c[2] + 0.3 - kToleranceM;
                 for (const Box& box : boxes) {
@@ -205,11 +214,12 @@ private slots:
         qInfo("wall crossings %llu (stats %d); obstacle agent-steps %llu, %llu in boxes (stats %d)",
               (unsigned long long)crossings, s["wall_penetrations"].toInt(), (unsigned long long)inObstacle,
               (unsigned long long)inBox, s["obstacle_penetrations"].toInt());
-        // Walker 1 crossed the wall once (pushed out of the circle); walkers 2 and 3 are in
-        // their boxes on all 119 steps; the hero passes through a circle and a box.
+        // Walker 1 crossed the wall once (its shortest way out of the circle lies across
+        // it); walkers 2 and 3 walk out of the boxes they start in, over some steps; the
+        // hero passes through a circle and a box.
         QCOMPARE(crossings, std::uint64_t(1));
         QCOMPARE(std::uint64_t(s["wall_penetrations"].toInt()), crossings);
-        QVERIFY(inBox > 2 * 119);
+        QVERIFY(inBox >= 20);
         QVERIFY(inObstacle > inBox);
         QCOMPARE(std::uint64_t(s["obstacle_penetrations"].toInt()), inObstacle);
     }
