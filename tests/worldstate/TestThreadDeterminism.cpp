@@ -146,6 +146,15 @@ Scene smallMurmuration()
     return scene;
 }
 
+// The scene of a data row (sameFramesForAnyThreadCount_data).
+Scene makeScene(int row)
+{
+    const std::function<Scene()> make[] = {busyCrossroads, [] { return parse(kPlanned); },
+                                           [] { return parse(kEvacuation); }, [] { return parse(kChatter); },
+                                           smallMurmuration};
+    return make[row]();
+}
+
 struct Run {
     std::uint64_t hash = 0;
     std::vector<std::uint64_t> chunksPerThread;  // of the World that ran the last steps
@@ -197,10 +206,7 @@ private slots:
     {
         QFETCH(int, scene);
         QFETCH(int, steps);
-        const std::function<Scene()> make[] = {busyCrossroads, [] { return parse(kPlanned); },
-                                               [] { return parse(kEvacuation); }, [] { return parse(kChatter); },
-                                               smallMurmuration};
-        const Scene s = make[scene]();
+        const Scene s = makeScene(scene);
         const auto n = std::size_t(steps);
         const Run one = run(s, 1, n), two = run(s, 2, n);
         QVERIFY2(one.agents >= 2400, qPrintable(QString("%1 agents").arg(one.agents)));
@@ -219,10 +225,7 @@ private slots:
     {
         QFETCH(int, scene);
         QFETCH(int, steps);
-        const std::function<Scene()> make[] = {busyCrossroads, [] { return parse(kPlanned); },
-                                               [] { return parse(kEvacuation); }, [] { return parse(kChatter); },
-                                               smallMurmuration};
-        const Scene s = make[scene]();
+        const Scene s = makeScene(scene);
         const auto n = std::size_t(steps);
         const Run oneThenTwo = run(s, 1, n, 2), twoThenOne = run(s, 2, n, 1);
         QCOMPARE(oneThenTwo.chunksPerThread.size(), std::size_t(2));
