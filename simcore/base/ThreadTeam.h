@@ -5,6 +5,7 @@
 // chunks. It never decides a result: chunk boundaries depend only on the loop's length and
 // grain, never on the thread count or on which thread runs a chunk.
 
+#include <algorithm>
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
@@ -34,7 +35,8 @@ public:
             return;
         grain = grain == 0 ? 1 : grain;
         if (m_size == 1 || n <= grain) {
-            fn(std::size_t(0), n, 0);
+            for (std::size_t begin = 0; begin < n; begin += grain)
+                fn(begin, std::min(n, begin + grain), 0);
             noteCallerRan((n + grain - 1) / grain);
             return;
         }
