@@ -1,6 +1,7 @@
 #include "NavTestMaps.h"
 
 #include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -114,6 +115,14 @@ Scene fieldTestScene(int which)
             s.obstacles.push_back({"cone", ObstacleShape::Circle, {4.0f + 4.0f * float(k), 6.0f + 3.0f * float(k % 3)}, 0.8f, {1, 1}, 0.0f});
     }
     return s;
+}
+
+float angleDeg(glm::vec2 a, glm::vec2 b)
+{
+    const float la = glm::length(a), lb = glm::length(b);
+    if (la <= 0.0f || lb <= 0.0f)
+        return 180.0f;
+    return glm::degrees(std::acos(std::clamp(glm::dot(a, b) / (la * lb), -1.0f, 1.0f)));
 }
 
 }  // namespace throng::test

@@ -24,6 +24,9 @@ bool polylineStaysWalkable(const sim::NavGrid& grid, const std::vector<sim::NavC
 
 float pointSegmentDistance(glm::vec2 p, glm::vec2 a, glm::vec2 b);
 
+// Angle between two directions, degrees in [0, 180]; 180 when either is zero.
+float angleDeg(glm::vec2 a, glm::vec2 b);
+
 // Three maps used by the field tests: open ground, a room with a door, a maze of walls.
 sim::Scene fieldTestScene(int which);
 

@@ -23,14 +23,6 @@ using namespace throng::test;
 
 namespace {
 
-float angleDeg(glm::vec2 a, glm::vec2 b)
-{
-    const float la = glm::length(a), lb = glm::length(b);
-    if (la <= 0.0f || lb <= 0.0f)
-        return 180.0f;
-    return glm::degrees(std::acos(std::clamp(glm::dot(a, b) / (la * lb), -1.0f, 1.0f)));
-}
-
 Scene corridor()
 {
     Scene s;

@@ -5,6 +5,7 @@
 // 20 strokes of 280 m here (5,600 samples) asked for a 1 GB matrix and minutes of
 // factorising. Timings are in bench/SketchBench.cpp, not here.
 #include "TestRegistry.h"
+#include "NavTestMaps.h"
 
 #include "simcore/nav/SketchField.h"
 
@@ -19,16 +20,9 @@
 #include <cstring>
 
 using namespace throng::sim;
+using namespace throng::test;
 
 namespace {
-
-float angleDeg(glm::vec2 a, glm::vec2 b)
-{
-    const float la = glm::length(a), lb = glm::length(b);
-    if (la <= 0.0f || lb <= 0.0f)
-        return 180.0f;
-    return glm::degrees(std::acos(std::clamp(glm::dot(a, b) / (la * lb), -1.0f, 1.0f)));
-}
 
 // A 300 x 130 m concourse with 20 wavy lanes 6 m apart, 280 m long, walked in turn east
 // and west (the hardest layout for a smooth field: opposite flows side by side), and a
