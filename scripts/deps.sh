@@ -3,7 +3,7 @@
 # no network) when all are there. Usage: scripts/deps.sh [build|test]
 set -euo pipefail
 
-packages=(g++ cmake ninja-build pkg-config
+packages=(g++ cmake ninja-build pkg-config ccache
           qt6-base-dev qt6-base-dev-tools libqt6opengl6-dev
           libyaml-cpp-dev libglm-dev libtinygltf-dev libeigen3-dev libtbb-dev
           libgl-dev libgl1-mesa-dri libglx-mesa0)

@@ -12,11 +12,12 @@ xvfb-run -a -s "-screen 0 1920x1080x24" ctest --test-dir "$root/build" --output-
 
 echo "== simcore, nav, traffic, brain and export under ASan + UBSan"
 san="$root/build-sanitize"
+source "$root/scripts/ccache.sh"
 if [ ! -f "$san/build.ninja" ]; then
   # -O1 with line tables only: the sanitizers' usual setting; it builds in about half the
   # time of -O2 -g, which keeps the whole CI run well within its 30 minutes.
   cmake -S "$root" -B "$san" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTHRONG_SANITIZE=ON \
-    -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DTHRONG_BUILD_EDITOR=OFF >/dev/null
+    -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DTHRONG_BUILD_EDITOR=OFF "${ccache_args[@]}" >/dev/null
 fi
 cmake --build "$san" --target test_simcore test_worldbrain test_worldstate test_demos test_worldnav test_nav test_traffic test_brain test_export -- -j"$jobs"
 # TestExternalReaders is left out here: it runs third-party readers (Blender, three.js,
