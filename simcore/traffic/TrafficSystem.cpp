@@ -1,5 +1,7 @@
 #include "simcore/traffic/TrafficSystem.h"
 
+#include "simcore/scene/StepRate.h"
+
 #include "simcore/world/Rng.h"
 
 #include <glm/geometric.hpp>
@@ -18,7 +20,7 @@ TrafficSystem::TrafficSystem(const Scene& scene, const TrafficOptions& options)
     : m_opt(options), m_net(scene), m_lights(scene.trafficLights)
 {
     m_seed = options.overrideSeed ? options.seed : scene.settings.seed;
-    m_dt = 1.0f / scene.settings.fps;
+    m_dt = physicsStepS(scene.settings.fps);  // the World's step (StepRate.h)
     m_threads = ThreadTeam::resolve(options.threads);
 
     std::vector<std::string> paramType;

@@ -36,6 +36,7 @@ RunStats RunStats::from(const World& world, std::uint64_t frames, double wallSec
     RunStats s;
     s.agents = world.agentCount();
     s.frames = frames;
+    s.subSteps = world.subSteps();
     s.seed = world.seed();
     s.threads = world.threads();
     s.chunksPerThread = world.team().chunksRun();
@@ -87,7 +88,9 @@ std::string RunStats::toJson() const
     };
     field("agents", std::to_string(agents));
     field("frames", std::to_string(frames));
-    field("steps", std::to_string(frames > 0 ? frames - 1 : 0));
+    const std::uint64_t steps = frames > 0 ? (frames - 1) * std::uint64_t(subSteps) : 0;
+    field("steps", std::to_string(steps));
+    field("sub_steps", std::to_string(subSteps));
     field("seed", std::to_string(seed));
     field("threads", std::to_string(threads));
     std::string chunks;
@@ -103,7 +106,7 @@ std::string RunStats::toJson() const
     field("obstacle_penetrations", std::to_string(counters.obstaclePenetrations));
     field("overlapping_pairs", std::to_string(counters.overlappingPairs));
     field("overlapping_pairs_per_step",
-          number(frames > 1 ? double(counters.overlappingPairs) / double(frames - 1) : 0.0));
+          number(steps > 0 ? double(counters.overlappingPairs) / double(steps) : 0.0));
     field("red_light_violations", std::to_string(counters.redLightViolations + vehicleRedLightViolations));
     field("pedestrian_red_light_violations", std::to_string(counters.redLightViolations));
     field("vehicle_red_light_violations", std::to_string(vehicleRedLightViolations));

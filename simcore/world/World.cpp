@@ -4,6 +4,7 @@
 #include "simcore/steering/PathFollowing.h"
 
 #include "simcore/scene/SceneOrigin.h"
+#include "simcore/scene/StepRate.h"
 #include "simcore/scene/TerrainHeight.h"
 #include "simcore/traffic/LightPhase.h"
 #include "simcore/world/RepeatedStatics.h"
@@ -66,7 +67,9 @@ World::World(const Scene& scene, const WorldOptions& options)
 void World::build(const Scene& scene, const WorldOptions& options)
 {
     m_seed = options.overrideSeed ? options.seed : scene.settings.seed;
-    m_dt = 1.0f / scene.settings.fps;
+    m_frameDt = 1.0f / scene.settings.fps;
+    m_subSteps = subStepsPerFrame(scene.settings.fps);
+    m_dt = physicsStepS(scene.settings.fps);
     m_neighbourSweep = options.neighbourSweep;
     m_steerEight = options.steerEight && canSteerEight();
 
@@ -374,7 +377,7 @@ void World::snapshot(std::vector<AgentFrame>& out) const
 
 void World::startRecording(FrameCache& cache) const
 {
-    cache.reset(m_info, 1.0f / m_dt, origin());
+    cache.reset(m_info, 1.0f / m_frameDt, origin());
     std::vector<AgentFrame> frame;
     snapshot(frame);
     cache.append(frame);

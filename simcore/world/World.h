@@ -62,12 +62,17 @@ public:
     // goals, paths and leaders resolved to indices, walls and obstacles into grids.
     World(const Scene& scene, const WorldOptions& options = {});
 
-    // Advances exactly one fixed step of 1 / fps seconds.
+    // Advances exactly one frame of 1 / fps seconds: one step, or below 12 fps several
+    // equal sub-steps (StepRate.h).
     void step();
 
     std::size_t agentCount() const { return m_pos.size(); }
-    std::uint64_t stepIndex() const { return m_step; }
-    float dt() const { return m_dt; }
+    // Frames stepped so far.
+    std::uint64_t stepIndex() const { return m_step / std::uint64_t(m_subSteps); }
+    // A frame's length, s (1 / fps).
+    float dt() const { return m_frameDt; }
+    // Steps per frame (1 from 12 fps up).
+    int subSteps() const { return m_subSteps; }
     double timeS() const { return double(m_step) * double(m_dt); }
     std::uint64_t seed() const { return m_seed; }
     int threads() const { return m_team.size(); }
@@ -161,6 +166,8 @@ public:
                     std::vector<std::int32_t>* previous = nullptr);
 
 private:
+    // One step of m_dt: the phases World::step runs once a frame, or per sub-step.
+    void stepOnce();
     // adoptState once the checkpoint is in this World's order; previous(i) as above.
     bool adoptMatched(const WorldState& state, const Scene& stateScene, const Scene& thisScene,
                       const std::function<std::int32_t(std::size_t)>& previous);
@@ -396,8 +403,10 @@ private:
     float m_maxRadius = 0.0f;    // the largest body radius, m
     StepCounters m_counters;
     std::uint64_t m_seed = 1;
-    std::uint64_t m_step = 0;
-    float m_dt = 1.0f / 24.0f;
+    std::uint64_t m_step = 0;  // steps, m_subSteps per frame
+    float m_frameDt = 1.0f / 24.0f;
+    int m_subSteps = 1;
+    float m_dt = 1.0f / 24.0f;  // one step's length, s (a frame's below 12 fps: StepRate.h)
     ThreadTeam m_team;
     WorldTraffic m_traffic;
     WorldNav m_nav;

@@ -23,6 +23,12 @@ using namespace detail;
 
 void World::step()
 {
+    for (int k = 0; k < m_subSteps; ++k)
+        stepOnce();
+}
+
+void World::stepOnce()
+{
     const std::size_t n = m_pos.size();
     // Anything to constrain walkers against? Not in an open field like `cross`.
     const bool hasStatics = !m_walls.segments().empty() || !m_circles.empty();

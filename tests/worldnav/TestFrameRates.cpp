@@ -1,0 +1,191 @@
+// Low frame rates (issue 23, finding 2): at 1 fps a walker took 1.4 m at a time, through
+// anyone in its way, and one walker of a 40-walker room never left. Below 12 fps a frame
+// is now cut into equal sub-steps of at most 1/12 s (StepRate.h). Where 12 / fps is a
+// whole number the sub-step is exactly 1/12 s, so the crowd at 1, 2, 3, 4 or 6 fps is the
+// crowd at 12 fps, frame for frame, on scenes of our own: rooms with doors entered
+// head-on and from the side, A* walkers among posts, crowds crossing in the open.
+#include "NavRig.h"
+#include "TestRegistry.h"
+
+#include "simcore/scene/StepRate.h"
+#include "simcore/world/RunStats.h"
+
+#include <QTest>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+using namespace throng::sim;
+using throng::test::parse;
+
+namespace {
+
+// A 14 m x 14 m room whose east wall has a door of `doorM` centred at z = doorZ, an exit
+// disk across the doorway, `count` walkers in the rectangle spawn.
+std::string room(float doorM, float doorZ, int count, const char* spawnMin, const char* spawnMax, float fps,
+                 const char* navigation = "direct", const char* extra = "")
+{
+    char buf[2048];
+    std::snprintf(buf, sizeof buf,
+                  "throng: 1\n"
+                  "settings: {fps: %g, seed: 3, bounds: {min: [-10, -10], max: [12, 10]}, nav_cell: 0.25}\n"
+                  "agent_types:\n"
+                  "  - {name: walker, radius: 0.25, navigation: %s}\n"
+                  "walls:\n"
+                  "  - {points: [[7, %g], [7, 7], [-7, 7], [-7, -7], [7, -7], [7, %g]]}\n"
+                  "%s"
+                  "goals:\n"
+                  "  - {name: door, position: [7.3, %g], radius: %g, exit: true}\n"
+                  "groups:\n"
+                  "  - {name: crowd, type: walker, count: %d, rect: {min: %s, max: %s}, goal: door}\n",
+                  fps, navigation, doorZ + 0.5f * doorM, doorZ - 0.5f * doorM, extra, doorZ, 0.5f * doorM, count,
+                  spawnMin, spawnMax);
+    return buf;
+}
+
+// Two crowds of `count` cross a 20 m field head-on, each to a goal beyond the other.
+std::string headOn(int count, float fps)
+{
+    char buf[2048];
+    std::snprintf(buf, sizeof buf,
+                  "throng: 1\n"
+                  "settings: {fps: %g, seed: 3, bounds: {min: [-20, -12], max: [20, 12]}}\n"
+                  "agent_types:\n"
+                  "  - {name: walker, radius: 0.25}\n"
+                  "goals:\n"
+                  "  - {name: east, position: [14, 0], radius: 4}\n"
+                  "  - {name: west, position: [-14, 0], radius: 4}\n"
+                  "groups:\n"
+                  "  - {name: a, type: walker, count: %d, rect: {min: [-14, -4], max: [-8, 4]}, goal: east}\n"
+                  "  - {name: b, type: walker, count: %d, rect: {min: [8, -4], max: [14, 4]}, goal: west}\n",
+                  fps, count, count);
+    return buf;
+}
+
+using SceneAt = std::string (*)(float fps);
+
+std::size_t outOrArrived(const World& w)
+{
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < w.agentCount(); ++i)
+        n += w.isOut(i) || w.hasArrived(i);
+    return n;
+}
+
+}  // namespace
+
+class TestFrameRates : public QObject {
+    Q_OBJECT
+private slots:
+    void subStepsPerFrame_data()
+    {
+        QTest::addColumn<float>("fps");
+        QTest::addColumn<int>("steps");
+        QTest::newRow("240 fps") << 240.0f << 1;
+        QTest::newRow("24 fps") << 24.0f << 1;
+        QTest::newRow("12 fps") << 12.0f << 1;
+        QTest::newRow("11.9 fps") << 11.9f << 2;
+        QTest::newRow("10 fps") << 10.0f << 2;
+        QTest::newRow("6 fps") << 6.0f << 2;
+        QTest::newRow("5 fps") << 5.0f << 3;
+        QTest::newRow("1 fps") << 1.0f << 12;
+        QTest::newRow("0.5 fps") << 0.5f << 24;
+    }
+
+    // No step is longer than 1/12 s, and a frame is still 1 / fps.
+    void subStepsPerFrame()
+    {
+        QFETCH(float, fps);
+        QFETCH(int, steps);
+        QCOMPARE(throng::sim::subStepsPerFrame(fps), steps);
+        QVERIFY(physicsStepS(fps) <= 1.0f / 12.0f * 1.0001f);
+        QVERIFY(std::abs(physicsStepS(fps) * float(steps) - 1.0f / fps) < 1e-5f / fps);
+    }
+
+    void lowFrameRatesMoveAsAt12Fps_data()
+    {
+        QTest::addColumn<int>("sceneIndex");
+        QTest::addColumn<float>("fps");
+        QTest::addColumn<double>("seconds");
+        const SceneAt scenes[] = {
+            [](float fps) { return room(1.0f, 0.0f, 40, "[-6, -6]", "[5, 6]", fps); },
+            [](float fps) { return room(1.0f, 0.0f, 120, "[-6, -6]", "[5, 6]", fps); },
+            [](float fps) { return room(2.4f, 4.5f, 150, "[-6, -6]", "[4, 1]", fps); },
+            [](float fps) {
+                return room(1.2f, -2.0f, 80, "[-6, -6]", "[-1, 6]", fps, "astar",
+                            "obstacles:\n"
+                            "  - {shape: circle, center: [2, 0], radius: 0.6}\n"
+                            "  - {shape: circle, center: [2, 3], radius: 0.6}\n"
+                            "  - {shape: box, center: [4.5, 1.5], size: [1, 2]}\n");
+            },
+            [](float fps) { return headOn(60, fps); },
+        };
+        static_assert(std::size(scenes) == 5);
+        const char* names[] = {"40 walkers, 1 m door", "120 walkers, 1 m door", "150 walkers, 2.4 m door, side",
+                               "80 A* walkers among posts", "2 x 60 head-on"};
+        for (int k = 0; k < 5; ++k)
+            for (const float fps : {1.0f, 2.0f, 4.0f, 6.0f})
+                QTest::newRow(qPrintable(QString("%1 at %2 fps").arg(names[k]).arg(fps))) << k << fps
+                                                                                        << (k == 1 ? 90.0 : 45.0);
+    }
+
+    // The crowd at a low frame rate is the crowd at 12 fps, frame for frame, and so are its
+    // figures: the last walker out, the stats' steps and counters.
+    void lowFrameRatesMoveAsAt12Fps()
+    {
+        QFETCH(int, sceneIndex);
+        QFETCH(float, fps);
+        QFETCH(double, seconds);
+        const SceneAt scenes[] = {
+            [](float f) { return room(1.0f, 0.0f, 40, "[-6, -6]", "[5, 6]", f); },
+            [](float f) { return room(1.0f, 0.0f, 120, "[-6, -6]", "[5, 6]", f); },
+            [](float f) { return room(2.4f, 4.5f, 150, "[-6, -6]", "[4, 1]", f); },
+            [](float f) {
+                return room(1.2f, -2.0f, 80, "[-6, -6]", "[-1, 6]", f, "astar",
+                            "obstacles:\n"
+                            "  - {shape: circle, center: [2, 0], radius: 0.6}\n"
+                            "  - {shape: circle, center: [2, 3], radius: 0.6}\n"
+                            "  - {shape: box, center: [4.5, 1.5], size: [1, 2]}\n");
+            },
+            [](float f) { return headOn(60, f); },
+        };
+        World low(parse(scenes[sceneIndex](fps)));
+        World twelve(parse(scenes[sceneIndex](12.0f)));
+        const int per = int(std::lround(12.0f / fps));
+        QCOMPARE(low.subSteps(), per);
+        QCOMPARE(low.dt(), 1.0f / fps);
+        const int frames = int(seconds * double(fps));
+        for (int frame = 1; frame <= frames; ++frame) {
+            low.step();
+            for (int k = 0; k < per; ++k)
+                twelve.step();
+            QCOMPARE(low.stepIndex(), std::uint64_t(frame));
+            QCOMPARE(twelve.stepIndex(), std::uint64_t(frame * per));
+            QVERIFY(std::abs(low.timeS() - twelve.timeS()) < 1e-6 * twelve.timeS() + 1e-9);
+            for (std::size_t i = 0; i < low.agentCount(); ++i)
+                if (low.positions()[i] != twelve.positions()[i])
+                    QFAIL(qPrintable(QString("agent %1 at frame %2 (%3 s) stands elsewhere than at 12 fps")
+                                         .arg(i).arg(frame).arg(low.timeS())));
+        }
+        // Something happened: walkers moved, and most got out or arrived.
+        const std::size_t done = outOrArrived(low);
+        qInfo("%zu of %zu out or arrived after %.0f s", done, low.agentCount(), seconds);
+        QVERIFY(done * 2 > low.agentCount());
+        QCOMPARE(done, outOrArrived(twelve));
+        for (std::size_t i = 0; i < low.agentCount(); ++i)
+            QCOMPARE(low.arrivalTimeS(i), twelve.arrivalTimeS(i));
+        // The stats count every step: the same counters, the steps of a frame times its frames.
+        const RunStats a = RunStats::from(low, std::uint64_t(frames) + 1, 1.0);
+        const RunStats b = RunStats::from(twelve, std::uint64_t(frames * per) + 1, 1.0);
+        QCOMPARE(a.subSteps, per);
+        QCOMPARE(a.counters.overlappingPairs, b.counters.overlappingPairs);
+        QCOMPARE(a.counters.wallPenetrations, b.counters.wallPenetrations);
+        QCOMPARE(a.counters.agentSteps, b.counters.agentSteps);
+        QVERIFY(a.toJson().find("\"steps\": " + std::to_string(frames * per) + ",") != std::string::npos);
+        QVERIFY(a.toJson().find("\"sub_steps\": " + std::to_string(per) + ",") != std::string::npos);
+    }
+};
+
+THRONG_REGISTER_TEST(TestFrameRates)
+#include "TestFrameRates.moc"
