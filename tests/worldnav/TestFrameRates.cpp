@@ -63,15 +63,29 @@ std::string headOn(int count, float fps)
     return buf;
 }
 
-using SceneAt = std::string (*)(float fps);
+// The family: a name, the scene at a frame rate, and how long to watch it.
+struct Case {
+    const char* name;
+    std::string (*scene)(float fps);
+    double seconds;
+};
 
-std::size_t outOrArrived(const World& w)
-{
-    std::size_t n = 0;
-    for (std::size_t i = 0; i < w.agentCount(); ++i)
-        n += w.isOut(i) || w.hasArrived(i);
-    return n;
-}
+const Case kCases[] = {
+    {"40 walkers, 1 m door", [](float fps) { return room(1.0f, 0.0f, 40, "[-6, -6]", "[5, 6]", fps); }, 45.0},
+    {"120 walkers, 1 m door", [](float fps) { return room(1.0f, 0.0f, 120, "[-6, -6]", "[5, 6]", fps); }, 90.0},
+    {"150 walkers, 2.4 m door, side", [](float fps) { return room(2.4f, 4.5f, 150, "[-6, -6]", "[4, 1]", fps); },
+     45.0},
+    {"80 A* walkers among posts",
+     [](float fps) {
+         return room(1.2f, -2.0f, 80, "[-6, -6]", "[-1, 6]", fps, "astar",
+                     "obstacles:\n"
+                     "  - {shape: circle, center: [2, 0], radius: 0.6}\n"
+                     "  - {shape: circle, center: [2, 3], radius: 0.6}\n"
+                     "  - {shape: box, center: [4.5, 1.5], size: [1, 2]}\n");
+     },
+     45.0},
+    {"2 x 60 head-on", [](float fps) { return headOn(60, fps); }, 45.0},
+};
 
 }  // namespace
 
@@ -105,53 +119,23 @@ private slots:
 
     void lowFrameRatesMoveAsAt12Fps_data()
     {
-        QTest::addColumn<int>("sceneIndex");
+        QTest::addColumn<int>("caseIndex");
         QTest::addColumn<float>("fps");
-        QTest::addColumn<double>("seconds");
-        const SceneAt scenes[] = {
-            [](float fps) { return room(1.0f, 0.0f, 40, "[-6, -6]", "[5, 6]", fps); },
-            [](float fps) { return room(1.0f, 0.0f, 120, "[-6, -6]", "[5, 6]", fps); },
-            [](float fps) { return room(2.4f, 4.5f, 150, "[-6, -6]", "[4, 1]", fps); },
-            [](float fps) {
-                return room(1.2f, -2.0f, 80, "[-6, -6]", "[-1, 6]", fps, "astar",
-                            "obstacles:\n"
-                            "  - {shape: circle, center: [2, 0], radius: 0.6}\n"
-                            "  - {shape: circle, center: [2, 3], radius: 0.6}\n"
-                            "  - {shape: box, center: [4.5, 1.5], size: [1, 2]}\n");
-            },
-            [](float fps) { return headOn(60, fps); },
-        };
-        static_assert(std::size(scenes) == 5);
-        const char* names[] = {"40 walkers, 1 m door", "120 walkers, 1 m door", "150 walkers, 2.4 m door, side",
-                               "80 A* walkers among posts", "2 x 60 head-on"};
-        for (int k = 0; k < 5; ++k)
+        for (int k = 0; k < int(std::size(kCases)); ++k)
             for (const float fps : {1.0f, 2.0f, 4.0f, 6.0f})
-                QTest::newRow(qPrintable(QString("%1 at %2 fps").arg(names[k]).arg(fps))) << k << fps
-                                                                                        << (k == 1 ? 90.0 : 45.0);
+                QTest::newRow(qPrintable(QString("%1 at %2 fps").arg(kCases[k].name).arg(fps))) << k << fps;
     }
 
     // The crowd at a low frame rate is the crowd at 12 fps, frame for frame, and so are its
     // figures: the last walker out, the stats' steps and counters.
     void lowFrameRatesMoveAsAt12Fps()
     {
-        QFETCH(int, sceneIndex);
+        QFETCH(int, caseIndex);
         QFETCH(float, fps);
-        QFETCH(double, seconds);
-        const SceneAt scenes[] = {
-            [](float f) { return room(1.0f, 0.0f, 40, "[-6, -6]", "[5, 6]", f); },
-            [](float f) { return room(1.0f, 0.0f, 120, "[-6, -6]", "[5, 6]", f); },
-            [](float f) { return room(2.4f, 4.5f, 150, "[-6, -6]", "[4, 1]", f); },
-            [](float f) {
-                return room(1.2f, -2.0f, 80, "[-6, -6]", "[-1, 6]", f, "astar",
-                            "obstacles:\n"
-                            "  - {shape: circle, center: [2, 0], radius: 0.6}\n"
-                            "  - {shape: circle, center: [2, 3], radius: 0.6}\n"
-                            "  - {shape: box, center: [4.5, 1.5], size: [1, 2]}\n");
-            },
-            [](float f) { return headOn(60, f); },
-        };
-        World low(parse(scenes[sceneIndex](fps)));
-        World twelve(parse(scenes[sceneIndex](12.0f)));
+        const Case& c = kCases[caseIndex];
+        const double seconds = c.seconds;
+        World low(parse(c.scene(fps)));
+        World twelve(parse(c.scene(12.0f)));
         const int per = int(std::lround(12.0f / fps));
         QCOMPARE(low.subSteps(), per);
         QCOMPARE(low.dt(), 1.0f / fps);
@@ -168,11 +152,11 @@ private slots:
                     QFAIL(qPrintable(QString("agent %1 at frame %2 (%3 s) stands elsewhere than at 12 fps")
                                          .arg(i).arg(frame).arg(low.timeS())));
         }
-        // Something happened: walkers moved, and most got out or arrived.
-        const std::size_t done = outOrArrived(low);
-        qInfo("%zu of %zu out or arrived after %.0f s", done, low.agentCount(), seconds);
+        // Something happened: walkers moved, and most arrived (through the exit, or at their goal).
+        const std::size_t done = throng::test::arrivedCount(low);
+        qInfo("%zu of %zu arrived after %.0f s", done, low.agentCount(), seconds);
         QVERIFY(done * 2 > low.agentCount());
-        QCOMPARE(done, outOrArrived(twelve));
+        QCOMPARE(done, throng::test::arrivedCount(twelve));
         for (std::size_t i = 0; i < low.agentCount(); ++i)
             QCOMPARE(low.arrivalTimeS(i), twelve.arrivalTimeS(i));
         // The stats count every step: the same counters, the steps of a frame times its frames.
