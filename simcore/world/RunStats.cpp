@@ -107,6 +107,8 @@ std::string RunStats::toJson() const
     field("overlapping_pairs", std::to_string(counters.overlappingPairs));
     field("overlapping_pairs_per_step",
           number(steps > 0 ? double(counters.overlappingPairs) / double(steps) : 0.0));
+    field("overlap_depth_p95", number(counters.overlapDepths.quantile(0.95)));
+    field("overlap_depth_max", number(double(counters.overlapDepths.deepest)));
     field("red_light_violations", std::to_string(counters.redLightViolations + vehicleRedLightViolations));
     field("pedestrian_red_light_violations", std::to_string(counters.redLightViolations));
     field("vehicle_red_light_violations", std::to_string(vehicleRedLightViolations));

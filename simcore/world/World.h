@@ -279,9 +279,11 @@ private:
     // the agents of higher index; those of the k-th of the grid's order, k in [begin, end),
     // with the agents after it (NeighbourGrid::forEachLaterNearRun, or forEachLaterNear
     // for each). Only a body within i's radius plus the largest one can overlap i.
-    bool overlapping(std::size_t i, glm::vec3 p, std::uint32_t j, glm::vec3 q) const;
-    std::uint64_t overlapsAfter(std::size_t i) const;
-    std::uint64_t laterOverlaps(std::size_t begin, std::size_t end) const;
+    // Whether i at p and j at q overlap by more than the tolerance; if so, their overlap
+    // goes into `depths` as a fraction of r1 + r2.
+    bool overlapping(std::size_t i, glm::vec3 p, std::uint32_t j, glm::vec3 q, OverlapDepths& depths) const;
+    std::uint64_t overlapsAfter(std::size_t i, OverlapDepths& depths) const;
+    std::uint64_t laterOverlaps(std::size_t begin, std::size_t end, OverlapDepths& depths) const;
     // Leader overtakes (WorldLeaders.cpp): followers ahead of their leader this step.
     void countLeaderOvertakes();
     float routeProgress(std::size_t path, glm::vec2 p) const;

@@ -15,6 +15,7 @@
 #include <atomic>
 #include <cmath>
 #include <cstdint>
+#include <mutex>
 #include <utility>
 
 namespace throng::sim {
@@ -466,18 +467,30 @@ void World::countStep(std::uint64_t nonFinite)
     // met once, from the earlier of the two (NeighbourGrid::forEachLaterNear), and the
     // positions are read in the grid's copy, near each other in memory. A position that
     // is not a number breaks the order by height, so then they are counted by index.
+    // Each chunk tallies its pairs' depths; the few chunks that found any add them in
+    // (integer counts and a maximum: the same total in any order).
     const bool inGridOrder = m_grid.order().size() == n;
+    std::mutex depthsLock;
+    auto tally = [&](const OverlapDepths& local, std::uint64_t count) {
+        if (count > 0) {
+            const std::lock_guard<std::mutex> lock(depthsLock);
+            m_counters.overlapDepths.add(local);
+        }
+        return count;
+    };
     if (inGridOrder && nonFinite == 0) {
         const std::size_t run = std::max<std::size_t>(1024, n / (std::size_t(m_team.size()) * 16));
         overlaps = m_team.sumChunks(n, run, [&](std::size_t begin, std::size_t end, int) {
-            return laterOverlaps(begin, end);
+            OverlapDepths local;
+            return tally(local, laterOverlaps(begin, end, local));
         });
     } else {
         overlaps = m_team.sumChunks(n, 1024, [&](std::size_t begin, std::size_t end, int) {
+            OverlapDepths local;
             std::uint64_t count = 0;
             for (std::size_t i = begin; i < end; ++i)
-                count += m_out[i] ? 0 : overlapsAfter(i);  // out: left through an exit
-            return count;
+                count += m_out[i] ? 0 : overlapsAfter(i, local);  // out: left through an exit
+            return tally(local, count);
         });
     }
     if (m_allFliers) {
@@ -543,22 +556,26 @@ void World::countStep(std::uint64_t nonFinite)
     m_counters.agentSteps += n;
 }
 
-bool World::overlapping(std::size_t i, glm::vec3 p, std::uint32_t j, glm::vec3 q) const
+bool World::overlapping(std::size_t i, glm::vec3 p, std::uint32_t j, glm::vec3 q, OverlapDepths& depths) const
 {
     if (m_makingWay && !collide(collision(i), collision(j)))
         return false;  // layers that do not collide may overlap
     if (m_traffic.anyOffStage && (m_traffic.offStage[i] | m_traffic.offStage[j]))
         return false;  // off stage: waiting at its lane's end with others that left it
-    const float contact = m_radius[i] + m_radius[j] - kOverlapToleranceM;
+    const float touch = m_radius[i] + m_radius[j], contact = touch - kOverlapToleranceM;
     const glm::vec3 d = p - q;
-    return glm::dot(d, d) < contact * contact;
+    const float d2 = glm::dot(d, d);
+    if (!(d2 < contact * contact))
+        return false;
+    depths.add((touch - std::sqrt(d2)) / touch);
+    return true;
 }
 
-std::uint64_t World::overlapsAfter(std::size_t i) const
+std::uint64_t World::overlapsAfter(std::size_t i, OverlapDepths& depths) const
 {
     std::uint64_t count = 0;
     const glm::vec3 p = m_pos[i];
-    auto overlap = [&](std::uint32_t j, const glm::vec3& q) { count += j > i && overlapping(i, p, j, q); };
+    auto overlap = [&](std::uint32_t j, const glm::vec3& q) { count += j > i && overlapping(i, p, j, q, depths); };
     const float reach = m_radius[i] + m_maxRadius;
     if (m_hasFliers)
         m_grid.forEachNear3D(p, reach, overlap);
@@ -567,13 +584,13 @@ std::uint64_t World::overlapsAfter(std::size_t i) const
     return count;
 }
 
-std::uint64_t World::laterOverlaps(std::size_t begin, std::size_t end) const
+std::uint64_t World::laterOverlaps(std::size_t begin, std::size_t end, OverlapDepths& depths) const
 {
     const std::span<const std::uint32_t> order = m_grid.order();
     std::uint64_t count = 0;
     auto reach = [&](std::size_t k) { return m_radius[order[k]] + m_maxRadius; };
     auto overlap = [&](std::size_t k, std::uint32_t j, const glm::vec3& q) {
-        count += overlapping(order[k], m_grid.orderedPosition(k), j, q);
+        count += overlapping(order[k], m_grid.orderedPosition(k), j, q, depths);
     };
     if (m_grid.forEachLaterNearRun(begin, end, 2.0f * m_maxRadius, reach, overlap))
         return count;
