@@ -24,7 +24,7 @@ struct StopLineFlow {
 struct RunStats {
     std::uint64_t agents = 0;
     std::uint64_t frames = 0;  // recorded frames including frame 0
-    int subSteps = 1;          // steps per frame (StepRate.h): 1 from 12 fps up
+    int subSteps = 1;          // steps per frame (StepRate.h): 1 from 24 fps up
     std::uint64_t seed = 0;
     int threads = 1;
     std::vector<std::uint64_t> chunksPerThread;  // work chunks each thread ran (thread 0: the caller)

@@ -62,7 +62,7 @@ public:
     // goals, paths and leaders resolved to indices, walls and obstacles into grids.
     World(const Scene& scene, const WorldOptions& options = {});
 
-    // Advances exactly one frame of 1 / fps seconds: one step, or below 12 fps several
+    // Advances exactly one frame of 1 / fps seconds: one step, or below 24 fps several
     // equal sub-steps (StepRate.h).
     void step();
 
@@ -71,7 +71,7 @@ public:
     std::uint64_t stepIndex() const { return m_step / std::uint64_t(m_subSteps); }
     // A frame's length, s (1 / fps).
     float dt() const { return m_frameDt; }
-    // Steps per frame (1 from 12 fps up).
+    // Steps per frame (1 from 24 fps up).
     int subSteps() const { return m_subSteps; }
     double timeS() const { return double(m_step) * double(m_dt); }
     std::uint64_t seed() const { return m_seed; }
@@ -408,7 +408,7 @@ private:
     std::uint64_t m_step = 0;  // steps, m_subSteps per frame
     float m_frameDt = 1.0f / 24.0f;
     int m_subSteps = 1;
-    float m_dt = 1.0f / 24.0f;  // one step's length, s (a frame's below 12 fps: StepRate.h)
+    float m_dt = 1.0f / 24.0f;  // one step's length, s (a frame's below 24 fps: StepRate.h)
     ThreadTeam m_team;
     WorldTraffic m_traffic;
     WorldNav m_nav;

@@ -337,7 +337,9 @@ void World::commit(std::size_t i, std::uint64_t& wallCrossings)
                                              pathReachM(spine, follow, m_maxSpeed[i], m_dt), follow.reverse);
         const float tolerance = std::max(0.1f, 0.25f * path.radiusM);
         const float toEnd = glm::distance(to, path.points.back());
-        stop = !path.closed && toEnd < tolerance;
+        // Or, within the path's width of its end, held there to a crawl by those round it:
+        // a ring of walkers all pressing for the end point may never let one reach it.
+        stop = !path.closed && (toEnd < tolerance || (toEnd < path.radiusM && glm::distance(to, from) < kSettleSpeedMps * m_dt));
         // Arrived = reached the path's end within the path's own width there; the walker
         // still walks on to the end point itself before it stops.
         if (!path.closed && toEnd < path.radiusM)

@@ -69,7 +69,7 @@ constexpr double kToleranceM = 0.01;  // the stats' overlap and obstacle toleran
 // and 3 stand inside two boxes (one turned 30 degrees) and walk out of them. Hero 9 walks
 // through a circle and a box turned 45 degrees.
 const char* kWallScene = R"(throng: 1
-settings: {fps: 20, duration: 6, seed: 5, bounds: {min: [-30, -30], max: [30, 30]}}
+settings: {fps: 24, duration: 6, seed: 5, bounds: {min: [-30, -30], max: [30, 30]}}
 agent_types:
   - {name: walker, kind: pedestrian, radius: 0.3, max_speed: 1.4, max_force: 6}
 walls:
@@ -174,7 +174,7 @@ private slots:
     {
         QTemporaryDir tmp;
         const Run run = runScene(tmp, kWallScene);
-        QVERIFY(run.table.frames == 120);
+        QVERIFY(run.table.frames == 144);
         // Wall segments as walkers meet them: the wall, and each box's four sides.
         std::vector<std::array<double, 4>> walls = {{0, -5, 0, 5}};
         const std::vector<Box> boxes = {{10, 0, 3, 2, 0}, {10, 10, 4, 2, 30}, {-10, -10, 2, 2, 45}};
@@ -370,7 +370,7 @@ groups:
         // an 8-car mid-block scene whose vehicle_collisions was 0).
         QTemporaryDir tmp;
         const Run run = runScene(tmp, R"(throng: 1
-settings: {fps: 20, duration: 10, seed: 4, bounds: {min: [-30, -30], max: [30, 30]}}
+settings: {fps: 24, duration: 10, seed: 4, bounds: {min: [-30, -30], max: [30, 30]}}
 agent_types:
   - {name: car, kind: vehicle, radius: 1.1, max_speed: 13.9, max_force: 5000, mass: 1200}
 lanes:

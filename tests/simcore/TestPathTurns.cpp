@@ -111,6 +111,50 @@ private slots:
         QCOMPARE(world.counters().nonFiniteValues, std::uint64_t(0));
     }
 
+    // Fifteen walkers that reach the end of a narrow path (1 m wide) at once can ring its end
+    // point, each pressing for it and none within 0.125 m of it: none stopped, so the pile
+    // never began, and 9 of 15 were still milling round the end at 60 s, 0.03 to 0.1 m/s.
+    // (These are the places a group drew when spawning avoided overlaps; a start that
+    // changed nothing else.) Held to a crawl within the path's width of its end, a walker
+    // stops where it stands, and the rest pile up against it.
+    void aRingAtTheEndSettles()
+    {
+        const char* places[] = {
+            "[-11.068, -0.262]", "[-11.637, -0.321]", "[-11.616, -0.226]", "[-10.582, 0.160]", "[-11.096, 0.334]",
+            "[-10.053, 0.145]",  "[-11.674, 0.347]",  "[-8.462, -0.130]",  "[-9.435, -0.237]",  "[-7.666, -0.305]",
+            "[-7.142, -0.311]",  "[-8.722, 0.286]",   "[-9.540, 0.342]",   "[-8.201, 0.309]",   "[-7.082, 0.183]"};
+        std::string yaml = "throng: 1\n"
+                           "settings: {fps: 24, seed: 7, bounds: {min: [-30, -30], max: [30, 30]}}\n"
+                           "agent_types:\n"
+                           "  - {name: walker, radius: 0.25, max_speed: 1.4, behaviours: {path_following: 1, separation: 1}}\n"
+                           "paths:\n"
+                           "  - {name: turn, radius: 0.5, points: [[-12, 0], [0, 0], [0, -9]]}\n"
+                           "agents:\n";
+        for (int k = 0; k < 15; ++k)
+            yaml += "  - {id: " + std::to_string(k + 1) + ", type: walker, position: " + places[k] + ", path: turn}\n";
+        const LoadResult r = parseScene(yaml, "ring.yaml", ".");
+        QVERIFY2(r.ok(), r.ok() ? "" : r.diagnostics[0].format().c_str());
+        World world(r.scene);
+        std::vector<glm::vec3> before;
+        while (world.timeS() < 60.0) {
+            if (world.timeS() >= 59.0 && before.empty())
+                before.assign(world.positions().begin(), world.positions().end());
+            world.step();
+        }
+        int arrived = 0, still = 0, nearEnd = 0;
+        for (std::size_t i = 0; i < world.agentCount(); ++i) {
+            arrived += world.hasArrived(i) ? 1 : 0;
+            still += world.positions()[i] == before[i] && world.velocities()[i] == glm::vec3(0.0f) ? 1 : 0;
+            // On the last leg, past its first 2 m: the pile of 15 along a 1 m path reaches
+            // back from the end some 6 m (stopped walkers queue within half a body).
+            nearEnd += std::fabs(world.positions()[i].x) <= 0.75f && world.positions()[i].z <= -2.0f ? 1 : 0;
+        }
+        qInfo("%d of 15 arrived, %d stand still, %d on the last leg", arrived, still, nearEnd);
+        QCOMPARE(nearEnd, 15);
+        QCOMPARE(arrived, 15);
+        QCOMPARE(still, 15);
+    }
+
     void closedLoopKeepsGoingRound()
     {
         // A closed hairpin loop: followers lap it in one direction, so the distance they

@@ -17,6 +17,8 @@ constexpr std::size_t kMaxNearWalls = 16, kMaxNearObstacles = 8;
 constexpr float kSpotToleranceM = 0.1f;
 // How quickly an agent with nowhere to go brakes to a stand, s.
 constexpr float kStandStillResponseS = 0.5f;
+// At the end of its path, a walker held slower than this stops where it stands.
+constexpr float kSettleSpeedMps = 0.1f;
 // Inside its goal, an agent this near (body to body) a stopped agent settles too.
 constexpr float kSettleGapM = 0.05f;
 // Overlap tolerance: touching within 1 cm is contact, not overlap.
