@@ -20,6 +20,28 @@ using namespace detail;
 
 namespace {
 
+// From a blocked cell c: of its eight neighbours that are walkable, reach the goal and
+// are in sight (no wall between), the one nearest the goal along the field; with none,
+// the nearest walkable cell.
+template <typename InSight>
+NavCell onwardOrNearestWalkable(const FlowField& field, NavCell c, InSight&& inSight)
+{
+    const NavGrid& grid = field.grid();
+    NavCell best = c;
+    float bestM = INFINITY;
+    for (int dz = -1; dz <= 1; ++dz)
+        for (int dx = -1; dx <= 1; ++dx) {
+            const NavCell n{c.x + dx, c.z + dz};
+            if ((dx == 0 && dz == 0) || !grid.walkable(n) || !field.reachable(n) || !inSight(grid.centre(n)))
+                continue;
+            if (const float m = field.distanceM(n); m < bestM) {
+                bestM = m;
+                best = n;
+            }
+        }
+    return bestM < INFINITY ? best : grid.nearestWalkable(c);
+}
+
 enum NavStream : std::uint64_t { kWaypointRadius = 201, kSideStepSign };
 
 constexpr float kWaypointRadiusBaseM = 1.0f;  // a walker advances within 0.5..1.5 m of a corner
@@ -312,9 +334,21 @@ void World::updateNavTarget(std::size_t i)
                     aim(dir, 0.0f);
                 }
             }
-        } else if (const NavCell free = grid.nearestWalkable(c); grid.walkable(free) && field.reachable(free)) {
-            // Squeezed into a wall's margin (a blocked cell has no direction): back into
-            // the nearest walkable cell, where the field takes over again.
+        } else if (const NavCell free = onwardOrNearestWalkable(field, c, [&](glm::vec2 q) {
+                       bool crossed = false;
+                       m_walls.forEachNear((p + q) * 0.5f, 0.5f * glm::distance(p, q) + 0.01f, [&](std::uint32_t k) {
+                           const Segment& w = m_walls.segment(k);
+                           crossed = crossed || segmentsCross(p, q, w.a, w.b);
+                       });
+                       return !crossed;
+                   });
+                   grid.walkable(free) && field.reachable(free)) {
+            // Squeezed into a wall's margin (a blocked cell has no direction): into the
+            // walkable cell next to it that is nearest the goal, where the field takes over
+            // again. (Back into the nearest walkable cell instead, a walker that cut the
+            // corner of a pillar's margin on the field's diagonal was sent back where it
+            // came from, and stood on that cell's edge for good: the last of 20,000 in the
+            // evacuation demo, issue 23.)
             const glm::vec2 d = grid.centre(free) - p;
             const float len = glm::length(d);
             remainingM = field.distanceM(free) + len;
