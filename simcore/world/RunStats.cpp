@@ -109,6 +109,8 @@ std::string RunStats::toJson() const
           number(steps > 0 ? double(counters.overlappingPairs) / double(steps) : 0.0));
     field("overlap_depth_p95", number(counters.overlapDepths.quantile(0.95)));
     field("overlap_depth_max", number(double(counters.overlapDepths.deepest)));
+    field("peak_density_per_m2", number(double(counters.peakDensity)));
+    field("peak_density_time_s", counters.peakDensityTimeS < 0.0 ? "null" : number(counters.peakDensityTimeS));
     field("red_light_violations", std::to_string(counters.redLightViolations + vehicleRedLightViolations));
     field("pedestrian_red_light_violations", std::to_string(counters.redLightViolations));
     field("vehicle_red_light_violations", std::to_string(vehicleRedLightViolations));

@@ -56,6 +56,8 @@ struct StepCounters {
     std::uint64_t leaderOvertaken = 0;       // follower-steps ahead of a moving leader (WorldLeaders.cpp)
     std::uint64_t agentSteps = 0;
     OverlapDepths overlapDepths;             // how deep the overlapping pairs press in
+    float peakDensity = 0.0f;                // persons/m², the highest local density sampled (LocalDensity.h)
+    double peakDensityTimeS = -1.0;          // when it was seen; < 0 = never sampled
 };
 
 }  // namespace throng::sim

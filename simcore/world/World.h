@@ -275,6 +275,8 @@ private:
     // The step's counters (StepCounters.h), given the values that are not numbers, which
     // step counts as it commits.
     void countStep(std::uint64_t nonFinite);
+    // The peak local density (LocalDensity.h) in this step's positions, kept if the highest.
+    void samplePeakDensity();
     // countStep's overlapping pairs: whether i (at p) and j (at q) overlap; those of i with
     // the agents of higher index; those of the k-th of the grid's order, k in [begin, end),
     // with the agents after it (NeighbourGrid::forEachLaterNearRun, or forEachLaterNear

@@ -3,6 +3,7 @@
 // state (RVO2's doStep computes all new velocities before committing any), so the result
 // is the same for any thread count.
 #include "simcore/world/World.h"
+#include "simcore/world/LocalDensity.h"
 
 #include "simcore/steering/UninitialisedArray.h"
 #include "simcore/world/Rng.h"
@@ -501,6 +502,8 @@ void World::countStep(std::uint64_t nonFinite)
         m_counters.agentSteps += n;
         return;
     }
+    if (densitySampleDue(m_step, double(m_dt)))
+        samplePeakDensity();
     std::atomic<std::uint64_t> inObstacleAll{0}, redAll{0};
     m_team.forChunks(n, 1024, [&](std::size_t begin, std::size_t end, int) {
         std::uint64_t inObstacle = 0, red = 0;
@@ -556,6 +559,38 @@ void World::countStep(std::uint64_t nonFinite)
     m_counters.obstaclePenetrations += inObstacleAll.load();
     m_counters.redLightViolations += redAll.load();
     m_counters.agentSteps += n;
+}
+
+void World::samplePeakDensity()
+{
+    // The highest density at any pedestrian's centre (in the scene: not out through an
+    // exit), in this step's positions; a chunk's peak, and the peak of those, is the same
+    // for any cut of the work.
+    const std::size_t n = m_pos.size();
+    std::mutex lock;
+    float peak = 0.0f;
+    m_team.forChunks(n, 1024, [&](std::size_t begin, std::size_t end, int) {
+        float local = 0.0f;
+        for (std::size_t i = begin; i < end; ++i) {
+            if (m_out[i] || m_types[m_info[i].typeIndex].kind != AgentKind::Pedestrian)
+                continue;
+            const glm::vec2 p = xz(m_pos[i]);
+            float density = 0.0f;
+            m_grid.forEachNear(p, kDensityReachM, [&](std::uint32_t j, const glm::vec3& q) {
+                if (m_types[m_info[j].typeIndex].kind != AgentKind::Pedestrian)
+                    return;
+                const glm::vec2 d = xz(q) - p;
+                density += densityWeight(glm::dot(d, d));
+            });
+            local = std::max(local, density);
+        }
+        const std::lock_guard<std::mutex> guard(lock);
+        peak = std::max(peak, local);
+    });
+    if (peak > m_counters.peakDensity) {
+        m_counters.peakDensity = peak;
+        m_counters.peakDensityTimeS = timeS();
+    }
 }
 
 bool World::overlapping(std::size_t i, glm::vec3 p, std::uint32_t j, glm::vec3 q, OverlapDepths& depths) const

@@ -363,6 +363,84 @@ groups:
         QVERIFY(std::abs(run.stats["overlap_depth_p95"].toDouble() - p95) < 0.005 + 1e-9);
     }
 
+    void peakDensityInADenseRoom()
+    {
+        // The same dense room: the crowd packs at the door. The peak local density, recounted
+        // from the CSV at the instants the stats sample (every 0.5 s: frames 12, 24, ... at
+        // 24 fps) with the kernel docs/stats.md gives, is the stats' figure, and it is not
+        // beyond what bodies of 0.25 m can pack (touching hexagonally: 1 / (2 sqrt(3) r²)).
+        QTemporaryDir tmp;
+        const Run run = runScene(tmp, R"(throng: 1
+settings: {fps: 24, duration: 12, seed: 5, bounds: {min: [-6, -6], max: [8, 6]}}
+agent_types:
+  - {name: walker, radius: 0.25}
+walls:
+  - {points: [[4, 0.5], [4, 4], [-4, 4], [-4, -4], [4, -4], [4, -0.5]]}
+goals:
+  - {name: door, position: [4.3, 0], radius: 0.5, exit: true}
+groups:
+  - {name: crowd, type: walker, count: 60, rect: {min: [-3.5, -3.5], max: [3, 3.5]}, goal: door}
+)");
+        const double sigma = 0.5, norm = 1.0 / (2.0 * M_PI * sigma * sigma * (1.0 - std::exp(-4.5)));
+        double peak = 0.0, peakS = -1.0;
+        int samples = 0;
+        for (int f = 12; f < run.table.frames; f += 12) {
+            ++samples;
+            std::vector<std::pair<double, double>> at;
+            for (const auto& [id, rows] : run.table.agents)
+                if (rows.count(f))
+                    at.emplace_back(rows.at(f).x, rows.at(f).z);
+            for (const auto& [x, z] : at) {
+                double density = 0.0;
+                for (const auto& [x2, z2] : at) {
+                    const double d2 = (x - x2) * (x - x2) + (z - z2) * (z - z2);
+                    density += d2 < 9.0 * sigma * sigma ? std::exp(-d2 / (2.0 * sigma * sigma)) * norm : 0.0;
+                }
+                if (density > peak) {
+                    peak = density;
+                    peakS = f / 24.0;
+                }
+            }
+        }
+        const double stats = run.stats["peak_density_per_m2"].toDouble();
+        const double packed = 1.0 / (2.0 * std::sqrt(3.0) * 0.25 * 0.25);
+        qInfo("dense room: peak density %.3f persons/m2 at %.1f s over %d samples (stats %.3f at %.3f s); "
+              "touching discs pack %.2f",
+              peak, peakS, samples, stats, run.stats["peak_density_time_s"].toDouble(), packed);
+        QVERIFY(samples >= 20);
+        QVERIFY2(peak > 2.0, "the room never got dense: the test shows nothing");
+        QVERIFY(std::abs(stats - peak) < 1e-3 * peak);
+        QVERIFY(std::abs(run.stats["peak_density_time_s"].toDouble() - peakS) < 1e-4);
+        QVERIFY2(peak <= packed, qPrintable(QString("%1 persons/m2, beyond %2").arg(peak).arg(packed)));
+    }
+
+    void peakDensityOfAPackedLattice()
+    {
+        // 225 walkers of 0.3 m standing touching in a hexagonal lattice (0.6 m apart), with
+        // nowhere to go: the densest the bodies can stand. In the middle of it the kernel
+        // gives the lattice's density, 1 / (2 sqrt(3) 0.3²) = 3.208 persons/m².
+        std::string yaml = "throng: 1\n"
+                           "settings: {fps: 24, duration: 1, seed: 1, bounds: {min: [-10, -10], max: [20, 20]}}\n"
+                           "agent_types:\n"
+                           "  - {name: walker, radius: 0.3}\n"
+                           "agents:\n";
+        int id = 1;
+        for (int row = 0; row < 15; ++row)
+            for (int col = 0; col < 15; ++col) {
+                const double x = 0.6 * col + (row % 2 ? 0.3 : 0.0), z = 0.6 * std::sqrt(0.75) * row;
+                yaml += "  - {id: " + std::to_string(id++) + ", type: walker, position: [" + std::to_string(x) +
+                        ", " + std::to_string(z) + "]}\n";
+            }
+        QTemporaryDir tmp;
+        const Run run = runScene(tmp, yaml.c_str());
+        const double packed = 1.0 / (2.0 * std::sqrt(3.0) * 0.3 * 0.3);
+        const double peak = run.stats["peak_density_per_m2"].toDouble();
+        qInfo("packed lattice: peak density %.4f persons/m2, the lattice's %.4f", peak, packed);
+        QCOMPARE(run.stats["overlapping_pairs"].toInt(), 0);
+        QVERIFY(std::abs(peak - packed) < 0.01 * packed);
+        QVERIFY(std::abs(run.stats["peak_density_time_s"].toDouble() - 0.5) < 1e-4);
+    }
+
     void vehiclesWaitingOffStageDoNotOverlap()
     {
         // Cars that leave an open lane wait off stage at its end to re-enter; they stand
