@@ -340,7 +340,8 @@ void World::commit(std::size_t i, std::uint64_t& wallCrossings)
         const float toEnd = glm::distance(to, path.points.back());
         // Or, within the path's width of its end, held there to a crawl by those round it:
         // a ring of walkers all pressing for the end point may never let one reach it.
-        stop = !path.closed && (toEnd < tolerance || (toEnd < path.radiusM && glm::distance(to, from) < kSettleSpeedMps * m_dt));
+        const bool crawling = toEnd < path.radiusM && glm::distance(to, from) < kSettleSpeedMps * m_dt;
+        stop = !path.closed && (toEnd < tolerance || crawling);
         // Arrived = reached the path's end within the path's own width there; the walker
         // still walks on to the end point itself before it stops.
         if (!path.closed && toEnd < path.radiusM)
