@@ -334,6 +334,7 @@ void World::addAgent(const Scene& scene, AgentId id, std::uint16_t type, glm::ve
     m_nextSide.push_back(m_side.back());
     m_nextUp.push_back(m_up.back());
     m_nextWander.push_back(m_wander.back());
+    m_heldForce.push_back(glm::vec3(0.0f));
     m_nearIndex.resize(m_nearIndex.size() + kMaxNeighbours);
     m_nearCount.push_back(0);
     m_collideFree.push_back(0);

@@ -380,6 +380,9 @@ private:
     std::vector<glm::vec3> m_pos, m_vel, m_fwd, m_side, m_up;
     std::vector<glm::vec3> m_nextPos, m_nextVel, m_nextFwd, m_nextSide, m_nextUp;
     std::vector<WanderState> m_wander, m_nextWander;
+    // The steering force a walker decided on at the last decision (StepRate.h), applied
+    // at every step until the next.
+    std::vector<glm::vec3> m_heldForce;
     std::vector<float> m_radius, m_maxSpeed, m_phase, m_stride, m_arrivalTime;
     std::vector<std::int32_t> m_goal, m_path, m_leader;
     std::vector<glm::vec2> m_goalSpot;  // each agent's own point inside its goal's disk
@@ -410,6 +413,10 @@ private:
     std::uint64_t m_step = 0;  // steps, m_subSteps per frame
     float m_frameDt = 1.0f / 24.0f;
     int m_subSteps = 1;
+    // Whether this step decides (steers and avoids) or applies the held force, and the
+    // time until the next decision (decisionAt, StepRate.h).
+    bool m_decide = true;
+    float m_decideDt = 1.0f / 24.0f;
     float m_dt = 1.0f / 24.0f;  // one step's length, s (a frame's below 24 fps: StepRate.h)
     ThreadTeam m_team;
     WorldTraffic m_traffic;

@@ -89,6 +89,7 @@ struct WorldState {
     std::vector<glm::vec2> escapeTo;
     std::vector<std::uint8_t> arrived, stopped, stoppedBefore, onCrosswalk, nearCount, out;
     std::vector<std::uint32_t> nearIndex;  // World::kMaxNeighbours per agent
+    std::vector<glm::vec3> heldForce;
 
     // Traffic.
     std::optional<TrafficSystem> trafficSystem;

@@ -324,9 +324,10 @@ std::span<const Neighbour> World::neighboursToAvoid(std::size_t i, std::span<con
 glm::vec3 World::avoidReciprocally(std::size_t i, const SteeringAgent& self, glm::vec3 force,
                                    std::span<const Neighbour> near, const TypeSteering& s) const
 {
-    if (self.mass <= 0.0f || m_dt <= 0.0f)
+    // Decided for the time until the next decision (StepRate.h), m_decideDt.
+    if (self.mass <= 0.0f || m_decideDt <= 0.0f)
         return force;
-    const glm::vec3 wanted = self.velocity + force * (m_dt / self.mass);
+    const glm::vec3 wanted = self.velocity + force * (m_decideDt / self.mass);
     glm::vec2 preferred(wanted.x, wanted.z);
     const float speed = glm::length(preferred);
     if (speed > self.maxSpeed && speed > 0.0f)
@@ -355,8 +356,8 @@ glm::vec3 World::avoidReciprocally(std::size_t i, const SteeringAgent& self, glm
         preferred = preferred * turn.x + right * turn.y;
     }
     const PlanarBody body{xz(self.position), xz(self.velocity), self.radius, self.maxSpeed};
-    const glm::vec2 v = sim::avoidReciprocally(body, preferred, {others.data(), count}, m_dt, s.reciprocal);
-    return (glm::vec3(v.x, 0.0f, v.y) - glm::vec3(self.velocity.x, 0.0f, self.velocity.z)) * (self.mass / m_dt);
+    const glm::vec2 v = sim::avoidReciprocally(body, preferred, {others.data(), count}, m_decideDt, s.reciprocal);
+    return (glm::vec3(v.x, 0.0f, v.y) - glm::vec3(self.velocity.x, 0.0f, self.velocity.z)) * (self.mass / m_decideDt);
 }
 
 }  // namespace throng::sim

@@ -4,6 +4,7 @@
 // is the same for any thread count.
 #include "simcore/world/World.h"
 #include "simcore/world/LocalDensity.h"
+#include "simcore/scene/StepRate.h"
 
 #include "simcore/steering/UninitialisedArray.h"
 #include "simcore/world/Rng.h"
@@ -40,6 +41,9 @@ void World::stepOnce()
     if (!m_gridCurrent)
         m_grid.rebuild(m_pos, m_hasFliers, m_out, &m_team);
     m_gridCurrent = false;
+    // Decide, or apply the forces decided (StepRate.h).
+    m_decide = decisionAt(m_step, double(m_dt));
+    m_decideDt = m_decide ? float(decisionIntervalS(m_step, double(m_dt))) : m_decideDt;
     // Navigate: plans and each walker's waypoint or flow direction (WorldNav.cpp).
     navBeforeStep();
     // Brain: sensors from this (previous) state, then each type's program; before the
@@ -219,6 +223,15 @@ void World::stepAgent(std::size_t i, bool hasStatics, NeighbourGrid::Sweep* swee
     glm::vec3 force = steer(i, self, {near.data(), count}, wanderNext) + brainTurnForce(i, self);
     if (s.on(Behaviour::ReciprocalAvoidance) && !s.vehicle.flying)
         force = avoidReciprocally(i, self, force, {near.data(), count}, s);
+    // Between decisions (StepRate.h) a ground agent applies the force it decided last.
+    if (!s.vehicle.flying) {
+        if (m_decide) {
+            m_heldForce[i] = force;
+        } else {
+            force = m_heldForce[i];
+            wanderNext = m_wander[i];
+        }
+    }
     force = obeySignal(i, self, force);
     // Integrate: the simple vehicle model (Reynolds 1999).
     SteeringAgent next = integrateVehicle(self, force, m_dt, s.vehicle);

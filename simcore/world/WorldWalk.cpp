@@ -284,8 +284,8 @@ void World::stepWalker(std::size_t i)
 
     // Avoid: the velocity the blend asks for becomes the nearest that touches no neighbour
     // within the horizon (World::avoidReciprocally between equals).
-    if (w.reciprocal && t.mass > 0.0f && m_dt > 0.0f) {
-        const glm::vec3 wanted = v + force * (m_dt / t.mass);
+    if (w.reciprocal && t.mass > 0.0f && m_decideDt > 0.0f) {
+        const glm::vec3 wanted = v + force * (m_decideDt / t.mass);
         glm::vec2 preferred(wanted.x, wanted.z);
         const float speed = glm::length(preferred);
         if (speed > maxSpeed && speed > 0.0f)
@@ -296,8 +296,16 @@ void World::stepWalker(std::size_t i)
             preferred = preferred * turn.x + right * turn.y;
         }
         const PlanarBody body{p2, xz(v), radius, maxSpeed};
-        const glm::vec2 chosen = sim::avoidReciprocally(body, preferred, {others.data(), count}, m_dt, s.reciprocal);
-        force = (glm::vec3(chosen.x, 0.0f, chosen.y) - glm::vec3(v.x, 0.0f, v.z)) * (t.mass / m_dt);
+        const glm::vec2 chosen =
+            sim::avoidReciprocally(body, preferred, {others.data(), count}, m_decideDt, s.reciprocal);
+        force = (glm::vec3(chosen.x, 0.0f, chosen.y) - glm::vec3(v.x, 0.0f, v.z)) * (t.mass / m_decideDt);
+    }
+    // Between decisions (StepRate.h) the force decided last holds, and wander stands still.
+    if (m_decide) {
+        m_heldForce[i] = force;
+    } else {
+        force = m_heldForce[i];
+        wanderNext = m_wander[i];
     }
 
     // Integrate: integrateVehicle's walker step (VehicleModel.cpp) on a finite state, then
