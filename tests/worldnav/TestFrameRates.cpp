@@ -1,10 +1,12 @@
-// Low frame rates (issue 23, finding 2): at 1 fps a walker took 1.4 m at a time, through
+// Frame rates (issue 23, finding 2): at 1 fps a walker took 1.4 m at a time, through
 // anyone in its way, and one walker of a 40-walker room never left; at 12 fps a crowd left
 // a room 7 % sooner than at 24 fps. Below 24 fps a frame is now cut into equal
 // sub-steps of at most 1/24 s (StepRate.h). Where 24 / fps is a whole number the sub-step
 // is exactly 1/24 s, so the crowd at 1, 2, 4, 6 or 12 fps is the crowd at 24 fps, frame
 // for frame, on scenes of our own: rooms with doors entered head-on and from the side,
-// A* walkers among posts, crowds crossing in the open.
+// A* walkers among posts, crowds crossing in the open. Above 24 fps walkers decide 24
+// times a second (StepRate.h): at 48, 96 and 240 fps the rooms' exit times and flows are
+// those at 24 fps within 5 % (before: 76 s at 24 fps, 101 s at 240 fps).
 #include "NavRig.h"
 #include "TestRegistry.h"
 
