@@ -220,7 +220,7 @@ void World::stepAgent(std::size_t i, bool hasStatics, NeighbourGrid::Sweep* swee
     // Steer: the type's behaviours, combined.
     WanderState wanderNext;
     glm::vec3 force = steer(i, self, {near.data(), count}, wanderNext) + brainTurnForce(i, self);
-    if (s.on(Behaviour::ReciprocalAvoidance) && !s.vehicle.flying)
+    if (s.on(Behaviour::ReciprocalAvoidance) && !s.vehicle.flying && m_decide)
         force = avoidReciprocally(i, self, force, {near.data(), count}, s);
     // Between decisions (StepRate.h) a ground agent applies the force it decided last.
     if (!s.vehicle.flying) {

@@ -284,7 +284,8 @@ void World::stepWalker(std::size_t i)
 
     // Avoid: the velocity the blend asks for becomes the nearest that touches no neighbour
     // within the horizon (World::avoidReciprocally between equals).
-    if (w.reciprocal && t.mass > 0.0f && m_decideDt > 0.0f) {
+    // (Between decisions the force held replaces it below: no avoidance is worked out.)
+    if (w.reciprocal && m_decide && t.mass > 0.0f && m_decideDt > 0.0f) {
         const glm::vec3 wanted = v + force * (m_decideDt / t.mass);
         glm::vec2 preferred(wanted.x, wanted.z);
         const float speed = glm::length(preferred);
