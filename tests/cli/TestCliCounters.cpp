@@ -165,6 +165,20 @@ heroes:
     keyframes: [{time: 0, position: [10, 10.2]}, {time: 6, position: [-10, 10.2]}]
 )";
 
+
+// 60 walkers spawned at random in a small room, pressing through a 1 m door.
+const char* const kDenseRoom = R"(throng: 1
+settings: {fps: 24, duration: 12, seed: 5, bounds: {min: [-6, -6], max: [8, 6]}}
+agent_types:
+  - {name: walker, radius: 0.25}
+walls:
+  - {points: [[4, 0.5], [4, 4], [-4, 4], [-4, -4], [4, -4], [4, -0.5]]}
+goals:
+  - {name: door, position: [4.3, 0], radius: 0.5, exit: true}
+groups:
+  - {name: crowd, type: walker, count: 60, rect: {min: [-3.5, -3.5], max: [3, 3.5]}, goal: door}
+)";
+
 }  // namespace
 
 class TestCliCounters : public QObject {
@@ -324,17 +338,7 @@ private slots:
         // spawn overlapping and part, and the crowd presses at the door. Every overlapping
         // pair-step's depth, recomputed from the CSV, gives the stats' percentile and maximum.
         QTemporaryDir tmp;
-        const Run run = runScene(tmp, R"(throng: 1
-settings: {fps: 24, duration: 12, seed: 5, bounds: {min: [-6, -6], max: [8, 6]}}
-agent_types:
-  - {name: walker, radius: 0.25}
-walls:
-  - {points: [[4, 0.5], [4, 4], [-4, 4], [-4, -4], [4, -4], [4, -0.5]]}
-goals:
-  - {name: door, position: [4.3, 0], radius: 0.5, exit: true}
-groups:
-  - {name: crowd, type: walker, count: 60, rect: {min: [-3.5, -3.5], max: [3, 3.5]}, goal: door}
-)");
+        const Run run = runScene(tmp, kDenseRoom);
         std::vector<double> depths;
         std::vector<std::uint32_t> ids;
         for (const auto& [id, rows] : run.table.agents)
@@ -370,17 +374,7 @@ groups:
         // 24 fps) with the kernel docs/stats.md gives, is the stats' figure, and it is not
         // beyond what bodies of 0.25 m can pack (touching hexagonally: 1 / (2 sqrt(3) r²)).
         QTemporaryDir tmp;
-        const Run run = runScene(tmp, R"(throng: 1
-settings: {fps: 24, duration: 12, seed: 5, bounds: {min: [-6, -6], max: [8, 6]}}
-agent_types:
-  - {name: walker, radius: 0.25}
-walls:
-  - {points: [[4, 0.5], [4, 4], [-4, 4], [-4, -4], [4, -4], [4, -0.5]]}
-goals:
-  - {name: door, position: [4.3, 0], radius: 0.5, exit: true}
-groups:
-  - {name: crowd, type: walker, count: 60, rect: {min: [-3.5, -3.5], max: [3, 3.5]}, goal: door}
-)");
+        const Run run = runScene(tmp, kDenseRoom);
         const double sigma = 0.5, norm = 1.0 / (2.0 * M_PI * sigma * sigma * (1.0 - std::exp(-4.5)));
         double peak = 0.0, peakS = -1.0;
         int samples = 0;
