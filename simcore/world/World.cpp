@@ -8,6 +8,7 @@
 #include "simcore/scene/TerrainHeight.h"
 #include "simcore/traffic/LightPhase.h"
 #include "simcore/world/RepeatedStatics.h"
+#include "simcore/world/SpawnSpread.h"
 #include "simcore/world/Rng.h"
 #include "simcore/world/detail/StepGeometry.h"
 
@@ -28,6 +29,10 @@ enum Stream : std::uint64_t {
 };
 
 constexpr std::uint64_t kSpawnTries = 16;  // draws of a spawned walker's place before it is walked out
+// A spawned group's walkers part until no pair overlaps by more than this, or the rounds
+// run out (a group denser than its bodies can pack: the collide pass goes on parting them).
+constexpr float kSpreadToleranceM = 0.002f;
+constexpr int kSpreadRounds = 200;
 
 // Name -> index for one kind of scene item, built once so that resolving a million
 // agents' references costs O(N log K), not O(N K).
@@ -236,15 +241,17 @@ void World::spawnGroup(const Scene& scene, const SpawnGroup& group, std::size_t 
     // the members of another.
     struct Spawn { glm::vec3 position; float heading; std::uint32_t order; };
     std::vector<Spawn> spawns(group.count);
+    const bool walker = scene.agentTypes[type].kind == AgentKind::Pedestrian;
+    const float bodyR = scene.agentTypes[type].radiusM;
+    std::vector<glm::vec2> places(group.count);
+    std::vector<std::uint8_t> clearOfStatics(group.count, 1);
     for (std::uint32_t k = 0; k < group.count; ++k) {
         const std::uint64_t key = (std::uint64_t(groupIndex + 1) << 32) | k;
         // A walker drawn where its body does not fit (a group's area over a pillar or
         // across a wall) is drawn again, up to kSpawnTries times (draw k keyed by step k,
         // so the first draw is the one every earlier release made); one that never fits
         // is walked out by findEscapes (WorldEscape.cpp).
-        const bool walker = scene.agentTypes[type].kind == AgentKind::Pedestrian;
-        const float bodyR = scene.agentTypes[type].radiusM;
-        glm::vec2 p;
+        glm::vec2& p = places[k];
         for (std::uint64_t draw = 0; draw < kSpawnTries; ++draw) {
             const float u = rngUniform(m_seed, key, draw, kSpawnX), v = rngUniform(m_seed, key, draw, kSpawnZ);
             if (group.shape == AreaShape::Rect) {
@@ -254,9 +261,16 @@ void World::spawnGroup(const Scene& scene, const SpawnGroup& group, std::size_t 
                 p = group.center + r * glm::vec2(std::cos(a), std::sin(a));
             }
             glm::vec2 clear;
-            if (!walker || !escapeTarget(p, bodyR, clear))
+            clearOfStatics[k] = !walker || !escapeTarget(p, bodyR, clear);
+            if (clearOfStatics[k])
                 break;
         }
+    }
+    if (walker)
+        spreadMembers(group, type, groupIndex, places, clearOfStatics);
+    for (std::uint32_t k = 0; k < group.count; ++k) {
+        const std::uint64_t key = (std::uint64_t(groupIndex + 1) << 32) | k;
+        const glm::vec2 p = places[k];
         float heading = 6.28318531f * rngUniform(m_seed, key, 0, kSpawnHeading);
         // Fliers spawn at a height drawn from the group's altitude range.
         const float y = group.altitudeM.x + (group.altitudeM.y - group.altitudeM.x) * rngUniform(m_seed, key, 0, kSpawnY);
@@ -278,6 +292,55 @@ void World::spawnGroup(const Scene& scene, const SpawnGroup& group, std::size_t 
                      [&](std::uint32_t a, std::uint32_t b) { return spawns[a].order < spawns[b].order; });
     for (std::uint32_t k : byPlace)
         addAgent(scene, nextId++, type, spawns[k].position, spawns[k].heading, goal, path, group.leader);
+}
+
+void World::spreadMembers(const SpawnGroup& group, std::uint16_t type, std::size_t groupIndex,
+                          std::vector<glm::vec2>& places, const std::vector<std::uint8_t>& clearOfStatics) const
+{
+    // A group's walkers drawn over each other part before the first frame (SpawnSpread.h),
+    // against each other and the ground agents placed before them that their type collides
+    // with, their centres kept in the group's area and their bodies clear of the statics;
+    // one drawn inside a wall or obstacle is walked out by findEscapes instead.
+    if (places.empty())
+        return;
+    const float r = m_types[type].radius;
+    glm::vec2 lo = places[0], hi = places[0];
+    for (const glm::vec2& p : places) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
+    std::vector<SpreadBody> bodies;
+    bodies.reserve(places.size());
+    float largest = r;
+    for (std::size_t i = 0; i < m_pos.size(); ++i)
+        largest = std::max(largest, m_radius[i]);
+    const float reach = 8.0f * largest;  // members part by a few radii at most
+    for (std::size_t i = 0; i < m_pos.size(); ++i) {
+        const glm::vec2 q = detail::xz(m_pos[i]);
+        if (m_types[m_info[i].typeIndex].kind == AgentKind::Flier || !collide(m_collision[type], collision(i)) ||
+            q.x < lo.x - reach || q.y < lo.y - reach || q.x > hi.x + reach || q.y > hi.y + reach)
+            continue;
+        bodies.push_back({q, m_radius[i], false, m_info[i].id});
+    }
+    const std::size_t first = bodies.size();
+    for (std::size_t k = 0; k < places.size(); ++k)
+        bodies.push_back({places[k], r, clearOfStatics[k] != 0, (std::uint64_t(groupIndex + 1) << 32) | k});
+    const bool hasStatics = !m_walls.segments().empty() || !m_circles.empty();
+    auto settle = [&](glm::vec2 q, float radius, glm::vec2& out) {
+        if (group.shape == AreaShape::Rect) {
+            q = glm::clamp(q, group.min, group.max);
+        } else if (const glm::vec2 d = q - group.center; glm::dot(d, d) > group.radiusM * group.radiusM) {
+            q = group.center + d * (group.radiusM / glm::length(d));
+        }
+        if (!hasStatics) {
+            out = q;
+            return true;
+        }
+        return !escapeTarget(q, radius, out);  // not into a wall or obstacle; clear of their edges
+    };
+    spreadBodies(bodies, settle, kSpreadToleranceM, kSpreadRounds);
+    for (std::size_t k = 0; k < places.size(); ++k)
+        places[k] = bodies[first + k].p;
 }
 
 void World::addAgent(const Scene& scene, AgentId id, std::uint16_t type, glm::vec3 pos, float headingRad, int goal,

@@ -187,6 +187,8 @@ private:
     void buildAgents(const Scene& scene);
     void spawnGroup(const Scene& scene, const SpawnGroup& group, std::size_t groupIndex, std::uint16_t type,
                     int goal, int path, AgentId& nextId);
+    void spreadMembers(const SpawnGroup& group, std::uint16_t type, std::size_t groupIndex,
+                       std::vector<glm::vec2>& places, const std::vector<std::uint8_t>& clearOfStatics) const;
     void addAgent(const Scene& scene, AgentId id, std::uint16_t type, glm::vec3 pos, float headingRad, int goal,
                   int path, AgentId leader);
 
