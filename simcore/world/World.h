@@ -196,6 +196,10 @@ private:
     SteeringAgent steeringAgent(std::size_t i) const;
     std::size_t gatherNeighbours(std::size_t i, Neighbour* out, std::uint32_t* indices) const;
     glm::vec3 separateBodies(std::size_t i) const;
+    // The share of a pair's overlap agent i takes (WorldPriority.h; a walker the red caught
+    // on the road takes none against those waiting at the kerb), and the way it parts.
+    float contactShare(std::size_t i, std::size_t j) const;
+    glm::vec3 partingDirection(std::size_t i, std::size_t j, glm::vec3 d, float dist) const;
     glm::vec3 steer(std::size_t i, const SteeringAgent& self, std::span<const Neighbour> near,
                     WanderState& wanderOut) const;
     void steerAroundStatics(std::size_t i, const SteeringAgent& self, glm::vec3 goal,
@@ -270,6 +274,11 @@ private:
     // with its neighbours (none looked for when the kernel found it collide-free), and a
     // walker's next velocity from its move.
     void resolveCollision(std::size_t i, bool collideFree, bool hasStatics);
+    // Then the contact rounds (WorldCollide.cpp): ground bodies that still overlap are
+    // projected apart until none does, or kContactRounds; m_nextPos is their scratch.
+    void settleContacts(bool hasStatics);
+    bool settles(std::size_t i) const;
+    bool settleRound(std::size_t i, bool hasStatics);
     // The walker kernel (WorldWalk.cpp): the same for a ground type whose behaviours are only
     // arrival, seek, separation, unaligned collision and reciprocal avoidance, containment, wander.
     void buildWalkKernel(bool enabled);
@@ -402,6 +411,7 @@ private:
     std::vector<std::uint32_t> m_nearIndex;  // kMaxNeighbours per agent: whom it sensed this step
     std::vector<std::uint8_t> m_nearCount;
     std::vector<glm::vec3> m_resolvedPos;
+    std::vector<std::uint8_t> m_contactMoved;  // per step: moved by the contact rounds
 
     NeighbourGrid m_grid;
     bool m_gridCurrent = false;  // the grid indexes the current positions

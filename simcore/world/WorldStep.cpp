@@ -97,6 +97,11 @@ void World::stepOnce()
     });
     if (trustKernel && slackBroken > 0)
         m_team.forEach(n, 256, [&](std::size_t i) { resolveCollision(i, false, hasStatics); });
+    // Contact rounds: on each decision (every step at 24 fps and below), the bodies that
+    // still overlap are parted (WorldCollide.cpp); between decisions the collide pass
+    // keeps what they parted apart.
+    if (m_decide && !m_allFliers)
+        settleContacts(hasStatics);
     // The resolved positions are the next ones (the pass wrote every agent's).
     std::swap(m_nextPos, m_resolvedPos);
     trafficAfterCollide();
@@ -278,30 +283,36 @@ glm::vec3 World::separateBodies(std::size_t i) const
         if (d2 >= contact * contact)
             continue;
         const float dist = std::sqrt(d2);
-        // Coincident bodies part along a direction both derive from their ids, in
-        // opposite senses, so the pair never moves together.
-        glm::vec3 dir;
-        if (dist > 1e-6f) {
-            dir = d / dist;
-        } else {
-            const AgentId lo = std::min(m_info[i].id, m_info[j].id), hi = std::max(m_info[i].id, m_info[j].id);
-            const float a = float(rngUniform(lo, hi, 0, 77)) * 6.2831853f;
-            dir = glm::vec3(std::cos(a), 0.0f, std::sin(a)) * (m_info[i].id == lo ? 1.0f : -1.0f);
-        }
-        // A standing neighbour, or one of higher priority, does not give way, so this
-        // agent takes the whole overlap; against one of lower priority it takes none.
-        float share = avoidanceShare(collision(i), collision(j), m_stopped[j] != 0);
-        // A walker that the red caught on the road goes first: those waiting at the kerb,
-        // where it must get to, make room for it (set by this step's steer phase).
-        if (!m_traffic.signal.empty() && m_traffic.signal[i].clearing != m_traffic.signal[j].clearing)
-            share = m_traffic.signal[i].clearing ? 0.0f : 1.0f;
-        push += dir * ((contact - dist) * share);
+        push += partingDirection(i, j, d, dist) * ((contact - dist) * contactShare(i, j));
     }
     // Cap the correction so a squeezed agent is nudged, never thrown: at most half its
     // body and half what it could walk in the step.
     const float cap = std::min(0.5f * m_radius[i], 0.5f * m_maxSpeed[i] * m_dt);
     const float len = glm::length(push);
     return len > cap ? push * (cap / len) : push;
+}
+
+glm::vec3 World::partingDirection(std::size_t i, std::size_t j, glm::vec3 d, float dist) const
+{
+    if (dist > 1e-6f)
+        return d / dist;
+    // Coincident bodies part along a direction both derive from their ids, in opposite
+    // senses, so the pair never moves together.
+    const AgentId lo = std::min(m_info[i].id, m_info[j].id), hi = std::max(m_info[i].id, m_info[j].id);
+    const float a = float(rngUniform(lo, hi, 0, 77)) * 6.2831853f;
+    return glm::vec3(std::cos(a), 0.0f, std::sin(a)) * (m_info[i].id == lo ? 1.0f : -1.0f);
+}
+
+float World::contactShare(std::size_t i, std::size_t j) const
+{
+    // A standing neighbour, or one of higher priority, does not give way, so this agent
+    // takes the whole overlap; against one of lower priority it takes none.
+    float share = avoidanceShare(collision(i), collision(j), m_stopped[j] != 0);
+    // A walker that the red caught on the road goes first: those waiting at the kerb,
+    // where it must get to, make room for it (set by this step's steer phase).
+    if (!m_traffic.signal.empty() && m_traffic.signal[i].clearing != m_traffic.signal[j].clearing)
+        share = m_traffic.signal[i].clearing ? 0.0f : 1.0f;
+    return share;
 }
 
 void World::commit(std::size_t i, std::uint64_t& wallCrossings)
