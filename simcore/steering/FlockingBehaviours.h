@@ -17,6 +17,9 @@ struct SeparationParams {
     float rangeM = 0.5f;         // m, >= 0: body-to-body gap below which a neighbour pushes
     float dampingTimeS = 0.5f;   // s, > 0: time constant damping how fast a neighbour in range
                                  // closes or opens the gap
+    float keepRight = 1.0f;      // 0..1: share of max force a pedestrian that runs neither
+                                 // unaligned nor reciprocal avoidance steps right with, an
+                                 // oncoming walker in its way (KeepRight.h, World)
 };
 
 struct AlignmentParams {

@@ -94,6 +94,8 @@ const std::vector<ParamSlot>& slots()
          [](TypeSteering& t) -> float& { return t.flow.responseTimeS; }},
         {B::Separation, "range", "m, >= 0: body gap below which neighbours push", Kind::Number, 0, kBig,
          [](TypeSteering& t) -> float& { return t.separation.rangeM; }},
+        {B::Separation, "keep_right", "0..1: share of max force a walker steps right with, an oncoming walker in its way",
+         Kind::Number, 0, 1, [](TypeSteering& t) -> float& { return t.separation.keepRight; }},
         {B::Alignment, "match_speed", "true: match speed too, not only heading", Kind::Flag, 0, 1, nullptr},
         {B::Alignment, "response_time", "s, > 0", Kind::Number, 1e-3f, kBig,
          [](TypeSteering& t) -> float& { return t.alignment.responseTimeS; }},

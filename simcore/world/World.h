@@ -342,6 +342,10 @@ private:
     std::vector<TypeParams> m_types;
     std::vector<TypeSteering> m_steering;  // per type
     std::vector<TypeCollision> m_collision;  // per type: layers and priority
+    // Per type: the share of max force a pedestrian that keeps its distance (separation) but
+    // looks no further ahead (neither unaligned nor reciprocal avoidance) steps right with, an
+    // oncoming walker in its way (KeepRight.h); 0 for every other type.
+    std::vector<float> m_keepRight;
     std::vector<std::uint8_t> m_boidKernel;  // per type: steps through stepBoid
     // Per type, the boids kernel's parameters made usable once (WorldFlock.cpp): weights
     // (0 = off), gains = mass / response time, lengths in m.
@@ -364,6 +368,7 @@ private:
     struct WalkType {
         float wContainment, wSeparation, wUnaligned, wArrival, wSeek, wWander;
         bool reciprocal;
+        float keepRight;     // as m_keepRight
         bool aroundStatics;  // wall following or obstacle avoidance, and walls or obstacles to steer round
         bool constrained;    // walls or circles to hold the body out of (World::constrain)
         float maxForce, range, damping, horizonS, marginM, brake, lateral;

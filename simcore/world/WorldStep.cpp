@@ -6,6 +6,7 @@
 
 #include "simcore/scene/StepRate.h"
 
+#include "simcore/steering/KeepRight.h"
 #include "simcore/steering/UninitialisedArray.h"
 #include "simcore/world/Rng.h"
 #include "simcore/world/detail/StepGeometry.h"
@@ -225,6 +226,16 @@ void World::stepAgent(std::size_t i, bool hasStatics, NeighbourGrid::Sweep* swee
     // Steer: the type's behaviours, combined.
     WanderState wanderNext;
     glm::vec3 force = steer(i, self, {near.data(), count}, wanderNext) + brainTurnForce(i, self);
+    // A walker that only keeps its distance, with an oncoming walker in its way, steps to its
+    // right (KeepRight.h), as people do: two crowds meeting head-on form lanes instead of
+    // pressing face to face for good.
+    if (const float keepRight = m_keepRight[m_info[i].typeIndex]; keepRight > 0.0f)
+        for (std::size_t k = 0; k < count; ++k)
+            if (oncomingInTheWay(self.position, self.forward, self.radius, near[k].position, near[k].forward,
+                                 near[k].velocity, near[k].radius)) {
+                force += keepRightForce(self.forward, self.maxForce, keepRight);
+                break;
+            }
     if (s.on(Behaviour::ReciprocalAvoidance) && !s.vehicle.flying && m_decide)
         force = avoidReciprocally(i, self, force, {near.data(), count}, s);
     // Between decisions (StepRate.h) a ground agent applies the force it decided last.

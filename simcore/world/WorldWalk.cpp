@@ -8,6 +8,8 @@
 // with the squared distances the search already has and the type's constants made
 // usable once instead of per agent.
 #include "simcore/world/World.h"
+
+#include "simcore/steering/KeepRight.h"
 #include "simcore/world/NearestList.h"
 
 #include "simcore/steering/UninitialisedArray.h"
@@ -82,6 +84,7 @@ void World::buildWalkKernel(bool enabled)
         w.wSeek = s.weightIfOn(Behaviour::Seek);
         w.wWander = s.weightIfOn(Behaviour::Wander);
         w.reciprocal = s.on(Behaviour::ReciprocalAvoidance);
+        w.keepRight = m_keepRight[t];
         w.aroundStatics = (walls && s.on(Behaviour::WallFollowing)) || (obstacles && s.on(Behaviour::ObstacleAvoidance));
         w.constrained = walls || !m_circles.empty();  // as World::step's hasStatics
         w.maxForce = nonNegative(m_types[t].maxForce);
@@ -155,6 +158,7 @@ void World::stepWalker(std::size_t i)
     glm::vec3 threatOffset(0.0f);
     UninitialisedArray<PlanarNeighbour, kMaxNeighbours> others;  // the first `count` are written, and read
     std::size_t oncoming = 0;
+    bool oncomingInTheWayAhead = false;  // keeping right (KeepRight.h), as World::stepAgent
     const glm::vec2 fwd2 = xz(fwd), p2 = xz(p);
     std::uint32_t* nearIndex = &m_nearIndex[i * k];
     for (std::size_t n = 0; n < count; ++n) {
@@ -195,6 +199,8 @@ void World::stepWalker(std::size_t i)
                 }
             }
         }
+        if (w.keepRight > 0.0f && !oncomingInTheWayAhead)
+            oncomingInTheWayAhead = oncomingInTheWay(p, fwd, radius, q, m_fwd[j], vj, rj);
         if (w.reciprocal) {
             const bool stopped = m_stopped[j] != 0;
             PlanarNeighbour& o = others[n];
@@ -281,6 +287,8 @@ void World::stepWalker(std::size_t i)
     if (!hasGoal && m_leader[i] < 0 && !(w.wWander > 0.0f))
         add(-v * (t.mass / kStandStillResponseS), 1.0f);
     glm::vec3 force = truncate(sum, t.maxForce) + glm::vec3(0.0f);  // + the brain's turn: none
+    if (oncomingInTheWayAhead)
+        force += keepRightForce(fwd, t.maxForce, w.keepRight);
 
     // Avoid: the velocity the blend asks for becomes the nearest that touches no neighbour
     // within the horizon (World::avoidReciprocally between equals).
