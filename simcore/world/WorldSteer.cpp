@@ -20,6 +20,9 @@ using namespace detail;
 
 namespace {
 
+// Head-on to a wall, a walker sliding along it faster than this keeps its way.
+constexpr float kSlideOnMps = 0.1f;
+
 // Wall following (Reynolds 1999): an agent whose way leads into a nearby wall travels
 // along it toward the end nearer its way, instead of pressing against its face (the
 // local minimum a goal straight behind a wall makes). Zero when no wall is in the way.
@@ -53,8 +56,16 @@ glm::vec3 slideAlongWall(const SteeringAgent& self, std::span<const WallSegment>
             continue;
         glm::vec2 t = glm::normalize(along);
         float side = glm::dot(way, t);
-        if (std::fabs(side) < 0.2f)  // nearly head-on: go round the nearer end
-            side = glm::distance(c, a) < glm::distance(c, b) ? -1.0f : 1.0f;
+        if (std::fabs(side) < 0.2f) {
+            // Nearly head-on: keep on the way it already slides, so a walker near the middle
+            // of a face does not turn back each time the nearer end changes; from a stand,
+            // go round the nearer end.
+            const float sliding = glm::dot(glm::vec2(self.velocity.x, self.velocity.z), t);
+            if (std::fabs(sliding) > kSlideOnMps)
+                side = sliding;
+            else
+                side = glm::distance(c, a) < glm::distance(c, b) ? -1.0f : 1.0f;
+        }
         tangent = side < 0.0f ? -t : t;
         nearest = d;
     }

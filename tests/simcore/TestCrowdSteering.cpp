@@ -4,6 +4,8 @@
 #include "CrowdChecks.h"
 #include "TestRegistry.h"
 
+#include <glm/trigonometric.hpp>
+
 #include <QTest>
 
 #include <algorithm>
@@ -231,6 +233,40 @@ goals:
         qInfo("doorway, %s: %d of %d through in 30 s", qPrintable(combination), through, seekers);
         QVERIFY2(through == seekers,
                  qPrintable(QString("only %1 of %2 seekers passed the doorway in 30 s").arg(through).arg(seekers)));
+    }
+
+    void walkersBehindABoxGoRound()
+    {
+        // A walker of the default set standing at the back face of a 6 m x 5 m box (turned
+        // 10 degrees) with its goal straight beyond gets round, from any point along the
+        // face. Before, one near the middle turned back each time the nearer end of the face
+        // changed and stood there for good: 10 of these 21 starts never arrived.
+        const float a = glm::radians(10.0f);
+        int arrived = 0;
+        for (int k = -10; k <= 10; ++k) {
+            const float lx = -3.27f, lz = 0.2f * float(k);  // 0.02 m off the face, along it
+            const float x = lx * std::cos(a) + lz * std::sin(a), z = -lx * std::sin(a) + lz * std::cos(a);
+            const std::string yaml = R"(throng: 1
+settings: {fps: 24, seed: 9, bounds: {min: [-20, -20], max: [20, 20]}}
+agent_types:
+  - {name: walker, radius: 0.25, max_speed: 1.3}
+obstacles:
+  - {shape: box, center: [0, 0], size: [6, 5], angle: 10}
+goals:
+  - {name: gate, position: [15, 0], radius: 2}
+agents:
+  - {id: 1, type: walker, position: [)" + std::to_string(x) + ", " + std::to_string(z) + R"(], goal: gate}
+)";
+            World world(parse(yaml), kSerial);
+            while (world.timeS() < 40.0 && !world.hasArrived(0))
+                world.step();
+            QCOMPARE(world.counters().obstaclePenetrations, 0u);
+            if (world.hasArrived(0))
+                ++arrived;
+            else
+                qWarning("from %.2f, %.2f: not round the box in 40 s", double(x), double(z));
+        }
+        QCOMPARE(arrived, 21);
     }
 
     void reciprocalAvoidanceKeepsACrossingCrowdApart()
