@@ -42,7 +42,8 @@ bool freeEnd(std::span<const WallSegment> walls, glm::vec2 e)
 
 }  // namespace
 
-glm::vec3 avoidWalls(const SteeringAgent& agent, std::span<const WallSegment> walls, const WallAvoidanceParams& params)
+glm::vec3 avoidWalls(const SteeringAgent& agent, std::span<const WallSegment> walls, const WallAvoidanceParams& params,
+                     const glm::vec3* target)
 {
     const glm::vec2 p = xz(finiteOrZero(agent.position));
     const glm::vec2 v = xz(finiteOrZero(agent.velocity));
@@ -59,10 +60,22 @@ glm::vec3 avoidWalls(const SteeringAgent& agent, std::span<const WallSegment> wa
                                   h * std::cos(angle) - rightOf(h) * std::sin(angle)};
     const float lengths[3] = {length, 0.5f * length, 0.5f * length};
 
+    // The way the standoff of a door post never pushes back along (the header).
+    glm::vec2 way = h;
+    if (target) {
+        const glm::vec2 toTarget = xz(finiteOrZero(*target)) - p;
+        const float len = glm::length(toTarget);
+        if (len > kTiny)
+            way = toTarget / len;
+    }
     glm::vec2 force(0.0f);
     for (const WallSegment& w : walls) {
         const glm::vec2 a = xz(finiteOrZero(w.a)), b = xz(finiteOrZero(w.b));
-        const glm::vec2 c = closestOnSegment(p, a, b);
+        // The nearest point, exactly an end where it lies past one (closestOnSegment's
+        // a + 1 * (b - a) need not be b to the bit, and a door post is told by its end).
+        const bool pastA = glm::dot(p - a, b - a) <= 0.0f, pastB = glm::dot(p - b, a - b) <= 0.0f;
+        const glm::vec2 c = pastA ? a : pastB ? b : closestOnSegment(p, a, b);
+        const bool post = (pastA || pastB) && freeEnd(walls, c);
         const float dist = glm::length(p - c);
         const glm::vec2 n = dist > kTiny ? (p - c) / dist : wallNormalToward(p, a, b, h);
         const float gap = dist - r;
@@ -72,14 +85,17 @@ glm::vec3 avoidWalls(const SteeringAgent& agent, std::span<const WallSegment> wa
             const float depth = (standoff - gap) / standoff;
             glm::vec2 push = n * (standoffForce * depth - glm::dot(v, n) * mass / damping * std::min(depth, 1.0f));
             // At a wall's free end (a door post: an end no other wall here shares) the
-            // standoff only pushes sideways to the heading, never back: the two posts of a
-            // narrow door pushed a walker back out of the doorway harder than its goal drew
-            // it in, and it stood in front of the door for good (issue 23). The feelers
-            // still brake an approach at contact; corners where walls join push as before.
-            if ((c == a || c == b) && freeEnd(walls, c)) {
-                const float back = glm::dot(push, h);
+            // standoff only pushes sideways to the agent's way, never back: the two posts of a
+            // narrow door pushed a walker back out of the doorway harder than its goal drew it
+            // in, and it stood in front of the door for good (issue 23). The way is toward the
+            // target where one is given: sideways to the heading of a walker that came at a
+            // 0.8 m door aslant still pushed it back into the room, round and round in front
+            // of the door. The feelers still brake an approach at contact; corners where
+            // walls join push as before.
+            if (post) {
+                const float back = glm::dot(push, way);
                 if (back < 0.0f)
-                    push -= h * back;
+                    push -= way * back;
             }
             force += push;
         }

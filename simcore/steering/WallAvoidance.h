@@ -30,8 +30,10 @@ struct WallAvoidanceParams {
 //                 damping mass * (normal velocity) / dampingTimeS faded in over the same zone. With
 //                 the default gain 2, another behaviour pushing with the whole budget maxForce is
 //                 held at d = S / 2 and settles there.
+// At a door post (a wall's end that no other wall in the list shares) the standoff term never
+// pushes back along the agent's way: the way to `target` where one is given, else its heading.
 // An agent exactly on a wall is pushed back against its heading. Not truncated.
 glm::vec3 avoidWalls(const SteeringAgent& agent, std::span<const WallSegment> walls,
-                     const WallAvoidanceParams& params = {});
+                     const WallAvoidanceParams& params = {}, const glm::vec3* target = nullptr);
 
 }  // namespace throng::sim

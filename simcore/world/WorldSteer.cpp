@@ -195,7 +195,7 @@ void World::steerAroundStatics(std::size_t i, const SteeringAgent& self, glm::ve
             }
         });
         if (n > 0) {
-            request(B::WallFollowing, [&] { return avoidWalls(self, {walls.data(), n}, s.walls); });
+            request(B::WallFollowing, [&] { return avoidWalls(self, {walls.data(), n}, s.walls, &goal); });
             request(B::WallFollowing, [&] { return slideAlongWall(self, {walls.data(), n}, goal, s.walls); });
         }
     }
