@@ -354,9 +354,9 @@ void World::commit(std::size_t i, std::uint64_t& wallCrossings)
         return;
     // Arrived (the stats' figure) = entered the goal's area, or joined the pile of those
     // who stopped at it; counted once. Stopped = frozen for good: at the end of an open
-    // path, on its own spot in the goal, or against someone with the same goal who already
-    // stopped between it and its spot, so a shared goal fills like sand from the inside
-    // out and the last comers settle at the edge of the pile.
+    // path, on its own spot in the goal or held to a crawl in it, or against someone with
+    // the same goal who already stopped between it and its spot, so a shared goal fills
+    // like sand from the inside out and the last comers settle at the edge of the pile.
     bool stop = false;
     auto arrive = [&] {
         if (!m_arrived[i]) {
@@ -398,19 +398,28 @@ void World::commit(std::size_t i, std::uint64_t& wallCrossings)
     } else if (m_goal[i] >= 0) {
         const Goal& g = m_goals[std::size_t(m_goal[i])];
         if (glm::distance(to, g.position) < g.radiusM) {
+            // Or, in the goal since an earlier step, held to a crawl by those round it: a goal
+            // that several share fills up, and with bodies that no longer press through each
+            // other (issue 23) each walker could be kept off its spot by another kept off
+            // its own, milling there for good, and the late-comers at the edge with them.
+            const bool crawling = m_arrived[i] && glm::distance(to, from) < kSettleSpeedMps * m_dt;
             arrive();
             // Through an exit: the agent leaves the simulation (stopped, never perceived again).
-            stop = g.exit || glm::distance(to, m_goalSpot[i]) < kSpotToleranceM;
+            stop = g.exit || glm::distance(to, m_goalSpot[i]) < kSpotToleranceM || crawling;
             m_out[i] = g.exit ? 1 : 0;
         }
         // Against the pile: a stopped agent with the same goal, between this one and its
         // spot. Flags as they were when this phase began, and j's next position (which a
         // stopped agent shares with its current one): nothing another thread writes in
         // this phase is read here.
+        // Within touch, or within the personal space its separation keeps (which held a
+        // crowd of late-comers at arm's length from the pile, walking on the spot for good).
+        const TypeSteering& s = m_steering[m_info[i].typeIndex];
+        const float gap = std::max(kSettleGapM, s.on(Behaviour::Separation) ? s.separation.rangeM : 0.0f);
         const std::uint32_t* near = &m_nearIndex[i * kMaxNeighbours];
         for (std::size_t k = 0; !stop && !g.exit && k < m_nearCount[i]; ++k) {
             const std::uint32_t j = near[k];
-            const float contact = m_radius[i] + m_radius[j] + kSettleGapM;
+            const float contact = m_radius[i] + m_radius[j] + gap;
             const glm::vec2 q = xz(m_nextPos[j]);
             stop = m_stoppedBefore[j] && m_goal[j] == m_goal[i] && glm::distance(to, q) < contact &&
                    glm::dot(q - to, m_goalSpot[i] - to) > 0.0f;

@@ -267,6 +267,42 @@ groups:
                                                .arg(stopped).arg(lateSpeed)));
     }
 
+    void agentsCrowdingASmallGoalAllSettle()
+    {
+        // 16 walkers that keep their distance (the crossroads' walkers: separation 1.5 with
+        // its 0.5 m range) for a 1.5 m goal, which their bodies alone would fill to 64 %.
+        // Those that cannot reach their spots must stop at the pile; with bodies that no
+        // longer press through each other (issue 23), separation held the late-comers at
+        // arm's length from it and they walked on the spot for good: 14 arrived and 5
+        // stopped in 60 s. Now the pile is joined within the personal space separation
+        // keeps (a queue back along the way they came, up to 5 m from the goal's centre),
+        // and a walker held to a crawl inside its goal stops there.
+        for (const int seed : {1, 2, 3}) {
+            World world(parse(R"(throng: 1
+settings: {fps: 24, seed: )" + std::to_string(seed) + R"(}
+agent_types:
+  - {name: walker, radius: 0.3, max_speed: 1.4, max_force: 3, behaviours: {arrival: 1, separation: 1.5}}
+goals:
+  - {name: corner, position: [0, 0], radius: 1.5}
+groups:
+  - {name: visitors, type: walker, count: 16, rect: {min: [-14, -1], max: [-12, 1]}, goal: corner}
+)"), kSerial);
+            for (int step = 0; step < kFps * 60; ++step)
+                world.step();
+            std::size_t arrived = 0, stopped = 0;
+            float farthest = 0.0f;
+            for (std::size_t i = 0; i < world.agentCount(); ++i) {
+                arrived += world.hasArrived(i);
+                stopped += glm::length(world.velocities()[i]) == 0.0f;
+                farthest = std::max(farthest, glm::length(world.positions()[i]));
+            }
+            qInfo("small goal, seed %d: %zu arrived, %zu stopped at 60 s, the farthest %.2f m from its centre", seed,
+                  arrived, stopped, double(farthest));
+            QCOMPARE(arrived, std::size_t(16));
+            QCOMPARE(stopped, std::size_t(16));
+        }
+    }
+
     void denseCounterflowJamDissolves()
     {
         // 1,000 agents in a 20 m x 20 m square (2.5 per square metre, bodies covering 71 %
