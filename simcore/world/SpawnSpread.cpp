@@ -106,8 +106,8 @@ SpreadResult spreadBodies(std::vector<SpreadBody>& bodies, const SettleFn& settl
             }
         };
         for (const std::uint32_t i : active) {
-            if (push[i] == glm::vec2(0.0f))
-                continue;
+            if (push[i] == glm::vec2(0.0f) && result.rounds > 0)
+                continue;  // (the first round settles every member: one may overlap a wall's edge)
             SpreadBody& a = bodies[i];
             glm::vec2 to;
             if (!settle(a.p + push[i], a.r, to) || to == a.p)

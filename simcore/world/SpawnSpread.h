@@ -5,7 +5,8 @@
 // overlaps (issue 23). The members move the least that parts them: rounds of Jacobi
 // projection, each overlapping pair pushed apart by its overlap, split evenly between two
 // members and taken whole by a member against a body that stays (one placed earlier).
-// Each move is kept clear of walls and obstacles by a callback. Pure: no scene, no state.
+// Each move, and in the first round every member's place, is kept clear of walls and
+// obstacles by a callback. Pure: no scene, no state.
 
 #include <glm/vec2.hpp>
 
