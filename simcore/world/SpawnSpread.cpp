@@ -53,14 +53,13 @@ private:
 
 }  // namespace
 
-SpreadResult spreadBodies(std::vector<SpreadBody>& bodies, const SettleFn& settle, float toleranceM, int maxRounds)
+void spreadBodies(std::vector<SpreadBody>& bodies, const SettleFn& settle, float toleranceM, int maxRounds)
 {
-    SpreadResult result;
     float largest = 0.0f;
     for (const SpreadBody& b : bodies)
         largest = std::max(largest, b.r);
     if (bodies.empty() || !(largest > 0.0f))
-        return result;
+        return;
     SpreadGrid grid(2.0f * largest);
     for (std::uint32_t i = 0; i < bodies.size(); ++i)
         grid.insert(i, bodies[i].p);
@@ -72,7 +71,7 @@ SpreadResult spreadBodies(std::vector<SpreadBody>& bodies, const SettleFn& settl
         if (bodies[i].movable)
             active.push_back(i);
     std::vector<glm::vec2> push(bodies.size(), glm::vec2(0.0f));
-    for (; result.rounds < maxRounds && !active.empty(); ++result.rounds) {
+    for (int round = 0; round < maxRounds && !active.empty(); ++round) {
         // Jacobi: every push is worked out from the places at the start of the round.
         for (const std::uint32_t i : active) {
             const SpreadBody& a = bodies[i];
@@ -106,7 +105,7 @@ SpreadResult spreadBodies(std::vector<SpreadBody>& bodies, const SettleFn& settl
             }
         };
         for (const std::uint32_t i : active) {
-            if (push[i] == glm::vec2(0.0f) && result.rounds > 0)
+            if (push[i] == glm::vec2(0.0f) && round > 0)
                 continue;  // (the first round settles every member: one may overlap a wall's edge)
             SpreadBody& a = bodies[i];
             glm::vec2 to;
@@ -127,16 +126,6 @@ SpreadResult spreadBodies(std::vector<SpreadBody>& bodies, const SettleFn& settl
         std::sort(next.begin(), next.end());  // the same rounds whatever order they were met in
         active.swap(next);
     }
-    for (std::uint32_t i = 0; i < bodies.size(); ++i) {
-        if (!bodies[i].movable)
-            continue;
-        grid.forEachNear(bodies[i].p, [&](std::uint32_t j) {
-            const float contact = bodies[i].r + bodies[j].r, dist = glm::distance(bodies[i].p, bodies[j].p);
-            if (j != i)
-                result.deepestLeftM = std::max(result.deepestLeftM, contact - dist);
-        });
-    }
-    return result;
 }
 
 }  // namespace throng::sim

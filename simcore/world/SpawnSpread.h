@@ -23,16 +23,11 @@ struct SpreadBody {
     std::uint64_t key = 0;   // distinct per body: coincident pairs part along a direction it seeds
 };
 
-struct SpreadResult {
-    int rounds = 0;            // rounds of projection made
-    float deepestLeftM = 0.0f; // the deepest overlap left (0 when every pair parted)
-};
-
 // settle(q, r, out): where a body of radius r that would move to q may go instead (out,
 // clear of the statics); false when it may not move there at all.
 using SettleFn = std::function<bool(glm::vec2 q, float r, glm::vec2& out)>;
 
 // Parts the movable bodies until no pair overlaps by more than toleranceM, or maxRounds.
-SpreadResult spreadBodies(std::vector<SpreadBody>& bodies, const SettleFn& settle, float toleranceM, int maxRounds);
+void spreadBodies(std::vector<SpreadBody>& bodies, const SettleFn& settle, float toleranceM, int maxRounds);
 
 }  // namespace throng::sim
