@@ -330,9 +330,9 @@ void World::spreadMembers(const SpawnGroup& group, std::uint16_t type, std::size
     }
     std::vector<SpreadBody> bodies;
     bodies.reserve(places.size());
-    float largest = r;
-    for (std::size_t i = 0; i < m_pos.size(); ++i)
-        largest = std::max(largest, m_radius[i]);
+    float largest = r;  // the largest body of any type (the types, not every agent placed so far)
+    for (const TypeParams& t : m_types)
+        largest = std::max(largest, t.radius);
     const float reach = 8.0f * largest;  // members part by a few radii at most
     for (std::size_t i = 0; i < m_pos.size(); ++i) {
         const glm::vec2 q = detail::xz(m_pos[i]);
