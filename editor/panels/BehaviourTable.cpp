@@ -52,6 +52,9 @@ BehaviourTable::BehaviourTable(PropertyForm& form, QWidget* parent) : QWidget(pa
     auto* buttons = new QHBoxLayout;
     m_add = new QComboBox(this);
     m_add->setObjectName("addBehaviour");
+    // Sized by a short name, not the longest behaviour's: Properties fits at 1280 x 800.
+    m_add->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_add->setMinimumContentsLength(8);
     m_add->setToolTip(tr("Add a steering behaviour (weight 1) to the selected types"));
     m_remove = new QPushButton(tr("Remove"), this);
     m_remove->setObjectName("removeBehaviour");

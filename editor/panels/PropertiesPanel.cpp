@@ -27,6 +27,8 @@ PropertiesPanel::PropertiesPanel(SceneDocument& document, QWidget* parent) : QWi
     scroll->setWidget(m_fields);
     auto* fieldColumn = new QVBoxLayout(m_fields);
     m_form = new QFormLayout;
+    // A narrow panel puts a label above its field instead of scrolling sideways.
+    m_form->setRowWrapPolicy(QFormLayout::WrapLongRows);
     fieldColumn->addLayout(m_form);
     fieldColumn->addStretch(1);
     connect(&m_document, &SceneDocument::selectionChanged, this, &PropertiesPanel::rebuild);
