@@ -1,10 +1,15 @@
 #include "editor/MainWindow.h"
 
+#include "editor/AgentTypePresets.h"
 #include "editor/AutosaveRecovery.h"
+#include "editor/HelpMenu.h"
 #include "editor/MessagesPanel.h"
 #include "editor/RecentFiles.h"
+#include "editor/ShortcutToolTips.h"
 #include "editor/brain/BrainEditorPanel.h"
 #include "editor/commands/DeleteItemsCommand.h"
+#include "editor/WorkspaceLayout.h"
+#include "editor/panels/AgentTypeActions.h"
 #include "editor/panels/OutlinerPanel.h"
 #include "editor/panels/PropertiesPanel.h"
 #include "editor/panels/TimelinePanel.h"
@@ -23,7 +28,9 @@
 #include <QStatusBar>
 #include <QTimer>
 #include <QToolBar>
+#include <QToolButton>
 #include <QUndoView>
+#include <QVBoxLayout>
 
 namespace throng::editor {
 
@@ -31,11 +38,13 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
 {
     setObjectName("mainWindow");
     setAcceptDrops(true);
+    // What File > New gives: a scene a brush or the group tool can place agents in.
+    m_document.reset(newSceneTemplate());
     m_viewport = new Viewport(this);
     m_viewport->setObjectName("viewport");
-    setCentralWidget(m_viewport);
     m_tools = new ToolManager(m_document, *m_viewport, this);
     m_simulation = new SimulationController(this);
+    m_typeActions = new AgentTypeActions(m_document, this);
     m_autosave = new AutosaveRecovery(m_document, this);
     m_editTimer = new QTimer(this);
     m_editTimer->setSingleShot(true);
@@ -44,10 +53,13 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
     createDocks();
     createFileMenu();
     createEditMenu();
+    createCreateMenu();
     createViewMenu();
     createSimulationMenu();
     createToolBars();
     createStatusBar();
+    new HelpMenu(*this);
+    nameShortcutsInToolTips(*this);
 
     connect(&m_document, &SceneDocument::sceneReset, this, [this] {
         m_editTimer->stop();
@@ -78,7 +90,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
 
     m_viewport->setScene(m_document.scene());
     m_simulation->setScene(m_document.scene());
-    m_messages->showNote(tr("No scene open. Open one with File > Open (Ctrl+O)."));
+    for (ViewportTool* tool : m_tools->tools())
+        connect(tool, &ViewportTool::agentTypeNeeded, this, &MainWindow::offerAgentType);
+    m_messages->showNote(tr("New scene. Draw a spawn group (S) or paint agents with the crowd brush (B); "
+                            "walls (W) and goals (G) give them a place to go. Or open a scene (Ctrl+O)."));
     updateTitle();
     restoreWindowState();
 }
@@ -102,24 +117,25 @@ QDockWidget* MainWindow::addDock(const QString& title, const QString& name, QWid
 void MainWindow::createDocks()
 {
     m_outliner = new OutlinerPanel(m_document, this);
-    addDock(tr("Outliner"), "outlinerDock", m_outliner, Qt::LeftDockWidgetArea);
+    QDockWidget* outlinerDock = addDock(tr("Outliner"), "outlinerDock", outlinerWithActions(), Qt::LeftDockWidgetArea);
     auto* properties = new PropertiesPanel(m_document, this);
-    addDock(tr("Properties"), "propertiesDock", properties, Qt::RightDockWidgetArea);
+    QDockWidget* propertiesDock = addDock(tr("Properties"), "propertiesDock", properties, Qt::RightDockWidgetArea);
     auto* history = new QUndoView(m_document.undoStack(), this);
     history->setObjectName("historyView");
     history->setEmptyLabel(tr("<opened>"));
-    addDock(tr("History"), "historyDock", history, Qt::RightDockWidgetArea);
+    QDockWidget* historyDock = addDock(tr("History"), "historyDock", history, Qt::RightDockWidgetArea);
     m_timeline = new TimelinePanel(*m_simulation, this);
     addDock(tr("Timeline"), "timelineDock", m_timeline, Qt::BottomDockWidgetArea);
     m_messages = new MessagesPanel(this);
     m_messagesDock = addDock(tr("Messages"), "messagesDock", m_messages, Qt::BottomDockWidgetArea);
-    auto* brains = new BrainEditorPanel(m_document, *m_simulation, m_viewport, this);
-    // Closed until asked for (View > Brains, Ctrl+B): the viewport keeps its size.
-    QDockWidget* brainDock = addDock(tr("Brains"), "brainDock", brains, Qt::BottomDockWidgetArea);
-    brainDock->hide();
-    brainDock->toggleViewAction()->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_B));
-    brainDock->toggleViewAction()->setToolTip(tr("Show or hide the brain editor (Ctrl+B)"));
-    connect(brains, &BrainEditorPanel::brainMessages, m_messages, &MessagesPanel::showDiagnostics);
+    m_brains = new BrainEditorPanel(m_document, *m_simulation, m_viewport, this);
+    m_brains->setObjectName("brainEditor");
+    // The brain editor shares the centre with the viewport in its own workspace (Ctrl+B),
+    // where the outliner, properties and history give it their room.
+    m_workspace = new WorkspaceLayout(*this, m_viewport, m_brains, {outlinerDock, propertiesDock, historyDock});
+    // Room for Properties' fields at 1280 x 800 without a sideways scroll bar.
+    m_workspace->setDefaultDockSizes({{"outlinerDock", QSize(220, 0)}, {"propertiesDock", QSize(330, 0)}});
+    connect(m_brains, &BrainEditorPanel::brainMessages, m_messages, &MessagesPanel::showDiagnostics);
     connect(properties, &PropertiesPanel::problem, this, [this](const QString& text) {
         m_messages->showNote(text);
         m_messagesDock->show();
@@ -161,6 +177,11 @@ void MainWindow::createEditMenu()
         m_document.undoStack()->push(command);
     });
     menu->addSeparator();
+    m_deleteAction = remove;
+    m_outlinerBar->addAction(remove);
+    if (QWidget* button = m_outlinerBar->widgetForAction(remove))
+        button->setObjectName("deleteItemsButton");
+    m_outliner->addAction(remove);
     QMenu* toolMenu = menu->addMenu(tr("&Tools"));
     toolMenu->addActions(m_tools->actions()->actions());
     toolMenu->setToolTipsVisible(true);
@@ -189,6 +210,11 @@ void MainWindow::createViewMenu()
     QAction* frame = menu->addAction(tr("&Frame All"), m_viewport, &Viewport::frameAll);
     frame->setShortcut(Qt::Key_F);
     frame->setToolTip(tr("Fit the whole scene into the viewport"));
+    menu->addSeparator();
+    QMenu* workspaces = menu->addMenu(tr("&Workspace"));
+    workspaces->addAction(m_workspace->brainsAction());
+    workspaces->addAction(m_workspace->resetAction());
+    menu->addAction(m_workspace->resetAction());
     menu->addSeparator();
     for (QDockWidget* dock : m_docks)
         menu->addAction(dock->toggleViewAction());
@@ -221,6 +247,74 @@ void MainWindow::addAgentsAsMenu(QMenu& viewMenu)
     });
 }
 
+void MainWindow::createCreateMenu()
+{
+    QMenu* menu = menuBar()->addMenu(tr("&Create"));
+    menu->setObjectName("createMenu");
+    menu->setToolTipsVisible(true);
+    menu->addAction(m_typeActions->newType());
+    QMenu* presets = menu->addMenu(tr("Agent Type &Preset"));
+    presets->setToolTipsVisible(true);
+    presets->addActions(m_typeActions->presetMenu()->actions());
+    menu->addAction(m_typeActions->duplicate());
+    menu->addSeparator();
+    for (const char* key : {"group", "crowdBrush", "wall", "goal", "path", "obstacle"})
+        if (ViewportTool* tool = m_tools->tool(key))
+            for (QAction* a : m_tools->actions()->actions())
+                if (a->objectName() == tool->objectKey() + "Action")
+                    menu->addAction(a);
+}
+
+QWidget* MainWindow::outlinerWithActions()
+{
+    auto* box = new QWidget(this);
+    box->setObjectName("outlinerBox");
+    auto* column = new QVBoxLayout(box);
+    column->setContentsMargins(0, 0, 0, 0);
+    column->setSpacing(0);
+    auto* bar = new QToolBar(box);
+    m_outlinerBar = bar;
+    bar->setObjectName("outlinerToolBar");
+    bar->setIconSize(QSize(16, 16));
+    bar->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    bar->addAction(m_typeActions->newType());
+    if (auto* button = qobject_cast<QToolButton*>(bar->widgetForAction(m_typeActions->newType()))) {
+        button->setObjectName("newTypeButton");
+        button->setPopupMode(QToolButton::MenuButtonPopup);
+        button->setText(tr("+ Type"));
+    }
+    bar->addAction(m_typeActions->duplicate());
+    if (QWidget* button = bar->widgetForAction(m_typeActions->duplicate())) {
+        button->setObjectName("duplicateTypeButton");
+        static_cast<QToolButton*>(button)->setText(tr("Duplicate"));
+    }
+    column->addWidget(bar);
+    column->addWidget(m_outliner);
+    // Right click: the same, with Delete.
+    m_outliner->setContextMenuPolicy(Qt::ActionsContextMenu);
+    m_outliner->addAction(m_typeActions->newType());
+    m_outliner->addAction(m_typeActions->duplicate());
+    return box;
+}
+
+void MainWindow::offerAgentType()
+{
+    const QString question = tr("This scene has no agent type yet, so there is nothing to place.\n\n"
+                                "Create a pedestrian type? (Create > New Agent Type offers others.)");
+    const auto answer = m_typePrompt ? m_typePrompt() : [&] {
+        QMessageBox box(QMessageBox::Question, tr("No agent type"), question, QMessageBox::Yes | QMessageBox::No, this);
+        box.setObjectName("createTypePrompt");
+        box.setDefaultButton(QMessageBox::Yes);
+        return QMessageBox::StandardButton(box.exec());
+    }();
+    if (answer != QMessageBox::Yes)
+        return;
+    const std::size_t index = m_typeActions->create(TypePreset::Pedestrian);
+    statusBar()->showMessage(
+        tr("Created agent type %1: now draw or paint.").arg(QString::fromStdString(m_document.scene().agentTypes[index].name)),
+        8000);
+}
+
 void MainWindow::createSimulationMenu()
 {
     QMenu* menu = menuBar()->addMenu(tr("&Simulation"));
@@ -244,6 +338,10 @@ void MainWindow::createSimulationMenu()
 void MainWindow::createToolBars()
 {
     // Down the left side: a column has room for every tool, a row would hide some.
+    auto* workspaces = new QToolBar(tr("Workspaces"), this);
+    workspaces->setObjectName("workspaceToolBar");
+    workspaces->addWidget(m_workspace->tabBar());
+    addToolBar(Qt::TopToolBarArea, workspaces);
     auto* tools = new QToolBar(tr("Tools"), this);
     addToolBar(Qt::LeftToolBarArea, tools);
     tools->setObjectName("toolsToolBar");
@@ -293,10 +391,7 @@ void MainWindow::updateAgentStatus()
 
 void MainWindow::restoreWindowState()
 {
-    QSettings settings;
-    if (!restoreGeometry(settings.value("mainWindow/geometry").toByteArray()))
-        resize(1280, 800);
-    restoreState(settings.value("mainWindow/state").toByteArray());
+    m_workspace->restore();
 }
 
 }  // namespace throng::editor

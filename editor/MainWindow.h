@@ -15,10 +15,13 @@ class QDockWidget;
 class QLabel;
 class QMenu;
 class QTimer;
+class QToolBar;
 
 namespace throng::editor {
 
+class AgentTypeActions;
 class AutosaveRecovery;
+class BrainEditorPanel;
 class ExportDialog;
 class MessagesPanel;
 class OutlinerPanel;
@@ -27,6 +30,7 @@ class SimulationController;
 class TimelinePanel;
 class ToolManager;
 class Viewport;
+class WorkspaceLayout;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -55,6 +59,10 @@ public:
     SimulationController& simulation() { return *m_simulation; }
     OutlinerPanel& outliner() { return *m_outliner; }
     TimelinePanel& timeline() { return *m_timeline; }
+    WorkspaceLayout& workspace() { return *m_workspace; }
+    BrainEditorPanel& brainEditor() { return *m_brains; }
+    // Replaces the question offerAgentType() asks (tests answer it without a dialog).
+    void setAgentTypePrompt(std::function<QMessageBox::StandardButton()> prompt) { m_typePrompt = std::move(prompt); }
     // Opens File > Export (window-modal, not blocking) and returns it.
     ExportDialog* showExportDialog();
 
@@ -70,6 +78,9 @@ private:
     void createEditMenu();
     void createViewMenu();
     void addAgentsAsMenu(QMenu& viewMenu);
+    void createCreateMenu();
+    QWidget* outlinerWithActions();
+    void offerAgentType();
     void createSimulationMenu();
     void createToolBars();
     void createStatusBar();
@@ -95,6 +106,11 @@ private:
     TimelinePanel* m_timeline = nullptr;
     RecentFiles* m_recent = nullptr;
     AutosaveRecovery* m_autosave = nullptr;
+    AgentTypeActions* m_typeActions = nullptr;
+    BrainEditorPanel* m_brains = nullptr;
+    WorkspaceLayout* m_workspace = nullptr;
+    QAction* m_deleteAction = nullptr;
+    QToolBar* m_outlinerBar = nullptr;
     QDockWidget* m_messagesDock = nullptr;
     QList<QDockWidget*> m_docks;
     QLabel* m_agentCountLabel = nullptr;
@@ -102,6 +118,7 @@ private:
     QLabel* m_speedLabel = nullptr;
     QTimer* m_editTimer = nullptr;
     std::function<QMessageBox::StandardButton()> m_prompt;
+    std::function<QMessageBox::StandardButton()> m_typePrompt;
 };
 
 }  // namespace throng::editor

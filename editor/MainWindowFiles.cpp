@@ -2,9 +2,11 @@
 // before unsaved changes are lost.
 #include "editor/MainWindow.h"
 
+#include "editor/AgentTypePresets.h"
 #include "editor/AutosaveRecovery.h"
 #include "editor/MessagesPanel.h"
 #include "editor/RecentFiles.h"
+#include "editor/WorkspaceLayout.h"
 #include "editor/exporting/ExportDialog.h"
 
 #include <QAction>
@@ -107,13 +109,14 @@ void MainWindow::createFileMenu()
     m_recent = new RecentFiles(menu->addMenu(tr("Open &Recent")), this);
     connect(m_recent, &RecentFiles::openRequested, this, &MainWindow::openAfterAsking);
     add(tr("&Save"), QKeySequence::Save, tr("Save the scene to its file"), &MainWindow::save);
-    add(tr("Save &As..."), QKeySequence::SaveAs, tr("Save the scene to a new file"), &MainWindow::saveAsWithDialog);
+    // Spelled out: without a desktop's platform theme Qt gives SaveAs and Quit no keys.
+    add(tr("Save &As..."), QKeySequence(tr("Ctrl+Shift+S")), tr("Save the scene to a new file"), &MainWindow::saveAsWithDialog);
     add(tr("Re&vert"), QKeySequence(), tr("Throw away the changes and read the file again"), &MainWindow::revert);
     menu->addSeparator();
     add(tr("&Export..."), QKeySequence(tr("Ctrl+Shift+E")), tr("Export the simulation as glTF or CSV"),
         &MainWindow::showExportDialog);
     menu->addSeparator();
-    add(tr("&Quit"), QKeySequence::Quit, tr("Close Throng"), &QWidget::close);
+    add(tr("&Quit"), QKeySequence(tr("Ctrl+Q")), tr("Close Throng"), &QWidget::close);
     menu->setToolTipsVisible(true);
 }
 
@@ -129,8 +132,9 @@ void MainWindow::newScene()
 {
     if (!maybeKeepChanges())
         return;
-    m_document.reset();
-    m_messages->showNote(tr("New scene."));
+    m_document.reset(newSceneTemplate());
+    m_messages->showNote(tr("New scene with a pedestrian type. Draw a spawn group (S) or paint agents with the crowd "
+                            "brush (B); walls (W) and goals (G) give them a place to go."));
 }
 
 void MainWindow::openWithDialog()
@@ -165,9 +169,14 @@ bool MainWindow::save()
 
 bool MainWindow::saveAsWithDialog()
 {
-    const QString path = QFileDialog::getSaveFileName(this, tr("Save Scene As"), m_document.filePath(),
-                                                      tr(kSceneFilter));
-    return !path.isEmpty() && reportSave(m_document.saveAs(path));
+    QFileDialog dialog(this, tr("Save Scene As"), m_document.filePath(), tr(kSceneFilter));
+    dialog.setObjectName("saveSceneDialog");
+    dialog.setAcceptMode(QFileDialog::AcceptSave);
+    dialog.setOption(QFileDialog::DontUseNativeDialog);  // the same dialog on every desktop, and tests can drive it
+    dialog.setDefaultSuffix("yaml");
+    if (dialog.exec() != QDialog::Accepted || dialog.selectedFiles().isEmpty())
+        return false;
+    return reportSave(m_document.saveAs(dialog.selectedFiles().front()));
 }
 
 bool MainWindow::reportSave(const sim::SaveResult& result)
@@ -212,9 +221,7 @@ void MainWindow::closeEvent(QCloseEvent* event)
         return;
     }
     m_autosave->discard();
-    QSettings settings;
-    settings.setValue("mainWindow/geometry", saveGeometry());
-    settings.setValue("mainWindow/state", saveState());
+    m_workspace->save();
     QMainWindow::closeEvent(event);
 }
 

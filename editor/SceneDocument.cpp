@@ -68,9 +68,9 @@ void SceneDocument::adoptRecovered(const QString& path)
     m_undoStack.resetClean();
 }
 
-void SceneDocument::reset()
+void SceneDocument::reset(sim::Scene initial)
 {
-    m_scene = {};
+    m_scene = std::move(initial);
     m_undoStack.clear();
     setSelection({});
     m_filePath.clear();

@@ -43,8 +43,9 @@ public:
     // After loading a recovery copy: the scene belongs to `path` (empty = untitled) and
     // counts as unsaved.
     void adoptRecovered(const QString& path);
-    // Replaces the scene with an empty one without a file; clears the history.
-    void reset();
+    // Replaces the scene with `initial` (File > New passes a starting template) without a
+    // file; clears the history.
+    void reset(sim::Scene initial = {});
 
     // The one mutator commands use: applies `edit` to the scene, then emits
     // sceneChanged(). Only QUndoCommands call it, so every edit is undoable.

@@ -46,6 +46,10 @@ QString CrowdBrushTool::toolTip() const
 
 void CrowdBrushTool::mousePressed(const ToolMouse& mouse)
 {
+    if (document().scene().agentTypes.empty()) {
+        emit agentTypeNeeded();  // nothing to paint with: the main window offers a type
+        return;
+    }
     m_cursor = mouse.ground;
     if (!mouse.ground)
         return;

@@ -5,6 +5,7 @@
 #include "editor/tools/EraseBrushTool.h"
 #include "editor/tools/FlowStrokeTool.h"
 #include "editor/tools/GoalTool.h"
+#include "editor/tools/GroupTool.h"
 #include "editor/tools/HeroTool.h"
 #include "editor/tools/LaneTool.h"
 #include "editor/tools/ObstacleTool.h"
@@ -27,6 +28,7 @@ ToolManager::ToolManager(SceneDocument& document, Viewport& viewport, QObject* p
     : QObject(parent), m_viewport(viewport)
 {
     m_tools = {new SelectTool(document, viewport, this),   new CrowdBrushTool(document, viewport, this),
+               new GroupTool(document, viewport, this),
                new EraseBrushTool(document, viewport, this), new VariationBrushTool(document, viewport, this),
                new OrientBrushTool(document, viewport, this), new AssignBrushTool(document, viewport, this),
                new WallTool(document, viewport, this),

@@ -67,6 +67,9 @@ public:
 signals:
     // The preview or status text changed: the viewport repaints its overlay.
     void overlayChanged();
+    // The user tried to place agents in a scene without agent types: the main window
+    // offers to create one.
+    void agentTypeNeeded();
 
 protected:
     // Entering Dragging remembers the undo stack's index, for revertDrag.

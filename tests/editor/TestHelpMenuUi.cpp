@@ -1,0 +1,125 @@
+// The Help menu driven like a user: F1 opens the user guide, Ctrl+/ the sheet of every
+// shortcut (each action's keys, each tool's key), and every action's tooltip names its
+// shortcut.
+#include "EditorTestSupport.h"
+#include "EditorUiDriver.h"
+#include "TestRegistry.h"
+
+#include "editor/tools/ToolManager.h"
+
+#include <QAction>
+#include <QActionGroup>
+#include <QDialog>
+#include <QMap>
+#include <QStandardPaths>
+#include <QTableWidget>
+#include <QTest>
+#include <QTextBrowser>
+
+using namespace throng;
+using namespace throng::editor;
+using namespace throng::editor::test;
+
+namespace {
+
+void showEmpty(MainWindow& window)
+{
+    window.resize(1400, 900);
+    window.show();
+    window.activateWindow();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QVERIFY(QTest::qWaitForWindowActive(&window));
+}
+
+}  // namespace
+
+class TestHelpMenuUi : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase()
+    {
+        QStandardPaths::setTestModeEnabled(true);
+        QCoreApplication::setOrganizationName("ThrongTests");
+    }
+
+    void f1OpensTheUserGuide()
+    {
+        MainWindow window;
+        showEmpty(window);
+        QTest::keyClick(&window.viewport(), Qt::Key_F1);
+        auto* guide = window.findChild<QDialog*>("userGuideDialog");
+        QVERIFY(guide);
+        QTRY_VERIFY(guide->isVisible());
+        const QString text = guide->findChild<QTextBrowser*>("userGuideBrowser")->toPlainText();
+        QVERIFY2(text.contains("The Throng editor"), qPrintable(text.left(200)));
+        QVERIFY2(text.size() > 2000, qPrintable(QString::number(text.size())));
+    }
+
+    void theShortcutSheetListsEveryActionAndTool()
+    {
+        MainWindow window;
+        showEmpty(window);
+        QTest::keyClick(&window.viewport(), Qt::Key_Slash, Qt::ControlModifier);
+        auto* sheet = window.findChild<QDialog*>("shortcutsDialog");
+        QVERIFY(sheet);
+        QTRY_VERIFY(sheet->isVisible());
+        auto* table = sheet->findChild<QTableWidget*>("shortcutsTable");
+        QStringList rows;
+        for (int r = 0; r < table->rowCount(); ++r)
+            rows << table->item(r, 1)->text() + " | " + table->item(r, 2)->text();
+        auto listed = [&](const QString& keys, const QString& what) {
+            for (const QString& row : rows)
+                if (row.startsWith(keys + " |") && row.contains(what))
+                    return true;
+            return false;
+        };
+        for (QAction* tool : window.tools().actions()->actions())
+            QVERIFY2(listed(tool->shortcut().toString(QKeySequence::NativeText), tool->text()), qPrintable(tool->text()));
+        QVERIFY(listed("Ctrl+N", "New"));
+        QVERIFY(listed("Ctrl+B", "Brains Workspace"));
+        QVERIFY(listed("Ctrl+T", "New Agent Type"));
+        QVERIFY(listed("Space", "Play"));
+        QVERIFY(listed("F1", "User Guide"));
+        QVERIFY(listed("Alt + left drag", "Orbit"));
+    }
+
+    void everyTooltipNamesItsShortcut()
+    {
+        MainWindow window;
+        showEmpty(window);
+        int named = 0;
+        for (QAction* a : window.findChildren<QAction*>()) {
+            if (a->shortcut().isEmpty())
+                continue;
+            const QString keys = a->shortcut().toString(QKeySequence::NativeText);
+            QVERIFY2(a->toolTip().contains(keys), qPrintable(a->text() + ": " + a->toolTip()));
+            ++named;
+        }
+        QVERIFY2(named >= 30, qPrintable(QString::number(named)));
+    }
+
+    // Two actions on one key both do nothing (Qt calls it ambiguous); every file action
+    // has its key on any desktop.
+    void noTwoActionsShareAKey()
+    {
+        MainWindow window;
+        showEmpty(window);
+        QMap<QString, QString> owner;
+        for (QAction* a : window.findChildren<QAction*>()) {
+            if (a->shortcutContext() == Qt::WidgetShortcut)
+                continue;
+            for (const QKeySequence& k : a->shortcuts()) {
+                const QString keys = k.toString(QKeySequence::PortableText);
+                QVERIFY2(!owner.contains(keys) || owner[keys] == a->text(),
+                         qPrintable(keys + ": " + owner.value(keys) + " and " + a->text()));
+                owner[keys] = a->text();
+            }
+        }
+        for (const char* keys : {"Ctrl+N", "Ctrl+O", "Ctrl+S", "Ctrl+Shift+S", "Ctrl+Q", "Ctrl+Z"})
+            QVERIFY2(owner.contains(keys), keys);
+    }
+};
+
+THRONG_REGISTER_TEST(TestHelpMenuUi)
+#include "TestHelpMenuUi.moc"
