@@ -30,7 +30,8 @@ QToolButton* makeButton(QWidget* parent, const QString& name, const QString& tex
     button->setText(text);
     button->setToolTip(tip);
     button->setIcon(parent->style()->standardIcon(icon));
-    button->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+    // Icons only, as DCC playbars have them: the dock keeps to the window's narrowest width.
+    button->setToolButtonStyle(Qt::ToolButtonIconOnly);
     return button;
 }
 
@@ -88,7 +89,9 @@ QWidget* TimelinePanel::makeControls()
     m_timecodeLabel->setToolTip(tr("Timecode (hours:minutes:seconds:frames) at the scene's frame rate, and seconds"));
     m_frameLabel = new QLabel(controls);
     m_frameLabel->setObjectName("timelineFrameLabel");
-    m_frameLabel->setMinimumWidth(120);
+    // Fixed widths: a longer number must not widen the dock (and the window) while it plays.
+    m_timecodeLabel->setMinimumWidth(m_timecodeLabel->fontMetrics().horizontalAdvance("00:00:00:00  0000.00 s"));
+    m_frameLabel->setMinimumWidth(m_frameLabel->fontMetrics().horizontalAdvance("Frame 00000 / 00000"));
     m_modeBox = new QComboBox(controls);
     m_modeBox->setObjectName("playbackModeBox");
     m_modeBox->addItem(tr("Real time"), "realTime");
@@ -150,10 +153,9 @@ void TimelinePanel::refresh()
     const double fps = m_controller.fps();
     m_timecodeLabel->setText(
         tr("%1  %2 s").arg(timecode(current, fps)).arg(double(current) / fps, 0, 'f', 2));
-    QString frameText = tr("Frame %1 / %2").arg(current).arg(last);
-    if (const std::optional<std::size_t> target = m_controller.seekTarget())
-        frameText += tr(", computing to %1").arg(*target);
-    m_frameLabel->setText(frameText);
+    m_frameLabel->setText(tr("Frame %1 / %2").arg(current).arg(last));
+    const std::optional<std::size_t> target = m_controller.seekTarget();
+    m_scrub->setTargetFrame(target ? int(*target) : -1);
 }
 
 }  // namespace throng::editor

@@ -33,6 +33,14 @@ void TimelineRuler::setCachedFrames(std::size_t cachedFrames)
     update();
 }
 
+void TimelineRuler::setTargetFrame(int frame)
+{
+    if (frame == m_targetFrame)
+        return;
+    m_targetFrame = frame;
+    update();
+}
+
 int TimelineRuler::xOfFrame(int frame) const
 {
     const int span = maximum() - minimum();
@@ -142,8 +150,12 @@ void TimelineRuler::paintTicks(QPainter& painter) const
 
 void TimelineRuler::paintHandle(QPainter& painter) const
 {
-    const int x = xOfFrame(value());
     const QColor colour = QColor::fromRgb(kHandleColour);
+    if (m_targetFrame >= 0) {
+        painter.setPen(QPen(colour, 1, Qt::DashLine));
+        painter.drawLine(xOfFrame(m_targetFrame), 0, xOfFrame(m_targetFrame), height());
+    }
+    const int x = xOfFrame(value());
     painter.fillRect(QRect(x - 1, 0, 2, height()), colour);
     const QPoint tip[] = {{x - 5, 0}, {x + 5, 0}, {x, 6}};
     painter.setPen(Qt::NoPen);

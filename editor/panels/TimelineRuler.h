@@ -1,7 +1,7 @@
 #pragma once
-// The timeline's scrub bar, drawn as a DCC time slider: the shot's frames with ticks, a
-// cache strip over the frames computed so far and the current-frame handle. A click or a
-// drag picks the frame under the mouse. It shows frames; it never computes or seeks them.
+// The timeline's scrub bar drawn as a DCC time slider: the shot's frames with ticks, a
+// strip over the frames computed so far and the handle; a click or drag picks the frame
+// under the mouse. It only shows and picks frames: it never computes or seeks them.
 
 #include <QSlider>
 
@@ -20,6 +20,9 @@ public:
     // Frames 0..cachedFrames-1 are computed (the strip along the bottom covers them).
     void setCachedFrames(std::size_t cachedFrames);
     std::size_t cachedFrames() const { return m_cachedFrames; }
+    // The frame being computed to, marked until it shows; -1 = none.
+    void setTargetFrame(int frame);
+    int targetFrame() const { return m_targetFrame; }
 
     // Where frame `frame` sits, in widget pixels, and the frame nearest a pixel column.
     int xOfFrame(int frame) const;
@@ -50,6 +53,7 @@ private:
     int labelStep() const;
 
     std::size_t m_cachedFrames = 0;
+    int m_targetFrame = -1;
 };
 
 }  // namespace throng::editor
