@@ -328,6 +328,18 @@ void MainWindow::createSimulationMenu()
         &SimulationController::togglePlay);
     add(tr("&Step"), QKeySequence(Qt::Key_Period), tr("Advance one frame"), &SimulationController::stepForward);
     add(tr("&Restart"), QKeySequence(Qt::Key_Home), tr("Back to frame 0"), &SimulationController::restart);
+    add(tr("&Last Computed Frame"), QKeySequence(Qt::Key_End), tr("Pause at the last frame computed so far"),
+        &SimulationController::showLastRecorded);
+    // The arrows move frames only from the viewport or the timeline: trees, tables and
+    // text fields keep their own.
+    for (QAction* a : {add(tr("Pre&vious Frame"), QKeySequence(Qt::Key_Left), tr("Back one frame"),
+                           &SimulationController::stepBackward),
+                       add(tr("&Next Frame"), QKeySequence(Qt::Key_Right), tr("Advance one frame, computing it if needed"),
+                           &SimulationController::stepForward)}) {
+        a->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+        m_viewport->addAction(a);
+        m_timeline->addAction(a);
+    }
     QAction* toEnd = menu->addAction(tr("Simulate to &End"), this, [this] { new SimulateToEndDialog(*m_simulation, this); });
     toEnd->setObjectName("simulateToEndAction");
     toEnd->setShortcut(QKeySequence(tr("Ctrl+E")));

@@ -1,11 +1,17 @@
 #pragma once
-// The timeline dock: Restart, Step, Play/Pause and Loop buttons, a scrub bar over the
-// recorded frames and the frame read-out. Drives a SimulationController; holds no frames.
+// The timeline dock: a scrub bar over the shot with its computed frames (TimelineRuler),
+// Restart, Step, Play/Pause and Loop, a frame field, the timecode and the playback mode
+// (remembered in QSettings). Drives a SimulationController; holds no frames.
+
+#include "editor/panels/TimelineRuler.h"
 
 #include <QWidget>
 
+#include <cstddef>
+
+class QComboBox;
 class QLabel;
-class QSlider;
+class QSpinBox;
 class QToolButton;
 
 namespace throng::editor {
@@ -18,15 +24,24 @@ class TimelinePanel : public QWidget {
 public:
     TimelinePanel(SimulationController& controller, QWidget* parent = nullptr);
 
-    QSlider* scrubBar() const { return m_scrub; }
+    TimelineRuler* scrubBar() const { return m_scrub; }
+
+    // "HH:MM:SS:FF" of frame `frame` at `fps` frames a second (FF counts whole frames of
+    // the nominal rate: no drop-frame).
+    static QString timecode(std::size_t frame, double fps);
 
 private:
+    QWidget* makeControls();
+    void pickPlaybackMode(int index);
     void refresh();
 
     SimulationController& m_controller;
+    TimelineRuler* m_scrub = nullptr;
     QToolButton* m_play = nullptr;
-    QSlider* m_scrub = nullptr;
+    QSpinBox* m_frameField = nullptr;
+    QLabel* m_timecodeLabel = nullptr;
     QLabel* m_frameLabel = nullptr;
+    QComboBox* m_modeBox = nullptr;
 };
 
 }  // namespace throng::editor

@@ -55,9 +55,9 @@ void SimulationController::setScene(const sim::Scene& scene)
     const bool resume = m_hasScene && m_current > 0 && m_current < m_cache.frameCount();
     m_scene = scene;
     m_hasScene = true;
-    const float fps = scene.settings.fps > 0.0f ? scene.settings.fps : 24.0f;
-    m_totalFrames = std::size_t(std::lround(double(scene.settings.durationS) * double(fps))) + 1;
-    m_timer.setInterval(std::max(1, int(std::lround(1000.0 / double(fps)))));
+    m_fps = scene.settings.fps > 0.0f ? double(scene.settings.fps) : 24.0;
+    m_totalFrames = std::size_t(std::lround(double(scene.settings.durationS) * m_fps)) + 1;
+    applyTimerInterval();
     if (resume) {
         m_cache.truncate(m_current + 1);
         m_brainValues.resize(std::min(m_brainValues.size(), m_current + 1));
@@ -69,6 +69,8 @@ void SimulationController::setScene(const sim::Scene& scene)
             m_runner.setTarget(m_totalFrames);
         else if (m_stepPending)
             m_runner.setTarget(m_current + 2);
+        else if (m_seekTarget)
+            m_runner.setTarget(*m_seekTarget + 1);
         emit recordedChanged(m_cache.frameCount());
         return;
     }
@@ -77,6 +79,7 @@ void SimulationController::setScene(const sim::Scene& scene)
     const bool wasPlaying = m_playing;
     pause();
     m_stepPending = false;
+    m_seekTarget.reset();
     m_cache = {};
     m_brainValues.clear();
     m_current = 0;
@@ -105,6 +108,7 @@ void SimulationController::takeFrames()
         m_brainValues.clear();
         m_runFrames = 0;
         m_replaying = false;
+        m_seekTarget.reset();
         // A resume that had to start over: back to frame 0, as any restart.
         if (m_current != 0) {
             pause();
@@ -157,6 +161,13 @@ void SimulationController::takeFrames()
     // The frame shown was recorded again (the edit frame): show it as it is now.
     if (resumed && m_current >= batch.resumedAt && m_current < m_cache.frameCount())
         emit frameChanged(m_current);
+    // Going to a frame not recorded yet: the shown frame follows the recording to it.
+    if (m_seekTarget && appended > 0) {
+        const std::size_t target = std::min(*m_seekTarget, m_cache.frameCount() - 1);
+        if (target == *m_seekTarget)
+            m_seekTarget.reset();
+        setCurrent(target);
+    }
     if (m_stepPending && m_current + 1 < m_cache.frameCount()) {
         m_stepPending = false;
         setCurrent(m_current + 1);
@@ -169,6 +180,8 @@ void SimulationController::play()
         return;
     if (!m_loop && m_current + 1 >= m_totalFrames)
         setCurrent(0);
+    m_seekTarget.reset();
+    startClock();
     m_playing = true;
     m_runner.setTarget(m_totalFrames);
     m_timer.start();
@@ -184,8 +197,35 @@ void SimulationController::pause()
     emit playingChanged(false);
 }
 
+void SimulationController::setPlaybackMode(PlaybackMode mode)
+{
+    m_mode = mode;
+    applyTimerInterval();
+    if (m_playing)
+        startClock();
+}
+
+void SimulationController::applyTimerInterval()
+{
+    const double frameMs = 1000.0 / m_fps;
+    // Real time reads the clock twice a frame, so no frame shows more than half a frame late.
+    const bool realTime = m_mode == PlaybackMode::RealTime;
+    m_timer.setTimerType(realTime ? Qt::PreciseTimer : Qt::CoarseTimer);
+    m_timer.setInterval(std::max(1, int(std::lround(realTime ? frameMs / 2.0 : frameMs))));
+}
+
+void SimulationController::startClock()
+{
+    m_clockFrame = m_current;
+    m_clock.start();
+}
+
 void SimulationController::tick()
 {
+    if (m_mode == PlaybackMode::RealTime) {
+        tickRealTime();
+        return;
+    }
     if (m_current + 1 < m_cache.frameCount()) {
         setCurrent(m_current + 1);
     } else if (m_current + 1 >= m_totalFrames) {
@@ -197,9 +237,37 @@ void SimulationController::tick()
     // Otherwise the runner has not caught up yet: wait for it.
 }
 
+void SimulationController::tickRealTime()
+{
+    const std::size_t due = m_clockFrame + std::size_t(double(m_clock.elapsed()) * m_fps / 1000.0);
+    if (m_current + 1 >= m_totalFrames) {
+        // The last frame stays up for its own duration before the loop or the stop.
+        if (due <= m_current)
+            return;
+        if (m_loop) {
+            setCurrent(0);
+            startClock();
+        } else {
+            pause();
+        }
+        return;
+    }
+    const std::size_t recorded = m_cache.frameCount();
+    if (recorded == 0)
+        return;
+    const std::size_t shown = std::min({due, m_totalFrames - 1, recorded - 1});
+    if (shown > m_current)
+        setCurrent(shown);
+    // The computation lags behind the clock: the clock waits for it rather than jumping
+    // ahead once the frames arrive.
+    if (due > shown && shown == recorded - 1)
+        startClock();
+}
+
 void SimulationController::stepForward()
 {
     pause();
+    m_seekTarget.reset();
     if (m_current + 1 >= m_totalFrames)
         return;
     if (m_current + 1 < m_cache.frameCount()) {
@@ -210,16 +278,42 @@ void SimulationController::stepForward()
     m_runner.setTarget(m_current + 2);
 }
 
+void SimulationController::stepBackward()
+{
+    pause();
+    m_seekTarget.reset();
+    if (m_current > 0)
+        setCurrent(m_current - 1);
+}
+
 void SimulationController::restart()
 {
+    m_seekTarget.reset();
     setCurrent(0);
+    if (m_playing)
+        startClock();
+}
+
+void SimulationController::showLastRecorded()
+{
+    pause();
+    m_seekTarget.reset();
+    if (m_cache.frameCount() > 0)
+        setCurrent(m_cache.frameCount() - 1);
 }
 
 void SimulationController::seek(std::size_t frame)
 {
-    if (m_cache.frameCount() == 0)
+    frame = std::min(frame, m_totalFrames - 1);
+    if (frame < m_cache.frameCount()) {
+        m_seekTarget.reset();
+        setCurrent(frame);
         return;
-    setCurrent(std::min(frame, m_cache.frameCount() - 1));
+    }
+    m_seekTarget = frame;
+    m_runner.setTarget(frame + 1);
+    if (m_cache.frameCount() > 0)
+        setCurrent(m_cache.frameCount() - 1);
 }
 
 void SimulationController::simulateToEnd()
@@ -239,7 +333,7 @@ void SimulationController::pickBrainAgent(std::ptrdiff_t agent)
     m_runFrames = 1;
     m_replaying = true;
     m_replayAgent = agent;
-    m_runner.setTarget(m_playing ? m_totalFrames : m_cache.frameCount());
+    m_runner.setTarget(m_playing ? m_totalFrames : std::max(m_cache.frameCount(), m_seekTarget ? *m_seekTarget + 1 : 0));
 }
 
 const std::vector<sim::BrainNodeValue>* SimulationController::brainValues(std::size_t frame, std::ptrdiff_t agent) const

@@ -9,11 +9,13 @@
 #include "simcore/scene/Scene.h"
 #include "simcore/world/FrameCache.h"
 
+#include <QElapsedTimer>
 #include <QObject>
 #include <QTimer>
 
 #include <algorithm>
 #include <cstddef>
+#include <optional>
 
 namespace throng::editor {
 
@@ -34,14 +36,27 @@ public:
     // agent's hand-set look, tint or height) keeps the frames and the playback as they are.
     void setScene(const sim::Scene& scene);
 
+    // RealTime: the shown frame follows the wall clock at the scene's fps, skipping the
+    // frames the display cannot keep up with. EveryFrame: each frame is shown in turn, at
+    // most at the scene's fps, later when its computation lags.
+    enum class PlaybackMode { RealTime, EveryFrame };
+    void setPlaybackMode(PlaybackMode mode);
+    PlaybackMode playbackMode() const { return m_mode; }
+
     void play();
     void pause();
     void togglePlay() { m_playing ? pause() : play(); }
     void stepForward();
+    void stepBackward();
     void restart();
+    // Pauses at the last recorded frame.
+    void showLastRecorded();
     void setLoop(bool loop) { m_loop = loop; }
-    // Shows recorded frame `frame` (clamped to what is recorded).
+    // Shows frame `frame` of the shot (clamped to its last frame). A frame not recorded
+    // yet is computed first, in the background: the shown frame follows the recording up
+    // to it (seekTarget() until it is shown).
     void seek(std::size_t frame);
+    std::optional<std::size_t> seekTarget() const { return m_seekTarget; }
     // Records every frame of the scene's duration in the background.
     void simulateToEnd();
     // Stops recording ahead: frames already recorded stay (Cancel of Simulate to End).
@@ -55,6 +70,7 @@ public:
     std::size_t recordedFrames() const { return m_cache.frameCount(); }
     // Frames of the whole duration, frame 0 included.
     std::size_t totalFrames() const { return m_totalFrames; }
+    double fps() const { return m_fps; }
     const sim::FrameCache& cache() const { return m_cache; }
     double stepsPerSecond() const { return m_runner.stepsPerSecond(); }
     // The brain editor's live view: the simulation records agent `agent`'s (dense index)
@@ -86,6 +102,9 @@ signals:
 private:
     void takeFrames();
     void tick();
+    void tickRealTime();
+    void startClock();
+    void applyTimerInterval();
     void setCurrent(std::size_t frame);
 
     SimulationRunner m_runner;
@@ -101,6 +120,12 @@ private:
     QTimer m_timer;
     std::size_t m_current = 0;
     std::size_t m_totalFrames = 1;
+    double m_fps = 24.0;
+    PlaybackMode m_mode = PlaybackMode::RealTime;
+    // Real time: the frame shown when m_clock started.
+    QElapsedTimer m_clock;
+    std::size_t m_clockFrame = 0;
+    std::optional<std::size_t> m_seekTarget;
     bool m_playing = false;
     bool m_loop = false;
     bool m_stepPending = false;

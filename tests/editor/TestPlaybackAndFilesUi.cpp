@@ -63,8 +63,10 @@ private slots:
         QVERIFY2(moved > start.size() / 2, qPrintable(QString("%1 of %2 moved").arg(moved).arg(start.size())));
 
         // Scrub back with the keyboard on the scrub bar: Home is frame 0.
-        QSlider* scrub = window.timeline().scrubBar();
-        QCOMPARE(scrub->maximum() + 1, int(sim.recordedFrames()));
+        // It spans the shot; its strip covers the recorded frames.
+        TimelineRuler* scrub = window.timeline().scrubBar();
+        QCOMPARE(scrub->maximum() + 1, int(sim.totalFrames()));
+        QCOMPARE(scrub->cachedFrames(), sim.recordedFrames());
         scrub->setFocus();
         QTest::keyClick(scrub, Qt::Key_Home);
         QCOMPARE(window.viewport().frameIndex(), std::size_t(0));
