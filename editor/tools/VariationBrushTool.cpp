@@ -47,7 +47,7 @@ QWidget* VariationBrushTool::createOptionsWidget(QWidget* parent)
     auto* box = new QWidget(parent);
     auto* row = new QHBoxLayout(box);
     row->setContentsMargins(4, 0, 4, 0);
-    addRadiusOption(box, row);
+    addRadiusOption(box, row, objectKey() + "Radius");
     auto addIndex = [&](const QString& label, const QString& key, bool& on, int& value, const QString& tip) {
         auto* check = new QCheckBox(label, box);
         check->setObjectName(key + "Check");
