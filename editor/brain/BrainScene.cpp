@@ -54,13 +54,15 @@ void BrainScene::sync()
     std::set<sim::NodeId> present;
     for (const sim::BrainNode& n : g.nodes) {
         present.insert(n.id);
-        if (NodeItem* item = nodeItem(n.id)) {
+        NodeItem* item = nodeItem(n.id);
+        if (item) {
             item->setNode(g, n, &m_model.document().scene().brains);
-            continue;
+        } else {
+            item = new NodeItem(g, n, &m_model.document().scene().brains);
+            addItem(item);
+            m_nodes[n.id] = item;
         }
-        auto* item = new NodeItem(g, n, &m_model.document().scene().brains);
-        addItem(item);
-        m_nodes[n.id] = item;
+        // A kept item may have gained its curve just now (another node took its id).
         if (FuzzCurveItem* curve = item->fuzzCurve()) {
             const sim::NodeId id = n.id;
             curve->setCommit([this, id](const std::vector<sim::BrainParam>& params) {

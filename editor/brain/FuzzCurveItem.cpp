@@ -30,6 +30,14 @@ void FuzzCurveItem::setCurve(const std::string& nodeType, const std::vector<sim:
     update();
 }
 
+void FuzzCurveItem::setRect(QRectF rect)
+{
+    if (rect == m_rect)
+        return;
+    prepareGeometryChange();
+    m_rect = rect;
+}
+
 void FuzzCurveItem::setInputValue(std::optional<float> x)
 {
     m_input = x;
@@ -127,8 +135,9 @@ void FuzzCurveItem::mouseReleaseEvent(QGraphicsSceneMouseEvent* event)
         return;
     m_params = moveFuzzHandle(m_type, m_params, m_drag, toValue(event->pos().x()));
     m_drag = -1;
-    if (m_commit)
-        m_commit(m_params);
+    // The commit rebuilds the scene, which hands this item a new commit: call a copy.
+    if (const Commit commit = m_commit)
+        commit(m_params);
 }
 
 }  // namespace throng::editor

@@ -23,6 +23,8 @@ public:
     int type() const override { return Type; }
 
     void setCurve(const std::string& nodeType, const std::vector<sim::BrainParam>& params);
+    // Where the curve sits in its node (item coordinates of the node).
+    void setRect(QRectF rect);
     void setCommit(Commit commit) { m_commit = std::move(commit); }
     // The picked agent's input value, drawn as a marker on the curve.
     void setInputValue(std::optional<float> x);

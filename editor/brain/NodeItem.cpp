@@ -10,6 +10,7 @@
 #include <QStyleOptionGraphicsItem>
 
 #include <algorithm>
+#include <utility>
 
 namespace throng::editor {
 
@@ -54,12 +55,17 @@ void NodeItem::setNode(const sim::BrainGraph& graph, const sim::BrainNode& node,
     rebuildPorts(graph, library);
     const double paramsTop = portRowsBottom();
     m_height = isNote() ? kNoteH : paramsTop + double(params) * kParamRow + 6.0;
+    // An item is reused for whatever node has its id next, in this brain or in another
+    // scene's, so the curve must follow the node's type and row count, not the item's past.
     if (isFuzzType(node.type)) {
         const QRectF rect(8.0, m_height, kWidth - 16.0, kCurve - 8.0);
         if (!m_curve)
             m_curve = new FuzzCurveItem(this, rect);
+        m_curve->setRect(rect);
         m_curve->setCurve(node.type, node.params);
         m_height += kCurve;
+    } else {
+        delete std::exchange(m_curve, nullptr);
     }
     setPos(node.position.x, node.position.y);
     update();

@@ -33,7 +33,7 @@ QWidget* AssignBrushTool::createOptionsWidget(QWidget* parent)
     auto* box = new QWidget(parent);
     auto* row = new QHBoxLayout(box);
     row->setContentsMargins(4, 0, 4, 0);
-    addRadiusOption(box, row);
+    addRadiusOption(box, row, objectKey() + "Radius");
     // Each combo: "(keep)" first, then "(none)" where none is allowed, then the names. The
     // item data holds the name, or nothing for keep.
     auto addChoice = [&](const QString& label, const QString& key, std::optional<std::string>& field,

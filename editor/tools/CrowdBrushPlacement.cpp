@@ -30,21 +30,31 @@ std::string chooseType(const sim::Scene& scene, const std::vector<TypeShare>& mi
     for (const TypeShare& s : mix)
         total += std::max(0.0f, s.weight);
     if (total > 0.0f) {
+        // A type of weight 0 is never drawn, not even by u = 0 or by rounding at the end.
         float pick = u * total;
+        const TypeShare* last = nullptr;
         for (const TypeShare& s : mix) {
-            pick -= std::max(0.0f, s.weight);
+            if (s.weight <= 0.0f)
+                continue;
+            last = &s;
+            pick -= s.weight;
             if (pick <= 0.0f)
                 return s.type;
         }
-        return mix.back().type;
+        return last->type;
     }
+    return defaultBrushType(scene);
+}
+
+}  // namespace
+
+std::string defaultBrushType(const sim::Scene& scene)
+{
     for (const sim::AgentType& t : scene.agentTypes)
         if (t.kind == sim::AgentKind::Pedestrian)
             return t.name;
     return scene.agentTypes.empty() ? std::string() : scene.agentTypes.front().name;
 }
-
-}  // namespace
 
 bool isBlocked(const sim::Scene& scene, glm::vec2 p, float r)
 {

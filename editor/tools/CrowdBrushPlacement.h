@@ -37,6 +37,10 @@ struct CrowdBrushSettings {
 std::vector<sim::Agent> placeDab(const sim::Scene& scene, const std::vector<sim::Agent>& extra, glm::vec2 centre,
                                  glm::vec2 strokeDir, const CrowdBrushSettings& settings, std::uint64_t seed);
 
+// The type an empty mix paints: the scene's first pedestrian type, else its first type,
+// else "" (no type).
+std::string defaultBrushType(const sim::Scene& scene);
+
 // True when a body of `radiusM` at `p` overlaps a wall, an obstacle or leaves the bounds.
 bool isBlocked(const sim::Scene& scene, glm::vec2 p, float radiusM);
 

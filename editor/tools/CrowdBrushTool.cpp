@@ -2,17 +2,14 @@
 
 #include "editor/SceneDocument.h"
 #include "editor/commands/PaintAgentsCommand.h"
-#include "editor/tools/BrushOverlay.h"
-#include "editor/viewport/Viewport.h"
+#include "editor/tools/TypeMixButton.h"
 
 #include <glm/geometric.hpp>
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
-#include <QFormLayout>
 #include <QHBoxLayout>
 #include <QLabel>
-#include <QLineEdit>
 
 namespace throng::editor {
 
@@ -20,85 +17,53 @@ namespace {
 // A new dab every quarter radius keeps the density even along fast strokes.
 constexpr float kDabSpacingRadii = 0.25f;
 int g_nextStrokeId = 1;
-
-std::vector<TypeShare> parseMix(const QString& text)
-{
-    std::vector<TypeShare> mix;
-    for (const QString& part : text.split(',', Qt::SkipEmptyParts)) {
-        const QStringList kv = part.split(':');
-        TypeShare share{kv.value(0).trimmed().toStdString(), 1.0f};
-        bool ok = false;
-        const float w = kv.value(1).toFloat(&ok);
-        if (kv.size() > 1 && ok)
-            share.weight = w;
-        if (!share.type.empty())
-            mix.push_back(share);
-    }
-    return mix;
-}
 }  // namespace
+
+CrowdBrushTool::CrowdBrushTool(SceneDocument& document, Viewport& viewport, QObject* parent)
+    : BrushTool(document, viewport, CrowdBrushSettings{}.radiusM, parent)
+{
+}
 
 QString CrowdBrushTool::toolTip() const
 {
     return tr("Crowd Brush (B): drag on the ground to paint agents at the chosen density, "
-              "never inside walls or obstacles");
+              "never inside walls or obstacles; [ and ] or Ctrl+drag size the brush");
 }
 
-void CrowdBrushTool::mousePressed(const ToolMouse& mouse)
+bool CrowdBrushTool::strokeAllowed()
 {
-    if (document().scene().agentTypes.empty()) {
-        emit agentTypeNeeded();  // nothing to paint with: the main window offers a type
-        return;
-    }
-    m_cursor = mouse.ground;
-    if (!mouse.ground)
-        return;
-    setState(State::Dragging);
+    if (!document().scene().agentTypes.empty())
+        return true;
+    emit agentTypeNeeded();  // nothing to paint with: the main window offers a type
+    return false;
+}
+
+void CrowdBrushTool::strokeBegan(glm::vec2 point)
+{
     m_strokeId = g_nextStrokeId++;
     m_dabIndex = 0;
     m_strokeAgents = 0;
-    const glm::vec2 p(mouse.ground->x, mouse.ground->z);
-    m_lastDab = p;
-    dab(p, glm::vec2(0.0f));
-    emit overlayChanged();
+    m_lastDab = point;
+    dab(point, glm::vec2(0.0f));
 }
 
-void CrowdBrushTool::mouseMoved(const ToolMouse& mouse)
+void CrowdBrushTool::strokeMoved(glm::vec2 point)
 {
-    m_cursor = mouse.ground;
-    if (state() == State::Dragging && mouse.ground) {
-        const glm::vec2 p(mouse.ground->x, mouse.ground->z);
-        const float step = std::max(0.05f, m_settings.radiusM * kDabSpacingRadii);
-        // Dabs at even spacing along the segment, so a fast move leaves no gaps.
-        while (glm::length(p - m_lastDab) >= step) {
-            const glm::vec2 dir = glm::normalize(p - m_lastDab);
-            m_lastDab += dir * step;
-            dab(m_lastDab, dir);
-        }
-    } else if (state() != State::Dragging) {
-        setState(mouse.ground ? State::Hover : State::Idle);
+    const float step = std::max(0.05f, radiusM() * kDabSpacingRadii);
+    // Dabs at even spacing along the segment, so a fast move leaves no gaps.
+    while (glm::length(point - m_lastDab) >= step) {
+        const glm::vec2 dir = glm::normalize(point - m_lastDab);
+        m_lastDab += dir * step;
+        dab(m_lastDab, dir);
     }
-    emit overlayChanged();
-}
-
-void CrowdBrushTool::mouseReleased(const ToolMouse& mouse)
-{
-    mouseMoved(mouse);
-    setState(State::Hover);
-    emit overlayChanged();
-}
-
-void CrowdBrushTool::cancel()
-{
-    setState(State::Idle);
-    m_cursor.reset();
-    emit overlayChanged();
 }
 
 void CrowdBrushTool::dab(glm::vec2 centre, glm::vec2 direction)
 {
+    CrowdBrushSettings settings = m_settings;
+    settings.radiusM = radiusM();
     const std::uint64_t seed = (std::uint64_t(m_strokeId) << 32) ^ std::uint64_t(m_dabIndex++);
-    std::vector<sim::Agent> agents = placeDab(document().scene(), {}, centre, direction, m_settings, seed);
+    std::vector<sim::Agent> agents = placeDab(document().scene(), {}, centre, direction, settings, seed);
     if (agents.empty())
         return;
     std::uint32_t id = document().nextAgentId();
@@ -108,17 +73,12 @@ void CrowdBrushTool::dab(glm::vec2 centre, glm::vec2 direction)
     document().undoStack()->push(new PaintAgentsCommand(document(), std::move(agents), m_strokeId));
 }
 
-void CrowdBrushTool::drawOverlay(QPainter& painter) const
-{
-    if (m_cursor)
-        drawBrushCircle(painter, viewport(), *m_cursor, m_settings.radiusM, QColor(80, 200, 255));
-}
-
 QWidget* CrowdBrushTool::createOptionsWidget(QWidget* parent)
 {
     auto* box = new QWidget(parent);
     auto* row = new QHBoxLayout(box);
     row->setContentsMargins(4, 0, 4, 0);
+    addRadiusOption(box, row, "brushRadius");
     auto addSpin = [&](const QString& label, const QString& key, double lo, double hi, double step, float& field,
                        const QString& tip) {
         auto* spin = new QDoubleSpinBox(box);
@@ -132,7 +92,6 @@ QWidget* CrowdBrushTool::createOptionsWidget(QWidget* parent)
         row->addWidget(new QLabel(label, box));
         row->addWidget(spin);
     };
-    addSpin(tr("Radius"), "brushRadius", 0.1, 100.0, 0.5, m_settings.radiusM, tr("Brush radius in metres"));
     addSpin(tr("Density"), "brushDensity", 0.01, 10.0, 0.05, m_settings.densityPerM2,
             tr("Agents per square metre inside the brush"));
     addSpin(tr("Spacing"), "brushSpacing", 0.0, 20.0, 0.1, m_settings.minSpacingM,
@@ -140,16 +99,23 @@ QWidget* CrowdBrushTool::createOptionsWidget(QWidget* parent)
     auto* heading = new QComboBox(box);
     heading->setObjectName("brushHeading");
     heading->addItems({tr("Random"), tr("Along stroke"), tr("Toward point")});
+    heading->setCurrentIndex(int(m_settings.heading));
     heading->setToolTip(tr("Which way new agents face"));
     connect(heading, &QComboBox::currentIndexChanged, this,
             [this](int i) { m_settings.heading = HeadingMode(i); });
     row->addWidget(new QLabel(tr("Heading"), box));
     row->addWidget(heading);
-    auto* mix = new QLineEdit(box);
-    mix->setObjectName("brushMix");
-    mix->setPlaceholderText(tr("type:weight, ..."));
-    mix->setToolTip(tr("Agent type mix, e.g. \"pedestrian:3, child:1\"; empty = the first pedestrian type"));
-    connect(mix, &QLineEdit::textChanged, this, [this](const QString& t) { m_settings.mix = parseMix(t); });
+    auto* mix = new TypeMixButton(
+        m_settings.mix,
+        [this] {
+            std::vector<std::string> names;
+            for (const sim::AgentType& t : document().scene().agentTypes)
+                if (t.kind != sim::AgentKind::Vehicle)
+                    names.push_back(t.name);
+            return names;
+        },
+        [this] { return defaultBrushType(document().scene()); }, box);
+    connect(mix, &TypeMixButton::mixChanged, this, [this](const std::vector<TypeShare>& m) { m_settings.mix = m; });
     row->addWidget(new QLabel(tr("Mix"), box));
     row->addWidget(mix);
     return box;

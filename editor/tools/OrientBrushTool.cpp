@@ -29,7 +29,7 @@ QWidget* OrientBrushTool::createOptionsWidget(QWidget* parent)
     auto* box = new QWidget(parent);
     auto* row = new QHBoxLayout(box);
     row->setContentsMargins(4, 0, 4, 0);
-    addRadiusOption(box, row);
+    addRadiusOption(box, row, objectKey() + "Radius");
     auto* spin = new QDoubleSpinBox(box);
     spin->setObjectName("orientStrength");
     spin->setRange(0.05, 1.0);

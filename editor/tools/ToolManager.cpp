@@ -22,6 +22,8 @@
 #include <QLabel>
 #include <QToolBar>
 
+#include <algorithm>
+
 namespace throng::editor {
 
 ToolManager::ToolManager(SceneDocument& document, Viewport& viewport, QObject* parent)
@@ -78,16 +80,33 @@ void ToolManager::populate(QToolBar* tools, QToolBar* options)
         if (QWidget* button = tools->widgetForAction(a))
             button->setObjectName(a->objectName().chopped(6) + "Button");
     m_optionsBar = options;
+    // One height for every tool's options, so the viewport below never jumps on a switch;
+    // only along the top or bottom, where that height is the bar's thickness.
+    options->setAllowedAreas(Qt::TopToolBarArea | Qt::BottomToolBarArea);
+    int tallest = 0;
+    for (ViewportTool* t : m_tools) {
+        fillOptions(t);
+        tallest = std::max(tallest, options->sizeHint().height());
+    }
+    options->setFixedHeight(tallest);
     showOptions();
 }
 
 void ToolManager::showOptions()
 {
-    if (!m_optionsBar)
-        return;
+    if (m_optionsBar)
+        fillOptions(m_active);
+}
+
+void ToolManager::fillOptions(ViewportTool* tool)
+{
+    // clear() only hides the widgets; deleting their actions deletes them, so a switch
+    // leaves one set of option widgets behind, not one per visit.
+    const QList<QAction*> old = m_optionsBar->actions();
     m_optionsBar->clear();
-    m_optionsBar->addWidget(new QLabel(m_active->name() + "  ", m_optionsBar));
-    if (QWidget* widget = m_active->createOptionsWidget(m_optionsBar))
+    qDeleteAll(old);
+    m_optionsBar->addWidget(new QLabel(tool->name() + "  ", m_optionsBar));
+    if (QWidget* widget = tool->createOptionsWidget(m_optionsBar))
         m_optionsBar->addWidget(widget);
 }
 

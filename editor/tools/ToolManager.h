@@ -40,7 +40,7 @@ public:
 
     QActionGroup* actions() const { return m_group; }
     // Fills `tools` with one checkable button per tool and `options` with the active
-    // tool's settings.
+    // tool's settings; `options` gets the height of the tallest tool's settings, for good.
     void populate(QToolBar* tools, QToolBar* options);
 
 signals:
@@ -48,6 +48,7 @@ signals:
 
 private:
     void showOptions();
+    void fillOptions(ViewportTool* tool);
 
     Viewport& m_viewport;
     std::vector<ViewportTool*> m_tools;

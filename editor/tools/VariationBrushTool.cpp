@@ -47,26 +47,27 @@ QWidget* VariationBrushTool::createOptionsWidget(QWidget* parent)
     auto* box = new QWidget(parent);
     auto* row = new QHBoxLayout(box);
     row->setContentsMargins(4, 0, 4, 0);
-    addRadiusOption(box, row);
+    addRadiusOption(box, row, objectKey() + "Radius");
     auto addIndex = [&](const QString& label, const QString& key, bool& on, int& value, const QString& tip) {
         auto* check = new QCheckBox(label, box);
         check->setObjectName(key + "Check");
         check->setChecked(on);
         connect(check, &QCheckBox::toggled, this, [&on](bool v) { on = v; });
+        // Numbered from 1 as Properties shows them (0 = random); the settings keep indices.
         auto* spin = new QSpinBox(box);
         spin->setObjectName(key + "Index");
-        spin->setRange(-1, 63);
+        spin->setRange(0, 64);
         spin->setSpecialValueText(tr("random"));
-        spin->setValue(value);
+        spin->setValue(value + 1);
         spin->setToolTip(tip);
-        connect(spin, &QSpinBox::valueChanged, this, [&value](int v) { value = v; });
+        connect(spin, &QSpinBox::valueChanged, this, [&value](int v) { value = v - 1; });
         row->addWidget(check);
         row->addWidget(spin);
     };
     addIndex(tr("Tint"), "variationTint", m_settings.setTint, m_settings.tint,
-             tr("Index into the type's tint palette, or random per agent"));
+             tr("Tint of the type's palette, 1 = the first as in Properties, or random per agent"));
     addIndex(tr("Look"), "variationLook", m_settings.setLook, m_settings.look,
-             tr("Index into the type's mesh variants, or random per agent"));
+             tr("Look of the type, 1 = the first as in Properties, or random per agent"));
     auto* height = new QCheckBox(tr("Height"), box);
     height->setObjectName("variationHeightCheck");
     height->setChecked(m_settings.setHeight);

@@ -9,9 +9,9 @@ namespace throng::editor {
 
 struct VariationBrushSettings {
     bool setTint = true;
-    int tint = -1;              // index into the type's tints; -1 = a random one per agent
+    int tint = -1;              // 0-based index into the type's tints; -1 = a random one per agent
     bool setLook = false;
-    int look = -1;              // index into the type's looks; -1 = a random one per agent
+    int look = -1;              // 0-based index into the type's looks; -1 = a random one per agent
     bool setHeight = false;
     float heightMin = 0.9f;     // height scale drawn uniformly in [min, max], > 0
     float heightMax = 1.1f;

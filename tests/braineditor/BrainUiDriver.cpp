@@ -29,6 +29,13 @@ bool BrainUi::open(const QTemporaryDir& dir, const QByteArray& yaml)
     if (!file.open(QIODevice::WriteOnly) || file.write(yaml) != yaml.size())
         return false;
     file.close();
+    return openPath(path);
+}
+
+bool BrainUi::openPath(const QString& path)
+{
+    if (!m_panel)
+        return false;
     m_window.resize(1600, 1100);
     m_window.show();
     m_window.activateWindow();

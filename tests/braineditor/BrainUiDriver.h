@@ -19,6 +19,8 @@ public:
 
     // Shows the window and opens `yaml` (written as dir/scene.yaml). False on failure.
     bool open(const QTemporaryDir& dir, const QByteArray& yaml);
+    // Shows the window and opens the scene file at `path` (the demos in resources/).
+    bool openPath(const QString& path);
     BrainEditorPanel& panel() { return *m_panel; }
 
     // The view pixel of a scene point.

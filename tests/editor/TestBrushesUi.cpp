@@ -121,10 +121,11 @@ private slots:
             QVERIFY(a.tint == -1 && a.look == -1 && a.heightScale == 0.0f);  // drawn from the type
 
         QVERIFY(clickToolButton(window, "variationBrush"));
-        // Tint 2 of the pedestrian palette, look 1 (woman), height 1.25.
-        window.findChild<QSpinBox*>("variationTintIndex")->setValue(2);
+        // Tint 3 of the pedestrian palette (index 2), look 2 (woman, index 1), height 1.25:
+        // the brush numbers tints and looks from 1, as Properties does.
+        window.findChild<QSpinBox*>("variationTintIndex")->setValue(3);
         QTest::mouseClick(window.findChild<QCheckBox*>("variationLookCheck"), Qt::LeftButton);
-        window.findChild<QSpinBox*>("variationLookIndex")->setValue(1);
+        window.findChild<QSpinBox*>("variationLookIndex")->setValue(2);
         QTest::mouseClick(window.findChild<QCheckBox*>("variationHeightCheck"), Qt::LeftButton);
         window.findChild<QDoubleSpinBox*>("variationHeightMin")->setValue(1.25);
         window.findChild<QDoubleSpinBox*>("variationHeightMax")->setValue(1.25);
