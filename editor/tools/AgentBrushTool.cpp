@@ -24,23 +24,35 @@ AgentBrushTool::AgentBrushTool(SceneDocument& document, Viewport& viewport, QObj
 void AgentBrushTool::strokeBegan(glm::vec2 point)
 {
     m_strokeId = g_nextAgentStrokeId++;
-    m_lastDab = point;
+    m_lastDab = m_lastPoint = point;
     m_dabs = {m_lastDab};
     dab(m_lastDab, glm::vec2(0.0f));
 }
 
 void AgentBrushTool::strokeMoved(glm::vec2 point)
 {
+    m_lastPoint = point;
     const float step = std::max(0.05f, radiusM() * kDabSpacingRadii);
-    while (glm::length(point - m_lastDab) >= step) {
-        m_lastDab += glm::normalize(point - m_lastDab) * step;
-        // Measured over a radius of stroke, so the mouse's pixel steps do not wobble it.
-        std::size_t back = m_dabs.size() - 1;
-        while (back > 0 && glm::length(m_lastDab - m_dabs[back]) < radiusM())
-            --back;
-        m_dabs.push_back(m_lastDab);
-        dab(m_lastDab, glm::normalize(m_lastDab - m_dabs[back]));
-    }
+    while (glm::length(point - m_lastDab) >= step)
+        dabAt(m_lastDab + glm::normalize(point - m_lastDab) * step);
+}
+
+// The stroke reaches where the mouse let go, not only its last whole step before it.
+void AgentBrushTool::strokeEnded()
+{
+    if (glm::length(m_lastPoint - m_lastDab) > 0.01f)
+        dabAt(m_lastPoint);
+}
+
+void AgentBrushTool::dabAt(glm::vec2 point)
+{
+    m_lastDab = point;
+    // Measured over a radius of stroke, so the mouse's pixel steps do not wobble it.
+    std::size_t back = m_dabs.size() - 1;
+    while (back > 0 && glm::length(m_lastDab - m_dabs[back]) < radiusM())
+        --back;
+    m_dabs.push_back(m_lastDab);
+    dab(m_lastDab, glm::normalize(m_lastDab - m_dabs[back]));
 }
 
 void AgentBrushTool::dab(glm::vec2 centre, glm::vec2 direction)

@@ -27,11 +27,15 @@ protected:
 
     void strokeBegan(glm::vec2 point) override;
     void strokeMoved(glm::vec2 point) override;
+    void strokeEnded() override;
 
 private:
     void dab(glm::vec2 centre, glm::vec2 direction);
 
+    void dabAt(glm::vec2 point);
+
     glm::vec2 m_lastDab{0.0f};
+    glm::vec2 m_lastPoint{0.0f};  // the stroke's newest mouse point
     std::vector<glm::vec2> m_dabs;  // of the stroke in progress, for its direction
     int m_strokeId = 0;
 };

@@ -39,15 +39,14 @@ bool BrainUi::openPath(const QString& path)
     m_window.resize(1600, 1100);
     m_window.show();
     m_window.activateWindow();
-    if (!QTest::qWaitForWindowExposed(&m_window))
+    if (!QTest::qWaitForWindowExposed(&m_window) || !QTest::qWaitForWindowActive(&m_window))
         return false;
-    auto* dock = m_window.findChild<QDockWidget*>("brainDock");
-    if (!dock)
-        return false;
-    dock->show();  // closed until asked for
-    dock->raise();
+    // The Brains workspace, as a user opens it (closed until asked for).
+    if (!m_panel->isVisible())
+        QTest::keyClick(&m_window, Qt::Key_B, Qt::ControlModifier);
     QCoreApplication::processEvents();
-    m_window.resizeDocks({dock}, {700}, Qt::Vertical);
+    if (!m_panel->isVisible())
+        return false;
     if (!m_window.openScene(path))
         return false;
     QCoreApplication::processEvents();

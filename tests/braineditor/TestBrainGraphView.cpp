@@ -34,7 +34,7 @@ private slots:
         MainWindow window;
         BrainUi ui(window);
         QVERIFY(ui.open(dir, kWalkBrainScene));
-        QVERIFY(window.findChild<QDockWidget*>("brainDock")->isVisible());
+        QVERIFY(window.brainEditor().isVisible());
         BrainEditorPanel& panel = ui.panel();
         QCOMPARE(panel.findChild<QComboBox*>("brainList")->currentText(), QString("walk"));
         BrainScene& scene = panel.scene();

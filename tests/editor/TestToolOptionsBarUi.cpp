@@ -36,7 +36,7 @@ private slots:
         QStringList keys;
         for (const ViewportTool* t : window.tools().tools())
             keys << t->objectKey();
-        QCOMPARE(keys.size(), 14);
+        QCOMPARE(keys.size(), 15);
         QVERIFY(clickToolButton(window, keys.front()));
         QApplication::processEvents();
         const int height = bar->height();
