@@ -72,8 +72,9 @@ QPalette makePalette(const DarkThemeColours& c)
 
 QString makeStyleSheet(const DarkThemeColours& c)
 {
-    // Only what the palette cannot reach: Fusion paints dock titles, the main window's
-    // separators and splitter handles from fixed shades, not from the palette.
+    // Only what the palette cannot say: a dock title bar in a shade of its own, and the
+    // dock separators, splitter handles and tool bar rules as solid bars (Fusion draws
+    // them as faint marks that vanish on a dark window).
     return QStringLiteral(
                "QDockWidget::title { background: %1; padding: 4px 6px; }"
                "QMainWindow::separator { background: %2; width: 4px; height: 4px; }"
