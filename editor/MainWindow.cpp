@@ -349,15 +349,16 @@ void MainWindow::createSimulationMenu()
 
 void MainWindow::createToolBars()
 {
-    // Down the left side: a column has room for every tool, a row would hide some.
     auto* workspaces = new QToolBar(tr("Workspaces"), this);
     workspaces->setObjectName("workspaceToolBar");
     workspaces->addWidget(m_workspace->tabBar());
     addToolBar(Qt::TopToolBarArea, workspaces);
+    // Down the left side: a column has room for every tool, a row would hide some.
     auto* tools = new QToolBar(tr("Tools"), this);
     addToolBar(Qt::LeftToolBarArea, tools);
     tools->setObjectName("toolsToolBar");
-    tools->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    tools->setToolButtonStyle(Qt::ToolButtonIconOnly);
+    tools->setIconSize(QSize(24, 24));
     QToolBar* options = addToolBar(tr("Tool Options"));
     options->setObjectName("toolOptionsToolBar");
     m_tools->populate(tools, options);

@@ -1,4 +1,5 @@
 // throng: opens the editor, or renders a scene with --screenshot (EditorArguments).
+#include "editor/DarkTheme.h"
 #include "editor/DisplayCheck.h"
 #include "editor/EditorArguments.h"
 #include "editor/MainWindow.h"
@@ -34,6 +35,7 @@ int main(int argc, char** argv)
     QApplication app(argc, argv);
     QApplication::setOrganizationName("Throng");
     QApplication::setApplicationName("Throng");
+    applyDarkTheme(app);
     if (parsed.mode == EditorArguments::Mode::Screenshot)
         return ScreenshotCommand(parsed.screenshot, std::cout, std::cerr).run();
 

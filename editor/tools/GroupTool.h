@@ -21,6 +21,7 @@ public:
     QString toolTip() const override;
     QKeySequence shortcut() const override { return QKeySequence(Qt::Key_S); }
     QString objectKey() const override { return QStringLiteral("group"); }
+    QString iconKey() const override { return QStringLiteral("tool-spawn-group"); }
 
     void mousePressed(const ToolMouse& mouse) override;
     void mouseMoved(const ToolMouse& mouse) override;

@@ -1,5 +1,6 @@
 #include "editor/tools/ToolManager.h"
 
+#include "editor/Icons.h"
 #include "editor/tools/AssignBrushTool.h"
 #include "editor/tools/CrowdBrushTool.h"
 #include "editor/tools/EraseBrushTool.h"
@@ -44,6 +45,7 @@ ToolManager::ToolManager(SceneDocument& document, Viewport& viewport, QObject* p
         QAction* action = m_group->addAction(t->name());
         action->setObjectName(t->objectKey() + "Action");
         action->setCheckable(true);
+        action->setIcon(themeIcon(t->iconKey()));
         action->setShortcut(t->shortcut());
         action->setToolTip(t->toolTip());
         action->setStatusTip(t->toolTip());

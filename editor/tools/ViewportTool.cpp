@@ -12,6 +12,14 @@ ViewportTool::ViewportTool(SceneDocument& document, Viewport& viewport, QObject*
 {
 }
 
+QString ViewportTool::iconKey() const
+{
+    QString key = QStringLiteral("tool-");
+    for (QChar c : objectKey())
+        key += c.isUpper() ? QStringLiteral("-") + c.toLower() : QString(c);
+    return key;
+}
+
 void ViewportTool::cancel()
 {
     setState(State::Idle);

@@ -41,6 +41,9 @@ public:
     virtual QString toolTip() const = 0;     // what it does and how
     virtual QKeySequence shortcut() const = 0;
     virtual QString objectKey() const = 0;   // stable id ("crowdBrush") for tests and settings
+    // The key of its icon in the editor's set (Icons.h): "tool-" and the object key in
+    // kebab case ("tool-crowd-brush").
+    virtual QString iconKey() const;
 
     virtual void activate() {}
     // Drops any preview (Escape does the same); the document is untouched.
