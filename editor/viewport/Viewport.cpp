@@ -1,5 +1,6 @@
 #include "editor/viewport/Viewport.h"
 
+#include "editor/tools/SelectionGeometry.h"
 #include "editor/viewport/GroundRay.h"
 #include "editor/viewport/SelectionHighlight.h"
 #include "editor/viewport/SetGeometryBuilder.h"
@@ -49,7 +50,8 @@ Viewport::Viewport(QWidget* parent) : QOpenGLWidget(parent)
     setFocusPolicy(Qt::StrongFocus);
     setMinimumSize(160, 120);
     setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Expanding);
-    setToolTip(tr("Pan: middle or right drag. Zoom: wheel. Orbit (3D): right drag. Frame all: F."));
+    setToolTip(tr("Orbit (3D): Alt+left or right drag. Pan: Alt+middle or middle drag. Zoom: wheel (towards "
+                  "the cursor) or Alt+right drag. Frame the selection: F. Frame all: A."));
     setMouseTracking(true);
     m_overlay = new ToolOverlay(this);
     m_overlay->resize(size());
@@ -82,9 +84,14 @@ void Viewport::updateScene(const sim::Scene& scene)
 
 std::optional<glm::vec3> Viewport::pixelToGround(QPointF pixel) const
 {
+    return castToGround(renderView().viewProjection, size(), pixel, m_terrain);
+}
+
+RenderView Viewport::renderView() const
+{
     CameraRig camera = m_camera;
     camera.setViewportSize(size());
-    return castToGround(camera.renderView().viewProjection, size(), pixel, m_terrain);
+    return camera.renderView();
 }
 
 Viewport::~Viewport()
@@ -200,15 +207,17 @@ void Viewport::setAgents(std::span<const sim::AgentFrame> frames, std::span<cons
     m_agentsChanged = true;
     m_timeS = timeS;
     m_frameIndex = frameIndex;
-    // Selected agents' rings follow them from frame to frame.
-    m_shownIds.resize(n);
-    m_shownXZ.resize(n);
+    // Picking and the agents' rings follow them from frame to frame.
+    m_shown.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
-        m_shownIds[i] = frames[i].present ? agents[i].id : 0;  // no ring where it is not
-        m_shownXZ[i] = {frames[i].position.x, frames[i].position.z};
+        const std::size_t type = agents[i].typeIndex;
+        const bool drawn = frames[i].present && !frames[i].out;
+        m_shown.set(i, drawn ? agents[i].id : 0, frames[i].position,
+                    type < m_typeRadiusM.size() ? m_typeRadiusM[type] : kFallbackRadiusM);
     }
-    if (!m_agentRings.empty())
+    if (!m_agentRings.empty() || m_focusedAgent != 0 || m_inspectedAgent != 0)
         rebuildHighlight();
+    m_overlay->update();  // the select tool's circles follow the agents too
     m_lightMesh.clear();
     SetGeometryBuilder::addLights(m_traffic, timeS, m_lightMesh);
     m_lightsChanged = true;
@@ -221,13 +230,49 @@ void Viewport::setHighlight(const sim::Scene& scene, const Selection& selection)
     m_highlightItems.clear();
     SelectionHighlight::addItems(scene, selection, m_highlightItems);
     m_agentRings = SelectionHighlight::agentRings(scene, selection);
+    m_selectedItemsBox = {};
+    for (const ShapeVertex& v : m_highlightItems.vertices())
+        m_selectedItemsBox.include({v.position.x, v.position.z});
+    m_selectedGroupIds.clear();
+    for (const SceneItem& item : selection)
+        if (item.kind == ItemKind::Group && item.index < scene.groups.size())
+            m_selectedGroupIds.push_back(groupMemberIds(scene, item.index));
+    if (m_focusedAgent != 0) {
+        const std::optional<SceneItem> focused = agentItem(scene, m_focusedAgent);
+        if (!focused || std::find(selection.begin(), selection.end(), *focused) == selection.end())
+            m_focusedAgent = 0;
+    }
+    rebuildHighlight();
+}
+
+void Viewport::setFocusedAgent(sim::AgentId id)
+{
+    m_focusedAgent = id;
+    rebuildHighlight();
+    if (id != 0)
+        emit agentPicked(id);
+}
+
+void Viewport::setInspectedAgent(sim::AgentId id)
+{
+    if (id == m_inspectedAgent)
+        return;
+    m_inspectedAgent = id;
     rebuildHighlight();
 }
 
 void Viewport::rebuildHighlight()
 {
     m_highlightMesh = m_highlightItems;
-    SelectionHighlight::addAgentRings(m_agentRings, m_shownIds, m_shownXZ, m_highlightMesh);
+    SelectionHighlight::addAgentRings(m_agentRings, m_shown, m_highlightMesh);
+    std::vector<SelectionHighlight::AgentRing> extra;
+    if (m_focusedAgent != 0)
+        extra.push_back(SelectionHighlight::focusRing(m_focusedAgent));
+    if (m_inspectedAgent != 0)
+        extra.push_back(SelectionHighlight::inspectedRing(m_inspectedAgent));
+    // Only where the frame draws them: neither has a start of its own to fall back to.
+    if (!m_shown.empty())
+        SelectionHighlight::addAgentRings(extra, m_shown, m_highlightMesh);
     m_highlightChanged = true;
     update();
 }
@@ -273,11 +318,38 @@ void Viewport::frameAll()
     update();
 }
 
+void Viewport::frameSelection()
+{
+    GroundBox box = m_selectedItemsBox;
+    // A lone agent fills no view: frame it with some ground round it.
+    constexpr float kAgentRoomM = 3.0f;
+    for (const SelectionHighlight::AgentRing& r : m_agentRings)
+        if (const std::size_t i = m_shown.find(r.id, r.hint); i != ShownAgents::kNone)
+            box.include({m_shown.feet(i).x, m_shown.feet(i).z}, kAgentRoomM);
+        else if (m_shown.empty())
+            box.include(r.start, kAgentRoomM);
+    if (!m_selectedGroupIds.empty() || m_focusedAgent != 0)
+        for (std::size_t i = 0; i < m_shown.size(); ++i) {
+            const sim::AgentId id = m_shown.id(i);
+            const bool member = std::any_of(m_selectedGroupIds.begin(), m_selectedGroupIds.end(),
+                                            [id](const auto& ids) { return id >= ids.first && id < ids.second; });
+            if (id != 0 && (member || id == m_focusedAgent))
+                box.include({m_shown.feet(i).x, m_shown.feet(i).z}, kAgentRoomM);
+        }
+    if (box.empty) {
+        frameAll();
+        return;
+    }
+    m_camera.setViewportSize(size());
+    m_camera.frame(box);
+    m_frameOnNextPaint = false;
+    m_cameraMovedByUser = true;
+    update();
+}
+
 QPointF Viewport::worldToPixel(glm::vec3 point) const
 {
-    CameraRig camera = m_camera;
-    camera.setViewportSize(size());
-    const glm::vec4 clip = camera.renderView().viewProjection * glm::vec4(point, 1.0f);
+    const glm::vec4 clip = renderView().viewProjection * glm::vec4(point, 1.0f);
     const glm::vec2 ndc = glm::vec2(clip) / clip.w;
     return {(0.5 + 0.5 * double(ndc.x)) * width(), (0.5 - 0.5 * double(ndc.y)) * height()};
 }
