@@ -20,7 +20,7 @@ namespace throng::editor {
 namespace {
 
 constexpr ItemKind kPointKinds[] = {ItemKind::Obstacle, ItemKind::Goal, ItemKind::TrafficLight, ItemKind::Crosswalk};
-// Drawn where the shown frame has them; at their scene place only when no World shows.
+// Drawn where the shown frame has them; at their scene place only while the frame lacks them.
 constexpr ItemKind kMovingKinds[] = {ItemKind::Agent, ItemKind::Vehicle};
 constexpr ItemKind kLineKinds[] = {ItemKind::Path, ItemKind::Wall, ItemKind::Lane, ItemKind::FlowStroke};
 constexpr double kClickPx = 3.0;  // a box smaller than this is a click
@@ -46,21 +46,27 @@ QPointF SelectTool::pixelOf(glm::vec2 ground) const
     return viewport().worldToPixel({ground.x, 0.0f, ground.y});
 }
 
-bool SelectTool::pickFromFrame() const
+sim::AgentId SelectTool::agentIdOf(SceneItem item) const
 {
-    return !viewport().shownAgents().empty();
+    const sim::Scene& s = document().scene();
+    if (item.kind == ItemKind::Agent && item.index < s.agents.size())
+        return s.agents[item.index].id;
+    if (item.kind == ItemKind::Vehicle && item.index < s.vehicles.size())
+        return s.vehicles[item.index].id;
+    return 0;
+}
+
+bool SelectTool::inFrame(SceneItem item) const
+{
+    const std::size_t hint = item.kind == ItemKind::Agent ? item.index : ShownAgents::kNone;
+    return viewport().shownAgents().holds(agentIdOf(item), hint);
 }
 
 std::optional<glm::vec3> SelectTool::shownAt(SceneItem item) const
 {
-    const sim::Scene& s = document().scene();
     const ShownAgents& shown = viewport().shownAgents();
-    std::size_t i = ShownAgents::kNone;
-    if (item.kind == ItemKind::Agent && item.index < s.agents.size())
-        i = shown.find(s.agents[item.index].id, item.index);
-    else if (item.kind == ItemKind::Vehicle && item.index < s.vehicles.size())
-        i = shown.find(s.vehicles[item.index].id);
-    return i == ShownAgents::kNone ? std::nullopt : std::optional<glm::vec3>(shown.feet(i));
+    const std::size_t i = shown.find(agentIdOf(item), item.kind == ItemKind::Agent ? item.index : ShownAgents::kNone);
+    return i == ShownAgents::kNone || !shown.drawn(i) ? std::nullopt : std::optional<glm::vec3>(shown.feet(i));
 }
 
 std::optional<SelectTool::Hit> SelectTool::pick(QPointF pixel) const
@@ -68,8 +74,10 @@ std::optional<SelectTool::Hit> SelectTool::pick(QPointF pixel) const
     const sim::Scene& s = document().scene();
     std::optional<Hit> best;
     double bestPx = kPickPx;
-    auto consider = [&](ItemKind kind) {
+    auto consider = [&](ItemKind kind, bool moving) {
         for (std::size_t i = 0; i < itemCount(s, kind); ++i) {
+            if (moving && inFrame({kind, i}))
+                continue;
             const std::optional<glm::vec2> anchor = itemAnchor(s, {kind, i});
             const double d = anchor ? distancePx(pixelOf(*anchor), pixel) : bestPx;
             if (d < bestPx) {
@@ -79,11 +87,10 @@ std::optional<SelectTool::Hit> SelectTool::pick(QPointF pixel) const
         }
     };
     for (ItemKind kind : kPointKinds)
-        consider(kind);
-    if (!pickFromFrame()) {
-        for (ItemKind kind : kMovingKinds)
-            consider(kind);
-    } else if (const ShownAgents::Nearest agent = viewport().shownAgents().nearest(viewport().renderView(), pixel, kPickPx);
+        consider(kind, false);
+    for (ItemKind kind : kMovingKinds)
+        consider(kind, true);
+    if (const ShownAgents::Nearest agent = viewport().shownAgents().nearest(viewport().renderView(), pixel, kPickPx);
                agent.index != ShownAgents::kNone && (!best || agent.distancePx < bestPx)) {
         const sim::AgentId id = viewport().shownAgents().id(agent.index);
         if (const std::optional<SceneItem> item = agentItem(s, id)) {
@@ -266,24 +273,21 @@ void SelectTool::finishBox(Qt::KeyboardModifiers modifiers)
             if (std::find(selection.begin(), selection.end(), item) == selection.end())
                 selection.push_back(item);
         };
-        auto addInside = [&](ItemKind kind) {
+        auto addInside = [&](ItemKind kind, bool moving) {
             for (std::size_t i = 0; i < itemCount(s, kind); ++i)
                 if (const std::optional<glm::vec2> anchor = itemAnchor(s, {kind, i});
-                    anchor && box.contains(pixelOf(*anchor)))
+                    anchor && !(moving && inFrame({kind, i})) && box.contains(pixelOf(*anchor)))
                     add({kind, i});
         };
         for (ItemKind kind : kPointKinds)
-            addInside(kind);
-        if (!pickFromFrame()) {
-            for (ItemKind kind : kMovingKinds)
-                addInside(kind);
-        } else {
-            // A spawned agent inside the box brings its whole group.
-            const ShownAgents& shown = viewport().shownAgents();
-            for (std::size_t i : shown.inside(viewport().renderView(), box))
-                if (const std::optional<SceneItem> item = agentItem(s, shown.id(i)))
-                    add(*item);
-        }
+            addInside(kind, false);
+        for (ItemKind kind : kMovingKinds)
+            addInside(kind, true);
+        // A spawned agent inside the box brings its whole group.
+        const ShownAgents& shown = viewport().shownAgents();
+        for (std::size_t i : shown.inside(viewport().renderView(), box))
+            if (const std::optional<SceneItem> item = agentItem(s, shown.id(i)))
+                add(*item);
         for (ItemKind kind : kLineKinds)
             for (std::size_t i = 0; i < itemCount(s, kind); ++i) {
                 const std::span<const glm::vec2> line = itemPolyline(s, {kind, i});
@@ -311,7 +315,7 @@ void SelectTool::drawOverlay(QPainter& painter) const
     const sim::Scene& s = document().scene();
     for (const SceneItem& item : document().selection()) {
         const bool moving = std::find(std::begin(kMovingKinds), std::end(kMovingKinds), item.kind) != std::end(kMovingKinds);
-        if (moving && pickFromFrame()) {
+        if (moving && inFrame(item)) {
             if (const std::optional<glm::vec3> p = shownAt(item))
                 drawBrushCircle(painter, viewport(), *p, 0.6f, QColor(255, 230, 0));
         } else if (const std::optional<glm::vec2> p = itemAnchor(s, item)) {

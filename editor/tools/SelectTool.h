@@ -70,9 +70,12 @@ private:
     void dragTo(const ToolMouse& mouse);
     void finishBox(Qt::KeyboardModifiers modifiers);
     QPointF pixelOf(glm::vec2 ground) const;
-    // Agents and vehicles are drawn by the frame, unless there is none (no World).
-    bool pickFromFrame() const;
-    // Where the shown frame draws a selected agent or vehicle; empty when it does not.
+    // The World id of a placed agent or vehicle; 0 for other items.
+    sim::AgentId agentIdOf(SceneItem item) const;
+    // Whether the shown frame holds the agent or vehicle (drawn or not). One it does not
+    // (no World, or a frame from before the edit that added it) is where the scene has it.
+    bool inFrame(SceneItem item) const;
+    // Where the shown frame draws an agent or vehicle; empty when it does not.
     std::optional<glm::vec3> shownAt(SceneItem item) const;
 
     Drag m_drag = Drag::None;

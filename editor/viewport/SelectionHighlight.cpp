@@ -49,12 +49,16 @@ void SelectionHighlight::addAgentRings(std::span<const AgentRing> rings, const S
 {
     for (const AgentRing& r : rings) {
         const std::size_t i = shown.find(r.id, r.hint);
-        if (i == ShownAgents::kNone && !shown.empty())
+        if (i == ShownAgents::kNone) {
+            // A frame made before the agent was added: it stands where the scene has it.
+            if (r.radiusM > 0.0f)
+                mesh.addRing(r.start, r.radiusM, kLineM, r.colour);
             continue;
-        const bool drawn = i != ShownAgents::kNone;
-        const glm::vec2 at = drawn ? glm::vec2(shown.feet(i).x, shown.feet(i).z) : r.start;
-        const float radius = r.radiusM > 0.0f ? r.radiusM : (drawn ? shown.radiusM(i) : 0.3f) + kMarginM + r.extraM;
-        mesh.addRing(at, radius, kLineM, r.colour);
+        }
+        if (!shown.drawn(i))
+            continue;  // gone through an exit, or absent on this frame
+        const float radius = r.radiusM > 0.0f ? r.radiusM : shown.radiusM(i) + kMarginM + r.extraM;
+        mesh.addRing({shown.feet(i).x, shown.feet(i).z}, radius, kLineM, r.colour);
     }
 }
 

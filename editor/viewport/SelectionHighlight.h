@@ -28,8 +28,8 @@ public:
     struct AgentRing {
         std::size_t hint = ShownAgents::kNone;  // its likely World index (a placed agent's scene index)
         sim::AgentId id = 0;
-        glm::vec2 start{0.0f};  // (x, z) in the scene: shown while the view holds no agents at all
-        float radiusM = 0.0f;   // 0: the shown body's radius plus the margin and `extraM`
+        glm::vec2 start{0.0f};  // (x, z) in the scene: the ring's place while the frame lacks the agent
+        float radiusM = 0.0f;   // 0: the shown body's radius plus the margin and `extraM` (no start)
         float extraM = 0.0f;
         glm::vec4 colour{1.0f};
     };
@@ -42,8 +42,9 @@ public:
     static AgentRing focusRing(sim::AgentId id);
     // The ring of the brain editor's inspected agent, just outside a selection ring.
     static AgentRing inspectedRing(sim::AgentId id);
-    // Each ring where `shown` draws its agent; an agent not drawn there has none (it left
-    // or is absent), unless `shown` is empty (no World): then at its start.
+    // Each ring where `shown` draws its agent; an agent held but not drawn there has none
+    // (it left or is absent); one the frame does not hold (no World, or a frame from
+    // before the edit that added it) is ringed at its start.
     static void addAgentRings(std::span<const AgentRing> rings, const ShownAgents& shown, ShapeMesh& mesh);
 };
 

@@ -43,13 +43,28 @@ void ShownAgents::resize(std::size_t count)
     m_ids.resize(count);
     m_feet.resize(count);
     m_radiusM.resize(count);
+    m_drawn.resize(count);
+    m_sortedIds.clear();
 }
 
-void ShownAgents::set(std::size_t i, sim::AgentId id, glm::vec3 feet, float radiusM)
+void ShownAgents::set(std::size_t i, sim::AgentId id, glm::vec3 feet, float radiusM, bool drawn)
 {
     m_ids[i] = id;
     m_feet[i] = feet;
     m_radiusM[i] = radiusM;
+    m_drawn[i] = drawn ? 1 : 0;
+    m_sortedIds.clear();
+}
+
+bool ShownAgents::holds(sim::AgentId id, std::size_t hint) const
+{
+    if (hint < m_ids.size() && m_ids[hint] == id)
+        return true;
+    if (m_sortedIds.size() != m_ids.size()) {
+        m_sortedIds = m_ids;
+        std::sort(m_sortedIds.begin(), m_sortedIds.end());
+    }
+    return std::binary_search(m_sortedIds.begin(), m_sortedIds.end(), id);
 }
 
 std::size_t ShownAgents::find(sim::AgentId id, std::size_t hint) const
@@ -71,7 +86,7 @@ ShownAgents::Nearest ShownAgents::nearest(const RenderView& view, QPointF pixel,
 {
     Nearest best;
     for (std::size_t i = 0; i < m_ids.size(); ++i) {
-        if (m_ids[i] == 0)
+        if (!m_drawn[i])
             continue;
         const float r = m_radiusM[i];
         const std::optional<Projected> feet = project(view, m_feet[i]);
@@ -90,7 +105,7 @@ std::vector<std::size_t> ShownAgents::inside(const RenderView& view, const QRect
 {
     std::vector<std::size_t> found;
     for (std::size_t i = 0; i < m_ids.size(); ++i) {
-        if (m_ids[i] == 0)
+        if (!m_drawn[i])
             continue;
         const glm::vec3 middle = m_feet[i] + glm::vec3(0.0f, 0.5f * bodyHeightM(view, m_radiusM[i]), 0.0f);
         if (const std::optional<Projected> p = project(view, middle); p && box.contains(p->pixel))

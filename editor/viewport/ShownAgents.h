@@ -1,7 +1,8 @@
 #pragma once
-// The agents of the shown frame as the viewport draws them (id, feet, body radius, by
-// World index): which one is drawn under a pixel or inside a box, and where one stands
-// now. Plain data and camera geometry; never draws and never edits the scene.
+// The agents of the shown frame as the viewport draws them (id, feet, body radius and
+// whether it is drawn, by World index): which one is drawn under a pixel or inside a box,
+// where one stands now, and whether the frame knows an agent at all (a frame made before
+// an edit added it does not). Plain data and camera geometry; never draws or edits.
 
 #include "editor/viewport/RenderView.h"
 #include "simcore/world/FrameCache.h"
@@ -12,6 +13,7 @@
 #include <QRectF>
 
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <vector>
 
@@ -22,17 +24,21 @@ public:
     static constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
 
     void resize(std::size_t count);
-    // Agent `i` of the frame; id 0 marks one that is not drawn (absent, or left the shot).
-    void set(std::size_t i, sim::AgentId id, glm::vec3 feet, float radiusM);
+    // Agent `i` of the frame; `drawn` false for one absent there or gone through an exit.
+    void set(std::size_t i, sim::AgentId id, glm::vec3 feet, float radiusM, bool drawn);
 
     std::size_t size() const { return m_ids.size(); }
     bool empty() const { return m_ids.empty(); }
     sim::AgentId id(std::size_t i) const { return m_ids[i]; }
     glm::vec3 feet(std::size_t i) const { return m_feet[i]; }
     float radiusM(std::size_t i) const { return m_radiusM[i]; }
-    // The index of drawn agent `id`, trying `hint` first (a placed agent's scene index is
-    // usually its World index); kNone when it is not drawn.
+    bool drawn(std::size_t i) const { return m_drawn[i] != 0; }
+    // The index of agent `id`, drawn or not, trying `hint` first (a placed agent's scene
+    // index is usually its World index); kNone when the frame does not hold it.
     std::size_t find(sim::AgentId id, std::size_t hint = kNone) const;
+    // Whether the frame holds agent `id`, drawn or not. Unlike find(), a miss costs a
+    // sort of the ids once per frame, not a scan: for asking about every scene agent.
+    bool holds(sim::AgentId id, std::size_t hint = kNone) const;
 
     struct Nearest {
         std::size_t index = kNone;
@@ -52,6 +58,8 @@ private:
     std::vector<sim::AgentId> m_ids;
     std::vector<glm::vec3> m_feet;
     std::vector<float> m_radiusM;
+    std::vector<std::uint8_t> m_drawn;
+    mutable std::vector<sim::AgentId> m_sortedIds;  // built by the first holds() that misses
 };
 
 }  // namespace throng::editor

@@ -212,8 +212,8 @@ void Viewport::setAgents(std::span<const sim::AgentFrame> frames, std::span<cons
     for (std::size_t i = 0; i < n; ++i) {
         const std::size_t type = agents[i].typeIndex;
         const bool drawn = frames[i].present && !frames[i].out;
-        m_shown.set(i, drawn ? agents[i].id : 0, frames[i].position,
-                    type < m_typeRadiusM.size() ? m_typeRadiusM[type] : kFallbackRadiusM);
+        m_shown.set(i, agents[i].id, frames[i].position, type < m_typeRadiusM.size() ? m_typeRadiusM[type] : kFallbackRadiusM,
+                    drawn);
     }
     if (!m_agentRings.empty() || m_focusedAgent != 0 || m_inspectedAgent != 0)
         rebuildHighlight();
@@ -270,9 +270,7 @@ void Viewport::rebuildHighlight()
         extra.push_back(SelectionHighlight::focusRing(m_focusedAgent));
     if (m_inspectedAgent != 0)
         extra.push_back(SelectionHighlight::inspectedRing(m_inspectedAgent));
-    // Only where the frame draws them: neither has a start of its own to fall back to.
-    if (!m_shown.empty())
-        SelectionHighlight::addAgentRings(extra, m_shown, m_highlightMesh);
+    SelectionHighlight::addAgentRings(extra, m_shown, m_highlightMesh);
     m_highlightChanged = true;
     update();
 }
@@ -324,16 +322,16 @@ void Viewport::frameSelection()
     // A lone agent fills no view: frame it with some ground round it.
     constexpr float kAgentRoomM = 3.0f;
     for (const SelectionHighlight::AgentRing& r : m_agentRings)
-        if (const std::size_t i = m_shown.find(r.id, r.hint); i != ShownAgents::kNone)
+        if (const std::size_t i = m_shown.find(r.id, r.hint); i == ShownAgents::kNone)
+            box.include(r.start, kAgentRoomM);  // not in the frame yet: where the scene has it
+        else if (m_shown.drawn(i))
             box.include({m_shown.feet(i).x, m_shown.feet(i).z}, kAgentRoomM);
-        else if (m_shown.empty())
-            box.include(r.start, kAgentRoomM);
     if (!m_selectedGroupIds.empty() || m_focusedAgent != 0)
         for (std::size_t i = 0; i < m_shown.size(); ++i) {
             const sim::AgentId id = m_shown.id(i);
             const bool member = std::any_of(m_selectedGroupIds.begin(), m_selectedGroupIds.end(),
                                             [id](const auto& ids) { return id >= ids.first && id < ids.second; });
-            if (id != 0 && (member || id == m_focusedAgent))
+            if (m_shown.drawn(i) && (member || id == m_focusedAgent))
                 box.include({m_shown.feet(i).x, m_shown.feet(i).z}, kAgentRoomM);
         }
     if (box.empty) {
