@@ -2,9 +2,11 @@
 // agent walked to selects it and a click where it started selects nothing, in the top
 // and the 3D view (on a hill too); a box takes the agents now inside it; scrubbing back
 // moves what a click finds; a spawned member selects its group and is ringed; the brain
-// editor inspects the agent clicked while it is open, ringed in its own colour.
+// editor inspects the agent clicked while it is open, ringed in its own colour; a car is
+// picked where it drives.
 #include "EditorTestSupport.h"
 #include "EditorUiDriver.h"
+#include "PanelTestScene.h"
 #include "TestRegistry.h"
 
 #include "editor/brain/BrainEditorPanel.h"
@@ -264,6 +266,21 @@ private slots:
         box.adjust(-15, -15, 15, 15);
         boxDrag(window, box.topLeft(), box.bottomRight());
         QVERIFY(window.document().selection() == only(ItemKind::Group, 0));
+    }
+
+    void aVehicleIsPickedWhereItDrivesNow()
+    {
+        MainWindow window;
+        QVERIFY(openAndPlay(window, trafficScene(), ViewMode::Top));
+        // Car 50 starts 10 m along lane "side", at (-20, -27), at 4 m/s.
+        const glm::vec3 now = shownPosition(window, 50);
+        const glm::vec3 start(-20, 0, -27);
+        QVERIFY2(glm::distance(now, start) > 4.0f, qPrintable(where(now)));
+        click(window, bodyPixel(window, now));
+        QVERIFY(window.document().selection() == only(ItemKind::Vehicle, 1));
+        QVERIFY(outlinerSelects(window, {ItemKind::Vehicle, 1}));
+        click(window, bodyPixel(window, start));
+        QVERIFY(window.document().selection() != only(ItemKind::Vehicle, 1));
     }
 
     void theBrainEditorInspectsTheClickedAgent()
