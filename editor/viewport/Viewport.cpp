@@ -1,8 +1,6 @@
 #include "editor/viewport/Viewport.h"
 
-#include "editor/tools/SelectionGeometry.h"
 #include "editor/viewport/GroundRay.h"
-#include "editor/viewport/SelectionHighlight.h"
 #include "editor/viewport/SetGeometryBuilder.h"
 #include "editor/viewport/ToolOverlay.h"
 #include "editor/viewport/ViewportPalette.h"
@@ -215,7 +213,7 @@ void Viewport::setAgents(std::span<const sim::AgentFrame> frames, std::span<cons
         m_shown.set(i, agents[i].id, frames[i].position, type < m_typeRadiusM.size() ? m_typeRadiusM[type] : kFallbackRadiusM,
                     drawn);
     }
-    if (!m_agentRings.empty() || m_focusedAgent != 0 || m_inspectedAgent != 0)
+    if (m_marks.followsAgents())
         rebuildHighlight();
     m_overlay->update();  // the select tool's circles follow the agents too
     m_lightMesh.clear();
@@ -227,27 +225,13 @@ void Viewport::setAgents(std::span<const sim::AgentFrame> frames, std::span<cons
 
 void Viewport::setHighlight(const sim::Scene& scene, const Selection& selection)
 {
-    m_highlightItems.clear();
-    SelectionHighlight::addItems(scene, selection, m_highlightItems);
-    m_agentRings = SelectionHighlight::agentRings(scene, selection);
-    m_selectedItemsBox = {};
-    for (const ShapeVertex& v : m_highlightItems.vertices())
-        m_selectedItemsBox.include({v.position.x, v.position.z});
-    m_selectedGroupIds.clear();
-    for (const SceneItem& item : selection)
-        if (item.kind == ItemKind::Group && item.index < scene.groups.size())
-            m_selectedGroupIds.push_back(groupMemberIds(scene, item.index));
-    if (m_focusedAgent != 0) {
-        const std::optional<SceneItem> focused = agentItem(scene, m_focusedAgent);
-        if (!focused || std::find(selection.begin(), selection.end(), *focused) == selection.end())
-            m_focusedAgent = 0;
-    }
+    m_marks.setSelection(scene, selection);
     rebuildHighlight();
 }
 
 void Viewport::setFocusedAgent(sim::AgentId id)
 {
-    m_focusedAgent = id;
+    m_marks.setFocusedAgent(id);
     rebuildHighlight();
     if (id != 0)
         emit agentPicked(id);
@@ -255,22 +239,15 @@ void Viewport::setFocusedAgent(sim::AgentId id)
 
 void Viewport::setInspectedAgent(sim::AgentId id)
 {
-    if (id == m_inspectedAgent)
+    if (id == m_marks.inspectedAgent())
         return;
-    m_inspectedAgent = id;
+    m_marks.setInspectedAgent(id);
     rebuildHighlight();
 }
 
 void Viewport::rebuildHighlight()
 {
-    m_highlightMesh = m_highlightItems;
-    SelectionHighlight::addAgentRings(m_agentRings, m_shown, m_highlightMesh);
-    std::vector<SelectionHighlight::AgentRing> extra;
-    if (m_focusedAgent != 0)
-        extra.push_back(SelectionHighlight::focusRing(m_focusedAgent));
-    if (m_inspectedAgent != 0)
-        extra.push_back(SelectionHighlight::inspectedRing(m_inspectedAgent));
-    SelectionHighlight::addAgentRings(extra, m_shown, m_highlightMesh);
+    m_marks.build(m_shown, m_highlightMesh);
     m_highlightChanged = true;
     update();
 }
@@ -318,22 +295,9 @@ void Viewport::frameAll()
 
 void Viewport::frameSelection()
 {
-    GroundBox box = m_selectedItemsBox;
     // A lone agent fills no view: frame it with some ground round it.
     constexpr float kAgentRoomM = 3.0f;
-    for (const SelectionHighlight::AgentRing& r : m_agentRings)
-        if (const std::size_t i = m_shown.find(r.id, r.hint); i == ShownAgents::kNone)
-            box.include(r.start, kAgentRoomM);  // not in the frame yet: where the scene has it
-        else if (m_shown.drawn(i))
-            box.include({m_shown.feet(i).x, m_shown.feet(i).z}, kAgentRoomM);
-    if (!m_selectedGroupIds.empty() || m_focusedAgent != 0)
-        for (std::size_t i = 0; i < m_shown.size(); ++i) {
-            const sim::AgentId id = m_shown.id(i);
-            const bool member = std::any_of(m_selectedGroupIds.begin(), m_selectedGroupIds.end(),
-                                            [id](const auto& ids) { return id >= ids.first && id < ids.second; });
-            if (m_shown.drawn(i) && (member || id == m_focusedAgent))
-                box.include({m_shown.feet(i).x, m_shown.feet(i).z}, kAgentRoomM);
-        }
+    const GroundBox box = m_marks.extent(m_shown, kAgentRoomM);
     if (box.empty) {
         frameAll();
         return;

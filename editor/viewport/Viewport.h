@@ -11,7 +11,7 @@
 #include "editor/viewport/CameraRig.h"
 #include "editor/viewport/GridRenderer.h"
 #include "editor/viewport/GroundBox.h"
-#include "editor/viewport/SelectionHighlight.h"
+#include "editor/viewport/SelectionMarks.h"
 #include "editor/viewport/ShapeMesh.h"
 #include "editor/viewport/ShapeRenderer.h"
 #include "editor/viewport/ShownAgents.h"
@@ -25,7 +25,6 @@
 #include <cstddef>
 #include <optional>
 #include <span>
-#include <utility>
 #include <vector>
 
 namespace throng::sim {
@@ -64,10 +63,10 @@ public:
     // The agent the user last clicked (0 = none): a view state, never saved. It gets a
     // ring of its own, so one member of a selected group can be followed.
     void setFocusedAgent(sim::AgentId id);
-    sim::AgentId focusedAgent() const { return m_focusedAgent; }
+    sim::AgentId focusedAgent() const { return m_marks.focusedAgent(); }
     // The agent the brain editor inspects (0 = none): ringed in its own colour.
     void setInspectedAgent(sim::AgentId id);
-    sim::AgentId inspectedAgent() const { return m_inspectedAgent; }
+    sim::AgentId inspectedAgent() const { return m_marks.inspectedAgent(); }
 
     void setViewMode(ViewMode mode);
     ViewMode viewMode() const { return m_camera.mode(); }
@@ -163,11 +162,7 @@ private:
     ShapeMesh m_setMesh;
     ShapeMesh m_lightMesh;
     ShapeMesh m_highlightMesh;
-    ShapeMesh m_highlightItems;  // the selection but its agents
-    std::vector<SelectionHighlight::AgentRing> m_agentRings;
-    GroundBox m_selectedItemsBox;  // the selection but its agents
-    std::vector<std::pair<sim::AgentId, sim::AgentId>> m_selectedGroupIds;  // selected groups' member ids
-    sim::AgentId m_focusedAgent = 0, m_inspectedAgent = 0;
+    SelectionMarks m_marks;
     ShownAgents m_shown;  // the shown frame's agents, by World index
     std::vector<AgentGlyph> m_glyphs;     // walkers and fliers
     std::vector<AgentGlyph> m_carGlyphs;  // vehicles, drawn as cars
