@@ -197,7 +197,7 @@ void MainWindow::createViewMenu()
     top->setToolTip(tr("Look straight down with an orthographic camera"));
     QAction* orbit = menu->addAction(tr("&3D View"), this, [this] { m_viewport->setViewMode(ViewMode::Orbit); });
     orbit->setShortcut(tr("Ctrl+2"));
-    orbit->setToolTip(tr("Orbit the scene with a perspective camera (right drag)"));
+    orbit->setToolTip(tr("Orbit the scene with a perspective camera (Alt+left or right drag)"));
     for (QAction* a : {top, orbit}) {
         a->setCheckable(true);
         viewModes->addAction(a);
@@ -207,9 +207,12 @@ void MainWindow::createViewMenu()
             [top, orbit](ViewMode mode) { (mode == ViewMode::Top ? top : orbit)->setChecked(true); });
     addAgentsAsMenu(*menu);
     menu->addSeparator();
-    QAction* frame = menu->addAction(tr("&Frame All"), m_viewport, &Viewport::frameAll);
+    QAction* frame = menu->addAction(tr("&Frame Selection"), m_viewport, &Viewport::frameSelection);
     frame->setShortcut(Qt::Key_F);
-    frame->setToolTip(tr("Fit the whole scene into the viewport"));
+    frame->setToolTip(tr("Fit the selection, its agents where they are now, into the viewport (all when nothing is selected)"));
+    QAction* frameAll = menu->addAction(tr("Frame A&ll"), m_viewport, &Viewport::frameAll);
+    frameAll->setShortcut(Qt::Key_A);
+    frameAll->setToolTip(tr("Fit the whole scene into the viewport"));
     menu->addSeparator();
     QMenu* workspaces = menu->addMenu(tr("&Workspace"));
     workspaces->addAction(m_workspace->brainsAction());

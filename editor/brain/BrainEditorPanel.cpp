@@ -93,8 +93,18 @@ BrainEditorPanel::BrainEditorPanel(SceneDocument& document, SimulationController
             });
     connect(&m_simulation, &SimulationController::frameChanged, this, &BrainEditorPanel::updateLive);
     connect(&m_simulation, &SimulationController::brainValuesChanged, this, &BrainEditorPanel::updateLive);
-    if (m_viewport)
+    if (m_viewport) {
         m_viewport->installEventFilter(this);
+        // An agent clicked in the viewport while the brain editor is open is inspected.
+        connect(m_viewport, &Viewport::agentPicked, this, [this](sim::AgentId id) {
+            if (!isVisible())
+                return;
+            const auto agents = m_simulation.cache().agents();
+            for (std::size_t i = 0; i < agents.size(); ++i)
+                if (agents[i].id == id)
+                    pickAgent(std::ptrdiff_t(i));
+        });
+    }
     refreshList();
     recompile();
 }

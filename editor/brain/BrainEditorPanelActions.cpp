@@ -115,6 +115,8 @@ void BrainEditorPanel::pickAgent(std::ptrdiff_t agent)
         agent = -1;
     m_picked = agent;
     m_simulation.pickBrainAgent(agent);
+    if (m_viewport)
+        m_viewport->setInspectedAgent(agent >= 0 ? m_simulation.cache().agents()[std::size_t(agent)].id : 0);
     {
         const QSignalBlocker block(m_agent);
         m_agent->setValue(int(agent));

@@ -29,9 +29,9 @@ public:
     QString name() const override { return tr("Assign Brush"); }
     QString toolTip() const override
     {
-        return tr("Assign Brush (A): drag over agents to give them a type, a brain, a group, a goal or a path");
+        return tr("Assign Brush (Shift+A): drag over agents to give them a type, a brain, a group, a goal or a path");
     }
-    QKeySequence shortcut() const override { return QKeySequence(Qt::Key_A); }
+    QKeySequence shortcut() const override { return QKeySequence(Qt::SHIFT | Qt::Key_A); }
     QString objectKey() const override { return QStringLiteral("assignBrush"); }
     QWidget* createOptionsWidget(QWidget* parent) override;
 

@@ -19,8 +19,9 @@ namespace throng::editor {
 
 namespace {
 
-constexpr ItemKind kPointKinds[] = {ItemKind::Agent,        ItemKind::Obstacle,  ItemKind::Goal,
-                                    ItemKind::TrafficLight, ItemKind::Crosswalk, ItemKind::Vehicle};
+constexpr ItemKind kPointKinds[] = {ItemKind::Obstacle, ItemKind::Goal, ItemKind::TrafficLight, ItemKind::Crosswalk};
+// Drawn where the shown frame has them; at their scene place only while the frame lacks them.
+constexpr ItemKind kMovingKinds[] = {ItemKind::Agent, ItemKind::Vehicle};
 constexpr ItemKind kLineKinds[] = {ItemKind::Path, ItemKind::Wall, ItemKind::Lane, ItemKind::FlowStroke};
 constexpr double kClickPx = 3.0;  // a box smaller than this is a click
 
@@ -45,27 +46,65 @@ QPointF SelectTool::pixelOf(glm::vec2 ground) const
     return viewport().worldToPixel({ground.x, 0.0f, ground.y});
 }
 
-std::optional<SceneItem> SelectTool::pick(QPointF pixel) const
+sim::AgentId SelectTool::agentIdOf(SceneItem item) const
 {
     const sim::Scene& s = document().scene();
-    std::optional<SceneItem> best;
+    if (item.kind == ItemKind::Agent && item.index < s.agents.size())
+        return s.agents[item.index].id;
+    if (item.kind == ItemKind::Vehicle && item.index < s.vehicles.size())
+        return s.vehicles[item.index].id;
+    return 0;
+}
+
+bool SelectTool::inFrame(SceneItem item) const
+{
+    const std::size_t hint = item.kind == ItemKind::Agent ? item.index : ShownAgents::kNone;
+    return viewport().shownAgents().holds(agentIdOf(item), hint);
+}
+
+std::optional<glm::vec3> SelectTool::shownAt(SceneItem item) const
+{
+    const ShownAgents& shown = viewport().shownAgents();
+    const std::size_t i = shown.find(agentIdOf(item), item.kind == ItemKind::Agent ? item.index : ShownAgents::kNone);
+    return i == ShownAgents::kNone || !shown.drawn(i) ? std::nullopt : std::optional<glm::vec3>(shown.feet(i));
+}
+
+std::optional<SelectTool::Hit> SelectTool::pick(QPointF pixel) const
+{
+    const sim::Scene& s = document().scene();
+    std::optional<Hit> best;
     double bestPx = kPickPx;
-    for (ItemKind kind : kPointKinds)
+    auto consider = [&](ItemKind kind, bool moving) {
         for (std::size_t i = 0; i < itemCount(s, kind); ++i) {
+            if (moving && inFrame({kind, i}))
+                continue;
             const std::optional<glm::vec2> anchor = itemAnchor(s, {kind, i});
             const double d = anchor ? distancePx(pixelOf(*anchor), pixel) : bestPx;
             if (d < bestPx) {
                 bestPx = d;
-                best = SceneItem{kind, i};
+                best = Hit{{kind, i}};
             }
         }
+    };
+    for (ItemKind kind : kPointKinds)
+        consider(kind, false);
+    for (ItemKind kind : kMovingKinds)
+        consider(kind, true);
+    if (const ShownAgents::Nearest agent = viewport().shownAgents().nearest(viewport().renderView(), pixel, kPickPx);
+               agent.index != ShownAgents::kNone && (!best || agent.distancePx < bestPx)) {
+        const sim::AgentId id = viewport().shownAgents().id(agent.index);
+        if (const std::optional<SceneItem> item = agentItem(s, id)) {
+            bestPx = agent.distancePx;
+            best = Hit{*item, id};
+        }
+    }
     if (best)
         return best;
     for (ItemKind kind : kLineKinds)
         for (std::size_t i = 0; i < itemCount(s, kind); ++i)
             if (const std::optional<Segment> hit = segmentAt({kind, i}, pixel); hit && hit->distancePx < bestPx) {
                 bestPx = hit->distancePx;
-                best = SceneItem{kind, i};
+                best = Hit{{kind, i}};
             }
     return best;
 }
@@ -137,7 +176,7 @@ void SelectTool::mousePressed(const ToolMouse& mouse)
         m_lastGround = {mouse.ground->x, mouse.ground->z};
     if (mouse.ground && pressHandle(mouse))
         return;
-    const std::optional<SceneItem> hit = pick(mouse.pixel);
+    const std::optional<Hit> hit = pick(mouse.pixel);
     if (!hit) {
         m_drag = Drag::Box;
         m_boxStart = m_boxEnd = mouse.pixel;
@@ -145,13 +184,16 @@ void SelectTool::mousePressed(const ToolMouse& mouse)
         return;
     }
     Selection selection = document().selection();
-    const bool selected = std::find(selection.begin(), selection.end(), *hit) != selection.end();
+    const bool selected = std::find(selection.begin(), selection.end(), hit->item) != selection.end();
     if (mouse.modifiers & Qt::ShiftModifier) {
         if (!selected)
-            selection.push_back(*hit);
+            selection.push_back(hit->item);
     } else if (!selected) {
-        selection = {*hit};
+        selection = {hit->item};
     }
+    // Focus first: the selection change then keeps it (its item is selected).
+    if (hit->agent != 0 || !(mouse.modifiers & Qt::ShiftModifier))
+        viewport().setFocusedAgent(hit->agent);
     document().setSelection(selection);
     m_drag = mouse.ground ? Drag::Move : Drag::None;
     emit overlayChanged();
@@ -231,11 +273,21 @@ void SelectTool::finishBox(Qt::KeyboardModifiers modifiers)
             if (std::find(selection.begin(), selection.end(), item) == selection.end())
                 selection.push_back(item);
         };
-        for (ItemKind kind : kPointKinds)
+        auto addInside = [&](ItemKind kind, bool moving) {
             for (std::size_t i = 0; i < itemCount(s, kind); ++i)
                 if (const std::optional<glm::vec2> anchor = itemAnchor(s, {kind, i});
-                    anchor && box.contains(pixelOf(*anchor)))
+                    anchor && !(moving && inFrame({kind, i})) && box.contains(pixelOf(*anchor)))
                     add({kind, i});
+        };
+        for (ItemKind kind : kPointKinds)
+            addInside(kind, false);
+        for (ItemKind kind : kMovingKinds)
+            addInside(kind, true);
+        // A spawned agent inside the box brings its whole group.
+        const ShownAgents& shown = viewport().shownAgents();
+        for (std::size_t i : shown.inside(viewport().renderView(), box))
+            if (const std::optional<SceneItem> item = agentItem(s, shown.id(i)))
+                add(*item);
         for (ItemKind kind : kLineKinds)
             for (std::size_t i = 0; i < itemCount(s, kind); ++i) {
                 const std::span<const glm::vec2> line = itemPolyline(s, {kind, i});
@@ -261,9 +313,15 @@ void SelectTool::cancel()
 void SelectTool::drawOverlay(QPainter& painter) const
 {
     const sim::Scene& s = document().scene();
-    for (const SceneItem& item : document().selection())
-        if (const std::optional<glm::vec2> p = itemAnchor(s, item))
+    for (const SceneItem& item : document().selection()) {
+        const bool moving = std::find(std::begin(kMovingKinds), std::end(kMovingKinds), item.kind) != std::end(kMovingKinds);
+        if (moving && inFrame(item)) {
+            if (const std::optional<glm::vec3> p = shownAt(item))
+                drawBrushCircle(painter, viewport(), *p, 0.6f, QColor(255, 230, 0));
+        } else if (const std::optional<glm::vec2> p = itemAnchor(s, item)) {
             drawBrushCircle(painter, viewport(), {p->x, 0.0f, p->y}, 0.6f, QColor(255, 230, 0));
+        }
+    }
     painter.setPen(QPen(QColor(20, 20, 20), 1.0));
     for (const EditHandle& h : editHandles(s, document().selection())) {
         const QPointF at = pixelOf(h.ground);

@@ -3,11 +3,14 @@
 // segment too), wall, lane or flow stroke under the mouse (Shift adds); a drag from empty
 // ground selects everything inside the box; dragging a selected item moves the whole
 // selection; a single selected line shows handles: drag a point to reshape it, a path's
-// radius handle to widen it, double-click a segment to insert a point. Every drag is one
-// undo step; Escape during a drag takes it back and leaves no redo step.
+// radius handle to widen it, double-click a segment to insert a point. Agents and
+// vehicles are picked where the shown frame draws them; a spawned agent selects its group
+// and becomes the viewport's focused agent. Every drag is one undo step; Escape during a
+// drag takes it back and leaves no redo step.
 
 #include "editor/SceneItem.h"
 #include "editor/tools/ViewportTool.h"
+#include "simcore/world/FrameCache.h"
 
 #include <glm/vec2.hpp>
 
@@ -41,9 +44,13 @@ public:
     void cancel() override;
     void drawOverlay(QPainter& painter) const override;
 
-    // The item drawn within kPickPx of `pixel`, nearest first (points before lines);
-    // empty when none.
-    std::optional<SceneItem> pick(QPointF pixel) const;
+    struct Hit {
+        SceneItem item;
+        sim::AgentId agent = 0;  // the World agent clicked, 0 for items that are not agents
+    };
+    // The item drawn within kPickPx of `pixel` (an agent within its drawn body too),
+    // nearest first (points before lines); empty when none.
+    std::optional<Hit> pick(QPointF pixel) const;
     static constexpr double kPickPx = 10.0;
     static constexpr double kHandlePx = 8.0;
 
@@ -63,6 +70,13 @@ private:
     void dragTo(const ToolMouse& mouse);
     void finishBox(Qt::KeyboardModifiers modifiers);
     QPointF pixelOf(glm::vec2 ground) const;
+    // The World id of a placed agent or vehicle; 0 for other items.
+    sim::AgentId agentIdOf(SceneItem item) const;
+    // Whether the shown frame holds the agent or vehicle (drawn or not). One it does not
+    // (no World, or a frame from before the edit that added it) is where the scene has it.
+    bool inFrame(SceneItem item) const;
+    // Where the shown frame draws an agent or vehicle; empty when it does not.
+    std::optional<glm::vec3> shownAt(SceneItem item) const;
 
     Drag m_drag = Drag::None;
     SceneItem m_handleItem;

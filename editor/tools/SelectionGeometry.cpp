@@ -38,6 +38,44 @@ std::optional<glm::vec2> itemAnchor(const sim::Scene& s, SceneItem item)
     }
 }
 
+std::pair<sim::AgentId, sim::AgentId> groupMemberIds(const sim::Scene& s, std::size_t group)
+{
+    sim::AgentId first = 1;
+    for (const sim::Agent& a : s.agents)
+        first = std::max(first, a.id + 1);
+    for (const sim::Vehicle& v : s.vehicles)
+        first = std::max(first, v.id + 1);
+    for (const sim::Hero& h : s.heroes)
+        first = std::max(first, h.id + 1);
+    for (std::size_t g = 0; g < group && g < s.groups.size(); ++g)
+        first += s.groups[g].count;
+    return {first, group < s.groups.size() ? first + s.groups[group].count : first};
+}
+
+std::optional<SceneItem> agentItem(const sim::Scene& s, sim::AgentId id)
+{
+    if (id == 0)
+        return std::nullopt;
+    for (std::size_t i = 0; i < s.agents.size(); ++i)
+        if (s.agents[i].id == id)
+            return SceneItem{ItemKind::Agent, i};
+    for (std::size_t i = 0; i < s.vehicles.size(); ++i)
+        if (s.vehicles[i].id == id)
+            return SceneItem{ItemKind::Vehicle, i};
+    for (std::size_t i = 0; i < s.heroes.size(); ++i)
+        if (s.heroes[i].id == id)
+            return SceneItem{ItemKind::Hero, i};
+    const sim::AgentId first = groupMemberIds(s, 0).first;
+    sim::AgentId end = first;
+    for (std::size_t g = 0; g < s.groups.size(); ++g) {
+        const sim::AgentId begin = end;
+        end += s.groups[g].count;
+        if (id >= begin && id < end)
+            return SceneItem{ItemKind::Group, g};
+    }
+    return std::nullopt;
+}
+
 std::span<const glm::vec2> itemPolyline(const sim::Scene& s, SceneItem item)
 {
     if (item.index >= itemCount(s, item.kind))

@@ -1,14 +1,17 @@
 #pragma once
 // Where selectable things lie on the ground, for the select tool: an item's anchor
-// point, the polylines of paths, walls and lanes, and the edit handles of a selected
-// polyline (its points, and a path's radius). Plain functions over scene data.
+// point, the polylines of paths, walls and lanes, the edit handles of a selected
+// polyline (its points, and a path's radius), and which item a World agent belongs to.
+// Plain functions over scene data.
 
 #include "editor/SceneItem.h"
+#include "simcore/world/FrameCache.h"
 
 #include <glm/vec2.hpp>
 
 #include <optional>
 #include <span>
+#include <utility>
 #include <vector>
 
 namespace throng::editor {
@@ -19,6 +22,12 @@ std::optional<glm::vec2> vehicleStart(const sim::Scene& scene, const sim::Vehicl
 // The point an agent, obstacle, goal, light, vehicle (its start) or crosswalk (its middle)
 // stands on; empty for other kinds and for a vehicle on an unknown lane.
 std::optional<glm::vec2> itemAnchor(const sim::Scene& scene, SceneItem item);
+// The ids the World gives group `group`'s members: [first, second). Spawned agents take
+// ids after every id the scene uses, group after group (World::buildAgents).
+std::pair<sim::AgentId, sim::AgentId> groupMemberIds(const sim::Scene& scene, std::size_t group);
+// The item World agent `id` stands for: a placed agent, the spawn group it is a member
+// of, a vehicle or a hero; empty for an id the scene does not know.
+std::optional<SceneItem> agentItem(const sim::Scene& scene, sim::AgentId id);
 // The polyline of a path, wall or lane; empty for other kinds.
 std::span<const glm::vec2> itemPolyline(const sim::Scene& scene, SceneItem item);
 

@@ -26,10 +26,12 @@ void CameraRig::rotate(QPointF deltaPx)
         m_orbit.orbit(deltaPx);
 }
 
-void CameraRig::zoomAt(QPointF pixel, float factor)
+void CameraRig::zoomAt(QPointF pixel, float factor, std::optional<glm::vec3> ground)
 {
     if (m_mode == ViewMode::Top)
         m_top.zoomAt(pixel, factor);
+    else if (ground)
+        m_orbit.zoomTowards(*ground, factor);
     else
         m_orbit.zoom(factor);
 }

@@ -10,6 +10,10 @@
 #include <QPointF>
 #include <QSize>
 
+#include <glm/vec3.hpp>
+
+#include <optional>
+
 namespace throng::editor {
 
 enum class ViewMode { Top, Orbit };
@@ -21,10 +25,12 @@ public:
     void setViewportSize(QSize sizePx);
 
     // Gestures in widget pixels. `pan` drags the ground; `rotate` orbits (perspective
-    // only); `zoomAt` zooms by `factor` (> 1 in) around `pixel` in the top view.
+    // only); `zoomAt` zooms by `factor` (> 1 in) towards what lies under `pixel`: the
+    // ground point there stays there (in perspective `ground`, the point the pixel's ray
+    // meets; without one, the distance to the target shrinks).
     void pan(QPointF deltaPx);
     void rotate(QPointF deltaPx);
-    void zoomAt(QPointF pixel, float factor);
+    void zoomAt(QPointF pixel, float factor, std::optional<glm::vec3> ground = std::nullopt);
     // Frames `box` in both cameras, so switching views keeps the scene in sight.
     void frame(const GroundBox& box);
 

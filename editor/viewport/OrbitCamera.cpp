@@ -46,6 +46,15 @@ void OrbitCamera::zoom(float factor)
     m_distanceM = std::clamp(m_distanceM / factor, kMinDistanceM, kMaxDistanceM);
 }
 
+void OrbitCamera::zoomTowards(glm::vec3 point, float factor)
+{
+    const float before = m_distanceM;
+    zoom(factor);
+    // Scaling the whole view about `point` keeps the ray through it: the clamp decides
+    // how far that scaling may go.
+    m_target = point + (m_target - point) * (m_distanceM / before);
+}
+
 void OrbitCamera::frame(const GroundBox& box)
 {
     if (box.empty)

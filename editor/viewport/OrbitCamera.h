@@ -22,6 +22,10 @@ public:
     void pan(QPointF deltaPx);
     // Divides the distance by `factor` (> 1 moves closer).
     void zoom(float factor);
+    // Moves the eye and the target towards `point` (> 1) or away from it, dividing the
+    // distance by `factor`; the view direction is kept, so `point` stays on its pixel.
+    void zoomTowards(glm::vec3 point, float factor);
+    float distanceM() const { return m_distanceM; }
     // Looks at the centre of `box` from far enough to see all of it.
     void frame(const GroundBox& box);
 

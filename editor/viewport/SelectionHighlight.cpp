@@ -14,31 +14,51 @@ constexpr float kLineM = 0.14f;    // half width of the outline
 constexpr float kMarginM = 0.25f;  // rings stand this far outside what they mark
 }  // namespace
 
-void SelectionHighlight::add(const sim::Scene& scene, const Selection& selection, ShapeMesh& mesh)
-{
-    addItems(scene, selection, mesh);
-    addAgentRings(agentRings(scene, selection), {}, {}, mesh);
-}
-
 std::vector<SelectionHighlight::AgentRing> SelectionHighlight::agentRings(const sim::Scene& s, const Selection& selection)
 {
     std::vector<AgentRing> rings;
+    auto radiusOf = [&s](const std::string& type, float fallbackM) {
+        const sim::AgentType* t = s.findAgentType(type);
+        return (t ? t->radiusM : fallbackM) + kMarginM;
+    };
     for (const SceneItem& item : selection) {
-        if (item.kind != ItemKind::Agent || item.index >= s.agents.size())
-            continue;
-        const sim::Agent& a = s.agents[item.index];
-        const sim::AgentType* type = s.findAgentType(a.type);
-        rings.push_back({item.index, a.id, {a.position.x, a.position.z}, (type ? type->radiusM : 0.3f) + kMarginM});
+        if (item.kind == ItemKind::Agent && item.index < s.agents.size()) {
+            const sim::Agent& a = s.agents[item.index];
+            rings.push_back({item.index, a.id, {a.position.x, a.position.z}, radiusOf(a.type, 0.3f), 0.0f,
+                             palette::kSelection});
+        } else if (item.kind == ItemKind::Vehicle && item.index < s.vehicles.size()) {
+            const sim::Vehicle& v = s.vehicles[item.index];
+            if (const std::optional<glm::vec2> start = vehicleStart(s, v))
+                rings.push_back({ShownAgents::kNone, v.id, *start, radiusOf(v.type, 1.0f), 0.0f, palette::kSelection});
+        }
     }
     return rings;
 }
 
-void SelectionHighlight::addAgentRings(std::span<const AgentRing> rings, std::span<const sim::AgentId> ids,
-                                       std::span<const glm::vec2> positionsXZ, ShapeMesh& mesh)
+SelectionHighlight::AgentRing SelectionHighlight::focusRing(sim::AgentId id)
+{
+    return {ShownAgents::kNone, id, {}, 0.0f, 0.0f, palette::kSelection};
+}
+
+SelectionHighlight::AgentRing SelectionHighlight::inspectedRing(sim::AgentId id)
+{
+    return {ShownAgents::kNone, id, {}, 0.0f, 3.0f * kLineM, kInspectedColour};
+}
+
+void SelectionHighlight::addAgentRings(std::span<const AgentRing> rings, const ShownAgents& shown, ShapeMesh& mesh)
 {
     for (const AgentRing& r : rings) {
-        const bool shown = r.index < ids.size() && r.index < positionsXZ.size() && ids[r.index] == r.id;
-        mesh.addRing(shown ? positionsXZ[r.index] : r.start, r.radiusM, kLineM, palette::kSelection);
+        const std::size_t i = shown.find(r.id, r.hint);
+        if (i == ShownAgents::kNone) {
+            // A frame made before the agent was added: it stands where the scene has it.
+            if (r.radiusM > 0.0f)
+                mesh.addRing(r.start, r.radiusM, kLineM, r.colour);
+            continue;
+        }
+        if (!shown.drawn(i))
+            continue;  // gone through an exit, or absent on this frame
+        const float radius = r.radiusM > 0.0f ? r.radiusM : shown.radiusM(i) + kMarginM + r.extraM;
+        mesh.addRing({shown.feet(i).x, shown.feet(i).z}, radius, kLineM, r.colour);
     }
 }
 
@@ -87,14 +107,6 @@ void SelectionHighlight::addItems(const sim::Scene& s, const Selection& selectio
             const glm::vec2 side = glm::vec2(-d.y, d.x) * ((0.5f * w.widthM + kMarginM) / len);
             const std::array<glm::vec2, 4> band{w.from + side, w.to + side, w.to - side, w.from - side};
             mesh.addPolyline(band, true, kLineM, c);
-            break;
-        }
-        case ItemKind::Vehicle: {
-            // The car's ring where it starts (the renderer shows it moving during playback).
-            const sim::Vehicle& v = s.vehicles[i];
-            const sim::AgentType* type = s.findAgentType(v.type);
-            if (const std::optional<glm::vec2> at = vehicleStart(s, v))
-                mesh.addRing(*at, (type ? type->radiusM : 1.0f) + kMarginM, kLineM, c);
             break;
         }
         case ItemKind::Group: {

@@ -1,14 +1,17 @@
 #pragma once
-// Outlines the selected items in the selection colour: rings around agents, obstacles,
-// goals and lights, bands along paths, walls, lanes and flow strokes, a hero's way and a
-// group's area. Agents' rings follow the shown frame during playback. Builds ShapeMesh
-// triangles from plain scene data and frames; never touches GL.
+// Outlines the selected items in the selection colour: rings around agents, vehicles,
+// obstacles, goals and lights, bands along paths, walls, lanes and flow strokes, a hero's
+// way and a group's area; and the ring of the agent the brain editor inspects. Rings of
+// agents and vehicles follow the shown frame. Builds ShapeMesh triangles from plain
+// scene data and frames; never touches GL.
 
 #include "editor/SceneItem.h"
 #include "editor/viewport/ShapeMesh.h"
+#include "editor/viewport/ShownAgents.h"
 #include "simcore/world/FrameCache.h"
 
 #include <glm/vec2.hpp>
+#include <glm/vec4.hpp>
 
 #include <cstddef>
 #include <span>
@@ -18,24 +21,31 @@ namespace throng::editor {
 
 class SelectionHighlight {
 public:
-    // A selected placed agent: its World index is its scene index (placed agents come
-    // first in the World, in scene order) while the shown frame's id there matches.
+    // The inspected agent's ring: apart from the selection's yellow and every type colour.
+    static constexpr glm::vec4 kInspectedColour{0.950f, 0.300f, 0.950f, 1.0f};
+
+    // A ring round one World agent, drawn where the shown frame has it.
     struct AgentRing {
-        std::size_t index = 0;
+        std::size_t hint = ShownAgents::kNone;  // its likely World index (a placed agent's scene index)
         sim::AgentId id = 0;
-        glm::vec2 start{0.0f};  // (x, z) in the scene
-        float radiusM = 0.0f;
+        glm::vec2 start{0.0f};  // (x, z) in the scene: the ring's place while the frame lacks the agent
+        float radiusM = 0.0f;   // 0: the shown body's radius plus the margin and `extraM` (no start)
+        float extraM = 0.0f;
+        glm::vec4 colour{1.0f};
     };
 
-    // Everything selected, agents at their scene (start) positions.
-    static void add(const sim::Scene& scene, const Selection& selection, ShapeMesh& mesh);
-    // Everything selected but agents.
+    // Everything selected but agents and vehicles.
     static void addItems(const sim::Scene& scene, const Selection& selection, ShapeMesh& mesh);
+    // The rings of the selected placed agents and vehicles.
     static std::vector<AgentRing> agentRings(const sim::Scene& scene, const Selection& selection);
-    // Rings where the shown frame has the agents (`ids` and `positionsXZ` by World index);
-    // an agent the frame does not hold keeps its start position.
-    static void addAgentRings(std::span<const AgentRing> rings, std::span<const sim::AgentId> ids,
-                              std::span<const glm::vec2> positionsXZ, ShapeMesh& mesh);
+    // The ring that marks the agent the user clicked (a group's member too).
+    static AgentRing focusRing(sim::AgentId id);
+    // The ring of the brain editor's inspected agent, just outside a selection ring.
+    static AgentRing inspectedRing(sim::AgentId id);
+    // Each ring where `shown` draws its agent; an agent held but not drawn there has none
+    // (it left or is absent); one the frame does not hold (no World, or a frame from
+    // before the edit that added it) is ringed at its start.
+    static void addAgentRings(std::span<const AgentRing> rings, const ShownAgents& shown, ShapeMesh& mesh);
 };
 
 }  // namespace throng::editor

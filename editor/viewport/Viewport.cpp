@@ -1,7 +1,6 @@
 #include "editor/viewport/Viewport.h"
 
 #include "editor/viewport/GroundRay.h"
-#include "editor/viewport/SelectionHighlight.h"
 #include "editor/viewport/SetGeometryBuilder.h"
 #include "editor/viewport/ToolOverlay.h"
 #include "editor/viewport/ViewportPalette.h"
@@ -49,7 +48,8 @@ Viewport::Viewport(QWidget* parent) : QOpenGLWidget(parent)
     setFocusPolicy(Qt::StrongFocus);
     setMinimumSize(160, 120);
     setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Expanding);
-    setToolTip(tr("Pan: middle or right drag. Zoom: wheel. Orbit (3D): right drag. Frame all: F."));
+    setToolTip(tr("Orbit (3D): Alt+left or right drag. Pan: Alt+middle or middle drag. Zoom: wheel (towards "
+                  "the cursor) or Alt+right drag. Frame the selection: F. Frame all: A."));
     setMouseTracking(true);
     m_overlay = new ToolOverlay(this);
     m_overlay->resize(size());
@@ -82,9 +82,14 @@ void Viewport::updateScene(const sim::Scene& scene)
 
 std::optional<glm::vec3> Viewport::pixelToGround(QPointF pixel) const
 {
+    return castToGround(renderView().viewProjection, size(), pixel, m_terrain);
+}
+
+RenderView Viewport::renderView() const
+{
     CameraRig camera = m_camera;
     camera.setViewportSize(size());
-    return castToGround(camera.renderView().viewProjection, size(), pixel, m_terrain);
+    return camera.renderView();
 }
 
 Viewport::~Viewport()
@@ -200,15 +205,17 @@ void Viewport::setAgents(std::span<const sim::AgentFrame> frames, std::span<cons
     m_agentsChanged = true;
     m_timeS = timeS;
     m_frameIndex = frameIndex;
-    // Selected agents' rings follow them from frame to frame.
-    m_shownIds.resize(n);
-    m_shownXZ.resize(n);
+    // Picking and the agents' rings follow them from frame to frame.
+    m_shown.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
-        m_shownIds[i] = frames[i].present ? agents[i].id : 0;  // no ring where it is not
-        m_shownXZ[i] = {frames[i].position.x, frames[i].position.z};
+        const std::size_t type = agents[i].typeIndex;
+        const bool drawn = frames[i].present && !frames[i].out;
+        m_shown.set(i, agents[i].id, frames[i].position, type < m_typeRadiusM.size() ? m_typeRadiusM[type] : kFallbackRadiusM,
+                    drawn);
     }
-    if (!m_agentRings.empty())
+    if (m_marks.followsAgents())
         rebuildHighlight();
+    m_overlay->update();  // the select tool's circles follow the agents too
     m_lightMesh.clear();
     SetGeometryBuilder::addLights(m_traffic, timeS, m_lightMesh);
     m_lightsChanged = true;
@@ -218,16 +225,29 @@ void Viewport::setAgents(std::span<const sim::AgentFrame> frames, std::span<cons
 
 void Viewport::setHighlight(const sim::Scene& scene, const Selection& selection)
 {
-    m_highlightItems.clear();
-    SelectionHighlight::addItems(scene, selection, m_highlightItems);
-    m_agentRings = SelectionHighlight::agentRings(scene, selection);
+    m_marks.setSelection(scene, selection);
+    rebuildHighlight();
+}
+
+void Viewport::setFocusedAgent(sim::AgentId id)
+{
+    m_marks.setFocusedAgent(id);
+    rebuildHighlight();
+    if (id != 0)
+        emit agentPicked(id);
+}
+
+void Viewport::setInspectedAgent(sim::AgentId id)
+{
+    if (id == m_marks.inspectedAgent())
+        return;
+    m_marks.setInspectedAgent(id);
     rebuildHighlight();
 }
 
 void Viewport::rebuildHighlight()
 {
-    m_highlightMesh = m_highlightItems;
-    SelectionHighlight::addAgentRings(m_agentRings, m_shownIds, m_shownXZ, m_highlightMesh);
+    m_marks.build(m_shown, m_highlightMesh);
     m_highlightChanged = true;
     update();
 }
@@ -273,11 +293,25 @@ void Viewport::frameAll()
     update();
 }
 
+void Viewport::frameSelection()
+{
+    // A lone agent fills no view: frame it with some ground round it.
+    constexpr float kAgentRoomM = 3.0f;
+    const GroundBox box = m_marks.extent(m_shown, kAgentRoomM);
+    if (box.empty) {
+        frameAll();
+        return;
+    }
+    m_camera.setViewportSize(size());
+    m_camera.frame(box);
+    m_frameOnNextPaint = false;
+    m_cameraMovedByUser = true;
+    update();
+}
+
 QPointF Viewport::worldToPixel(glm::vec3 point) const
 {
-    CameraRig camera = m_camera;
-    camera.setViewportSize(size());
-    const glm::vec4 clip = camera.renderView().viewProjection * glm::vec4(point, 1.0f);
+    const glm::vec4 clip = renderView().viewProjection * glm::vec4(point, 1.0f);
     const glm::vec2 ndc = glm::vec2(clip) / clip.w;
     return {(0.5 + 0.5 * double(ndc.x)) * width(), (0.5 - 0.5 * double(ndc.y)) * height()};
 }

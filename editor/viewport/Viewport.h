@@ -11,9 +11,10 @@
 #include "editor/viewport/CameraRig.h"
 #include "editor/viewport/GridRenderer.h"
 #include "editor/viewport/GroundBox.h"
-#include "editor/viewport/SelectionHighlight.h"
+#include "editor/viewport/SelectionMarks.h"
 #include "editor/viewport/ShapeMesh.h"
 #include "editor/viewport/ShapeRenderer.h"
+#include "editor/viewport/ShownAgents.h"
 #include "simcore/scene/Scene.h"
 #include "simcore/world/FrameCache.h"
 
@@ -56,13 +57,24 @@ public:
     void showFrame(const sim::FrameCache& cache, std::size_t frame);
 
     // Outlines the selected items over the set (drawn below the agents); selected agents'
-    // rings follow them in the shown frame.
+    // and vehicles' rings follow them in the shown frame. Drops the focused agent when its
+    // item (its placed agent, group, vehicle or hero) is no longer selected.
     void setHighlight(const sim::Scene& scene, const Selection& selection);
+    // The agent the user last clicked (0 = none): a view state, never saved. It gets a
+    // ring of its own, so one member of a selected group can be followed.
+    void setFocusedAgent(sim::AgentId id);
+    sim::AgentId focusedAgent() const { return m_marks.focusedAgent(); }
+    // The agent the brain editor inspects (0 = none): ringed in its own colour.
+    void setInspectedAgent(sim::AgentId id);
+    sim::AgentId inspectedAgent() const { return m_marks.inspectedAgent(); }
 
     void setViewMode(ViewMode mode);
     ViewMode viewMode() const { return m_camera.mode(); }
     // Fits the set and the shown agents into the view.
     void frameAll();
+    // Fits the selected items, and the selected agents and groups' members where the shown
+    // frame has them, into the view; everything when nothing selected has a place.
+    void frameSelection();
 
     std::size_t agentCount() const { return m_glyphs.size() + m_carGlyphs.size(); }
     std::size_t frameIndex() const { return m_frameIndex; }
@@ -73,6 +85,10 @@ public:
     // The point of the terrain (or the ground plane y = 0) under a widget pixel, found by
     // casting the camera ray; empty when the ray misses the ground.
     std::optional<glm::vec3> pixelToGround(QPointF pixel) const;
+    // The current camera at the widget's size.
+    RenderView renderView() const;
+    // The agents as the shown frame draws them.
+    const ShownAgents& shownAgents() const { return m_shown; }
 
     // The tool that receives left-button input and draws the overlay; null = navigation only.
     void setTool(ViewportTool* tool);
@@ -108,6 +124,8 @@ signals:
     // The shown agents changed: agentCount(), frameIndex() or timeS().
     void agentsChanged();
     void viewModeChanged(ViewMode mode);
+    // The user picked agent `id` in the view (setFocusedAgent with an agent).
+    void agentPicked(sim::AgentId id);
 
 protected:
     void initializeGL() override;
@@ -127,6 +145,8 @@ private:
                    std::optional<double> timeS, std::size_t frameIndex);
     GroundBox framingBox() const;
     void forwardToTool(QMouseEvent* event, void (ViewportTool::*handler)(const ToolMouse&));
+    void dragCamera(QPointF delta, Qt::KeyboardModifiers modifiers);
+    void cameraMovedByUser();
     void uploadChanged();
     void rebuildHighlight();
     void releaseGl();
@@ -142,10 +162,8 @@ private:
     ShapeMesh m_setMesh;
     ShapeMesh m_lightMesh;
     ShapeMesh m_highlightMesh;
-    ShapeMesh m_highlightItems;  // the selection but its agents
-    std::vector<SelectionHighlight::AgentRing> m_agentRings;
-    std::vector<sim::AgentId> m_shownIds;    // the shown frame's agents, by World index
-    std::vector<glm::vec2> m_shownXZ;        // their (x, z), by World index
+    SelectionMarks m_marks;
+    ShownAgents m_shown;  // the shown frame's agents, by World index
     std::vector<AgentGlyph> m_glyphs;     // walkers and fliers
     std::vector<AgentGlyph> m_carGlyphs;  // vehicles, drawn as cars
     std::vector<AgentPose> m_glyphPoses, m_carPoses;  // the characters they wear, one per glyph
@@ -168,7 +186,9 @@ private:
     bool m_frameOnNextPaint = true;     // until the user moves the camera, resizing re-frames
     bool m_cameraMovedByUser = false;
     Qt::MouseButton m_dragButton = Qt::NoButton;
-    QPointF m_lastMousePos;
+    bool m_altDrag = false;  // the drag began with Alt held: the DCC bindings
+    QPointF m_lastMousePos, m_pressPos;
+    std::optional<glm::vec3> m_pressGround;  // the ground under an Alt+right drag's start
 
     ViewportTool* m_tool = nullptr;
     ToolOverlay* m_overlay = nullptr;

@@ -1,0 +1,60 @@
+#include "editor/viewport/SelectionMarks.h"
+
+#include "editor/tools/SelectionGeometry.h"
+
+#include <algorithm>
+
+namespace throng::editor {
+
+void SelectionMarks::setSelection(const sim::Scene& scene, const Selection& selection)
+{
+    m_items.clear();
+    SelectionHighlight::addItems(scene, selection, m_items);
+    m_rings = SelectionHighlight::agentRings(scene, selection);
+    m_itemsBox = {};
+    for (const ShapeVertex& v : m_items.vertices())
+        m_itemsBox.include({v.position.x, v.position.z});
+    m_groupIds.clear();
+    for (const SceneItem& item : selection)
+        if (item.kind == ItemKind::Group && item.index < scene.groups.size())
+            m_groupIds.push_back(groupMemberIds(scene, item.index));
+    if (m_focused != 0) {
+        const std::optional<SceneItem> focused = agentItem(scene, m_focused);
+        if (!focused || std::find(selection.begin(), selection.end(), *focused) == selection.end())
+            m_focused = 0;
+    }
+}
+
+void SelectionMarks::build(const ShownAgents& shown, ShapeMesh& mesh) const
+{
+    mesh = m_items;
+    SelectionHighlight::addAgentRings(m_rings, shown, mesh);
+    std::vector<SelectionHighlight::AgentRing> extra;
+    if (m_focused != 0)
+        extra.push_back(SelectionHighlight::focusRing(m_focused));
+    if (m_inspected != 0)
+        extra.push_back(SelectionHighlight::inspectedRing(m_inspected));
+    SelectionHighlight::addAgentRings(extra, shown, mesh);
+}
+
+GroundBox SelectionMarks::extent(const ShownAgents& shown, float roomM) const
+{
+    GroundBox box = m_itemsBox;
+    for (const SelectionHighlight::AgentRing& r : m_rings)
+        if (const std::size_t i = shown.find(r.id, r.hint); i == ShownAgents::kNone)
+            box.include(r.start, roomM);  // not in the frame yet: where the scene has it
+        else if (shown.drawn(i))
+            box.include({shown.feet(i).x, shown.feet(i).z}, roomM);
+    if (m_groupIds.empty() && m_focused == 0)
+        return box;
+    for (std::size_t i = 0; i < shown.size(); ++i) {
+        const sim::AgentId id = shown.id(i);
+        const bool member = std::any_of(m_groupIds.begin(), m_groupIds.end(),
+                                        [id](const auto& ids) { return id >= ids.first && id < ids.second; });
+        if (shown.drawn(i) && (member || id == m_focused))
+            box.include({shown.feet(i).x, shown.feet(i).z}, roomM);
+    }
+    return box;
+}
+
+}  // namespace throng::editor
