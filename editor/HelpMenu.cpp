@@ -1,5 +1,7 @@
 #include "editor/HelpMenu.h"
 
+#include "editor/Icons.h"
+
 #include <QAction>
 #include <QApplication>
 #include <QDialog>
@@ -52,16 +54,16 @@ HelpMenu::HelpMenu(QMainWindow& window) : QObject(&window), m_window(window)
     QMenu* menu = window.menuBar()->addMenu(tr("&Help"));
     menu->setObjectName("helpMenu");
     menu->setToolTipsVisible(true);
-    QAction* guide = menu->addAction(tr("&User Guide"), this, &HelpMenu::showGuide);
+    QAction* guide = menu->addAction(themeIcon("action-user-guide"), tr("&User Guide"), this, &HelpMenu::showGuide);
     guide->setObjectName("userGuideAction");
     guide->setShortcut(QKeySequence::HelpContents);
     guide->setToolTip(tr("How to build a crowd scene in Throng (F1)"));
-    QAction* keys = menu->addAction(tr("&Keyboard Shortcuts"), this, &HelpMenu::showShortcuts);
+    QAction* keys = menu->addAction(themeIcon("action-shortcuts"), tr("&Keyboard Shortcuts"), this, &HelpMenu::showShortcuts);
     keys->setObjectName("shortcutsAction");
     keys->setShortcut(QKeySequence(tr("Ctrl+/")));
     keys->setToolTip(tr("Every shortcut and mouse gesture on one sheet (Ctrl+/)"));
     menu->addSeparator();
-    QAction* about = menu->addAction(tr("&About Throng"), this, [this] {
+    QAction* about = menu->addAction(themeIcon("action-about"), tr("&About Throng"), this, [this] {
         QMessageBox::about(&m_window, tr("About Throng"),
                            tr("<h3>Throng</h3><p>An open-source authoring tool for crowd scenes: brushes, brains, "
                               "steering, navigation and traffic, with glTF, CSV and cache export.</p>"

@@ -3,6 +3,7 @@
 #include "editor/AgentTypePresets.h"
 #include "editor/AutosaveRecovery.h"
 #include "editor/HelpMenu.h"
+#include "editor/Icons.h"
 #include "editor/MessagesPanel.h"
 #include "editor/RecentFiles.h"
 #include "editor/ShortcutToolTips.h"
@@ -133,8 +134,9 @@ void MainWindow::createDocks()
     // The brain editor shares the centre with the viewport in its own workspace (Ctrl+B),
     // where the outliner, properties and history give it their room.
     m_workspace = new WorkspaceLayout(*this, m_viewport, m_brains, {outlinerDock, propertiesDock, historyDock});
-    // Room for Properties' fields at 1280 x 800 without a sideways scroll bar.
-    m_workspace->setDefaultDockSizes({{"outlinerDock", QSize(220, 0)}, {"propertiesDock", QSize(330, 0)}});
+    // Room for Properties' fields at 1280 x 800 without a sideways scroll bar, and most of
+    // the right column for them (History needs a few lines).
+    m_workspace->setDefaultDockSizes({{"outlinerDock", QSize(220, 0)}, {"propertiesDock", QSize(330, 440)}});
     connect(m_brains, &BrainEditorPanel::brainMessages, m_messages, &MessagesPanel::showDiagnostics);
     connect(properties, &PropertiesPanel::problem, this, [this](const QString& text) {
         m_messages->showNote(text);
@@ -149,14 +151,16 @@ void MainWindow::createEditMenu()
     QAction* undo = m_document.undoStack()->createUndoAction(this, tr("&Undo"));
     undo->setObjectName("undoAction");
     undo->setShortcut(QKeySequence::Undo);
+    undo->setIcon(themeIcon("action-undo"));
     undo->setToolTip(tr("Undo the last edit"));
     QAction* redo = m_document.undoStack()->createRedoAction(this, tr("&Redo"));
     redo->setObjectName("redoAction");
     redo->setShortcuts({QKeySequence::Redo, QKeySequence(tr("Ctrl+Y"))});
     redo->setToolTip(tr("Redo the last undone edit"));
+    redo->setIcon(themeIcon("action-redo"));
     menu->addAction(undo);
     menu->addAction(redo);
-    QAction* remove = menu->addAction(tr("&Delete"));
+    QAction* remove = menu->addAction(themeIcon("action-delete"), tr("&Delete"));
     remove->setObjectName("deleteAction");
     remove->setShortcut(QKeySequence::Delete);
     remove->setToolTip(tr("Delete the selected items (agents, paths, goals, lanes, crosswalks, vehicles, lights, brains, ...)"));
@@ -192,10 +196,10 @@ void MainWindow::createViewMenu()
 {
     QMenu* menu = menuBar()->addMenu(tr("&View"));
     auto* viewModes = new QActionGroup(this);
-    QAction* top = menu->addAction(tr("&Top View"), this, [this] { m_viewport->setViewMode(ViewMode::Top); });
+    QAction* top = menu->addAction(themeIcon("action-top-view"), tr("&Top View"), this, [this] { m_viewport->setViewMode(ViewMode::Top); });
     top->setShortcut(tr("Ctrl+1"));
     top->setToolTip(tr("Look straight down with an orthographic camera"));
-    QAction* orbit = menu->addAction(tr("&3D View"), this, [this] { m_viewport->setViewMode(ViewMode::Orbit); });
+    QAction* orbit = menu->addAction(themeIcon("action-3d-view"), tr("&3D View"), this, [this] { m_viewport->setViewMode(ViewMode::Orbit); });
     orbit->setShortcut(tr("Ctrl+2"));
     orbit->setToolTip(tr("Orbit the scene with a perspective camera (Alt+left or right drag)"));
     for (QAction* a : {top, orbit}) {
@@ -207,10 +211,10 @@ void MainWindow::createViewMenu()
             [top, orbit](ViewMode mode) { (mode == ViewMode::Top ? top : orbit)->setChecked(true); });
     addAgentsAsMenu(*menu);
     menu->addSeparator();
-    QAction* frame = menu->addAction(tr("&Frame Selection"), m_viewport, &Viewport::frameSelection);
+    QAction* frame = menu->addAction(themeIcon("action-frame-selection"), tr("&Frame Selection"), m_viewport, &Viewport::frameSelection);
     frame->setShortcut(Qt::Key_F);
     frame->setToolTip(tr("Fit the selection, its agents where they are now, into the viewport (all when nothing is selected)"));
-    QAction* frameAll = menu->addAction(tr("Frame A&ll"), m_viewport, &Viewport::frameAll);
+    QAction* frameAll = menu->addAction(themeIcon("action-frame-all"), tr("Frame A&ll"), m_viewport, &Viewport::frameAll);
     frameAll->setShortcut(Qt::Key_A);
     frameAll->setToolTip(tr("Fit the whole scene into the viewport"));
     menu->addSeparator();
@@ -279,7 +283,7 @@ QWidget* MainWindow::outlinerWithActions()
     m_outlinerBar = bar;
     bar->setObjectName("outlinerToolBar");
     bar->setIconSize(QSize(16, 16));
-    bar->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    bar->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
     bar->addAction(m_typeActions->newType());
     if (auto* button = qobject_cast<QToolButton*>(bar->widgetForAction(m_typeActions->newType()))) {
         button->setObjectName("newTypeButton");
@@ -321,29 +325,29 @@ void MainWindow::offerAgentType()
 void MainWindow::createSimulationMenu()
 {
     QMenu* menu = menuBar()->addMenu(tr("&Simulation"));
-    auto add = [&](const QString& text, const QKeySequence& key, const QString& tip, auto slot) {
-        QAction* a = menu->addAction(text, m_simulation, slot);
+    auto add = [&](const QString& text, const char* icon, const QKeySequence& key, const QString& tip, auto slot) {
+        QAction* a = menu->addAction(themeIcon(icon), text, m_simulation, slot);
         a->setShortcut(key);
         a->setToolTip(tip);
         return a;
     };
-    add(tr("&Play / Pause"), QKeySequence(Qt::Key_Space), tr("Play or pause the simulation"),
+    add(tr("&Play / Pause"), "action-play", QKeySequence(Qt::Key_Space), tr("Play or pause the simulation"),
         &SimulationController::togglePlay);
-    add(tr("&Step"), QKeySequence(Qt::Key_Period), tr("Advance one frame"), &SimulationController::stepForward);
-    add(tr("&Restart"), QKeySequence(Qt::Key_Home), tr("Back to frame 0"), &SimulationController::restart);
-    add(tr("&Last Computed Frame"), QKeySequence(Qt::Key_End), tr("Pause at the last frame computed so far"),
+    add(tr("&Step"), "action-step-forward", QKeySequence(Qt::Key_Period), tr("Advance one frame"), &SimulationController::stepForward);
+    add(tr("&Restart"), "action-first-frame", QKeySequence(Qt::Key_Home), tr("Back to frame 0"), &SimulationController::restart);
+    add(tr("&Last Computed Frame"), "action-last-frame", QKeySequence(Qt::Key_End), tr("Pause at the last frame computed so far"),
         &SimulationController::showLastRecorded);
     // The arrows move frames only from the viewport or the timeline: trees, tables and
     // text fields keep their own.
-    for (QAction* a : {add(tr("Pre&vious Frame"), QKeySequence(Qt::Key_Left), tr("Back one frame"),
+    for (QAction* a : {add(tr("Pre&vious Frame"), "action-step-back", QKeySequence(Qt::Key_Left), tr("Back one frame"),
                            &SimulationController::stepBackward),
-                       add(tr("&Next Frame"), QKeySequence(Qt::Key_Right), tr("Advance one frame, computing it if needed"),
+                       add(tr("&Next Frame"), "action-step-forward", QKeySequence(Qt::Key_Right), tr("Advance one frame, computing it if needed"),
                            &SimulationController::stepForward)}) {
         a->setShortcutContext(Qt::WidgetWithChildrenShortcut);
         m_viewport->addAction(a);
         m_timeline->addAction(a);
     }
-    QAction* toEnd = menu->addAction(tr("Simulate to &End"), this, [this] { new SimulateToEndDialog(*m_simulation, this); });
+    QAction* toEnd = menu->addAction(themeIcon("action-simulate-to-end"), tr("Simulate to &End"), this, [this] { new SimulateToEndDialog(*m_simulation, this); });
     toEnd->setObjectName("simulateToEndAction");
     toEnd->setShortcut(QKeySequence(tr("Ctrl+E")));
     toEnd->setToolTip(tr("Record every frame, with progress and Cancel"));

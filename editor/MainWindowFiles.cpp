@@ -4,6 +4,7 @@
 
 #include "editor/AgentTypePresets.h"
 #include "editor/AutosaveRecovery.h"
+#include "editor/Icons.h"
 #include "editor/MessagesPanel.h"
 #include "editor/RecentFiles.h"
 #include "editor/WorkspaceLayout.h"
@@ -98,25 +99,25 @@ bool MainWindow::maybeKeepChanges()
 void MainWindow::createFileMenu()
 {
     QMenu* menu = menuBar()->addMenu(tr("&File"));
-    auto add = [&](const QString& text, const QKeySequence& key, const QString& tip, auto slot) {
-        QAction* a = menu->addAction(text, this, slot);
+    auto add = [&](const QString& text, const char* icon, const QKeySequence& key, const QString& tip, auto slot) {
+        QAction* a = menu->addAction(themeIcon(icon), text, this, slot);
         a->setShortcut(key);
         a->setToolTip(tip);
         return a;
     };
-    add(tr("&New"), QKeySequence::New, tr("Start an empty scene"), &MainWindow::newScene);
-    add(tr("&Open..."), QKeySequence::Open, tr("Open a scene file (.yaml)"), &MainWindow::openWithDialog);
+    add(tr("&New"), "action-new", QKeySequence::New, tr("Start an empty scene"), &MainWindow::newScene);
+    add(tr("&Open..."), "action-open", QKeySequence::Open, tr("Open a scene file (.yaml)"), &MainWindow::openWithDialog);
     m_recent = new RecentFiles(menu->addMenu(tr("Open &Recent")), this);
     connect(m_recent, &RecentFiles::openRequested, this, &MainWindow::openAfterAsking);
-    add(tr("&Save"), QKeySequence::Save, tr("Save the scene to its file"), &MainWindow::save);
+    add(tr("&Save"), "action-save", QKeySequence::Save, tr("Save the scene to its file"), &MainWindow::save);
     // Spelled out: without a desktop's platform theme Qt gives SaveAs and Quit no keys.
-    add(tr("Save &As..."), QKeySequence(tr("Ctrl+Shift+S")), tr("Save the scene to a new file"), &MainWindow::saveAsWithDialog);
-    add(tr("Re&vert"), QKeySequence(), tr("Throw away the changes and read the file again"), &MainWindow::revert);
+    add(tr("Save &As..."), "action-save-as", QKeySequence(tr("Ctrl+Shift+S")), tr("Save the scene to a new file"), &MainWindow::saveAsWithDialog);
+    add(tr("Re&vert"), "action-revert", QKeySequence(), tr("Throw away the changes and read the file again"), &MainWindow::revert);
     menu->addSeparator();
-    add(tr("&Export..."), QKeySequence(tr("Ctrl+Shift+E")), tr("Export the simulation as glTF or CSV"),
+    add(tr("&Export..."), "action-export", QKeySequence(tr("Ctrl+Shift+E")), tr("Export the simulation as glTF or CSV"),
         &MainWindow::showExportDialog);
     menu->addSeparator();
-    add(tr("&Quit"), QKeySequence(tr("Ctrl+Q")), tr("Close Throng"), &QWidget::close);
+    add(tr("&Quit"), "action-quit", QKeySequence(tr("Ctrl+Q")), tr("Close Throng"), &QWidget::close);
     menu->setToolTipsVisible(true);
 }
 

@@ -1,5 +1,7 @@
 #include "editor/WorkspaceLayout.h"
 
+#include "editor/Icons.h"
+
 #include <QAction>
 #include <QDockWidget>
 #include <QGuiApplication>
@@ -47,18 +49,20 @@ WorkspaceLayout::WorkspaceLayout(QMainWindow& window, QWidget* viewport, QWidget
     m_brains = new QAction(tr("&Brains Workspace"), this);
     m_brains->setObjectName("brainsWorkspaceAction");
     m_brains->setCheckable(true);
+    m_brains->setIcon(themeIcon("action-brains-workspace"));
     m_brains->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_B));
     m_brains->setToolTip(tr("Edit brains beside the viewport, or go back to the layout docks (Ctrl+B)"));
     connect(m_brains, &QAction::toggled, this,
             [this](bool on) { switchTo(on ? Workspace::Brains : Workspace::Layout); });
     m_reset = new QAction(tr("&Reset Layout"), this);
     m_reset->setObjectName("resetLayoutAction");
+    m_reset->setIcon(themeIcon("action-reset-layout"));
     m_reset->setToolTip(tr("Put every dock and tool bar of this workspace back where it started"));
     connect(m_reset, &QAction::triggered, this, &WorkspaceLayout::reset);
     m_tabs = new QTabBar(&window);
     m_tabs->setObjectName("workspaceTabs");
-    m_tabs->addTab(tr("Layout"));
-    m_tabs->addTab(tr("Brains"));
+    m_tabs->addTab(themeIcon("action-layout-workspace"), tr("Layout"));
+    m_tabs->addTab(themeIcon("action-brains-workspace"), tr("Brains"));
     m_tabs->setTabToolTip(0, tr("Set, crowd and properties (Ctrl+B switches)"));
     m_tabs->setTabToolTip(1, tr("The brain editor beside the viewport (Ctrl+B)"));
     m_tabs->setDrawBase(false);
@@ -85,11 +89,11 @@ void WorkspaceLayout::apply(const Arrangement& arrangement)
         const auto size = arrangement.dockSizes.find(dock->objectName());
         if (size == arrangement.dockSizes.end() || !dock->isVisibleTo(&m_window) || dock->isFloating())
             continue;
-        const Qt::DockWidgetArea area = m_window.dockWidgetArea(dock);
-        if (area == Qt::LeftDockWidgetArea || area == Qt::RightDockWidgetArea) {
+        if (size->width() > 0) {
             across << dock;
             widths << size->width();
-        } else {
+        }
+        if (size->height() > 0) {
             down << dock;
             heights << size->height();
         }

@@ -1,5 +1,6 @@
 #include "editor/panels/AgentTypeActions.h"
 
+#include "editor/Icons.h"
 #include "editor/SceneDocument.h"
 #include "editor/commands/AddSceneItemCommand.h"
 
@@ -20,15 +21,18 @@ AgentTypeActions::AgentTypeActions(SceneDocument& document, QWidget* parent)
         QAction* a = m_presets->addAction(presetLabel(preset), this, [this, preset] { create(preset); });
         a->setObjectName("typePreset" + presetLabel(preset) + "Action");
         a->setToolTip(presetDescription(preset));
+        a->setIcon(themeIcon("action-new-agent-type"));
     }
     m_newType = new QAction(tr("New Agent &Type"), this);
     m_newType->setObjectName("newTypeAction");
+    m_newType->setIcon(themeIcon("action-new-agent-type"));
     m_newType->setShortcut(QKeySequence(tr("Ctrl+T")));
     m_newType->setToolTip(tr("Add a pedestrian agent type (Ctrl+T); the arrow offers runner, car, bird and rider"));
     m_newType->setMenu(m_presets);
     connect(m_newType, &QAction::triggered, this, [this] { create(TypePreset::Pedestrian); });
     m_duplicate = new QAction(tr("&Duplicate Agent Type"), this);
     m_duplicate->setObjectName("duplicateTypeAction");
+    m_duplicate->setIcon(themeIcon("action-duplicate"));
     m_duplicate->setShortcut(QKeySequence(tr("Ctrl+Shift+D")));
     m_duplicate->setToolTip(tr("Copy the selected agent types under new names (Ctrl+Shift+D)"));
     connect(m_duplicate, &QAction::triggered, this, &AgentTypeActions::duplicateSelected);

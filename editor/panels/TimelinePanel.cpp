@@ -1,5 +1,7 @@
 #include "editor/panels/TimelinePanel.h"
 
+#include "editor/Icons.h"
+
 #include "editor/panels/TimelineRuler.h"
 #include "editor/simulation/SimulationController.h"
 
@@ -23,13 +25,13 @@ namespace {
 const char* const kModeKey = "timeline/playbackMode";
 
 QToolButton* makeButton(QWidget* parent, const QString& name, const QString& text, const QString& tip,
-                        QStyle::StandardPixmap icon)
+                        const QString& icon)
 {
     auto* button = new QToolButton(parent);
     button->setObjectName(name);
     button->setText(text);
     button->setToolTip(tip);
-    button->setIcon(parent->style()->standardIcon(icon));
+    button->setIcon(themeIcon(icon));
     // Icons only, as DCC playbars have them: the dock keeps to the window's narrowest width.
     button->setToolButtonStyle(Qt::ToolButtonIconOnly);
     return button;
@@ -60,7 +62,7 @@ TimelinePanel::TimelinePanel(SimulationController& controller, QWidget* parent)
     connect(&m_controller, &SimulationController::recordedChanged, this, &TimelinePanel::refresh);
     connect(&m_controller, &SimulationController::playingChanged, this, [this](bool playing) {
         m_play->setText(playing ? tr("Pause") : tr("Play"));
-        m_play->setIcon(style()->standardIcon(playing ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
+        m_play->setIcon(themeIcon(playing ? "action-pause" : "action-play"));
     });
     refresh();
 }
@@ -71,13 +73,13 @@ QWidget* TimelinePanel::makeControls()
     auto* row = new QHBoxLayout(controls);
     row->setContentsMargins(0, 0, 0, 0);
     QToolButton* restart = makeButton(controls, "restartButton", tr("Restart"), tr("Back to frame 0 (Home)"),
-                                      QStyle::SP_MediaSkipBackward);
+                                      "action-first-frame");
     QToolButton* step = makeButton(controls, "stepButton", tr("Step"), tr("Advance one frame (Right or .)"),
-                                   QStyle::SP_MediaSeekForward);
+                                   "action-step-forward");
     m_play = makeButton(controls, "playButton", tr("Play"), tr("Play or pause the simulation (Space)"),
-                        QStyle::SP_MediaPlay);
+                        "action-play");
     QToolButton* loop = makeButton(controls, "loopButton", tr("Loop"), tr("Start again at the end"),
-                                   QStyle::SP_BrowserReload);
+                                   "action-loop");
     loop->setCheckable(true);
     m_frameField = new QSpinBox(controls);
     m_frameField->setObjectName("frameField");

@@ -11,6 +11,11 @@
 #include <QActionGroup>
 #include <QDialog>
 #include <QMap>
+#include <QMenu>
+#include <QMenuBar>
+#include <QToolButton>
+
+#include <functional>
 #include <QStandardPaths>
 #include <QTableWidget>
 #include <QTest>
@@ -97,6 +102,36 @@ private slots:
             ++named;
         }
         QVERIFY2(named >= 30, qPrintable(QString::number(named)));
+    }
+
+    // Every command in the menus and every tool button shows an icon (a choice between
+    // modes, a dock's toggle, a recent file and Qt's About are text).
+    void everyCommandAndToolHasAnIcon()
+    {
+        MainWindow window;
+        showEmpty(window);
+        int checked = 0;
+        std::function<void(QMenu*)> walk = [&](QMenu* menu) {
+            if (menu->objectName() == "recentFilesMenu" || menu->title().remove('&') == "Open Recent")
+                return;
+            for (QAction* a : menu->actions()) {
+                if (a->menu() && a->menu() != menu)
+                    walk(a->menu());
+                if (a->isSeparator() || a->isCheckable() || a->objectName() == "aboutQtAction" || a->menu())
+                    continue;
+                QVERIFY2(!a->icon().isNull(), qPrintable(menu->title() + " > " + a->text()));
+                ++checked;
+            }
+        };
+        for (QAction* top : window.menuBar()->actions())
+            if (top->menu())
+                walk(top->menu());
+        QVERIFY2(checked >= 25, qPrintable(QString::number(checked)));
+        for (QAction* tool : window.tools().actions()->actions()) {
+            auto* button = window.findChild<QToolButton*>(tool->objectName().chopped(6) + "Button");
+            QVERIFY2(button && !button->icon().isNull(), qPrintable(tool->text()));
+            QCOMPARE(button->toolButtonStyle(), Qt::ToolButtonIconOnly);
+        }
     }
 
     // Two actions on one key both do nothing (Qt calls it ambiguous); every file action

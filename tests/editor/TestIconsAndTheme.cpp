@@ -44,7 +44,7 @@ const QList<IconGroup> kExpected = {
       "tool-lane", "tool-flow-stroke", "tool-hero", "tool-goal"}},
     {"File and edit",
      {"action-new", "action-open", "action-save", "action-save-as", "action-export", "action-undo", "action-redo",
-      "action-delete", "action-duplicate", "action-new-agent-type"}},
+      "action-delete", "action-duplicate", "action-new-agent-type", "action-revert", "action-quit"}},
     {"View",
      {"action-top-view", "action-3d-view", "action-frame-all", "action-frame-selection", "action-reset-layout",
       "action-brains-workspace", "action-layout-workspace"}},

@@ -287,15 +287,14 @@ private slots:
     {
         MainWindow window;
         QVERIFY(openAndPlay(window, kScene, ViewMode::Top));
-        auto* dock = window.findChild<QDockWidget*>("brainDock");
-        QVERIFY(dock && !dock->isVisible());
         auto* panel = window.findChild<BrainEditorPanel*>();
+        QVERIFY(panel && !panel->isVisible());
         QVERIFY(panel);
         // Closed, the brain editor follows nobody.
         click(window, bodyPixel(window, shownPosition(window, 2)));
         QCOMPARE(panel->pickedAgent(), std::ptrdiff_t(-1));
         QTest::keyClick(&window.viewport(), Qt::Key_B, Qt::ControlModifier);
-        QTRY_VERIFY(dock->isVisible());
+        QTRY_VERIFY(panel->isVisible());
         QTest::qWait(100);  // the smaller viewport frames the scene again on its next paint
         QVERIFY(window.viewport().frameIndex() >= kPlayedFrame);
         const glm::vec3 member = shownPosition(window, 5);
