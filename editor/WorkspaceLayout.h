@@ -41,8 +41,8 @@ public:
     // the saved layout when it is sound.
     void restore();
     void save() const;
-    // The docks' sizes in the default arrangement (by object name; width for side docks,
-    // height for top and bottom ones). Set before restore().
+    // The docks' sizes in the default arrangement, by object name (0 = as laid out). Set
+    // before restore().
     void setDefaultDockSizes(QHash<QString, QSize> sizes) { m_defaultDockSizes = std::move(sizes); }
 
     QSplitter* splitter() const { return m_splitter; }

@@ -181,6 +181,7 @@ QWidget* GroupTool::createOptionsWidget(QWidget* parent)
     density->setSuffix(tr(" /m²"));
     density->setToolTip(tr("Agents per square metre of the area (1 is a busy platform, 4 a packed crowd)"));
     connect(density, &QDoubleSpinBox::valueChanged, this, [this](double v) { m_settings.densityPerM2 = v; });
+    values->setMaximumWidth(130);  // a number, not the rest of the bar
     values->addWidget(count);
     values->addWidget(density);
     values->setCurrentIndex(int(m_settings.amount));
@@ -194,6 +195,7 @@ QWidget* GroupTool::createOptionsWidget(QWidget* parent)
             row->addWidget(new QLabel(label, box));
         row->addWidget(widget);
     }
+    row->addStretch(1);
     return box;
 }
 
