@@ -1,0 +1,116 @@
+// editor_screenshots: the pictures of docs/editor.md and the README, taken from the real
+// window driven as a user drives it (never a test). Run under a display:
+//   xvfb-run -a -s "-screen 0 1920x1080x24" editor_screenshots OUTDIR
+// writes OUTDIR/editor-layout.png, editor-brains.png, editor-new-scene.png,
+// editor-timeline.png and editor-shortcuts.png.
+#include "EditorUiDriver.h"
+
+#include "editor/DarkTheme.h"
+#include "editor/HelpMenu.h"
+#include "editor/WorkspaceLayout.h"
+#include "editor/brain/BrainEditorPanel.h"
+#include "editor/panels/OutlinerPanel.h"
+#include "editor/panels/TimelinePanel.h"
+#include "editor/simulation/SimulationController.h"
+#include "editor/viewport/Viewport.h"
+
+#include <QApplication>
+#include <QDialog>
+#include <QDir>
+#include <QDockWidget>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <iostream>
+
+using namespace throng;
+using namespace throng::editor;
+using namespace throng::editor::test;
+
+namespace {
+
+bool save(QWidget& widget, const QString& path)
+{
+    QTest::qWait(200);
+    const bool ok = widget.grab().save(path);
+    std::cout << (ok ? "wrote " : "could not write ") << path.toStdString() << '\n';
+    return ok;
+}
+
+void playTo(MainWindow& window, std::size_t frame)
+{
+    window.simulation().seek(frame);  // computes up to it, as a click on the timeline does
+    for (int i = 0; i < 600 && window.viewport().frameIndex() < frame; ++i)
+        QTest::qWait(50);
+}
+
+}  // namespace
+
+int main(int argc, char** argv)
+{
+    QSurfaceFormat::setDefaultFormat(Viewport::surfaceFormat());
+    QApplication app(argc, argv);
+    QStandardPaths::setTestModeEnabled(true);  // the user's saved layout stays out of the pictures
+    QCoreApplication::setOrganizationName("ThrongScreenshots");
+    applyDarkTheme(app);
+    if (argc < 2) {
+        std::cerr << "usage: editor_screenshots OUTDIR\n";
+        return 2;
+    }
+    const QString out = QString::fromLocal8Bit(argv[1]);
+    QDir().mkpath(out);
+    QTemporaryDir dir;
+    bool ok = true;
+    {
+        // A new scene: a pedestrian type, a spawn group drawn, a wall and a goal.
+        MainWindow window;
+        window.resize(1280, 800);
+        window.show();
+        if (!QTest::qWaitForWindowExposed(&window))
+            return 1;
+        window.viewport().frameAll();
+        clickToolButton(window, "group");
+        dragOnGround(window, {{-30, -10}, {-15, 10}});
+        clickToolButton(window, "wall");
+        for (glm::vec2 p : {glm::vec2(0, -30), glm::vec2(0, -3)})
+            clickOnGround(window, p);
+        QTest::keyClick(&window.viewport(), Qt::Key_Return);
+        for (glm::vec2 p : {glm::vec2(0, 3), glm::vec2(0, 30)})
+            clickOnGround(window, p);
+        QTest::keyClick(&window.viewport(), Qt::Key_Return);
+        clickToolButton(window, "goal");
+        clickOnGround(window, {25, 0});
+        clickToolButton(window, "group");
+        // Mid-drag, so the preview and its count show.
+        QTest::mousePress(&window.viewport(), Qt::LeftButton, Qt::NoModifier, pixelOf(window, {-30, 15}));
+        QTest::mouseMove(&window.viewport(), pixelOf(window, {-22, 22}));
+        QTest::mouseMove(&window.viewport(), pixelOf(window, {-15, 28}));
+        ok = save(window, out + "/editor-new-scene.png") && ok;
+        QTest::mouseRelease(&window.viewport(), Qt::LeftButton, Qt::NoModifier, pixelOf(window, {-15, 28}));
+    }
+    {
+        MainWindow window;
+        if (!showWithScene(window, dir, "crossroads.yaml"))
+            return 1;
+        window.resize(1280, 800);
+        QTest::qWait(100);
+        window.viewport().frameAll();
+        playTo(window, 360);
+        window.document().setSelection({{ItemKind::Group, 0}});
+        ok = save(window, out + "/editor-layout.png") && ok;
+        auto* timeline = window.findChild<QDockWidget*>("timelineDock");
+        ok = save(*timeline, out + "/editor-timeline.png") && ok;
+        QTest::keyClick(&window.viewport(), Qt::Key_B, Qt::ControlModifier);
+        QTest::qWait(200);
+        window.viewport().frameAll();
+        ok = save(window, out + "/editor-brains.png") && ok;
+        QTest::keyClick(&window.viewport(), Qt::Key_B, Qt::ControlModifier);
+        QTest::keyClick(&window.viewport(), Qt::Key_Slash, Qt::ControlModifier);
+        if (auto* sheet = window.findChild<QDialog*>("shortcutsDialog"))
+            ok = save(*sheet, out + "/editor-shortcuts.png") && ok;
+        else
+            ok = false;
+    }
+    return ok ? 0 : 1;
+}
