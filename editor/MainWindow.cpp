@@ -7,9 +7,9 @@
 #include "editor/MessagesPanel.h"
 #include "editor/RecentFiles.h"
 #include "editor/ShortcutToolTips.h"
+#include "editor/WorkspaceLayout.h"
 #include "editor/brain/BrainEditorPanel.h"
 #include "editor/commands/DeleteItemsCommand.h"
-#include "editor/WorkspaceLayout.h"
 #include "editor/panels/AgentTypeActions.h"
 #include "editor/panels/OutlinerPanel.h"
 #include "editor/panels/PropertiesPanel.h"
@@ -181,7 +181,6 @@ void MainWindow::createEditMenu()
         m_document.undoStack()->push(command);
     });
     menu->addSeparator();
-    m_deleteAction = remove;
     m_outlinerBar->addAction(remove);
     if (QWidget* button = m_outlinerBar->widgetForAction(remove))
         button->setObjectName("deleteItemsButton");
@@ -218,9 +217,7 @@ void MainWindow::createViewMenu()
     frameAll->setShortcut(Qt::Key_A);
     frameAll->setToolTip(tr("Fit the whole scene into the viewport"));
     menu->addSeparator();
-    QMenu* workspaces = menu->addMenu(tr("&Workspace"));
-    workspaces->addAction(m_workspace->brainsAction());
-    workspaces->addAction(m_workspace->resetAction());
+    menu->addAction(m_workspace->brainsAction());
     menu->addAction(m_workspace->resetAction());
     menu->addSeparator();
     for (QDockWidget* dock : m_docks)
@@ -308,13 +305,10 @@ void MainWindow::offerAgentType()
 {
     const QString question = tr("This scene has no agent type yet, so there is nothing to place.\n\n"
                                 "Create a pedestrian type? (Create > New Agent Type offers others.)");
-    const auto answer = m_typePrompt ? m_typePrompt() : [&] {
-        QMessageBox box(QMessageBox::Question, tr("No agent type"), question, QMessageBox::Yes | QMessageBox::No, this);
-        box.setObjectName("createTypePrompt");
-        box.setDefaultButton(QMessageBox::Yes);
-        return QMessageBox::StandardButton(box.exec());
-    }();
-    if (answer != QMessageBox::Yes)
+    QMessageBox box(QMessageBox::Question, tr("No agent type"), question, QMessageBox::Yes | QMessageBox::No, this);
+    box.setObjectName("createTypePrompt");
+    box.setDefaultButton(QMessageBox::Yes);
+    if (box.exec() != QMessageBox::Yes)
         return;
     const std::size_t index = m_typeActions->create(TypePreset::Pedestrian);
     statusBar()->showMessage(

@@ -61,8 +61,6 @@ public:
     TimelinePanel& timeline() { return *m_timeline; }
     WorkspaceLayout& workspace() { return *m_workspace; }
     BrainEditorPanel& brainEditor() { return *m_brains; }
-    // Replaces the question offerAgentType() asks (tests answer it without a dialog).
-    void setAgentTypePrompt(std::function<QMessageBox::StandardButton()> prompt) { m_typePrompt = std::move(prompt); }
     // Opens File > Export (window-modal, not blocking) and returns it.
     ExportDialog* showExportDialog();
 
@@ -109,7 +107,6 @@ private:
     AgentTypeActions* m_typeActions = nullptr;
     BrainEditorPanel* m_brains = nullptr;
     WorkspaceLayout* m_workspace = nullptr;
-    QAction* m_deleteAction = nullptr;
     QToolBar* m_outlinerBar = nullptr;
     QDockWidget* m_messagesDock = nullptr;
     QList<QDockWidget*> m_docks;
@@ -118,7 +115,6 @@ private:
     QLabel* m_speedLabel = nullptr;
     QTimer* m_editTimer = nullptr;
     std::function<QMessageBox::StandardButton()> m_prompt;
-    std::function<QMessageBox::StandardButton()> m_typePrompt;
 };
 
 }  // namespace throng::editor

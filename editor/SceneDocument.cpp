@@ -100,20 +100,13 @@ void SceneDocument::modify(const std::function<void(sim::Scene&)>& edit)
 
 std::uint32_t SceneDocument::nextAgentId() const
 {
-    std::uint32_t highest = 0;
-    for (const sim::Agent& a : m_scene.agents)
-        highest = std::max(highest, a.id);
-    for (const sim::Vehicle& v : m_scene.vehicles)
-        highest = std::max(highest, v.id);
-    for (const sim::Hero& h : m_scene.heroes)
-        highest = std::max(highest, h.id);
-    // Past the ids the groups' members have in a World (they take the ids after the
-    // highest): an agent painted during a run never gets the id of a member that keeps
-    // its id through the resumed run (issue 6; WorldState.h).
+    // Past the ids the groups' members have in a World: an agent painted during a run
+    // never gets the id of a member that keeps its id through the resumed run (issue 6;
+    // WorldState.h).
     std::uint32_t members = 0;
     for (const sim::SpawnGroup& g : m_scene.groups)
         members += g.count;
-    return highest + members + 1;
+    return sim::firstSpawnedId(m_scene) + members;
 }
 
 }  // namespace throng::editor

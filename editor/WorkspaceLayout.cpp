@@ -11,7 +11,6 @@
 #include <QSignalBlocker>
 #include <QSplitter>
 #include <QTabBar>
-#include <QToolBar>
 
 namespace throng::editor {
 
@@ -32,7 +31,7 @@ QString key(Workspace w, const char* what)
 
 WorkspaceLayout::WorkspaceLayout(QMainWindow& window, QWidget* viewport, QWidget* brains,
                                  QList<QDockWidget*> brainsHides)
-    : QObject(&window), m_window(window), m_viewport(viewport), m_brainEditor(brains), m_brainsHides(brainsHides)
+    : QObject(&window), m_window(window), m_brainEditor(brains), m_brainsHides(brainsHides)
 {
     m_splitter = new QSplitter(Qt::Horizontal, &window);
     m_splitter->setObjectName("workspaceSplitter");
@@ -143,7 +142,8 @@ void WorkspaceLayout::reset()
     applyDefault(m_current);
 }
 
-// Sound: every shown dock lies on a screen, and the viewport has its room.
+// Sound: every shown floating dock lies on a screen (the docked ones and the central
+// widgets keep their minimum sizes by themselves).
 bool WorkspaceLayout::sound() const
 {
     for (QDockWidget* dock : m_window.findChildren<QDockWidget*>()) {
@@ -155,8 +155,7 @@ bool WorkspaceLayout::sound() const
         if (!onScreen)
             return false;
     }
-    const QList<int> sizes = m_splitter->sizes();
-    return sizes.value(0) == 0 || sizes.value(0) >= kViewportMinWidth || !m_window.isVisible();
+    return true;
 }
 
 void WorkspaceLayout::restore()

@@ -67,7 +67,6 @@ private:
 
     QMainWindow& m_window;
     QSplitter* m_splitter = nullptr;
-    QWidget* m_viewport = nullptr;
     QWidget* m_brainEditor = nullptr;
     QList<QDockWidget*> m_brainsHides;
     QAction* m_brains = nullptr;

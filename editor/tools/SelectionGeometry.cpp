@@ -40,13 +40,7 @@ std::optional<glm::vec2> itemAnchor(const sim::Scene& s, SceneItem item)
 
 std::pair<sim::AgentId, sim::AgentId> groupMemberIds(const sim::Scene& s, std::size_t group)
 {
-    sim::AgentId first = 1;
-    for (const sim::Agent& a : s.agents)
-        first = std::max(first, a.id + 1);
-    for (const sim::Vehicle& v : s.vehicles)
-        first = std::max(first, v.id + 1);
-    for (const sim::Hero& h : s.heroes)
-        first = std::max(first, h.id + 1);
+    sim::AgentId first = sim::firstSpawnedId(s);
     for (std::size_t g = 0; g < group && g < s.groups.size(); ++g)
         first += s.groups[g].count;
     return {first, group < s.groups.size() ? first + s.groups[group].count : first};

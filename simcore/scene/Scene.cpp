@@ -62,6 +62,18 @@ const char* toString(Navigation navigation)
     return "direct";
 }
 
+std::uint32_t firstSpawnedId(const Scene& scene)
+{
+    std::uint32_t next = 1;
+    for (const Agent& a : scene.agents)
+        next = std::max(next, a.id + 1);
+    for (const Vehicle& v : scene.vehicles)
+        next = std::max(next, v.id + 1);
+    for (const Hero& h : scene.heroes)
+        next = std::max(next, h.id + 1);
+    return next;
+}
+
 const char* toString(AreaShape shape) { return shape == AreaShape::Circle ? "circle" : "rect"; }
 const char* toString(ObstacleShape shape) { return shape == ObstacleShape::Box ? "box" : "circle"; }
 

@@ -273,6 +273,11 @@ struct Scene {
     const BrainGraph* findBrain(const std::string& name) const;
 };
 
+// The id of the first agent spawn groups create in a World: after every id the scene's
+// agents, vehicles and heroes use. Group g's members take the next groups[g].count ids,
+// group after group, so the ids of group g are [first + sum of earlier counts, + count).
+std::uint32_t firstSpawnedId(const Scene& scene);
+
 // Names that may appear in AgentType::behaviours (Reynolds 1999 and boids 1987).
 const std::vector<std::string>& behaviourNames();
 // Built-in characters that export can generate without a file.

@@ -214,11 +214,7 @@ void World::buildAgents(const Scene& scene)
     for (const Agent& a : scene.agents)
         addAgent(scene, a.id, std::uint16_t(std::max(0, types(a.type))), a.position, glm::radians(a.headingDeg),
                  goals(a.goal), paths(a.path), a.leader);
-    // Spawned agents take ids after every id the scene uses.
-    AgentId next = 1;
-    for (const Agent& a : scene.agents) next = std::max(next, a.id + 1);
-    for (const Vehicle& v : scene.vehicles) next = std::max(next, v.id + 1);
-    for (const Hero& h : scene.heroes) next = std::max(next, h.id + 1);
+    AgentId next = firstSpawnedId(scene);
     for (std::size_t g = 0; g < scene.groups.size(); ++g) {
         const SpawnGroup& group = scene.groups[g];
         spawnGroup(scene, group, g, std::uint16_t(std::max(0, types(group.type))), goals(group.goal),
