@@ -13,10 +13,12 @@
 #include <QComboBox>
 #include <QLabel>
 #include <QLineEdit>
+#include <QMenu>
 #include <QPushButton>
 #include <QScrollArea>
 #include <QSlider>
 
+#include <QApplication>
 #include <QFile>
 #include <QTest>
 
@@ -203,6 +205,28 @@ void press(MainWindow& window, const QString& name)
     QVERIFY2(button, qPrintable(name));
     showInPanel(window, button);
     QTest::mouseClick(button, Qt::LeftButton);
+}
+
+void showNewWindow(MainWindow& window)
+{
+    window.resize(1400, 900);
+    window.show();
+    window.activateWindow();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QVERIFY(QTest::qWaitForWindowActive(&window));
+}
+
+bool clickPopupItem(const QString& text)
+{
+    auto* menu = qobject_cast<QMenu*>(QApplication::activePopupWidget());
+    if (!menu)
+        return false;
+    for (QAction* a : menu->actions())
+        if (a->text().remove('&') == text) {
+            QTest::mouseClick(menu, Qt::LeftButton, Qt::NoModifier, menu->actionGeometry(a).center());
+            return true;
+        }
+    return false;
 }
 
 void undo(MainWindow& window)

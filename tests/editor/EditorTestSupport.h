@@ -87,6 +87,13 @@ void typeInto(MainWindow& window, QWidget* widget, const QString& text);
 void press(MainWindow& window, const QString& name);
 // Ctrl+Z on the viewport.
 void undo(MainWindow& window);
+// Shows the window at 1400 x 900 on the scene it starts with (File > New's) and waits
+// until it is exposed and active.
+void showNewWindow(MainWindow& window);
+// Clicks the item `text` (mnemonic '&' ignored) of the open popup menu; false when no
+// menu is open or it has no such item.
+bool clickPopupItem(const QString& text);
+
 // The newest line of the messages panel; empty when there is none.
 QString lastMessage(MainWindow& window);
 

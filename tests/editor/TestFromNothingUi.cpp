@@ -50,35 +50,12 @@ void whenShown(std::function<bool()> answer)
     timer->start();
 }
 
-// Picks the menu item `text` of the open popup menu with a mouse click.
-bool clickPopupItem(const QString& text)
-{
-    auto* menu = qobject_cast<QMenu*>(QApplication::activePopupWidget());
-    if (!menu)
-        return false;
-    for (QAction* a : menu->actions())
-        if (a->text().remove('&') == text) {
-            QTest::mouseClick(menu, Qt::LeftButton, Qt::NoModifier, menu->actionGeometry(a).center());
-            return true;
-        }
-    return false;
-}
-
 std::vector<std::string> typeNames(MainWindow& window)
 {
     std::vector<std::string> names;
     for (const sim::AgentType& t : window.document().scene().agentTypes)
         names.push_back(t.name);
     return names;
-}
-
-void showEmpty(MainWindow& window)
-{
-    window.resize(1400, 900);
-    window.show();
-    window.activateWindow();
-    QVERIFY(QTest::qWaitForWindowExposed(&window));
-    QVERIFY(QTest::qWaitForWindowActive(&window));
 }
 
 }  // namespace
@@ -100,7 +77,7 @@ private slots:
     void newSceneHasAPedestrianTypeAndTheBrushPaintsAtOnce()
     {
         MainWindow window;
-        showEmpty(window);
+        showNewWindow(window);
         QTest::keyClick(&window, Qt::Key_N, Qt::ControlModifier);
         QCOMPARE(typeNames(window), std::vector<std::string>{"pedestrian"});
         QCOMPARE(window.document().scene().agentTypes.front().kind, sim::AgentKind::Pedestrian);
@@ -116,7 +93,7 @@ private slots:
     void typesAreMadeFromPresetsDuplicatedDeletedAndUndone()
     {
         MainWindow window;
-        showEmpty(window);
+        showNewWindow(window);
         // The button's face makes a pedestrian; its arrow offers the presets.
         auto* add = window.findChild<QToolButton*>("newTypeButton");
         QVERIFY(add);
@@ -155,7 +132,7 @@ private slots:
     void aSceneWithoutTypesOffersOneWhenTheBrushIsUsed()
     {
         MainWindow window;
-        showEmpty(window);
+        showNewWindow(window);
         window.viewport().frameAll();
         selectInOutliner(window, {{ItemKind::AgentType, 0}});
         QTest::mouseClick(window.findChild<QToolButton*>("deleteItemsButton"), Qt::LeftButton);
@@ -202,7 +179,7 @@ private slots:
     void groupToolDrawsRectanglesAndCirclesByCountOrDensity()
     {
         MainWindow window;
-        showEmpty(window);
+        showNewWindow(window);
         window.viewport().frameAll();
         QTest::keyClick(&window.viewport(), Qt::Key_S);
         QVERIFY(window.viewport().tool() && window.viewport().tool()->objectKey() == "group");
@@ -257,7 +234,7 @@ private slots:
     void fromFileNewToACheckedSceneFile()
     {
         MainWindow window;
-        showEmpty(window);
+        showNewWindow(window);
         QTest::keyClick(&window, Qt::Key_N, Qt::ControlModifier);
         window.viewport().frameAll();
         bool picked = false;

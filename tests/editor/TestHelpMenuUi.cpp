@@ -25,19 +25,6 @@ using namespace throng;
 using namespace throng::editor;
 using namespace throng::editor::test;
 
-namespace {
-
-void showEmpty(MainWindow& window)
-{
-    window.resize(1400, 900);
-    window.show();
-    window.activateWindow();
-    QVERIFY(QTest::qWaitForWindowExposed(&window));
-    QVERIFY(QTest::qWaitForWindowActive(&window));
-}
-
-}  // namespace
-
 class TestHelpMenuUi : public QObject {
     Q_OBJECT
 
@@ -51,7 +38,7 @@ private slots:
     void f1OpensTheUserGuide()
     {
         MainWindow window;
-        showEmpty(window);
+        showNewWindow(window);
         QTest::keyClick(&window.viewport(), Qt::Key_F1);
         auto* guide = window.findChild<QDialog*>("userGuideDialog");
         QVERIFY(guide);
@@ -64,7 +51,7 @@ private slots:
     void theShortcutSheetListsEveryActionAndTool()
     {
         MainWindow window;
-        showEmpty(window);
+        showNewWindow(window);
         QTest::keyClick(&window.viewport(), Qt::Key_Slash, Qt::ControlModifier);
         auto* sheet = window.findChild<QDialog*>("shortcutsDialog");
         QVERIFY(sheet);
@@ -92,7 +79,7 @@ private slots:
     void everyTooltipNamesItsShortcut()
     {
         MainWindow window;
-        showEmpty(window);
+        showNewWindow(window);
         int named = 0;
         for (QAction* a : window.findChildren<QAction*>()) {
             if (a->shortcut().isEmpty())
@@ -109,7 +96,7 @@ private slots:
     void everyCommandAndToolHasAnIcon()
     {
         MainWindow window;
-        showEmpty(window);
+        showNewWindow(window);
         int checked = 0;
         std::function<void(QMenu*)> walk = [&](QMenu* menu) {
             if (menu->objectName() == "recentFilesMenu" || menu->title().remove('&') == "Open Recent")
@@ -139,7 +126,7 @@ private slots:
     void noTwoActionsShareAKey()
     {
         MainWindow window;
-        showEmpty(window);
+        showNewWindow(window);
         QMap<QString, QString> owner;
         for (QAction* a : window.findChildren<QAction*>()) {
             if (a->shortcutContext() == Qt::WidgetShortcut)

@@ -54,16 +54,9 @@ bool clickViewMenuItem(MainWindow& window, const QString& text)
 {
     bool clicked = false;
     QTimer::singleShot(50, [&] {
-        auto* menu = qobject_cast<QMenu*>(QApplication::activePopupWidget());
-        if (!menu)
-            return;
-        for (QAction* a : menu->actions())
-            if (a->text().remove('&') == text) {
-                QTest::mouseClick(menu, Qt::LeftButton, Qt::NoModifier, menu->actionGeometry(a).center());
-                clicked = true;
-                return;
-            }
-        menu->close();
+        clicked = clickPopupItem(text);
+        if (!clicked && QApplication::activePopupWidget())
+            QApplication::activePopupWidget()->close();
     });
     QTest::keyClick(&window, Qt::Key_V, Qt::AltModifier);
     for (int i = 0; i < 150 && !clicked && QApplication::activePopupWidget(); ++i)
