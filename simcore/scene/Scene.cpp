@@ -74,7 +74,15 @@ std::uint32_t firstSpawnedId(const Scene& scene)
     return next;
 }
 
-const char* toString(AreaShape shape) { return shape == AreaShape::Circle ? "circle" : "rect"; }
+const char* toString(AreaShape shape)
+{
+    switch (shape) {
+    case AreaShape::Circle: return "circle";
+    case AreaShape::Polygon: return "polygon";
+    case AreaShape::Rect: break;
+    }
+    return "rect";
+}
 const char* toString(ObstacleShape shape) { return shape == ObstacleShape::Box ? "box" : "circle"; }
 
 }  // namespace throng::sim

@@ -107,7 +107,7 @@ struct Agent {
     bool operator==(const Agent&) const = default;
 };
 
-enum class AreaShape { Rect, Circle };
+enum class AreaShape { Rect, Circle, Polygon };
 
 struct SpawnGroup {
     std::string name;
@@ -121,6 +121,7 @@ struct SpawnGroup {
     std::string path;
     std::uint32_t leader = 0;        // AgentId the members pursue, evade or follow; 0 = none
     glm::vec2 altitudeM{0.0f};       // fliers: spawn height range [min, max] in m; ground agents ignore it
+    std::vector<glm::vec2> points;   // Polygon: corners (x, z) in order, >= 3, not crossing itself
     bool operator==(const SpawnGroup&) const = default;
 };
 
@@ -140,6 +141,7 @@ struct Path {
 struct Wall {
     std::string name;
     std::vector<glm::vec2> points;  // polyline, >= 2 points
+    float heightM = 2.5f;           // m, > 0: how high the 3D view and the exported set stand it
     bool operator==(const Wall&) const = default;
 };
 

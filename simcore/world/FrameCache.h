@@ -38,6 +38,9 @@ struct AgentFrame {
     // removed by an edit earlier): nothing is drawn or exported for it, and the other
     // fields mean nothing. Distinct from `out`: an agent that left is still in the run.
     bool present = true;
+    // Entered its goal's area or reached its path's end on or before this frame (the
+    // stats' "arrived"); it may still be standing in the shot.
+    bool arrived = false;
 };
 
 struct AgentInfo {

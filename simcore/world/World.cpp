@@ -451,6 +451,7 @@ void World::snapshot(std::vector<AgentFrame>& out) const
         // Clip thresholds relative to a walker: below 0.1 m/s stand, above 2.5 m/s run.
         f.clip = brainClip(i, speed < 0.1f ? Clip::Idle : (speed < 2.5f ? Clip::Walk : Clip::Run));
         f.out = m_out[i] != 0;
+        f.arrived = m_arrived[i] != 0;
     }
 }
 

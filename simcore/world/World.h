@@ -28,6 +28,7 @@
 namespace throng::sim {
 
 class BrainEvaluator;
+class DebugSink;
 struct WorldState;
 namespace detail {
 struct TypeBrain;
@@ -153,6 +154,13 @@ public:
     // -1 picks nobody. Agent i's index among its batch's agents is what the evaluator sees.
     void pickBrainAgent(std::ptrdiff_t i);
 
+    // Publishes to `sink` what agent i senses and decides in the current state: its view
+    // cone, the neighbours it sensed at the last step, each behaviour's force and their
+    // blend as the general steering path computes them, its feelers, its planned way and
+    // where it steers (WorldDebug.cpp). For the few agents a user watches; never changes
+    // the World and never runs inside step().
+    void describeAgent(std::size_t i, DebugSink& sink) const;
+
     // Checkpoints (WorldState.cpp). saveState: everything the next steps read. restoreState:
     // puts a checkpoint of a World of the same scene back (throws std::invalid_argument
     // when its agents differ); the steps from there are bit-identical. adoptState: this
@@ -200,10 +208,11 @@ private:
     // on the road takes none against those waiting at the kerb), and the way it parts.
     float contactShare(std::size_t i, std::size_t j) const;
     glm::vec3 partingDirection(std::size_t i, std::size_t j, glm::vec3 d, float dist) const;
+    // `sink`, when given, hears each behaviour's force (describeAgent); null in the step.
     glm::vec3 steer(std::size_t i, const SteeringAgent& self, std::span<const Neighbour> near,
-                    WanderState& wanderOut) const;
+                    WanderState& wanderOut, DebugSink* sink = nullptr) const;
     void steerAroundStatics(std::size_t i, const SteeringAgent& self, glm::vec3 goal,
-                            SteeringRequestList& requests) const;
+                            SteeringRequestList& requests, DebugSink* sink = nullptr) const;
     std::span<const Neighbour> neighboursToAvoid(std::size_t i, std::span<const Neighbour> near,
                                                  Neighbour* buffer) const;
     glm::vec3 avoidReciprocally(std::size_t i, const SteeringAgent& self, glm::vec3 force,

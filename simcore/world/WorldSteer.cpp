@@ -1,6 +1,8 @@
 // The sense and steer phases of World::step: who an agent perceives, and what its type's
 // behaviours ask of it. Both read only the previous state.
 #include "simcore/world/World.h"
+
+#include "simcore/world/DebugSink.h"
 #include "simcore/world/NearestList.h"
 
 #include "simcore/steering/UninitialisedArray.h"
@@ -174,13 +176,18 @@ glm::vec3 World::flowDirection(glm::vec3 p) const
 // shared by World::steer and the walker kernel (WorldWalk.cpp), so the two add the same
 // forces with the same weights. Nothing when the world has no walls or obstacles.
 void World::steerAroundStatics(std::size_t i, const SteeringAgent& self, glm::vec3 goal,
-                               SteeringRequestList& requests) const
+                               SteeringRequestList& requests, DebugSink* sink) const
 {
     const TypeSteering& s = m_steering[m_info[i].typeIndex];
     using B = Behaviour;
     auto request = [&](B b, auto&& force) {
-        if (s.on(b))
-            requests.add(force(), s.w(b) * brainWeight(i, b));
+        if (!s.on(b))
+            return;
+        const glm::vec3 f = force();
+        const float weight = s.w(b) * brainWeight(i, b);
+        requests.add(f, weight);
+        if (sink)
+            sink->force(b, f, weight);
     };
     const glm::vec3 p = self.position;
     if (s.on(B::WallFollowing) && !m_walls.segments().empty()) {
@@ -221,14 +228,19 @@ void World::steerAroundStatics(std::size_t i, const SteeringAgent& self, glm::ve
 // Steer: every behaviour the type runs, in priority order, combined by blending or by
 // prioritised allocation. Pure in the previous state; the new wander state goes out.
 glm::vec3 World::steer(std::size_t i, const SteeringAgent& self, std::span<const Neighbour> near,
-                       WanderState& wanderOut) const
+                       WanderState& wanderOut, DebugSink* sink) const
 {
     const TypeSteering& s = m_steering[m_info[i].typeIndex];
     using B = Behaviour;
     SteeringRequestList requests;
     auto request = [&](B b, auto&& force) {
-        if (s.on(b))
-            requests.add(force(), s.w(b) * brainWeight(i, b));
+        if (!s.on(b))
+            return;
+        const glm::vec3 f = force();
+        const float weight = s.w(b) * brainWeight(i, b);
+        requests.add(f, weight);
+        if (sink)
+            sink->force(b, f, weight);
     };
     const glm::vec3 p = self.position;
     const bool hasGoal = m_goal[i] >= 0;
@@ -247,9 +259,9 @@ glm::vec3 World::steer(std::size_t i, const SteeringAgent& self, std::span<const
         const float nearest = s.vehicle.flying ? std::min({lo.x, lo.y, lo.z, hi.x, hi.y, hi.z})
                                                : std::min({lo.x, lo.z, hi.x, hi.z});  // walkers ignore height
         if (nearest < probe)
-            requests.add(stayInside(self, m_bounds, s.containment), s.w(B::Containment) * brainWeight(i, B::Containment));
+            request(B::Containment, [&] { return stayInside(self, m_bounds, s.containment); });
     }
-    steerAroundStatics(i, self, goal, requests);
+    steerAroundStatics(i, self, goal, requests, sink);
     // Separation and collision avoidance leave to lower-priority neighbours the whole
     // of making way (WorldPriority.h).
     // (The buffer is only written when priorities differ, and only as far as it is read.)
@@ -301,6 +313,8 @@ glm::vec3 World::steer(std::size_t i, const SteeringAgent& self, std::span<const
         const WanderResult w = wander(self, m_wander[i], random, s.wander);
         wanderOut = w.state;
         requests.add(w.force, s.w(B::Wander) * brainWeight(i, B::Wander));
+        if (sink)
+            sink->force(B::Wander, w.force, s.w(B::Wander) * brainWeight(i, B::Wander));
     }
     // A walker or vehicle with nowhere to go comes to rest instead of coasting on what
     // separation or a collision gave it (the lowest priority: anything else comes first).
