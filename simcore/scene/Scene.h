@@ -121,7 +121,7 @@ struct SpawnGroup {
     std::string path;
     std::uint32_t leader = 0;        // AgentId the members pursue, evade or follow; 0 = none
     glm::vec2 altitudeM{0.0f};       // fliers: spawn height range [min, max] in m; ground agents ignore it
-    std::vector<glm::vec2> points;   // Polygon: corners (x, z) in order, >= 3, not crossing itself
+    std::vector<glm::vec2> points{}; // Polygon: corners (x, z) in order, >= 3, not crossing itself
     bool operator==(const SpawnGroup&) const = default;
 };
 
