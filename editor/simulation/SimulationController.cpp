@@ -61,6 +61,7 @@ void SimulationController::setScene(const sim::Scene& scene)
     if (resume) {
         m_cache.truncate(m_current + 1);
         m_brainValues.resize(std::min(m_brainValues.size(), m_current + 1));
+        m_steering.dropFrom(m_current);  // the edited World describes the edit frame again
         m_runFrames = m_current + 1;
         m_replaying = false;
         m_runner.resume(scene, m_current);
@@ -82,6 +83,7 @@ void SimulationController::setScene(const sim::Scene& scene)
     m_seekTarget.reset();
     m_cache = {};
     m_brainValues.clear();
+    m_steering.clear();
     m_current = 0;
     m_runner.start(scene);
     m_runFrames = 0;
@@ -106,6 +108,7 @@ void SimulationController::takeFrames()
         ++m_restarts;
         m_cache.reset(std::move(batch.agents), batch.fps);
         m_brainValues.clear();
+        m_steering.clear();
         m_runFrames = 0;
         m_replaying = false;
         m_seekTarget.reset();
@@ -122,6 +125,7 @@ void SimulationController::takeFrames()
         if (m_cache.frameCount() > batch.resumedAt)
             m_cache.truncate(batch.resumedAt);
         m_brainValues.resize(std::min(m_brainValues.size(), batch.resumedAt));
+        m_steering.dropFrom(batch.resumedAt);
         m_runFrames = batch.resumedAt;
         m_lastResumedAt = batch.resumedAt;
         if (!batch.agents.empty() && batch.previous.size() == batch.agents.size())
@@ -155,6 +159,11 @@ void SimulationController::takeFrames()
     m_runFrames += batch.frameCount;
     if (replayed)
         emit brainValuesChanged();
+    const bool steeringShown = std::any_of(batch.steering.begin(), batch.steering.end(),
+                                           [&](const auto& s) { return s.frame == m_current; });
+    m_steering.take(std::move(batch.steering));
+    if (steeringShown)
+        emit steeringChanged();
     emit recordedChanged(m_cache.frameCount());
     if (restarted && m_current == 0)
         emit frameChanged(0);
@@ -195,6 +204,7 @@ void SimulationController::pause()
     m_playing = false;
     m_timer.stop();
     emit playingChanged(false);
+    describeShown();
 }
 
 void SimulationController::setPlaybackMode(PlaybackMode mode)
@@ -348,6 +358,22 @@ void SimulationController::setCurrent(std::size_t frame)
     m_current = frame;
     if (frame < m_cache.frameCount())
         emit frameChanged(frame);
+    if (!m_playing)
+        describeShown();
+}
+
+void SimulationController::watchAgents(std::vector<sim::AgentId> ids)
+{
+    m_runner.watchAgents(ids);
+    m_steering.setWatched(std::move(ids));
+    if (!m_playing)
+        describeShown();
+}
+
+void SimulationController::describeShown()
+{
+    if (m_current < m_cache.frameCount() && m_steering.wantsDescribing(m_current))
+        m_runner.describeFrame(m_current);
 }
 
 }  // namespace throng::editor

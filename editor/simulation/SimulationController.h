@@ -6,6 +6,7 @@
 // draws and never edits the scene.
 
 #include "editor/simulation/SimulationRunner.h"
+#include "editor/simulation/SteeringRecord.h"
 #include "simcore/scene/Scene.h"
 #include "simcore/world/FrameCache.h"
 
@@ -82,6 +83,12 @@ public:
     // Agent `agent`'s node values recorded with frame `frame`; null when that frame was
     // computed with another agent picked (or not yet), or at frame 0 (no step yet).
     const std::vector<sim::BrainNodeValue>* brainValues(std::size_t frame, std::ptrdiff_t agent) const;
+    // Steering annotations (World::describeAgent) of the agents `ids` (the selection): the
+    // frames computed from now on carry them, and a shown frame recorded without them is
+    // computed again in the background (steeringChanged() tells when it arrives).
+    void watchAgents(std::vector<sim::AgentId> ids);
+    // The watched agents' annotations on frame `frame`; null when none were recorded.
+    const std::vector<sim::AgentDebug>* steering(std::size_t frame) const { return m_steering.at(frame); }
     // The edit frame of the last resumed run the runner handed frames of (0: none yet), and
     // how many runs have started over from frame 0 (for tests and the status).
     std::size_t lastResumedAt() const { return m_lastResumedAt; }
@@ -96,6 +103,8 @@ signals:
     void playingChanged(bool playing);
     // Node values of frames already shown arrived (after pickBrainAgent).
     void brainValuesChanged();
+    // Steering annotations of the shown frame arrived (after watchAgents).
+    void steeringChanged();
     // The scene could not be simulated (a World could not be built from it).
     void problem(const QString& message);
 
@@ -106,12 +115,15 @@ private:
     void startClock();
     void applyTimerInterval();
     void setCurrent(std::size_t frame);
+    // Asks for the shown frame's annotations when it was recorded without them (paused).
+    void describeShown();
 
     SimulationRunner m_runner;
     sim::Scene m_scene;  // what the recorded frames were simulated from
     bool m_hasScene = false;
     sim::FrameCache m_cache;
     std::vector<SimulationRunner::PickedBrainValues> m_brainValues;  // per recorded frame
+    SteeringRecord m_steering;
     std::size_t m_runFrames = 0;  // frame index of the next frame the runner hands over
     bool m_replaying = false;     // the runner recomputes recorded frames for brain values
     std::ptrdiff_t m_replayAgent = -1;  // the cache agent a replay records values of

@@ -45,6 +45,7 @@ void SimulationRunner::launch(sim::Scene scene, std::size_t resumeFrame, Replay 
         m_target = 1;
         m_pending = {};
         m_notified = false;
+        m_describe.clear();
         if (resumeFrame == 0 && !replay.on) {
             m_checkpoints.clear();
             m_checkpointBytes = 0;
@@ -52,6 +53,54 @@ void SimulationRunner::launch(sim::Scene scene, std::size_t resumeFrame, Replay 
     }
     auto shared = std::make_shared<const sim::Scene>(std::move(scene));
     m_thread = std::thread([this, shared, resumeFrame, replay] { run(shared, resumeFrame, replay); });
+}
+
+void SimulationRunner::describeFrame(std::size_t frame)
+{
+    {
+        std::lock_guard lock(m_mutex);
+        if (std::find(m_describe.begin(), m_describe.end(), frame) == m_describe.end())
+            m_describe.push_back(frame);
+    }
+    m_wake.notify_all();
+}
+
+void SimulationRunner::describeRecorded(std::size_t frame)
+{
+    const std::vector<sim::AgentId> ids = m_watch.ids();
+    if (ids.empty())
+        return;
+    Checkpoint from;
+    std::size_t fromFrame = 0;
+    {
+        std::lock_guard lock(m_mutex);
+        auto it = m_checkpoints.upper_bound(frame);
+        if (it == m_checkpoints.begin())
+            return;
+        --it;
+        fromFrame = it->first;
+        from = it->second;
+    }
+    // A checkpoint at a resume point holds the edited World: the frames from it on were
+    // recorded with its scene (every change of scene pins one), so stepping it again
+    // gives the recorded frames.
+    sim::World world(*from.scene);
+    world.restoreState(*from.state);
+    for (std::size_t f = fromFrame; f < frame; ++f) {
+        {
+            std::lock_guard lock(m_mutex);
+            if (m_stop)
+                return;
+        }
+        world.step();
+    }
+    FrameSteering described{frame, SteeringWatch::describe(world, ids)};
+    std::lock_guard lock(m_mutex);
+    m_pending.steering.push_back(std::move(described));
+    if (!m_notified) {
+        m_notified = true;
+        m_notify();
+    }
 }
 
 void SimulationRunner::setCheckpointBudget(std::size_t intervalFrames, std::size_t budgetBytes)
@@ -266,8 +315,10 @@ void SimulationRunner::run(std::shared_ptr<const sim::Scene> scene, std::size_t 
     }
     std::ptrdiff_t picked = -1;
     bool firstAfterResume = resumeFrame > 0 && !replay.on;
-    auto publish = [&](bool first) {
+    m_watch.forgetWorld();
+    auto publish = [&](bool first, std::size_t frameIndex) {
         world->snapshot(frame);
+        std::vector<sim::AgentDebug> steering = m_watch.describe(*world);
         sim::addOrigin(frame, world->origin());
         PickedBrainValues brain{first ? -1 : picked, {}};
         if (const sim::BrainEvaluator* e = first || picked < 0 ? nullptr : world->agentBrainEvaluator(std::size_t(picked)))
@@ -286,6 +337,8 @@ void SimulationRunner::run(std::shared_ptr<const sim::Scene> scene, std::size_t 
         }
         m_pending.frames.insert(m_pending.frames.end(), frame.begin(), frame.end());
         m_pending.brainValues.push_back(std::move(brain));
+        if (!steering.empty())
+            m_pending.steering.push_back({frameIndex, std::move(steering)});
         ++m_pending.frameCount;
         if (!m_notified) {
             m_notified = true;
@@ -293,12 +346,12 @@ void SimulationRunner::run(std::shared_ptr<const sim::Scene> scene, std::size_t 
         }
     };
     if (resumeFrame == 0) {
-        publish(true);
+        publish(true, 0);
         produced = 1;
     } else if (!replay.on) {
         // The edit frame again, from the edited World: what the edit added shows at once
         // (a stroke's agents at their spawn state, erased ones gone).
-        publish(true);
+        publish(true, resumeFrame);
         std::lock_guard lock(m_mutex);
         m_target = std::max(m_target, produced);
     } else {
@@ -310,10 +363,23 @@ void SimulationRunner::run(std::shared_ptr<const sim::Scene> scene, std::size_t 
         {
             std::unique_lock lock(m_mutex);
             m_computing = false;
-            m_wake.wait(lock, [&] { return m_stop || produced < m_target; });
+            m_wake.wait(lock, [&] { return m_stop || produced < m_target || !m_describe.empty(); });
             if (m_stop)
                 return;
             m_computing = true;
+        }
+        // Frames recorded before the watched agents were picked, described on request.
+        for (;;) {
+            std::size_t describe = 0;
+            {
+                std::lock_guard lock(m_mutex);
+                if (m_describe.empty() || m_stop)
+                    break;
+                describe = m_describe.front();
+                m_describe.erase(m_describe.begin());
+            }
+            if (describe < produced)
+                describeRecorded(describe);
         }
         const Clock::time_point begin = Clock::now();
         std::size_t steps = 0;
@@ -331,7 +397,7 @@ void SimulationRunner::run(std::shared_ptr<const sim::Scene> scene, std::size_t 
                 world->pickBrainAgent(picked);
             }
             world->step();
-            publish(false);
+            publish(false, produced);
             if (produced % interval == 0)
                 keepCheckpoint(produced, scene, *world, false, Checkpoint{});
             ++produced;

@@ -5,6 +5,7 @@
 // rule is in simcore/world/WorldState.h). Knows nothing of widgets; the World never
 // leaves its thread.
 
+#include "editor/simulation/SteeringWatch.h"
 #include "simcore/brain/BrainEvaluator.h"
 #include "simcore/scene/Scene.h"
 #include "simcore/world/FrameCache.h"
@@ -75,6 +76,21 @@ public:
     // on from the last recorded frame as a live run (frames and values, pickBrainAgent).
     void replayBrainValues(sim::AgentId agentId, std::size_t recordedFrames);
 
+    // The agents whose steering annotations (World::describeAgent) are recorded with each
+    // frame computed from now on; empty = nobody. Any thread.
+    void watchAgents(std::vector<sim::AgentId> ids) { m_watch.set(std::move(ids)); }
+    std::vector<sim::AgentId> watchedAgents() const { return m_watch.ids(); }
+    // Frame `frame`, recorded already, is computed again from the checkpoint at or before
+    // it and the watched agents are described there; a later batch carries it. For frames
+    // recorded before the agents were watched. Served between steps of the live run. Any thread.
+    void describeFrame(std::size_t frame);
+
+    // The watched agents' annotations on one frame.
+    struct FrameSteering {
+        std::size_t frame = 0;
+        std::vector<sim::AgentDebug> agents;
+    };
+
     struct Batch {
         // Set with frame 0, and with the first batch of a resumed run (the edited World's
         // agents from resumedAt on; previous[i]: agent i's index in the World that
@@ -87,6 +103,8 @@ public:
         std::string error;                   // the World could not be built
         // Per frame of `frames`: the picked agent's brain node values (see pickBrainAgent).
         std::vector<PickedBrainValues> brainValues;
+        // The watched agents' annotations, by frame (frames of this batch and described ones).
+        std::vector<FrameSteering> steering;
         // Set on the first batch of a resumed run: its frames start at resumedAt (that
         // frame recorded again from the edited World) and frames 0..resumedAt - 1 of the
         // recording stay. 0 otherwise.
@@ -121,6 +139,8 @@ private:
     // On the runner thread: the World to go on with from resumeFrame, or null to start over.
     std::unique_ptr<sim::World> resumeWorld(const std::shared_ptr<const sim::Scene>& scene, std::size_t resumeFrame,
                                             std::vector<std::int32_t>& previous);
+    // On the runner thread: the watched agents on recorded frame `frame`, from a checkpoint.
+    void describeRecorded(std::size_t frame);
     void keepCheckpoint(std::size_t frame, const std::shared_ptr<const sim::Scene>& scene, const sim::World& world,
                         bool pinned, Checkpoint before);
 
@@ -135,6 +155,8 @@ private:
     std::atomic<double> m_stepsPerSecond{0.0};
     std::atomic<bool> m_computing{false};
     std::atomic<std::ptrdiff_t> m_brainAgent{-1};
+    SteeringWatch m_watch;
+    std::vector<std::size_t> m_describe;  // recorded frames to describe (describeFrame)
     // Written by the runner thread (under m_mutex), read by start/resume once it stopped.
     std::map<std::size_t, Checkpoint> m_checkpoints;
     std::size_t m_checkpointBytes = 0;
