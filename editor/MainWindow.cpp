@@ -7,6 +7,7 @@
 #include "editor/MessagesPanel.h"
 #include "editor/RecentFiles.h"
 #include "editor/ShortcutToolTips.h"
+#include "editor/ViewportDisplayActions.h"
 #include "editor/WorkspaceLayout.h"
 #include "editor/brain/BrainEditorPanel.h"
 #include "editor/commands/DeleteItemsCommand.h"
@@ -209,6 +210,8 @@ void MainWindow::createViewMenu()
     connect(m_viewport, &Viewport::viewModeChanged, this,
             [top, orbit](ViewMode mode) { (mode == ViewMode::Top ? top : orbit)->setChecked(true); });
     addAgentsAsMenu(*menu);
+    menu->addSeparator();
+    (new ViewportDisplayActions(*m_viewport, *m_simulation, this))->addTo(*menu);
     menu->addSeparator();
     QAction* frame = menu->addAction(themeIcon("action-frame-selection"), tr("&Frame Selection"), m_viewport, &Viewport::frameSelection);
     frame->setShortcut(Qt::Key_F);

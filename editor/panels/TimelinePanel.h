@@ -26,9 +26,6 @@ public:
 
     TimelineRuler* scrubBar() const { return m_scrub; }
 
-    // "HH:MM:SS:FF" of frame `frame` at `fps` frames a second (FF counts whole frames of
-    // the nominal rate: no drop-frame).
-    static QString timecode(std::size_t frame, double fps);
 
 private:
     QWidget* makeControls();

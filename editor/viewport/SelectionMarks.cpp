@@ -37,6 +37,36 @@ void SelectionMarks::build(const ShownAgents& shown, ShapeMesh& mesh) const
     SelectionHighlight::addAgentRings(extra, shown, mesh);
 }
 
+std::vector<sim::AgentId> SelectionMarks::watchedIds() const
+{
+    std::vector<sim::AgentId> ids;
+    auto add = [&](sim::AgentId id) {
+        if (id != 0 && std::find(ids.begin(), ids.end(), id) == ids.end())
+            ids.push_back(id);
+    };
+    add(m_focused);
+    add(m_inspected);
+    for (const SelectionHighlight::AgentRing& r : m_rings)
+        add(r.id);
+    return ids;
+}
+
+std::vector<std::size_t> SelectionMarks::followed(const ShownAgents& shown, std::size_t max) const
+{
+    std::vector<std::size_t> indices;
+    for (const sim::AgentId id : watchedIds())
+        if (const std::size_t i = shown.find(id); i != ShownAgents::kNone && indices.size() < max)
+            indices.push_back(i);
+    for (std::size_t i = 0; i < shown.size() && indices.size() < max && !m_groupIds.empty(); ++i) {
+        const sim::AgentId id = shown.id(i);
+        const bool member = std::any_of(m_groupIds.begin(), m_groupIds.end(),
+                                        [id](const auto& ids) { return id >= ids.first && id < ids.second; });
+        if (member && std::find(indices.begin(), indices.end(), i) == indices.end())
+            indices.push_back(i);
+    }
+    return indices;
+}
+
 GroundBox SelectionMarks::extent(const ShownAgents& shown, float roomM) const
 {
     GroundBox box = m_itemsBox;

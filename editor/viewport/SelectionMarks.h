@@ -35,6 +35,13 @@ public:
     // empty when nothing selected has a place.
     GroundBox extent(const ShownAgents& shown, float roomM) const;
 
+    // The agents whose steering the user watches: the focused one, the inspected one and
+    // the selected agents and vehicles, in that order, without repeats.
+    std::vector<sim::AgentId> watchedIds() const;
+    // Indices in `shown` of the agents trails follow: the watched ones and the selected
+    // groups' members, at most `max`.
+    std::vector<std::size_t> followed(const ShownAgents& shown, std::size_t max) const;
+
 private:
     ShapeMesh m_items;  // the selection but its agents and vehicles
     GroundBox m_itemsBox;

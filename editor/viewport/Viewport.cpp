@@ -2,7 +2,9 @@
 
 #include "editor/viewport/GroundRay.h"
 #include "editor/viewport/SetGeometryBuilder.h"
+#include "editor/viewport/SteeringOverlay.h"
 #include "editor/viewport/ToolOverlay.h"
+#include "editor/viewport/TrailBuilder.h"
 #include "editor/viewport/ViewportPalette.h"
 #include "simcore/world/World.h"
 
@@ -53,6 +55,9 @@ Viewport::Viewport(QWidget* parent) : QOpenGLWidget(parent)
     setMouseTracking(true);
     m_overlay = new ToolOverlay(this);
     m_overlay->resize(size());
+    m_hud = new ViewportHud(this);
+    m_hud->resize(size());
+    m_hud->setVisible(m_overlays.hud);
 }
 
 void Viewport::setTool(ViewportTool* tool)
@@ -135,6 +140,7 @@ void Viewport::setScene(const sim::Scene& scene)
         qWarning().noquote() << "throng: cannot build the initial state:" << e.what();
     }
     setSet(scene);
+    m_cache = nullptr;
     setAgents(frames, agents, timeS, 0);
 }
 
@@ -144,6 +150,7 @@ void Viewport::setScene(const sim::Scene& scene, const sim::World& state)
     state.snapshot(frames);
     sim::addOrigin(frames, state.origin());
     setSet(scene);
+    m_cache = nullptr;
     setAgents(frames, state.agentInfo(), state.timeS(), std::size_t(state.stepIndex()));
 }
 
@@ -151,6 +158,7 @@ void Viewport::showFrame(const sim::FrameCache& cache, std::size_t frame)
 {
     if (frame >= cache.frameCount())
         return;
+    m_cache = &cache;
     setAgents(cache.frame(frame), cache.agentsAt(frame), double(frame) / double(cache.fps()), frame);
 }
 
@@ -165,6 +173,10 @@ void Viewport::setSet(const sim::Scene& scene)
     m_traffic.trafficLights = scene.trafficLights;
     m_terrain = scene.terrain;
     m_agentColours.setScene(scene);
+    m_fps = scene.settings.fps;
+    m_typeNames.clear();
+    for (const sim::AgentType& t : scene.agentTypes)
+        m_typeNames.push_back(t.name);
     m_charactersChanged = m_agentCharacters.setScene(scene, m_sceneDirectory) || m_charactersChanged;
     m_typeRadiusM.clear();
     m_typeIsVehicle.clear();
@@ -184,7 +196,12 @@ void Viewport::setAgents(std::span<const sim::AgentFrame> frames, std::span<cons
                          std::optional<double> timeS, std::size_t frameIndex)
 {
     const std::size_t n = std::min(frames.size(), agents.size());
-    const std::vector<glm::vec3>& colours = m_agentColours.coloursFor(agents.first(n));
+    // Kept for colouring again (setColourBy), unless it is the kept frame itself.
+    if (frames.data() != m_frames.data()) {
+        m_frames.assign(frames.begin(), frames.begin() + std::ptrdiff_t(n));
+        m_agents.assign(agents.begin(), agents.begin() + std::ptrdiff_t(n));
+    }
+    const std::vector<glm::vec3>& colours = m_agentColours.coloursFor(frames.first(n), agents.first(n));
     m_agentCharacters.posesFor(frames.first(n), agents.first(n), m_shownPoses);
     m_glyphs.clear();
     m_carGlyphs.clear();
@@ -192,16 +209,33 @@ void Viewport::setAgents(std::span<const sim::AgentFrame> frames, std::span<cons
     m_carPoses.clear();
     m_glyphs.reserve(n);
     m_agentBox = {};
+    std::vector<std::size_t> perType(m_typeNames.size(), 0);
+    std::size_t shown = 0, arrived = 0, out = 0;
     for (std::size_t i = 0; i < n; ++i) {
-        if (frames[i].out || !frames[i].present)
-            continue;  // left through an exit, or not there on this frame (an edit added or removed it)
+        if (!frames[i].present)
+            continue;  // not there on this frame (an edit added or removed it)
+        arrived += frames[i].arrived ? 1 : 0;
+        if (frames[i].out) {
+            ++out;
+            continue;  // left through an exit
+        }
         const std::size_t type = agents[i].typeIndex;
+        ++shown;
+        if (type < perType.size())
+            ++perType[type];
         const float radius = type < m_typeRadiusM.size() ? m_typeRadiusM[type] : kFallbackRadiusM;
         const bool car = type < m_typeIsVehicle.size() && m_typeIsVehicle[type];
         (car ? m_carGlyphs : m_glyphs).push_back({frames[i].position, frames[i].headingRad, radius, colours[i]});
         (car ? m_carPoses : m_glyphPoses).push_back(m_shownPoses[i]);
         m_agentBox.include({frames[i].position.x, frames[i].position.z}, radius);
     }
+    m_hudCounts.shown = shown;
+    m_hudCounts.arrived = arrived;
+    m_hudCounts.out = out;
+    m_hudCounts.perType.clear();
+    for (std::size_t t = 0; t < perType.size(); ++t)
+        if (perType[t] > 0)
+            m_hudCounts.perType.emplace_back(m_typeNames[t], perType[t]);
     m_agentsChanged = true;
     m_timeS = timeS;
     m_frameIndex = frameIndex;
@@ -215,24 +249,99 @@ void Viewport::setAgents(std::span<const sim::AgentFrame> frames, std::span<cons
     }
     if (m_marks.followsAgents())
         rebuildHighlight();
+    if (m_overlays.trails)
+        rebuildOverlay();
     m_overlay->update();  // the select tool's circles follow the agents too
     m_lightMesh.clear();
     SetGeometryBuilder::addLights(m_traffic, timeS, m_lightMesh);
     m_lightsChanged = true;
+    updateHud();
     emit agentsChanged();
     update();
 }
 
+void Viewport::setOverlays(const ViewportOverlays& overlays)
+{
+    if (overlays == m_overlays)
+        return;
+    m_overlays = overlays;
+    m_hud->setVisible(m_overlays.hud);
+    rebuildOverlay();
+    updateHud();
+}
+
+void Viewport::setColourBy(ColourBy by)
+{
+    if (by == m_agentColours.colourBy())
+        return;
+    m_agentColours.setColourBy(by);
+    setAgents(m_frames, m_agents, m_timeS, m_frameIndex);
+}
+
+void Viewport::setSteering(std::vector<sim::AgentDebug> agents)
+{
+    m_steering = std::move(agents);
+    if (m_overlays.steering) {
+        rebuildOverlay();
+        updateHud();
+    }
+}
+
+void Viewport::setSimulationRate(double stepsPerSecond)
+{
+    m_stepsPerSecond = stepsPerSecond;
+}
+
+void Viewport::rebuildOverlay()
+{
+    m_overlayMesh.clear();
+    if (m_overlays.trails && m_cache && m_frameIndex < m_cache->frameCount()) {
+        const std::vector<std::size_t> followed = m_marks.followed(m_shown, TrailBuilder::kMaxTrails);
+        const auto frames = std::size_t(std::lround(double(m_overlays.trailSeconds) * double(m_fps)));
+        TrailBuilder::add(*m_cache, m_frameIndex, followed, std::max<std::size_t>(2, frames), m_overlayMesh);
+    }
+    if (m_overlays.steering)
+        SteeringOverlay::add(m_steering, m_overlayMesh);
+    m_overlayChanged = true;
+    update();
+}
+
+void Viewport::updateHud()
+{
+    if (!m_overlays.hud)
+        return;
+    HudFigures figures = m_hudCounts;
+    figures.frame = m_frameIndex;
+    figures.timeS = m_timeS;
+    figures.fps = double(m_fps);
+    figures.stepsPerSecond = m_stepsPerSecond;
+    ColourLegend colouring = m_agentColours.legend();
+    colouring.title = "Colour by " + colouring.title;
+    figures.legends.push_back(std::move(colouring));
+    if (m_overlays.steering) {
+        constexpr std::size_t kDescribed = 2;  // agents whose forces the HUD lists
+        for (std::size_t k = 0; k < m_steering.size() && k < kDescribed; ++k)
+            figures.legends.push_back(SteeringOverlay::describe(m_steering[k]));
+        if (m_steering.empty())
+            figures.legends.push_back({m_marks.watchedIds().empty() ? "Steering: select an agent to see its steering"
+                                                                    : "Steering: computing the shown frame",
+                                       {}, false, 0});
+    }
+    m_hud->setFigures(std::move(figures));
+}
+
 void Viewport::setHighlight(const sim::Scene& scene, const Selection& selection)
 {
+    const std::vector<sim::AgentId> watched = m_marks.watchedIds();
     m_marks.setSelection(scene, selection);
-    rebuildHighlight();
+    marksChanged(watched);
 }
 
 void Viewport::setFocusedAgent(sim::AgentId id)
 {
+    const std::vector<sim::AgentId> watched = m_marks.watchedIds();
     m_marks.setFocusedAgent(id);
-    rebuildHighlight();
+    marksChanged(watched);
     if (id != 0)
         emit agentPicked(id);
 }
@@ -241,8 +350,18 @@ void Viewport::setInspectedAgent(sim::AgentId id)
 {
     if (id == m_marks.inspectedAgent())
         return;
+    const std::vector<sim::AgentId> watched = m_marks.watchedIds();
     m_marks.setInspectedAgent(id);
+    marksChanged(watched);
+}
+
+void Viewport::marksChanged(const std::vector<sim::AgentId>& watchedBefore)
+{
     rebuildHighlight();
+    if (m_overlays.trails || m_overlays.steering)
+        rebuildOverlay();
+    if (m_marks.watchedIds() != watchedBefore)
+        emit watchedAgentsChanged();
 }
 
 void Viewport::rebuildHighlight()
@@ -330,7 +449,8 @@ void Viewport::initializeGL()
         return;
     }
     if (!m_grid.initialize(*this) || !m_setRenderer.initialize(*this) || !m_lightRenderer.initialize(*this) ||
-        !m_highlightRenderer.initialize(*this) || !m_agentRenderer.initialize(*this)) {
+        !m_highlightRenderer.initialize(*this) || !m_overlayRenderer.initialize(*this) ||
+        !m_agentRenderer.initialize(*this)) {
         m_glProblem = tr("the viewport's shaders did not compile (see the log)");
         return;
     }
@@ -340,6 +460,7 @@ void Viewport::initializeGL()
         doneCurrent();
     });
     m_setChanged = m_lightsChanged = m_agentsChanged = m_highlightChanged = m_charactersChanged = true;
+    m_overlayChanged = true;
     m_glReady = true;
 }
 
@@ -351,6 +472,7 @@ void Viewport::releaseGl()
     m_setRenderer.destroy(*this);
     m_lightRenderer.destroy(*this);
     m_highlightRenderer.destroy(*this);
+    m_overlayRenderer.destroy(*this);
     m_agentRenderer.destroy(*this);
     m_glReady = false;
 }
@@ -374,7 +496,10 @@ void Viewport::uploadChanged()
         m_agentRenderer.upload(*this, m_glyphs, m_carGlyphs, m_glyphPoses, m_carPoses);
     if (m_highlightChanged)
         m_highlightRenderer.upload(*this, m_highlightMesh);
+    if (m_overlayChanged)
+        m_overlayRenderer.upload(*this, m_overlayMesh);
     m_setChanged = m_lightsChanged = m_agentsChanged = m_highlightChanged = m_charactersChanged = false;
+    m_overlayChanged = false;
 }
 
 void Viewport::paintGL()
@@ -401,12 +526,14 @@ void Viewport::paintGL()
     m_setRenderer.draw(*this, view);
     m_lightRenderer.draw(*this, view);
     m_highlightRenderer.draw(*this, view);
+    m_overlayRenderer.draw(*this, view);
     if (view.perspective) {
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(GL_LESS);
     }
     m_agentRenderer.draw(*this, view);
     glDisable(GL_DEPTH_TEST);
+    m_hud->framePainted();
 }
 
 }  // namespace throng::editor

@@ -15,7 +15,10 @@
 #include "editor/viewport/ShapeMesh.h"
 #include "editor/viewport/ShapeRenderer.h"
 #include "editor/viewport/ShownAgents.h"
+#include "editor/viewport/ViewportHud.h"
+#include "editor/viewport/ViewportOverlays.h"
 #include "simcore/scene/Scene.h"
+#include "simcore/world/DebugSink.h"
 #include "simcore/world/FrameCache.h"
 
 #include <QOpenGLFunctions_3_3_Core>
@@ -53,8 +56,23 @@ public:
     void setScene(const sim::Scene& scene, const sim::World& state);
     // Like setScene(scene) after an edit: the camera stays where the user left it.
     void updateScene(const sim::Scene& scene);
-    // Shows frame `frame` (< cache.frameCount()) of a recording of the current scene.
+    // Shows frame `frame` (< cache.frameCount()) of a recording of the current scene. The
+    // trails read the frames before it: the caller keeps `cache` alive while it is shown.
     void showFrame(const sim::FrameCache& cache, std::size_t frame);
+
+    // The HUD, trails, steering annotations, fields and density drawn over the set.
+    void setOverlays(const ViewportOverlays& overlays);
+    const ViewportOverlays& overlays() const { return m_overlays; }
+    void setColourBy(ColourBy by);
+    ColourBy colourBy() const { return m_agentColours.colourBy(); }
+    // The watched agents' steering annotations on the shown frame (steering overlay).
+    void setSteering(std::vector<sim::AgentDebug> agents);
+    // The simulation's steps per second, for the HUD (0 while idle).
+    void setSimulationRate(double stepsPerSecond);
+    // The agents whose steering the overlay shows: the focused, the inspected and the
+    // selected agents (watchedAgentsChanged() when they change).
+    std::vector<sim::AgentId> watchedAgents() const { return m_marks.watchedIds(); }
+    const ViewportHud& hud() const { return *m_hud; }
 
     // Outlines the selected items over the set (drawn below the agents); selected agents'
     // and vehicles' rings follow them in the shown frame. Drops the focused agent when its
@@ -126,6 +144,8 @@ signals:
     void viewModeChanged(ViewMode mode);
     // The user picked agent `id` in the view (setFocusedAgent with an agent).
     void agentPicked(sim::AgentId id);
+    // watchedAgents() changed (the selection, the focused or the inspected agent).
+    void watchedAgentsChanged();
 
 protected:
     void initializeGL() override;
@@ -149,6 +169,12 @@ private:
     void cameraMovedByUser();
     void uploadChanged();
     void rebuildHighlight();
+    // The selection, the focused or the inspected agent changed; `watchedBefore` were the
+    // watched agents before.
+    void marksChanged(const std::vector<sim::AgentId>& watchedBefore);
+    // The trails and steering annotations of the shown frame.
+    void rebuildOverlay();
+    void updateHud();
     void releaseGl();
 
     CameraRig m_camera;
@@ -156,12 +182,15 @@ private:
     ShapeRenderer m_setRenderer;
     ShapeRenderer m_lightRenderer;
     ShapeRenderer m_highlightRenderer;
+    ShapeRenderer m_overlayRenderer;
     AgentRenderer m_agentRenderer;
 
     // What is shown, kept on the CPU until the next paint uploads it.
     ShapeMesh m_setMesh;
     ShapeMesh m_lightMesh;
     ShapeMesh m_highlightMesh;
+    ShapeMesh m_overlayMesh;
+    bool m_overlayChanged = true;
     SelectionMarks m_marks;
     ShownAgents m_shown;  // the shown frame's agents, by World index
     std::vector<AgentGlyph> m_glyphs;     // walkers and fliers
@@ -182,6 +211,18 @@ private:
     GroundBox m_setBox, m_agentBox;
     std::optional<double> m_timeS;
     std::size_t m_frameIndex = 0;
+    float m_fps = 24.0f;  // the scene's
+
+    // The shown frame as given (colours are made again from it when the colouring changes).
+    std::vector<sim::AgentFrame> m_frames;
+    std::vector<sim::AgentInfo> m_agents;
+    const sim::FrameCache* m_cache = nullptr;  // the recording shown, null for a World's state
+    std::vector<std::string> m_typeNames;      // by Scene::agentTypes index
+    ViewportOverlays m_overlays;
+    std::vector<sim::AgentDebug> m_steering;
+    double m_stepsPerSecond = 0.0;
+    ViewportHud* m_hud = nullptr;
+    HudFigures m_hudCounts;  // the shown frame's counts
 
     bool m_frameOnNextPaint = true;     // until the user moves the camera, resizing re-frames
     bool m_cameraMovedByUser = false;

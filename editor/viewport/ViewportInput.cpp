@@ -125,6 +125,7 @@ void Viewport::resizeEvent(QResizeEvent* event)
 {
     QOpenGLWidget::resizeEvent(event);
     m_overlay->resize(event->size());
+    m_hud->resize(event->size());
 }
 
 void Viewport::wheelEvent(QWheelEvent* event)

@@ -34,6 +34,16 @@ inline constexpr glm::vec4 kAgentNose{0.090f, 0.095f, 0.105f, 1.0f};
 inline constexpr glm::vec4 kHeroWay{1.000f, 0.550f, 0.250f, 1.0f};
 inline constexpr glm::vec4 kSelection{1.000f, 0.850f, 0.100f, 1.0f};
 inline constexpr glm::vec4 kFlowArrow{0.700f, 0.620f, 0.950f, 0.75f};
+inline constexpr glm::vec4 kTrail{1.000f, 0.780f, 0.300f, 0.90f};         // the newest part of a trail
+// Steering annotations (SteeringOverlay).
+inline constexpr glm::vec4 kViewCone{0.450f, 0.700f, 1.000f, 0.12f};
+inline constexpr glm::vec4 kViewConeEdge{0.450f, 0.700f, 1.000f, 0.55f};
+inline constexpr glm::vec4 kNeighbourLink{0.550f, 0.900f, 1.000f, 0.80f};
+inline constexpr glm::vec4 kFeeler{1.000f, 0.600f, 0.200f, 0.95f};
+inline constexpr glm::vec4 kVelocity{0.400f, 1.000f, 0.500f, 0.95f};
+inline constexpr glm::vec4 kSteeringForce{1.000f, 1.000f, 1.000f, 0.95f};
+inline constexpr glm::vec4 kPlannedPath{0.300f, 0.900f, 0.900f, 0.90f};
+inline constexpr glm::vec4 kSteerTarget{1.000f, 0.350f, 0.850f, 0.95f};
 
 // Colour of agents of type `typeIndex` (Scene::agentTypes order); repeats after 8 types.
 glm::vec4 agentColour(std::size_t typeIndex);

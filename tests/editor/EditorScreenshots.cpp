@@ -2,7 +2,7 @@
 // window driven as a user drives it (never a test). Run under a display:
 //   xvfb-run -a -s "-screen 0 1920x1080x24" editor_screenshots OUTDIR
 // writes OUTDIR/editor-layout.png, editor-brains.png, editor-new-scene.png,
-// editor-timeline.png and editor-shortcuts.png.
+// editor-timeline.png, editor-shortcuts.png, editor-overlays.png and editor-steering.png.
 #include "EditorUiDriver.h"
 
 #include "editor/DarkTheme.h"
@@ -22,6 +22,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <cmath>
 #include <iostream>
 
 using namespace throng;
@@ -107,10 +108,52 @@ int main(int argc, char** argv)
         ok = save(window, out + "/editor-brains.png") && ok;
         QTest::keyClick(&window.viewport(), Qt::Key_B, Qt::ControlModifier);
         QTest::keyClick(&window.viewport(), Qt::Key_Slash, Qt::ControlModifier);
-        if (auto* sheet = window.findChild<QDialog*>("shortcutsDialog"))
+        if (auto* sheet = window.findChild<QDialog*>("shortcutsDialog")) {
             ok = save(*sheet, out + "/editor-shortcuts.png") && ok;
-        else
+            sheet->close();
+        } else {
             ok = false;
+        }
+    }
+    {
+        // The viewport explaining the crowd: agents by speed, the HUD, a walker clicked in
+        // the selected group with its trail and steering, the density under the crowd.
+        MainWindow window;
+        if (!showWithScene(window, dir, "crossroads.yaml"))
+            return 1;
+        window.resize(1280, 800);
+        QTest::qWait(100);
+        Viewport& viewport = window.viewport();
+        viewport.frameAll();
+        playTo(window, 300);
+        for (int k = 0; k < 6; ++k)  // tint, type, group, goal, path, brain, speed
+            QTest::keyClick(&viewport, Qt::Key_C, Qt::ShiftModifier);
+        QTest::keyClick(&viewport, Qt::Key_T);
+        QTest::keyClick(&viewport, Qt::Key_D);
+        QTest::keyClick(&viewport, Qt::Key_M);
+        QTest::keyClick(&viewport, Qt::Key_Q);
+        // The walker nearest the middle of the view, clicked where it is drawn.
+        const ShownAgents& shown = viewport.shownAgents();
+        const QPointF middle(viewport.width() * 0.5, viewport.height() * 0.5);
+        std::size_t pick = ShownAgents::kNone;
+        double best = 1e9;
+        for (std::size_t i = 0; i < shown.size(); ++i) {
+            const QPointF p = viewport.worldToPixel(shown.feet(i));
+            const double d = std::hypot(p.x() - middle.x(), p.y() - middle.y());
+            if (shown.drawn(i) && d < best && shown.radiusM(i) < 0.5f) {
+                best = d;
+                pick = i;
+            }
+        }
+        if (pick != ShownAgents::kNone)
+            QTest::mouseClick(&viewport, Qt::LeftButton, Qt::NoModifier, viewport.worldToPixel(shown.feet(pick)).toPoint());
+        playTo(window, 340);
+        QTest::qWait(300);
+        ok = save(window, out + "/editor-overlays.png") && ok;
+        for (int k = 0; k < 5; ++k)  // zoomed in on the watched walker
+            QTest::keyClick(&viewport, Qt::Key_F);
+        QTest::qWait(300);
+        ok = save(viewport, out + "/editor-steering.png") && ok;
     }
     return ok ? 0 : 1;
 }
