@@ -1,0 +1,154 @@
+#include "editor/viewport/DensityHeatmap.h"
+
+#include "simcore/world/LocalDensity.h"
+
+#include <glm/common.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+
+namespace throng::editor {
+
+namespace {
+
+constexpr std::array<DensityHeatmap::ScaleStop, 5> kScale{{
+    {0.0f, {0.15f, 0.35f, 1.00f, 0.00f}},
+    {1.0f, {0.15f, 0.35f, 1.00f, 0.50f}},
+    {2.0f, {0.20f, 0.80f, 0.30f, 0.55f}},
+    {4.0f, {1.00f, 0.90f, 0.20f, 0.60f}},
+    {6.0f, {1.00f, 0.15f, 0.10f, 0.65f}},
+}};
+
+constexpr float kInvisibleAlpha = 0.5f / 255.0f;  // rounds to nothing in an 8-bit target
+
+}  // namespace
+
+std::span<const DensityHeatmap::ScaleStop> DensityHeatmap::scale()
+{
+    return kScale;
+}
+
+glm::vec4 DensityHeatmap::colourFor(float densityPerM2)
+{
+    if (!(densityPerM2 > kScale.front().density))
+        return kScale.front().colour;
+    for (std::size_t i = 1; i < kScale.size(); ++i)
+        if (densityPerM2 < kScale[i].density) {
+            const ScaleStop &a = kScale[i - 1], &b = kScale[i];
+            return glm::mix(a.colour, b.colour, (densityPerM2 - a.density) / (b.density - a.density));
+        }
+    return kScale.back().colour;
+}
+
+void DensityHeatmap::build(std::span<const glm::vec3> positions, glm::vec2 boundsMin, glm::vec2 boundsMax, float cellM)
+{
+    reset(boundsMin, boundsMax, cellM);
+    for (const glm::vec3& p : positions)
+        splat({p.x, p.z});
+    finish();
+}
+
+void DensityHeatmap::build(std::span<const sim::AgentFrame> frame, glm::vec2 boundsMin, glm::vec2 boundsMax, float cellM)
+{
+    reset(boundsMin, boundsMax, cellM);
+    for (const sim::AgentFrame& a : frame)
+        if (a.present && !a.out)
+            splat({a.position.x, a.position.z});
+    finish();
+}
+
+void DensityHeatmap::reset(glm::vec2 boundsMin, glm::vec2 boundsMax, float cellM)
+{
+    const glm::vec2 extent = glm::max(boundsMax - boundsMin, glm::vec2(0.0f));
+    double cell = cellM > 0.0f && std::isfinite(cellM) ? double(cellM) : double(kDefaultCellM);
+    auto count = [&](double c) {
+        return std::max(1.0, std::ceil(double(extent.x) / c)) * std::max(1.0, std::ceil(double(extent.y) / c));
+    };
+    const double maxCells = double(kMaxCells);
+    if (count(cell) > maxCells)
+        cell *= std::sqrt(count(cell) / maxCells);
+    // ceil() can still leave a row or column too many.
+    while (count(cell) > maxCells)
+        cell *= 1.01;
+    m_origin = boundsMin;
+    m_cellM = float(cell);
+    m_cols = int(std::max(1.0, std::ceil(double(extent.x) / cell)));
+    m_rows = int(std::max(1.0, std::ceil(double(extent.y) / cell)));
+    m_density.assign(std::size_t(m_cols) * std::size_t(m_rows), 0.0f);
+
+    m_sigmaM = std::max(sim::kDensitySigmaM, 0.5f * m_cellM);
+    m_reachM = 3.0f * m_sigmaM;
+    // LocalDensity's normalisation: the kernel cut at 3 sigma still holds one person.
+    m_norm = 1.0f / (std::numbers::pi_v<float> * 2.0f * m_sigmaM * m_sigmaM * (1.0f - std::exp(-4.5f)));
+    const auto taps = std::size_t(2.0f * m_reachM / m_cellM) + 2;
+    m_wx.assign(taps, 0.0f);
+    m_dx2.assign(taps, 0.0f);
+    m_wz.assign(taps, 0.0f);
+    m_dz2.assign(taps, 0.0f);
+    m_max = 0.0f;
+}
+
+void DensityHeatmap::splat(glm::vec2 p)
+{
+    // exp(-(dx² + dz²) / 2σ²) = exp(-dx² / 2σ²) exp(-dz² / 2σ²): a few exponentials per
+    // column and per row instead of one per cell keeps 100,000 agents to milliseconds.
+    const float reachCells = m_reachM / m_cellM;
+    const float fx = (p.x - m_origin.x) / m_cellM - 0.5f, fz = (p.y - m_origin.y) / m_cellM - 0.5f;
+    if (!(fx + reachCells >= 0.0f && fx - reachCells <= float(m_cols - 1) && fz + reachCells >= 0.0f &&
+          fz - reachCells <= float(m_rows - 1)))
+        return;  // also every NaN
+    const int x0 = std::max(0, int(std::ceil(fx - reachCells))), x1 = std::min(m_cols - 1, int(std::floor(fx + reachCells)));
+    const int z0 = std::max(0, int(std::ceil(fz - reachCells))), z1 = std::min(m_rows - 1, int(std::floor(fz + reachCells)));
+    const float inv2s2 = 1.0f / (2.0f * m_sigmaM * m_sigmaM), reach2 = m_reachM * m_reachM;
+    for (int x = x0; x <= x1; ++x) {
+        const float d = (float(x) - fx) * m_cellM, d2 = d * d;
+        m_dx2[std::size_t(x - x0)] = d2;
+        m_wx[std::size_t(x - x0)] = std::exp(-d2 * inv2s2);
+    }
+    for (int z = z0; z <= z1; ++z) {
+        const float d = (float(z) - fz) * m_cellM, d2 = d * d;
+        m_dz2[std::size_t(z - z0)] = d2;
+        m_wz[std::size_t(z - z0)] = std::exp(-d2 * inv2s2);
+    }
+    for (int z = z0; z <= z1; ++z) {
+        const float dz2 = m_dz2[std::size_t(z - z0)], wz = m_wz[std::size_t(z - z0)];
+        float* row = &m_density[std::size_t(z) * std::size_t(m_cols)];
+        for (int x = x0; x <= x1; ++x)
+            if (m_dx2[std::size_t(x - x0)] + dz2 < reach2)
+                row[x] += m_wx[std::size_t(x - x0)] * wz;
+    }
+}
+
+void DensityHeatmap::finish()
+{
+    m_max = 0.0f;
+    for (float& d : m_density) {
+        d *= m_norm;
+        m_max = std::max(m_max, d);
+    }
+}
+
+float DensityHeatmap::densityAt(glm::vec2 p) const
+{
+    const float fx = std::floor((p.x - m_origin.x) / m_cellM), fz = std::floor((p.y - m_origin.y) / m_cellM);
+    if (!(fx >= 0.0f && fz >= 0.0f && fx < float(m_cols) && fz < float(m_rows)))
+        return 0.0f;
+    return m_density[std::size_t(fz) * std::size_t(m_cols) + std::size_t(fx)];
+}
+
+void DensityHeatmap::addCells(ShapeMesh& mesh) const
+{
+    for (int z = 0; z < m_rows; ++z)
+        for (int x = 0; x < m_cols; ++x) {
+            const glm::vec4 colour = colourFor(m_density[std::size_t(z) * std::size_t(m_cols) + std::size_t(x)]);
+            if (colour.a < kInvisibleAlpha)
+                continue;
+            const glm::vec2 lo = m_origin + glm::vec2(float(x), float(z)) * m_cellM, hi = lo + m_cellM;
+            const std::array<glm::vec2, 4> quad{lo, glm::vec2(hi.x, lo.y), hi, glm::vec2(lo.x, hi.y)};
+            mesh.addConvexPolygon(quad, colour);
+        }
+}
+
+}  // namespace throng::editor
