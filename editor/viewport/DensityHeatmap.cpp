@@ -23,6 +23,19 @@ constexpr std::array<DensityHeatmap::ScaleStop, 5> kScale{{
 
 constexpr float kInvisibleAlpha = 0.5f / 255.0f;  // rounds to nothing in an 8-bit target
 
+// std::floor and std::ceil are library calls without SSE4.1, four per agent. For any v
+// well inside int's range.
+int floorToInt(float v)
+{
+    const int t = int(v);
+    return t - (float(t) > v ? 1 : 0);
+}
+int ceilToInt(float v)
+{
+    const int t = int(v);
+    return t + (float(t) < v ? 1 : 0);
+}
+
 }  // namespace
 
 std::span<const DensityHeatmap::ScaleStop> DensityHeatmap::scale()
@@ -62,7 +75,7 @@ void DensityHeatmap::build(std::span<const sim::AgentFrame> frame, glm::vec2 bou
 void DensityHeatmap::reset(glm::vec2 boundsMin, glm::vec2 boundsMax, float cellM)
 {
     const glm::vec2 extent = glm::max(boundsMax - boundsMin, glm::vec2(0.0f));
-    double cell = cellM > 0.0f && std::isfinite(cellM) ? double(cellM) : double(kDefaultCellM);
+    double cell = cellM > 0.0f && std::isfinite(cellM) ? std::max(double(cellM), double(kMinCellM)) : double(kDefaultCellM);
     auto count = [&](double c) {
         return std::max(1.0, std::ceil(double(extent.x) / c)) * std::max(1.0, std::ceil(double(extent.y) / c));
     };
@@ -82,42 +95,39 @@ void DensityHeatmap::reset(glm::vec2 boundsMin, glm::vec2 boundsMax, float cellM
     m_reachM = 3.0f * m_sigmaM;
     // LocalDensity's normalisation: the kernel cut at 3 sigma still holds one person.
     m_norm = 1.0f / (std::numbers::pi_v<float> * 2.0f * m_sigmaM * m_sigmaM * (1.0f - std::exp(-4.5f)));
-    const auto taps = std::size_t(2.0f * m_reachM / m_cellM) + 2;
-    m_wx.assign(taps, 0.0f);
-    m_dx2.assign(taps, 0.0f);
-    m_wz.assign(taps, 0.0f);
-    m_dz2.assign(taps, 0.0f);
     m_max = 0.0f;
 }
 
 void DensityHeatmap::splat(glm::vec2 p)
 {
-    // exp(-(dx² + dz²) / 2σ²) = exp(-dx² / 2σ²) exp(-dz² / 2σ²): a few exponentials per
-    // column and per row instead of one per cell keeps 100,000 agents to milliseconds.
+    // exp(-(dx² + dz²) / 2σ²) = exp(-dx² / 2σ²) exp(-dz² / 2σ²): one exponential per
+    // column and per row instead of one per cell.
     const float reachCells = m_reachM / m_cellM;
     const float fx = (p.x - m_origin.x) / m_cellM - 0.5f, fz = (p.y - m_origin.y) / m_cellM - 0.5f;
     if (!(fx + reachCells >= 0.0f && fx - reachCells <= float(m_cols - 1) && fz + reachCells >= 0.0f &&
           fz - reachCells <= float(m_rows - 1)))
         return;  // also every NaN
-    const int x0 = std::max(0, int(std::ceil(fx - reachCells))), x1 = std::min(m_cols - 1, int(std::floor(fx + reachCells)));
-    const int z0 = std::max(0, int(std::ceil(fz - reachCells))), z1 = std::min(m_rows - 1, int(std::floor(fz + reachCells)));
+    const int x0 = std::max(0, ceilToInt(fx - reachCells)), x1 = std::min(m_cols - 1, floorToInt(fx + reachCells));
+    const int z0 = std::max(0, ceilToInt(fz - reachCells)), z1 = std::min(m_rows - 1, floorToInt(fz + reachCells));
+    // At kMinCellM an agent reaches 13 cells per axis (floor(2 * 6) + 1).
+    std::array<float, 16> dx2, wx, dz2, wz;
     const float inv2s2 = 1.0f / (2.0f * m_sigmaM * m_sigmaM), reach2 = m_reachM * m_reachM;
     for (int x = x0; x <= x1; ++x) {
-        const float d = (float(x) - fx) * m_cellM, d2 = d * d;
-        m_dx2[std::size_t(x - x0)] = d2;
-        m_wx[std::size_t(x - x0)] = std::exp(-d2 * inv2s2);
+        const float d = (float(x) - fx) * m_cellM;
+        dx2[std::size_t(x - x0)] = d * d;
+        wx[std::size_t(x - x0)] = std::exp(-d * d * inv2s2);
     }
     for (int z = z0; z <= z1; ++z) {
-        const float d = (float(z) - fz) * m_cellM, d2 = d * d;
-        m_dz2[std::size_t(z - z0)] = d2;
-        m_wz[std::size_t(z - z0)] = std::exp(-d2 * inv2s2);
+        const float d = (float(z) - fz) * m_cellM;
+        dz2[std::size_t(z - z0)] = d * d;
+        wz[std::size_t(z - z0)] = std::exp(-d * d * inv2s2);
     }
     for (int z = z0; z <= z1; ++z) {
-        const float dz2 = m_dz2[std::size_t(z - z0)], wz = m_wz[std::size_t(z - z0)];
+        const float rowDz2 = dz2[std::size_t(z - z0)], rowWz = wz[std::size_t(z - z0)];
         float* row = &m_density[std::size_t(z) * std::size_t(m_cols)];
         for (int x = x0; x <= x1; ++x)
-            if (m_dx2[std::size_t(x - x0)] + dz2 < reach2)
-                row[x] += m_wx[std::size_t(x - x0)] * wz;
+            if (dx2[std::size_t(x - x0)] + rowDz2 < reach2)
+                row[x] += wx[std::size_t(x - x0)] * rowWz;
     }
 }
 

@@ -32,8 +32,8 @@ public:
     static glm::vec4 colourFor(float densityPerM2);
 
     // Density at each cell centre from the agents' ground positions (x, z of each; y is
-    // ignored). Cells of cellM (m) tile the bounds from boundsMin, cellM raised until there
-    // are at most kMaxCells. The kernel is LocalDensity's (sigma 0.5 m, cut at 3 sigma) while
+    // ignored). Cells of cellM (m, at least 0.25) tile the bounds from boundsMin, cellM raised
+    // until there are at most kMaxCells. The kernel is LocalDensity's (sigma 0.5 m, cut at 3 sigma) while
     // cells are up to 1 m; over bigger cells sigma grows to half a cell, so every agent
     // still counts towards the cells round it. O(agents) on one thread.
     void build(std::span<const glm::vec3> positions, glm::vec2 boundsMin, glm::vec2 boundsMax,
@@ -58,13 +58,14 @@ private:
     void splat(glm::vec2 p);
     void finish();
 
+    static constexpr float kMinCellM = 0.25f;  // finer cells would only resample the kernel
+
     glm::vec2 m_origin{0.0f};
     float m_cellM = kDefaultCellM;
     int m_cols = 0, m_rows = 0;
     float m_sigmaM = 0.5f, m_reachM = 1.5f, m_norm = 0.0f;
     std::vector<float> m_density;  // rows * cols, row-major along x, persons/m²
     float m_max = 0.0f;
-    std::vector<float> m_wx, m_wz, m_dx2, m_dz2;  // one splat's per-column and per-row terms
 };
 
 }  // namespace throng::editor
