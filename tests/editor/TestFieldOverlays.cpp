@@ -10,6 +10,7 @@
 #include "simcore/world/LocalDensity.h"
 
 #include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 
 #include <QElapsedTimer>
 #include <QTest>
@@ -185,7 +186,8 @@ private slots:
         QVERIFY(fields.goalArrows(1, 0.5f).empty());
 
         const std::vector<FieldArrow> arrows = fields.goalArrows(0, 0.5f);
-        int westEast = 0, corner = 0, south = 0;
+        const glm::vec2 kInnerCorner(1.5f, 1.5f), goal = scene.goals[0].position;
+        int westEast = 0, corner = 0, turned = 0, south = 0;
         for (const FieldArrow& a : arrows) {
             const glm::vec2 p = a.centre, d = a.direction;
             const QString where = QString("arrow at (%1, %2) points (%3, %4)").arg(p.x).arg(p.y).arg(d.x).arg(d.y);
@@ -194,24 +196,29 @@ private slots:
             QVERIFY2(distanceToWalls(p, scene) > kInflateM, qPrintable(where));
             QVERIFY(fields.grid().walkable(fields.grid().cellOf(p)));
             if (p.x < -5.0f) {
-                // Along the west-east leg, bending only towards the inner corner ahead
-                // (seen from 5 m before it, the corner lies 21 degrees off the leg's axis).
+                // Along the west-east leg: the shortest way leads straight at the inner
+                // corner (its wall margin ends at about (1.5, 1.5)), up to 22 degrees off
+                // the leg's axis here, never back west.
                 ++westEast;
-                QVERIFY2(angleDeg(d, {1.0f, 0.0f}) < 30.0f && d.y > -0.1f, qPrintable(where));
+                QVERIFY2(angleDeg(d, kInnerCorner - p) < 10.0f, qPrintable(where));
             } else if (p.x <= 1.0f) {
                 QVERIFY2(d.x > 0.0f, qPrintable(where));  // cutting towards the corner, still eastwards
-            } else if (p.x > 1.0f && p.y < 2.0f) {
-                // The corner square: already turned south, towards the goal.
+            } else if (p.y < 2.0f) {
+                // The corner square: turned south towards the goal, but for the cell at the
+                // margin's corner, which goes east round it first.
                 ++corner;
-                QVERIFY2(d.y > 0.5f, qPrintable(where));
+                QVERIFY2(d.x > -0.1f && d.y >= 0.0f, qPrintable(where));
+                turned += d.y > 0.5f ? 1 : 0;
             } else if (p.y > 4.0f && p.y < 11.0f) {
+                // Down the south leg, in sight of the goal: straight at it.
                 ++south;
-                QVERIFY2(angleDeg(d, {0.0f, 1.0f}) < 30.0f, qPrintable(where));
+                QVERIFY2(angleDeg(d, goal - p) < 10.0f, qPrintable(where));
             }
         }
         qInfo("corridor arrows: %d west-east, %d in the corner, %d south", westEast, corner, south);
         QVERIFY(westEast >= 100);
         QVERIFY(corner >= 10);
+        QVERIFY(turned >= corner - 1);
         QVERIFY(south >= 30);
 
         ShapeMesh mesh;
