@@ -74,7 +74,8 @@ void DensityHeatmap::build(std::span<const sim::AgentFrame> frame, glm::vec2 bou
 
 void DensityHeatmap::reset(glm::vec2 boundsMin, glm::vec2 boundsMax, float cellM)
 {
-    const glm::vec2 extent = glm::max(boundsMax - boundsMin, glm::vec2(0.0f));
+    glm::vec2 extent = boundsMax - boundsMin;
+    extent = std::isfinite(extent.x) && std::isfinite(extent.y) ? glm::max(extent, glm::vec2(0.0f)) : glm::vec2(0.0f);
     double cell = cellM > 0.0f && std::isfinite(cellM) ? std::max(double(cellM), double(kMinCellM)) : double(kDefaultCellM);
     auto count = [&](double c) {
         return std::max(1.0, std::ceil(double(extent.x) / c)) * std::max(1.0, std::ceil(double(extent.y) / c));

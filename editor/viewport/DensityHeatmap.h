@@ -32,10 +32,10 @@ public:
     static glm::vec4 colourFor(float densityPerM2);
 
     // Density at each cell centre from the agents' ground positions (x, z of each; y is
-    // ignored). Cells of cellM (m, at least 0.25) tile the bounds from boundsMin, cellM raised
-    // until there are at most kMaxCells. The kernel is LocalDensity's (sigma 0.5 m, cut at 3 sigma) while
-    // cells are up to 1 m; over bigger cells sigma grows to half a cell, so every agent
-    // still counts towards the cells round it. O(agents) on one thread.
+    // ignored). Cells of cellM (m, at least 0.25) tile the bounds from boundsMin, cellM
+    // raised until there are at most kMaxCells. The kernel is LocalDensity's (sigma 0.5 m,
+    // cut at 3 sigma) while cells are up to 1 m; over bigger cells sigma grows to half a
+    // cell, so every agent still counts towards the cells round it. O(agents), one thread.
     void build(std::span<const glm::vec3> positions, glm::vec2 boundsMin, glm::vec2 boundsMax,
                float cellM = kDefaultCellM);
     // The same over a cached frame: agents not present or already out are left out.

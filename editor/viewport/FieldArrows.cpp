@@ -125,9 +125,13 @@ std::vector<FieldArrow> FieldArrows::arrowsAt(float spacingM, DirectionAt&& dire
     std::vector<FieldArrow> arrows;
     const glm::vec2 lo = m_parts.settings.boundsMin, hi = m_parts.settings.boundsMax;
     const float spacing = spacingFor(lo, hi, spacingM);
-    if (!m_built || !(spacing > 0.0f) || !std::isfinite(spacing))
+    // The count also turns away bounds that are not finite (spacingFor leaves those be).
+    const std::size_t points = gridPointCount(lo, hi, spacing);
+    if (!m_built || !std::isfinite(spacing) || points == 0 || points > kMaxArrows)
         return arrows;
-    const auto cols = int(std::floor((hi.x - lo.x) / spacing)), rows = int(std::floor((hi.y - lo.y) / spacing));
+    // Counted as gridPointCount counts them.
+    const auto cols = int(std::floor(double(hi.x - lo.x) / double(spacing)));
+    const auto rows = int(std::floor(double(hi.y - lo.y) / double(spacing)));
     for (int z = 0; z < rows; ++z)
         for (int x = 0; x < cols; ++x) {
             const glm::vec2 p = lo + (glm::vec2(float(x), float(z)) + 0.5f) * spacing;
