@@ -177,6 +177,32 @@ private slots:
         QVERIFY(!fields.grid().walkable(nextToMargin));
     }
 
+    void kerbsAndCrosswalkSidesBlockAsWalkersMeetThem()
+    {
+        // A road 4 m wide: its kerbs are walls to walkers (World::appendKerbs), except
+        // where a crosswalk crosses it; the crosswalk's sides are walls too.
+        sim::Scene scene;
+        scene.settings.boundsMin = glm::vec2(-15.0f);
+        scene.settings.boundsMax = glm::vec2(15.0f);
+        sim::Lane road;
+        road.name = "road";
+        road.points = {{-10.0f, 0.0f}, {10.0f, 0.0f}};
+        road.widthM = 4.0f;
+        road.loop = false;
+        scene.lanes.push_back(road);
+        FieldArrows fields;
+        fields.setScene(scene);
+        auto walkable = [&](glm::vec2 p) { return fields.grid().walkable(fields.grid().cellOf(p)); };
+        QVERIFY(walkable({0.1f, 3.0f}) && walkable({0.1f, 0.0f}));
+        QVERIFY(!walkable({0.1f, 2.0f}) && !walkable({0.1f, -2.0f}));
+
+        scene.crosswalks.push_back({"zebra", {0.0f, -4.0f}, {0.0f, 4.0f}, 3.0f});
+        QVERIFY(fields.setScene(scene));
+        QVERIFY(walkable({0.1f, 2.0f}) && walkable({0.1f, -2.0f}));
+        QVERIFY(!walkable({1.2f, 0.0f}) && !walkable({1.2f, 3.0f}));
+        QVERIFY(walkable({3.0f, 0.0f}));
+    }
+
     void goalArrowsLeadRoundTheCorridorCorner()
     {
         const sim::Scene scene = corridorScene();
