@@ -50,7 +50,8 @@ glm::vec4 DensityHeatmap::colourFor(float densityPerM2)
     for (std::size_t i = 1; i < kScale.size(); ++i)
         if (densityPerM2 < kScale[i].density) {
             const ScaleStop &a = kScale[i - 1], &b = kScale[i];
-            return glm::mix(a.colour, b.colour, (densityPerM2 - a.density) / (b.density - a.density));
+            // Not glm::mix (a (1 - t) + b t): it rounds a channel two stops share up and down.
+            return a.colour + (b.colour - a.colour) * ((densityPerM2 - a.density) / (b.density - a.density));
         }
     return kScale.back().colour;
 }

@@ -230,11 +230,12 @@ private slots:
             } else if (p.x <= 1.0f) {
                 QVERIFY2(d.x > 0.0f, qPrintable(where));  // cutting towards the corner, still eastwards
             } else if (p.y < 2.0f) {
-                // The corner square: turned south towards the goal, but for the cell at the
-                // margin's corner, which goes east round it first.
+                // The corner square: south or east, never back (the goal lies at most 5
+                // degrees west of south from here); most already straight at the goal, the
+                // rest still bending round the inner wall's margin.
                 ++corner;
-                QVERIFY2(d.x > -0.1f && d.y >= 0.0f, qPrintable(where));
-                turned += d.y > 0.5f ? 1 : 0;
+                QVERIFY2(d.y >= 0.0f && d.x > -0.2f, qPrintable(where));
+                turned += angleDeg(d, goal - p) < 10.0f ? 1 : 0;
             } else if (p.y > 4.0f && p.y < 11.0f) {
                 // Down the south leg, in sight of the goal: straight at it.
                 ++south;
@@ -244,7 +245,8 @@ private slots:
         qInfo("corridor arrows: %d west-east, %d in the corner, %d south", westEast, corner, south);
         QVERIFY(westEast >= 100);
         QVERIFY(corner >= 10);
-        QVERIFY(turned >= corner - 1);
+        qInfo("corner square: %d of %d arrows straight at the goal", turned, corner);
+        QVERIFY(turned >= corner * 3 / 4);
         QVERIFY(south >= 30);
 
         ShapeMesh mesh;
@@ -282,11 +284,12 @@ private slots:
 
     void uniformCrowdGivesItsDensity()
     {
-        // 100 agents on a slightly jittered 1 m lattice over the square [0, 10]².
+        // 100 agents on a jittered 1 m lattice over the square [0, 10]².
         std::vector<glm::vec3> agents;
         for (int z = 0; z < 10; ++z)
             for (int x = 0; x < 10; ++x) {
-                const float jx = 0.1f * float((x * 7 + z * 3) % 5 - 2), jz = 0.1f * float((x * 3 + z * 5) % 5 - 2);
+                // (Not multiples of 0.5 m: no agent on the kernel's rim, where rounding decides.)
+                const float jx = 0.13f * float((x * 7 + z * 3) % 5 - 2), jz = 0.13f * float((x * 3 + z * 5) % 5 - 2);
                 agents.push_back({float(x) + 0.5f + jx, 0.0f, float(z) + 0.5f + jz});
             }
         DensityHeatmap map;
