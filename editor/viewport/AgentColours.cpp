@@ -1,5 +1,6 @@
 #include "editor/viewport/AgentColours.h"
 
+#include "editor/viewport/DensityHeatmap.h"
 #include "editor/viewport/ViewportPalette.h"
 #include "export/character/AgentVariation.h"
 
@@ -137,15 +138,13 @@ const std::vector<glm::vec3>& AgentColours::coloursFor(std::span<const sim::Agen
         m_cachedFor.clear();
         m_colours.resize(agents.size());
         for (std::size_t i = 0; i < agents.size(); ++i) {
-            float t = 0.0f;
-            if (m_by == ColourBy::Speed) {
-                const std::size_t type = agents[i].typeIndex;
-                const float top = type < m_typeTopSpeed.size() && m_typeTopSpeed[type] > 0.0f ? m_typeTopSpeed[type] : 1.4f;
-                t = i < frames.size() ? frames[i].speed / top : 0.0f;
-            } else {
-                t = i < density.size() ? (density[i] - kDensityLow) / (kDensityHigh - kDensityLow) : 0.0f;
+            if (m_by == ColourBy::Density) {
+                m_colours[i] = glm::vec3(DensityHeatmap::colourFor(i < density.size() ? density[i] : 0.0f));
+                continue;
             }
-            m_colours[i] = gradientColour(t);
+            const std::size_t type = agents[i].typeIndex;
+            const float top = type < m_typeTopSpeed.size() && m_typeTopSpeed[type] > 0.0f ? m_typeTopSpeed[type] : 1.4f;
+            m_colours[i] = gradientColour(i < frames.size() ? frames[i].speed / top : 0.0f);
         }
         return m_colours;
     }
@@ -189,10 +188,9 @@ ColourLegend AgentColours::legend() const
     case ColourBy::Density:
         legend.title = "Density (agents per m²)";
         legend.gradient = true;
-        for (int k = 0; k <= 4; ++k) {
-            const float d = kDensityLow + (kDensityHigh - kDensityLow) * float(k) / 4.0f;
-            legend.entries.push_back({number(d) + (k == 4 ? "+" : ""), gradientColour(float(k) / 4.0f)});
-        }
+        for (const DensityHeatmap::ScaleStop& stop : DensityHeatmap::scale())
+            legend.entries.push_back({number(stop.density), glm::vec3(stop.colour)});
+        legend.entries.back().label += " and more";
         break;
     default: {
         const std::vector<std::string>& names = m_categories.names(categoryKey(m_by));

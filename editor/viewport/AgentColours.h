@@ -60,11 +60,10 @@ public:
     ColourLegend legend() const;
 
     // The colour of category `index` (-1 = none) and of a fraction in [0, 1] on the
-    // speed gradient (blue, cyan, green, yellow, red).
+    // speed gradient (blue, cyan, green, yellow, red). Densities take the density map's
+    // colours (DensityHeatmap::colourFor), opaque.
     static glm::vec3 categoryColour(int index);
     static glm::vec3 gradientColour(float t);
-    // The densities (agents per m²) the density colouring runs from and to.
-    static constexpr float kDensityLow = 0.0f, kDensityHigh = 4.0f;
 
 private:
     glm::vec3 tint(const sim::AgentInfo& agent) const;

@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <exception>
 
 namespace throng::editor {
@@ -186,6 +187,19 @@ void Viewport::setSet(const sim::Scene& scene)
     }
     m_boundsMin = scene.settings.boundsMin;
     m_boundsMax = scene.settings.boundsMax;
+    m_fieldParts = {};
+    m_fieldParts.settings = scene.settings;
+    m_fieldParts.agentTypes = scene.agentTypes;
+    m_fieldParts.walls = scene.walls;
+    m_fieldParts.obstacles = scene.obstacles;
+    m_fieldParts.goals = scene.goals;
+    m_fieldParts.lanes = scene.lanes;
+    m_fieldParts.crosswalks = scene.crosswalks;
+    m_fieldParts.flowStrokes = scene.flowStrokes;
+    m_fieldParts.trafficLights = scene.trafficLights;
+    if (m_fieldGoal >= scene.goals.size())
+        m_fieldGoal = 0;
+    rebuildFields();
     m_grid.setBounds(m_boundsMin, m_boundsMax);
     m_setBox = setExtent(scene);
     m_frameOnNextPaint = true;
@@ -201,7 +215,8 @@ void Viewport::setAgents(std::span<const sim::AgentFrame> frames, std::span<cons
         m_frames.assign(frames.begin(), frames.begin() + std::ptrdiff_t(n));
         m_agents.assign(agents.begin(), agents.begin() + std::ptrdiff_t(n));
     }
-    const std::vector<glm::vec3>& colours = m_agentColours.coloursFor(frames.first(n), agents.first(n));
+    rebuildDensity(frames.first(n));
+    const std::vector<glm::vec3>& colours = m_agentColours.coloursFor(frames.first(n), agents.first(n), m_density);
     m_agentCharacters.posesFor(frames.first(n), agents.first(n), m_shownPoses);
     m_glyphs.clear();
     m_carGlyphs.clear();
@@ -264,8 +279,14 @@ void Viewport::setOverlays(const ViewportOverlays& overlays)
 {
     if (overlays == m_overlays)
         return;
+    const bool fieldsChanged = overlays.sketchField != m_overlays.sketchField || overlays.goalField != m_overlays.goalField;
+    const bool densityChanged = overlays.density != m_overlays.density;
     m_overlays = overlays;
     m_hud->setVisible(m_overlays.hud);
+    if (fieldsChanged)
+        rebuildFields();
+    if (densityChanged)
+        rebuildDensity(m_frames);
     rebuildOverlay();
     updateHud();
 }
@@ -290,6 +311,42 @@ void Viewport::setSteering(std::vector<sim::AgentDebug> agents)
 void Viewport::setSimulationRate(double stepsPerSecond)
 {
     m_stepsPerSecond = stepsPerSecond;
+}
+
+void Viewport::rebuildFields()
+{
+    m_fieldMesh.clear();
+    m_fieldChanged = true;
+    update();
+    if (!m_overlays.sketchField && !m_overlays.goalField)
+        return;
+    m_fields.setScene(m_fieldParts);  // builds again only when the parts changed
+    constexpr float kWantedSpacingM = 1.0f;
+    const float spacing = FieldArrows::spacingFor(m_boundsMin, m_boundsMax, kWantedSpacingM);
+    if (m_overlays.sketchField)
+        m_fields.addSketchArrows(m_fieldMesh, spacing);
+    if (m_overlays.goalField && m_fieldGoal < m_fields.goalCount())
+        m_fields.addGoalArrows(m_fieldGoal, m_fieldMesh, spacing);
+}
+
+void Viewport::rebuildDensity(std::span<const sim::AgentFrame> frames)
+{
+    const bool map = m_overlays.density, colour = m_agentColours.colourBy() == ColourBy::Density;
+    if (!map && !colour) {
+        if (!m_heatMesh.empty()) {
+            m_heatMesh.clear();
+            m_heatChanged = true;
+        }
+        return;
+    }
+    m_heatmap.build(frames, m_boundsMin, m_boundsMax);
+    m_density.resize(frames.size());
+    for (std::size_t i = 0; i < frames.size(); ++i)
+        m_density[i] = m_heatmap.densityAt({frames[i].position.x, frames[i].position.z});
+    m_heatMesh.clear();
+    if (map)
+        m_heatmap.addCells(m_heatMesh);
+    m_heatChanged = true;
 }
 
 void Viewport::rebuildOverlay()
@@ -318,6 +375,32 @@ void Viewport::updateHud()
     ColourLegend colouring = m_agentColours.legend();
     colouring.title = "Colour by " + colouring.title;
     figures.legends.push_back(std::move(colouring));
+    if (m_overlays.density) {
+        char peak[96];
+        std::snprintf(peak, sizeof peak, "Density map (agents per m², peak %.1f)", double(m_heatmap.maxDensity()));
+        ColourLegend density{peak, {}, true, 0};
+        for (const DensityHeatmap::ScaleStop& stop : DensityHeatmap::scale())
+            density.entries.push_back({std::to_string(int(stop.density)), glm::vec3(stop.colour)});
+        density.entries.back().label += " and more";
+        figures.legends.push_back(std::move(density));
+    }
+    if (m_overlays.sketchField) {
+        std::string note = "Sketched field: ";
+        if (m_fieldParts.flowStrokes.empty())
+            note += "the scene has no flow strokes";
+        else if (!m_fields.sketchError().empty())
+            note += m_fields.sketchError();
+        else
+            note += std::to_string(m_fieldParts.flowStrokes.size()) + " strokes";
+        figures.legends.push_back({note, {{"arrows", glm::vec3(FieldArrows::kSketchColour)}}, false, 0});
+    }
+    if (m_overlays.goalField)
+        figures.legends.push_back({m_fieldGoal < m_fieldParts.goals.size()
+                                       ? "Flow field to goal '" + m_fieldParts.goals[m_fieldGoal].name + "'"
+                                       : std::string("Flow field: the scene has no goal"),
+                                   {{"arrows", glm::vec3(FieldArrows::kGoalColour)}},
+                                   false,
+                                   0});
     if (m_overlays.steering) {
         constexpr std::size_t kDescribed = 2;  // agents whose forces the HUD lists
         for (std::size_t k = 0; k < m_steering.size() && k < kDescribed; ++k)
@@ -334,6 +417,14 @@ void Viewport::setHighlight(const sim::Scene& scene, const Selection& selection)
 {
     const std::vector<sim::AgentId> watched = m_marks.watchedIds();
     m_marks.setSelection(scene, selection);
+    for (const SceneItem& item : selection)
+        if (item.kind == ItemKind::Goal && item.index < scene.goals.size() && item.index != m_fieldGoal) {
+            m_fieldGoal = item.index;
+            if (m_overlays.goalField)
+                rebuildFields();
+            updateHud();
+            break;
+        }
     marksChanged(watched);
 }
 
@@ -450,6 +541,7 @@ void Viewport::initializeGL()
     }
     if (!m_grid.initialize(*this) || !m_setRenderer.initialize(*this) || !m_lightRenderer.initialize(*this) ||
         !m_highlightRenderer.initialize(*this) || !m_overlayRenderer.initialize(*this) ||
+        !m_fieldRenderer.initialize(*this) || !m_heatRenderer.initialize(*this) ||
         !m_agentRenderer.initialize(*this)) {
         m_glProblem = tr("the viewport's shaders did not compile (see the log)");
         return;
@@ -460,7 +552,7 @@ void Viewport::initializeGL()
         doneCurrent();
     });
     m_setChanged = m_lightsChanged = m_agentsChanged = m_highlightChanged = m_charactersChanged = true;
-    m_overlayChanged = true;
+    m_overlayChanged = m_fieldChanged = m_heatChanged = true;
     m_glReady = true;
 }
 
@@ -473,6 +565,8 @@ void Viewport::releaseGl()
     m_lightRenderer.destroy(*this);
     m_highlightRenderer.destroy(*this);
     m_overlayRenderer.destroy(*this);
+    m_fieldRenderer.destroy(*this);
+    m_heatRenderer.destroy(*this);
     m_agentRenderer.destroy(*this);
     m_glReady = false;
 }
@@ -498,8 +592,12 @@ void Viewport::uploadChanged()
         m_highlightRenderer.upload(*this, m_highlightMesh);
     if (m_overlayChanged)
         m_overlayRenderer.upload(*this, m_overlayMesh);
+    if (m_fieldChanged)
+        m_fieldRenderer.upload(*this, m_fieldMesh);
+    if (m_heatChanged)
+        m_heatRenderer.upload(*this, m_heatMesh);
     m_setChanged = m_lightsChanged = m_agentsChanged = m_highlightChanged = m_charactersChanged = false;
-    m_overlayChanged = false;
+    m_overlayChanged = m_fieldChanged = m_heatChanged = false;
 }
 
 void Viewport::paintGL()
@@ -523,8 +621,10 @@ void Viewport::paintGL()
     glEnable(GL_BLEND);
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     m_grid.draw(*this, view);
+    m_heatRenderer.draw(*this, view);
     m_setRenderer.draw(*this, view);
     m_lightRenderer.draw(*this, view);
+    m_fieldRenderer.draw(*this, view);
     m_highlightRenderer.draw(*this, view);
     m_overlayRenderer.draw(*this, view);
     if (view.perspective) {

@@ -9,6 +9,8 @@
 #include "editor/viewport/AgentColours.h"
 #include "editor/viewport/AgentRenderer.h"
 #include "editor/viewport/CameraRig.h"
+#include "editor/viewport/DensityHeatmap.h"
+#include "editor/viewport/FieldArrows.h"
 #include "editor/viewport/GridRenderer.h"
 #include "editor/viewport/GroundBox.h"
 #include "editor/viewport/SelectionMarks.h"
@@ -174,6 +176,10 @@ private:
     void marksChanged(const std::vector<sim::AgentId>& watchedBefore);
     // The trails and steering annotations of the shown frame.
     void rebuildOverlay();
+    // The sketched and goal fields' arrows (built from m_fieldParts on first use).
+    void rebuildFields();
+    // The shown frame's density map, and each shown agent's density (m_density).
+    void rebuildDensity(std::span<const sim::AgentFrame> frames);
     void updateHud();
     void releaseGl();
 
@@ -183,6 +189,8 @@ private:
     ShapeRenderer m_lightRenderer;
     ShapeRenderer m_highlightRenderer;
     ShapeRenderer m_overlayRenderer;
+    ShapeRenderer m_fieldRenderer;
+    ShapeRenderer m_heatRenderer;
     AgentRenderer m_agentRenderer;
 
     // What is shown, kept on the CPU until the next paint uploads it.
@@ -191,6 +199,14 @@ private:
     ShapeMesh m_highlightMesh;
     ShapeMesh m_overlayMesh;
     bool m_overlayChanged = true;
+    ShapeMesh m_fieldMesh, m_heatMesh;
+    bool m_fieldChanged = true, m_heatChanged = true;
+    FieldArrows m_fields;
+    // What the fields are built from: the scene without its agents (FieldArrows::setScene).
+    sim::Scene m_fieldParts;
+    std::size_t m_fieldGoal = 0;  // the selected goal, else the first
+    DensityHeatmap m_heatmap;
+    std::vector<float> m_density;  // agents per m² where each shown agent stands
     SelectionMarks m_marks;
     ShownAgents m_shown;  // the shown frame's agents, by World index
     std::vector<AgentGlyph> m_glyphs;     // walkers and fliers

@@ -8,6 +8,8 @@
 
 #include "editor/simulation/SimulationController.h"
 #include "editor/viewport/AgentColours.h"
+#include "editor/viewport/DensityHeatmap.h"
+#include "editor/viewport/FieldArrows.h"
 #include "editor/viewport/SteeringOverlay.h"
 #include "editor/viewport/Viewport.h"
 #include "editor/viewport/ViewportPalette.h"
@@ -74,6 +76,20 @@ goals: [{name: a, position: [15, -3], radius: 1}, {name: b, position: [15, 3], r
 agents:
   - {id: 1, type: walker, position: [-8, 0, -3], goal: a}
   - {id: 2, type: walker, position: [-8, 0, 3], goal: b}
+)";
+
+// A stroke east across the middle, two goals, a packed group of 36 in 3 x 3 m and one
+// walker on its own.
+const QByteArray kFieldScene = R"(throng: 1
+settings: {fps: 24, duration: 20, seed: 3, bounds: {min: [-20, -20], max: [20, 20]}}
+agent_types: [{name: walker, radius: 0.25, max_speed: 1.4, max_force: 3, variation: {speed: [1, 1]}}]
+goals: [{name: west, position: [-16, 10], radius: 1}, {name: north, position: [10, -16], radius: 1}]
+walls: [{points: [[0, 4], [0, 16]]}]
+flow_strokes: [{points: [[-15, 0], [15, 0]], width: 4}]
+agents:
+  - {id: 1, type: walker, position: [12, 0, 12]}
+groups:
+  - {name: packed, type: walker, count: 36, rect: {min: [-12, -12], max: [-9, -9]}}
 )";
 
 // Shows frame `frame` by typing it into the timeline's frame field.
@@ -267,6 +283,90 @@ private slots:
                  qPrintable(describe(colourAt(farMember)) + " expected " +
                             describe(glm::vec4(AgentColours::gradientColour(farSpeed / 1.4f), 1.0f))));
         QCOMPARE(QSettings().value("viewport/colourBy").toString(), QString("speed"));
+    }
+
+    void fieldsAndDensityShowOnTheGround()
+    {
+        MainWindow window;
+        QVERIFY(showWithYaml(window, m_dir, "fields.yaml", kFieldScene));
+        Viewport& viewport = window.viewport();
+        auto countNear = [&](const QImage& image, glm::vec2 at, float r, glm::vec4 colour) {
+            return pixelsOf(window, image, at, r, colour, 30);
+        };
+        // The sketched field: arrows along the stroke besides the set's own (the stroke
+        // and its band's arrows are drawn in violet too).
+        QImage image = viewport.grabFramebuffer();
+        int before = 0;
+        for (float x : {-10.0f, -5.0f, 5.0f, 10.0f})
+            before += countNear(image, {x, 1.0f}, 1.0f, FieldArrows::kSketchColour);
+        QTest::keyClick(&viewport, Qt::Key_F, Qt::ShiftModifier);
+        QVERIFY(viewport.overlays().sketchField);
+        QTest::qWait(50);
+        image = viewport.grabFramebuffer();
+        int after = 0;
+        for (float x : {-10.0f, -5.0f, 5.0f, 10.0f})
+            after += countNear(image, {x, 1.0f}, 1.0f, FieldArrows::kSketchColour);
+        QVERIFY2(after >= before + 12, qPrintable(QString("%1 violet pixels before, %2 after").arg(before).arg(after)));
+        QVERIFY(viewport.hud().lines().contains("Sketched field: 1 strokes"));
+        QTest::keyClick(&viewport, Qt::Key_F, Qt::ShiftModifier);
+
+        // The goal's flow field: the first goal's until another is selected.
+        QTest::keyClick(&viewport, Qt::Key_G, Qt::ShiftModifier);
+        QVERIFY(viewport.overlays().goalField);
+        QVERIFY(viewport.hud().lines().contains("Flow field to goal 'west'"));
+        QTest::qWait(50);
+        image = viewport.grabFramebuffer();
+        QVERIFY2(countNear(image, {8.0f, 8.0f}, 1.0f, FieldArrows::kGoalColour) >= 3, "arrows round the wall");
+        selectInOutliner(window, {{ItemKind::Goal, 1}});
+        QTRY_VERIFY(viewport.hud().lines().contains("Flow field to goal 'north'"));
+        QTest::keyClick(&viewport, Qt::Key_G, Qt::ShiftModifier);
+        QVERIFY(!viewport.overlays().goalField);
+
+        // The density map: coloured under the packed group, plain ground far from it.
+        QTest::keyClick(&viewport, Qt::Key_M);
+        QVERIFY(viewport.overlays().density);
+        QTest::qWait(50);
+        image = viewport.grabFramebuffer();
+        const QRgb empty = pixelAt(image, viewport, viewport.worldToPixel({5.5f, 0.0f, -12.5f}));
+        QVERIFY2(sameColour(empty, palette::kGround, 6), qPrintable(describe(empty)));
+        // Independent recount: agents of the frame within 1 m of the group's middle, per m².
+        const sim::FrameCache& cache = window.simulation().cache();
+        int within = 0;
+        for (const sim::AgentFrame& f : cache.frame(viewport.frameIndex()))
+            within += glm::distance(glm::vec2(f.position.x, f.position.z), glm::vec2(-10.5f, -10.5f)) <= 1.0f;
+        const double counted = within / 3.14159;
+        const QString peakLine = viewport.hud().lines().filter("Density map").value(0);
+        const QRegularExpression peak("peak ([0-9.]+)");
+        QVERIFY2(peak.match(peakLine).hasMatch(), qPrintable(peakLine));
+        const double shown = peak.match(peakLine).captured(1).toDouble();
+        QVERIFY2(counted > 2.0 && shown > 0.6 * counted && shown < 1.6 * counted,
+                 qPrintable(QString("peak %1 in the HUD, %2 per m² counted").arg(shown).arg(counted)));
+        // Beside the packed walkers the ground takes the map's colour; without it, plain.
+        const glm::vec2 beside(-8.6f, -10.5f);
+        const int plainWithMap = countNear(image, beside, 0.25f, palette::kGround);
+        QTest::keyClick(&viewport, Qt::Key_M);
+        QVERIFY(!viewport.overlays().density);
+        QTest::qWait(50);
+        image = viewport.grabFramebuffer();
+        const int plainWithout = countNear(image, beside, 0.25f, palette::kGround);
+        QVERIFY2(plainWithMap * 4 < plainWithout && plainWithout >= 10,
+                 qPrintable(QString("%1 plain ground pixels beside the crowd with the map, %2 without")
+                                .arg(plainWithMap)
+                                .arg(plainWithout)));
+
+        // Colour by density: the packed walkers warmer than the one alone.
+        QVERIFY(chooseInViewMenu(window, "Colour Agents By", "Density"));
+        QTRY_COMPARE(viewport.colourBy(), ColourBy::Density);
+        QTest::qWait(50);
+        image = viewport.grabFramebuffer();
+        const glm::vec3 lone = cache.at(viewport.frameIndex(), cacheIndex(window, 1)).position;
+        const QRgb alone = pixelAt(image, viewport, viewport.worldToPixel(lone - glm::vec3(0.1f, 0.0f, 0.0f)));
+        DensityHeatmap recount;
+        recount.build(cache.frame(viewport.frameIndex()), {-20.0f, -20.0f}, {20.0f, 20.0f});
+        const glm::vec4 loneColour(glm::vec3(DensityHeatmap::colourFor(recount.densityAt({lone.x, lone.z}))), 1.0f);
+        QVERIFY2(sameColour(alone, loneColour, 12), qPrintable(describe(alone) + " expected " + describe(loneColour)));
+        QVERIFY(recount.densityAt({lone.x, lone.z}) < 1.0f);
+        QVERIFY(viewport.hud().lines().contains("Colour by Density (agents per m²)"));
     }
 
     void trailsFollowTheSelectedAgentOnly()
