@@ -1,7 +1,8 @@
 #include "editor/viewport/FieldArrows.h"
 
+#include "simcore/nav/NavDefaults.h"
 #include "simcore/nav/NavShapes.h"
-#include "simcore/traffic/LaneNetwork.h"
+#include "simcore/traffic/WalkerBarriers.h"
 
 #include <glm/geometric.hpp>
 
@@ -13,12 +14,6 @@ namespace throng::editor {
 
 namespace {
 
-// As WorldNav.cpp: walkers' bodies are inflated by this clearance, a grid that only flow
-// strokes need uses a default body, and a weaker sketched field than kSketchMinStrength
-// is no flow at all (World::sketchedFlow), so no arrow is drawn there.
-constexpr float kClearanceM = 0.15f;
-constexpr float kDefaultRadiusM = 0.3f;
-constexpr float kSketchMinStrength = 0.2f;
 constexpr float kArrowFraction = 0.8f;  // of the spacing: neighbouring arrows never touch
 
 // The radius the World inflates its grid by: the largest body (plus clearance) of the
@@ -29,32 +24,25 @@ float inflateRadiusM(const sim::Scene& scene)
     auto consider = [&](const std::string& typeName) {
         const sim::AgentType* t = scene.findAgentType(typeName);
         if (t && t->kind == sim::AgentKind::Pedestrian && t->navigation != sim::Navigation::Direct)
-            inflate = std::max(inflate, t->radiusM + kClearanceM);
+            inflate = std::max(inflate, t->radiusM + sim::kNavClearanceM);
     };
     for (const sim::Agent& a : scene.agents)
         consider(a.type);
     for (const sim::SpawnGroup& g : scene.groups)
         if (g.count > 0)
             consider(g.type);
-    return inflate > 0.0f ? inflate : kDefaultRadiusM + kClearanceM;
+    return inflate > 0.0f ? inflate : sim::kNavDefaultRadiusM + sim::kNavClearanceM;
 }
 
 // The walls walkers meet, as World::buildNav gathers them: walls, obstacles, and with a
-// lane network its kerbs and both sides of each crosswalk (World::appendKerbs).
+// lane network its kerbs and crosswalk sides (sim::walkerBarriers).
 sim::NavShapes walkerShapes(const sim::Scene& parts)
 {
     sim::NavShapes shapes = sim::navShapes(parts);
     if (parts.lanes.empty())
         return shapes;
-    const sim::LaneNetwork net(parts);
-    for (const sim::BarrierSegment& b : net.pedestrianBarriers())
+    for (const sim::BarrierSegment& b : sim::walkerBarriers(sim::LaneNetwork(parts)))
         shapes.walls.push_back({b.a, b.b});
-    for (std::size_t c = 0; c < net.crosswalkCount(); ++c) {
-        const sim::CrosswalkStrip& s = net.crosswalk(int(c));
-        const glm::vec2 side = glm::vec2(-s.dir.y, s.dir.x) * s.halfWidthM;
-        shapes.walls.push_back({s.a + side, s.b + side});
-        shapes.walls.push_back({s.a - side, s.b - side});
-    }
     return shapes;
 }
 
@@ -100,7 +88,7 @@ std::vector<FieldArrow> FieldArrows::sketchArrows(float spacingM) const
     const sim::SketchField& field = *m_sketch;
     return arrowsAt(spacingM, [&](glm::vec2 p, sim::NavCell c) {
         const float strength = field.strength(c);
-        const glm::vec2 d = strength >= kSketchMinStrength ? field.sample(p) : glm::vec2(0.0f);
+        const glm::vec2 d = strength >= sim::kSketchMinStrength ? field.sample(p) : glm::vec2(0.0f);
         return std::pair{d, std::min(strength, 1.0f)};
     });
 }

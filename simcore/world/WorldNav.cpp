@@ -5,6 +5,7 @@
 // from each agent's own state, so the result does not depend on the thread count.
 #include "simcore/world/World.h"
 
+#include "simcore/nav/NavDefaults.h"
 #include "simcore/traffic/LightPhase.h"
 #include "simcore/world/Rng.h"
 #include "simcore/world/detail/StepGeometry.h"
@@ -46,9 +47,6 @@ enum NavStream : std::uint64_t { kWaypointRadius = 201, kSideStepSign };
 
 constexpr float kWaypointRadiusBaseM = 1.0f;  // a walker advances within 0.5..1.5 m of a corner
 constexpr float kWaypointSpread = 0.5f;
-constexpr float kDefaultRadiusM = 0.3f;       // a walker's body, for a grid only flow strokes need
-constexpr float kSketchMinStrength = 0.2f;    // weaker sketched field than this: no flow there
-constexpr float kClearanceM = 0.15f;          // kept beyond the body radius when inflating the set
 constexpr float kAvoidRadiusM = 1.0f;         // a stalled walker's detour avoids this disk ahead of it
 constexpr float kSideStepDurationS = 1.5f;
 constexpr float kQueueGapM = 0.5f;           // m: a walker this close behind a waiting one queues
@@ -71,7 +69,7 @@ void World::buildNav(const Scene& scene)
         if (t.kind != AgentKind::Pedestrian || m_traffic.isDriven(i) || t.navigation == Navigation::Direct)
             continue;
         mode[i] = t.navigation;
-        inflate = std::max(inflate, t.radiusM + kClearanceM);
+        inflate = std::max(inflate, t.radiusM + kNavClearanceM);
         smallest = std::min(smallest, t.radiusM);
     }
     m_nav.active = inflate > 0.0f;
@@ -82,7 +80,7 @@ void World::buildNav(const Scene& scene)
     NavShapes shapes = navShapes(scene);
     shapes.walls = m_walls.segments();
     m_nav.grid.build(shapes, scene.settings.boundsMin, scene.settings.boundsMax,
-                     NavGridParams{scene.settings.navCellM, m_nav.active ? inflate : kDefaultRadiusM + kClearanceM});
+                     NavGridParams{scene.settings.navCellM, m_nav.active ? inflate : kNavDefaultRadiusM + kNavClearanceM});
     // Flow strokes become a sketched field (Jin et al. 2008) that flow_field_following
     // reads; should the solve fail, the World keeps the plain lookup along the strokes.
     if (!scene.flowStrokes.empty()) {

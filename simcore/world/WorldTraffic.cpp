@@ -6,6 +6,7 @@
 
 #include "simcore/steering/TargetBehaviours.h"
 #include "simcore/traffic/LightPhase.h"
+#include "simcore/traffic/WalkerBarriers.h"
 #include "simcore/world/detail/StepGeometry.h"
 
 #include <glm/geometric.hpp>
@@ -49,18 +50,8 @@ void World::appendKerbs(std::vector<Segment>& walls) const
 {
     if (!m_traffic.system)
         return;
-    const LaneNetwork& net = m_traffic.system->lanes();
-    for (const BarrierSegment& b : net.pedestrianBarriers())
+    for (const BarrierSegment& b : walkerBarriers(m_traffic.system->lanes()))
         walls.push_back({b.a, b.b});
-    // Both sides of each crosswalk strip in full, the stretch over the pavement too: a
-    // walker then steps onto a crossing only over an end line, where the signal answers
-    // it, never sideways from the pavement beside it.
-    for (std::size_t c = 0; c < net.crosswalkCount(); ++c) {
-        const CrosswalkStrip& s = net.crosswalk(int(c));
-        const glm::vec2 side = glm::vec2(-s.dir.y, s.dir.x) * s.halfWidthM;
-        walls.push_back({s.a + side, s.b + side});
-        walls.push_back({s.a - side, s.b - side});
-    }
 }
 
 void World::addTrafficAgents(const Scene& scene)
