@@ -1,8 +1,9 @@
 // editor_figures: the editor's figures as JSON on stdout (never a test; timings are not
 // asserted anywhere). Start-up time to a shown window with the crossroads demo, viewport
 // frame time with 10,000 and 100,000 agents (top, 3D, 3D close-up; level of detail off
-// and on in one run), crowd-brush stroke latency per mouse move, and the 3D frame time
-// with near agents as characters against glyphs.
+// and on in one run), the frame time during playback with and without the HUD and the
+// overlays, crowd-brush stroke latency per mouse move, and the 3D frame time with near
+// agents as characters against glyphs.
 // Run under a display: xvfb-run -a -s "-screen 0 1920x1080x24" editor_figures [WINDOW.png]
 // (`editor_figures --characters`: the characters-against-glyphs figures only).
 #include "EditorUiDriver.h"
@@ -137,6 +138,102 @@ CharacterTimes characterTimes(Viewport& viewport, int zoomSteps, int frames)
     return {median(glyphs), median(characters), drawn};
 }
 
+// A recording of `scene`'s placed agents all walking east at 1.4 m/s for `frames` frames.
+sim::FrameCache walkingCache(const sim::Scene& scene, std::size_t frames)
+{
+    std::vector<sim::AgentInfo> info;
+    for (const sim::Agent& a : scene.agents)
+        info.push_back({a.id, 0});
+    sim::FrameCache cache;
+    cache.reset(info, 24.0f);
+    std::vector<sim::AgentFrame> frame(info.size());
+    for (std::size_t f = 0; f < frames; ++f) {
+        for (std::size_t i = 0; i < info.size(); ++i) {
+            frame[i].position = scene.agents[i].position + glm::vec3(1.4f * float(f) / 24.0f, 0.0f, 0.0f);
+            frame[i].speed = 1.4f;
+            frame[i].clip = sim::Clip::Walk;
+        }
+        cache.append(frame);
+    }
+    return cache;
+}
+
+// The steering of one agent as a watched walker in a crowd publishes it.
+sim::AgentDebug steeringOf(const sim::Scene& scene, std::size_t i)
+{
+    sim::AgentDebug a;
+    a.id = scene.agents[i].id;
+    a.position = scene.agents[i].position;
+    a.velocity = {1.4f, 0.0f, 0.0f};
+    a.rangeM = 4.0f;
+    a.viewAngleRad = 4.71f;
+    for (int k = 0; k < 8; ++k)
+        a.neighbours.push_back({a.id + 1, a.position + glm::vec3(std::cos(float(k)), 0.0f, std::sin(float(k)))});
+    for (int k = 0; k < 6; ++k) {
+        a.forces.push_back({sim::Behaviour(k), glm::vec3(std::cos(float(k)), 0.0f, std::sin(float(k))), 1.0f});
+        a.feelers.push_back({a.position, a.position + glm::vec3(1.5f, 0.0f, 0.3f * float(k - 3))});
+    }
+    for (int k = 0; k < 10; ++k)
+        a.path.push_back(a.position + glm::vec3(float(k), 0.0f, 0.5f * float(k % 2)));
+    a.steering = {1.0f, 0.0f, 0.2f};
+    return a;
+}
+
+// Median milliseconds per frame shown (showFrame, then a synchronous repaint) during
+// playback, with nothing over the agents (as before the HUD) and with the HUD, agents
+// coloured by speed, the density map, trails behind 256 selected agents and the steering
+// of 8 (fields off: the crowd has no strokes or goals), frames of the two taken in turn.
+struct OverlayTimes {
+    double plainMs = 0.0, overlaysMs = 0.0;
+};
+
+OverlayTimes overlayTimes(Viewport& viewport, const sim::Scene& scene, const sim::FrameCache& cache, ViewMode mode,
+                          int frames)
+{
+    viewport.setViewMode(mode);
+    viewport.setAgentLevelOfDetail(true);
+    viewport.frameAll();
+    Selection selected;
+    const std::size_t step = std::max<std::size_t>(1, scene.agents.size() / 256);
+    for (std::size_t k = 0; k < 256 && k * step < scene.agents.size(); ++k)
+        selected.push_back({ItemKind::Agent, k * step});
+    std::vector<sim::AgentDebug> steering;
+    for (std::size_t k = 0; k < 8 && k * step < scene.agents.size(); ++k)
+        steering.push_back(steeringOf(scene, k * step));
+    ViewportOverlays plain;
+    plain.hud = false;
+    ViewportOverlays all;
+    all.trails = all.steering = all.density = true;
+    std::vector<double> without, with;
+    for (int i = 0; i <= frames; ++i) {
+        const std::size_t frame = 24 + std::size_t(i) % (cache.frameCount() - 24);
+        for (const bool on : {false, true}) {
+            viewport.setOverlays(on ? all : plain);
+            viewport.setColourBy(on ? ColourBy::Speed : ColourBy::Tint);
+            viewport.setHighlight(scene, on ? selected : Selection{});
+            viewport.setSteering(on ? steering : std::vector<sim::AgentDebug>{});
+            QElapsedTimer t;
+            t.start();
+            viewport.showFrame(cache, frame);
+            const double showMs = double(t.nsecsElapsed()) / 1e6;
+            const double ms = showMs + repaintMs(viewport);
+            if (i > 0)
+                (on ? with : without).push_back(ms);
+        }
+    }
+    viewport.setOverlays(ViewportOverlays{});
+    viewport.setColourBy(ColourBy::Tint);
+    viewport.setHighlight(scene, {});
+    return {median(without), median(with)};
+}
+
+void printOverlayTimes(const char* name, const OverlayTimes& t, bool last)
+{
+    std::cout << "    \"" << name << "\": {\"plain_ms\": " << t.plainMs << ", \"overlays_ms\": " << t.overlaysMs
+              << ", \"overlays_over_plain\": " << (t.plainMs > 0.0 ? t.overlaysMs / t.plainMs : 0.0) << "}"
+              << (last ? "\n" : ",\n");
+}
+
 void printCharacterTimes(const char* name, const CharacterTimes& t, bool last)
 {
     std::cout << "    \"" << name << "\": {\"glyphs_ms\": " << t.glyphsMs << ", \"characters_ms\": " << t.charactersMs
@@ -228,13 +325,20 @@ int main(int argc, char** argv)
     for (std::size_t n : counts) {
         QElapsedTimer t;
         t.start();
-        viewport.setScene(crowdOf(n));
+        const sim::Scene scene = crowdOf(n);
+        viewport.setScene(scene);
         const double setMs = double(t.nsecsElapsed()) / 1e6;
         const int frames = n >= 100000 ? 5 : 9;
         std::cout << "  \"agents_" << n << "\": {\n    \"set_scene_ms\": " << setMs << ",\n";
         printTimes("top", frameTimes(viewport, ViewMode::Top, 0, frames), false);
         printTimes("3d", frameTimes(viewport, ViewMode::Orbit, 0, frames), false);
-        printTimes("3d_close", frameTimes(viewport, ViewMode::Orbit, 15, frames), true);
+        printTimes("3d_close", frameTimes(viewport, ViewMode::Orbit, 15, frames), n == 0);
+        if (n > 0) {
+            const sim::FrameCache cache = walkingCache(scene, 48);
+            printOverlayTimes("top_playback", overlayTimes(viewport, scene, cache, ViewMode::Top, frames), false);
+            printOverlayTimes("3d_playback", overlayTimes(viewport, scene, cache, ViewMode::Orbit, frames), true);
+            viewport.setScene(scene);
+        }
         std::cout << "  }" << (n == counts[2] ? "\n" : ",\n");
     }
     std::cout << "}\n";

@@ -21,6 +21,7 @@
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QWheelEvent>
 
 #include <cmath>
 #include <iostream>
@@ -150,8 +151,15 @@ int main(int argc, char** argv)
         playTo(window, 340);
         QTest::qWait(300);
         ok = save(window, out + "/editor-overlays.png") && ok;
-        for (int k = 0; k < 5; ++k)  // zoomed in on the watched walker
-            QTest::keyClick(&viewport, Qt::Key_F);
+        // Zoomed in on the watched walker with the wheel at it, as a user zooms.
+        const std::size_t watched = shown.find(viewport.focusedAgent());
+        if (watched != ShownAgents::kNone)
+            for (int k = 0; k < 12; ++k) {
+                const QPointF at = viewport.worldToPixel(shown.feet(watched));
+                QWheelEvent wheel(at, viewport.mapToGlobal(at), QPoint(), QPoint(0, 120), Qt::NoButton, Qt::NoModifier,
+                                  Qt::NoScrollPhase, false);
+                QApplication::sendEvent(&viewport, &wheel);
+            }
         QTest::qWait(300);
         ok = save(viewport, out + "/editor-steering.png") && ok;
     }
