@@ -19,6 +19,7 @@
 #include <QFile>
 #include <QSpinBox>
 #include <QStandardPaths>
+#include <QTableWidget>
 #include <QTest>
 
 #include <vector>
@@ -48,6 +49,20 @@ void chooseShape(MainWindow& window, const QString& text)
     while (shape->currentText() != text && shape->currentIndex() + 1 < shape->count())
         QTest::keyClick(shape, Qt::Key_Down);
     QCOMPARE(shape->currentText(), text);
+}
+
+// Double-clicks a cell of the points table, types `text` over it and presses Return.
+void editCell(MainWindow& window, QTableWidget* table, int row, int column, const QString& text)
+{
+    showInPanel(window, table);
+    const QPoint cell = table->visualItemRect(table->item(row, column)).center();
+    QTest::mouseClick(table->viewport(), Qt::LeftButton, {}, cell);
+    QTest::mouseDClick(table->viewport(), Qt::LeftButton, {}, cell);
+    auto* editor = table->viewport()->findChild<QDoubleSpinBox*>();
+    QVERIFY2(editor && editor->isVisible(), "the cell's editor is open");
+    QTest::keyClick(editor, Qt::Key_A, Qt::ControlModifier);
+    QTest::keyClicks(editor, text);
+    QTest::keyClick(editor, Qt::Key_Return);
 }
 
 void clickCorners(MainWindow& window, const std::vector<glm::vec2>& corners)
@@ -106,6 +121,7 @@ private slots:
 
         // The view shows the 60 members, each inside the outline (none in the notch).
         QTRY_COMPARE(window.viewport().agentCount(), std::size_t(60));
+        QCOMPARE(window.viewport().frameIndex(), std::size_t(0));  // where they spawned
         const ShownAgents& shown = window.viewport().shownAgents();
         QCOMPARE(shown.size(), std::size_t(60));
         for (std::size_t i = 0; i < shown.size(); ++i) {
@@ -192,6 +208,36 @@ private slots:
         QTest::keyClick(&window.viewport(), Qt::Key_Enter);
         QCOMPARE(window.document().scene().groups.size(), std::size_t(1));
         QVERIFY(groupTool(window)->refusal().isEmpty());
+    }
+
+    // Properties turns a rectangle group into a polygon on its corners and edits them in
+    // the corner table; an edit that would make the outline cross itself is refused.
+    void propertiesTurnARectangleIntoAPolygonAndEditItsCorners()
+    {
+        MainWindow window;
+        QTemporaryDir dir;
+        QVERIFY(showWithYaml(window, dir, "rect.yaml", "throng: 1\nagent_types:\n  - {name: walker, radius: 0.3}\n"
+                                                     "groups:\n  - {name: yard, type: walker, count: 20, "
+                                                     "rect: {min: [-10, -5], max: [0, 5]}}\n"));
+        const sim::SpawnGroup& g = window.document().scene().groups[0];
+        selectInOutliner(window, {{ItemKind::Group, 0}});
+        QVERIFY(!field<QTableWidget>(window, "points")->isVisibleTo(window.findChild<QWidget*>("properties")));
+        pick(window, "shape", "Polygon");
+        QCOMPARE(g.shape, sim::AreaShape::Polygon);
+        QVERIFY(g.points == (std::vector<glm::vec2>{{-10, -5}, {0, -5}, {0, 5}, {-10, 5}}));
+        QCOMPARE(window.document().undoStack()->count(), 1);
+        auto* table = field<QTableWidget>(window, "points");
+        QTRY_VERIFY(table->isVisible());
+        QCOMPARE(table->rowCount(), 4);
+        // (0, -5) to (-20, -5): the edge from it would cross the left side.
+        editCell(window, table, 1, 0, "-20");
+        QTRY_VERIFY2(lastMessage(window).contains("crosses itself"), qPrintable(lastMessage(window)));
+        QCOMPARE(g.points[1], glm::vec2(0, -5));
+        QCOMPARE(window.document().undoStack()->count(), 1);
+        editCell(window, field<QTableWidget>(window, "points"), 2, 0, "4");
+        QTRY_COMPARE(g.points[2], glm::vec2(4, 5));
+        QCOMPARE(window.document().undoStack()->count(), 2);
+        QVERIFY(sceneYaml(window).contains("shape: polygon"));
     }
 };
 
