@@ -64,8 +64,9 @@ private slots:
         }
     }
 
-    // The L's foot (z < 4) is 40 of its 64 m², its left 5 m (x < 5) 44: a sampler that
-    // picked triangles or bounding-box points without weighting by area gives other shares.
+    // The L's foot (z < 4) is 40 of its 64 m², its left 5 m (x < 5) 44, its corner square
+    // 16: each gets that share of the members. These shares are coarse (a sampler picking
+    // the L's four triangles alike passed them), so the cells below check finer.
     void membersSpreadInProportionToArea()
     {
         const std::vector<glm::vec2> members = spawned(lScene(1280, 0.05f, 13));
