@@ -34,6 +34,19 @@ void forEachPoint(Scene& s, SceneItem item, Visit visit)
     case ItemKind::Lane: for (auto& p : s.lanes[i].points) visit(p); return;
     case ItemKind::FlowStroke: for (auto& p : s.flowStrokes[i].points) visit(p); return;
     case ItemKind::Crosswalk: visit(s.crosswalks[i].from); visit(s.crosswalks[i].to); return;
+    case ItemKind::Group: {
+        // Only the shape's own points: the others are not written and must not drift.
+        auto& g = s.groups[i];
+        if (g.shape == sim::AreaShape::Rect) {
+            visit(g.min);
+            visit(g.max);
+        } else if (g.shape == sim::AreaShape::Circle) {
+            visit(g.center);
+        } else {
+            for (auto& p : g.points) visit(p);
+        }
+        return;
+    }
     default: return;
     }
 }
@@ -51,7 +64,8 @@ bool MoveItemsCommand::movable(ItemKind kind)
     case ItemKind::Wall:
     case ItemKind::Lane:
     case ItemKind::FlowStroke:
-    case ItemKind::Crosswalk: return true;
+    case ItemKind::Crosswalk:
+    case ItemKind::Group: return true;
     default: return false;
     }
 }

@@ -14,7 +14,6 @@ namespace throng::editor {
 
 namespace {
 constexpr double kLimitM = 1e5;  // the panel's coordinate range, as the number fields
-constexpr std::size_t kMinPoints = 2;  // the scene check's minimum for a polyline
 }  // namespace
 
 PointTable::PointTable(PropertyForm& form, PropertyForm::Locate<Points> locate, QWidget* parent)
@@ -39,7 +38,7 @@ PointTable::PointTable(PropertyForm& form, PropertyForm::Locate<Points> locate, 
     m_add->setToolTip(tr("Insert a point after the selected one (halfway to the next)"));
     m_remove = new QPushButton(tr("Remove point"), this);
     m_remove->setObjectName("removePoint");
-    m_remove->setToolTip(tr("Remove the selected point (at least two stay)"));
+    m_remove->setToolTip(tr("Remove the selected point (a line keeps two, an area three)"));
     buttons->addWidget(m_add);
     buttons->addWidget(m_remove);
     column->addLayout(buttons);
@@ -51,6 +50,17 @@ PointTable::PointTable(PropertyForm& form, PropertyForm::Locate<Points> locate, 
 
 void PointTable::change(const QString& what, const std::function<void(Points&)>& edit)
 {
+    if (m_check) {
+        auto& scene = const_cast<sim::Scene&>(m_form.scene());  // read only
+        for (std::size_t i : m_form.indices()) {
+            Points next = m_locate(scene, i);
+            edit(next);
+            if (const QString why = m_check(next); !why.isEmpty()) {
+                m_form.refuse(m_table, why);
+                return;
+            }
+        }
+    }
     m_form.applyEach<Points>(QStringLiteral("points/%1").arg(++m_serial), what, m_locate, [&](const Points& now) {
         Points next = now;
         edit(next);
@@ -120,12 +130,13 @@ void PointTable::removePoint()
     const int row = m_table->currentRow();
     if (row < 0)
         return;
-    if (std::size_t(m_table->rowCount()) <= kMinPoints) {
-        m_form.refuse(m_remove, tr("A line needs at least %1 points; none was removed.").arg(kMinPoints));
+    if (std::size_t(m_table->rowCount()) <= m_minPoints) {
+        m_form.refuse(m_remove, m_minPoints > 2 ? tr("An area needs at least %1 corners; none was removed.").arg(m_minPoints)
+                                                : tr("A line needs at least %1 points; none was removed.").arg(m_minPoints));
         return;
     }
     change(tr("remove point %1").arg(row + 1), [&](Points& points) {
-        if (std::size_t(row) < points.size() && points.size() > kMinPoints)
+        if (std::size_t(row) < points.size() && points.size() > m_minPoints)
             points.erase(points.begin() + row);
     });
     m_table->setCurrentCell(std::min(row, m_table->rowCount() - 1), 0);

@@ -146,7 +146,7 @@ std::vector<PropertyField> make(ItemKind kind)
         return {{"clearance", tr("Clearance (m)"), 0, 50, 0.1, 2, THRONG_FIELD(heroes, clearanceM)}};
     case ItemKind::Group: {
         const auto circle = [](const sim::Scene& s, std::size_t i) { return s.groups[i].shape == sim::AreaShape::Circle; };
-        const auto rect = [circle](const sim::Scene& s, std::size_t i) { return !circle(s, i); };
+        const auto rect = [](const sim::Scene& s, std::size_t i) { return s.groups[i].shape == sim::AreaShape::Rect; };
         const auto flier = [](const sim::Scene& s, std::size_t i) {
             const sim::AgentType* type = s.findAgentType(s.groups[i].type);
             return type && type->kind == sim::AgentKind::Flier;

@@ -99,6 +99,11 @@ void PropertyForm::addRow(const QString& label, QWidget* widget, std::function<v
     m_refreshers.push_back(std::move(refresh));
 }
 
+void PropertyForm::setRowShown(QWidget* widget, bool shown)
+{
+    m_layout->setRowVisible(widget, shown);
+}
+
 void PropertyForm::addNumber(const PropertyField& field)
 {
     auto* spin = new QDoubleSpinBox(m_owner);

@@ -76,6 +76,9 @@ public:
     void addInfo(const QString& key, const QString& label, std::function<QString(const sim::Scene&, std::size_t)> text);
     // Any other widget; `refresh` re-reads its values from the scene.
     void addRow(const QString& label, QWidget* widget, std::function<void()> refresh);
+    // Shows or hides the row of a widget added with addRow (a row that applies to some
+    // items only: a polygon group's points).
+    void setRowShown(QWidget* widget, bool shown);
 
     // The value every selected item has, or nothing when they differ.
     template <class T>

@@ -5,8 +5,11 @@
 #include "editor/panels/PointTable.h"
 #include "editor/panels/StopLineTable.h"
 #include "editor/panels/PropertyForm.h"
+#include "editor/SpawnPolygonCheck.h"
+#include "simcore/scene/SpawnArea.h"
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 
 namespace throng::editor {
@@ -51,6 +54,33 @@ void addNumbers(PropertyForm& form)
 {
     for (const PropertyField& field : propertyFields(form.kind()))
         form.addNumber(field);
+}
+
+sim::SpawnGroup withAreaShape(const sim::SpawnGroup& now, sim::AreaShape shape)
+{
+    sim::SpawnGroup next = now;
+    next.shape = shape;
+    if (next.shape == now.shape)
+        return next;
+    const sim::GroundBounds box = sim::spawnAreaBounds(now);
+    const glm::vec2 middle = 0.5f * (box.min + box.max), extent = box.max - box.min;
+    next.points.clear();
+    if (shape == sim::AreaShape::Circle) {
+        next.center = middle;
+        next.radiusM = std::max(0.5f, 0.5f * std::min(extent.x, extent.y));
+    } else if (shape == sim::AreaShape::Rect) {
+        next.min = box.min;
+        next.max = box.max;
+    } else if (now.shape == sim::AreaShape::Circle) {
+        constexpr int kSides = 12;
+        for (int k = 0; k < kSides; ++k) {
+            const float a = 6.28318531f * float(k) / float(kSides);
+            next.points.push_back(now.center + now.radiusM * glm::vec2(std::cos(a), std::sin(a)));
+        }
+    } else {
+        next.points = {now.min, {now.max.x, now.min.y}, now.max, {now.min.x, now.max.y}};
+    }
+    return next;
 }
 
 }  // namespace
@@ -107,29 +137,30 @@ void addGroupRows(PropertyForm& form)
     form.addChoice("path", tr("Path"), namesOfKind(ItemKind::Path), THRONG_AT(groups, path), true);
     addLeaderRow(form, THRONG_AT(groups, leader), false);
     // The area's shape; a switch carries the area over (the circle round the rectangle's
-    // middle, the rectangle round the circle) so that the group stays valid and in place.
+    // middle, the rectangle round the circle, the polygon on the rectangle's corners or
+    // round the circle) so that the group stays valid and in place.
     const PropertyForm::Locate<sim::SpawnGroup> group = [](sim::Scene& s, std::size_t i) -> auto& { return s.groups[i]; };
-    form.addIndexChoice("shape", tr("Area"), [] { return QStringList{tr("Rectangle"), tr("Circle")}; }, [&form] {
+    form.addIndexChoice("shape", tr("Area"), [] { return QStringList{tr("Rectangle"), tr("Circle"), tr("Polygon")}; }, [&form] {
         const auto shape = form.common<sim::AreaShape>(THRONG_AT(groups, shape));
         return shape ? std::optional<int>(int(*shape)) : std::nullopt;
     }, [&form, group](int index) {
         form.applyEach<sim::SpawnGroup>("shape", tr("Area"), group, [index](const sim::SpawnGroup& now) {
-            sim::SpawnGroup next = now;
-            next.shape = sim::AreaShape(index);
-            if (next.shape == now.shape)
-                return next;
-            if (next.shape == sim::AreaShape::Circle) {
-                next.center = 0.5f * (now.min + now.max);
-                const glm::vec2 extent = now.max - now.min;
-                next.radiusM = std::max(0.5f, 0.5f * std::min(extent.x, extent.y));
-            } else {
-                next.min = now.center - glm::vec2(now.radiusM);
-                next.max = now.center + glm::vec2(now.radiusM);
-            }
-            return next;
+            return withAreaShape(now, sim::AreaShape(index));
         });
     });
     addNumbers(form);
+    // A polygon's corners, kept a valid spawn area: an edit that would make it cross
+    // itself is refused.
+    auto* corners = new PointTable(form, THRONG_AT(groups, points), form.owner());
+    corners->setMinPoints(3);
+    corners->setCheck([](const PointTable::Points& points) { return spawnPolygonProblem(points); });
+    form.addRow(tr("Corners"), corners, [&form, corners] {
+        const std::vector<std::size_t> items = form.indices();
+        form.setRowShown(corners, std::any_of(items.begin(), items.end(), [&](std::size_t i) {
+            return form.scene().groups[i].shape == sim::AreaShape::Polygon;
+        }));
+        corners->refresh();
+    });
 }
 
 void addSetRows(PropertyForm& form)

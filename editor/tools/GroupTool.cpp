@@ -1,16 +1,20 @@
 #include "editor/tools/GroupTool.h"
 
 #include "editor/SceneDocument.h"
+#include "editor/SpawnPolygonCheck.h"
 #include "editor/commands/AddSceneItemCommand.h"
 #include "editor/tools/BrushOverlay.h"
 #include "editor/tools/UniqueName.h"
 #include "editor/viewport/Viewport.h"
+#include "simcore/scene/GroundPolygon.h"
+#include "simcore/scene/SpawnArea.h"
 
 #include <glm/geometric.hpp>
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QHBoxLayout>
+#include <QKeyEvent>
 #include <QLabel>
 #include <QPainter>
 #include <QPolygonF>
@@ -28,18 +32,28 @@ constexpr float kClickM = 0.3f;          // a drag shorter than this is a click
 constexpr float kClickSquareM = 10.0f;   // the side of the square a click places
 constexpr float kClickCircleM = 5.0f;    // the radius of the circle a click places
 const QColor kPreview(120, 230, 140);
+const QColor kRefused(255, 110, 90);
 }  // namespace
 
 QString GroupTool::toolTip() const
 {
     return tr("Spawn Group (S): drag a rectangle (or a circle: centre, then radius) to fill with agents of the "
-              "chosen type, by count or density; a click places a 10 m square");
+              "chosen type, by count or density; a click places a 10 m square; a polygon takes a click per corner "
+              "and closes on a double-click or Enter");
 }
 
 QString GroupTool::statusText() const
 {
     if (document().scene().agentTypes.empty())
         return tr("Spawn Group: the scene has no agent type yet; click to create one");
+    if (!m_refusal.isEmpty())
+        return tr("Spawn Group: %1").arg(m_refusal);
+    if (m_settings.shape == sim::AreaShape::Polygon && !m_corners.empty())
+        return tr("Spawn Group: %n corner(s), %1 agents of %2; click to add a corner, double-click or Enter closes, "
+                  "Backspace drops the last, Escape cancels",
+                  nullptr, int(m_corners.size()))
+            .arg(m_corners.size() >= 3 ? previewGroup().count : 0)
+            .arg(QString::fromStdString(previewGroup().type));
     if (state() != State::Dragging)
         return toolTip();
     const sim::SpawnGroup g = previewGroup();
@@ -55,12 +69,25 @@ void GroupTool::mousePressed(const ToolMouse& mouse)
     if (!mouse.ground)
         return;
     m_start = m_end = {mouse.ground->x, mouse.ground->z};
+    if (m_settings.shape == sim::AreaShape::Polygon) {
+        m_refusal.clear();
+        // The second press of a double-click lands on the corner just added.
+        if (m_corners.empty() || glm::length(m_corners.back() - m_start) >= 1e-4f)
+            m_corners.push_back(m_start);
+        m_cursor = m_start;
+    }
     setState(State::Dragging);
     emit overlayChanged();
 }
 
 void GroupTool::mouseMoved(const ToolMouse& mouse)
 {
+    if (m_settings.shape == sim::AreaShape::Polygon) {
+        m_cursor = mouse.ground ? std::optional<glm::vec2>(glm::vec2(mouse.ground->x, mouse.ground->z)) : std::nullopt;
+        if (!m_corners.empty())
+            emit overlayChanged();
+        return;
+    }
     if (state() != State::Dragging || !mouse.ground)
         return;
     m_end = {mouse.ground->x, mouse.ground->z};
@@ -69,11 +96,66 @@ void GroupTool::mouseMoved(const ToolMouse& mouse)
 
 void GroupTool::mouseReleased(const ToolMouse& mouse)
 {
-    if (state() != State::Dragging)
+    // A polygon's corners stay in the tool until it is closed.
+    if (state() != State::Dragging || m_settings.shape == sim::AreaShape::Polygon)
         return;
     mouseMoved(mouse);
     setState(State::Idle);
+    pushGroup(previewGroup());
+}
+
+void GroupTool::mouseDoubleClicked(const ToolMouse&)
+{
+    if (m_settings.shape == sim::AreaShape::Polygon && !m_corners.empty())
+        closePolygon();
+}
+
+bool GroupTool::keyPressed(QKeyEvent* event)
+{
+    if (m_settings.shape != sim::AreaShape::Polygon || m_corners.empty())
+        return ViewportTool::keyPressed(event);
+    switch (event->key()) {
+    case Qt::Key_Return:
+    case Qt::Key_Enter: closePolygon(); return true;
+    case Qt::Key_Escape: cancel(); return true;
+    case Qt::Key_Backspace:
+        m_corners.pop_back();
+        m_refusal.clear();
+        if (m_corners.empty())
+            setState(State::Idle);
+        emit overlayChanged();
+        return true;
+    default: return false;
+    }
+}
+
+void GroupTool::cancel()
+{
+    m_corners.clear();
+    m_refusal.clear();
+    ViewportTool::cancel();
+}
+
+void GroupTool::closePolygon()
+{
+    if (document().scene().agentTypes.empty())
+        return;
+    // Closing on the first corner repeats it; the outline closes by itself.
+    while (m_corners.size() > 3 && glm::length(m_corners.back() - m_corners.front()) < 1e-4f)
+        m_corners.pop_back();
+    m_refusal = spawnPolygonProblem(m_corners);
+    if (!m_refusal.isEmpty()) {
+        emit overlayChanged();
+        return;
+    }
     sim::SpawnGroup group = previewGroup();
+    m_corners.clear();
+    setState(State::Idle);
+    pushGroup(std::move(group));
+}
+
+void GroupTool::pushGroup(sim::SpawnGroup group)
+{
     const QString text = tr("Add spawn group %1 (%2 agents)").arg(QString::fromStdString(group.name)).arg(group.count);
     document().undoStack()->push(
         new AddSceneItemCommand<sim::SpawnGroup>(document(), &sim::Scene::groups, std::move(group), text));
@@ -91,7 +173,9 @@ sim::SpawnGroup GroupTool::previewGroup() const
     g.type = known ? m_settings.type : scene.agentTypes.empty() ? std::string() : scene.agentTypes.front().name;
     g.shape = m_settings.shape;
     const bool click = glm::length(m_end - m_start) < kClickM;
-    if (g.shape == sim::AreaShape::Rect) {
+    if (g.shape == sim::AreaShape::Polygon) {
+        g.points = m_corners;
+    } else if (g.shape == sim::AreaShape::Rect) {
         const glm::vec2 end = click ? m_start + glm::vec2(kClickSquareM) : m_end;
         g.min = glm::min(m_start, end);
         g.max = glm::max(m_start, end);
@@ -107,13 +191,16 @@ std::uint32_t GroupTool::countFor(const sim::SpawnGroup& g) const
 {
     if (m_settings.amount == Amount::Count)
         return std::uint32_t(std::max(1, m_settings.count));
-    const double area = g.shape == sim::AreaShape::Rect ? double(g.max.x - g.min.x) * double(g.max.y - g.min.y)
-                                                        : 3.14159265358979 * double(g.radiusM) * double(g.radiusM);
+    const double area = sim::spawnAreaM2(g);
     return std::uint32_t(std::max(1.0, std::round(area * m_settings.densityPerM2)));
 }
 
 void GroupTool::drawOverlay(QPainter& painter) const
 {
+    if (m_settings.shape == sim::AreaShape::Polygon) {
+        drawPolygonOverlay(painter);
+        return;
+    }
     if (state() != State::Dragging)
         return;
     const sim::SpawnGroup g = previewGroup();
@@ -132,6 +219,40 @@ void GroupTool::drawOverlay(QPainter& painter) const
     painter.drawText(at, tr("%1 × %2").arg(g.count).arg(QString::fromStdString(g.type)));
 }
 
+// The corners so far, the edge to the mouse and the closing edge back to the first
+// corner, filled while they make a valid polygon; red with the reason when closing was
+// refused or the outline crosses itself.
+void GroupTool::drawPolygonOverlay(QPainter& painter) const
+{
+    if (m_corners.empty())
+        return;
+    std::vector<glm::vec2> outline = m_corners;
+    if (m_cursor && glm::length(*m_cursor - m_corners.back()) >= 1e-4f)
+        outline.push_back(*m_cursor);
+    const bool crossing = outline.size() >= 3 && sim::polygonSelfCrossing(outline).has_value();
+    const QColor colour = crossing || !m_refusal.isEmpty() ? kRefused : kPreview;
+    QPolygonF pixels;
+    for (glm::vec2 p : outline)
+        pixels << viewport().worldToPixel({p.x, 0.0f, p.y});
+    painter.setPen(QPen(colour, 2.0));
+    painter.setBrush(outline.size() >= 3 && !crossing ? QColor(colour.red(), colour.green(), colour.blue(), 40)
+                                                      : QColor(Qt::transparent));
+    painter.drawPolygon(pixels);
+    painter.setBrush(colour);
+    for (int i = 0; i < int(m_corners.size()); ++i)
+        painter.drawEllipse(pixels[i], 3.0, 3.0);
+    painter.setPen(colour);
+    const QPointF at = pixels.back() + QPointF(12, -12);
+    if (!m_refusal.isEmpty()) {
+        painter.drawText(at, m_refusal);
+        return;
+    }
+    const sim::SpawnGroup g = previewGroup();
+    const QString count = m_corners.size() >= 3 ? tr("%1 × %2").arg(g.count).arg(QString::fromStdString(g.type))
+                                                : tr("%n more corner(s)", nullptr, int(3 - m_corners.size()));
+    painter.drawText(at, crossing ? tr("crosses itself") : count);
+}
+
 QWidget* GroupTool::createOptionsWidget(QWidget* parent)
 {
     auto* box = new QWidget(parent);
@@ -139,11 +260,14 @@ QWidget* GroupTool::createOptionsWidget(QWidget* parent)
     row->setContentsMargins(4, 0, 4, 0);
     auto* shape = new QComboBox(box);
     shape->setObjectName("groupShape");
-    shape->addItems({tr("Rectangle"), tr("Circle")});
-    shape->setCurrentIndex(m_settings.shape == sim::AreaShape::Rect ? 0 : 1);
-    shape->setToolTip(tr("The area's shape: a rectangle dragged corner to corner, or a circle from its centre"));
-    connect(shape, &QComboBox::currentIndexChanged, this,
-            [this](int i) { m_settings.shape = i == 0 ? sim::AreaShape::Rect : sim::AreaShape::Circle; });
+    shape->addItems({tr("Rectangle"), tr("Circle"), tr("Polygon")});
+    shape->setCurrentIndex(int(m_settings.shape));
+    shape->setToolTip(tr("The area's shape: a rectangle dragged corner to corner, a circle from its centre, or a "
+                         "polygon clicked corner by corner (double-click or Enter closes it)"));
+    connect(shape, &QComboBox::currentIndexChanged, this, [this](int i) {
+        cancel();  // corners of a polygon half drawn do not carry over to another shape
+        m_settings.shape = sim::AreaShape(i);
+    });
     auto* type = new QComboBox(box);
     type->setObjectName("groupType");
     type->setToolTip(tr("The agent type of the group's members"));

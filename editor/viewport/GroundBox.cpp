@@ -1,5 +1,7 @@
 #include "editor/viewport/GroundBox.h"
 
+#include "simcore/scene/SpawnArea.h"
+
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
@@ -54,12 +56,9 @@ GroundBox setExtent(const sim::Scene& scene)
     for (const sim::TrafficLight& t : scene.trafficLights)
         box.include(t.position, 1.0f);
     for (const sim::SpawnGroup& g : scene.groups) {
-        if (g.shape == sim::AreaShape::Rect) {
-            box.include(g.min);
-            box.include(g.max);
-        } else {
-            box.include(g.center, g.radiusM);
-        }
+        const sim::GroundBounds area = sim::spawnAreaBounds(g);
+        box.include(area.min);
+        box.include(area.max);
     }
     for (const sim::Agent& a : scene.agents) {
         const sim::AgentType* type = scene.findAgentType(a.type);

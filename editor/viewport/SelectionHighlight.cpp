@@ -113,6 +113,8 @@ void SelectionHighlight::addItems(const sim::Scene& s, const Selection& selectio
             const sim::SpawnGroup& g = s.groups[i];
             if (g.shape == sim::AreaShape::Circle) {
                 mesh.addRing(g.center, g.radiusM, kLineM, c);
+            } else if (g.shape == sim::AreaShape::Polygon) {
+                mesh.addPolyline(g.points, true, kLineM, c);
             } else {
                 const std::array<glm::vec2, 4> r{g.min, glm::vec2(g.max.x, g.min.y), g.max, glm::vec2(g.min.x, g.max.y)};
                 mesh.addPolyline(r, true, kLineM, c);

@@ -126,6 +126,11 @@ void SetGeometryBuilder::addSpawnAreas(std::span<const sim::SpawnGroup> groups, 
             const std::array<glm::vec2, 5> r{g.min, glm::vec2(g.max.x, g.min.y), g.max, glm::vec2(g.min.x, g.max.y),
                                              g.min};
             mesh.addDashedPolyline(r, 0.04f, 0.6f, 0.4f, palette::kSpawnArea);
+        } else if (g.shape == sim::AreaShape::Polygon) {
+            std::vector<glm::vec2> outline = g.points;
+            if (!outline.empty())
+                outline.push_back(outline.front());
+            mesh.addDashedPolyline(outline, 0.04f, 0.6f, 0.4f, palette::kSpawnArea);
         } else {
             mesh.addDashedPolyline(circlePoints(g.center, g.radiusM), 0.04f, 0.6f, 0.4f, palette::kSpawnArea);
         }

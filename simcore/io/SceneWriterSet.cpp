@@ -107,21 +107,26 @@ void writeSceneSet(YamlWriter& w, const Scene& s)
             w.kv("name", g.name);
             w.kv("type", g.type);
             w.kv("count", std::to_string(g.count));
-            if (g.shape == AreaShape::Rect) {
+            if (g.shape == AreaShape::Polygon) {
+                w.kv("shape", "polygon");
+                w.key("points");
+                w.polyline(g.points);
+            } else if (g.shape == AreaShape::Rect) {
                 w.key("rect");
                 o << YAML::Flow << YAML::BeginMap;
                 w.key("min");
                 w.vec2(g.min);
                 w.key("max");
                 w.vec2(g.max);
+                o << YAML::EndMap;
             } else {
                 w.key("circle");
                 o << YAML::Flow << YAML::BeginMap;
                 w.key("center");
                 w.vec2(g.center);
                 w.kvf("radius", g.radiusM);
+                o << YAML::EndMap;
             }
-            o << YAML::EndMap;
             w.kvOpt("goal", g.goal);
             w.kvOpt("path", g.path);
             if (g.leader != 0)

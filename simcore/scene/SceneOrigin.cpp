@@ -22,6 +22,7 @@ void forEachGroundPoint(Scn& s, F&& f, G&& g)
         f(gr.min);
         f(gr.max);
         f(gr.center);
+        for (auto& q : gr.points) f(q);
     }
     for (auto& p : s.paths)
         for (auto& q : p.points) f(q);

@@ -4,9 +4,11 @@
 #include "simcore/steering/PathFollowing.h"
 
 #include "simcore/scene/SceneOrigin.h"
+#include "simcore/scene/SpawnArea.h"
 #include "simcore/scene/StepRate.h"
 #include "simcore/scene/TerrainHeight.h"
 #include "simcore/traffic/LightPhase.h"
+#include "simcore/world/PolygonSampler.h"
 #include "simcore/world/RepeatedStatics.h"
 #include "simcore/world/SpawnSpread.h"
 #include "simcore/world/Rng.h"
@@ -25,7 +27,8 @@ namespace {
 
 // Random streams: each use of randomness has its own, so adding one never shifts another.
 enum Stream : std::uint64_t {
-    kSpawnX = 1, kSpawnZ, kSpawnHeading, kSpeedFactor, kPhaseOffset, kStride, kWanderStart, kSpotR, kSpotA, kSpawnY
+    kSpawnX = 1, kSpawnZ, kSpawnHeading, kSpeedFactor, kPhaseOffset, kStride, kWanderStart, kSpotR, kSpotA, kSpawnY,
+    kSpawnPick
 };
 
 constexpr std::uint64_t kSpawnTries = 16;  // draws of a spawned walker's place before it is walked out
@@ -260,6 +263,8 @@ void World::spawnGroup(const Scene& scene, const SpawnGroup& group, std::size_t 
     const float bodyR = scene.agentTypes[type].radiusM;
     std::vector<glm::vec2> places(group.count);
     std::vector<std::uint8_t> clearOfStatics(group.count, 1);
+    const PolygonSampler polygon(group.shape == AreaShape::Polygon ? std::span<const glm::vec2>(group.points)
+                                                                   : std::span<const glm::vec2>());
     for (std::uint32_t k = 0; k < group.count; ++k) {
         const std::uint64_t key = (std::uint64_t(groupIndex + 1) << 32) | k;
         // A walker drawn where its body does not fit (a group's area over a pillar or
@@ -271,6 +276,8 @@ void World::spawnGroup(const Scene& scene, const SpawnGroup& group, std::size_t 
             const float u = rngUniform(m_seed, key, draw, kSpawnX), v = rngUniform(m_seed, key, draw, kSpawnZ);
             if (group.shape == AreaShape::Rect) {
                 p = group.min + (group.max - group.min) * glm::vec2(u, v);
+            } else if (group.shape == AreaShape::Polygon) {
+                p = polygon.at(rngUniform(m_seed, key, draw, kSpawnPick), u, v);
             } else {
                 const float r = group.radiusM * std::sqrt(u), a = 6.28318531f * v;
                 p = group.center + r * glm::vec2(std::cos(a), std::sin(a));
@@ -342,11 +349,7 @@ void World::spreadMembers(const SpawnGroup& group, std::uint16_t type, std::size
         bodies.push_back({places[k], r, clearOfStatics[k] != 0, (std::uint64_t(groupIndex + 1) << 32) | k});
     const bool hasStatics = !m_walls.segments().empty() || !m_circles.empty();
     auto settle = [&](glm::vec2 q, float radius, glm::vec2& out) {
-        if (group.shape == AreaShape::Rect) {
-            q = glm::clamp(q, group.min, group.max);
-        } else if (const glm::vec2 d = q - group.center; glm::dot(d, d) > group.radiusM * group.radiusM) {
-            q = group.center + d * (group.radiusM / glm::length(d));
-        }
+        q = clampToSpawnArea(group, q);
         if (!hasStatics) {
             out = q;
             return true;

@@ -7,6 +7,7 @@
 #include "editor/commands/AddSceneItemCommand.h"
 #include "editor/commands/ChangeValueCommand.h"
 #include "editor/commands/EraseAgentsCommand.h"
+#include "editor/commands/MoveItemsCommand.h"
 #include "editor/commands/PaintAgentsCommand.h"
 
 #include <QSignalSpy>
@@ -125,6 +126,33 @@ private slots:
         stack->push(new ChangeValueCommand<float>(doc, "h2", locate, 45.0f, "Heading"));
         QCOMPARE(stack->count(), 1);
         QCOMPARE(doc.scene().agents[2].headingDeg, 45.0f);
+    }
+
+    // A polygon group moves by its corners (and nothing else of it); the moves of one
+    // drag merge into one step.
+    void movingAPolygonGroupMovesItsCorners()
+    {
+        SceneDocument doc;
+        sim::SpawnGroup g;
+        g.name = "yard";
+        g.type = "walker";
+        g.count = 10;
+        g.shape = sim::AreaShape::Polygon;
+        g.points = {{0, 0}, {10, 0}, {10, 4}, {4, 4}, {4, 10}, {0, 10}};
+        doc.undoStack()->push(new AddSceneItemCommand<sim::SpawnGroup>(doc, &sim::Scene::groups, g, "Add group"));
+        QVERIFY(MoveItemsCommand::movable(ItemKind::Group));
+        QUndoStack* stack = doc.undoStack();
+        stack->push(new MoveItemsCommand(doc, {{ItemKind::Group, 0}}, {2, -1}, 7));
+        stack->push(new MoveItemsCommand(doc, {{ItemKind::Group, 0}}, {1, 3}, 7));
+        QCOMPARE(stack->count(), 2);
+        const std::vector<glm::vec2> moved{{3, 2}, {13, 2}, {13, 6}, {7, 6}, {7, 12}, {3, 12}};
+        QVERIFY(doc.scene().groups[0].points == moved);
+        QCOMPARE(doc.scene().groups[0].min, glm::vec2(0.0f));
+        QCOMPARE(doc.scene().groups[0].center, glm::vec2(0.0f));
+        stack->undo();
+        QVERIFY(doc.scene().groups[0] == g);
+        stack->redo();
+        QVERIFY(doc.scene().groups[0].points == moved);
     }
 };
 

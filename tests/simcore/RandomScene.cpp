@@ -108,6 +108,9 @@ sim::Scene makeRandomScene(std::uint32_t seed, std::uint32_t agentCount)
     }
     s.groups = {{"shoppers", "type0", 25, AreaShape::Rect, {-10, -10}, {f(0, 10), f(0, 10)}, {}, 0.0f, "door", "", agentCount > 0 ? 1u : 0u},
                 {"circle", "type2", 7, AreaShape::Circle, {}, {}, pt(), f(1, 5), "", "ring", 0u}};
+    // A concave L: the notch is cut from the corner opposite o.
+    const glm::vec2 o = pt(), size(f(4, 12), f(4, 12)), notch = size * glm::vec2(f(0.2f, 0.8f), f(0.2f, 0.8f));
+    s.groups.push_back({"yard", "type0", 9, AreaShape::Polygon, {}, {}, {}, 0.0f, "", "", 0u, {}, {o, o + glm::vec2(size.x, 0.0f), o + glm::vec2(size.x, notch.y), o + notch, o + glm::vec2(notch.x, size.y), o + glm::vec2(0.0f, size.y)}});
     s.vehicles = {{id++, "type1", "east", f(0, 20), f(0, 10)}};
     s.heroes = {{id++, "lead", "type0", f(0, 4), "", {{0.0f, {1, 0, 2}}, {f(0.5f, 2), {3, 0.5f, 4}}, {5.0f, {6, 0, 7}}}}};
     return s;

@@ -78,6 +78,7 @@ private slots:
         checkRoundTrip(scene, dir.path());
         const std::string text = sceneToYaml(scene);
         QCOMPARE(text.find("columns:") != std::string::npos, agents >= 64);
+        QVERIFY(text.find("shape: polygon") != std::string::npos);
     }
 
     void brainFileIsWrittenBesideTheScene()

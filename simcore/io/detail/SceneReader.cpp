@@ -2,6 +2,7 @@
 
 #include "simcore/io/detail/SceneSizeCheck.h"
 #include "simcore/io/detail/YamlDocument.h"
+#include "simcore/scene/GroundPolygon.h"
 #include "simcore/world/TypeSteering.h"
 
 #include <algorithm>
@@ -12,6 +13,7 @@ namespace throng::sim::detail {
 
 namespace {
 constexpr std::uint32_t kMaxSpawnCount = 10'000'000;
+constexpr double kMinPolygonAreaM2 = 1e-6;  // a spawn polygon smaller than a square millimetre has none
 }
 
 std::string resolvePath(const std::string& baseDir, const std::string& path)
@@ -416,7 +418,8 @@ void SceneReader::readGroups(const YAML::Node& node, Scene& scene)
         const YAML::Node item = node[i];
         if (!m_f.expectMap(item, key))
             continue;
-        m_f.checkKeys(item, key, {"name", "type", "count", "rect", "circle", "goal", "path", "leader", "altitude"});
+        m_f.checkKeys(item, key,
+                      {"name", "type", "count", "rect", "circle", "shape", "points", "goal", "path", "leader", "altitude"});
         SpawnGroup g;
         if (m_f.readName(item, "name", key, g.name, true))
             claimName(item, key, g.name, "group");
@@ -424,21 +427,7 @@ void SceneReader::readGroups(const YAML::Node& node, Scene& scene)
             checkRef(item, "type", key, g.type, known("agent type", g.type), "agent type");
         if (m_f.readU32(item, "count", key, g.count, true) && g.count > kMaxSpawnCount)
             m_f.error(item["count"].Mark(), key + ".count", "at most 10,000,000 agents per group");
-        const YAML::Node rect = item["rect"], circle = item["circle"];
-        if (rect.IsDefined() == circle.IsDefined()) {
-            m_f.error(item.Mark(), key, "give exactly one spawn area: 'rect' or 'circle'");
-        } else if (rect.IsDefined() && m_f.expectMap(rect, key + ".rect")) {
-            g.shape = AreaShape::Rect;
-            m_f.checkKeys(rect, key + ".rect", {"min", "max"});
-            if (m_f.readVec2(rect, "min", key + ".rect", g.min, true) &&
-                m_f.readVec2(rect, "max", key + ".rect", g.max, true) && (g.min.x > g.max.x || g.min.y > g.max.y))
-                m_f.error(rect.Mark(), key + ".rect", "min must not exceed max");
-        } else if (circle.IsDefined() && m_f.expectMap(circle, key + ".circle")) {
-            g.shape = AreaShape::Circle;
-            m_f.checkKeys(circle, key + ".circle", {"center", "radius"});
-            m_f.readVec2(circle, "center", key + ".circle", g.center, true);
-            m_f.readFloat(circle, "radius", key + ".circle", g.radiusM, true, Range::Positive);
-        }
+        readGroupArea(item, key, g);
         if (m_f.readName(item, "goal", key, g.goal, false) && !g.goal.empty())
             checkRef(item, "goal", key, g.goal, known("goal", g.goal), "goal");
         if (m_f.readName(item, "path", key, g.path, false) && !g.path.empty())
@@ -455,6 +444,64 @@ void SceneReader::readGroups(const YAML::Node& node, Scene& scene)
                             "'altitude' only affects fliers and is ignored here");
         }
         scene.groups.push_back(std::move(g));
+    }
+}
+
+void SceneReader::readGroupArea(const YAML::Node& item, const std::string& key, SpawnGroup& g)
+{
+    const YAML::Node rect = item["rect"], circle = item["circle"], shape = item["shape"], points = item["points"];
+    const bool polygon = shape.IsDefined() || points.IsDefined();
+    if (int(rect.IsDefined()) + int(circle.IsDefined()) + int(polygon) != 1) {
+        m_f.error(item.Mark(), key, "give exactly one spawn area: 'rect', 'circle' or 'shape: polygon' with 'points'");
+    } else if (rect.IsDefined() && m_f.expectMap(rect, key + ".rect")) {
+        g.shape = AreaShape::Rect;
+        m_f.checkKeys(rect, key + ".rect", {"min", "max"});
+        if (m_f.readVec2(rect, "min", key + ".rect", g.min, true) &&
+            m_f.readVec2(rect, "max", key + ".rect", g.max, true) && (g.min.x > g.max.x || g.min.y > g.max.y))
+            m_f.error(rect.Mark(), key + ".rect", "min must not exceed max");
+    } else if (circle.IsDefined() && m_f.expectMap(circle, key + ".circle")) {
+        g.shape = AreaShape::Circle;
+        m_f.checkKeys(circle, key + ".circle", {"center", "radius"});
+        m_f.readVec2(circle, "center", key + ".circle", g.center, true);
+        m_f.readFloat(circle, "radius", key + ".circle", g.radiusM, true, Range::Positive);
+    } else if (polygon) {
+        readGroupPolygon(item, key, g);
+    }
+}
+
+// A polygon is given by a shape key (not a map like rect and circle) so that its corners
+// read as every other list of points in the file does.
+void SceneReader::readGroupPolygon(const YAML::Node& item, const std::string& key, SpawnGroup& g)
+{
+    std::string shape;
+    if (!m_f.readString(item, "shape", key, shape, true))
+        return;
+    if (shape != "polygon") {
+        m_f.error(item["shape"].Mark(), key + ".shape",
+                  "unknown shape '" + shape + "': 'polygon' (a rectangle or circle is a 'rect' or 'circle' map)");
+        return;
+    }
+    g.shape = AreaShape::Polygon;
+    if (!m_f.readPolyline(item, "points", key, g.points, true, 3))
+        return;
+    const YAML::Mark at = item["points"].Mark();
+    // Corners all on one line fold back over themselves; say what is wrong with that
+    // rather than where the fold is.
+    const double area = polygonArea(g.points);
+    const bool flat = area < kMinPolygonAreaM2 && std::all_of(g.points.begin(), g.points.end(), [&](glm::vec2 p) {
+        const glm::dvec2 a(g.points.front()), b(g.points[g.points.size() / 2]), q(p);
+        return std::abs((b.x - a.x) * (q.y - a.y) - (b.y - a.y) * (q.x - a.x)) <= kMinPolygonAreaM2;
+    });
+    if (flat) {
+        m_f.error(at, key + ".points", "the polygon has no area: its corners lie on one line");
+    } else if (const auto crossing = polygonSelfCrossing(g.points)) {
+        const std::size_t n = g.points.size(), i = crossing->first, j = crossing->second;
+        auto edge = [n](std::size_t e) {
+            return "points[" + std::to_string(e) + "]-points[" + std::to_string((e + 1) % n) + "]";
+        };
+        m_f.error(at, key + ".points", "the polygon crosses itself: edge " + edge(i) + " meets edge " + edge(j));
+    } else if (area < kMinPolygonAreaM2) {
+        m_f.error(at, key + ".points", "the polygon has no area (under a square millimetre)");
     }
 }
 

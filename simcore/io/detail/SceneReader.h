@@ -32,6 +32,9 @@ private:
     // The hand-set variation of one agent (look, tint, height), checked against its type.
     void readAgentVariation(const YAML::Node& item, const std::string& key, const Scene& scene, Agent& a);
     void readGroups(const YAML::Node& node, Scene& scene);
+    // The spawn area of group `item`: exactly one of rect, circle and shape: polygon.
+    void readGroupArea(const YAML::Node& item, const std::string& key, SpawnGroup& g);
+    void readGroupPolygon(const YAML::Node& item, const std::string& key, SpawnGroup& g);
     void readPaths(const YAML::Node& node, Scene& scene);
     void readWalls(const YAML::Node& node, Scene& scene);
     void readObstacles(const YAML::Node& node, Scene& scene);

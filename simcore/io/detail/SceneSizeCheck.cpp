@@ -1,6 +1,7 @@
 #include "simcore/io/detail/SceneSizeCheck.h"
 
 #include "simcore/io/SceneLimits.h"
+#include "simcore/scene/SpawnArea.h"
 
 #include <glm/geometric.hpp>
 
@@ -122,8 +123,7 @@ void checkGroupDensity(YamlFields& f, const YAML::Node& root, const Scene& scene
         if (!type || g.count <= kDenseGroupFloor)
             continue;
         const double r = std::max(double(type->radiusM), 0.01);
-        const double area = g.shape == AreaShape::Circle ? 3.14159265358979 * double(g.radiusM) * double(g.radiusM)
-                                                         : double(g.max.x - g.min.x) * double(g.max.y - g.min.y);
+        const double area = spawnAreaM2(g);
         const bool flier = type->kind == AgentKind::Flier;
         // Hexagonal packing of discs on the ground, face-centred packing of balls in the air.
         const double height = std::max(double(g.altitudeM.y - g.altitudeM.x), 2.0 * r);
