@@ -2,6 +2,7 @@
 
 #include "editor/viewport/AgentGlyphMesh.h"
 #include "editor/viewport/AgentShaders.h"
+#include "editor/viewport/BirdGlyphMesh.h"
 #include "editor/viewport/CarGlyphMesh.h"
 #include "editor/viewport/ShaderProgram.h"
 #include "editor/viewport/ViewportPalette.h"
@@ -38,7 +39,7 @@ bool AgentRenderer::initialize(QOpenGLFunctions_3_3_Core& gl)
     m_program = buildShaderProgram("agent", shaders::kGlyphVertex, shaders::kGlyphFragment);
     if (!m_program)
         return false;
-    for (Instances* set : {&m_bodies, &m_cars}) {
+    for (Instances* set : {&m_bodies, &m_cars, &m_birds}) {
         gl.glGenBuffers(1, &set->buffer);
         gl.glGenVertexArrays(1, &set->spriteVao);
         gl.glBindVertexArray(set->spriteVao);
@@ -51,6 +52,9 @@ bool AgentRenderer::initialize(QOpenGLFunctions_3_3_Core& gl)
     createShape(gl, m_coarsePrism, AgentGlyphMesh::prism(AgentGlyphMesh::kCoarse), m_bodies.buffer);
     createShape(gl, m_carFlat, CarGlyphMesh::flat(), m_cars.buffer);
     createShape(gl, m_carSolid, CarGlyphMesh::solid(), m_cars.buffer);
+    createShape(gl, m_bird, BirdGlyphMesh::detailed(), m_birds.buffer);
+    createShape(gl, m_coarseBird, BirdGlyphMesh::coarse(), m_birds.buffer);
+    createShape(gl, m_farBird, BirdGlyphMesh::far(), m_birds.buffer);
     gl.glGenBuffers(1, &m_fallbackBuffer);
     m_spriteProgram = buildShaderProgram("agent impostor", shaders::kImpostorVertex, shaders::kImpostorFragment);
     return m_spriteProgram && m_characters.initialize(gl);
@@ -93,12 +97,13 @@ void AgentRenderer::createShape(QOpenGLFunctions_3_3_Core& gl, Shape& shape, con
 
 void AgentRenderer::destroy(QOpenGLFunctions_3_3_Core& gl)
 {
-    for (Shape* shape : {&m_flat, &m_prism, &m_coarseFlat, &m_coarsePrism, &m_carFlat, &m_carSolid}) {
+    for (Shape* shape :
+         {&m_flat, &m_prism, &m_coarseFlat, &m_coarsePrism, &m_carFlat, &m_carSolid, &m_bird, &m_coarseBird, &m_farBird}) {
         gl.glDeleteBuffers(1, &shape->vbo);
         gl.glDeleteVertexArrays(1, &shape->vao);
         *shape = {};
     }
-    for (Instances* set : {&m_bodies, &m_cars}) {
+    for (Instances* set : {&m_bodies, &m_cars, &m_birds}) {
         gl.glDeleteVertexArrays(1, &set->spriteVao);
         gl.glDeleteBuffers(1, &set->buffer);
         *set = {};
@@ -110,20 +115,20 @@ void AgentRenderer::destroy(QOpenGLFunctions_3_3_Core& gl)
     m_program.reset();
 }
 
-void AgentRenderer::upload(QOpenGLFunctions_3_3_Core& gl, std::span<const AgentGlyph> bodies,
-                           std::span<const AgentGlyph> cars, std::span<const AgentPose> bodyPoses,
-                           std::span<const AgentPose> carPoses)
+void AgentRenderer::upload(QOpenGLFunctions_3_3_Core& gl, AgentBatch bodies, AgentBatch cars, AgentBatch birds)
 {
     static_assert(sizeof(AgentGlyph) == 8 * sizeof(float), "the shader reads two vec4 per instance");
     if (!m_program)
         return;
-    uploadInstances(gl, m_bodies, bodies, bodyPoses);
-    uploadInstances(gl, m_cars, cars, carPoses);
+    uploadInstances(gl, m_bodies, bodies);
+    uploadInstances(gl, m_cars, cars);
+    uploadInstances(gl, m_birds, birds);
 }
 
-void AgentRenderer::uploadInstances(QOpenGLFunctions_3_3_Core& gl, Instances& set, std::span<const AgentGlyph> glyphs,
-                                    std::span<const AgentPose> poses)
+void AgentRenderer::uploadInstances(QOpenGLFunctions_3_3_Core& gl, Instances& set, AgentBatch batch)
 {
+    const std::span<const AgentGlyph> glyphs = batch.glyphs;
+    const std::span<const AgentPose> poses = batch.poses;
     if (poses.size() == glyphs.size())
         set.poses.assign(poses.begin(), poses.end());
     else
@@ -144,10 +149,12 @@ void AgentRenderer::draw(QOpenGLFunctions_3_3_Core& gl, const RenderView& view)
 {
     if (!m_program)
         return;
+    const int total = m_bodies.count + m_cars.count + m_birds.count;
     if (!m_levelOfDetail) {
-        const bool coarse = m_bodies.count + m_cars.count > kDetailedLimit;
+        const bool coarse = total > kDetailedLimit;
         drawSet(gl, view, m_bodies, coarse ? m_coarseFlat : m_flat, coarse ? m_coarsePrism : m_prism, coarse);
         drawSet(gl, view, m_cars, m_carFlat, m_carSolid, false);
+        drawBirds(gl, view, coarse);
         return;
     }
     m_lastDrawn = {};
@@ -156,13 +163,14 @@ void AgentRenderer::draw(QOpenGLFunctions_3_3_Core& gl, const RenderView& view)
     const bool p = view.perspective;
     // Cars first: few, and their characters matter most near the walkers they pass.
     const Shape& car = p ? m_carSolid : m_carFlat;
-    drawPlanned(gl, view, m_cars, car, car, DetailThresholds{0.0f, 0.0f});
+    drawPlanned(gl, view, m_cars, {car, car}, DetailThresholds{0.0f, 0.0f});
     // Past kDetailedLimit agents even the near ones keep the coarse glyph, as without
     // level of detail: under a software renderer each of its triangles costs.
-    const bool coarse = m_bodies.count + m_cars.count > kDetailedLimit;
+    const bool coarse = total > kDetailedLimit;
     const Shape& coarseBody = p ? m_coarsePrism : m_coarseFlat;
-    drawPlanned(gl, view, m_bodies, coarse ? coarseBody : (p ? m_prism : m_flat), coarseBody,
-                p ? kPerspectiveDetail : kTopDetail);
+    const DetailThresholds& thresholds = p ? kPerspectiveDetail : kTopDetail;
+    drawPlanned(gl, view, m_bodies, {coarse ? coarseBody : (p ? m_prism : m_flat), coarseBody}, thresholds);
+    drawPlanned(gl, view, m_birds, {coarse ? m_coarseBird : m_bird, m_coarseBird, &m_farBird, true}, thresholds);
     m_characters.draw(gl, view);
 }
 
@@ -192,23 +200,28 @@ void AgentRenderer::takeCharacters(const Instances& set)
 }
 
 void AgentRenderer::drawPlanned(QOpenGLFunctions_3_3_Core& gl, const RenderView& view, Instances& set,
-                                const Shape& detailed, const Shape& coarse, const DetailThresholds& thresholds)
+                                const Looks& looks, const DetailThresholds& thresholds)
 {
     if (set.count == 0)
         return;
     set.cells.plan(view, thresholds, set.plan);
+    const Shape &detailed = looks.detailed, &coarse = looks.coarse;
     std::span<const InstanceRange> near = set.plan.at(AgentDetail::Detailed);
     std::span<const InstanceRange> mid = set.plan.at(AgentDetail::Coarse);
+    std::span<const InstanceRange> far = set.plan.at(AgentDetail::Impostor);
     m_fallback.clear();
     if (m_agentsAsCharacters && view.perspective && !set.poses.empty() && m_characters.characterCount() > 0) {
         takeCharacters(set);
         near = m_glyphRanges[0];
         mid = m_glyphRanges[1];
     }
-    if (!near.empty() || !mid.empty() || !m_fallback.empty()) {
-        bindGlyphProgram(gl, view);
+    const bool farAsGlyphs = looks.far && !far.empty();
+    if (!near.empty() || !mid.empty() || !m_fallback.empty() || farAsGlyphs) {
+        bindGlyphProgram(gl, view, looks.bird);
         drawRanges(gl, detailed.vao, set.buffer, detailed.vertexCount, near);
         drawRanges(gl, coarse.vao, set.buffer, coarse.vertexCount, mid);
+        if (farAsGlyphs)
+            drawRanges(gl, looks.far->vao, set.buffer, looks.far->vertexCount, far);
         if (!m_fallback.empty()) {
             // Near agents whose type has no character: the detailed glyph, from a buffer of their own.
             gl.glBindBuffer(GL_ARRAY_BUFFER, m_fallbackBuffer);
@@ -219,8 +232,8 @@ void AgentRenderer::drawPlanned(QOpenGLFunctions_3_3_Core& gl, const RenderView&
         }
         m_program->release();
     }
-    if (!set.plan.at(AgentDetail::Impostor).empty())
-        drawSprites(gl, view, set, set.plan.at(AgentDetail::Impostor));
+    if (!looks.far && !far.empty())
+        drawSprites(gl, view, set, far);
     for (int d = 0; d < kAgentDetailLevels; ++d)
         m_lastDrawn[std::size_t(d)] += set.plan.agents[std::size_t(d)];
 }
@@ -239,14 +252,15 @@ void AgentRenderer::drawRanges(QOpenGLFunctions_3_3_Core& gl, unsigned vao, unsi
     gl.glBindVertexArray(0);
 }
 
-void AgentRenderer::bindGlyphProgram(QOpenGLFunctions_3_3_Core& gl, const RenderView& view)
+void AgentRenderer::bindGlyphProgram(QOpenGLFunctions_3_3_Core& gl, const RenderView& view, bool bird)
 {
     m_program->bind();
     gl.glUniformMatrix4fv(m_program->uniformLocation("u_viewProjection"), 1, GL_FALSE,
                           glm::value_ptr(view.viewProjection));
-    m_program->setUniformValue("u_minRadiusAtW1", kMinRadiusPx * view.metresPerPixel);
+    m_program->setUniformValue("u_minRadiusAtW1", (bird ? kMinBirdRadiusPx : kMinRadiusPx) * view.metresPerPixel);
     m_program->setUniformValue("u_heightScale", view.perspective ? 1.0f : 0.0f);
     m_program->setUniformValue("u_lit", view.perspective);
+    m_program->setUniformValue("u_bird", bird);
     const glm::vec4 nose = palette::kAgentNose;
     m_program->setUniformValue("u_noseColour", nose.r, nose.g, nose.b);
 }
@@ -268,6 +282,19 @@ void AgentRenderer::drawSet(QOpenGLFunctions_3_3_Core& gl, const RenderView& vie
     bindGlyphProgram(gl, view);
     const InstanceRange all{0, set.count};
     drawRanges(gl, shape->vao, set.buffer, shape->vertexCount, {&all, 1});
+    m_program->release();
+}
+
+void AgentRenderer::drawBirds(QOpenGLFunctions_3_3_Core& gl, const RenderView& view, bool coarse)
+{
+    if (m_birds.count == 0)
+        return;
+    // Where a walker would be an impostor, the bird of two triangles: never a walker's shape.
+    const bool tiny = !view.perspective && m_birds.maxRadiusM < kSpriteBelowPx * view.metresPerPixel;
+    const Shape& shape = tiny ? m_farBird : (coarse ? m_coarseBird : m_bird);
+    bindGlyphProgram(gl, view, true);
+    const InstanceRange all{0, m_birds.count};
+    drawRanges(gl, shape.vao, m_birds.buffer, shape.vertexCount, {&all, 1});
     m_program->release();
 }
 

@@ -1,10 +1,11 @@
 #pragma once
 // Draws every agent with instanced calls: flat oriented glyphs in the top view, lit
-// prisms in perspective, and vehicles as cars (a second instance set), never smaller
-// than a few pixels. With level of detail (the default) agents are sorted into ground
+// prisms in perspective, vehicles as cars and fliers as birds (instance sets of their
+// own), never smaller than a few pixels. With level of detail (the default) agents are sorted into ground
 // cells once per upload, and each frame draws only the cells in view: near ones with the
 // detailed glyph, farther ones with the coarse glyph, and those only a few pixels wide as
-// impostors (one small quad each, showing the same silhouette, shading and nose).
+// impostors (one small quad each, showing the same silhouette, shading and nose); far
+// birds are a bird of two triangles, never a walker's impostor.
 // In perspective, near agents whose type has a character are drawn as that character
 // (CharacterRenderer), posed and scaled per agent, up to kCharacterLimit of them.
 // Owns its GL buffers; create, draw and destroy it with the context current. Knows
@@ -29,9 +30,18 @@ namespace throng::editor {
 
 struct GlyphVertex;
 
+// One kind of agent to draw: its glyphs and, empty or one per glyph, the characters they
+// wear (see AgentRenderer::setCharacters).
+struct AgentBatch {
+    std::span<const AgentGlyph> glyphs;
+    std::span<const AgentPose> poses;
+};
+
 class AgentRenderer {
 public:
     static constexpr float kMinRadiusPx = 2.0f;
+    // A bird is its wings: thin, so it keeps a wingspan of at least 6 pixels.
+    static constexpr float kMinBirdRadiusPx = 3.0f;
     // Coarse glyphs above this many agents, or when agents are under kCoarseBelowPx in
     // radius on screen (top view): their detail would not show, their vertices would cost.
     static constexpr int kDetailedLimit = 5000;
@@ -50,10 +60,8 @@ public:
 
     bool initialize(QOpenGLFunctions_3_3_Core& gl);
     void destroy(QOpenGLFunctions_3_3_Core& gl);
-    // `bodies` are walkers and fliers, `cars` vehicles; `bodyPoses` and `carPoses` are
-    // empty or one per glyph (the character each wears, see setCharacters).
-    void upload(QOpenGLFunctions_3_3_Core& gl, std::span<const AgentGlyph> bodies, std::span<const AgentGlyph> cars,
-                std::span<const AgentPose> bodyPoses = {}, std::span<const AgentPose> carPoses = {});
+    // `bodies` are walkers, `cars` vehicles and `birds` fliers.
+    void upload(QOpenGLFunctions_3_3_Core& gl, AgentBatch bodies, AgentBatch cars, AgentBatch birds = {});
     // The characters AgentPose::character indexes.
     void setCharacters(QOpenGLFunctions_3_3_Core& gl, std::span<const PoseTable> tables)
     {
@@ -78,6 +86,13 @@ private:
         unsigned vao = 0, vbo = 0;
         int vertexCount = 0;
     };
+    // The shapes one instance set is drawn with at each level of detail.
+    struct Looks {
+        const Shape& detailed;
+        const Shape& coarse;
+        const Shape* far = nullptr;  // impostor-level agents; null: impostor quads
+        bool bird = false;           // the shapes are BirdGlyphMesh's
+    };
     struct Instances {
         unsigned buffer = 0, spriteVao = 0;
         int count = 0;
@@ -89,23 +104,23 @@ private:
     void createShape(QOpenGLFunctions_3_3_Core& gl, Shape& shape, const std::vector<GlyphVertex>& vertices,
                      unsigned instances);
     void bindInstanceAttributes(QOpenGLFunctions_3_3_Core& gl, unsigned instances, bool divisor);
-    void uploadInstances(QOpenGLFunctions_3_3_Core& gl, Instances& set, std::span<const AgentGlyph> glyphs,
-                         std::span<const AgentPose> poses);
+    void uploadInstances(QOpenGLFunctions_3_3_Core& gl, Instances& set, AgentBatch batch);
     void takeCharacters(const Instances& set);
     void drawSet(QOpenGLFunctions_3_3_Core& gl, const RenderView& view, const Instances& set, const Shape& flat,
                  const Shape& solid, bool coarse);
     void drawSprites(QOpenGLFunctions_3_3_Core& gl, const RenderView& view, const Instances& set,
                      std::span<const InstanceRange> ranges);
-    void drawPlanned(QOpenGLFunctions_3_3_Core& gl, const RenderView& view, Instances& set, const Shape& detailed,
-                     const Shape& coarse, const DetailThresholds& thresholds);
-    void bindGlyphProgram(QOpenGLFunctions_3_3_Core& gl, const RenderView& view);
+    void drawBirds(QOpenGLFunctions_3_3_Core& gl, const RenderView& view, bool coarse);
+    void drawPlanned(QOpenGLFunctions_3_3_Core& gl, const RenderView& view, Instances& set, const Looks& looks,
+                     const DetailThresholds& thresholds);
+    void bindGlyphProgram(QOpenGLFunctions_3_3_Core& gl, const RenderView& view, bool bird = false);
     void drawRanges(QOpenGLFunctions_3_3_Core& gl, unsigned vao, unsigned instances, int vertexCount,
                     std::span<const InstanceRange> ranges);
 
     std::unique_ptr<QOpenGLShaderProgram> m_program;
     std::unique_ptr<QOpenGLShaderProgram> m_spriteProgram;
-    Shape m_flat, m_prism, m_coarseFlat, m_coarsePrism, m_carFlat, m_carSolid;
-    Instances m_bodies, m_cars;
+    Shape m_flat, m_prism, m_coarseFlat, m_coarsePrism, m_carFlat, m_carSolid, m_bird, m_coarseBird, m_farBird;
+    Instances m_bodies, m_cars, m_birds;
     bool m_levelOfDetail = true;
     bool m_agentsAsCharacters = false;
     CharacterRenderer m_characters;

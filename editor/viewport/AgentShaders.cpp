@@ -3,7 +3,7 @@
 namespace throng::editor::shaders {
 
 // Heading h turns the glyph's +x nose to (cos h, 0, -sin h): counter-clockwise about +y
-// seen from above, as the scene defines headings.
+// seen from above, as the scene defines headings. u_bird: the mesh is BirdGlyphMesh's.
 const char* const kGlyphVertex = R"(#version 330 core
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;
@@ -13,6 +13,7 @@ layout(location = 4) in vec4 i_radiusColour;
 uniform mat4 u_viewProjection;
 uniform float u_minRadiusAtW1;
 uniform float u_heightScale;
+uniform bool u_bird;
 out vec3 v_colour;
 out vec3 v_normal;
 flat out int v_part;
@@ -22,7 +23,8 @@ void main()
     float c = cos(i_positionHeading.w), s = sin(i_positionHeading.w);
     float w = (u_viewProjection * vec4(centre, 1.0)).w;
     float radius = max(i_radiusColour.x, u_minRadiusAtW1 * w);
-    float height = u_heightScale * clamp(5.5 * i_radiusColour.x, 0.5, 1.8);
+    // A bird's y is in units of its (widened) radius: the same shape at any distance.
+    float height = u_heightScale * (u_bird ? radius : clamp(5.5 * i_radiusColour.x, 0.5, 1.8));
     vec2 local = a_position.xz * radius;
     vec3 p = centre + vec3(local.x * c + local.y * s, a_position.y * height, -local.x * s + local.y * c);
     v_normal = vec3(a_normal.x * c + a_normal.z * s, a_normal.y, -a_normal.x * s + a_normal.z * c);

@@ -2,6 +2,7 @@
 
 #include "editor/viewport/GroundRay.h"
 #include "editor/viewport/SetGeometryBuilder.h"
+#include "editor/viewport/SetSolids.h"
 #include "editor/viewport/SteeringOverlay.h"
 #include "editor/viewport/ToolOverlay.h"
 #include "editor/viewport/TrailBuilder.h"
@@ -167,6 +168,8 @@ void Viewport::setSet(const sim::Scene& scene)
 {
     m_setMesh.clear();
     SetGeometryBuilder::addSet(scene, m_setMesh);
+    m_solidMesh.clear();
+    SetSolids::addSet(scene, m_solidMesh);
     m_setChanged = true;
     m_traffic = {};
     m_traffic.lanes = scene.lanes;
@@ -181,9 +184,11 @@ void Viewport::setSet(const sim::Scene& scene)
     m_charactersChanged = m_agentCharacters.setScene(scene, m_sceneDirectory) || m_charactersChanged;
     m_typeRadiusM.clear();
     m_typeIsVehicle.clear();
+    m_typeIsFlier.clear();
     for (const sim::AgentType& t : scene.agentTypes) {
         m_typeRadiusM.push_back(t.radiusM);
         m_typeIsVehicle.push_back(t.kind == sim::AgentKind::Vehicle);
+        m_typeIsFlier.push_back(t.kind == sim::AgentKind::Flier);
     }
     m_boundsMin = scene.settings.boundsMin;
     m_boundsMax = scene.settings.boundsMax;
@@ -220,8 +225,10 @@ void Viewport::setAgents(std::span<const sim::AgentFrame> frames, std::span<cons
     m_agentCharacters.posesFor(frames.first(n), agents.first(n), m_shownPoses);
     m_glyphs.clear();
     m_carGlyphs.clear();
+    m_birdGlyphs.clear();
     m_glyphPoses.clear();
     m_carPoses.clear();
+    m_birdPoses.clear();
     m_glyphs.reserve(n);
     m_agentBox = {};
     std::vector<std::size_t> perType(m_typeNames.size(), 0);
@@ -240,8 +247,10 @@ void Viewport::setAgents(std::span<const sim::AgentFrame> frames, std::span<cons
             ++perType[type];
         const float radius = type < m_typeRadiusM.size() ? m_typeRadiusM[type] : kFallbackRadiusM;
         const bool car = type < m_typeIsVehicle.size() && m_typeIsVehicle[type];
-        (car ? m_carGlyphs : m_glyphs).push_back({frames[i].position, frames[i].headingRad, radius, colours[i]});
-        (car ? m_carPoses : m_glyphPoses).push_back(m_shownPoses[i]);
+        const bool bird = type < m_typeIsFlier.size() && m_typeIsFlier[type];
+        (car ? m_carGlyphs : bird ? m_birdGlyphs : m_glyphs)
+            .push_back({frames[i].position, frames[i].headingRad, radius, colours[i]});
+        (car ? m_carPoses : bird ? m_birdPoses : m_glyphPoses).push_back(m_shownPoses[i]);
         m_agentBox.include({frames[i].position.x, frames[i].position.z}, radius);
     }
     m_hudCounts.shown = shown;
@@ -269,6 +278,8 @@ void Viewport::setAgents(std::span<const sim::AgentFrame> frames, std::span<cons
     m_overlay->update();  // the select tool's circles follow the agents too
     m_lightMesh.clear();
     SetGeometryBuilder::addLights(m_traffic, timeS, m_lightMesh);
+    m_lampMesh.clear();
+    SetSolids::addLamps(m_traffic.trafficLights, m_terrain, timeS, m_lampMesh);
     m_lightsChanged = true;
     updateHud();
     emit agentsChanged();
@@ -542,7 +553,7 @@ void Viewport::initializeGL()
     if (!m_grid.initialize(*this) || !m_setRenderer.initialize(*this) || !m_lightRenderer.initialize(*this) ||
         !m_highlightRenderer.initialize(*this) || !m_overlayRenderer.initialize(*this) ||
         !m_fieldRenderer.initialize(*this) || !m_heatRenderer.initialize(*this) ||
-        !m_agentRenderer.initialize(*this)) {
+        !m_agentRenderer.initialize(*this) || !m_solidRenderer.initialize(*this) || !m_lampRenderer.initialize(*this)) {
         m_glProblem = tr("the viewport's shaders did not compile (see the log)");
         return;
     }
@@ -568,6 +579,8 @@ void Viewport::releaseGl()
     m_fieldRenderer.destroy(*this);
     m_heatRenderer.destroy(*this);
     m_agentRenderer.destroy(*this);
+    m_solidRenderer.destroy(*this);
+    m_lampRenderer.destroy(*this);
     m_glReady = false;
 }
 
@@ -580,14 +593,18 @@ void Viewport::resizeGL(int, int)
 
 void Viewport::uploadChanged()
 {
-    if (m_setChanged)
+    if (m_setChanged) {
         m_setRenderer.upload(*this, m_setMesh);
-    if (m_lightsChanged)
+        m_solidRenderer.upload(*this, m_solidMesh);
+    }
+    if (m_lightsChanged) {
         m_lightRenderer.upload(*this, m_lightMesh);
+        m_lampRenderer.upload(*this, m_lampMesh);
+    }
     if (m_charactersChanged)
         m_agentRenderer.setCharacters(*this, m_agentCharacters.poseTables());
     if (m_agentsChanged)
-        m_agentRenderer.upload(*this, m_glyphs, m_carGlyphs, m_glyphPoses, m_carPoses);
+        m_agentRenderer.upload(*this, {m_glyphs, m_glyphPoses}, {m_carGlyphs, m_carPoses}, {m_birdGlyphs, m_birdPoses});
     if (m_highlightChanged)
         m_highlightRenderer.upload(*this, m_highlightMesh);
     if (m_overlayChanged)
@@ -615,7 +632,7 @@ void Viewport::paintGL()
     uploadChanged();
     const RenderView view = m_camera.renderView();
 
-    // The ground layers are flat and drawn back to front; only agents need depth.
+    // The ground layers are flat and drawn back to front; only the 3D set and agents need depth.
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_CULL_FACE);
     glEnable(GL_BLEND);
@@ -630,6 +647,8 @@ void Viewport::paintGL()
     if (view.perspective) {
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(GL_LESS);
+        m_solidRenderer.draw(*this, view);
+        m_lampRenderer.draw(*this, view);
     }
     m_agentRenderer.draw(*this, view);
     glDisable(GL_DEPTH_TEST);

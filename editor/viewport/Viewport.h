@@ -19,6 +19,7 @@
 #include "editor/viewport/ShownAgents.h"
 #include "editor/viewport/ViewportHud.h"
 #include "editor/viewport/ViewportOverlays.h"
+#include "editor/viewport/SolidRenderer.h"
 #include "simcore/scene/Scene.h"
 #include "simcore/world/DebugSink.h"
 #include "simcore/world/FrameCache.h"
@@ -96,7 +97,7 @@ public:
     // frame has them, into the view; everything when nothing selected has a place.
     void frameSelection();
 
-    std::size_t agentCount() const { return m_glyphs.size() + m_carGlyphs.size(); }
+    std::size_t agentCount() const { return m_glyphs.size() + m_carGlyphs.size() + m_birdGlyphs.size(); }
     std::size_t frameIndex() const { return m_frameIndex; }
     // Simulation time of the shown agents; empty when no World could be built.
     std::optional<double> timeS() const { return m_timeS; }
@@ -192,6 +193,7 @@ private:
     ShapeRenderer m_fieldRenderer;
     ShapeRenderer m_heatRenderer;
     AgentRenderer m_agentRenderer;
+    SolidRenderer m_solidRenderer, m_lampRenderer;  // the 3D set, and its lamps relit every frame
 
     // What is shown, kept on the CPU until the next paint uploads it.
     ShapeMesh m_setMesh;
@@ -207,11 +209,13 @@ private:
     std::size_t m_fieldGoal = 0;  // the selected goal, else the first
     DensityHeatmap m_heatmap;
     std::vector<float> m_density;  // agents per m² where each shown agent stands
+    SolidMesh m_solidMesh, m_lampMesh;
     SelectionMarks m_marks;
     ShownAgents m_shown;  // the shown frame's agents, by World index
-    std::vector<AgentGlyph> m_glyphs;     // walkers and fliers
+    std::vector<AgentGlyph> m_glyphs;     // walkers
     std::vector<AgentGlyph> m_carGlyphs;  // vehicles, drawn as cars
-    std::vector<AgentPose> m_glyphPoses, m_carPoses;  // the characters they wear, one per glyph
+    std::vector<AgentGlyph> m_birdGlyphs;  // fliers, drawn as birds
+    std::vector<AgentPose> m_glyphPoses, m_carPoses, m_birdPoses;  // the characters they wear, one per glyph
     std::vector<AgentPose> m_shownPoses;              // scratch: one per shown agent
     bool m_charactersChanged = true;
     bool m_setChanged = true, m_lightsChanged = true, m_agentsChanged = true, m_highlightChanged = true;
@@ -220,6 +224,7 @@ private:
     sim::Terrain m_terrain;
     std::vector<float> m_typeRadiusM;   // by Scene::agentTypes index
     std::vector<bool> m_typeIsVehicle;  // by Scene::agentTypes index
+    std::vector<bool> m_typeIsFlier;    // by Scene::agentTypes index
     AgentColours m_agentColours;
     AgentCharacters m_agentCharacters;
     std::string m_sceneDirectory;

@@ -18,12 +18,14 @@ inline constexpr glm::vec4 kPathBand{0.224f, 0.290f, 0.380f, 1.0f};     // the r
 inline constexpr glm::vec4 kPathLine{0.420f, 0.650f, 1.000f, 1.0f};
 inline constexpr glm::vec4 kObstacleFill{0.455f, 0.404f, 0.349f, 1.0f};
 inline constexpr glm::vec4 kObstacleEdge{0.690f, 0.620f, 0.545f, 1.0f};
+inline constexpr glm::vec4 kObstacleSolid{0.640f, 0.570f, 0.490f, 1.0f};  // 3D view, lit
 inline constexpr glm::vec4 kGoal{0.380f, 0.850f, 0.560f, 1.0f};
 inline constexpr glm::vec4 kLane{0.165f, 0.173f, 0.184f, 1.0f};
 inline constexpr glm::vec4 kLaneEdge{0.420f, 0.435f, 0.455f, 1.0f};
 inline constexpr glm::vec4 kLaneCentre{0.860f, 0.760f, 0.330f, 1.0f};
 inline constexpr glm::vec4 kCrosswalkStripe{0.880f, 0.880f, 0.870f, 1.0f};
 inline constexpr glm::vec4 kLightHousing{0.080f, 0.085f, 0.090f, 1.0f};
+inline constexpr glm::vec4 kLightPole{0.420f, 0.440f, 0.460f, 1.0f};      // 3D view, lit
 inline constexpr glm::vec4 kLightGreen{0.240f, 0.860f, 0.420f, 1.0f};
 inline constexpr glm::vec4 kLightYellow{1.000f, 0.780f, 0.200f, 1.0f};
 inline constexpr glm::vec4 kLightRed{1.000f, 0.300f, 0.300f, 1.0f};

@@ -47,6 +47,8 @@ void writeSceneSet(YamlWriter& w, const Scene& s)
         for (const Wall& wall : s.walls) {
             o << YAML::Flow << YAML::BeginMap;
             w.kvOpt("name", wall.name);
+            if (wall.heightM != Wall{}.heightM)
+                w.kvf("height", wall.heightM);
             w.key("points");
             w.polyline(wall.points);
             o << YAML::EndMap;

@@ -39,9 +39,10 @@ QByteArray walkerYaml(const char* character = "man")
                           "     variation: {tints: [[0.9, 0.35, 0.1]], height: [1, 1]}}\n"
                           "agents:\n"
                           "  - {type: walker, position: [0, 0], heading: 0}\n"
+                          // Low walls: in 3D they must hide none of the character.
                           "walls:\n"
-                          "  - {points: [[-3, -2], [3, -2]]}\n"
-                          "  - {points: [[-3, 2], [3, 2]]}\n")
+                          "  - {points: [[-3, -2], [3, -2]], height: 0.1}\n"
+                          "  - {points: [[-3, 2], [3, 2]], height: 0.1}\n")
         .arg(character)
         .toUtf8();
 }

@@ -30,9 +30,10 @@ QByteArray plazaYaml(int headingDeg)
                           "agents:\n"
                           "  - {type: walker, position: [0, 0], heading: %1}\n"
                           "  - {type: runner, position: [2, 1.5]}\n"
+                          // Low walls: in 3D they must hide no ground nor agent.
                           "walls:\n"
-                          "  - {points: [[-4, -3], [4, -3]]}\n"
-                          "  - {points: [[-4, 3], [4, 3]]}\n")
+                          "  - {points: [[-4, -3], [4, -3]], height: 0.1}\n"
+                          "  - {points: [[-4, 3], [4, 3]], height: 0.1}\n")
         .arg(headingDeg)
         .toUtf8();
 }

@@ -71,7 +71,7 @@ sim::Scene makeRandomScene(std::uint32_t seed, std::uint32_t agentCount)
     }
     s.goals = {{"exit", pt(), f(0.5f, 3)}, {"door", pt(), 1.0f}};
     s.paths = {{"main", line(5), f(0.5f, 3), false}, {"ring", line(4), 2.0f, true}};
-    s.walls = {{"north", line(3)}, {"", line(2)}};
+    s.walls = {{"north", line(3), f(0.1f, 8)}, {"", line(2)}};  // the second keeps the default height
     s.obstacles = {{"pillar", ObstacleShape::Circle, pt(), f(0.2f, 2), glm::vec2(1.0f), 0.0f},
                    {"", ObstacleShape::Box, pt(), 0.5f, {f(1, 4), f(1, 4)}, f(-180, 180)}};
     s.terrain.origin = pt();

@@ -160,6 +160,24 @@ private slots:
         QVERIFY(noDir.error.find("missing/dir") != std::string::npos);
     }
 
+    // A wall stands 2.5 m high unless height says otherwise; only other heights are written.
+    void wallHeightRoundTrips()
+    {
+        const LoadResult r = parseScene("throng: 1\nwalls:\n  - {points: [[0, 0], [5, 0]], height: 3.75}\n"
+                                        "  - {points: [[0, 2], [5, 2]]}\n",
+                                        "walls.yaml", "");
+        QVERIFY2(r.ok(), r.diagnostics.empty() ? "" : r.diagnostics[0].format().c_str());
+        QCOMPARE(r.scene.walls[0].heightM, 3.75f);
+        QCOMPARE(r.scene.walls[1].heightM, 2.5f);
+        const std::string text = sceneToYaml(r.scene);
+        QVERIFY2(text.find("height: 3.75") != std::string::npos, text.c_str());
+        QCOMPARE(text.find("height:"), text.rfind("height:"));  // the default one is left out
+        Scene changed = r.scene;
+        changed.walls[1].heightM = 0.4f;
+        QTemporaryDir dir;
+        checkRoundTrip(changed, dir.path());
+    }
+
     void defaultsApplyWhenKeysAreOmitted()
     {
         const LoadResult r = parseScene("throng: 1\nagent_types:\n  - {name: w}\n  - {name: car, kind: vehicle}\n"

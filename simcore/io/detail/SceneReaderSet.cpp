@@ -65,10 +65,11 @@ void SceneReader::readWalls(const YAML::Node& node, Scene& scene)
         const YAML::Node item = node[i];
         if (!m_f.expectMap(item, key))
             continue;
-        m_f.checkKeys(item, key, {"name", "points"});
+        m_f.checkKeys(item, key, {"name", "points", "height"});
         Wall w;
         m_f.readName(item, "name", key, w.name, false);
         m_f.readPolyline(item, "points", key, w.points, true, 2);
+        m_f.readFloat(item, "height", key, w.heightM, false, Range::Positive);
         scene.walls.push_back(std::move(w));
     }
 }
