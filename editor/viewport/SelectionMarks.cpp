@@ -54,15 +54,21 @@ std::vector<sim::AgentId> SelectionMarks::watchedIds() const
 std::vector<std::size_t> SelectionMarks::followed(const ShownAgents& shown, std::size_t max) const
 {
     std::vector<std::size_t> indices;
-    for (const sim::AgentId id : watchedIds())
-        if (const std::size_t i = shown.find(id); i != ShownAgents::kNone && indices.size() < max)
+    auto add = [&](std::size_t i) {
+        if (i != ShownAgents::kNone && indices.size() < max && std::find(indices.begin(), indices.end(), i) == indices.end())
             indices.push_back(i);
+    };
+    for (const sim::AgentId id : {m_focused, m_inspected})
+        if (id != 0)
+            add(shown.find(id));
+    for (const SelectionHighlight::AgentRing& r : m_rings)  // by their likely index first
+        add(shown.find(r.id, r.hint));
     for (std::size_t i = 0; i < shown.size() && indices.size() < max && !m_groupIds.empty(); ++i) {
         const sim::AgentId id = shown.id(i);
         const bool member = std::any_of(m_groupIds.begin(), m_groupIds.end(),
                                         [id](const auto& ids) { return id >= ids.first && id < ids.second; });
-        if (member && std::find(indices.begin(), indices.end(), i) == indices.end())
-            indices.push_back(i);
+        if (member)
+            add(i);
     }
     return indices;
 }

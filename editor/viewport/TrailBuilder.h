@@ -15,8 +15,12 @@ class TrailBuilder {
 public:
     // Most trails drawn at once (the first ones of `agents`).
     static constexpr std::size_t kMaxTrails = 256;
-    // Frames of one trail drawn with the same opacity.
-    static constexpr std::size_t kFramesPerPiece = 6;
+    // Points of one trail at most: a longer trail takes every second, third, ... frame
+    // (an agent walks a few decimetres between them), so its cost does not grow with the
+    // frame rate or the length asked for.
+    static constexpr std::size_t kMaxPoints = 32;
+    // Points of one trail drawn with the same opacity.
+    static constexpr std::size_t kPointsPerPiece = 6;
 
     // Trails of cache agents `agents` over frames (frame - lengthFrames, frame] of `cache`.
     static void add(const sim::FrameCache& cache, std::size_t frame, std::span<const std::size_t> agents,

@@ -180,11 +180,12 @@ sim::AgentDebug steeringOf(const sim::Scene& scene, std::size_t i)
 }
 
 // Median milliseconds per frame shown (showFrame, then a synchronous repaint) during
-// playback, with nothing over the agents (as before the HUD) and with the HUD, agents
-// coloured by speed, the density map, trails behind 256 selected agents and the steering
-// of 8 (fields off: the crowd has no strokes or goals), frames of the two taken in turn.
+// playback, with nothing over the agents (as before the HUD), with the HUD alone, and
+// with the HUD, agents coloured by speed, the density map, trails behind 256 selected
+// agents and the steering of 8 (fields off: the crowd has no strokes or goals), frames
+// of the three taken in turn.
 struct OverlayTimes {
-    double plainMs = 0.0, overlaysMs = 0.0;
+    double plainMs = 0.0, hudMs = 0.0, overlaysMs = 0.0;
 };
 
 OverlayTimes overlayTimes(Viewport& viewport, const sim::Scene& scene, const sim::FrameCache& cache, ViewMode mode,
@@ -202,13 +203,15 @@ OverlayTimes overlayTimes(Viewport& viewport, const sim::Scene& scene, const sim
         steering.push_back(steeringOf(scene, k * step));
     ViewportOverlays plain;
     plain.hud = false;
+    const ViewportOverlays hudOnly;
     ViewportOverlays all;
     all.trails = all.steering = all.density = true;
-    std::vector<double> without, with;
+    std::vector<double> without, hud, with;
     for (int i = 0; i <= frames; ++i) {
         const std::size_t frame = 24 + std::size_t(i) % (cache.frameCount() - 24);
-        for (const bool on : {false, true}) {
-            viewport.setOverlays(on ? all : plain);
+        for (const int level : {0, 1, 2}) {
+            const bool on = level == 2;
+            viewport.setOverlays(level == 0 ? plain : level == 1 ? hudOnly : all);
             viewport.setColourBy(on ? ColourBy::Speed : ColourBy::Tint);
             viewport.setHighlight(scene, on ? selected : Selection{});
             viewport.setSteering(on ? steering : std::vector<sim::AgentDebug>{});
@@ -218,18 +221,19 @@ OverlayTimes overlayTimes(Viewport& viewport, const sim::Scene& scene, const sim
             const double showMs = double(t.nsecsElapsed()) / 1e6;
             const double ms = showMs + repaintMs(viewport);
             if (i > 0)
-                (on ? with : without).push_back(ms);
+                (level == 0 ? without : level == 1 ? hud : with).push_back(ms);
         }
     }
     viewport.setOverlays(ViewportOverlays{});
     viewport.setColourBy(ColourBy::Tint);
     viewport.setHighlight(scene, {});
-    return {median(without), median(with)};
+    return {median(without), median(hud), median(with)};
 }
 
 void printOverlayTimes(const char* name, const OverlayTimes& t, bool last)
 {
-    std::cout << "    \"" << name << "\": {\"plain_ms\": " << t.plainMs << ", \"overlays_ms\": " << t.overlaysMs
+    std::cout << "    \"" << name << "\": {\"plain_ms\": " << t.plainMs << ", \"hud_ms\": " << t.hudMs
+              << ", \"overlays_ms\": " << t.overlaysMs
               << ", \"overlays_over_plain\": " << (t.plainMs > 0.0 ? t.overlaysMs / t.plainMs : 0.0) << "}"
               << (last ? "\n" : ",\n");
 }

@@ -2,7 +2,8 @@
 // window driven as a user drives it (never a test). Run under a display:
 //   xvfb-run -a -s "-screen 0 1920x1080x24" editor_screenshots OUTDIR
 // writes OUTDIR/editor-layout.png, editor-brains.png, editor-new-scene.png,
-// editor-timeline.png, editor-shortcuts.png, editor-overlays.png and editor-steering.png.
+// editor-timeline.png, editor-shortcuts.png, editor-overlays.png, editor-steering.png and
+// editor-3d-set.png.
 #include "EditorUiDriver.h"
 
 #include "editor/DarkTheme.h"
@@ -18,6 +19,7 @@
 #include <QDialog>
 #include <QDir>
 #include <QDockWidget>
+#include <QSettings>
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
@@ -38,6 +40,13 @@ bool save(QWidget& widget, const QString& path)
     const bool ok = widget.grab().save(path);
     std::cout << (ok ? "wrote " : "could not write ") << path.toStdString() << '\n';
     return ok;
+}
+
+// The View menu's choices as a first launch has them (the HUD on, agents by tint, no
+// overlays), whatever an earlier picture or run left in the settings.
+void defaultViewSettings()
+{
+    QSettings().remove("viewport");
 }
 
 void playTo(MainWindow& window, std::size_t frame)
@@ -66,6 +75,7 @@ int main(int argc, char** argv)
     bool ok = true;
     {
         // A new scene: a pedestrian type, a spawn group drawn, a wall and a goal.
+        defaultViewSettings();
         MainWindow window;
         window.resize(1280, 800);
         window.show();
@@ -92,6 +102,7 @@ int main(int argc, char** argv)
         QTest::mouseRelease(&window.viewport(), Qt::LeftButton, Qt::NoModifier, pixelOf(window, {-15, 28}));
     }
     {
+        defaultViewSettings();
         MainWindow window;
         if (!showWithScene(window, dir, "crossroads.yaml"))
             return 1;
@@ -119,6 +130,7 @@ int main(int argc, char** argv)
     {
         // The viewport explaining the crowd: agents by speed, the HUD, a walker clicked in
         // the selected group with its trail and steering, the density under the crowd.
+        defaultViewSettings();
         MainWindow window;
         if (!showWithScene(window, dir, "crossroads.yaml"))
             return 1;
@@ -162,6 +174,26 @@ int main(int argc, char** argv)
             }
         QTest::qWait(300);
         ok = save(viewport, out + "/editor-steering.png") && ok;
+    }
+    {
+        // The 3D set: the crossroads' walls, signal poles and striped crossings in 3D.
+        defaultViewSettings();
+        MainWindow window;
+        if (!showWithScene(window, dir, "crossroads.yaml"))
+            return 1;
+        window.resize(1280, 800);
+        QTest::qWait(100);
+        Viewport& viewport = window.viewport();
+        QTest::keyClick(&viewport, Qt::Key_2, Qt::ControlModifier);
+        viewport.frameAll();
+        for (int k = 0; k < 5; ++k) {  // in towards the middle of the crossing
+            const QPointF at(viewport.width() * 0.5, viewport.height() * 0.55);
+            QWheelEvent wheel(at, viewport.mapToGlobal(at), QPoint(), QPoint(0, 120), Qt::NoButton, Qt::NoModifier,
+                              Qt::NoScrollPhase, false);
+            QApplication::sendEvent(&viewport, &wheel);
+        }
+        playTo(window, 300);
+        ok = save(viewport, out + "/editor-3d-set.png") && ok;
     }
     return ok ? 0 : 1;
 }
