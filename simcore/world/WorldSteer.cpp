@@ -18,6 +18,26 @@
 
 namespace throng::sim {
 
+namespace {
+
+// Adds behaviour b's force, weighted by its type and the agent's brain, to the requests
+// when the type runs it, and tells the sink (describeAgent) what it asked for. The force
+// is only computed for a behaviour that runs.
+template <class Force>
+void requestBehaviour(const TypeSteering& s, Behaviour b, float brainWeight, Force&& force,
+                      SteeringRequestList& requests, DebugSink* sink)
+{
+    if (!s.on(b))
+        return;
+    const glm::vec3 f = force();
+    const float weight = s.w(b) * brainWeight;
+    requests.add(f, weight);
+    if (sink)
+        sink->force(b, f, weight);
+}
+
+}  // namespace
+
 using namespace detail;
 
 namespace {
@@ -181,13 +201,7 @@ void World::steerAroundStatics(std::size_t i, const SteeringAgent& self, glm::ve
     const TypeSteering& s = m_steering[m_info[i].typeIndex];
     using B = Behaviour;
     auto request = [&](B b, auto&& force) {
-        if (!s.on(b))
-            return;
-        const glm::vec3 f = force();
-        const float weight = s.w(b) * brainWeight(i, b);
-        requests.add(f, weight);
-        if (sink)
-            sink->force(b, f, weight);
+        requestBehaviour(s, b, brainWeight(i, b), force, requests, sink);
     };
     const glm::vec3 p = self.position;
     if (s.on(B::WallFollowing) && !m_walls.segments().empty()) {
@@ -234,13 +248,7 @@ glm::vec3 World::steer(std::size_t i, const SteeringAgent& self, std::span<const
     using B = Behaviour;
     SteeringRequestList requests;
     auto request = [&](B b, auto&& force) {
-        if (!s.on(b))
-            return;
-        const glm::vec3 f = force();
-        const float weight = s.w(b) * brainWeight(i, b);
-        requests.add(f, weight);
-        if (sink)
-            sink->force(b, f, weight);
+        requestBehaviour(s, b, brainWeight(i, b), force, requests, sink);
     };
     const glm::vec3 p = self.position;
     const bool hasGoal = m_goal[i] >= 0;
