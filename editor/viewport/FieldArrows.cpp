@@ -48,6 +48,24 @@ sim::NavShapes walkerShapes(const sim::Scene& parts)
 
 }  // namespace
 
+sim::Scene FieldArrows::partsOf(const sim::Scene& scene)
+{
+    sim::Scene parts;
+    parts.settings = scene.settings;
+    parts.agentTypes = scene.agentTypes;
+    parts.groups = scene.groups;
+    for (const sim::Agent& a : scene.agents)
+        if (std::none_of(parts.agents.begin(), parts.agents.end(), [&](const sim::Agent& b) { return b.type == a.type; }))
+            parts.agents.push_back(a);
+    parts.walls = scene.walls;
+    parts.obstacles = scene.obstacles;
+    parts.lanes = scene.lanes;
+    parts.crosswalks = scene.crosswalks;
+    parts.flowStrokes = scene.flowStrokes;
+    parts.goals = scene.goals;
+    return parts;
+}
+
 bool FieldArrows::setScene(const sim::Scene& scene)
 {
     sim::Scene parts;

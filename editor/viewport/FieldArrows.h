@@ -39,6 +39,10 @@ public:
     // they differ from the last call's, builds the grid and the sketched field again and
     // forgets the goal fields. True when it rebuilt. Slow on big scenes (a sketch solve).
     bool setScene(const sim::Scene& scene);
+    // What setScene reads of a scene, small enough to keep: the set, the goals, the types,
+    // the groups and one placed agent per type placed (for the walkers' inflation), the
+    // rest empty. setScene(partsOf(scene)) builds what setScene(scene) does.
+    static sim::Scene partsOf(const sim::Scene& scene);
 
     // The grid the fields lie on, inflated as WorldNav.cpp inflates it.
     const sim::NavGrid& grid() const { return m_grid; }

@@ -192,16 +192,7 @@ void Viewport::setSet(const sim::Scene& scene)
     }
     m_boundsMin = scene.settings.boundsMin;
     m_boundsMax = scene.settings.boundsMax;
-    m_fieldParts = {};
-    m_fieldParts.settings = scene.settings;
-    m_fieldParts.agentTypes = scene.agentTypes;
-    m_fieldParts.walls = scene.walls;
-    m_fieldParts.obstacles = scene.obstacles;
-    m_fieldParts.goals = scene.goals;
-    m_fieldParts.lanes = scene.lanes;
-    m_fieldParts.crosswalks = scene.crosswalks;
-    m_fieldParts.flowStrokes = scene.flowStrokes;
-    m_fieldParts.trafficLights = scene.trafficLights;
+    m_fieldParts = FieldArrows::partsOf(scene);
     if (m_fieldGoal >= scene.goals.size())
         m_fieldGoal = 0;
     rebuildFields();

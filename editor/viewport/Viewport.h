@@ -204,7 +204,7 @@ private:
     ShapeMesh m_fieldMesh, m_heatMesh;
     bool m_fieldChanged = true, m_heatChanged = true;
     FieldArrows m_fields;
-    // What the fields are built from: the scene without its agents (FieldArrows::setScene).
+    // What the fields are built from (FieldArrows::partsOf).
     sim::Scene m_fieldParts;
     std::size_t m_fieldGoal = 0;  // the selected goal, else the first
     DensityHeatmap m_heatmap;

@@ -147,6 +147,41 @@ private slots:
         QVERIFY(fields.sketchError().empty());
     }
 
+    // The viewport keeps only partsOf(scene): a wide flow-field walker placed there (among
+    // many) still widens the walls' margins as in the whole scene.
+    void partsBuildWhatTheWholeSceneBuilds()
+    {
+        sim::Scene scene = strokeScene();
+        sim::AgentType wide;
+        wide.name = "wide";
+        wide.radiusM = 0.5f;
+        wide.navigation = sim::Navigation::FlowField;
+        scene.agentTypes.push_back(wide);
+        for (std::uint32_t id = 1; id <= 50; ++id) {
+            sim::Agent a;
+            a.id = id;
+            a.type = "wide";
+            a.position = {-10.0f + 0.3f * float(id), 0.0f, -8.0f};
+            scene.agents.push_back(a);
+        }
+        const sim::Scene parts = FieldArrows::partsOf(scene);
+        QCOMPARE(parts.agents.size(), std::size_t(1));
+        FieldArrows whole, kept;
+        QVERIFY(whole.setScene(scene));
+        QVERIFY(kept.setScene(parts));
+        QVERIFY(!whole.setScene(parts));  // the same fields: nothing to build again
+        const sim::NavCell nearWall = whole.grid().cellOf({0.0f, 2.6f});
+        QCOMPARE(kept.grid().walkable(nearWall), whole.grid().walkable(nearWall));
+        QVERIFY(!kept.grid().walkable(nearWall));  // inside the wide walker's margin
+        // Without its walkers the same set leaves that cell walkable: the check tells.
+        sim::Scene bare = parts;
+        bare.agents.clear();
+        FieldArrows thin;
+        QVERIFY(thin.setScene(bare));
+        QVERIFY(thin.grid().walkable(nearWall));
+        QCOMPARE(kept.sketchArrows(1.0f).size(), whole.sketchArrows(1.0f).size());
+    }
+
     void setSceneRebuildsOnlyWhenTheFieldsChange()
     {
         sim::Scene scene = strokeScene();
