@@ -4,7 +4,7 @@
 // asks for that item to be selected. Shows messages; never reads files itself.
 
 #include "editor/SceneItem.h"
-#include "simcore/io/Diagnostic.h"
+#include "simcore/base/Diagnostic.h"
 
 #include <QListWidget>
 

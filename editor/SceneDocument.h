@@ -3,7 +3,7 @@
 // when the scene is replaced or edited. Loading never half-loads; it never draws.
 
 #include "editor/SceneItem.h"
-#include "simcore/io/Diagnostic.h"
+#include "simcore/base/Diagnostic.h"
 #include "simcore/io/SceneIO.h"
 #include "simcore/scene/Scene.h"
 

@@ -1,6 +1,6 @@
 #include "export/TrajectoryCsv.h"
 
-#include "simcore/io/AtomicFile.h"
+#include "simcore/base/AtomicFile.h"
 #include "export/detail/TextFields.h"
 
 namespace throng::exporting {

@@ -9,7 +9,7 @@
 #include "editor/SceneDocument.h"
 #include "editor/brain/BrainCommands.h"
 #include "simcore/brain/BrainCompiler.h"
-#include "simcore/io/Diagnostic.h"
+#include "simcore/base/Diagnostic.h"
 
 #include <QWidget>
 

@@ -1,7 +1,7 @@
 #include "editor/tools/VariationBrushTool.h"
 
 #include "editor/SceneDocument.h"
-#include "simcore/world/Rng.h"
+#include "simcore/base/Rng.h"
 
 #include <QCheckBox>
 #include <QDoubleSpinBox>

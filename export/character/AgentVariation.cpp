@@ -1,6 +1,6 @@
 #include "export/character/AgentVariation.h"
 
-#include "simcore/world/Rng.h"
+#include "simcore/base/Rng.h"
 
 #include <algorithm>
 

@@ -2,6 +2,9 @@
 // Adds one agent's nodes to the model: the root `agent_<id>_<type>` (root motion, height
 // scale), its own joints under it, and a scene-root body node with the agent's own mesh
 // entry and skin over the character's shared accessors. No animation data.
+#ifndef THRONG_EXPORT_BUILD
+#error "a detail/ header, private to throng::export: include the module's public headers instead"
+#endif
 
 #include "export/character/Character.h"
 #include "export/detail/CharacterAssets.h"

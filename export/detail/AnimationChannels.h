@@ -2,6 +2,9 @@
 // The animation's shared clocks and the writing of one channel: keys reduced within a
 // tolerance, then read either through a shared time accessor (every frame, every joint
 // frame, or just the first and last) or, where that is smaller, through their own times.
+#ifndef THRONG_EXPORT_BUILD
+#error "a detail/ header, private to throng::export: include the module's public headers instead"
+#endif
 
 #include "export/detail/GltfBuilder.h"
 

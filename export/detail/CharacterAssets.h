@@ -2,6 +2,9 @@
 // Writes one character's geometry once (interleaved vertices with byteStride, joints,
 // indices, inverse bind matrices) and hands back the accessors every agent wearing it
 // shares. Never writes per-agent data.
+#ifndef THRONG_EXPORT_BUILD
+#error "a detail/ header, private to throng::export: include the module's public headers instead"
+#endif
 
 #include "export/character/Character.h"
 #include "export/detail/GltfBuilder.h"

@@ -3,6 +3,9 @@
 // longest agent needs, and every agent reads a window of them that starts at its own
 // phase through its own time accessor, which maps its distance walked onto the cycle.
 // Exact while an agent stays in one clip; approximates stops and walk/run changes.
+#ifndef THRONG_EXPORT_BUILD
+#error "a detail/ header, private to throng::export: include the module's public headers instead"
+#endif
 
 #include "export/character/CharacterLibrary.h"
 #include "export/character/Gait.h"

@@ -2,6 +2,9 @@
 // The exact bake of one agent's joints: its own gait evaluated at every joint frame, each
 // joint's rotations (and the skeleton root's translation) reduced and written as its own
 // channel. Baking is pure and may run on any thread; writing appends to the model.
+#ifndef THRONG_EXPORT_BUILD
+#error "a detail/ header, private to throng::export: include the module's public headers instead"
+#endif
 
 #include "export/character/Gait.h"
 #include "export/detail/AgentRig.h"

@@ -2,6 +2,9 @@
 // Appends binary data and the bufferViews/accessors that describe it to a tinygltf model
 // with one buffer. Animation data goes into one growing region that one bufferView spans,
 // so a hundred thousand accessors need no hundred thousand views. No file I/O.
+#ifndef THRONG_EXPORT_BUILD
+#error "a detail/ header, private to throng::export: include the module's public headers instead"
+#endif
 
 #include <tiny_gltf.h>
 

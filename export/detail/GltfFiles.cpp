@@ -1,6 +1,6 @@
 #include "export/detail/GltfFiles.h"
 
-#include "simcore/io/AtomicFile.h"
+#include "simcore/base/AtomicFile.h"
 #include "export/detail/StagingDirectory.h"
 
 #include <algorithm>

@@ -1,6 +1,9 @@
 #pragma once
 // Writes a finished tinygltf model to disk atomically: one .glb, or a .gltf with its .bin
 // beside it (the .bin renamed in first). Never leaves a partial or temporary file.
+#ifndef THRONG_EXPORT_BUILD
+#error "a detail/ header, private to throng::export: include the module's public headers instead"
+#endif
 
 #include "export/ExportResult.h"
 

@@ -1,6 +1,9 @@
 #pragma once
 // Drops animation keys that linear interpolation between their kept neighbours reproduces
 // within a tolerance (greedy, left to right, at most kMaxGap keys apart). Pure functions.
+#ifndef THRONG_EXPORT_BUILD
+#error "a detail/ header, private to throng::export: include the module's public headers instead"
+#endif
 
 #include <glm/gtc/quaternion.hpp>
 #include <glm/vec3.hpp>

@@ -1,6 +1,6 @@
 #include "export/detail/StagingDirectory.h"
 
-#include "simcore/io/AtomicFile.h"
+#include "simcore/base/AtomicFile.h"
 
 #include <cerrno>
 #include <cstring>

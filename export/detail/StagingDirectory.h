@@ -2,6 +2,9 @@
 // A private directory beside an export's target where several files are written in full
 // before any of them is renamed into place. Never renames a file before it is synced, and
 // removes itself with whatever is still inside when it goes out of scope.
+#ifndef THRONG_EXPORT_BUILD
+#error "a detail/ header, private to throng::export: include the module's public headers instead"
+#endif
 
 #include <string>
 

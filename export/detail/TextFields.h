@@ -1,6 +1,9 @@
 #pragma once
 // Formatting of the numbers in Throng's text exports: shortest text that reads back as
 // the same float, and headings in degrees. Never rounds to a fixed number of digits.
+#ifndef THRONG_EXPORT_BUILD
+#error "a detail/ header, private to throng::export: include the module's public headers instead"
+#endif
 
 #include <charconv>
 #include <numbers>

@@ -4,7 +4,7 @@
 #include "simcore/brain/detail/BrainKernels.h"
 
 #include "simcore/brain/NodeCatalogue.h"
-#include "simcore/world/Rng.h"
+#include "simcore/base/Rng.h"
 
 #include <algorithm>
 #include <cmath>

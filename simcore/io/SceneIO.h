@@ -2,7 +2,7 @@
 // Reading and writing scene files (YAML, format v1; docs/scene-format.md). Loading
 // validates everything and reports every problem with file:line:col; saving is atomic.
 
-#include "simcore/io/Diagnostic.h"
+#include "simcore/base/Diagnostic.h"
 #include "simcore/scene/Scene.h"
 
 #include <cstdint>

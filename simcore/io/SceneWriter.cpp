@@ -1,6 +1,6 @@
 #include "simcore/io/SceneIO.h"
 
-#include "simcore/io/AtomicFile.h"
+#include "simcore/base/AtomicFile.h"
 #include "simcore/io/detail/SceneReader.h"
 #include "simcore/io/detail/YamlWriter.h"
 

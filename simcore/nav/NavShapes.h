@@ -4,7 +4,7 @@
 // inflated here and never changed by a simulation step.
 
 #include "simcore/scene/Scene.h"
-#include "simcore/world/SegmentGrid.h"
+#include "simcore/base/SegmentGrid.h"
 
 #include <glm/vec2.hpp>
 

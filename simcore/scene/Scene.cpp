@@ -1,5 +1,7 @@
 #include "simcore/scene/Scene.h"
 
+#include "simcore/scene/BehaviourTable.h"
+
 #include <algorithm>
 
 namespace throng::sim {
@@ -28,11 +30,13 @@ const BrainNode* BrainGraph::findNode(NodeId id) const
 
 const std::vector<std::string>& behaviourNames()
 {
-    // In priority order: the most urgent first (see TypeSteering's Behaviour).
-    static const std::vector<std::string> names{
-        "containment", "wall_following", "obstacle_avoidance", "separation", "unaligned_collision_avoidance",
-        "evasion", "flee", "leader_following", "offset_pursuit", "pursuit", "path_following",
-        "flow_field_following", "arrival", "seek", "alignment", "cohesion", "wander", "reciprocal_avoidance"};
+    // In priority order: the most urgent first (BehaviourTable.h).
+    static const std::vector<std::string> names = [] {
+        std::vector<std::string> v;
+        for (const BehaviourEntry& e : kBehaviourTable)
+            v.emplace_back(e.name);
+        return v;
+    }();
     return names;
 }
 

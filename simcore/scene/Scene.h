@@ -280,7 +280,8 @@ struct Scene {
 // group after group, so the ids of group g are [first + sum of earlier counts, + count).
 std::uint32_t firstSpawnedId(const Scene& scene);
 
-// Names that may appear in AgentType::behaviours (Reynolds 1999 and boids 1987).
+// Names that may appear in AgentType::behaviours (Reynolds 1999 and boids 1987), from
+// kBehaviourTable (BehaviourTable.h).
 const std::vector<std::string>& behaviourNames();
 // Built-in characters that export can generate without a file.
 const std::vector<std::string>& builtinCharacters();

@@ -3,7 +3,7 @@
 
 #include "simcore/steering/TargetBehaviours.h"
 #include "simcore/steering/detail/SteeringMath.h"
-#include "simcore/world/Rng.h"
+#include "simcore/base/Rng.h"
 
 #include <glm/geometric.hpp>
 

@@ -3,7 +3,7 @@
 // whatever the extent of the lanes.
 #include "simcore/traffic/TrafficSystem.h"
 
-#include "simcore/world/Rng.h"
+#include "simcore/base/Rng.h"
 
 #include <glm/geometric.hpp>
 

@@ -2,7 +2,7 @@
 // vehicles' step), the stop answer a walker asks for, and the counts of what walkers did.
 #include "simcore/traffic/TrafficSystem.h"
 
-#include "simcore/world/Rng.h"
+#include "simcore/base/Rng.h"
 
 #include <glm/geometric.hpp>
 

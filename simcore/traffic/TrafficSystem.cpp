@@ -2,7 +2,7 @@
 
 #include "simcore/scene/StepRate.h"
 
-#include "simcore/world/Rng.h"
+#include "simcore/base/Rng.h"
 
 #include <glm/geometric.hpp>
 

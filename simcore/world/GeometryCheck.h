@@ -4,7 +4,7 @@
 // obstacles, goals some agents cannot reach, exits no body of a type's size can enter.
 // Builds the World once to see where spawned agents stand; never runs a step.
 
-#include "simcore/io/Diagnostic.h"
+#include "simcore/base/Diagnostic.h"
 #include "simcore/scene/Scene.h"
 
 #include <string>

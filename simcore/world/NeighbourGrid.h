@@ -3,7 +3,7 @@
 // query visits only the cells a radius overlaps. Holds indices, never agent data.
 
 #include "simcore/base/ThreadTeam.h"
-#include "simcore/world/detail/Lanes.h"
+#include "simcore/base/Lanes.h"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -169,7 +169,7 @@ public:
     template <typename B, typename F>
     bool forEachNearestSweep4(const glm::vec3 (&p)[4], float r, B&& boundSq, F&& f, Sweep& sweep) const
     {
-        using detail::F4;
+        using simd::F4;
         if (!m_byHeight || !std::isfinite(r))
             return false;
         for (const glm::vec3& q : p)
@@ -193,10 +193,10 @@ public:
         const F4 px{p[0].x, p[1].x, p[2].x, p[3].x}, pz{p[0].z, p[1].z, p[2].z, p[3].z};
         for (int k = 0; k < sweep.count; ++k) {
             // As forEachNearestSweep, lane by lane: skipped when no query can reach it.
-            const F4 cx = detail::f4(sweep.x0[k]), cz = detail::f4(sweep.z0[k]);
-            const F4 dx = px - detail::minOf(detail::maxOf(px, cx), cx + m_cell);
-            const F4 dz = pz - detail::minOf(detail::maxOf(pz, cz), cz + m_cell);
-            if (k > 0 && !detail::any(dx * dx + dz * dz <= detail::minOf(reach2, boundSq() * 1.0002f)))
+            const F4 cx = simd::f4(sweep.x0[k]), cz = simd::f4(sweep.z0[k]);
+            const F4 dx = px - simd::minOf(simd::maxOf(px, cx), cx + m_cell);
+            const F4 dz = pz - simd::minOf(simd::maxOf(pz, cz), cz + m_cell);
+            if (k > 0 && !simd::any(dx * dx + dz * dz <= simd::minOf(reach2, boundSq() * 1.0002f)))
                 continue;
             scanColumn(k, yLo, yHi, f, sweep);
         }

@@ -4,7 +4,7 @@
 // Keeps the first of each and the order of the rest; never moves or merges near-repeats.
 
 #include "simcore/scene/Scene.h"
-#include "simcore/world/SegmentGrid.h"
+#include "simcore/base/SegmentGrid.h"
 
 #include <vector>
 

@@ -1,6 +1,6 @@
 #include "simcore/world/SpawnSpread.h"
 
-#include "simcore/world/Rng.h"
+#include "simcore/base/Rng.h"
 
 #include <glm/geometric.hpp>
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <optional>
 
 namespace throng::sim {
 
@@ -129,16 +130,6 @@ const ParamSlot* findSlot(Behaviour b, const std::string& key)
     return nullptr;
 }
 
-bool behaviourFromName(const std::string& name, Behaviour& out)
-{
-    for (std::size_t i = 0; i < kBehaviourCount; ++i)
-        if (name == behaviourName(Behaviour(i))) {
-            out = Behaviour(i);
-            return true;
-        }
-    return false;
-}
-
 // Applies a checked parameter; returns an error message or "".
 std::string apply(TypeSteering& t, Behaviour b, const BrainParam& p)
 {
@@ -183,11 +174,6 @@ std::string apply(TypeSteering& t, Behaviour b, const BrainParam& p)
 
 }  // namespace
 
-const char* behaviourName(Behaviour b)
-{
-    return behaviourNames()[std::size_t(b)].c_str();
-}
-
 TypeSteering compileTypeSteering(const AgentType& type)
 {
     TypeSteering t;
@@ -222,12 +208,12 @@ TypeSteering compileTypeSteering(const AgentType& type)
         }
     }
     for (const BehaviourWeight& bw : type.behaviours) {
-        Behaviour b;
-        if (!behaviourFromName(bw.behaviour, b))
+        const std::optional<Behaviour> b = behaviourFromName(bw.behaviour);
+        if (!b)
             continue;  // the reader rejected it already
-        t.weight[std::size_t(b)] = bw.weight;
+        t.weight[std::size_t(*b)] = bw.weight;
         for (const BrainParam& p : bw.params)
-            apply(t, b, p);
+            apply(t, *b, p);
     }
     for (std::size_t n = 0; n < t.keepRightTurn.size(); ++n) {
         const float angle = t.reciprocal.keepRightRad * float(n + 1) / 3.0f;
@@ -249,11 +235,11 @@ const std::vector<BehaviourParamInfo>& behaviourParams()
 
 std::string checkBehaviourParam(const std::string& behaviour, const BrainParam& param)
 {
-    Behaviour b;
-    if (!behaviourFromName(behaviour, b))
+    const std::optional<Behaviour> b = behaviourFromName(behaviour);
+    if (!b)
         return "unknown steering behaviour '" + behaviour + "'";
     TypeSteering scratch;
-    return apply(scratch, b, param);
+    return apply(scratch, *b, param);
 }
 
 }  // namespace throng::sim

@@ -3,6 +3,7 @@
 // weights (or priority order) and parameters, and the vehicle model's settings. Built
 // once per World; read-only during a step.
 
+#include "simcore/scene/BehaviourTable.h"
 #include "simcore/scene/Scene.h"
 #include "simcore/steering/ReciprocalAvoidance.h"
 #include "simcore/steering/Steering.h"
@@ -13,34 +14,6 @@
 #include <vector>
 
 namespace throng::sim {
-
-// In the order prioritised allocation serves them (Reynolds 1987: the most urgent first),
-// which is also the order of behaviourNames().
-enum class Behaviour : std::uint8_t {
-    Containment,
-    WallFollowing,
-    ObstacleAvoidance,
-    Separation,
-    UnalignedCollisionAvoidance,
-    Evasion,
-    Flee,
-    LeaderFollowing,
-    OffsetPursuit,
-    Pursuit,
-    PathFollowing,
-    FlowFieldFollowing,
-    Arrival,
-    Seek,
-    Alignment,
-    Cohesion,
-    Wander,
-    // Not a force in the list: it replaces the velocity the others ask for by the nearest
-    // one that avoids the neighbours (ORCA). Last, because it filters their result.
-    ReciprocalAvoidance,
-};
-constexpr std::size_t kBehaviourCount = 18;
-
-const char* behaviourName(Behaviour b);
 
 struct TypeSteering {
     std::array<float, kBehaviourCount> weight{};  // >= 0; 0 = the behaviour does not run

@@ -7,11 +7,10 @@
 #include "simcore/scene/SpawnArea.h"
 #include "simcore/scene/StepRate.h"
 #include "simcore/scene/TerrainHeight.h"
-#include "simcore/traffic/LightPhase.h"
 #include "simcore/world/PolygonSampler.h"
 #include "simcore/world/RepeatedStatics.h"
 #include "simcore/world/SpawnSpread.h"
-#include "simcore/world/Rng.h"
+#include "simcore/base/Rng.h"
 #include "simcore/world/detail/StepGeometry.h"
 
 #include <glm/geometric.hpp>
@@ -92,9 +91,9 @@ World::World(const Scene& scene, const WorldOptions& options)
 void World::build(const Scene& scene, const WorldOptions& options)
 {
     m_seed = options.overrideSeed ? options.seed : scene.settings.seed;
-    m_frameDt = 1.0f / scene.settings.fps;
-    m_subSteps = subStepsPerFrame(scene.settings.fps);
-    m_dt = physicsStepS(scene.settings.fps);
+    m_clock.frameDt = 1.0f / scene.settings.fps;
+    m_clock.subSteps = subStepsPerFrame(scene.settings.fps);
+    m_clock.dt = physicsStepS(scene.settings.fps);
     m_neighbourSweep = options.neighbourSweep;
     m_steerEight = options.steerEight && canSteerEight();
 
@@ -108,21 +107,21 @@ void World::build(const Scene& scene, const WorldOptions& options)
     float cell = 0.0f;
     for (const AgentType& t : scene.agentTypes) {
         const float halfView = glm::radians(std::min(t.viewAngleDeg, 360.0f)) * 0.5f;
-        m_steering.push_back(compileTypeSteering(t));
-        m_collision.push_back(TypeCollision::of(t));
-        const TypeSteering& steering = m_steering.back();
-        m_keepRight.push_back(keepRightShare(t.kind, steering));
+        m_types.steering.push_back(compileTypeSteering(t));
+        m_types.collision.push_back(TypeCollision::of(t));
+        const TypeSteering& steering = m_types.steering.back();
+        m_types.keepRight.push_back(keepRightShare(t.kind, steering));
         // Reciprocal avoidance needs both sides of a pair to see each other: such a type
         // perceives all round, whatever its view angle.
-        const bool allRound = t.viewAngleDeg >= 360.0f || m_steering.back().on(Behaviour::ReciprocalAvoidance);
-        m_types.push_back({t.radiusM, t.maxSpeed, t.maxForce, t.mass, t.perceptionM,
+        const bool allRound = t.viewAngleDeg >= 360.0f || m_types.steering.back().on(Behaviour::ReciprocalAvoidance);
+        m_types.params.push_back({t.radiusM, t.maxSpeed, t.maxForce, t.mass, t.perceptionM,
                            allRound ? -1.0f : std::cos(halfView), t.kind});
         cell = std::max(cell, cellPerRadius * t.perceptionM);
     }
     cell = std::clamp(cell, 0.5f, 4.0f);
-    for (const TypeCollision& c : m_collision)
-        m_makingWay = m_makingWay || c.priority != m_collision[0].priority || c.layerBit != m_collision[0].layerBit ||
-                      c.collidesWith != m_collision[0].collidesWith;
+    for (const TypeCollision& c : m_types.collision)
+        m_types.makingWay = m_types.makingWay || c.priority != m_types.collision[0].priority || c.layerBit != m_types.collision[0].layerBit ||
+                      c.collidesWith != m_types.collision[0].collidesWith;
     buildTraffic(scene);
     buildStatics(scene);
     buildAgents(scene);
@@ -130,13 +129,13 @@ void World::build(const Scene& scene, const WorldOptions& options)
     buildBrains(scene);
     findEscapes();  // before the plans: one that starts inside an obstacle plans from outside it
     buildNav(scene);
-    for (const TypeParams& t : m_types) {
+    for (const TypeParams& t : m_types.params) {
         m_hasFliers = m_hasFliers || t.kind == AgentKind::Flier;
         m_allFliers = m_allFliers && t.kind == AgentKind::Flier;
         m_maxRadius = std::max(m_maxRadius, t.radius);
     }
     m_grid.configure(scene.settings.boundsMin, scene.settings.boundsMax, cell);
-    m_grid.rebuild(m_pos, m_hasFliers, m_out, &m_team);
+    m_grid.rebuild(m_agents.pos, m_hasFliers, m_agents.out, &m_team);
     buildBoidKernel(options.boidKernel, options.collideShortcut);
     buildWalkKernel(options.walkKernel);
 }
@@ -152,7 +151,7 @@ void World::buildStatics(const Scene& scene)
     const std::vector<Obstacle> obstacles = uniqueObstacles(scene.obstacles);
     for (const Obstacle& o : obstacles)
         if (o.shape == ObstacleShape::Circle) {
-            m_circles.push_back({glm::vec3(o.center.x, 0.0f, o.center.y), o.radiusM});
+            m_set.circles.push_back({glm::vec3(o.center.x, 0.0f, o.center.y), o.radiusM});
             obstacleBoxes.push_back({o.center - glm::vec2(o.radiusM), o.center + glm::vec2(o.radiusM)});
         }
     for (const Obstacle& o : obstacles) {
@@ -166,7 +165,7 @@ void World::buildStatics(const Scene& scene)
                                 o.center + ax * h.x + az * h.y, o.center - ax * h.x + az * h.y};
         for (int k = 0; k < 4; ++k)
             walls.push_back({c[k], c[(k + 1) % 4]});
-        m_boxes.push_back({glm::vec3(o.center.x, 0.0f, o.center.y), glm::vec3(ax.x, 0.0f, ax.y), h});
+        m_set.boxes.push_back({glm::vec3(o.center.x, 0.0f, o.center.y), glm::vec3(ax.x, 0.0f, ax.y), h});
         const float reach = glm::length(h);
         obstacleBoxes.push_back({o.center - glm::vec2(reach), o.center + glm::vec2(reach)});
     }
@@ -176,34 +175,34 @@ void World::buildStatics(const Scene& scene)
     // Both grids cover the bounds and a margin only: one wall point at -1e30 m would
     // otherwise stretch each cell over the whole set (every query seeing every wall).
     const glm::vec2 margin(kStaticGridMarginM);
-    m_walls.build(walls, 4.0f, scene.settings.boundsMin - margin, scene.settings.boundsMax + margin);
-    m_obstacleGrid.build(obstacleBoxes, 4.0f, scene.settings.boundsMin - margin, scene.settings.boundsMax + margin);
+    m_set.walls.build(walls, 4.0f, scene.settings.boundsMin - margin, scene.settings.boundsMax + margin);
+    m_set.obstacleGrid.build(obstacleBoxes, 4.0f, scene.settings.boundsMin - margin, scene.settings.boundsMax + margin);
 
-    m_goals = scene.goals;
+    m_set.goals = scene.goals;
     // Paths marked `plan: astar` become their planned way round the set (PathPlanning).
-    m_paths = plannedPaths(scene);
-    for (const Path& p : m_paths) {
+    m_set.paths = plannedPaths(scene);
+    for (const Path& p : m_set.paths) {
         std::vector<glm::vec3> points;
         for (glm::vec2 q : p.points)
             points.push_back({q.x, 0.0f, q.y});
-        m_pathPoints.push_back(std::move(points));
+        m_set.pathPoints.push_back(std::move(points));
     }
-    m_lights = scene.trafficLights;
+    m_set.lights = scene.trafficLights;
     for (const Crosswalk& c : scene.crosswalks) {
         int light = -1;
         for (std::size_t l = 0; l < scene.trafficLights.size(); ++l)
             for (const StopLine& s : scene.trafficLights[l].stopLines)
                 if (s.crosswalk == c.name)
                     light = int(l);
-        m_crosswalks.push_back({c.from, c.to, c.widthM * 0.5f, light});
+        m_set.crosswalks.push_back({c.from, c.to, c.widthM * 0.5f, light});
     }
     for (const FlowStroke& s : scene.flowStrokes)
         for (std::size_t k = 0; k + 1 < s.points.size(); ++k)
-            m_flow.push_back({s.points[k], s.points[k + 1], s.widthM * 0.5f});
-    m_terrain = scene.terrain;
+            m_set.flow.push_back({s.points[k], s.points[k + 1], s.widthM * 0.5f});
+    m_set.terrain = scene.terrain;
     const glm::vec2 lo = scene.settings.boundsMin, hi = scene.settings.boundsMax;
     // Containment keeps fliers above the ground plane too (terrain is enforced per step).
-    m_bounds = {glm::vec3(lo.x, 0.0f, lo.y), glm::vec3(hi.x, 1e4f, hi.y)};
+    m_set.bounds = {glm::vec3(lo.x, 0.0f, lo.y), glm::vec3(hi.x, 1e4f, hi.y)};
 }
 
 void World::buildAgents(const Scene& scene)
@@ -211,7 +210,7 @@ void World::buildAgents(const Scene& scene)
     std::size_t total = scene.agents.size();
     for (const SpawnGroup& g : scene.groups)
         total += g.count;
-    m_info.reserve(total);
+    m_agents.info.reserve(total);
 
     const NameIndex types(scene.agentTypes), goals(scene.goals), paths(scene.paths);
     for (const Agent& a : scene.agents)
@@ -226,9 +225,9 @@ void World::buildAgents(const Scene& scene)
 
     // Leaders were given as ids; the step reads dense indices.
     std::map<AgentId, std::int32_t> denseOf;
-    for (std::size_t i = 0; i < m_info.size(); ++i)
-        denseOf[m_info[i].id] = std::int32_t(i);
-    for (std::int32_t& l : m_leader) {
+    for (std::size_t i = 0; i < m_agents.info.size(); ++i)
+        denseOf[m_agents.info[i].id] = std::int32_t(i);
+    for (std::int32_t& l : m_agents.leader) {
         auto it = denseOf.find(AgentId(l));
         l = l > 0 && it != denseOf.end() ? it->second : -1;
     }
@@ -325,7 +324,7 @@ void World::spreadMembers(const SpawnGroup& group, std::uint16_t type, std::size
     // one drawn inside a wall or obstacle is walked out by findEscapes instead.
     if (places.empty())
         return;
-    const float r = m_types[type].radius;
+    const float r = m_types.params[type].radius;
     glm::vec2 lo = places[0], hi = places[0];
     for (const glm::vec2& p : places) {
         lo = glm::min(lo, p);
@@ -334,20 +333,20 @@ void World::spreadMembers(const SpawnGroup& group, std::uint16_t type, std::size
     std::vector<SpreadBody> bodies;
     bodies.reserve(places.size());
     float largest = r;  // the largest body of any type (the types, not every agent placed so far)
-    for (const TypeParams& t : m_types)
+    for (const TypeParams& t : m_types.params)
         largest = std::max(largest, t.radius);
     const float reach = 8.0f * largest;  // members part by a few radii at most
-    for (std::size_t i = 0; i < m_pos.size(); ++i) {
-        const glm::vec2 q = detail::xz(m_pos[i]);
-        if (m_types[m_info[i].typeIndex].kind == AgentKind::Flier || !collide(m_collision[type], collision(i)) ||
+    for (std::size_t i = 0; i < m_agents.pos.size(); ++i) {
+        const glm::vec2 q = detail::xz(m_agents.pos[i]);
+        if (m_types.params[m_agents.info[i].typeIndex].kind == AgentKind::Flier || !collide(m_types.collision[type], collision(i)) ||
             q.x < lo.x - reach || q.y < lo.y - reach || q.x > hi.x + reach || q.y > hi.y + reach)
             continue;
-        bodies.push_back({q, m_radius[i], false, m_info[i].id});
+        bodies.push_back({q, m_agents.radius[i], false, m_agents.info[i].id});
     }
     const std::size_t first = bodies.size();
     for (std::size_t k = 0; k < places.size(); ++k)
         bodies.push_back({places[k], r, clearOfStatics[k] != 0, (std::uint64_t(groupIndex + 1) << 32) | k});
-    const bool hasStatics = !m_walls.segments().empty() || !m_circles.empty();
+    const bool hasStatics = m_set.hasStatics();
     auto settle = [&](glm::vec2 q, float radius, glm::vec2& out) {
         q = clampToSpawnArea(group, q);
         if (!hasStatics) {
@@ -371,27 +370,27 @@ void World::addAgent(const Scene& scene, AgentId id, std::uint16_t type, glm::ve
     // Heading is counter-clockwise seen from above (+y up, z south): forward = (cos, 0, -sin).
     const glm::vec3 fwd(std::cos(headingRad), 0.0f, -std::sin(headingRad));
     const float speedFactor = rngRange(m_seed, id, 0, kSpeedFactor, t.variation.speedFactor.x, t.variation.speedFactor.y);
-    m_info.push_back({id, type});
-    m_pos.push_back(pos);
+    m_agents.info.push_back({id, type});
+    m_agents.pos.push_back(pos);
     // Fliers start at their stall speed so they never fall out of the sky on frame 1.
     const float maxSpeed = t.maxSpeed * speedFactor;
-    m_vel.push_back(flier ? fwd * std::min(maxSpeed, std::max(t.minSpeed, 0.5f * maxSpeed)) : glm::vec3(0.0f));
-    m_fwd.push_back(fwd);
-    m_side.push_back(glm::normalize(glm::cross(fwd, glm::vec3(0.0f, 1.0f, 0.0f))));
-    m_up.push_back(glm::vec3(0.0f, 1.0f, 0.0f));
-    m_radius.push_back(t.radiusM);
-    m_maxSpeed.push_back(maxSpeed);
-    m_phase.push_back(rngRange(m_seed, id, 0, kPhaseOffset, t.variation.phaseOffset.x, t.variation.phaseOffset.y));
+    m_agents.vel.push_back(flier ? fwd * std::min(maxSpeed, std::max(t.minSpeed, 0.5f * maxSpeed)) : glm::vec3(0.0f));
+    m_agents.fwd.push_back(fwd);
+    m_agents.side.push_back(glm::normalize(glm::cross(fwd, glm::vec3(0.0f, 1.0f, 0.0f))));
+    m_agents.up.push_back(glm::vec3(0.0f, 1.0f, 0.0f));
+    m_agents.radius.push_back(t.radiusM);
+    m_agents.maxSpeed.push_back(maxSpeed);
+    m_agents.phase.push_back(rngRange(m_seed, id, 0, kPhaseOffset, t.variation.phaseOffset.x, t.variation.phaseOffset.y));
     // Stride length scales with body size; 1.4 m is an adult's walking stride.
-    m_stride.push_back(t.kind == AgentKind::Pedestrian
+    m_agents.stride.push_back(t.kind == AgentKind::Pedestrian
                            ? 1.4f * std::max(0.5f, t.radiusM / 0.3f) * rngRange(m_seed, id, 0, kStride, 0.95f, 1.05f)
                            : 2.0f * t.radiusM * 3.14159265f);
     const float wa = 6.28318531f * rngUniform(m_seed, id, 0, kWanderStart);
-    m_wander.push_back({glm::vec3(std::sin(wa), 0.0f, std::cos(wa))});
-    m_arrivalTime.push_back(-1.0f);
-    m_goal.push_back(goal);
-    m_path.push_back(path);
-    m_leader.push_back(std::int32_t(leader));
+    m_agents.wander.push_back({glm::vec3(std::sin(wa), 0.0f, std::cos(wa))});
+    m_agents.arrivalTime.push_back(-1.0f);
+    m_agents.goal.push_back(goal);
+    m_agents.path.push_back(path);
+    m_agents.leader.push_back(std::int32_t(leader));
     // A crowd sharing a goal spreads over it instead of converging on one point, so the
     // first arrivals do not wall off the rest.
     glm::vec2 spot(0.0f);
@@ -400,67 +399,72 @@ void World::addAgent(const Scene& scene, AgentId id, std::uint16_t type, glm::ve
         spot = detail::goalSpot(g.position, g.radiusM, g.exit, t.radiusM, rngUniform(m_seed, id, 0, kSpotR),
                                 rngUniform(m_seed, id, 0, kSpotA));
     }
-    m_goalSpot.push_back(spot);
-    m_pathAlong.push_back(path >= 0 ? startPathProgress(SteeringPath{m_pathPoints[std::size_t(path)], m_paths[std::size_t(path)].radiusM,
-                                                                  m_paths[std::size_t(path)].closed},
+    m_agents.goalSpot.push_back(spot);
+    m_agents.pathAlong.push_back(path >= 0 ? startPathProgress(SteeringPath{m_set.pathPoints[std::size_t(path)], m_set.paths[std::size_t(path)].radiusM,
+                                                                  m_set.paths[std::size_t(path)].closed},
                                                      pos)
                                     : 0.0f);
-    m_arrived.push_back(0);
-    m_stopped.push_back(0);
-    m_stoppedBefore.push_back(0);
-    m_onCrosswalk.push_back(0);
-    m_nextPos.push_back(pos);
-    m_nextVel.push_back(m_vel.back());
-    m_nextFwd.push_back(fwd);
-    m_nextSide.push_back(m_side.back());
-    m_nextUp.push_back(m_up.back());
-    m_nextWander.push_back(m_wander.back());
-    m_heldForce.push_back(glm::vec3(0.0f));
-    m_nearIndex.resize(m_nearIndex.size() + kMaxNeighbours);
-    m_nearCount.push_back(0);
+    m_agents.arrived.push_back(0);
+    m_agents.stopped.push_back(0);
+    m_agents.stoppedBefore.push_back(0);
+    m_agents.onCrosswalk.push_back(0);
+    m_agents.nextPos.push_back(pos);
+    m_agents.nextVel.push_back(m_agents.vel.back());
+    m_agents.nextFwd.push_back(fwd);
+    m_agents.nextSide.push_back(m_agents.side.back());
+    m_agents.nextUp.push_back(m_agents.up.back());
+    m_agents.nextWander.push_back(m_agents.wander.back());
+    m_agents.heldForce.push_back(glm::vec3(0.0f));
+    m_agents.nearIndex.resize(m_agents.nearIndex.size() + kMaxNeighbours);
+    m_agents.nearCount.push_back(0);
     m_collideFree.push_back(0);
-    m_resolvedPos.push_back(pos);
+    m_agents.resolvedPos.push_back(pos);
 }
 
 float World::groundHeight(float x, float z) const
 {
-    return terrainHeight(m_terrain, x, z);
+    return terrainHeight(m_set.terrain, x, z);
 }
 
 std::size_t World::agentsWithGoal() const
 {
     std::size_t count = 0;
-    for (std::size_t i = 0; i < m_pos.size(); ++i)
-        if ((m_path[i] >= 0 && !m_paths[std::size_t(m_path[i])].closed) || (m_path[i] < 0 && m_goal[i] >= 0))
+    for (std::size_t i = 0; i < m_agents.pos.size(); ++i)
+        if ((m_agents.path[i] >= 0 && !m_set.paths[std::size_t(m_agents.path[i])].closed) || (m_agents.path[i] < 0 && m_agents.goal[i] >= 0))
             ++count;
     return count;
 }
 
 int World::lightState(std::size_t light) const
 {
-    return int(lightPhaseAt(m_lights[light], timeS()));
+    return view().lightState(light);
+}
+
+StepView World::view() const
+{
+    return {m_agents, m_types, m_set, m_clock, m_grid, m_traffic, m_team, m_hasFliers, m_allFliers, m_maxRadius};
 }
 
 void World::snapshot(std::vector<AgentFrame>& out) const
 {
-    out.resize(m_pos.size());
-    for (std::size_t i = 0; i < m_pos.size(); ++i) {
-        const float speed = glm::length(m_vel[i]);
+    out.resize(m_agents.pos.size());
+    for (std::size_t i = 0; i < m_agents.pos.size(); ++i) {
+        const float speed = glm::length(m_agents.vel[i]);
         AgentFrame& f = out[i];
-        f.position = m_pos[i];
-        f.headingRad = std::atan2(-m_fwd[i].z, m_fwd[i].x);
+        f.position = m_agents.pos[i];
+        f.headingRad = std::atan2(-m_agents.fwd[i].z, m_agents.fwd[i].x);
         f.speed = speed;
-        f.phase = m_phase[i];
+        f.phase = m_agents.phase[i];
         // Clip thresholds relative to a walker: below 0.1 m/s stand, above 2.5 m/s run.
         f.clip = brainClip(i, speed < 0.1f ? Clip::Idle : (speed < 2.5f ? Clip::Walk : Clip::Run));
-        f.out = m_out[i] != 0;
-        f.arrived = m_arrived[i] != 0;
+        f.out = m_agents.out[i] != 0;
+        f.arrived = m_agents.arrived[i] != 0;
     }
 }
 
 void World::startRecording(FrameCache& cache) const
 {
-    cache.reset(m_info, 1.0f / m_frameDt, origin());
+    cache.reset(m_agents.info, 1.0f / m_clock.frameDt, origin());
     std::vector<AgentFrame> frame;
     snapshot(frame);
     cache.append(frame);
@@ -468,7 +472,7 @@ void World::startRecording(FrameCache& cache) const
 
 std::size_t World::memoryBytes() const
 {
-    const std::size_t n = m_pos.capacity();
+    const std::size_t n = m_agents.pos.capacity();
     return n * (sizeof(AgentInfo) + 11 * sizeof(glm::vec3) + 2 * sizeof(WanderState) + 6 * sizeof(float) +
                 3 * sizeof(std::int32_t) + 2 * sizeof(glm::vec2) + 5 + kMaxNeighbours * sizeof(std::uint32_t)) +
            m_grid.memoryBytes();

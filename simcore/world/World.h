@@ -6,10 +6,15 @@
 #include "simcore/base/ThreadTeam.h"
 #include "simcore/scene/Scene.h"
 #include "simcore/steering/Steering.h"
+#include "simcore/world/AgentColumns.h"
+#include "simcore/world/AgentTypes.h"
+#include "simcore/world/CountPhase.h"
 #include "simcore/world/FrameCache.h"
 #include "simcore/world/NearestList.h"
 #include "simcore/world/NeighbourGrid.h"
-#include "simcore/world/SegmentGrid.h"
+#include "simcore/base/SegmentGrid.h"
+#include "simcore/world/StaticSet.h"
+#include "simcore/world/StepClock.h"
 #include "simcore/world/StepCounters.h"
 #include "simcore/world/TypeSteering.h"
 #include "simcore/world/WorldPriority.h"
@@ -67,39 +72,39 @@ public:
     // equal sub-steps (StepRate.h).
     void step();
 
-    std::size_t agentCount() const { return m_pos.size(); }
+    std::size_t agentCount() const { return m_agents.pos.size(); }
     // Frames stepped so far.
-    std::uint64_t stepIndex() const { return m_step / std::uint64_t(m_subSteps); }
+    std::uint64_t stepIndex() const { return m_clock.frame(); }
     // A frame's length, s (1 / fps).
-    float dt() const { return m_frameDt; }
+    float dt() const { return m_clock.frameDt; }
     // Steps per frame (1 from 24 fps up).
-    int subSteps() const { return m_subSteps; }
-    double timeS() const { return double(m_step) * double(m_dt); }
+    int subSteps() const { return m_clock.subSteps; }
+    double timeS() const { return m_clock.timeS(); }
     std::uint64_t seed() const { return m_seed; }
     int threads() const { return m_team.size(); }
     // The threads that step this World (tests ask it which threads did work).
     const ThreadTeam& team() const { return m_team; }
 
     // Positions are relative to origin(): add it (in double) for the scene's coordinates.
-    std::span<const glm::vec3> positions() const { return m_pos; }
+    std::span<const glm::vec3> positions() const { return m_agents.pos; }
     // Where this World's coordinates start in the scene's: (0, 0, 0) unless the scene lies
     // far from it (simulationOrigin, SceneOrigin.h); goals(), navigation() and the frames
     // of snapshot() are relative to it too.
     glm::dvec3 origin() const { return {m_origin.x, 0.0, m_origin.y}; }
-    std::span<const glm::vec3> velocities() const { return m_vel; }
-    std::span<const glm::vec3> forwards() const { return m_fwd; }
-    std::span<const glm::vec3> ups() const { return m_up; }
-    std::span<const float> radii() const { return m_radius; }
-    AgentId id(std::size_t i) const { return m_info[i].id; }
-    const std::vector<AgentInfo>& agentInfo() const { return m_info; }
-    bool hasArrived(std::size_t i) const { return m_arrived[i] != 0; }
+    std::span<const glm::vec3> velocities() const { return m_agents.vel; }
+    std::span<const glm::vec3> forwards() const { return m_agents.fwd; }
+    std::span<const glm::vec3> ups() const { return m_agents.up; }
+    std::span<const float> radii() const { return m_agents.radius; }
+    AgentId id(std::size_t i) const { return m_agents.info[i].id; }
+    const std::vector<AgentInfo>& agentInfo() const { return m_agents.info; }
+    bool hasArrived(std::size_t i) const { return m_agents.arrived[i] != 0; }
     // Seconds from the start until agent i arrived; negative while it has not.
-    float arrivalTimeS(std::size_t i) const { return m_arrivalTime[i]; }
+    float arrivalTimeS(std::size_t i) const { return m_agents.arrivalTime[i]; }
     // Agents with a goal or an open path to finish.
     std::size_t agentsWithGoal() const;
     // The dense index of the agent that agent i pursues, evades or follows; -1 for none.
-    std::int32_t leaderOf(std::size_t i) const { return m_leader[i]; }
-    AgentKind agentKind(std::size_t i) const { return m_types[m_info[i].typeIndex].kind; }
+    std::int32_t leaderOf(std::size_t i) const { return m_agents.leader[i]; }
+    AgentKind agentKind(std::size_t i) const { return m_types.params[m_agents.info[i].typeIndex].kind; }
     // Agents of this type step through the fused boids kernel (WorldFlock.cpp).
     bool usesBoidKernel(std::size_t typeIndex) const { return m_boidKernel[typeIndex] != 0; }
     // How many boids the kernel steers at once: 8 where the CPU has AVX2 (canSteerEight)
@@ -110,14 +115,14 @@ public:
     bool usesWalkKernel(std::size_t typeIndex) const { return m_walkKernel[typeIndex] != 0; }
     // Navigation (WorldNav.cpp): agent i left through an exit goal; it is no longer
     // simulated or perceived and stays where it left (arrivalTimeS says when).
-    bool isOut(std::size_t i) const { return m_out[i] != 0; }
+    bool isOut(std::size_t i) const { return m_agents.out[i] != 0; }
     // Agent i started inside a wall or obstacle and is still walking out of it (its way
     // out: escapeTarget in WorldEscape.cpp, in this World's coordinates).
-    bool isEscaping(std::size_t i) const { return m_escaping[i] != 0; }
-    glm::vec2 escapeTo(std::size_t i) const { return m_escapeTo[i]; }
+    bool isEscaping(std::size_t i) const { return m_agents.escaping[i] != 0; }
+    glm::vec2 escapeTo(std::size_t i) const { return m_agents.escapeTo[i]; }
     // Agent i's goal as an index into goals(), or -1.
-    std::int32_t goalIndex(std::size_t i) const { return m_goal[i]; }
-    const std::vector<Goal>& goals() const { return m_goals; }
+    std::int32_t goalIndex(std::size_t i) const { return m_agents.goal[i]; }
+    const std::vector<Goal>& goals() const { return m_set.goals; }
     const WorldNav& navigation() const { return m_nav; }
 
     // The current state as one frame for the cache.
@@ -125,7 +130,7 @@ public:
     // Starts `cache` for this world's agents and records the current state as frame 0.
     void startRecording(FrameCache& cache) const;
     // Running totals of the quality figures since construction.
-    const StepCounters& counters() const { return m_counters; }
+    const StepCounters& counters() const { return m_count.counters(); }
     // Bytes held by the per-agent arrays and the neighbour grid.
     std::size_t memoryBytes() const;
 
@@ -174,21 +179,13 @@ public:
                     std::vector<std::int32_t>* previous = nullptr);
 
 private:
-    // One step of m_dt: the phases World::step runs once a frame, or per sub-step.
+    // One step of m_clock.dt: the phases World::step runs once a frame, or per sub-step.
     void stepOnce();
     // adoptState once the checkpoint is in this World's order; previous(i) as above.
     bool adoptMatched(const WorldState& state, const Scene& stateScene, const Scene& thisScene,
                       const std::function<std::int32_t(std::size_t)>& previous);
     // keepBrain: per agent, 0 = its brain memory starts afresh (empty: all keep theirs).
     void restoreDynamicState(const WorldState& state, const std::vector<std::uint8_t>& keepBrain);
-
-    struct TypeParams {
-        float radius, maxSpeed, maxForce, mass, perception;
-        float cosHalfView;  // view cone: cos(view angle / 2); -1 = all round
-        AgentKind kind;
-    };
-    struct CrosswalkBox { glm::vec2 a, b; float halfWidth; int light; };  // light -1 = uncontrolled
-    struct FlowSegment { glm::vec2 a, b; float halfWidth; };
 
     void build(const Scene& scene, const WorldOptions& options);  // the constructor, in this World's coordinates
     void buildStatics(const Scene& scene);
@@ -279,12 +276,12 @@ private:
     // Agents move little in a step: last step's k nearest of agent i, where they are now,
     // bound its k-th nearest from above (squared; perception2 when it had fewer than k).
     float lastNearestBound(std::size_t i, glm::vec3 p, float perception2) const;
-    // The collide pass for agent i: m_resolvedPos[i] from m_nextPos[i] and the overlaps
+    // The collide pass for agent i: m_agents.resolvedPos[i] from m_agents.nextPos[i] and the overlaps
     // with its neighbours (none looked for when the kernel found it collide-free), and a
     // walker's next velocity from its move.
     void resolveCollision(std::size_t i, bool collideFree, bool hasStatics);
     // Then the contact rounds (WorldCollide.cpp): ground bodies that still overlap are
-    // projected apart until none does, or kContactRounds; m_nextPos is their scratch.
+    // projected apart until none does, or kContactRounds; m_agents.nextPos is their scratch.
     void settleContacts(bool hasStatics);
     bool settles(std::size_t i) const;
     bool settleRound(std::size_t i, bool hasStatics);
@@ -292,24 +289,9 @@ private:
     // arrival, seek, separation, unaligned collision and reciprocal avoidance, containment, wander.
     void buildWalkKernel(bool enabled);
     void stepWalker(std::size_t i);
-    // The step's counters (StepCounters.h), given the values that are not numbers, which
-    // step counts as it commits.
-    void countStep(std::uint64_t nonFinite);
-    // The peak local density (LocalDensity.h) in this step's positions, kept if the highest.
-    void samplePeakDensity();
-    // countStep's overlapping pairs: whether i (at p) and j (at q) overlap; those of i with
-    // the agents of higher index; those of the k-th of the grid's order, k in [begin, end),
-    // with the agents after it (NeighbourGrid::forEachLaterNearRun, or forEachLaterNear
-    // for each). Only a body within i's radius plus the largest one can overlap i.
-    // Whether i at p and j at q overlap by more than the tolerance; if so, their overlap
-    // goes into `depths` as a fraction of r1 + r2.
-    bool overlapping(std::size_t i, glm::vec3 p, std::uint32_t j, glm::vec3 q, OverlapDepths& depths) const;
-    std::uint64_t overlapsAfter(std::size_t i, OverlapDepths& depths) const;
-    std::uint64_t laterOverlaps(std::size_t begin, std::size_t end, OverlapDepths& depths) const;
-    // Leader overtakes (WorldLeaders.cpp): followers ahead of their leader this step.
-    void countLeaderOvertakes();
-    float routeProgress(std::size_t path, glm::vec2 p) const;
-    const TypeCollision& collision(std::size_t i) const { return m_collision[m_info[i].typeIndex]; }
+    // What the phases read of this World besides their own state (StepView.h).
+    StepView view() const;
+    const TypeCollision& collision(std::size_t i) const { return m_types.collision[m_agents.info[i].typeIndex]; }
     // Brain phase and its effect on steering (WorldBrain.cpp, WorldBrainSense.cpp).
     void buildBrains(const Scene& scene);
     void runBrains();
@@ -348,13 +330,7 @@ private:
     void trafficAfterStep();
     glm::vec2 wantedHeading(std::size_t i) const;
 
-    std::vector<TypeParams> m_types;
-    std::vector<TypeSteering> m_steering;  // per type
-    std::vector<TypeCollision> m_collision;  // per type: layers and priority
-    // Per type: the share of max force a pedestrian that keeps its distance (separation) but
-    // looks no further ahead (neither unaligned nor reciprocal avoidance) steps right with, an
-    // oncoming walker in its way (KeepRight.h); 0 for every other type.
-    std::vector<float> m_keepRight;
+    AgentTypes m_types;  // per type: body, steering, collision layers
     std::vector<std::uint8_t> m_boidKernel;  // per type: steps through stepBoid
     // Per type, the boids kernel's parameters made usable once (WorldFlock.cpp): weights
     // (0 = off), gains = mass / response time, lengths in m.
@@ -377,55 +353,17 @@ private:
     struct WalkType {
         float wContainment, wSeparation, wUnaligned, wArrival, wSeek, wWander;
         bool reciprocal;
-        float keepRight;     // as m_keepRight
+        float keepRight;     // as m_types.keepRight
         bool aroundStatics;  // wall following or obstacle avoidance, and walls or obstacles to steer round
         bool constrained;    // walls or circles to hold the body out of (World::constrain)
         float maxForce, range, damping, horizonS, marginM, brake, lateral;
         float toleranceM, slowingM, gainArrival, gainSeek, dtOverMass;
     };
     std::vector<WalkType> m_walkTypes;
-    bool m_makingWay = false;  // some types differ in layers or priority (else all collide as equals)
 
-    // The set, static during a run.
-    SegmentGrid m_walls;  // walls and the 4 sides of box obstacles
-    std::vector<CircleObstacle> m_circles;
-    std::vector<BoxObstacle> m_boxes;
-    SegmentGrid m_obstacleGrid;  // circles and boxes by their bounding boxes; index < circles = circle
-    std::vector<Goal> m_goals;
-    std::vector<std::vector<glm::vec3>> m_pathPoints;
-    std::vector<Path> m_paths;
-    std::vector<TrafficLight> m_lights;
-    std::vector<CrosswalkBox> m_crosswalks;
-    std::vector<FlowSegment> m_flow;
-    Terrain m_terrain;
-    WalkableBox m_bounds;
+    StaticSet m_set;  // walls, obstacles, goals, paths, lights, crosswalks, flow, terrain, bounds
 
-    // Structure of arrays, dense agent index; m_next* hold the step being computed.
-    std::vector<AgentInfo> m_info;
-    std::vector<glm::vec3> m_pos, m_vel, m_fwd, m_side, m_up;
-    std::vector<glm::vec3> m_nextPos, m_nextVel, m_nextFwd, m_nextSide, m_nextUp;
-    std::vector<WanderState> m_wander, m_nextWander;
-    // The steering force a walker decided on at the last decision (StepRate.h), applied
-    // at every step until the next.
-    std::vector<glm::vec3> m_heldForce;
-    std::vector<float> m_radius, m_maxSpeed, m_phase, m_stride, m_arrivalTime;
-    std::vector<std::int32_t> m_goal, m_path, m_leader;
-    std::vector<glm::vec2> m_goalSpot;  // each agent's own point inside its goal's disk
-    // Path followers: how far along their path's spine they have come, m (never back; see
-    // advancePathProgress), so a hairpin's walked leg never draws them back. 0 without a path.
-    std::vector<float> m_pathAlong;
-    // Started inside a wall or obstacle and not yet out: walks straight to m_escapeTo
-    // (clear of every shape) at its own pace, through what holds it (WorldEscape.cpp).
-    std::vector<std::uint8_t> m_escaping;
-    std::vector<glm::vec2> m_escapeTo;
-    // arrived: entered its goal's area or reached its path's end (the stats' figure);
-    // stopped: frozen for good (see commit); m_stoppedBefore: m_stopped as the commit
-    // phase began.
-    std::vector<std::uint8_t> m_arrived, m_stopped, m_stoppedBefore, m_onCrosswalk;
-    std::vector<std::uint32_t> m_nearIndex;  // kMaxNeighbours per agent: whom it sensed this step
-    std::vector<std::uint8_t> m_nearCount;
-    std::vector<glm::vec3> m_resolvedPos;
-    std::vector<std::uint8_t> m_contactMoved;  // per step: moved by the contact rounds
+    AgentColumns m_agents;  // the agents' state, a column per attribute
 
     NeighbourGrid m_grid;
     bool m_gridCurrent = false;  // the grid indexes the current positions
@@ -434,21 +372,13 @@ private:
     bool m_neighbourSweep = true;  // WorldOptions::neighbourSweep
     bool m_steerEight = false;     // WorldOptions::steerEight, where canSteerEight
     float m_maxRadius = 0.0f;    // the largest body radius, m
-    StepCounters m_counters;
+    CountPhase m_count;  // the run's figures (StepCounters.h)
     std::uint64_t m_seed = 1;
-    std::uint64_t m_step = 0;  // steps, m_subSteps per frame
-    float m_frameDt = 1.0f / 24.0f;
-    int m_subSteps = 1;
-    // Whether this step decides (steers and avoids) or applies the held force, and the
-    // time until the next decision (decisionAt, StepRate.h).
-    bool m_decide = true;
-    float m_decideDt = 1.0f / 24.0f;
-    float m_dt = 1.0f / 24.0f;  // one step's length, s (a frame's below 24 fps: StepRate.h)
+    StepClock m_clock;
     ThreadTeam m_team;
     WorldTraffic m_traffic;
     WorldNav m_nav;
     glm::dvec2 m_origin{0.0};         // the scene's (x, z) of this World's (0, 0)
-    std::vector<std::uint8_t> m_out;  // left through an exit: never simulated or perceived again
     std::shared_ptr<detail::WorldBrains> m_brains;  // null when no type has a brain
 };
 

@@ -4,7 +4,7 @@
 #include "simcore/world/WorldBrain.h"
 
 #include "simcore/brain/BrainCompiler.h"
-#include "simcore/world/Rng.h"
+#include "simcore/base/Rng.h"
 #include "simcore/world/World.h"
 #include "simcore/world/detail/StepGeometry.h"
 #include "simcore/world/detail/WorldBrains.h"
@@ -14,6 +14,7 @@
 #include <glm/trigonometric.hpp>
 
 #include <algorithm>
+#include <optional>
 #include <cmath>
 #include <map>
 #include <optional>
@@ -60,12 +61,12 @@ void World::buildBrains(const Scene& scene)
     // (type, brain) pair that placed agents ask for, in (type, brain name) order, so the
     // batches do not depend on the agents' order.
     const std::size_t typeCount = scene.agentTypes.size();
-    wb.batch.resize(m_pos.size());
+    wb.batch.resize(m_agents.pos.size());
     std::map<std::pair<std::size_t, std::string>, std::int32_t> extra;
-    for (std::size_t i = 0; i < m_pos.size(); ++i) {
-        const std::size_t t = m_info[i].typeIndex;
+    for (std::size_t i = 0; i < m_agents.pos.size(); ++i) {
+        const std::size_t t = m_agents.info[i].typeIndex;
         wb.batch[i] = std::int32_t(t);
-        const auto own = ownBrain.find(m_info[i].id);
+        const auto own = ownBrain.find(m_agents.info[i].id);
         if (own != ownBrain.end() && *own->second != scene.agentTypes[t].brain)
             extra.emplace(std::pair(t, *own->second), 0);
     }
@@ -76,16 +77,16 @@ void World::buildBrains(const Scene& scene)
         index = std::int32_t(batches.size());
         batches.push_back(key);
     }
-    for (std::size_t i = 0; i < m_pos.size(); ++i)
-        if (const auto own = ownBrain.find(m_info[i].id); own != ownBrain.end())
-            if (const auto it = extra.find({m_info[i].typeIndex, *own->second}); it != extra.end())
+    for (std::size_t i = 0; i < m_agents.pos.size(); ++i)
+        if (const auto own = ownBrain.find(m_agents.info[i].id); own != ownBrain.end())
+            if (const auto it = extra.find({m_agents.info[i].typeIndex, *own->second}); it != extra.end())
                 wb.batch[i] = it->second;
     wb.types.resize(batches.size());
-    wb.local.assign(m_pos.size(), -1);
-    wb.action.assign(m_pos.size(), -1);
+    wb.local.assign(m_agents.pos.size(), -1);
+    wb.action.assign(m_agents.pos.size(), -1);
     std::map<std::string, std::int32_t> goalByName;
-    for (std::size_t g = 0; g < m_goals.size(); ++g)
-        goalByName.emplace(m_goals[g].name, std::int32_t(g));
+    for (std::size_t g = 0; g < m_set.goals.size(); ++g)
+        goalByName.emplace(m_set.goals[g].name, std::int32_t(g));
     for (std::size_t b = 0; b < batches.size(); ++b) {
         const AgentType& type = scene.agentTypes[batches[b].first];
         const std::string& brainName = batches[b].second;
@@ -136,16 +137,16 @@ void World::buildBrains(const Scene& scene)
                                     : name == "run"  ? std::int8_t(Clip::Run)
                                                      : std::int8_t(-1));
     }
-    for (std::size_t i = 0; i < m_pos.size(); ++i) {
+    for (std::size_t i = 0; i < m_agents.pos.size(); ++i) {
         detail::TypeBrain& tb = wb.types[std::size_t(wb.batch[i])];
         if (!tb.program)
             continue;
         wb.local[i] = std::int32_t(tb.agents.size());
         tb.agents.push_back(std::uint32_t(i));
-        tb.keys.push_back(rng(m_seed, m_info[i].id, 0, kBrainKey));
+        tb.keys.push_back(rng(m_seed, m_agents.info[i].id, 0, kBrainKey));
     }
-    wb.tagValues.assign(wb.tags.size(), std::vector<float>(m_pos.size(), 0.0f));
-    wb.vehicleOf.assign(m_pos.size(), -1);
+    wb.tagValues.assign(wb.tags.size(), std::vector<float>(m_agents.pos.size(), 0.0f));
+    wb.vehicleOf.assign(m_agents.pos.size(), -1);
     for (std::size_t v = 0; v < m_traffic.vehicleAgent.size(); ++v)
         wb.vehicleOf[m_traffic.vehicleAgent[v]] = std::int32_t(v);
     wb.vehicleSpeed.assign(m_traffic.vehicleAgent.size(), std::nanf(""));
@@ -164,7 +165,7 @@ void World::buildBrains(const Scene& scene)
             tb.itemSetChannel.push_back(sound ? std::int32_t(detail::channelIndex(wb, set.substr(6))) : -1);
         }
     }
-    detail::buildSoundChannels(wb, scene, m_info);
+    detail::buildSoundChannels(wb, scene, m_agents.info);
 }
 
 // Brain: sense from the previous state, evaluate each type's program for all its agents,
@@ -184,7 +185,7 @@ void World::runBrains()
                                                                             : tb.itemCounts[s].data());
         in.agentKey = tb.keys.data();
         in.timeS = float(timeS());
-        in.dtS = m_dt;
+        in.dtS = m_clock.dt;
         std::string error;
         if (!tb.evaluator->evaluate(in, &error, &m_team)) {
             wb.errors.push_back(error);
@@ -202,25 +203,24 @@ void World::runBrains()
                                        column);
         tb.weight.fill(nullptr);
         for (const auto& [name, column] : out.weights)
-            for (std::size_t b = 0; b < kBehaviourCount; ++b)
-                if (name == behaviourName(Behaviour(b)))
-                    tb.weight[b] = column;
+            if (const std::optional<Behaviour> b = behaviourFromName(name))
+                tb.weight[std::size_t(*b)] = column;
         const std::size_t n = tb.agents.size();
         m_team.forEach(n, 1024, [&](std::size_t k) {
             const std::size_t i = tb.agents[k];
             if (tb.action)
                 wb.action[i] = std::int16_t(tb.action[k]);
-            if (!tb.goal || m_stopped[i])
+            if (!tb.goal || m_agents.stopped[i])
                 return;
             const auto choice = std::size_t(std::max(0.0f, tb.goal[k]));
             const std::int32_t g = choice < tb.goalIndex.size() ? tb.goalIndex[choice] : -1;
-            if (g < 0 || g == m_goal[i])
+            if (g < 0 || g == m_agents.goal[i])
                 return;
             // A new goal: the agent heads for its own spot in it, drawn as at the start.
-            m_goal[i] = g;
-            const Goal& goal = m_goals[std::size_t(g)];
-            const AgentId id = m_info[i].id;
-            m_goalSpot[i] = detail::goalSpot(goal.position, goal.radiusM, goal.exit, m_radius[i],
+            m_agents.goal[i] = g;
+            const Goal& goal = m_set.goals[std::size_t(g)];
+            const AgentId id = m_agents.info[i].id;
+            m_agents.goalSpot[i] = detail::goalSpot(goal.position, goal.radiusM, goal.exit, m_agents.radius[i],
                                              rngUniform(m_seed, id, std::uint64_t(g) + 1, kGoalSpotR),
                                              rngUniform(m_seed, id, std::uint64_t(g) + 1, kGoalSpotA));
         });
@@ -249,16 +249,16 @@ void World::runBrains()
 
 std::size_t World::neighboursThisStep(std::size_t i, Neighbour* out)
 {
-    std::uint32_t* index = &m_nearIndex[i * kMaxNeighbours];
+    std::uint32_t* index = &m_agents.nearIndex[i * kMaxNeighbours];
     if (!m_brains || m_brains->local[i] < 0 || !m_brains->types[std::size_t(m_brains->batch[i])].gathersNeighbours) {
         const std::size_t count = gatherNeighbours(i, out, index);
-        m_nearCount[i] = std::uint8_t(count);
+        m_agents.nearCount[i] = std::uint8_t(count);
         return count;
     }
-    const std::size_t count = m_nearCount[i];
+    const std::size_t count = m_agents.nearCount[i];
     for (std::size_t k = 0; k < count; ++k) {
         const std::uint32_t j = index[k];
-        out[k] = {m_pos[j], m_vel[j], m_fwd[j], m_radius[j], m_info[j].id};
+        out[k] = {m_agents.pos[j], m_agents.vel[j], m_agents.fwd[j], m_agents.radius[j], m_agents.info[j].id};
     }
     return count;
 }
@@ -267,11 +267,11 @@ float World::brainSpeedCap(std::size_t i) const
 {
     // A driven vehicle's brain speed went to the TrafficSystem, which moves it.
     if (!m_brains || m_brains->local[i] < 0 || isDriven(i))
-        return m_maxSpeed[i];
+        return m_agents.maxSpeed[i];
     const detail::TypeBrain& tb = m_brains->types[std::size_t(m_brains->batch[i])];
     if (!tb.speed)
-        return m_maxSpeed[i];
-    return std::clamp(tb.speed[m_brains->local[i]], 0.0f, m_maxSpeed[i]);
+        return m_agents.maxSpeed[i];
+    return std::clamp(tb.speed[m_brains->local[i]], 0.0f, m_agents.maxSpeed[i]);
 }
 
 // The brain's speed is a cap applied after steering, not a lower max speed for the
@@ -287,8 +287,8 @@ void World::capToBrainSpeed(std::size_t i, const SteeringAgent& self, SteeringAg
     const float cap = brainSpeedCap(i);
     if (glm::length(next.velocity) <= cap)
         return;
-    next.velocity = brainLimited(i, next.velocity, std::max(cap, std::min(kYieldSpeedMps, m_maxSpeed[i])), 1.0f);
-    next.position = self.position + next.velocity * m_dt;
+    next.velocity = brainLimited(i, next.velocity, std::max(cap, std::min(kYieldSpeedMps, m_agents.maxSpeed[i])), 1.0f);
+    next.position = self.position + next.velocity * m_clock.dt;
 }
 
 // Agent i's move v over `seconds` (a velocity for 1) within its brain's speed: along the
@@ -306,8 +306,8 @@ glm::vec3 World::brainLimited(std::size_t i, glm::vec3 v, float aside, float sec
     // The way it wants to go: only a walker with a path or a goal has one (for the rest,
     // wantedHeading is where it happens to be heading).
     glm::vec2 h(0.0f);
-    if (m_types[m_info[i].typeIndex].kind == AgentKind::Pedestrian && !m_steering[m_info[i].typeIndex].vehicle.flying &&
-        (m_path[i] >= 0 || m_goal[i] >= 0))
+    if (m_types.params[m_agents.info[i].typeIndex].kind == AgentKind::Pedestrian && !m_types.steering[m_agents.info[i].typeIndex].vehicle.flying &&
+        (m_agents.path[i] >= 0 || m_agents.goal[i] >= 0))
         h = wantedHeading(i);
     if (!(glm::dot(h, h) > 1e-12f))
         return v * (cap / speed);
@@ -393,7 +393,7 @@ void World::pickBrainAgent(std::ptrdiff_t i)
     for (detail::TypeBrain& tb : m_brains->types)
         if (tb.evaluator)
             tb.evaluator->setPickedAgent(-1);
-    if (i < 0 || std::size_t(i) >= m_pos.size() || m_brains->local[std::size_t(i)] < 0)
+    if (i < 0 || std::size_t(i) >= m_agents.pos.size() || m_brains->local[std::size_t(i)] < 0)
         return;
     m_brains->types[std::size_t(m_brains->batch[std::size_t(i)])].evaluator->setPickedAgent(m_brains->local[std::size_t(i)]);
 }

@@ -5,7 +5,7 @@
 // not have). Never runs one.
 
 #include "simcore/brain/BrainProgram.h"
-#include "simcore/io/Diagnostic.h"
+#include "simcore/base/Diagnostic.h"
 #include "simcore/scene/Scene.h"
 
 #include <string>

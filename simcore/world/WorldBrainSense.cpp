@@ -79,18 +79,18 @@ void World::senseForBrain(TypeBrain& tb)
     const float third = tb.viewDeg / 6.0f;
     m_team.forEach(n, 256, [&](std::size_t k) {
         const std::size_t i = tb.agents[k];
-        const TypeParams& type = m_types[m_info[i].typeIndex];
-        const TypeSteering& steering = m_steering[m_info[i].typeIndex];
-        const glm::vec2 p = xz(m_pos[i]);
-        glm::vec2 f = xz(m_fwd[i]);
+        const TypeParams& type = m_types.params[m_agents.info[i].typeIndex];
+        const TypeSteering& steering = m_types.steering[m_agents.info[i].typeIndex];
+        const glm::vec2 p = xz(m_agents.pos[i]);
+        glm::vec2 f = xz(m_agents.fwd[i]);
         f = glm::dot(f, f) > 1e-12f ? glm::normalize(f) : glm::vec2(1.0f, 0.0f);
-        const float speed = glm::length(m_vel[i]);
-        // The neighbours go into the agent's own m_nearIndex row, where the steer phase
+        const float speed = glm::length(m_agents.vel[i]);
+        // The neighbours go into the agent's own m_agents.nearIndex row, where the steer phase
         // of this step finds them instead of querying the grid a second time.
         std::array<Neighbour, kMaxNeighbours> near;
-        const std::size_t count = needNeighbours ? gatherNeighbours(i, near.data(), &m_nearIndex[i * kMaxNeighbours]) : 0;
+        const std::size_t count = needNeighbours ? gatherNeighbours(i, near.data(), &m_agents.nearIndex[i * kMaxNeighbours]) : 0;
         if (needNeighbours)
-            m_nearCount[i] = std::uint8_t(count);
+            m_agents.nearCount[i] = std::uint8_t(count);
         tb.neighbourCount[k] = std::uint8_t(std::min<std::size_t>(count, kBrainNeighbours));
         std::array<float, 3> feeler{};  // left, centre, right
         if (needFeelers) {
@@ -99,13 +99,13 @@ void World::senseForBrain(TypeBrain& tb)
             for (int s = 0; s < 3; ++s) {
                 const glm::vec2 dir = rotated(f, angles[s]);
                 float t = length;
-                m_walls.forEachNear(p + dir * (0.5f * length), 0.5f * length, [&](std::uint32_t w) {
-                    const Segment& seg = m_walls.segment(w);
+                m_set.walls.forEachNear(p + dir * (0.5f * length), 0.5f * length, [&](std::uint32_t w) {
+                    const Segment& seg = m_set.walls.segment(w);
                     t = std::min(t, rayToSegment(p, dir, length, seg.a, seg.b));
                 });
-                m_obstacleGrid.forEachNear(p + dir * (0.5f * length), 0.5f * length, [&](std::uint32_t o) {
-                    if (o < m_circles.size())
-                        t = std::min(t, rayToCircle(p, dir, length, xz(m_circles[o].centre), m_circles[o].radius));
+                m_set.obstacleGrid.forEachNear(p + dir * (0.5f * length), 0.5f * length, [&](std::uint32_t o) {
+                    if (o < m_set.circles.size())
+                        t = std::min(t, rayToCircle(p, dir, length, xz(m_set.circles[o].centre), m_set.circles[o].radius));
                 });
                 feeler[std::size_t(s)] = t;
             }
@@ -119,12 +119,12 @@ void World::senseForBrain(TypeBrain& tb)
             case SensorFill::GoalDistance: {
                 bool has = false;
                 glm::vec2 target(0.0f);
-                if (m_path[i] >= 0 && !m_paths[std::size_t(m_path[i])].closed) {
+                if (m_agents.path[i] >= 0 && !m_set.paths[std::size_t(m_agents.path[i])].closed) {
                     has = true;
-                    target = m_paths[std::size_t(m_path[i])].points.back();
-                } else if (m_path[i] < 0 && m_goal[i] >= 0) {
+                    target = m_set.paths[std::size_t(m_agents.path[i])].points.back();
+                } else if (m_agents.path[i] < 0 && m_agents.goal[i] >= 0) {
                     has = true;
-                    target = m_goalSpot[i];
+                    target = m_agents.goalSpot[i];
                 }
                 if (tb.fills[s] == SensorFill::GoalDistance)
                     v = has ? glm::distance(p, target) : kNoneM;
@@ -134,9 +134,9 @@ void World::senseForBrain(TypeBrain& tb)
             }
             case SensorFill::PathOffset: {
                 v = 0.0f;
-                if (m_path[i] < 0)
+                if (m_agents.path[i] < 0)
                     break;
-                const std::vector<glm::vec2>& pts = m_paths[std::size_t(m_path[i])].points;
+                const std::vector<glm::vec2>& pts = m_set.paths[std::size_t(m_agents.path[i])].points;
                 float best = INFINITY;
                 for (std::size_t q = 0; q + 1 < pts.size(); ++q) {
                     const glm::vec2 c = closestOnSegment(p, pts[q], pts[q + 1]);
@@ -151,7 +151,7 @@ void World::senseForBrain(TypeBrain& tb)
                 break;
             }
             case SensorFill::FlowBearing: {
-                const glm::vec2 d = xz(flowDirection(m_pos[i]));
+                const glm::vec2 d = xz(flowDirection(m_agents.pos[i]));
                 v = glm::dot(d, d) > 0.0f ? bearingDeg(f, d) : 0.0f;
                 break;
             }
@@ -177,8 +177,8 @@ void World::senseForBrain(TypeBrain& tb)
             case SensorFill::FeelerRight: v = feeler[2]; break;
             case SensorFill::WallDistance: {
                 v = kWallReachM;
-                m_walls.forEachNear(p, kWallReachM, [&](std::uint32_t w) {
-                    const Segment& seg = m_walls.segment(w);
+                m_set.walls.forEachNear(p, kWallReachM, [&](std::uint32_t w) {
+                    const Segment& seg = m_set.walls.segment(w);
                     v = std::min(v, glm::distance(p, closestOnSegment(p, seg.a, seg.b)));
                 });
                 break;
@@ -202,7 +202,7 @@ void World::senseForBrain(TypeBrain& tb)
                     // crosswalk along the sidewalk is not held at it.
                     glm::vec2 w = wantedHeading(i);
                     w = glm::dot(w, w) > 1e-12f ? glm::normalize(w) : f;
-                    for (const CrosswalkBox& c : m_crosswalks) {
+                    for (const CrosswalkBox& c : m_set.crosswalks) {
                         if (c.light < 0)
                             continue;
                         const glm::vec2 ab = c.b - c.a;
@@ -215,9 +215,9 @@ void World::senseForBrain(TypeBrain& tb)
                             continue;
                         float d = kNoneM;
                         if (along < 0.0f && glm::dot(w, dir) > kAlongCos)
-                            d = -along - m_radius[i];
+                            d = -along - m_agents.radius[i];
                         else if (along > len && glm::dot(w, dir) < -kAlongCos)
-                            d = along - len - m_radius[i];
+                            d = along - len - m_agents.radius[i];
                         if (d < gap) {
                             gap = d;
                             light = 0.5f * float(lightState(std::size_t(c.light)));
@@ -232,7 +232,7 @@ void World::senseForBrain(TypeBrain& tb)
                 // The nearest hero other than the agent itself, where it stood at the step's start.
                 float best = kNoneM, bearing = 0.0f;
                 for (const std::uint32_t h : m_traffic.heroAgent) {
-                    const glm::vec2 d = xz(m_pos[h]) - p;
+                    const glm::vec2 d = xz(m_agents.pos[h]) - p;
                     const float dist = glm::length(d);
                     if (h != i && dist < best) {
                         best = dist;
@@ -248,12 +248,12 @@ void World::senseForBrain(TypeBrain& tb)
                 break;
             }
             case SensorFill::Time: v = time; break;
-            case SensorFill::AttrMaxSpeed: v = m_maxSpeed[i]; break;
-            case SensorFill::AttrRadius: v = m_radius[i]; break;
+            case SensorFill::AttrMaxSpeed: v = m_agents.maxSpeed[i]; break;
+            case SensorFill::AttrRadius: v = m_agents.radius[i]; break;
             case SensorFill::AttrMass: v = type.mass; break;
             case SensorFill::AttrMaxForce: v = type.maxForce; break;
             case SensorFill::AttrPerception: v = type.perception; break;
-            case SensorFill::AttrSpeedFactor: v = type.maxSpeed > 0.0f ? m_maxSpeed[i] / type.maxSpeed : 1.0f; break;
+            case SensorFill::AttrSpeedFactor: v = type.maxSpeed > 0.0f ? m_agents.maxSpeed[i] / type.maxSpeed : 1.0f; break;
             case SensorFill::SoundBearing:
             case SensorFill::SoundDistance:
             case SensorFill::SoundStrength:
@@ -274,7 +274,7 @@ void World::senseForBrain(TypeBrain& tb)
                         case SensorFill::NeighbourBearing: x = bearingDeg(f, q - p); break;
                         case SensorFill::NeighbourSpeed: x = glm::length(near[j].velocity); break;
                         case SensorFill::NeighbourTag:
-                            x = m_brains->tagValues[tb.fillTag[s]][m_nearIndex[i * kMaxNeighbours + j]];
+                            x = m_brains->tagValues[tb.fillTag[s]][m_agents.nearIndex[i * kMaxNeighbours + j]];
                             break;
                         default: x = bearingDeg(f, xz(near[j].forward)); break;
                         }
@@ -287,7 +287,7 @@ void World::senseForBrain(TypeBrain& tb)
         // Sound: each channel the type hears once, then every sensor reading it.
         for (const std::uint32_t c : tb.hears) {
             HeardList heard;
-            const std::size_t loud = hearChannel(*m_brains, c, m_grid, m_info, m_pos, m_out, i, p, f, heard);
+            const std::size_t loud = hearChannel(*m_brains, c, m_grid, m_agents.info, m_agents.pos, m_agents.out, i, p, f, heard);
             for (std::size_t s = 0; s < sensors; ++s) {
                 const SensorFill fill = tb.fills[s];
                 if (!isSoundFill(fill) || tb.fillTag[s] != c)

@@ -16,35 +16,35 @@ namespace throng::sim {
 
 void World::resolveCollision(std::size_t i, bool collideFree, bool hasStatics)
 {
-    if (m_stopped[i]) {  // frozen where it stands
-        m_resolvedPos[i] = m_nextPos[i];
+    if (m_agents.stopped[i]) {  // frozen where it stands
+        m_agents.resolvedPos[i] = m_agents.nextPos[i];
         return;
     }
-    glm::vec3 p = m_nextPos[i] + (collideFree ? glm::vec3(0.0f) : separateBodies(i));
-    const bool flying = m_steering[m_info[i].typeIndex].vehicle.flying;
+    glm::vec3 p = m_agents.nextPos[i] + (collideFree ? glm::vec3(0.0f) : separateBodies(i));
+    const bool flying = m_types.steering[m_agents.info[i].typeIndex].vehicle.flying;
     // Nobody moves faster than its max speed, nudges included, so what the viewer
     // sees and the gait it is animated with always agree. A brain's lower speed holds
     // back only the walker's progress: pushes may move it aside or back, so a walker
     // its brain stops still gives way, but never on past where its brain holds it.
-    glm::vec3 move = p - m_pos[i];
+    glm::vec3 move = p - m_agents.pos[i];
     if (m_brains) {
-        if (const glm::vec3 held = brainLimited(i, move, m_maxSpeed[i], m_dt); held != move) {
+        if (const glm::vec3 held = brainLimited(i, move, m_agents.maxSpeed[i], m_clock.dt); held != move) {
             move = held;
-            p = m_pos[i] + move;
+            p = m_agents.pos[i] + move;
         }
     }
-    const float maxMove = m_maxSpeed[i] * m_dt, moved = glm::length(move);
+    const float maxMove = m_agents.maxSpeed[i] * m_clock.dt, moved = glm::length(move);
     if (moved > maxMove && moved > 0.0f)
-        p = m_pos[i] + move * (maxMove / moved);
+        p = m_agents.pos[i] + move * (maxMove / moved);
     if (!flying) {
         if (hasStatics)
-            constrain(i, m_pos[i], p);
-        p.y = m_nextPos[i].y;
+            constrain(i, m_agents.pos[i], p);
+        p.y = m_agents.nextPos[i].y;
         // A walker's velocity is the move it made (nobody reads another's in this pass).
-        m_nextVel[i] = (p - m_pos[i]) / m_dt;
-        m_nextVel[i].y = 0.0f;
+        m_agents.nextVel[i] = (p - m_agents.pos[i]) / m_clock.dt;
+        m_agents.nextVel[i].y = 0.0f;
     }
-    m_resolvedPos[i] = p;
+    m_agents.resolvedPos[i] = p;
 }
 
 // The contact rounds. One collide pass leaves a dense crowd pressed into itself: each
@@ -62,8 +62,8 @@ void World::resolveCollision(std::size_t i, bool collideFree, bool hasStatics)
 // between others who had stopped (TestCrowdSteering's ring: 8 of 120 against 2).
 void World::settleContacts(bool hasStatics)
 {
-    const std::size_t n = m_pos.size();
-    m_contactMoved.assign(n, 0);
+    const std::size_t n = m_agents.pos.size();
+    m_agents.contactMoved.assign(n, 0);
     bool anyMoved = false;
     for (int round = 0; round < detail::kContactRounds; ++round) {
         const std::uint64_t moved = m_team.sumChunks(n, 256, [&](std::size_t begin, std::size_t end, int) {
@@ -72,7 +72,7 @@ void World::settleContacts(bool hasStatics)
                 count += settleRound(i, hasStatics);
             return count;
         });
-        std::swap(m_nextPos, m_resolvedPos);  // the round's places are the resolved ones
+        std::swap(m_agents.nextPos, m_agents.resolvedPos);  // the round's places are the resolved ones
         if (moved == 0)
             break;
         anyMoved = true;
@@ -80,23 +80,23 @@ void World::settleContacts(bool hasStatics)
     if (!anyMoved)
         return;
     m_team.forEach(n, 256, [&](std::size_t i) {
-        if (!m_contactMoved[i])
+        if (!m_agents.contactMoved[i])
             return;
-        glm::vec3 p = m_resolvedPos[i], move = p - m_pos[i];
+        glm::vec3 p = m_agents.resolvedPos[i], move = p - m_agents.pos[i];
         if (m_brains)
-            move = brainLimited(i, move, m_maxSpeed[i], m_dt);
-        const float maxMove = m_maxSpeed[i] * m_dt, moved = glm::length(move);
+            move = brainLimited(i, move, m_agents.maxSpeed[i], m_clock.dt);
+        const float maxMove = m_agents.maxSpeed[i] * m_clock.dt, moved = glm::length(move);
         if (moved > maxMove && moved > 0.0f)
             move *= maxMove / moved;
-        if (move != p - m_pos[i]) {
-            p = m_pos[i] + move;
+        if (move != p - m_agents.pos[i]) {
+            p = m_agents.pos[i] + move;
             if (hasStatics)
-                constrain(i, m_pos[i], p);
+                constrain(i, m_agents.pos[i], p);
         }
         p.y = groundHeight(p.x, p.z);
-        m_resolvedPos[i] = p;
-        m_nextVel[i] = (p - m_pos[i]) / m_dt;
-        m_nextVel[i].y = 0.0f;
+        m_agents.resolvedPos[i] = p;
+        m_agents.nextVel[i] = (p - m_agents.pos[i]) / m_clock.dt;
+        m_agents.nextVel[i].y = 0.0f;
     });
 }
 
@@ -104,25 +104,25 @@ void World::settleContacts(bool hasStatics)
 // has left, flies, is driven along a lane, walks out of an obstacle or waits off stage).
 bool World::settles(std::size_t i) const
 {
-    return !m_stopped[i] && !m_out[i] && !m_steering[m_info[i].typeIndex].vehicle.flying && !m_traffic.isDriven(i) &&
-           !m_escaping[i] && !(m_traffic.anyOffStage && m_traffic.offStage[i]);
+    return !m_agents.stopped[i] && !m_agents.out[i] && !m_types.steering[m_agents.info[i].typeIndex].vehicle.flying && !m_traffic.isDriven(i) &&
+           !m_agents.escaping[i] && !(m_traffic.anyOffStage && m_traffic.offStage[i]);
 }
 
 bool World::settleRound(std::size_t i, bool hasStatics)
 {
-    const glm::vec3 p = m_resolvedPos[i];
-    m_nextPos[i] = p;
+    const glm::vec3 p = m_agents.resolvedPos[i];
+    m_agents.nextPos[i] = p;
     if (!settles(i))
         return false;
     glm::vec3 push(0.0f);
-    const std::uint32_t* near = &m_nearIndex[i * kMaxNeighbours];
-    for (std::size_t k = 0; k < m_nearCount[i]; ++k) {
+    const std::uint32_t* near = &m_agents.nearIndex[i * kMaxNeighbours];
+    for (std::size_t k = 0; k < m_agents.nearCount[i]; ++k) {
         const std::uint32_t j = near[k];
         if (m_traffic.anyOffStage && m_traffic.offStage[j])
             continue;
-        glm::vec3 d = p - m_resolvedPos[j];
+        glm::vec3 d = p - m_agents.resolvedPos[j];
         d.y = 0.0f;
-        const float contact = m_radius[i] + m_radius[j], d2 = glm::dot(d, d);
+        const float contact = m_agents.radius[i] + m_agents.radius[j], d2 = glm::dot(d, d);
         const float slop = contact - detail::kContactSlopM;
         if (!(d2 < slop * slop))
             continue;
@@ -140,8 +140,8 @@ bool World::settleRound(std::size_t i, bool hasStatics)
     q.y = p.y;
     if (q == p)
         return false;
-    m_nextPos[i] = q;
-    m_contactMoved[i] = 1;
+    m_agents.nextPos[i] = q;
+    m_agents.contactMoved[i] = 1;
     return true;
 }
 

@@ -75,33 +75,33 @@ void DebugRecorder::target(glm::vec3 point)
 
 void World::describeAgent(std::size_t i, DebugSink& sink) const
 {
-    if (i >= m_pos.size())
+    if (i >= m_agents.pos.size())
         return;
-    const glm::vec3 p = m_pos[i];
-    sink.agent(m_info[i].id, p, m_fwd[i], m_vel[i], m_radius[i]);
-    if (m_out[i] != 0 || isDriven(i))
+    const glm::vec3 p = m_agents.pos[i];
+    sink.agent(m_agents.info[i].id, p, m_agents.fwd[i], m_agents.vel[i], m_agents.radius[i]);
+    if (m_agents.out[i] != 0 || isDriven(i))
         return;  // gone, or moved by traffic or keyframes: nothing steers it
-    const TypeParams& t = m_types[m_info[i].typeIndex];
-    const TypeSteering& s = m_steering[m_info[i].typeIndex];
+    const TypeParams& t = m_types.params[m_agents.info[i].typeIndex];
+    const TypeSteering& s = m_types.steering[m_agents.info[i].typeIndex];
     sink.viewCone(t.perception, 2.0f * std::acos(std::clamp(t.cosHalfView, -1.0f, 1.0f)));
 
     // Whom it sensed at the last step, where they are now.
     std::array<Neighbour, kMaxNeighbours> near;
-    const std::size_t count = std::min<std::size_t>(m_nearCount[i], kMaxNeighbours);
+    const std::size_t count = std::min<std::size_t>(m_agents.nearCount[i], kMaxNeighbours);
     for (std::size_t k = 0; k < count; ++k) {
-        const std::size_t j = m_nearIndex[i * kMaxNeighbours + k];
-        near[k] = {m_pos[j], m_vel[j], m_fwd[j], m_radius[j], m_info[j].id};
-        sink.neighbour(m_info[j].id, m_pos[j]);
+        const std::size_t j = m_agents.nearIndex[i * kMaxNeighbours + k];
+        near[k] = {m_agents.pos[j], m_agents.vel[j], m_agents.fwd[j], m_agents.radius[j], m_agents.info[j].id};
+        sink.neighbour(m_agents.info[j].id, m_agents.pos[j]);
     }
 
     const SteeringAgent self = steeringAgent(i);
-    const glm::vec2 h = glm::length(glm::vec2(m_fwd[i].x, m_fwd[i].z)) > 0.0f
-                            ? glm::normalize(glm::vec2(m_fwd[i].x, m_fwd[i].z))
+    const glm::vec2 h = glm::length(glm::vec2(m_agents.fwd[i].x, m_agents.fwd[i].z)) > 0.0f
+                            ? glm::normalize(glm::vec2(m_agents.fwd[i].x, m_agents.fwd[i].z))
                             : glm::vec2(0.0f);
-    const float speed = glm::length(m_vel[i]);
-    if (s.on(Behaviour::WallFollowing) && !m_walls.segments().empty())
+    const float speed = glm::length(m_agents.vel[i]);
+    if (s.on(Behaviour::WallFollowing) && !m_set.walls.segments().empty())
         publishFeelers(sink, p, h, s.walls.feelerMinM + speed * s.walls.feelerLookaheadS, s.walls.sideFeelerAngleRad);
-    if (s.on(Behaviour::ObstacleAvoidance) && (!m_circles.empty() || !m_boxes.empty()))
+    if (s.on(Behaviour::ObstacleAvoidance) && (!m_set.circles.empty() || !m_set.boxes.empty()))
         publishFeelers(sink, p, h, s.obstacles.minLengthM + speed * s.obstacles.lookaheadS,
                        s.obstacles.whiskerAngleRad);
 
@@ -115,14 +115,14 @@ void World::describeAgent(std::size_t i, DebugSink& sink) const
         way.push_back(p);
         for (std::size_t k = std::min<std::size_t>(m_nav.waypoint[i], points.size()); k < points.size(); ++k)
             way.emplace_back(points[k].x, groundHeight(points[k].x, points[k].y), points[k].y);
-    } else if (m_path[i] >= 0) {
-        const std::vector<glm::vec3>& points = m_pathPoints[std::size_t(m_path[i])];
+    } else if (m_agents.path[i] >= 0) {
+        const std::vector<glm::vec3>& points = m_set.pathPoints[std::size_t(m_agents.path[i])];
         way.assign(points.begin(), points.end());
     }
     if (!way.empty())
         sink.plannedPath(way);
-    if (m_goal[i] >= 0) {
-        const glm::vec2 spot = m_goalSpot[i];
+    if (m_agents.goal[i] >= 0) {
+        const glm::vec2 spot = m_agents.goalSpot[i];
         sink.target(navGoal(i, glm::vec3(spot.x, groundHeight(spot.x, spot.y), spot.y)));
     }
 }

@@ -32,9 +32,9 @@ bool World::escapeTarget(glm::vec2 p, float r, glm::vec2& out) const
         // The deepest overlap here, and the shortest way out of it.
         float deepest = kInsideM;
         glm::vec2 exit = p;
-        m_obstacleGrid.forEachNear(p, r, [&](std::uint32_t k) {
-            if (k < m_circles.size()) {
-                const CircleObstacle& o = m_circles[k];
+        m_set.obstacleGrid.forEachNear(p, r, [&](std::uint32_t k) {
+            if (k < m_set.circles.size()) {
+                const CircleObstacle& o = m_set.circles[k];
                 const glm::vec2 d = p - xz(o.centre);
                 const float dist = glm::length(d), depth = o.radius + r - dist;
                 if (depth > deepest) {
@@ -44,7 +44,7 @@ bool World::escapeTarget(glm::vec2 p, float r, glm::vec2& out) const
                 }
                 return;
             }
-            const BoxObstacle& b = m_boxes[k - m_circles.size()];
+            const BoxObstacle& b = m_set.boxes[k - m_set.circles.size()];
             const glm::vec2 ax = xz(b.axis), az(-ax.y, ax.x);
             const glm::vec2 d = p - xz(b.centre);
             const float lx = glm::dot(d, ax), lz = glm::dot(d, az);
@@ -57,8 +57,8 @@ bool World::escapeTarget(glm::vec2 p, float r, glm::vec2& out) const
                 exit = px < pz ? p + ax * (sx * (px + kClearM)) : p + az * (sz * (pz + kClearM));
             }
         });
-        m_walls.forEachNear(p, r, [&](std::uint32_t k) {
-            const Segment& s = m_walls.segment(k);
+        m_set.walls.forEachNear(p, r, [&](std::uint32_t k) {
+            const Segment& s = m_set.walls.segment(k);
             const glm::vec2 c = closestOnSegment(p, s.a, s.b);
             const glm::vec2 d = p - c;
             const float dist = glm::length(d), depth = r - dist;
@@ -87,27 +87,27 @@ bool World::escapeTarget(glm::vec2 p, float r, glm::vec2& out) const
 
 void World::findEscapes()
 {
-    const std::size_t n = m_pos.size();
-    m_escaping.assign(n, 0);
-    m_escapeTo.assign(n, glm::vec2(0.0f));
-    if (m_walls.segments().empty() && m_circles.empty())
+    const std::size_t n = m_agents.pos.size();
+    m_agents.escaping.assign(n, 0);
+    m_agents.escapeTo.assign(n, glm::vec2(0.0f));
+    if (m_set.walls.segments().empty() && m_set.circles.empty())
         return;
     for (std::size_t i = 0; i < n; ++i) {
-        if (m_types[m_info[i].typeIndex].kind != AgentKind::Pedestrian || m_traffic.isDriven(i))
+        if (m_types.params[m_agents.info[i].typeIndex].kind != AgentKind::Pedestrian || m_traffic.isDriven(i))
             continue;
         glm::vec2 to;
-        if (escapeTarget(xz(m_pos[i]), m_radius[i], to)) {
-            m_escaping[i] = 1;
-            m_escapeTo[i] = to;
+        if (escapeTarget(xz(m_agents.pos[i]), m_agents.radius[i], to)) {
+            m_agents.escaping[i] = 1;
+            m_agents.escapeTo[i] = to;
         }
     }
 }
 
 void World::escapeStep(std::size_t i, glm::vec3 from, glm::vec3& to) const
 {
-    const glm::vec2 p = xz(from), d = m_escapeTo[i] - p;
-    const float len = glm::length(d), most = std::max(m_maxSpeed[i], kMinEscapeSpeed) * m_dt;
-    const glm::vec2 q = len > most ? p + d * (most / len) : m_escapeTo[i];
+    const glm::vec2 p = xz(from), d = m_agents.escapeTo[i] - p;
+    const float len = glm::length(d), most = std::max(m_agents.maxSpeed[i], kMinEscapeSpeed) * m_clock.dt;
+    const glm::vec2 q = len > most ? p + d * (most / len) : m_agents.escapeTo[i];
     to.x = q.x;
     to.z = q.y;
 }

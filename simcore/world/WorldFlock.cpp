@@ -13,8 +13,8 @@
 
 #include "simcore/steering/detail/SteeringConstants.h"
 #include "simcore/steering/detail/SteeringMath.h"
-#include "simcore/world/Rng.h"
-#include "simcore/world/detail/Lanes.h"
+#include "simcore/base/Rng.h"
+#include "simcore/base/Lanes.h"
 #include "simcore/world/detail/StepConstants.h"
 
 #include <glm/geometric.hpp>
@@ -26,6 +26,7 @@
 namespace throng::sim {
 
 using namespace detail;
+using namespace simd;
 
 namespace {
 
@@ -59,22 +60,22 @@ void World::buildBoidKernel(bool enabled, bool collideShortcut)
 {
     // Brains change weights and speeds per agent, layers or priorities change whom an
     // agent perceives, and signals hold agents back: those worlds keep the general path.
-    const bool plain = enabled && !m_brains && !m_makingWay && m_traffic.signal.empty();
-    m_boidKernel.assign(m_steering.size(), 0);
-    m_collideFree.assign(m_pos.size(), 0);
+    const bool plain = enabled && !m_brains && !m_types.makingWay && m_traffic.signal.empty();
+    m_boidKernel.assign(m_types.steering.size(), 0);
+    m_collideFree.assign(m_agents.pos.size(), 0);
     // How far a flier's next position may lie from where its old velocity takes it: the
     // force changes the velocity by at most maxForce / mass * dt, and lifting it back to
     // its min speed by as much again. The collide pass checks it holds for every agent.
     float accelMax = 0.0f;
     bool anyKernel = false;
-    m_boidTypes.assign(m_steering.size(), BoidType{});
-    for (std::size_t t = 0; t < m_steering.size(); ++t) {
-        const TypeSteering& s = m_steering[t];
+    m_boidTypes.assign(m_types.steering.size(), BoidType{});
+    for (std::size_t t = 0; t < m_types.steering.size(); ++t) {
+        const TypeSteering& s = m_types.steering[t];
         m_boidKernel[t] = plain && fusable(s) ? 1 : 0;
         anyKernel = anyKernel || m_boidKernel[t];
-        accelMax = std::max(accelMax, nonNegative(m_types[t].maxForce) / effectiveMass(m_types[t].mass));
+        accelMax = std::max(accelMax, nonNegative(m_types.params[t].maxForce) / effectiveMass(m_types.params[t].mass));
         // As steerTowards, separate and integrateVehicle make each parameter usable.
-        const float mass = effectiveMass(m_types[t].mass);
+        const float mass = effectiveMass(m_types.params[t].mass);
         BoidType& b = m_boidTypes[t];
         b.wContainment = s.weightIfOn(Behaviour::Containment);
         b.wSeparation = s.weightIfOn(Behaviour::Separation);
@@ -83,7 +84,7 @@ void World::buildBoidKernel(bool enabled, bool collideShortcut)
         b.wCohesion = s.weightIfOn(Behaviour::Cohesion);
         b.wWander = s.weightIfOn(Behaviour::Wander);
         b.mass = mass;
-        b.maxForce = nonNegative(m_types[t].maxForce);
+        b.maxForce = nonNegative(m_types.params[t].maxForce);
         b.range = nonNegative(s.separation.rangeM);
         b.damping = mass / std::max(nonNegative(s.separation.dampingTimeS), kMinResponseTimeS);
         b.gainPursuit = responseGain(mass, s.pursuit.responseTimeS);
@@ -98,9 +99,9 @@ void World::buildBoidKernel(bool enabled, bool collideShortcut)
         b.minSpeed = nonNegative(s.vehicle.minSpeed);
         b.bankGain = nonNegative(s.vehicle.bankingGainS2PerM);
         const float response = std::max(nonNegative(s.vehicle.bankingResponseS), kMinResponseTimeS);
-        b.bankBlend = 1.0f - std::exp(-m_dt / response);
+        b.bankBlend = 1.0f - std::exp(-m_clock.dt / response);
     }
-    const float slack = 2.0f * accelMax * m_dt * m_dt;
+    const float slack = 2.0f * accelMax * m_clock.dt * m_clock.dt;
     m_boidSlackM = collideShortcut && anyKernel && std::isfinite(slack) ? slack : 0.0f;
 }
 
@@ -113,13 +114,13 @@ void World::stepBoid(std::size_t i, NeighbourGrid::Sweep* sweep)
 
 void World::senseBoid(std::size_t i, NeighbourGrid::Sweep* sweep, BoidSense& out)
 {
-    const float perception = m_types[m_info[i].typeIndex].perception, perception2 = perception * perception;
+    const float perception = m_types.params[m_agents.info[i].typeIndex].perception, perception2 = perception * perception;
     // Searching within last step's k nearest (lastNearestBound) visits far fewer cells and
     // candidates; when k are found in it they are exactly the k nearest within the
     // perception radius (everyone nearer lies inside the bound, and the grid offers all of
     // them), and when fewer are found the search runs again in full. So the result never
     // depends on the guess.
-    const float guess2 = m_neighbourSweep ? lastNearestBound(i, m_pos[i], perception2) : perception2;
+    const float guess2 = m_neighbourSweep ? lastNearestBound(i, m_agents.pos[i], perception2) : perception2;
     BoidNearest best;
     searchBoid(i, sweep, guess2, best);
     if (!best.full() && guess2 < perception2)
@@ -129,9 +130,9 @@ void World::senseBoid(std::size_t i, NeighbourGrid::Sweep* sweep, BoidSense& out
 
 void World::searchBoid(std::size_t i, NeighbourGrid::Sweep* sweep, float startBound, BoidNearest& best) const
 {
-    const TypeParams& t = m_types[m_info[i].typeIndex];
-    const glm::vec3 p = m_pos[i], fwd = m_fwd[i];
-    const float radius = m_radius[i];
+    const TypeParams& t = m_types.params[m_agents.info[i].typeIndex];
+    const glm::vec3 p = m_agents.pos[i], fwd = m_agents.fwd[i];
+    const float radius = m_agents.radius[i];
     // Sense: the k nearest in the perception radius and view cone, nearest first, ties by
     // index (as gatherNeighbours, without the layers and priorities a boid world lacks).
     best.clear();
@@ -144,7 +145,7 @@ void World::searchBoid(std::size_t i, NeighbourGrid::Sweep* sweep, float startBo
         if (d2 > bound || j == self)
             return;
         if (outsideViewCone(d, d2, fwd, c)) {
-            const float contact = radius + m_radius[j];
+            const float contact = radius + m_agents.radius[j];
             if (d2 > contact * contact)
                 return;
         }
@@ -159,16 +160,16 @@ void World::searchBoid(std::size_t i, NeighbourGrid::Sweep* sweep, float startBo
 
 void World::sumBoid(std::size_t i, const BoidNearest& best, BoidSense& out)
 {
-    const BoidType& b = m_boidTypes[m_info[i].typeIndex];
-    const glm::vec3 p = m_pos[i], v = m_vel[i];
-    const float radius = m_radius[i];
+    const BoidType& b = m_boidTypes[m_agents.info[i].typeIndex];
+    const glm::vec3 p = m_agents.pos[i], v = m_agents.vel[i];
+    const float radius = m_agents.radius[i];
     constexpr std::size_t k = kMaxNeighbours;
     const std::size_t count = best.count;
 
     // Separation, and the sums for alignment and cohesion, in one pass over the neighbours.
     const float range = b.range, damping = b.damping, maxForce = b.maxForce;
     glm::vec3 push(0.0f), headings(0.0f), velocities(0.0f), centre(0.0f);
-    std::uint32_t* nearIndex = &m_nearIndex[i * k];
+    std::uint32_t* nearIndex = &m_agents.nearIndex[i * k];
     // Where each neighbour's old velocity takes it, and how close it may come (for the
     // collide pass: see collideFree in finishBoid).
     float* keepOut = out.keepOut;
@@ -178,16 +179,16 @@ void World::sumBoid(std::size_t i, const BoidNearest& best, BoidSense& out)
     for (std::size_t n = 0; n < count; ++n) {
         const auto j = best.index(n);
         nearIndex[n] = j;
-        const glm::vec3 q = m_pos[j], vj = m_vel[j];
-        headings += m_fwd[j];
+        const glm::vec3 q = m_agents.pos[j], vj = m_agents.vel[j];
+        headings += m_agents.fwd[j];
         velocities += vj;
         centre += q;
-        const glm::vec3 drift = q + vj * m_dt;
+        const glm::vec3 drift = q + vj * m_clock.dt;
         out.driftX[n] = drift.x;
         out.driftY[n] = drift.y;
         out.driftZ[n] = drift.z;
         // Separation (FlockingBehaviours.cpp): the squared distance is the search key's.
-        const float contact = radius + m_radius[j], reach = contact + range;
+        const float contact = radius + m_agents.radius[j], reach = contact + range;
         keepOut[n] = contact + m_boidSlackM;
         const float d2 = std::bit_cast<float>(std::uint32_t(best.keys[n] >> 32));
         if (!(d2 < reach * reach))
@@ -204,11 +205,11 @@ void World::sumBoid(std::size_t i, const BoidNearest& best, BoidSense& out)
         const F4 quotient = F4{rel.x, rel.y, rel.z, reach - d} / F4{d, d, d, range};
         const float fade = range > kTiny ? std::min(1.0f, quotient[3]) : 1.0f;
         const glm::vec3 away = d > kTiny ? glm::vec3(quotient[0], quotient[1], quotient[2])
-                                         : separationAxis(m_info[i].id, m_info[j].id);
+                                         : separationAxis(m_agents.info[i].id, m_agents.info[j].id);
         const float opening = glm::dot(v - vj, away);
         push += away * (fade * (maxForce * w - damping * opening));
     }
-    m_nearCount[i] = std::uint8_t(count);
+    m_agents.nearCount[i] = std::uint8_t(count);
     out.push = push;
     out.headings = headings;
     out.velocities = velocities;
@@ -222,11 +223,11 @@ void World::sumBoid(std::size_t i, const BoidNearest& best, BoidSense& out)
 // one here).
 void World::steerBoid(std::size_t i, const BoidSense& in)
 {
-    const std::uint16_t type = m_info[i].typeIndex;
-    const TypeSteering& s = m_steering[type];
+    const std::uint16_t type = m_agents.info[i].typeIndex;
+    const TypeSteering& s = m_types.steering[type];
     const BoidType& b = m_boidTypes[type];
-    const glm::vec3 p = m_pos[i], v = m_vel[i], fwd = m_fwd[i];
-    const float radius = m_radius[i], maxSpeed = nonNegative(m_maxSpeed[i]);
+    const glm::vec3 p = m_agents.pos[i], v = m_agents.vel[i], fwd = m_agents.fwd[i];
+    const float radius = m_agents.radius[i], maxSpeed = nonNegative(m_agents.maxSpeed[i]);
     const std::size_t count = in.count;
     const glm::vec3 push = in.push, headings = in.headings, velocities = in.velocities, centre = in.centre;
     const float maxForce = b.maxForce;
@@ -240,19 +241,19 @@ void World::steerBoid(std::size_t i, const BoidSense& in)
     glm::vec3 sum(0.0f);
     if (b.wContainment > 0.0f) {
         const float probe = s.containment.probeMinM + s.containment.probeLookaheadS * speedNow + radius;
-        const glm::vec3 lo = p - m_bounds.min, hi = m_bounds.max - p;
+        const glm::vec3 lo = p - m_set.bounds.min, hi = m_set.bounds.max - p;
         if (std::min({lo.x, lo.y, lo.z, hi.x, hi.y, hi.z}) < probe)
-            sum += stayInside(steeringAgent(i), m_bounds, s.containment) * b.wContainment;
+            sum += stayInside(steeringAgent(i), m_set.bounds, s.containment) * b.wContainment;
     }
     if (b.wSeparation > 0.0f)
         sum += push * b.wSeparation;
-    if (const std::int32_t leader = m_leader[i]; leader >= 0 && b.wPursuit > 0.0f) {
+    if (const std::int32_t leader = m_agents.leader[i]; leader >= 0 && b.wPursuit > 0.0f) {
         // Pursuit: seek where the quarry will be after distance / max speed.
         const auto j = std::size_t(leader);
-        const glm::vec3 q = m_pos[j];
+        const glm::vec3 q = m_agents.pos[j];
         const float cap = b.predictionCapS;
         const float ahead = maxSpeed > kTiny ? std::min(glm::length(q - p) / maxSpeed, cap) : cap;
-        const glm::vec3 aim = q + m_vel[j] * ahead - p;
+        const glm::vec3 aim = q + m_agents.vel[j] * ahead - p;
         sum += towards(normalizeOr(aim, glm::vec3(0.0f)) * maxSpeed, b.gainPursuit) * b.wPursuit;
     }
     if (count > 0 && b.wAlignment > 0.0f) {
@@ -279,11 +280,11 @@ void World::steerBoid(std::size_t i, const BoidSense& in)
         }
         sum += towards(desired, b.gainCohesion) * b.wCohesion;
     }
-    WanderState wanderNext = m_wander[i];
+    WanderState wanderNext = m_agents.wander[i];
     if (b.wWander > 0.0f) {
         // Wander (Wander.cpp, in 3D): jitter the target on the unit sphere (kept unit from
         // step to step), then aim at it on the sphere ahead, in the agent's own frame.
-        const std::uint64_t key = rngKey(m_seed, m_info[i].id, m_step);
+        const std::uint64_t key = rngKey(m_seed, m_agents.info[i].id, m_clock.step);
         const glm::vec3 jitter = glm::vec3(rngRangeOf(key, kWanderX, -1.0f, 1.0f), rngRangeOf(key, kWanderY, -1.0f, 1.0f),
                                            rngRangeOf(key, kWanderZ, -1.0f, 1.0f)) *
                                  b.jitterM;
@@ -293,7 +294,7 @@ void World::steerBoid(std::size_t i, const BoidSense& in)
         wanderNext.target = target;
         // Up made square to the heading; heading x up is then unit already (both unit and
         // square), so it is normalised only where up had to fall back.
-        const glm::vec3 upRaw = m_up[i] - heading * glm::dot(m_up[i], heading);
+        const glm::vec3 upRaw = m_agents.up[i] - heading * glm::dot(m_agents.up[i], heading);
         const float upLen = glm::length(upRaw);
         glm::vec3 up, right;
         if (upLen > 0.5f && upLen < kInfinity) {
@@ -311,7 +312,7 @@ void World::steerBoid(std::size_t i, const BoidSense& in)
 
     // Integrate: integrateVehicle's flier step (VehicleModel.cpp) on a state that is
     // already finite and orthonormal.
-    glm::vec3 vel = truncate(v + force * (m_dt / b.mass), maxSpeed);
+    glm::vec3 vel = truncate(v + force * (m_clock.dt / b.mass), maxSpeed);
     const float minSpeed = std::min(b.minSpeed, maxSpeed);
     float speed = glm::length(vel);
     if (speed < minSpeed) {
@@ -319,15 +320,15 @@ void World::steerBoid(std::size_t i, const BoidSense& in)
         speed = glm::length(vel);
     }
     vel = finiteOrZero(vel);
-    glm::vec3 pos = finiteOrZero(p + vel * m_dt);
+    glm::vec3 pos = finiteOrZero(p + vel * m_clock.dt);
     glm::vec3 nextFwd = fwd;
     if (speed > kStoppedSpeed)
         nextFwd = vel / speed;
     // Bank: up leans toward the lateral acceleration, smoothed.
-    const glm::vec3 acceleration = (vel - v) / m_dt;
+    const glm::vec3 acceleration = (vel - v) / m_clock.dt;
     const glm::vec3 lateral = acceleration - nextFwd * glm::dot(acceleration, nextFwd);
     const glm::vec3 bankedUp = normalizeOr(kWorldUp + lateral * b.bankGain, kWorldUp);
-    const glm::vec3 up0 = m_up[i];
+    const glm::vec3 up0 = m_agents.up[i];
     const glm::vec3 up = normalizeOr(up0 + (bankedUp - up0) * b.bankBlend, kWorldUp);
     // As for wander's frame: side x forward is unit once side is (both unit and square).
     const glm::vec3 sideRaw = glm::cross(nextFwd, up);
@@ -337,7 +338,7 @@ void World::steerBoid(std::size_t i, const BoidSense& in)
         side = sideRaw * (1.0f / sideLen);
         nextUp = glm::cross(side, nextFwd);
     } else {
-        side = normalizeOr(sideRaw, m_side[i]);
+        side = normalizeOr(sideRaw, m_agents.side[i]);
         nextUp = normalizeOr(glm::cross(side, nextFwd), kWorldUp);
     }
 
@@ -367,11 +368,11 @@ void World::groundBoid(std::size_t i, glm::vec3& pos, glm::vec3& vel, glm::vec3 
 {
     // Fliers may skim the ground but never pass through it (as in World::step).
     // (terrainHeight is 0 without a height field: no call for the common flat ground.)
-    const float ground = m_terrain.heights.empty() ? 0.0f : groundHeight(pos.x, pos.z);
-    if (const float floor = ground + m_radius[i]; pos.y < floor) {
+    const float ground = m_set.terrain.heights.empty() ? 0.0f : groundHeight(pos.x, pos.z);
+    if (const float floor = ground + m_agents.radius[i]; pos.y < floor) {
         pos.y = floor;
         vel.y = std::max(vel.y, 0.0f);
-        const float stall = std::min(m_steering[m_info[i].typeIndex].vehicle.minSpeed, m_maxSpeed[i]);
+        const float stall = std::min(m_types.steering[m_agents.info[i].typeIndex].vehicle.minSpeed, m_agents.maxSpeed[i]);
         const float now = glm::length(vel);
         if (now < stall)
             vel = now > 1e-6f ? vel * (stall / now) : nextFwd * stall;
@@ -382,12 +383,12 @@ void World::storeBoid(std::size_t i, bool collideFree, glm::vec3 pos, glm::vec3 
                       glm::vec3 side, glm::vec3 nextUp, const WanderState& wanderNext)
 {
     m_collideFree[i] = collideFree ? kCollideFree : 0;
-    m_nextPos[i] = pos;
-    m_nextVel[i] = vel;
-    m_nextFwd[i] = nextFwd;
-    m_nextSide[i] = side;
-    m_nextUp[i] = nextUp;
-    m_nextWander[i] = wanderNext;
+    m_agents.nextPos[i] = pos;
+    m_agents.nextVel[i] = vel;
+    m_agents.nextFwd[i] = nextFwd;
+    m_agents.nextSide[i] = side;
+    m_agents.nextUp[i] = nextUp;
+    m_agents.nextWander[i] = wanderNext;
 }
 
 }  // namespace throng::sim

@@ -13,8 +13,8 @@
 
 #include "simcore/steering/detail/SteeringConstants.h"
 #include "simcore/steering/detail/SteeringMath.h"
-#include "simcore/world/Rng.h"
-#include "simcore/world/detail/Lanes.h"
+#include "simcore/base/Rng.h"
+#include "simcore/base/Lanes.h"
 #include "simcore/world/detail/StepConstants.h"
 
 #include <glm/geometric.hpp>
@@ -27,6 +27,7 @@
 namespace throng::sim {
 
 using namespace detail;
+using namespace simd;
 
 namespace {
 
@@ -116,18 +117,18 @@ template <class F>
     bool oneType = true;
     for (int l = 0; l < kLanes; ++l) {
         const std::size_t i = boid[l];
-        const std::uint16_t type = m_info[i].typeIndex;
-        const TypeSteering& s = m_steering[type];
+        const std::uint16_t type = m_agents.info[i].typeIndex;
+        const TypeSteering& s = m_types.steering[type];
         const BoidType& b = m_boidTypes[type];
         types[l] = &b;
         oneType = oneType && types[l] == types[0];
         const BoidSense& in = sensed[l];
-        p[l] = m_pos[i];
-        v[l] = m_vel[i];
-        fwd[l] = m_fwd[i];
-        up0[l] = m_up[i];
-        maxSpeed[l] = nonNegative(m_maxSpeed[i]);
-        radius[l] = m_radius[i];
+        p[l] = m_agents.pos[i];
+        v[l] = m_agents.vel[i];
+        fwd[l] = m_agents.fwd[i];
+        up0[l] = m_agents.up[i];
+        maxSpeed[l] = nonNegative(m_agents.maxSpeed[i]);
+        radius[l] = m_agents.radius[i];
         probeMin[l] = s.containment.probeMinM;
         probeAhead[l] = s.containment.probeLookaheadS;
         push[l] = in.push;
@@ -137,15 +138,15 @@ template <class F>
         n[l] = float(in.count);
         matchSpeed[l] = s.alignment.matchSpeed ? -1 : 0;
         contain[l] = glm::vec3(0.0f);
-        const std::int32_t leader = m_leader[i];
+        const std::int32_t leader = m_agents.leader[i];
         pursues[l] = leader >= 0 && b.wPursuit > 0.0f ? -1 : 0;
-        quarry[l] = pursues[l] ? m_pos[std::size_t(leader)] : glm::vec3(0.0f);
-        quarryVel[l] = pursues[l] ? m_vel[std::size_t(leader)] : glm::vec3(0.0f);
+        quarry[l] = pursues[l] ? m_agents.pos[std::size_t(leader)] : glm::vec3(0.0f);
+        quarryVel[l] = pursues[l] ? m_agents.vel[std::size_t(leader)] : glm::vec3(0.0f);
         wanders[l] = b.wWander > 0.0f ? -1 : 0;
-        prevTarget[l] = m_wander[i].target;
+        prevTarget[l] = m_agents.wander[i].target;
         jitter[l] = glm::vec3(0.0f);
         if (wanders[l]) {
-            const std::uint64_t key = rngKey(m_seed, m_info[i].id, m_step);
+            const std::uint64_t key = rngKey(m_seed, m_agents.info[i].id, m_clock.step);
             jitter[l] = glm::vec3(rngRangeOf(key, kWanderX, -1.0f, 1.0f), rngRangeOf(key, kWanderY, -1.0f, 1.0f),
                                   rngRangeOf(key, kWanderZ, -1.0f, 1.0f)) *
                         b.jitterM;
@@ -178,8 +179,8 @@ template <class F>
     M contained;
     {
         const F probe = probeMin + probeAhead * speedNow + radius;
-        const V3 lo = P - V3{splat<F>(m_bounds.min.x), splat<F>(m_bounds.min.y), splat<F>(m_bounds.min.z)};
-        const V3 hi = V3{splat<F>(m_bounds.max.x), splat<F>(m_bounds.max.y), splat<F>(m_bounds.max.z)} - P;
+        const V3 lo = P - V3{splat<F>(m_set.bounds.min.x), splat<F>(m_set.bounds.min.y), splat<F>(m_set.bounds.min.z)};
+        const V3 hi = V3{splat<F>(m_set.bounds.max.x), splat<F>(m_set.bounds.max.y), splat<F>(m_set.bounds.max.z)} - P;
         F nearest = lo.x;
         for (const F face : {lo.y, lo.z, hi.x, hi.y, hi.z})
             nearest = select(face < nearest, face, nearest);
@@ -187,7 +188,7 @@ template <class F>
         for (unsigned bits = bitsOf(contained); bits != 0; bits &= bits - 1) {
             const int l = std::countr_zero(bits);
             const std::size_t i = boid[l];
-            contain[l] = stayInside(steeringAgent(i), m_bounds, m_steering[m_info[i].typeIndex].containment) *
+            contain[l] = stayInside(steeringAgent(i), m_set.bounds, m_types.steering[m_agents.info[i].typeIndex].containment) *
                          types[l]->wContainment;
         }
     }
@@ -245,7 +246,7 @@ template <class F>
     const V3 force = truncate(sum, maxForce);
 
     // Integrate: steerBoid's flier step.
-    V3 vel = truncate(V + force * (splat<F>(m_dt) / mass), maxSpeed);
+    V3 vel = truncate(V + force * (splat<F>(m_clock.dt) / mass), maxSpeed);
     const F minSpeed = minOf(minSpeedType, maxSpeed);
     F speed = length(vel);
     {
@@ -255,10 +256,10 @@ template <class F>
         speed = select(slow, length(vel), speed);
     }
     vel = select(finite(vel), vel, V3{});
-    V3 pos = P + vel * splat<F>(m_dt);
+    V3 pos = P + vel * splat<F>(m_clock.dt);
     pos = select(finite(pos), pos, V3{});
     const V3 nextFwd = select(speed > kStoppedSpeed, vel / speed, Fwd);
-    const V3 acceleration = (vel - V) / splat<F>(m_dt);
+    const V3 acceleration = (vel - V) / splat<F>(m_clock.dt);
     const V3 lateral = acceleration - nextFwd * dot(acceleration, nextFwd);
     const V3 bankedUp = normalizeOr(kUp + lateral * bankGain, kUp, kTiny);
     const V3 upNow = lanes<F>(up0);
@@ -271,7 +272,7 @@ template <class F>
         for (int l = 0; l < kLanes; ++l) {
             if (!fallback[l])
                 continue;
-            const glm::vec3 s = normalizeOr(lane(sideRaw, l), m_side[boid[l]]);
+            const glm::vec3 s = normalizeOr(lane(sideRaw, l), m_agents.side[boid[l]]);
             setLane(side, l, s);
             setLane(nextUp, l, normalizeOr(glm::cross(s, lane(nextFwd, l)), kWorldUp));
         }
@@ -279,10 +280,10 @@ template <class F>
 
     // Scatter, lane by lane (finishBoid's work): the ground, where a lane lies below its
     // floor or over a height field; whether the collide pass may skip it; the next state.
-    const bool flat = m_terrain.heights.empty();
+    const bool flat = m_set.terrain.heights.empty();
     for (int l = 0; l < kLanes; ++l) {
         const std::size_t i = boid[l];
-        WanderState wanderNext = m_wander[i];
+        WanderState wanderNext = m_agents.wander[i];
         if (wanders[l])
             wanderNext.target = lane(target, l);
         glm::vec3 at = lane(pos, l), velocity = lane(vel, l);

@@ -9,7 +9,7 @@
 // (TestNeighbourSweep and the flock's state hash show it).
 #include "simcore/world/World.h"
 
-#include "simcore/world/detail/Lanes.h"
+#include "simcore/base/Lanes.h"
 
 #include <glm/geometric.hpp>
 
@@ -20,15 +20,16 @@
 namespace throng::sim {
 
 using namespace detail;
+using namespace simd;
 
 void World::senseFourBoids(const std::uint32_t* boid, int count, NeighbourGrid::Sweep& sweep, BoidSense* out)
 {
     constexpr int kLanes = 4;
-    const float perception = m_types[m_info[boid[0]].typeIndex].perception;
+    const float perception = m_types.params[m_agents.info[boid[0]].typeIndex].perception;
     const float perception2 = perception * perception;
     bool together = m_neighbourSweep && count > 1 && count <= kLanes;
     for (int l = 1; l < count; ++l)
-        together = together && m_types[m_info[boid[l]].typeIndex].perception == perception;
+        together = together && m_types.params[m_agents.info[boid[l]].typeIndex].perception == perception;
     if (!together) {
         for (int l = 0; l < count; ++l)
             senseBoid(boid[l], &sweep, out[l]);
@@ -43,12 +44,12 @@ void World::senseFourBoids(const std::uint32_t* boid, int count, NeighbourGrid::
         // Lanes past count copy lane 0's point, to aim the sweep, and take no candidate.
         const std::size_t i = boid[l < count ? l : 0];
         self[l] = std::int32_t(i);
-        p[l] = m_pos[i];
-        fx[l] = m_fwd[i].x;
-        fy[l] = m_fwd[i].y;
-        fz[l] = m_fwd[i].z;
-        radius[l] = m_radius[i];
-        cone[l] = m_types[m_info[i].typeIndex].cosHalfView;
+        p[l] = m_agents.pos[i];
+        fx[l] = m_agents.fwd[i].x;
+        fy[l] = m_agents.fwd[i].y;
+        fz[l] = m_agents.fwd[i].z;
+        radius[l] = m_agents.radius[i];
+        cone[l] = m_types.params[m_agents.info[i].typeIndex].cosHalfView;
         guess2[l] = lastNearestBound(i, p[l], perception2);  // as senseBoid
         bound[l] = l < count ? guess2[l] : -1.0f;
     }
@@ -69,7 +70,7 @@ void World::senseFourBoids(const std::uint32_t* boid, int count, NeighbourGrid::
         const M4 outside =
             ~allRound & select(coneAhead, (along < 0.0f) | (along2 < c2d2), (along < 0.0f) & (along2 > c2d2));
         if (any(take & outside)) {
-            const F4 contact = radius + m_radius[j];
+            const F4 contact = radius + m_agents.radius[j];
             take &= ~(outside & (d2 > contact * contact));
         }
         for (unsigned lanes = bitsOf(take); lanes != 0; lanes &= lanes - 1) {

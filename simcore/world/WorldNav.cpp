@@ -7,7 +7,7 @@
 
 #include "simcore/nav/NavDefaults.h"
 #include "simcore/traffic/LightPhase.h"
-#include "simcore/world/Rng.h"
+#include "simcore/base/Rng.h"
 #include "simcore/world/detail/StepGeometry.h"
 
 #include <glm/geometric.hpp>
@@ -60,12 +60,12 @@ constexpr std::uint8_t kLostSteps = 12;       // steps with the waypoint out of 
 
 void World::buildNav(const Scene& scene)
 {
-    const std::size_t n = m_pos.size();
-    m_out.assign(n, 0);
+    const std::size_t n = m_agents.pos.size();
+    m_agents.out.assign(n, 0);
     float inflate = 0.0f, smallest = INFINITY;
     std::vector<Navigation> mode(n, Navigation::Direct);
     for (std::size_t i = 0; i < n; ++i) {
-        const AgentType& t = scene.agentTypes[m_info[i].typeIndex];
+        const AgentType& t = scene.agentTypes[m_agents.info[i].typeIndex];
         if (t.kind != AgentKind::Pedestrian || m_traffic.isDriven(i) || t.navigation == Navigation::Direct)
             continue;
         mode[i] = t.navigation;
@@ -75,10 +75,10 @@ void World::buildNav(const Scene& scene)
     m_nav.active = inflate > 0.0f;
     if (!m_nav.active && scene.flowStrokes.empty())
         return;
-    // The set as walkers meet it: walls, obstacles and the kerbs along lanes (m_walls holds
+    // The set as walkers meet it: walls, obstacles and the kerbs along lanes (m_set.walls holds
     // all three), so a plan never leads onto a lane except over a crosswalk.
     NavShapes shapes = navShapes(scene);
-    shapes.walls = m_walls.segments();
+    shapes.walls = m_set.walls.segments();
     m_nav.grid.build(shapes, scene.settings.boundsMin, scene.settings.boundsMax,
                      NavGridParams{scene.settings.navCellM, m_nav.active ? inflate : kNavDefaultRadiusM + kNavClearanceM});
     // Flow strokes become a sketched field (Jin et al. 2008) that flow_field_following
@@ -93,14 +93,14 @@ void World::buildNav(const Scene& scene)
     m_nav.reachShapes = std::move(shapes);
     m_nav.reachRadiusM = smallest;
 
-    m_nav.hasField.assign(m_goals.size(), 0);
-    m_nav.fields.resize(m_goals.size());
+    m_nav.hasField.assign(m_set.goals.size(), 0);
+    m_nav.fields.resize(m_set.goals.size());
     for (std::size_t i = 0; i < n; ++i)
-        if (mode[i] == Navigation::FlowField && m_goal[i] >= 0)
-            m_nav.hasField[std::size_t(m_goal[i])] = 1;
-    for (std::size_t g = 0; g < m_goals.size(); ++g)
+        if (mode[i] == Navigation::FlowField && m_agents.goal[i] >= 0)
+            m_nav.hasField[std::size_t(m_agents.goal[i])] = 1;
+    for (std::size_t g = 0; g < m_set.goals.size(); ++g)
         if (m_nav.hasField[g]) {
-            const FlowGoal goal{m_goals[g].position, m_goals[g].radiusM};
+            const FlowGoal goal{m_set.goals[g].position, m_set.goals[g].radiusM};
             m_nav.fields[g].build(m_nav.grid, std::span<const FlowGoal>(&goal, 1));
         }
 
@@ -110,7 +110,7 @@ void World::buildNav(const Scene& scene)
     m_nav.waypoint.assign(n, 0);
     m_nav.waypointRadiusM.resize(n);
     for (std::size_t i = 0; i < n; ++i)
-        m_nav.waypointRadiusM[i] = waypointRadiusM(kWaypointRadiusBaseM, rngUniform(m_seed, m_info[i].id, 0, kWaypointRadius),
+        m_nav.waypointRadiusM[i] = waypointRadiusM(kWaypointRadiusBaseM, rngUniform(m_seed, m_agents.info[i].id, 0, kWaypointRadius),
                                                    kWaypointSpread);
     m_nav.stall.assign(n, StallWatch{});
     m_nav.replan.assign(n, 0);
@@ -124,12 +124,12 @@ void World::buildNav(const Scene& scene)
     m_nav.noWay.assign(n, 0);
     // Plans at load, in agent order: a group starting in one cell shares one plan.
     for (std::size_t i = 0; i < n; ++i)
-        if (m_nav.mode[i] == Navigation::AStar && m_goal[i] >= 0 && m_path[i] < 0)
+        if (m_nav.mode[i] == Navigation::AStar && m_agents.goal[i] >= 0 && m_agents.path[i] < 0)
             planNav(i);
     // Flow-field walkers where the field does not reach: is there a way at all?
     for (std::size_t i = 0; i < n; ++i)
-        if (m_nav.mode[i] == Navigation::FlowField && m_goal[i] >= 0 && m_path[i] < 0) {
-            const FlowField& field = m_nav.fields[std::size_t(m_goal[i])];
+        if (m_nav.mode[i] == Navigation::FlowField && m_agents.goal[i] >= 0 && m_agents.path[i] < 0) {
+            const FlowField& field = m_nav.fields[std::size_t(m_agents.goal[i])];
             const NavCell c = field.grid().nearestWalkable(field.grid().cellOf(navStart(i)));
             if (!field.grid().walkable(c) || !field.reachable(c))
                 m_nav.noWay[i] = noWayToGoal(i) ? 1 : 0;
@@ -139,7 +139,7 @@ void World::buildNav(const Scene& scene)
 glm::vec2 World::navStart(std::size_t i) const
 {
     // One that started inside a wall or obstacle walks out first (WorldEscape.cpp).
-    return m_escaping[i] ? m_escapeTo[i] : xz(m_pos[i]);
+    return m_agents.escaping[i] ? m_agents.escapeTo[i] : xz(m_agents.pos[i]);
 }
 
 bool World::noWayToGoal(std::size_t i)
@@ -152,15 +152,15 @@ bool World::noWayToGoal(std::size_t i)
     }
     // Only a walker found in a region that does not meet the goal waits; one pushed where
     // the grid cannot place it (deep in a wall's margin) goes on as before.
-    const Goal& g = m_goals[std::size_t(m_goal[i])];
+    const Goal& g = m_set.goals[std::size_t(m_agents.goal[i])];
     return m_nav.reach.regionAt(navStart(i)) >= 0 && !m_nav.reach.reaches(navStart(i), g.position, g.radiusM);
 }
 
 void World::planNav(std::size_t i)
 {
-    const Goal& g = m_goals[std::size_t(m_goal[i])];
+    const Goal& g = m_set.goals[std::size_t(m_agents.goal[i])];
     m_nav.plan[i] = planBetween(m_nav.cache, m_nav.grid, navStart(i), g.position, m_nav.astar);
-    m_nav.planGoal[i] = m_goal[i];
+    m_nav.planGoal[i] = m_agents.goal[i];
     m_nav.noWay[i] = m_nav.plan[i] && m_nav.plan[i]->found() ? 0 : noWayToGoal(i) ? 1 : 0;
     m_nav.waypoint[i] = 0;
     m_nav.stall[i] = StallWatch{};
@@ -170,13 +170,13 @@ void World::navBeforeStep()
 {
     if (!m_nav.active)
         return;
-    const std::size_t n = m_pos.size();
+    const std::size_t n = m_agents.pos.size();
     // Plan: serially and in agent order, so what the cache holds never depends on threads.
     for (std::size_t i = 0; i < n; ++i) {
-        if (m_nav.mode[i] != Navigation::AStar || m_stopped[i] || m_goal[i] < 0 || m_path[i] >= 0)
+        if (m_nav.mode[i] != Navigation::AStar || m_agents.stopped[i] || m_agents.goal[i] < 0 || m_agents.path[i] >= 0)
             continue;
         const NavPlan* plan = m_nav.plan[i].get();
-        if (!plan || m_nav.planGoal[i] != m_goal[i]) {
+        if (!plan || m_nav.planGoal[i] != m_agents.goal[i]) {
             planNav(i);
         } else if (PlanCache::stale(*plan, m_nav.grid)) {
             ++m_nav.counters.stalePlans;
@@ -192,13 +192,13 @@ void World::navBeforeStep()
             // Stalled: plan around the spot just ahead (the jam or what it keeps pushing
             // against); with no way round, step aside for a moment instead.
             m_nav.replan[i] = 0;
-            const glm::vec2 p = xz(m_pos[i]);
-            glm::vec2 way = m_nav.hasTarget[i] ? m_nav.target[i] - p : m_goalSpot[i] - p;
-            way = glm::dot(way, way) > 1e-8f ? glm::normalize(way) : xz(m_fwd[i]);
+            const glm::vec2 p = xz(m_agents.pos[i]);
+            glm::vec2 way = m_nav.hasTarget[i] ? m_nav.target[i] - p : m_agents.goalSpot[i] - p;
+            way = glm::dot(way, way) > 1e-8f ? glm::normalize(way) : xz(m_agents.fwd[i]);
             const NavGrid& grid = m_nav.grid;
             const NavCell start = grid.nearestWalkable(grid.cellOf(p));
-            const NavCell goal = grid.nearestWalkable(grid.cellOf(m_goals[std::size_t(m_goal[i])].position));
-            NavPlan detour = planAround(m_nav.astar, grid, start, goal, p + way * (m_radius[i] + kAvoidRadiusM),
+            const NavCell goal = grid.nearestWalkable(grid.cellOf(m_set.goals[std::size_t(m_agents.goal[i])].position));
+            NavPlan detour = planAround(m_nav.astar, grid, start, goal, p + way * (m_agents.radius[i] + kAvoidRadiusM),
                                         kAvoidRadiusM);
             // Progress is measured along the new way from here on (a detour is longer).
             m_nav.stall[i] = StallWatch{};
@@ -207,7 +207,7 @@ void World::navBeforeStep()
                 m_nav.waypoint[i] = 0;
                 ++m_nav.counters.replans;
             } else {
-                const float sign = rngUniform(m_seed, m_info[i].id, m_step, kSideStepSign) < 0.5f ? -1.0f : 1.0f;
+                const float sign = rngUniform(m_seed, m_agents.info[i].id, m_clock.step, kSideStepSign) < 0.5f ? -1.0f : 1.0f;
                 m_nav.sideDir[i] = glm::vec2(-way.y, way.x) * sign;
                 m_nav.sideStepS[i] = kSideStepDurationS;
                 ++m_nav.counters.sideSteps;
@@ -224,7 +224,7 @@ void World::navBeforeStep()
 
 std::uint8_t World::queueDepth(std::size_t i) const
 {
-    if (m_stopped[i] || m_traffic.signal.empty() || m_types[m_info[i].typeIndex].kind != AgentKind::Pedestrian)
+    if (m_agents.stopped[i] || m_traffic.signal.empty() || m_types.params[m_agents.info[i].typeIndex].kind != AgentKind::Pedestrian)
         return 0;
     const PedestrianSignal& sig = m_traffic.signal[i];
     if (sig.crosswalk >= 0 && !sig.onCrosswalk && (sig.mustStop || sig.phase != LightPhase::Green))
@@ -234,13 +234,13 @@ std::uint8_t World::queueDepth(std::size_t i) const
     // are visited in does not matter. Two walkers facing each other would otherwise keep
     // each other "waiting" for ever (and never re-plan): without a head held at a light,
     // such a ring's depth grows by one a step until it passes the cap and dissolves.
-    const glm::vec2 p = xz(m_pos[i]), way = wantedHeading(i);
-    const std::uint32_t* near = &m_nearIndex[i * kMaxNeighbours];
+    const glm::vec2 p = xz(m_agents.pos[i]), way = wantedHeading(i);
+    const std::uint32_t* near = &m_agents.nearIndex[i * kMaxNeighbours];
     std::uint8_t ahead = kMaxQueueDepth;
-    for (std::size_t k = 0; k < m_nearCount[i]; ++k) {
+    for (std::size_t k = 0; k < m_agents.nearCount[i]; ++k) {
         const std::uint32_t j = near[k];
-        const glm::vec2 d = xz(m_pos[j]) - p;
-        if (m_nav.waiting[j] && glm::length(d) < m_radius[i] + m_radius[j] + kQueueGapM && glm::dot(d, way) > 0.0f)
+        const glm::vec2 d = xz(m_agents.pos[j]) - p;
+        if (m_nav.waiting[j] && glm::length(d) < m_agents.radius[i] + m_agents.radius[j] + kQueueGapM && glm::dot(d, way) > 0.0f)
             ahead = std::min(ahead, m_nav.waiting[j]);
     }
     return ahead < kMaxQueueDepth ? std::uint8_t(ahead + 1) : 0;
@@ -250,23 +250,23 @@ void World::updateNavTarget(std::size_t i)
 {
     m_nav.hasTarget[i] = 0;
     const Navigation mode = m_nav.mode[i];
-    if (mode == Navigation::Direct || m_stopped[i] || m_goal[i] < 0 || m_path[i] >= 0)
+    if (mode == Navigation::Direct || m_agents.stopped[i] || m_agents.goal[i] < 0 || m_agents.path[i] >= 0)
         return;
-    const glm::vec2 p = xz(m_pos[i]);
+    const glm::vec2 p = xz(m_agents.pos[i]);
     // The target lies beyond the arrival's slowing distance, so a walker keeps its pace
     // through corners and down the field and slows only for its own spot in the goal.
-    const float carrot = m_steering[m_info[i].typeIndex].arrival.slowingDistanceM + 0.5f;
+    const float carrot = m_types.steering[m_agents.info[i].typeIndex].arrival.slowingDistanceM + 0.5f;
     auto aim = [&](glm::vec2 dir, float distance) {
         m_nav.target[i] = p + dir * std::max(distance, carrot);
         m_nav.hasTarget[i] = 1;
     };
     if (m_nav.sideStepS[i] > 0.0f) {
-        m_nav.sideStepS[i] -= m_dt;
+        m_nav.sideStepS[i] -= m_clock.dt;
         aim(m_nav.sideDir[i], 0.0f);
         return;
     }
-    const std::size_t goal = std::size_t(m_goal[i]);
-    float remainingM = glm::distance(p, m_goalSpot[i]);
+    const std::size_t goal = std::size_t(m_agents.goal[i]);
+    float remainingM = glm::distance(p, m_agents.goalSpot[i]);
     // No way to the goal (walls close it off, or its door is narrower than the body): the
     // walker waits where it stands. Heading straight at the goal instead, it pressed against
     // the set, stalled, side-stepped and tried again for the whole shot (issue 23). A plan
@@ -278,9 +278,9 @@ void World::updateNavTarget(std::size_t i)
     };
     if (mode == Navigation::AStar) {
         const NavPlan* plan = m_nav.plan[i].get();
-        if (m_nav.noWay[i] && m_nav.planGoal[i] == m_goal[i])
+        if (m_nav.noWay[i] && m_nav.planGoal[i] == m_agents.goal[i])
             return wait();
-        if (plan && plan->found() && m_nav.planGoal[i] == m_goal[i]) {
+        if (plan && plan->found() && m_nav.planGoal[i] == m_agents.goal[i]) {
             const std::vector<glm::vec2>& w = plan->waypoints;
             // Within its own radius of a corner the walker turns for the next one, but only
             // once it can see it: cutting a corner short must not lead into a wall's end.
@@ -304,7 +304,7 @@ void World::updateNavTarget(std::size_t i)
             if (k + 1 < w.size()) {
                 const glm::vec2 d = w[k] - p;
                 const float len = glm::length(d);
-                remainingM = len + glm::distance(w.back(), m_goalSpot[i]);
+                remainingM = len + glm::distance(w.back(), m_agents.goalSpot[i]);
                 for (std::size_t j = k; j + 1 < w.size(); ++j)
                     remainingM += glm::distance(w[j], w[j + 1]);
                 if (len > 1e-4f)
@@ -323,7 +323,7 @@ void World::updateNavTarget(std::size_t i)
                 // density ahead allows, so a door's queue packs no tighter than people do.
                 // Arrival sets the speed from the target's distance, so the target comes
                 // as close as that speed asks.
-                const float slowing = m_steering[m_info[i].typeIndex].arrival.slowingDistanceM;
+                const float slowing = m_types.steering[m_agents.info[i].typeIndex].arrival.slowingDistanceM;
                 const float fraction = crowdSpeedFraction(i, dir);
                 if (fraction < 1.0f && slowing > 0.0f) {
                     m_nav.target[i] = p + dir * (slowing * fraction);
@@ -334,8 +334,8 @@ void World::updateNavTarget(std::size_t i)
             }
         } else if (const NavCell free = onwardOrNearestWalkable(field, c, [&](glm::vec2 q) {
                        bool crossed = false;
-                       m_walls.forEachNear((p + q) * 0.5f, 0.5f * glm::distance(p, q) + 0.01f, [&](std::uint32_t k) {
-                           const Segment& w = m_walls.segment(k);
+                       m_set.walls.forEachNear((p + q) * 0.5f, 0.5f * glm::distance(p, q) + 0.01f, [&](std::uint32_t k) {
+                           const Segment& w = m_set.walls.segment(k);
                            crossed = crossed || segmentsCross(p, q, w.a, w.b);
                        });
                        return !crossed;
@@ -360,7 +360,7 @@ void World::updateNavTarget(std::size_t i)
     // is not stuck either (the field already leads round the set), so only A* walkers act.
     if (m_nav.waitingNext[i])
         m_nav.stall[i] = StallWatch{};
-    else if (updateStall(m_nav.stall[i], remainingM, m_dt) && mode == Navigation::AStar)
+    else if (updateStall(m_nav.stall[i], remainingM, m_clock.dt) && mode == Navigation::AStar)
         m_nav.replan[i] = 1;
 }
 
@@ -368,11 +368,11 @@ float World::crowdSpeedFraction(std::size_t i, glm::vec2 way) const
 {
     // Weidmann (1993): v(rho) = v0 (1 - exp(-1.913 (1/rho - 1/5.4))), rho in persons/m^2,
     // from the walkers in the half disk ahead (last step's neighbours: thread-independent).
-    const glm::vec2 p = xz(m_pos[i]);
-    const std::uint32_t* near = &m_nearIndex[i * kMaxNeighbours];
+    const glm::vec2 p = xz(m_agents.pos[i]);
+    const std::uint32_t* near = &m_agents.nearIndex[i * kMaxNeighbours];
     int ahead = 0;
-    for (std::size_t k = 0; k < m_nearCount[i]; ++k) {
-        const glm::vec2 d = xz(m_pos[near[k]]) - p;
+    for (std::size_t k = 0; k < m_agents.nearCount[i]; ++k) {
+        const glm::vec2 d = xz(m_agents.pos[near[k]]) - p;
         ahead += glm::dot(d, d) < kDensityRadiusM * kDensityRadiusM && glm::dot(d, way) > 0.0f ? 1 : 0;
     }
     const float rho = float(ahead) / (0.5f * 3.14159265f * kDensityRadiusM * kDensityRadiusM);

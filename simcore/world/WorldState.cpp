@@ -85,11 +85,11 @@ WorldState World::saveState() const
 {
     WorldState s;
     s.seed = m_seed;
-    s.agents = m_info;
+    s.agents = m_agents.info;
 #define THRONG_SAVE(member, name, rule) s.name = member;
     THRONG_WHOLE_MEMBERS(THRONG_SAVE)
 #undef THRONG_SAVE
-#define THRONG_SAVE(name) s.name = m_##name;
+#define THRONG_SAVE(name) s.name = m_agents.name;
     THRONG_AGENT_COLUMNS(THRONG_SAVE)
 #undef THRONG_SAVE
 #define THRONG_SAVE(world, name) s.name = m_nav.world;
@@ -111,12 +111,12 @@ void World::restoreState(const WorldState& state)
 {
     // Ids may differ: an agent kept through an edit (adoptState) keeps its old id, which
     // a World built from the edited scene gives another member; the checkpoint's count.
-    bool same = state.agents.size() == m_info.size() && state.seed == m_seed;
-    for (std::size_t i = 0; same && i < m_info.size(); ++i)
-        same = state.agents[i].typeIndex == m_info[i].typeIndex;
+    bool same = state.agents.size() == m_agents.info.size() && state.seed == m_seed;
+    for (std::size_t i = 0; same && i < m_agents.info.size(); ++i)
+        same = state.agents[i].typeIndex == m_agents.info[i].typeIndex;
     if (!same)
         throw std::invalid_argument("restoreState: the checkpoint is of a World with other agents or seed");
-    m_info = state.agents;
+    m_agents.info = state.agents;
     restoreDynamicState(state, {});
 }
 
@@ -131,7 +131,7 @@ void World::restoreDynamicState(const WorldState& s, const std::vector<std::uint
 #undef THRONG_RESTORE
 #undef THRONG_RESTORE_Kept
 #undef THRONG_RESTORE_Plain
-#define THRONG_RESTORE(name) m_##name = s.name;
+#define THRONG_RESTORE(name) m_agents.name = s.name;
     THRONG_AGENT_COLUMNS(THRONG_RESTORE)
 #undef THRONG_RESTORE
     // Kept: the traffic system only into a World that has one (an edit that took every
@@ -171,7 +171,7 @@ void World::restoreDynamicState(const WorldState& s, const std::vector<std::uint
     for (std::size_t t = 0; t < wb.types.size(); ++t)
         if (wb.types[t].evaluator)
             columns[t] = wb.types[t].evaluator->stateColumns();
-    for (std::size_t i = 0; i < m_info.size() && i < s.brainLocal.size() && i < s.brainBatch.size(); ++i) {
+    for (std::size_t i = 0; i < m_agents.info.size() && i < s.brainLocal.size() && i < s.brainBatch.size(); ++i) {
         if (s.brainBatch[i] < 0 || wb.batch[i] < 0)
             continue;
         const auto t0 = std::size_t(s.brainBatch[i]), t1 = std::size_t(wb.batch[i]);
@@ -239,7 +239,7 @@ bool World::adoptState(const WorldState& stateIn, const Scene& stateScene, const
     if (stateIn.seed != m_seed || !(stateScene.settings == thisScene.settings))
         return false;
     // Agents by key, not by dense index: an added or removed agent moves the others.
-    const std::vector<std::int32_t> previous = matchAgents(stateIn.agents, stateScene, m_info, thisScene);
+    const std::vector<std::int32_t> previous = matchAgents(stateIn.agents, stateScene, m_agents.info, thisScene);
     if (previousOut)
         *previousOut = previous;
     bool identity = previous.size() == stateIn.agents.size();
@@ -266,18 +266,18 @@ bool World::adoptState(const WorldState& stateIn, const Scene& stateScene, const
 bool World::adoptMatched(const WorldState& s, const Scene& stateScene, const Scene& thisScene,
                          const std::function<std::int32_t(std::size_t)>& previous)
 {
-    const std::size_t n = m_info.size();
+    const std::size_t n = m_agents.info.size();
     std::vector<std::uint8_t> keepBrain(n, 1);
     for (std::size_t i = 0; i < n; ++i) {
         const std::int32_t b = previous(i);
         const BrainGraph* before = b < 0 ? nullptr : brainOf(stateScene, std::size_t(b), s.agents[i].typeIndex);
-        const BrainGraph* after = brainOf(thisScene, i, m_info[i].typeIndex);
+        const BrainGraph* after = brainOf(thisScene, i, m_agents.info[i].typeIndex);
         keepBrain[i] = before && after && *before == *after ? 1 : 0;
     }
     // The edited scene's parameters and fresh legs, as this World was built.
-    const auto radius = m_radius, maxSpeed = m_maxSpeed, stride = m_stride, arrivalTime = m_arrivalTime;
-    const auto leader = m_leader, goal = m_goal, path = m_path;
-    const auto goalSpot = m_goalSpot;
+    const auto radius = m_agents.radius, maxSpeed = m_agents.maxSpeed, stride = m_agents.stride, arrivalTime = m_agents.arrivalTime;
+    const auto leader = m_agents.leader, goal = m_agents.goal, path = m_agents.path;
+    const auto goalSpot = m_agents.goalSpot;
     const auto mode = m_nav.mode;
     const auto waypointRadiusM = m_nav.waypointRadiusM;
     // An edit of the lanes, crosswalks, stop lines, vehicles or vehicle types: the traffic
@@ -291,7 +291,7 @@ bool World::adoptMatched(const WorldState& s, const Scene& stateScene, const Sce
         if (m_traffic.system && s.trafficSystem)
             m_traffic.system->adoptFrom(*s.trafficSystem);
         else if (m_traffic.system)
-            m_traffic.system->startAt(m_step);
+            m_traffic.system->startAt(m_clock.step);
         // Walkers keep the answer they steered by while the crosswalks stay; else they ask anew.
         if (stateScene.crosswalks != thisScene.crosswalks || m_traffic.signal.size() != signal.size())
             m_traffic.signal = signal;
@@ -301,27 +301,27 @@ bool World::adoptMatched(const WorldState& s, const Scene& stateScene, const Sce
             const TrafficSystem& ts = *m_traffic.system;
             const std::size_t i = m_traffic.vehicleAgent[v];
             const glm::vec2 p = ts.position(v), f = ts.forward(v);
-            m_pos[i] = glm::vec3(p.x, groundHeight(p.x, p.y), p.y);
-            m_vel[i] = glm::vec3(f.x, 0.0f, f.y) * (ts.active(v) ? ts.speed(v) : 0.0f);
-            m_fwd[i] = glm::vec3(f.x, 0.0f, f.y);
-            m_side[i] = glm::vec3(-f.y, 0.0f, f.x);
+            m_agents.pos[i] = glm::vec3(p.x, groundHeight(p.x, p.y), p.y);
+            m_agents.vel[i] = glm::vec3(f.x, 0.0f, f.y) * (ts.active(v) ? ts.speed(v) : 0.0f);
+            m_agents.fwd[i] = glm::vec3(f.x, 0.0f, f.y);
+            m_agents.side[i] = glm::vec3(-f.y, 0.0f, f.x);
         }
     }
-    m_radius = radius;
-    m_maxSpeed = maxSpeed;
-    m_stride = stride;
-    m_leader = leader;
+    m_agents.radius = radius;
+    m_agents.maxSpeed = maxSpeed;
+    m_agents.stride = stride;
+    m_agents.leader = leader;
     m_nav.waypointRadiusM = waypointRadiusM;
     // A kept agent keeps its id, and with an unchanged type what was drawn by it.
     for (std::size_t i = 0; i < n; ++i) {
-        if (previous(i) < 0 || s.agents[i].id == m_info[i].id)
+        if (previous(i) < 0 || s.agents[i].id == m_agents.info[i].id)
             continue;
-        m_info[i].id = s.agents[i].id;
-        const std::size_t t0 = s.agents[i].typeIndex, t1 = m_info[i].typeIndex;
+        m_agents.info[i].id = s.agents[i].id;
+        const std::size_t t0 = s.agents[i].typeIndex, t1 = m_agents.info[i].typeIndex;
         if (t0 < stateScene.agentTypes.size() && t1 < thisScene.agentTypes.size() &&
             stateScene.agentTypes[t0] == thisScene.agentTypes[t1]) {
-            m_maxSpeed[i] = s.maxSpeed[i];
-            m_stride[i] = s.stride[i];
+            m_agents.maxSpeed[i] = s.maxSpeed[i];
+            m_agents.stride[i] = s.stride[i];
             if (i < m_nav.waypointRadiusM.size() && i < s.waypointRadiusM.size())
                 m_nav.waypointRadiusM[i] = s.waypointRadiusM[i];
         }
@@ -338,14 +338,14 @@ bool World::adoptMatched(const WorldState& s, const Scene& stateScene, const Sce
                                   (legsBefore[j].goal == legsAfter[i].goal && legsBefore[j].path == legsAfter[i].path);
         const bool legKept = b >= 0 && declaredSame && (s.goal[i] < 0) == (g < 0) && (s.path[i] < 0) == (p < 0);
         if (legKept) {
-            m_goal[i] = g;
-            m_path[i] = p;
+            m_agents.goal[i] = g;
+            m_agents.path[i] = p;
         } else {
-            m_goal[i] = goal[i];
-            m_path[i] = path[i];
-            m_goalSpot[i] = goalSpot[i];
-            m_arrivalTime[i] = arrivalTime[i];
-            m_arrived[i] = m_stopped[i] = m_stoppedBefore[i] = 0;
+            m_agents.goal[i] = goal[i];
+            m_agents.path[i] = path[i];
+            m_agents.goalSpot[i] = goalSpot[i];
+            m_agents.arrivalTime[i] = arrivalTime[i];
+            m_agents.arrived[i] = m_agents.stopped[i] = m_agents.stoppedBefore[i] = 0;
         }
         if (i >= mode.size() || i >= m_nav.mode.size() || i >= m_nav.plan.size())
             continue;  // no navigation in this scene (its arrays are empty)

@@ -6,7 +6,7 @@
 #include "simcore/world/NearestList.h"
 
 #include "simcore/steering/UninitialisedArray.h"
-#include "simcore/world/Rng.h"
+#include "simcore/base/Rng.h"
 #include "simcore/world/detail/StepGeometry.h"
 
 #include <glm/geometric.hpp>
@@ -99,18 +99,18 @@ glm::vec3 slideAlongWall(const SteeringAgent& self, std::span<const WallSegment>
 
 SteeringAgent World::steeringAgent(std::size_t i) const
 {
-    const TypeParams& t = m_types[m_info[i].typeIndex];
+    const TypeParams& t = m_types.params[m_agents.info[i].typeIndex];
     SteeringAgent a;
-    a.position = m_pos[i];
-    a.velocity = m_vel[i];
-    a.forward = m_fwd[i];
-    a.side = m_side[i];
-    a.up = m_up[i];
-    a.radius = m_radius[i];
-    a.maxSpeed = m_maxSpeed[i];
+    a.position = m_agents.pos[i];
+    a.velocity = m_agents.vel[i];
+    a.forward = m_agents.fwd[i];
+    a.side = m_agents.side[i];
+    a.up = m_agents.up[i];
+    a.radius = m_agents.radius[i];
+    a.maxSpeed = m_agents.maxSpeed[i];
     a.maxForce = t.maxForce;
     a.mass = t.mass;
-    a.id = m_info[i].id;
+    a.id = m_agents.info[i].id;
     return a;
 }
 
@@ -118,13 +118,13 @@ SteeringAgent World::steeringAgent(std::size_t i) const
 float World::lastNearestBound(std::size_t i, glm::vec3 p, float perception2) const
 {
     constexpr std::size_t k = kMaxNeighbours;
-    if (m_nearCount[i] != k)
+    if (m_agents.nearCount[i] != k)
         return perception2;
-    const std::uint32_t* last = &m_nearIndex[i * k];
+    const std::uint32_t* last = &m_agents.nearIndex[i * k];
     float far2 = 0.0f;
     for (std::size_t n = 0; n < k; ++n) {
         const std::uint32_t j = last[n];
-        const glm::vec3 d = j < m_pos.size() ? m_pos[j] - p : glm::vec3(INFINITY);
+        const glm::vec3 d = j < m_agents.pos.size() ? m_agents.pos[j] - p : glm::vec3(INFINITY);
         far2 = std::max(far2, glm::dot(d, d));
     }
     return std::min(perception2, far2);
@@ -134,8 +134,8 @@ float World::lastNearestBound(std::size_t i, glm::vec3 p, float perception2) con
 // (Reynolds 1987), nearest first, ties by id, so the choice never depends on grid order.
 std::size_t World::gatherNeighbours(std::size_t i, Neighbour* out, std::uint32_t* indices) const
 {
-    const TypeParams& t = m_types[m_info[i].typeIndex];
-    const glm::vec3 p = m_pos[i], fwd = m_fwd[i];
+    const TypeParams& t = m_types.params[m_agents.info[i].typeIndex];
+    const glm::vec3 p = m_agents.pos[i], fwd = m_agents.fwd[i];
     const float r2 = t.perception * t.perception;
     // The k nearest, ties by index, kept sorted by insertion; once k are known the search
     // radius shrinks to the k-th distance, so farther candidates and cells are skipped.
@@ -149,25 +149,25 @@ std::size_t World::gatherNeighbours(std::size_t i, Neighbour* out, std::uint32_t
     float bound = r2;
     const float c = t.cosHalfView;
     auto consider = [&](std::uint32_t j, const glm::vec3& q) {
-        if (m_makingWay && !collide(mine, collision(j)))
+        if (m_types.makingWay && !collide(mine, collision(j)))
             return;  // agents on layers that do not collide do not perceive each other
         const glm::vec3 d = q - p;
         const float d2 = glm::dot(d, d);
         if (d2 > bound || j == i)
             return;
         // Outside the view cone (but a touching neighbour is always felt).
-        const float contact = m_radius[i] + m_radius[j];
+        const float contact = m_agents.radius[i] + m_agents.radius[j];
         if (outsideViewCone(d, d2, fwd, c) && d2 > contact * contact)
             return;
-        const bool urgent = m_makingWay && collision(j).priority > mine.priority;
-        if (best.insert(nearestKey(d2, j, !urgent)) && best.full() && !m_makingWay)
+        const bool urgent = m_types.makingWay && collision(j).priority > mine.priority;
+        if (best.insert(nearestKey(d2, j, !urgent)) && best.full() && !m_types.makingWay)
             bound = best.worstDistance2();
     };
     // Nearest rows first: once the k best are found, farther cells are skipped.
     m_grid.forEachNearest(p, t.perception, [&] { return bound; }, consider);
     for (std::size_t n = 0; n < best.count; ++n) {
         const auto j = best.index(n);
-        out[n] = {m_pos[j], m_vel[j], m_fwd[j], m_radius[j], m_info[j].id};
+        out[n] = {m_agents.pos[j], m_agents.vel[j], m_agents.fwd[j], m_agents.radius[j], m_agents.info[j].id};
         indices[n] = j;
     }
     return best.count;
@@ -182,7 +182,7 @@ glm::vec3 World::flowDirection(glm::vec3 p) const
     const glm::vec2 q = xz(p);
     float bestD = INFINITY;
     glm::vec2 dir(0.0f);
-    for (const FlowSegment& s : m_flow) {
+    for (const FlowSegment& s : m_set.flow) {
         const float d = glm::distance(q, closestOnSegment(q, s.a, s.b));
         if (d <= s.halfWidth && d < bestD && s.a != s.b) {
             bestD = d;
@@ -198,20 +198,20 @@ glm::vec3 World::flowDirection(glm::vec3 p) const
 void World::steerAroundStatics(std::size_t i, const SteeringAgent& self, glm::vec3 goal,
                                SteeringRequestList& requests, DebugSink* sink) const
 {
-    const TypeSteering& s = m_steering[m_info[i].typeIndex];
+    const TypeSteering& s = m_types.steering[m_agents.info[i].typeIndex];
     using B = Behaviour;
     auto request = [&](B b, auto&& force) {
         requestBehaviour(s, b, brainWeight(i, b), force, requests, sink);
     };
     const glm::vec3 p = self.position;
-    if (s.on(B::WallFollowing) && !m_walls.segments().empty()) {
+    if (s.on(B::WallFollowing) && !m_set.walls.segments().empty()) {
         std::array<WallSegment, kMaxNearWalls> walls;
         std::size_t n = 0;
         const float reach = s.walls.feelerMinM + s.walls.feelerLookaheadS * self.speed() + s.walls.standoffM +
                             self.radius;
-        m_walls.forEachNear(xz(p), reach, [&](std::uint32_t k) {
+        m_set.walls.forEachNear(xz(p), reach, [&](std::uint32_t k) {
             if (n < walls.size()) {
-                const Segment& seg = m_walls.segment(k);
+                const Segment& seg = m_set.walls.segment(k);
                 walls[n++] = {glm::vec3(seg.a.x, 0.0f, seg.a.y), glm::vec3(seg.b.x, 0.0f, seg.b.y)};
             }
         });
@@ -220,18 +220,18 @@ void World::steerAroundStatics(std::size_t i, const SteeringAgent& self, glm::ve
             request(B::WallFollowing, [&] { return slideAlongWall(self, {walls.data(), n}, goal, s.walls); });
         }
     }
-    if (s.on(B::ObstacleAvoidance) && (!m_circles.empty() || !m_boxes.empty())) {
+    if (s.on(B::ObstacleAvoidance) && (!m_set.circles.empty() || !m_set.boxes.empty())) {
         std::array<CircleObstacle, kMaxNearObstacles> circles;
         std::array<BoxObstacle, kMaxNearObstacles> boxes;
         std::size_t nc = 0, nb = 0;
         const float reach = s.obstacles.minLengthM + s.obstacles.lookaheadS * self.speed() + self.radius +
                             s.obstacles.marginM;
-        m_obstacleGrid.forEachNear(xz(p), reach, [&](std::uint32_t k) {
-            if (k < m_circles.size()) {
+        m_set.obstacleGrid.forEachNear(xz(p), reach, [&](std::uint32_t k) {
+            if (k < m_set.circles.size()) {
                 if (nc < circles.size())
-                    circles[nc++] = m_circles[k];
+                    circles[nc++] = m_set.circles[k];
             } else if (nb < boxes.size()) {
-                boxes[nb++] = m_boxes[k - m_circles.size()];
+                boxes[nb++] = m_set.boxes[k - m_set.circles.size()];
             }
         });
         request(B::ObstacleAvoidance,
@@ -244,37 +244,37 @@ void World::steerAroundStatics(std::size_t i, const SteeringAgent& self, glm::ve
 glm::vec3 World::steer(std::size_t i, const SteeringAgent& self, std::span<const Neighbour> near,
                        WanderState& wanderOut, DebugSink* sink) const
 {
-    const TypeSteering& s = m_steering[m_info[i].typeIndex];
+    const TypeSteering& s = m_types.steering[m_agents.info[i].typeIndex];
     using B = Behaviour;
     SteeringRequestList requests;
     auto request = [&](B b, auto&& force) {
         requestBehaviour(s, b, brainWeight(i, b), force, requests, sink);
     };
     const glm::vec3 p = self.position;
-    const bool hasGoal = m_goal[i] >= 0;
-    const glm::vec3 goal = hasGoal ? navGoal(i, glm::vec3(m_goalSpot[i].x, p.y, m_goalSpot[i].y)) : p + self.forward;
-    const std::int32_t leaderIndex = m_leader[i];
+    const bool hasGoal = m_agents.goal[i] >= 0;
+    const glm::vec3 goal = hasGoal ? navGoal(i, glm::vec3(m_agents.goalSpot[i].x, p.y, m_agents.goalSpot[i].y)) : p + self.forward;
+    const std::int32_t leaderIndex = m_agents.leader[i];
     Neighbour leader;
     if (leaderIndex >= 0) {
         const auto j = std::size_t(leaderIndex);
-        leader = {m_pos[j], m_vel[j], m_fwd[j], m_radius[j], m_info[j].id};
+        leader = {m_agents.pos[j], m_agents.vel[j], m_agents.fwd[j], m_agents.radius[j], m_agents.info[j].id};
     }
 
     if (s.on(B::Containment)) {
         // Only agents whose probes can reach the bounds ask; the rest are far inside.
         const float probe = s.containment.probeMinM + s.containment.probeLookaheadS * self.speed() + self.radius;
-        const glm::vec3 lo = p - m_bounds.min, hi = m_bounds.max - p;
+        const glm::vec3 lo = p - m_set.bounds.min, hi = m_set.bounds.max - p;
         const float nearest = s.vehicle.flying ? std::min({lo.x, lo.y, lo.z, hi.x, hi.y, hi.z})
                                                : std::min({lo.x, lo.z, hi.x, hi.z});  // walkers ignore height
         if (nearest < probe)
-            request(B::Containment, [&] { return stayInside(self, m_bounds, s.containment); });
+            request(B::Containment, [&] { return stayInside(self, m_set.bounds, s.containment); });
     }
     steerAroundStatics(i, self, goal, requests, sink);
     // Separation and collision avoidance leave to lower-priority neighbours the whole
     // of making way (WorldPriority.h).
     // (The buffer is only written when priorities differ, and only as far as it is read.)
     UninitialisedArray<Neighbour, kMaxNeighbours> yielding;
-    const std::span<const Neighbour> avoided = m_makingWay ? neighboursToAvoid(i, near, yielding.data()) : near;
+    const std::span<const Neighbour> avoided = m_types.makingWay ? neighboursToAvoid(i, near, yielding.data()) : near;
     request(B::Separation, [&] { return separate(self, avoided, s.separation); });
     request(B::UnalignedCollisionAvoidance, [&] { return avoidUnalignedCollisions(self, avoided, s.unaligned); });
     if (leaderIndex >= 0) {
@@ -286,24 +286,24 @@ glm::vec3 World::steer(std::size_t i, const SteeringAgent& self, std::span<const
     } else if (hasGoal) {
         request(B::Flee, [&] { return flee(self, goal, s.flee); });
     }
-    if (m_path[i] >= 0) {
-        const auto k = std::size_t(m_path[i]);
-        const SteeringPath path{m_pathPoints[k], m_paths[k].radiusM, m_paths[k].closed};
+    if (m_agents.path[i] >= 0) {
+        const auto k = std::size_t(m_agents.path[i]);
+        const SteeringPath path{m_set.pathPoints[k], m_set.paths[k].radiusM, m_set.paths[k].closed};
         // Paths lie on the ground; a flier follows one in the horizontal at its own height.
         SteeringAgent flat = self;
         if (s.vehicle.flying)
             flat.position.y = flat.velocity.y = 0.0f;
-        request(B::PathFollowing, [&] { return followPath(flat, path, s.path, m_pathAlong[i]); });
+        request(B::PathFollowing, [&] { return followPath(flat, path, s.path, m_agents.pathAlong[i]); });
     }
-    if (!m_flow.empty())
+    if (!m_set.flow.empty())
         request(B::FlowFieldFollowing, [&] { return followFlow(self, flowDirection(flowSamplePoint(self, s.flow)), s.flow); });
-    if (hasGoal && m_path[i] < 0) {
+    if (hasGoal && m_agents.path[i] < 0) {
         // An exit is walked through, not stopped at: slowing down short of it, a walker
         // whose door posts pushed it back (wall following) stood in front of the door for
         // good (issue 23). Walkers with a navigation target keep their slowing: it sets a
         // flow-field walker's pace in a crowd (WorldNav.cpp, Weidmann).
         request(B::Arrival, [&] {
-            if (!m_goals[std::size_t(m_goal[i])].exit || (m_nav.active && m_nav.hasTarget[i]))
+            if (!m_set.goals[std::size_t(m_agents.goal[i])].exit || (m_nav.active && m_nav.hasTarget[i]))
                 return arrive(self, goal, s.arrival);
             ArrivalParams through = s.arrival;
             through.slowingDistanceM = 1e-6f;
@@ -313,12 +313,12 @@ glm::vec3 World::steer(std::size_t i, const SteeringAgent& self, std::span<const
     }
     request(B::Alignment, [&] { return align(self, near, s.alignment); });
     request(B::Cohesion, [&] { return cohere(self, near, s.cohesion); });
-    wanderOut = m_wander[i];
+    wanderOut = m_agents.wander[i];
     if (s.on(B::Wander)) {
-        const std::uint64_t key = rngKey(m_seed, m_info[i].id, m_step);
+        const std::uint64_t key = rngKey(m_seed, m_agents.info[i].id, m_clock.step);
         const glm::vec3 random(rngRangeOf(key, kWanderX, -1.0f, 1.0f), rngRangeOf(key, kWanderY, -1.0f, 1.0f),
                                rngRangeOf(key, kWanderZ, -1.0f, 1.0f));
-        const WanderResult w = wander(self, m_wander[i], random, s.wander);
+        const WanderResult w = wander(self, m_agents.wander[i], random, s.wander);
         wanderOut = w.state;
         requests.add(w.force, s.w(B::Wander) * brainWeight(i, B::Wander));
         if (sink)
@@ -326,8 +326,8 @@ glm::vec3 World::steer(std::size_t i, const SteeringAgent& self, std::span<const
     }
     // A walker or vehicle with nowhere to go comes to rest instead of coasting on what
     // separation or a collision gave it (the lowest priority: anything else comes first).
-    const bool goesSomewhere = hasGoal || m_path[i] >= 0 || leaderIndex >= 0 || s.on(B::Wander) ||
-                               (!m_flow.empty() && s.on(B::FlowFieldFollowing));
+    const bool goesSomewhere = hasGoal || m_agents.path[i] >= 0 || leaderIndex >= 0 || s.on(B::Wander) ||
+                               (!m_set.flow.empty() && s.on(B::FlowFieldFollowing));
     if (!goesSomewhere && !s.vehicle.flying)
         requests.add(-self.velocity * (self.mass / kStandStillResponseS), 1.0f);
     return s.priority ? allocateByPriority(requests, self.maxForce) : blendWeighted(requests, self.maxForce);
@@ -338,9 +338,9 @@ glm::vec3 World::steer(std::size_t i, const SteeringAgent& self, std::span<const
 std::span<const Neighbour> World::neighboursToAvoid(std::size_t i, std::span<const Neighbour> near,
                                                     Neighbour* buffer) const
 {
-    if (!m_makingWay)
+    if (!m_types.makingWay)
         return near;  // all equals: nobody makes way
-    const std::uint32_t* index = &m_nearIndex[i * kMaxNeighbours];
+    const std::uint32_t* index = &m_agents.nearIndex[i * kMaxNeighbours];
     const float priority = collision(i).priority;
     std::size_t n = 0;
     for (std::size_t k = 0; k < near.size(); ++k)
@@ -357,23 +357,23 @@ std::span<const Neighbour> World::neighboursToAvoid(std::size_t i, std::span<con
 glm::vec3 World::avoidReciprocally(std::size_t i, const SteeringAgent& self, glm::vec3 force,
                                    std::span<const Neighbour> near, const TypeSteering& s) const
 {
-    // Decided for the time until the next decision (StepRate.h), m_decideDt.
-    if (self.mass <= 0.0f || m_decideDt <= 0.0f)
+    // Decided for the time until the next decision (StepRate.h), m_clock.decideDt.
+    if (self.mass <= 0.0f || m_clock.decideDt <= 0.0f)
         return force;
-    const glm::vec3 wanted = self.velocity + force * (m_decideDt / self.mass);
+    const glm::vec3 wanted = self.velocity + force * (m_clock.decideDt / self.mass);
     glm::vec2 preferred(wanted.x, wanted.z);
     const float speed = glm::length(preferred);
     if (speed > self.maxSpeed && speed > 0.0f)
         preferred *= self.maxSpeed / speed;
     UninitialisedArray<PlanarNeighbour, kMaxNeighbours> others;  // the first `count` are written, and read
-    const std::uint32_t* index = &m_nearIndex[i * kMaxNeighbours];
+    const std::uint32_t* index = &m_agents.nearIndex[i * kMaxNeighbours];
     const glm::vec2 fwd = xz(self.forward);
     std::size_t oncoming = 0, count = 0;
     const TypeCollision& mine = collision(i);
     for (std::size_t k = 0; k < near.size(); ++k) {
-        const bool stopped = m_stopped[index[k]] != 0;
+        const bool stopped = m_agents.stopped[index[k]] != 0;
         // Between equals (no priorities in the scene) the share is 1 or 1/2, as avoidanceShare says.
-        const float share = m_makingWay ? avoidanceShare(mine, collision(index[k]), stopped) : (stopped ? 1.0f : 0.5f);
+        const float share = m_types.makingWay ? avoidanceShare(mine, collision(index[k]), stopped) : (stopped ? 1.0f : 0.5f);
         if (share <= 0.0f)
             continue;
         PlanarNeighbour& o = others[count++];
@@ -389,8 +389,8 @@ glm::vec3 World::avoidReciprocally(std::size_t i, const SteeringAgent& self, glm
         preferred = preferred * turn.x + right * turn.y;
     }
     const PlanarBody body{xz(self.position), xz(self.velocity), self.radius, self.maxSpeed};
-    const glm::vec2 v = sim::avoidReciprocally(body, preferred, {others.data(), count}, m_decideDt, s.reciprocal);
-    return (glm::vec3(v.x, 0.0f, v.y) - glm::vec3(self.velocity.x, 0.0f, self.velocity.z)) * (self.mass / m_decideDt);
+    const glm::vec2 v = sim::avoidReciprocally(body, preferred, {others.data(), count}, m_clock.decideDt, s.reciprocal);
+    return (glm::vec3(v.x, 0.0f, v.y) - glm::vec3(self.velocity.x, 0.0f, self.velocity.z)) * (self.mass / m_clock.decideDt);
 }
 
 }  // namespace throng::sim

@@ -8,7 +8,7 @@
 
 #include "simcore/steering/KeepRight.h"
 #include "simcore/steering/UninitialisedArray.h"
-#include "simcore/world/Rng.h"
+#include "simcore/base/Rng.h"
 #include "simcore/world/detail/StepGeometry.h"
 
 #include <glm/common.hpp>
@@ -26,24 +26,24 @@ using namespace detail;
 
 void World::step()
 {
-    for (int k = 0; k < m_subSteps; ++k)
+    for (int k = 0; k < m_clock.subSteps; ++k)
         stepOnce();
 }
 
 void World::stepOnce()
 {
-    const std::size_t n = m_pos.size();
+    const std::size_t n = m_agents.pos.size();
     // Anything to constrain walkers against? Not in an open field like `cross`.
-    const bool hasStatics = !m_walls.segments().empty() || !m_circles.empty();
+    const bool hasStatics = m_set.hasStatics();
 
-    // Grid: index agents by cell for neighbour queries (the last step's count left it
-    // current for these positions).
+    // Grid: index agents by cell for neighbour queries (the last step's grid phase, at
+    // the end of this function, left it current for these positions).
     if (!m_gridCurrent)
-        m_grid.rebuild(m_pos, m_hasFliers, m_out, &m_team);
+        m_grid.rebuild(m_agents.pos, m_hasFliers, m_agents.out, &m_team);
     m_gridCurrent = false;
     // Decide, or apply the forces decided (StepRate.h).
-    m_decide = decisionAt(m_step, double(m_dt));
-    m_decideDt = m_decide ? float(decisionIntervalS(m_step, double(m_dt))) : m_decideDt;
+    m_clock.decide = decisionAt(m_clock.step, double(m_clock.dt));
+    m_clock.decideDt = m_clock.decide ? float(decisionIntervalS(m_clock.step, double(m_clock.dt))) : m_clock.decideDt;
     // Navigate: plans and each walker's waypoint or flow direction (WorldNav.cpp).
     navBeforeStep();
     // Brain: sensors from this (previous) state, then each type's program; before the
@@ -88,7 +88,7 @@ void World::stepOnce()
         for (std::size_t i = begin; i < end; ++i) {
             bool collideFree = false;
             if (trustKernel) {
-                const glm::vec3 drift = m_nextPos[i] - (m_pos[i] + m_vel[i] * m_dt);
+                const glm::vec3 drift = m_agents.nextPos[i] - (m_agents.pos[i] + m_agents.vel[i] * m_clock.dt);
                 broken += glm::dot(drift, drift) > slack2;
                 collideFree = (m_collideFree[i] & kCollideFree) != 0;
             }
@@ -101,39 +101,43 @@ void World::stepOnce()
     // Contact rounds: on each decision (every step at 24 fps and below), the bodies that
     // still overlap are parted (WorldCollide.cpp); between decisions the collide pass
     // keeps what they parted apart.
-    if (m_decide && !m_allFliers)
+    if (m_clock.decide && !m_allFliers)
         settleContacts(hasStatics);
     // The resolved positions are the next ones (the pass wrote every agent's).
-    std::swap(m_nextPos, m_resolvedPos);
+    std::swap(m_agents.nextPos, m_agents.resolvedPos);
     trafficAfterCollide();
 
     // Commit: animate and note arrivals, then swap in the new state (no copying: every path
     // of the step (stopped, boids, walkers, the general one, traffic and heroes over those)
     // writes all six next columns of every agent, so the old state left in m_next* is never
     // read before it is overwritten).
-    m_stoppedBefore = m_stopped;
+    m_agents.stoppedBefore = m_agents.stopped;
     // The new state's values that are not numbers are counted here, where each agent's
-    // are already in cache, not in a pass of their own (countStep).
+    // are already in cache, not in a pass of their own (CountPhase).
     std::atomic<std::uint64_t> crossings{0}, nonFinite{0};
     m_team.forChunks(n, 256, [&](std::size_t begin, std::size_t end, int) {
         std::uint64_t crossed = 0, notNumbers = 0;
         for (std::size_t i = begin; i < end; ++i) {
             commit(i, crossed);
-            notNumbers += !isFinite(m_nextPos[i]) || !isFinite(m_nextVel[i]);
+            notNumbers += !isFinite(m_agents.nextPos[i]) || !isFinite(m_agents.nextVel[i]);
         }
         crossings.fetch_add(crossed, std::memory_order_relaxed);
         nonFinite.fetch_add(notNumbers, std::memory_order_relaxed);
     });
-    std::swap(m_pos, m_nextPos);
-    std::swap(m_vel, m_nextVel);
-    std::swap(m_fwd, m_nextFwd);
-    std::swap(m_side, m_nextSide);
-    std::swap(m_up, m_nextUp);
-    std::swap(m_wander, m_nextWander);
-    m_counters.wallPenetrations += crossings.load();
-    ++m_step;
-    countStep(nonFinite.load());
-    countLeaderOvertakes();
+    std::swap(m_agents.pos, m_agents.nextPos);
+    std::swap(m_agents.vel, m_agents.nextVel);
+    std::swap(m_agents.fwd, m_agents.nextFwd);
+    std::swap(m_agents.side, m_agents.nextSide);
+    std::swap(m_agents.up, m_agents.nextUp);
+    std::swap(m_agents.wander, m_agents.nextWander);
+    m_count.addWallCrossings(crossings.load());
+    ++m_clock.step;
+
+    // Grid: index the new positions, for the count and the next step's senses.
+    m_grid.rebuild(m_agents.pos, m_hasFliers, m_agents.out, &m_team);
+    m_gridCurrent = true;
+    // Count: the run's figures on the positions the step ended at (CountPhase.h).
+    m_count.count(view(), m_agents.onCrosswalk, nonFinite.load());
     trafficAfterStep();
 }
 
@@ -161,23 +165,23 @@ void World::stepInGridOrder(const std::uint32_t* order, std::size_t begin, std::
         // (32 and 64 ahead measured alike; prefetching the neighbours' states gained nothing).
         if (k + kPrefetchAhead < end) {
             const std::uint32_t a = order[k + kPrefetchAhead];
-            __builtin_prefetch(&m_info[a]);
-            __builtin_prefetch(&m_pos[a]);
-            __builtin_prefetch(&m_vel[a]);
-            __builtin_prefetch(&m_fwd[a]);
-            __builtin_prefetch(&m_up[a]);
-            __builtin_prefetch(&m_nearIndex[std::size_t(a) * kMaxNeighbours]);
-            __builtin_prefetch(&m_wander[a]);
-            __builtin_prefetch(&m_radius[a]);
-            __builtin_prefetch(&m_nextPos[a], 1);
-            __builtin_prefetch(&m_nextVel[a], 1);
-            __builtin_prefetch(&m_nextFwd[a], 1);
+            __builtin_prefetch(&m_agents.info[a]);
+            __builtin_prefetch(&m_agents.pos[a]);
+            __builtin_prefetch(&m_agents.vel[a]);
+            __builtin_prefetch(&m_agents.fwd[a]);
+            __builtin_prefetch(&m_agents.up[a]);
+            __builtin_prefetch(&m_agents.nearIndex[std::size_t(a) * kMaxNeighbours]);
+            __builtin_prefetch(&m_agents.wander[a]);
+            __builtin_prefetch(&m_agents.radius[a]);
+            __builtin_prefetch(&m_agents.nextPos[a], 1);
+            __builtin_prefetch(&m_agents.nextVel[a], 1);
+            __builtin_prefetch(&m_agents.nextFwd[a], 1);
         }
-        if (!m_boidKernel[m_info[i].typeIndex] || m_stopped[i]) {
+        if (!m_boidKernel[m_agents.info[i].typeIndex] || m_agents.stopped[i]) {
             stepAgent(i, hasStatics, &sweep);
             continue;
         }
-        const std::uint32_t cell = m_grid.cellIndex(m_pos[i]);
+        const std::uint32_t cell = m_grid.cellIndex(m_agents.pos[i]);
         if (unsensed > 0 && cell != unsensedCell)
             senseHeld();
         if (held == kBoidBatch) {
@@ -197,24 +201,24 @@ void World::stepInGridOrder(const std::uint32_t* order, std::size_t begin, std::
 // One agent's sense, steer and integrate: its next state from the old one.
 void World::stepAgent(std::size_t i, bool hasStatics, NeighbourGrid::Sweep* sweep)
 {
-    const TypeSteering& s = m_steering[m_info[i].typeIndex];
-    if (m_stopped[i]) {
+    const TypeSteering& s = m_types.steering[m_agents.info[i].typeIndex];
+    if (m_agents.stopped[i]) {
         // An agent that has arrived stays put: no dodging, no yo-yo.
-        m_nextPos[i] = m_pos[i];
-        m_nextVel[i] = glm::vec3(0.0f);
-        m_nextFwd[i] = m_fwd[i];
-        m_nextSide[i] = m_side[i];
-        m_nextUp[i] = m_up[i];
-        m_nextWander[i] = m_wander[i];
-        m_nearCount[i] = 0;
+        m_agents.nextPos[i] = m_agents.pos[i];
+        m_agents.nextVel[i] = glm::vec3(0.0f);
+        m_agents.nextFwd[i] = m_agents.fwd[i];
+        m_agents.nextSide[i] = m_agents.side[i];
+        m_agents.nextUp[i] = m_agents.up[i];
+        m_agents.nextWander[i] = m_agents.wander[i];
+        m_agents.nearCount[i] = 0;
         m_collideFree[i] = 0;  // a stopped boid's last flag no longer holds: others may come
         return;
     }
-    if (m_boidKernel[m_info[i].typeIndex]) {
+    if (m_boidKernel[m_agents.info[i].typeIndex]) {
         stepBoid(i, sweep);  // boids: sense, steer and integrate in one pass (WorldFlock.cpp)
         return;
     }
-    if (m_walkKernel[m_info[i].typeIndex] && m_path[i] < 0) {
+    if (m_walkKernel[m_agents.info[i].typeIndex] && m_agents.path[i] < 0) {
         stepWalker(i);  // walkers in the open: the same (WorldWalk.cpp)
         return;
     }
@@ -229,27 +233,27 @@ void World::stepAgent(std::size_t i, bool hasStatics, NeighbourGrid::Sweep* swee
     // A walker that only keeps its distance, with an oncoming walker in its way, steps to its
     // right (KeepRight.h), as people do: two crowds meeting head-on form lanes instead of
     // pressing face to face for good.
-    if (const float keepRight = m_keepRight[m_info[i].typeIndex]; keepRight > 0.0f)
+    if (const float keepRight = m_types.keepRight[m_agents.info[i].typeIndex]; keepRight > 0.0f)
         for (std::size_t k = 0; k < count; ++k)
             if (oncomingInTheWay(self.position, self.forward, self.radius, near[k].position, near[k].forward,
                                  near[k].velocity, near[k].radius)) {
                 force += keepRightForce(self.forward, self.maxForce, keepRight);
                 break;
             }
-    if (s.on(Behaviour::ReciprocalAvoidance) && !s.vehicle.flying && m_decide)
+    if (s.on(Behaviour::ReciprocalAvoidance) && !s.vehicle.flying && m_clock.decide)
         force = avoidReciprocally(i, self, force, {near.data(), count}, s);
     // Between decisions (StepRate.h) a ground agent applies the force it decided last.
     if (!s.vehicle.flying) {
-        if (m_decide) {
-            m_heldForce[i] = force;
+        if (m_clock.decide) {
+            m_agents.heldForce[i] = force;
         } else {
-            force = m_heldForce[i];
-            wanderNext = m_wander[i];
+            force = m_agents.heldForce[i];
+            wanderNext = m_agents.wander[i];
         }
     }
     force = obeySignal(i, self, force);
     // Integrate: the simple vehicle model (Reynolds 1999).
-    SteeringAgent next = integrateVehicle(self, force, m_dt, s.vehicle);
+    SteeringAgent next = integrateVehicle(self, force, m_clock.dt, s.vehicle);
     capToBrainSpeed(i, self, next);
     holdAtSignal(i, next.position);
     // Constrain: no agent ends a step inside a wall or obstacle; walkers stand on the ground.
@@ -257,7 +261,7 @@ void World::stepAgent(std::size_t i, bool hasStatics, NeighbourGrid::Sweep* swee
         if (hasStatics)
             constrain(i, self.position, next.position);
         next.position.y = groundHeight(next.position.x, next.position.z);
-        next.velocity = (next.position - self.position) / m_dt;
+        next.velocity = (next.position - self.position) / m_clock.dt;
         next.velocity.y = 0.0f;
     } else if (const float floor = groundHeight(next.position.x, next.position.z) + self.radius;
                next.position.y < floor) {
@@ -265,31 +269,31 @@ void World::stepAgent(std::size_t i, bool hasStatics, NeighbourGrid::Sweep* swee
         // level flight at no less than the stall speed.
         next.position.y = floor;
         next.velocity.y = std::max(next.velocity.y, 0.0f);
-        const float stall = std::min(s.vehicle.minSpeed, m_maxSpeed[i]), v = glm::length(next.velocity);
+        const float stall = std::min(s.vehicle.minSpeed, m_agents.maxSpeed[i]), v = glm::length(next.velocity);
         if (v < stall)
             next.velocity = v > 1e-6f ? next.velocity * (stall / v) : next.forward * stall;
     }
-    m_nextPos[i] = next.position;
-    m_nextVel[i] = next.velocity;
-    m_nextFwd[i] = next.forward;
-    m_nextSide[i] = next.side;
-    m_nextUp[i] = next.up;
-    m_nextWander[i] = wanderNext;
+    m_agents.nextPos[i] = next.position;
+    m_agents.nextVel[i] = next.velocity;
+    m_agents.nextFwd[i] = next.forward;
+    m_agents.nextSide[i] = next.side;
+    m_agents.nextUp[i] = next.up;
+    m_agents.nextWander[i] = wanderNext;
 }
 
 glm::vec3 World::separateBodies(std::size_t i) const
 {
-    if (m_stopped[i])
+    if (m_agents.stopped[i])
         return glm::vec3(0.0f);
-    const bool flying = m_steering[m_info[i].typeIndex].vehicle.flying;
+    const bool flying = m_types.steering[m_agents.info[i].typeIndex].vehicle.flying;
     glm::vec3 push(0.0f);
-    const std::uint32_t* near = &m_nearIndex[i * kMaxNeighbours];
-    for (std::size_t k = 0; k < m_nearCount[i]; ++k) {
+    const std::uint32_t* near = &m_agents.nearIndex[i * kMaxNeighbours];
+    for (std::size_t k = 0; k < m_agents.nearCount[i]; ++k) {
         const std::uint32_t j = near[k];
-        glm::vec3 d = m_nextPos[i] - m_nextPos[j];
+        glm::vec3 d = m_agents.nextPos[i] - m_agents.nextPos[j];
         if (!flying)
             d.y = 0.0f;
-        const float contact = m_radius[i] + m_radius[j];
+        const float contact = m_agents.radius[i] + m_agents.radius[j];
         const float d2 = glm::dot(d, d);
         if (d2 >= contact * contact)
             continue;
@@ -298,7 +302,7 @@ glm::vec3 World::separateBodies(std::size_t i) const
     }
     // Cap the correction so a squeezed agent is nudged, never thrown: at most half its
     // body and half what it could walk in the step.
-    const float cap = std::min(0.5f * m_radius[i], 0.5f * m_maxSpeed[i] * m_dt);
+    const float cap = std::min(0.5f * m_agents.radius[i], 0.5f * m_agents.maxSpeed[i] * m_clock.dt);
     const float len = glm::length(push);
     return len > cap ? push * (cap / len) : push;
 }
@@ -309,16 +313,16 @@ glm::vec3 World::partingDirection(std::size_t i, std::size_t j, glm::vec3 d, flo
         return d / dist;
     // Coincident bodies part along a direction both derive from their ids, in opposite
     // senses, so the pair never moves together.
-    const AgentId lo = std::min(m_info[i].id, m_info[j].id), hi = std::max(m_info[i].id, m_info[j].id);
+    const AgentId lo = std::min(m_agents.info[i].id, m_agents.info[j].id), hi = std::max(m_agents.info[i].id, m_agents.info[j].id);
     const float a = float(rngUniform(lo, hi, 0, 77)) * 6.2831853f;
-    return glm::vec3(std::cos(a), 0.0f, std::sin(a)) * (m_info[i].id == lo ? 1.0f : -1.0f);
+    return glm::vec3(std::cos(a), 0.0f, std::sin(a)) * (m_agents.info[i].id == lo ? 1.0f : -1.0f);
 }
 
 float World::contactShare(std::size_t i, std::size_t j) const
 {
     // A standing neighbour, or one of higher priority, does not give way, so this agent
     // takes the whole overlap; against one of lower priority it takes none.
-    float share = avoidanceShare(collision(i), collision(j), m_stopped[j] != 0);
+    float share = avoidanceShare(collision(i), collision(j), m_agents.stopped[j] != 0);
     // A walker that the red caught on the road goes first: those waiting at the kerb,
     // where it must get to, make room for it (set by this step's steer phase).
     if (!m_traffic.signal.empty() && m_traffic.signal[i].clearing != m_traffic.signal[j].clearing)
@@ -328,29 +332,29 @@ float World::contactShare(std::size_t i, std::size_t j) const
 
 void World::commit(std::size_t i, std::uint64_t& wallCrossings)
 {
-    const glm::vec2 from = xz(m_pos[i]), to = xz(m_nextPos[i]);
+    const glm::vec2 from = xz(m_agents.pos[i]), to = xz(m_agents.nextPos[i]);
     // Fliers pass over walls; only walkers and vehicles can penetrate one.
     // Vehicles and heroes go where traffic and keyframes say (a car crosses a crosswalk's kerb).
     // One walking out of a box it started in crosses that box's side on purpose; any other
     // wall it crosses on its way out counts, as the trajectories show it.
-    if (!m_walls.segments().empty() && !m_steering[m_info[i].typeIndex].vehicle.flying && !m_traffic.isDriven(i))
-        m_walls.forEachNear((from + to) * 0.5f, 0.5f * glm::length(to - from) + 0.01f, [&](std::uint32_t k) {
-        const Segment& s = m_walls.segment(k);
-        if (segmentsCross(from, to, s.a, s.b) && !(m_escaping[i] && sideOfBoxAround(s, from)))
+    if (!m_set.walls.segments().empty() && !m_types.steering[m_agents.info[i].typeIndex].vehicle.flying && !m_traffic.isDriven(i))
+        m_set.walls.forEachNear((from + to) * 0.5f, 0.5f * glm::length(to - from) + 0.01f, [&](std::uint32_t k) {
+        const Segment& s = m_set.walls.segment(k);
+        if (segmentsCross(from, to, s.a, s.b) && !(m_agents.escaping[i] && sideOfBoxAround(s, from)))
             ++wallCrossings;
     });
-    if (m_escaping[i] && glm::distance(to, m_escapeTo[i]) < 1e-4f)
-        m_escaping[i] = 0;
+    if (m_agents.escaping[i] && glm::distance(to, m_agents.escapeTo[i]) < 1e-4f)
+        m_agents.escaping[i] = 0;
     // Animate: the gait advances by distance over stride length, so feet don't slide.
     // (fmod's exact answer without its call: for 0 <= x < 2^31, x - trunc(x) is exact,
     // since trunc(x) <= x < 2 trunc(x) once x >= 1 (Sterbenz), and +0 for whole x, as fmod
     // gives. A fast flier covers more than a stride a step, so x >= 2 happens.)
-    const float phase = m_phase[i] + glm::length(to - from) / m_stride[i];
-    m_phase[i] = phase >= 0.0f && phase < 1.0f            ? phase
+    const float phase = m_agents.phase[i] + glm::length(to - from) / m_agents.stride[i];
+    m_agents.phase[i] = phase >= 0.0f && phase < 1.0f            ? phase
                  : phase >= 1.0f && phase < 2.0f          ? phase - 1.0f
                  : phase >= 2.0f && phase < 2147483648.0f ? phase - float(std::int32_t(phase))
                                                           : std::fmod(phase, 1.0f);
-    if (m_stopped[i])
+    if (m_agents.stopped[i])
         return;
     // Arrived (the stats' figure) = entered the goal's area, or joined the pile of those
     // who stopped at it; counted once. Stopped = frozen for good: at the end of an open
@@ -359,22 +363,22 @@ void World::commit(std::size_t i, std::uint64_t& wallCrossings)
     // like sand from the inside out and the last comers settle at the edge of the pile.
     bool stop = false;
     auto arrive = [&] {
-        if (!m_arrived[i]) {
-            m_arrived[i] = 1;
-            m_arrivalTime[i] = float(double(m_step + 1) * double(m_dt));
+        if (!m_agents.arrived[i]) {
+            m_agents.arrived[i] = 1;
+            m_agents.arrivalTime[i] = float(double(m_clock.step + 1) * double(m_clock.dt));
         }
     };
-    if (m_path[i] >= 0) {
-        const Path& path = m_paths[std::size_t(m_path[i])];
-        const SteeringPath spine{m_pathPoints[std::size_t(m_path[i])], path.radiusM, path.closed};
-        const PathFollowParams& follow = m_steering[m_info[i].typeIndex].path;
-        m_pathAlong[i] = advancePathProgress(spine, m_nextPos[i], m_pathAlong[i],
-                                             pathReachM(spine, follow, m_maxSpeed[i], m_dt), follow.reverse);
+    if (m_agents.path[i] >= 0) {
+        const Path& path = m_set.paths[std::size_t(m_agents.path[i])];
+        const SteeringPath spine{m_set.pathPoints[std::size_t(m_agents.path[i])], path.radiusM, path.closed};
+        const PathFollowParams& follow = m_types.steering[m_agents.info[i].typeIndex].path;
+        m_agents.pathAlong[i] = advancePathProgress(spine, m_agents.nextPos[i], m_agents.pathAlong[i],
+                                             pathReachM(spine, follow, m_agents.maxSpeed[i], m_clock.dt), follow.reverse);
         const float tolerance = std::max(0.1f, 0.25f * path.radiusM);
         const float toEnd = glm::distance(to, path.points.back());
         // Or, within the path's width of its end, held there to a crawl by those round it:
         // a ring of walkers all pressing for the end point may never let one reach it.
-        const bool crawling = toEnd < path.radiusM && glm::distance(to, from) < kSettleSpeedMps * m_dt;
+        const bool crawling = toEnd < path.radiusM && glm::distance(to, from) < kSettleSpeedMps * m_clock.dt;
         stop = !path.closed && (toEnd < tolerance || crawling);
         // Arrived = reached the path's end within the path's own width there; the walker
         // still walks on to the end point itself before it stops.
@@ -385,28 +389,28 @@ void World::commit(std::size_t i, std::uint64_t& wallCrossings)
         // path queues up behind those already there instead of pressing on forever. (Only
         // "between this one and the end" left walkers that had slid past the end beside
         // the pile of a narrow path pressing on for good, issue 23.)
-        const std::uint32_t* near = &m_nearIndex[i * kMaxNeighbours];
-        for (std::size_t k = 0; !stop && !path.closed && k < m_nearCount[i]; ++k) {
+        const std::uint32_t* near = &m_agents.nearIndex[i * kMaxNeighbours];
+        for (std::size_t k = 0; !stop && !path.closed && k < m_agents.nearCount[i]; ++k) {
             const std::uint32_t j = near[k];
-            const float reach = m_radius[i] * 1.5f + m_radius[j] + kSettleGapM;
-            const glm::vec2 q = xz(m_nextPos[j]);
-            stop = m_stoppedBefore[j] && m_path[j] == m_path[i] && glm::distance(to, q) < reach &&
+            const float reach = m_agents.radius[i] * 1.5f + m_agents.radius[j] + kSettleGapM;
+            const glm::vec2 q = xz(m_agents.nextPos[j]);
+            stop = m_agents.stoppedBefore[j] && m_agents.path[j] == m_agents.path[i] && glm::distance(to, q) < reach &&
                    glm::distance(q, path.points.back()) < toEnd;
         }
         if (stop)
             arrive();
-    } else if (m_goal[i] >= 0) {
-        const Goal& g = m_goals[std::size_t(m_goal[i])];
+    } else if (m_agents.goal[i] >= 0) {
+        const Goal& g = m_set.goals[std::size_t(m_agents.goal[i])];
         if (glm::distance(to, g.position) < g.radiusM) {
             // Or, in the goal since an earlier step, held to a crawl by those round it: a goal
             // that several share fills up, and with bodies that no longer press through each
             // other (issue 23) each walker could be kept off its spot by another kept off
             // its own, milling there for good, and the late-comers at the edge with them.
-            const bool crawling = m_arrived[i] && glm::distance(to, from) < kSettleSpeedMps * m_dt;
+            const bool crawling = m_agents.arrived[i] && glm::distance(to, from) < kSettleSpeedMps * m_clock.dt;
             arrive();
             // Through an exit: the agent leaves the simulation (stopped, never perceived again).
-            stop = g.exit || glm::distance(to, m_goalSpot[i]) < kSpotToleranceM || crawling;
-            m_out[i] = g.exit ? 1 : 0;
+            stop = g.exit || glm::distance(to, m_agents.goalSpot[i]) < kSpotToleranceM || crawling;
+            m_agents.out[i] = g.exit ? 1 : 0;
         }
         // Against the pile: a stopped agent with the same goal, between this one and its
         // spot. Flags as they were when this phase began, and j's next position (which a
@@ -414,29 +418,29 @@ void World::commit(std::size_t i, std::uint64_t& wallCrossings)
         // this phase is read here.
         // Within touch, or within the personal space its separation keeps (which held a
         // crowd of late-comers at arm's length from the pile, walking on the spot for good).
-        const TypeSteering& s = m_steering[m_info[i].typeIndex];
+        const TypeSteering& s = m_types.steering[m_agents.info[i].typeIndex];
         const float gap = std::max(kSettleGapM, s.on(Behaviour::Separation) ? s.separation.rangeM : 0.0f);
-        const std::uint32_t* near = &m_nearIndex[i * kMaxNeighbours];
-        for (std::size_t k = 0; !stop && !g.exit && k < m_nearCount[i]; ++k) {
+        const std::uint32_t* near = &m_agents.nearIndex[i * kMaxNeighbours];
+        for (std::size_t k = 0; !stop && !g.exit && k < m_agents.nearCount[i]; ++k) {
             const std::uint32_t j = near[k];
-            const float contact = m_radius[i] + m_radius[j] + gap;
-            const glm::vec2 q = xz(m_nextPos[j]);
-            stop = m_stoppedBefore[j] && m_goal[j] == m_goal[i] && glm::distance(to, q) < contact &&
-                   glm::dot(q - to, m_goalSpot[i] - to) > 0.0f;
+            const float contact = m_agents.radius[i] + m_agents.radius[j] + gap;
+            const glm::vec2 q = xz(m_agents.nextPos[j]);
+            stop = m_agents.stoppedBefore[j] && m_agents.goal[j] == m_agents.goal[i] && glm::distance(to, q) < contact &&
+                   glm::dot(q - to, m_agents.goalSpot[i] - to) > 0.0f;
         }
         if (stop)
             arrive();
     }
     if (stop) {
-        m_stopped[i] = 1;
-        m_nextVel[i] = glm::vec3(0.0f);  // the velocity World::step swaps in
+        m_agents.stopped[i] = 1;
+        m_agents.nextVel[i] = glm::vec3(0.0f);  // the velocity World::step swaps in
     }
 }
 
 bool World::sideOfBoxAround(const Segment& s, glm::vec2 p) const
 {
     constexpr float kOnSide = 1e-3f;  // relative: the side's midpoint lies on the box's outline
-    for (const BoxObstacle& b : m_boxes) {
+    for (const BoxObstacle& b : m_set.boxes) {
         const glm::vec2 ax = xz(b.axis), az(-ax.y, ax.x), c = xz(b.centre);
         const glm::vec2 d = p - c, m = 0.5f * (s.a + s.b) - c;
         if (std::fabs(glm::dot(d, ax)) >= b.halfSize.x || std::fabs(glm::dot(d, az)) >= b.halfSize.y)
@@ -450,25 +454,25 @@ bool World::sideOfBoxAround(const Segment& s, glm::vec2 p) const
 
 void World::constrain(std::size_t i, glm::vec3 from, glm::vec3& to) const
 {
-    if (m_escaping[i]) {  // started inside a wall or obstacle: on its way out (WorldEscape.cpp)
+    if (m_agents.escaping[i]) {  // started inside a wall or obstacle: on its way out (WorldEscape.cpp)
         escapeStep(i, from, to);
         return;
     }
-    const float r = m_radius[i];
+    const float r = m_agents.radius[i];
     glm::vec2 p = xz(to);
     const glm::vec2 p0 = xz(from);
     // A move that would cross a wall stops where it started (no tunnelling at any speed).
     bool crossed = false;
-    m_walls.forEachNear((p0 + p) * 0.5f, 0.5f * glm::length(p - p0) + r + 0.01f, [&](std::uint32_t k) {
-        const Segment& s = m_walls.segment(k);
+    m_set.walls.forEachNear((p0 + p) * 0.5f, 0.5f * glm::length(p - p0) + r + 0.01f, [&](std::uint32_t k) {
+        const Segment& s = m_set.walls.segment(k);
         crossed = crossed || segmentsCross(p0, p, s.a, s.b);
     });
     if (crossed)
         p = p0;
     // Then push the body out of walls and obstacles it overlaps; two passes settle corners.
     for (int pass = 0; pass < 2; ++pass) {
-        m_walls.forEachNear(p, r, [&](std::uint32_t k) {
-            const Segment& s = m_walls.segment(k);
+        m_set.walls.forEachNear(p, r, [&](std::uint32_t k) {
+            const Segment& s = m_set.walls.segment(k);
             const glm::vec2 c = closestOnSegment(p, s.a, s.b);
             const glm::vec2 d = p - c;
             const float dist2 = glm::dot(d, d);
@@ -487,10 +491,10 @@ void World::constrain(std::size_t i, glm::vec3 from, glm::vec3& to) const
             if (!segmentsCross(p0, candidate, s.a, s.b))
                 p = candidate;
         });
-        m_obstacleGrid.forEachNear(p, r, [&](std::uint32_t k) {
-            if (k >= m_circles.size())
+        m_set.obstacleGrid.forEachNear(p, r, [&](std::uint32_t k) {
+            if (k >= m_set.circles.size())
                 return;  // boxes are walls too, handled above
-            const CircleObstacle& o = m_circles[k];
+            const CircleObstacle& o = m_set.circles[k];
             const glm::vec2 d = p - xz(o.centre);
             const float dist = glm::length(d);
             const float minDist = o.radius + r;

@@ -62,7 +62,7 @@ void World::addTrafficAgents(const Scene& scene)
                 return std::uint16_t(t);
         return std::uint16_t(0);
     };
-    const std::size_t walkers = m_pos.size();
+    const std::size_t walkers = m_agents.pos.size();
     if (m_traffic.system) {
         const TrafficSystem& ts = *m_traffic.system;
         std::map<std::uint32_t, std::string> typeById;
@@ -70,10 +70,10 @@ void World::addTrafficAgents(const Scene& scene)
             typeById[v.id] = v.type;
         for (std::size_t v = 0; v < ts.vehicleCount(); ++v) {
             const glm::vec2 p = ts.position(v), f = ts.forward(v);
-            m_traffic.vehicleAgent.push_back(std::uint32_t(m_pos.size()));
+            m_traffic.vehicleAgent.push_back(std::uint32_t(m_agents.pos.size()));
             addAgent(scene, ts.id(v), typeOf(typeById[ts.id(v)]), onGround(p, 0.0f), std::atan2(-f.y, f.x), -1, -1, 0);
-            m_vel.back() = glm::vec3(f.x, 0.0f, f.y) * ts.speed(v);
-            m_radius.back() = ts.radius(v);
+            m_agents.vel.back() = glm::vec3(f.x, 0.0f, f.y) * ts.speed(v);
+            m_agents.radius.back() = ts.radius(v);
         }
     }
     std::size_t k = 0;
@@ -82,23 +82,23 @@ void World::addTrafficAgents(const Scene& scene)
             continue;
         const HeroTrack& track = m_traffic.heroes[k++];
         const glm::vec2 f = track.forwardAt(0.0);
-        m_traffic.heroAgent.push_back(std::uint32_t(m_pos.size()));
+        m_traffic.heroAgent.push_back(std::uint32_t(m_agents.pos.size()));
         addAgent(scene, h.id, typeOf(h.type), glm::vec3(0.0f), std::atan2(-f.y, f.x), -1, -1, 0);
-        m_pos.back() = m_nextPos.back() = m_resolvedPos.back() = track.positionAt(0.0);
-        m_vel.back() = track.velocityAt(0.0);
+        m_agents.pos.back() = m_agents.nextPos.back() = m_agents.resolvedPos.back() = track.positionAt(0.0);
+        m_agents.vel.back() = track.velocityAt(0.0);
     }
-    const std::size_t n = m_pos.size();
+    const std::size_t n = m_agents.pos.size();
     m_traffic.driven.assign(n, 0);
     m_traffic.offStage.assign(n, 0);
     for (std::size_t i = walkers; i < n; ++i) {
         m_traffic.driven[i] = 1;
         // A driven agent counts as standing for the step's phases: it is never steered,
         // and a walker that overlaps it takes the whole correction.
-        m_stopped[i] = 1;
-        m_stoppedBefore[i] = 1;
+        m_agents.stopped[i] = 1;
+        m_agents.stoppedBefore[i] = 1;
     }
     for (std::size_t i = 0; i < walkers; ++i)
-        if (m_types[m_info[i].typeIndex].kind == AgentKind::Pedestrian)
+        if (m_types.params[m_agents.info[i].typeIndex].kind == AgentKind::Pedestrian)
             m_traffic.pedestrians.push_back(std::uint32_t(i));
     for (std::uint32_t h : m_traffic.heroAgent)
         m_traffic.pedestrians.push_back(h);
@@ -113,18 +113,18 @@ void World::trafficBeforeStep()
         return;
     for (std::size_t k = 0; k < m_traffic.pedestrians.size(); ++k) {
         const std::uint32_t i = m_traffic.pedestrians[k];
-        m_traffic.before[k] = {xz(m_pos[i]), xz(m_vel[i]), m_radius[i]};
+        m_traffic.before[k] = {xz(m_agents.pos[i]), xz(m_agents.vel[i]), m_agents.radius[i]};
     }
     m_traffic.system->step(m_traffic.before);
 }
 
 glm::vec2 World::wantedHeading(std::size_t i) const
 {
-    const glm::vec2 p = xz(m_pos[i]);
-    if (m_path[i] >= 0) {
+    const glm::vec2 p = xz(m_agents.pos[i]);
+    if (m_agents.path[i] >= 0) {
         // The point a little ahead of the nearest point of its path: where it is heading
         // even while it stands still or rounds a corner.
-        const Path& path = m_paths[std::size_t(m_path[i])];
+        const Path& path = m_set.paths[std::size_t(m_agents.path[i])];
         const std::size_t count = path.points.size(), segments = path.closed ? count : count - 1;
         float best = 1e30f;
         std::size_t seg = 0;
@@ -150,19 +150,19 @@ glm::vec2 World::wantedHeading(std::size_t i) const
             seg = (seg + 1) % segments;
         }
     }
-    if (m_goal[i] >= 0)
-        return xz(navGoal(i, onGround(m_goalSpot[i], 0.0f))) - p;
-    const glm::vec2 v = xz(m_vel[i]);
-    return glm::dot(v, v) > 1e-4f ? v : xz(m_fwd[i]);
+    if (m_agents.goal[i] >= 0)
+        return xz(navGoal(i, onGround(m_agents.goalSpot[i], 0.0f))) - p;
+    const glm::vec2 v = xz(m_agents.vel[i]);
+    return glm::dot(v, v) > 1e-4f ? v : xz(m_agents.fwd[i]);
 }
 
 glm::vec3 World::obeySignal(std::size_t i, const SteeringAgent& self, glm::vec3 force)
 {
-    if (m_traffic.signal.empty() || m_types[m_info[i].typeIndex].kind != AgentKind::Pedestrian)
+    if (m_traffic.signal.empty() || m_types.params[m_agents.info[i].typeIndex].kind != AgentKind::Pedestrian)
         return force;
     PedestrianSignal& sig = m_traffic.signal[i];
-    sig = m_traffic.system->pedestrianSignal(xz(m_pos[i]), wantedHeading(i), glm::length(xz(m_vel[i])),
-                                             m_radius[i], m_info[i].id);
+    sig = m_traffic.system->pedestrianSignal(xz(m_agents.pos[i]), wantedHeading(i), glm::length(xz(m_agents.vel[i])),
+                                             m_agents.radius[i], m_agents.info[i].id);
     if (sig.clearing) {
         // Red caught it on the road: to the nearer kerb at full speed, whatever its path says.
         return seek(self, onGround(sig.clearPoint, self.position.y));
@@ -194,21 +194,21 @@ void World::driveTrafficAgents()
             const glm::vec2 p = ts.position(v), f = ts.forward(v);
             m_traffic.offStage[i] = ts.active(v) ? 0 : 1;
             m_traffic.anyOffStage = m_traffic.anyOffStage || !ts.active(v);
-            m_nextPos[i] = onGround(p, groundHeight(p.x, p.y));
-            m_nextVel[i] = glm::vec3(f.x, 0.0f, f.y) * (ts.active(v) ? ts.speed(v) : 0.0f);
-            m_nextFwd[i] = glm::vec3(f.x, 0.0f, f.y);
-            m_nextSide[i] = glm::vec3(-f.y, 0.0f, f.x);
+            m_agents.nextPos[i] = onGround(p, groundHeight(p.x, p.y));
+            m_agents.nextVel[i] = glm::vec3(f.x, 0.0f, f.y) * (ts.active(v) ? ts.speed(v) : 0.0f);
+            m_agents.nextFwd[i] = glm::vec3(f.x, 0.0f, f.y);
+            m_agents.nextSide[i] = glm::vec3(-f.y, 0.0f, f.x);
         }
     }
-    const double t1 = double(m_step + 1) * double(m_dt);
+    const double t1 = double(m_clock.step + 1) * double(m_clock.dt);
     for (std::size_t h = 0; h < m_traffic.heroAgent.size(); ++h) {
         const std::size_t i = m_traffic.heroAgent[h];
         const HeroTrack& track = m_traffic.heroes[h];
         const glm::vec2 f = track.forwardAt(t1);
-        m_nextPos[i] = track.positionAt(t1);
-        m_nextVel[i] = track.velocityAt(t1);
-        m_nextFwd[i] = glm::vec3(f.x, 0.0f, f.y);
-        m_nextSide[i] = glm::vec3(-f.y, 0.0f, f.x);
+        m_agents.nextPos[i] = track.positionAt(t1);
+        m_agents.nextVel[i] = track.velocityAt(t1);
+        m_agents.nextFwd[i] = glm::vec3(f.x, 0.0f, f.y);
+        m_agents.nextSide[i] = glm::vec3(-f.y, 0.0f, f.x);
     }
 }
 
@@ -216,17 +216,17 @@ void World::trafficAfterCollide()
 {
     if (m_traffic.heroAgent.empty() && m_traffic.signal.empty())
         return;
-    const std::size_t n = m_pos.size();
+    const std::size_t n = m_agents.pos.size();
     m_team.forEach(n, 256, [&](std::size_t i) {
-        if (m_stopped[i] || m_types[m_info[i].typeIndex].kind == AgentKind::Flier)
+        if (m_agents.stopped[i] || m_types.params[m_agents.info[i].typeIndex].kind == AgentKind::Flier)
             return;
-        glm::vec3 p = m_nextPos[i];
+        glm::vec3 p = m_agents.nextPos[i];
         // Heroes are never pushed; a walker inside a hero's clearance steps out of it.
         bool moved = false;
         for (std::size_t h = 0; h < m_traffic.heroAgent.size(); ++h) {
             const std::size_t j = m_traffic.heroAgent[h];
-            const HeroPush push = heroPush(xz(m_nextPos[j]), xz(m_nextVel[j]), m_traffic.heroes[h].clearanceM(),
-                                           xz(p), m_radius[i], m_info[i].id);
+            const HeroPush push = heroPush(xz(m_agents.nextPos[j]), xz(m_agents.nextVel[j]), m_traffic.heroes[h].clearanceM(),
+                                           xz(p), m_agents.radius[i], m_agents.info[i].id);
             if (push.inside) {
                 p.x += push.displacement.x;
                 p.z += push.displacement.y;
@@ -234,15 +234,15 @@ void World::trafficAfterCollide()
             }
         }
         if (moved)
-            constrain(i, m_pos[i], p);
+            constrain(i, m_agents.pos[i], p);
         // Crowd pushes and hero pushes may nudge a waiting walker, never past its stop point.
         holdAtSignal(i, p);
         keepOffRedCrosswalks(i, p);
-        if (!moved && p == m_nextPos[i])
+        if (!moved && p == m_agents.nextPos[i])
             return;
-        m_nextPos[i] = p;
-        m_nextVel[i] = (p - m_pos[i]) / m_dt;
-        m_nextVel[i].y = 0.0f;
+        m_agents.nextPos[i] = p;
+        m_agents.nextVel[i] = (p - m_agents.pos[i]) / m_clock.dt;
+        m_agents.nextVel[i].y = 0.0f;
     });
 }
 
@@ -256,16 +256,16 @@ void World::keepOffRedCrosswalks(std::size_t i, glm::vec3& p) const
         return;
     const LaneNetwork& net = m_traffic.system->lanes();
     // Red at either end of the step: the counters time a crossing within the step.
-    const double t0 = double(m_step) * double(m_dt), t1 = double(m_step + 1) * double(m_dt);
+    const double t0 = double(m_clock.step) * double(m_clock.dt), t1 = double(m_clock.step + 1) * double(m_clock.dt);
     for (std::size_t c = 0; c < net.crosswalkCount(); ++c) {
         const CrosswalkStrip& s = net.crosswalk(int(c));
-        if (s.light < 0 || (lightPhaseAt(m_lights[std::size_t(s.light)], t0) != LightPhase::Red &&
-                            lightPhaseAt(m_lights[std::size_t(s.light)], t1) != LightPhase::Red))
+        if (s.light < 0 || (lightPhaseAt(m_set.lights[std::size_t(s.light)], t0) != LightPhase::Red &&
+                            lightPhaseAt(m_set.lights[std::size_t(s.light)], t1) != LightPhase::Red))
             continue;
-        if (!net.onRoadPart(int(c), xz(p)) || net.onRoadPart(int(c), xz(m_pos[i])))
+        if (!net.onRoadPart(int(c), xz(p)) || net.onRoadPart(int(c), xz(m_agents.pos[i])))
             continue;
         // Back over the kerb line it came from (roadU0 and roadU1 lie just off the carriageway).
-        const float ub = glm::dot(xz(m_pos[i]) - s.a, s.dir), ua = glm::dot(glm::vec2(p.x, p.z) - s.a, s.dir);
+        const float ub = glm::dot(xz(m_agents.pos[i]) - s.a, s.dir), ua = glm::dot(glm::vec2(p.x, p.z) - s.a, s.dir);
         const float back = ub < 0.5f * (s.roadU0 + s.roadU1) ? std::max(0.0f, ua - s.roadU0 + kEndLineMarginM)
                                                               : std::min(0.0f, ua - s.roadU1 - kEndLineMarginM);
         p.x -= s.dir.x * back;
@@ -279,7 +279,7 @@ void World::trafficAfterStep()
         return;
     for (std::size_t k = 0; k < m_traffic.pedestrians.size(); ++k) {
         const std::uint32_t i = m_traffic.pedestrians[k];
-        m_traffic.after[k] = {xz(m_pos[i]), xz(m_vel[i]), m_radius[i]};
+        m_traffic.after[k] = {xz(m_agents.pos[i]), xz(m_agents.vel[i]), m_agents.radius[i]};
     }
     m_traffic.system->observePedestrians(m_traffic.before, m_traffic.after);
 }

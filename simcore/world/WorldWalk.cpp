@@ -15,7 +15,7 @@
 #include "simcore/steering/UninitialisedArray.h"
 #include "simcore/steering/detail/SteeringConstants.h"
 #include "simcore/steering/detail/SteeringMath.h"
-#include "simcore/world/Rng.h"
+#include "simcore/base/Rng.h"
 #include "simcore/world/detail/StepConstants.h"
 
 #include <glm/geometric.hpp>
@@ -67,15 +67,15 @@ void World::buildWalkKernel(bool enabled)
     // perceives and avoids, and signals hold agents back: those worlds keep the general path.
     // Walls and obstacles the kernel steers round and constrains against as steer and
     // World::step do, through the same functions (steerAroundStatics, constrain).
-    const bool plain = enabled && !m_brains && !m_makingWay && m_traffic.signal.empty();
-    const bool walls = !m_walls.segments().empty(), obstacles = !m_circles.empty() || !m_boxes.empty();
-    m_walkKernel.assign(m_steering.size(), 0);
-    m_walkTypes.assign(m_steering.size(), WalkType{});
-    for (std::size_t t = 0; t < m_steering.size(); ++t) {
-        const TypeSteering& s = m_steering[t];
-        m_walkKernel[t] = plain && m_types[t].kind != AgentKind::Flier && fusable(s) ? 1 : 0;
+    const bool plain = enabled && !m_brains && !m_types.makingWay && m_traffic.signal.empty();
+    const bool walls = !m_set.walls.segments().empty(), obstacles = !m_set.circles.empty() || !m_set.boxes.empty();
+    m_walkKernel.assign(m_types.steering.size(), 0);
+    m_walkTypes.assign(m_types.steering.size(), WalkType{});
+    for (std::size_t t = 0; t < m_types.steering.size(); ++t) {
+        const TypeSteering& s = m_types.steering[t];
+        m_walkKernel[t] = plain && m_types.params[t].kind != AgentKind::Flier && fusable(s) ? 1 : 0;
         // Each constant as the behaviour's function computes it from the parameters.
-        const float mass = effectiveMass(m_types[t].mass);
+        const float mass = effectiveMass(m_types.params[t].mass);
         WalkType& w = m_walkTypes[t];
         w.wContainment = s.weightIfOn(Behaviour::Containment);
         w.wSeparation = s.weightIfOn(Behaviour::Separation);
@@ -84,10 +84,10 @@ void World::buildWalkKernel(bool enabled)
         w.wSeek = s.weightIfOn(Behaviour::Seek);
         w.wWander = s.weightIfOn(Behaviour::Wander);
         w.reciprocal = s.on(Behaviour::ReciprocalAvoidance);
-        w.keepRight = m_keepRight[t];
+        w.keepRight = m_types.keepRight[t];
         w.aroundStatics = (walls && s.on(Behaviour::WallFollowing)) || (obstacles && s.on(Behaviour::ObstacleAvoidance));
-        w.constrained = walls || !m_circles.empty();  // as World::step's hasStatics
-        w.maxForce = nonNegative(m_types[t].maxForce);
+        w.constrained = walls || !m_set.circles.empty();  // as World::step's hasStatics
+        w.maxForce = nonNegative(m_types.params[t].maxForce);
         w.range = nonNegative(s.separation.rangeM);
         w.damping = mass / std::max(nonNegative(s.separation.dampingTimeS), kMinResponseTimeS);
         w.horizonS = nonNegative(s.unaligned.horizonS);
@@ -98,19 +98,19 @@ void World::buildWalkKernel(bool enabled)
         w.slowingM = std::max(nonNegative(s.arrival.slowingDistanceM), kTiny);
         w.gainArrival = responseGain(mass, s.arrival.responseTimeS);
         w.gainSeek = responseGain(mass, s.seek.responseTimeS);
-        w.dtOverMass = m_dt / mass;
+        w.dtOverMass = m_clock.dt / mass;
     }
 }
 
 void World::stepWalker(std::size_t i)
 {
-    const std::uint16_t type = m_info[i].typeIndex;
-    const TypeSteering& s = m_steering[type];
-    const TypeParams& t = m_types[type];
+    const std::uint16_t type = m_agents.info[i].typeIndex;
+    const TypeSteering& s = m_types.steering[type];
+    const TypeParams& t = m_types.params[type];
     const WalkType& w = m_walkTypes[type];
-    const glm::vec3 p = m_pos[i], v = m_vel[i], fwd = m_fwd[i];
-    const float radius = m_radius[i], maxSpeed = m_maxSpeed[i];
-    const AgentId id = m_info[i].id;
+    const glm::vec3 p = m_agents.pos[i], v = m_agents.vel[i], fwd = m_agents.fwd[i];
+    const float radius = m_agents.radius[i], maxSpeed = m_agents.maxSpeed[i];
+    const AgentId id = m_agents.info[i].id;
 
     // Sense: the k nearest in the perception radius and view cone, nearest first, ties by
     // index (gatherNeighbours, without the layers and priorities this world lacks).
@@ -128,7 +128,7 @@ void World::stepWalker(std::size_t i)
             if (d2 > bound || j == i)
                 return;
             if (outsideViewCone(d, d2, fwd, c)) {
-                const float contact = radius + m_radius[j];
+                const float contact = radius + m_agents.radius[j];
                 if (d2 > contact * contact)
                     return;
             }
@@ -143,7 +143,7 @@ void World::stepWalker(std::size_t i)
     if (!best.full() && guess2 < perception2)
         search(perception2);
     const std::size_t count = best.count;
-    m_nearCount[i] = std::uint8_t(count);
+    m_agents.nearCount[i] = std::uint8_t(count);
 
     // One pass over the neighbours: separation's push (separate), the soonest threat
     // (avoidUnalignedCollisions), and the planar neighbours and oncoming walkers of
@@ -160,12 +160,12 @@ void World::stepWalker(std::size_t i)
     std::size_t oncoming = 0;
     bool oncomingInTheWayAhead = false;  // keeping right (KeepRight.h), as World::stepAgent
     const glm::vec2 fwd2 = xz(fwd), p2 = xz(p);
-    std::uint32_t* nearIndex = &m_nearIndex[i * k];
+    std::uint32_t* nearIndex = &m_agents.nearIndex[i * k];
     for (std::size_t n = 0; n < count; ++n) {
         const auto j = best.index(n);
         nearIndex[n] = j;
-        const glm::vec3 q = m_pos[j], vj = m_vel[j];
-        const float rj = m_radius[j];
+        const glm::vec3 q = m_agents.pos[j], vj = m_agents.vel[j];
+        const float rj = m_agents.radius[j];
         if (w.wSeparation > 0.0f) {
             // The squared distance is the search key's (the same dot product, negated offset).
             const float contact = r + nonNegative(rj), reach = contact + range;
@@ -175,7 +175,7 @@ void World::stepWalker(std::size_t i)
                 const float reference = contact > kTiny ? contact : range;
                 const float weight = reference / std::max(d, reference / kMaxSeparationWeight);
                 const float fade = range > kTiny ? std::min(1.0f, (reach - d) / range) : 1.0f;
-                const glm::vec3 away = d > kTiny ? rel / d : separationAxis(id, m_info[j].id);
+                const glm::vec3 away = d > kTiny ? rel / d : separationAxis(id, m_agents.info[j].id);
                 const float opening = glm::dot(v - vj, away);
                 push += away * (fade * (maxForce * weight - w.damping * opening));
             }
@@ -188,7 +188,7 @@ void World::stepWalker(std::size_t i)
                 if (tc >= 0.0f && tc <= horizon) {
                     const glm::vec3 offset = dp + dv * tc;
                     const float clear = r + nonNegative(rj) + w.marginM;
-                    const AgentId other = m_info[j].id;
+                    const AgentId other = m_agents.info[j].id;
                     if (glm::length(offset) < clear &&
                         (threatT < 0.0f || tc < threatT || (tc == threatT && other < threatId))) {
                         threatT = tc;
@@ -200,18 +200,18 @@ void World::stepWalker(std::size_t i)
             }
         }
         if (w.keepRight > 0.0f && !oncomingInTheWayAhead)
-            oncomingInTheWayAhead = oncomingInTheWay(p, fwd, radius, q, m_fwd[j], vj, rj);
+            oncomingInTheWayAhead = oncomingInTheWay(p, fwd, radius, q, m_agents.fwd[j], vj, rj);
         if (w.reciprocal) {
-            const bool stopped = m_stopped[j] != 0;
+            const bool stopped = m_agents.stopped[j] != 0;
             PlanarNeighbour& o = others[n];
             o = {xz(q), xz(vj), rj, stopped ? 1.0f : 0.5f};
-            if (!stopped && glm::dot(xz(m_fwd[j]), fwd2) < -0.5f && glm::dot(o.position - p2, fwd2) > 0.0f)
+            if (!stopped && glm::dot(xz(m_agents.fwd[j]), fwd2) < -0.5f && glm::dot(o.position - p2, fwd2) > 0.0f)
                 ++oncoming;
         }
     }
 
     // Steer: World::steer's requests in its order, blended (blendWeighted).
-    const bool hasGoal = m_goal[i] >= 0;
+    const bool hasGoal = m_agents.goal[i] >= 0;
     glm::vec3 sum(0.0f);
     auto add = [&](glm::vec3 force, float weight) {
         const glm::vec3 f = force * weight;
@@ -222,13 +222,13 @@ void World::stepWalker(std::size_t i)
     const glm::vec3 goal = !hasGoal ? p + fwd
                            : m_nav.active && m_nav.hasTarget[i]
                                ? glm::vec3(m_nav.target[i].x, p.y, m_nav.target[i].y)
-                               : glm::vec3(m_goalSpot[i].x, p.y, m_goalSpot[i].y);
+                               : glm::vec3(m_agents.goalSpot[i].x, p.y, m_agents.goalSpot[i].y);
     const float speedNow = glm::length(v);
     if (w.wContainment > 0.0f) {
         const float probe = s.containment.probeMinM + s.containment.probeLookaheadS * speedNow + radius;
-        const glm::vec3 lo = p - m_bounds.min, hi = m_bounds.max - p;
+        const glm::vec3 lo = p - m_set.bounds.min, hi = m_set.bounds.max - p;
         if (std::min({lo.x, lo.z, hi.x, hi.z}) < probe)
-            add(stayInside(steeringAgent(i), m_bounds, s.containment), w.wContainment);
+            add(stayInside(steeringAgent(i), m_set.bounds, s.containment), w.wContainment);
     }
     if (w.aroundStatics) {
         // Wall following and obstacle avoidance: steer's own requests (WorldSteer.cpp).
@@ -245,11 +245,11 @@ void World::stepWalker(std::size_t i)
             // heading(agent), the agent's right, and the side and brake of the avoidance.
             const glm::vec3 h = speedNow > kTiny && speedNow < kInfinity ? v * (1.0f / speedNow)
                                                                           : normalizeOr(fwd, glm::vec3(0.0f, 0.0f, 1.0f));
-            const glm::vec3 right = normalizeOr(glm::cross(h, normalizeOr(m_up[i], kWorldUp)), rightOfForward(h));
+            const glm::vec3 right = normalizeOr(glm::cross(h, normalizeOr(m_agents.up[i], kWorldUp)), rightOfForward(h));
             const float sideSign = glm::dot(threatOffset, right) > kDeadAheadM ? -1.0f : 1.0f;
             const float urgency = 1.0f - threatT / horizon;
             const glm::vec3 threatForward =
-                normalizeOr(m_vel[threatJ], normalizeOr(m_fwd[threatJ], glm::vec3(0.0f)));
+                normalizeOr(m_agents.vel[threatJ], normalizeOr(m_agents.fwd[threatJ], glm::vec3(0.0f)));
             const bool headOn = glm::dot(h, threatForward) < s.unaligned.headOnCosine;
             const float brake = headOn ? w.brake : 0.0f;
             const glm::vec3 lateralPart = right * (sideSign * (headOn ? w.lateral : 1.0f));
@@ -264,7 +264,7 @@ void World::stepWalker(std::size_t i)
         const float dist = glm::length(offset);
         glm::vec3 desired(0.0f);
         // Through an exit at full speed: it is walked through, not stopped at (World::steer).
-        const bool throughExit = m_goals[std::size_t(m_goal[i])].exit && !(m_nav.active && m_nav.hasTarget[i]);
+        const bool throughExit = m_set.goals[std::size_t(m_agents.goal[i])].exit && !(m_nav.active && m_nav.hasTarget[i]);
         const float slowing = throughExit ? 1e-6f : w.slowingM;
         if (!(dist <= w.toleranceM || dist <= kTiny))
             desired = offset * (nonNegative(maxSpeed) * std::min(1.0f, dist / slowing) / dist);
@@ -274,17 +274,17 @@ void World::stepWalker(std::size_t i)
         add(towardsVelocity(v, normalizeOr(finiteOrZero(goal - p), glm::vec3(0.0f)) * nonNegative(maxSpeed),
                             w.gainSeek, maxForce),
             w.wSeek);
-    WanderState wanderNext = m_wander[i];
+    WanderState wanderNext = m_agents.wander[i];
     if (w.wWander > 0.0f) {
-        const std::uint64_t key = rngKey(m_seed, id, m_step);
+        const std::uint64_t key = rngKey(m_seed, id, m_clock.step);
         const glm::vec3 random(rngRangeOf(key, kWanderX, -1.0f, 1.0f), rngRangeOf(key, kWanderY, -1.0f, 1.0f),
                                rngRangeOf(key, kWanderZ, -1.0f, 1.0f));
-        const WanderResult result = wander(steeringAgent(i), m_wander[i], random, s.wander);
+        const WanderResult result = wander(steeringAgent(i), m_agents.wander[i], random, s.wander);
         wanderNext = result.state;
         add(result.force, w.wWander);
     }
     // A walker with nowhere to go comes to rest (as World::steer).
-    if (!hasGoal && m_leader[i] < 0 && !(w.wWander > 0.0f))
+    if (!hasGoal && m_agents.leader[i] < 0 && !(w.wWander > 0.0f))
         add(-v * (t.mass / kStandStillResponseS), 1.0f);
     glm::vec3 force = truncate(sum, t.maxForce) + glm::vec3(0.0f);  // + the brain's turn: none
     if (oncomingInTheWayAhead)
@@ -293,8 +293,8 @@ void World::stepWalker(std::size_t i)
     // Avoid: the velocity the blend asks for becomes the nearest that touches no neighbour
     // within the horizon (World::avoidReciprocally between equals).
     // (Between decisions the force held replaces it below: no avoidance is worked out.)
-    if (w.reciprocal && m_decide && t.mass > 0.0f && m_decideDt > 0.0f) {
-        const glm::vec3 wanted = v + force * (m_decideDt / t.mass);
+    if (w.reciprocal && m_clock.decide && t.mass > 0.0f && m_clock.decideDt > 0.0f) {
+        const glm::vec3 wanted = v + force * (m_clock.decideDt / t.mass);
         glm::vec2 preferred(wanted.x, wanted.z);
         const float speed = glm::length(preferred);
         if (speed > maxSpeed && speed > 0.0f)
@@ -306,15 +306,15 @@ void World::stepWalker(std::size_t i)
         }
         const PlanarBody body{p2, xz(v), radius, maxSpeed};
         const glm::vec2 chosen =
-            sim::avoidReciprocally(body, preferred, {others.data(), count}, m_decideDt, s.reciprocal);
-        force = (glm::vec3(chosen.x, 0.0f, chosen.y) - glm::vec3(v.x, 0.0f, v.z)) * (t.mass / m_decideDt);
+            sim::avoidReciprocally(body, preferred, {others.data(), count}, m_clock.decideDt, s.reciprocal);
+        force = (glm::vec3(chosen.x, 0.0f, chosen.y) - glm::vec3(v.x, 0.0f, v.z)) * (t.mass / m_clock.decideDt);
     }
     // Between decisions (StepRate.h) the force decided last holds, and wander stands still.
-    if (m_decide) {
-        m_heldForce[i] = force;
+    if (m_clock.decide) {
+        m_agents.heldForce[i] = force;
     } else {
-        force = m_heldForce[i];
-        wanderNext = m_wander[i];
+        force = m_agents.heldForce[i];
+        wanderNext = m_agents.wander[i];
     }
 
     // Integrate: integrateVehicle's walker step (VehicleModel.cpp) on a finite state, then
@@ -323,7 +323,7 @@ void World::stepWalker(std::size_t i)
     glm::vec3 vel = truncate(v + f * w.dtOverMass, nonNegative(maxSpeed));
     vel.y = 0.0f;
     vel = finiteOrZero(vel);
-    glm::vec3 pos = finiteOrZero(p + vel * m_dt);
+    glm::vec3 pos = finiteOrZero(p + vel * m_clock.dt);
     vel.y = 0.0f;
     const float speed = glm::length(vel);
     glm::vec3 nextFwd;
@@ -336,15 +336,15 @@ void World::stepWalker(std::size_t i)
     // Constrain: out of walls and obstacles, never through a wall (World::constrain).
     if (w.constrained)
         constrain(i, p, pos);
-    pos.y = m_terrain.heights.empty() ? 0.0f : groundHeight(pos.x, pos.z);  // no terrain: flat at 0
-    glm::vec3 nextVel = (pos - p) / m_dt;
+    pos.y = m_set.terrain.heights.empty() ? 0.0f : groundHeight(pos.x, pos.z);  // no terrain: flat at 0
+    glm::vec3 nextVel = (pos - p) / m_clock.dt;
     nextVel.y = 0.0f;
-    m_nextPos[i] = pos;
-    m_nextVel[i] = nextVel;
-    m_nextFwd[i] = nextFwd;
-    m_nextSide[i] = rightOfForward(nextFwd);
-    m_nextUp[i] = kWorldUp;
-    m_nextWander[i] = wanderNext;
+    m_agents.nextPos[i] = pos;
+    m_agents.nextVel[i] = nextVel;
+    m_agents.nextFwd[i] = nextFwd;
+    m_agents.nextSide[i] = rightOfForward(nextFwd);
+    m_agents.nextUp[i] = kWorldUp;
+    m_agents.nextWander[i] = wanderNext;
 }
 
 }  // namespace throng::sim

@@ -1,7 +1,7 @@
 // Test-only helpers for the steering suites.
 #include "SteeringHarness.h"
 
-#include "simcore/world/Rng.h"
+#include "simcore/base/Rng.h"
 
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>

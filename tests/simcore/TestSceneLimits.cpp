@@ -9,7 +9,7 @@
 #include "simcore/io/SceneIO.h"
 #include "simcore/io/SceneLimits.h"
 #include "simcore/world/FrameCache.h"
-#include "simcore/world/SegmentGrid.h"
+#include "simcore/base/SegmentGrid.h"
 #include "simcore/world/World.h"
 
 #include <QTest>

@@ -2,7 +2,7 @@
 // as a brute-force scan over all segments does.
 #include "TestRegistry.h"
 
-#include "simcore/world/SegmentGrid.h"
+#include "simcore/base/SegmentGrid.h"
 
 #include <glm/geometric.hpp>
 

@@ -1,6 +1,6 @@
 #include "TrafficHarness.h"
 
-#include "simcore/world/Rng.h"
+#include "simcore/base/Rng.h"
 
 #include <glm/geometric.hpp>
 

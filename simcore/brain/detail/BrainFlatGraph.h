@@ -1,6 +1,9 @@
 #pragma once
 // The compiler's working form of a brain: macros expanded into one flat list of nodes,
 // each input resolved to the node and port it reads. Private to simcore/brain.
+#ifndef THRONG_SIMCORE_BUILD
+#error "a detail/ header, private to throng::simcore: include the module's public headers instead"
+#endif
 
 #include "simcore/brain/BrainCompiler.h"
 #include "simcore/brain/NodeCatalogue.h"

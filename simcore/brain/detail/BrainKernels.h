@@ -1,6 +1,9 @@
 #pragma once
 // The per-instruction loops of the brain evaluator: each runs one instruction for a
 // contiguous range of agents over float columns. Private to simcore/brain.
+#ifndef THRONG_SIMCORE_BUILD
+#error "a detail/ header, private to throng::simcore: include the module's public headers instead"
+#endif
 
 #include "simcore/brain/BrainProgram.h"
 

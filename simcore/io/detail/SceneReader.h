@@ -1,6 +1,9 @@
 #pragma once
 // Turns a parsed YAML document into a Scene, section by section, checking types,
 // ranges and references. Reports through YamlFields; never throws.
+#ifndef THRONG_SIMCORE_BUILD
+#error "a detail/ header, private to throng::simcore: include the module's public headers instead"
+#endif
 
 #include "simcore/io/detail/YamlFields.h"
 #include "simcore/scene/Scene.h"

@@ -2,6 +2,9 @@
 // Reads a YAML document with the checks every Throng file gets before parsing: a size
 // limit, no binary data, no tab indentation, an optional UTF-8 BOM, and parser errors
 // turned into located diagnostics. Never throws.
+#ifndef THRONG_SIMCORE_BUILD
+#error "a detail/ header, private to throng::simcore: include the module's public headers instead"
+#endif
 
 #include "simcore/io/detail/YamlFields.h"
 

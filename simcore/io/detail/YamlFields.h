@@ -1,8 +1,11 @@
 #pragma once
 // Typed, located reads of YAML fields for the scene reader: every problem becomes a
 // Diagnostic with file:line:col and the dotted key. Never throws; never touches a Scene.
+#ifndef THRONG_SIMCORE_BUILD
+#error "a detail/ header, private to throng::simcore: include the module's public headers instead"
+#endif
 
-#include "simcore/io/Diagnostic.h"
+#include "simcore/base/Diagnostic.h"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>

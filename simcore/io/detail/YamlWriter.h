@@ -1,6 +1,9 @@
 #pragma once
 // Small helpers over YAML::Emitter for the scene writer: lossless shortest floats and
 // flow-style points. Holds no scene knowledge.
+#ifndef THRONG_SIMCORE_BUILD
+#error "a detail/ header, private to throng::simcore: include the module's public headers instead"
+#endif
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>

@@ -2,6 +2,9 @@
 // Ground-plane (x, z) queries the avoidance behaviours share: swept-circle casts against
 // circles, boxes and segments, and closest points. Internal to simcore/steering; pure,
 // allocation-free, and finite for degenerate shapes (zero radius, zero-length segments).
+#ifndef THRONG_SIMCORE_BUILD
+#error "a detail/ header, private to throng::simcore: include the module's public headers instead"
+#endif
 
 #include "simcore/steering/SteeringGeometry.h"
 

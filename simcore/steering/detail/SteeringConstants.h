@@ -1,6 +1,9 @@
 #pragma once
 // Thresholds of the steering functions that the fused kernels (world/WorldWalk.cpp,
 // world/WorldFlock.cpp) repeat inline; one definition, so kernel and function cannot part.
+#ifndef THRONG_SIMCORE_BUILD
+#error "a detail/ header, private to throng::simcore: include the module's public headers instead"
+#endif
 
 namespace throng::sim::detail {
 

@@ -2,6 +2,9 @@
 // Small vector helpers shared by the steering behaviours: safe normalisation, truncation,
 // the planar (x, z) view and the desired-velocity-to-force conversion. Internal to
 // simcore/steering. Every helper returns finite values for finite and non-finite input.
+#ifndef THRONG_SIMCORE_BUILD
+#error "a detail/ header, private to throng::simcore: include the module's public headers instead"
+#endif
 
 #include "simcore/steering/SteeringAgent.h"
 

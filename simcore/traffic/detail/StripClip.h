@@ -2,6 +2,9 @@
 // Liang-Barsky clipping of a segment against an oriented strip (from `origin` along unit
 // `dir` for `length` metres, `halfWidth` either side), shared by crosswalk stretches and
 // kerb openings.
+#ifndef THRONG_SIMCORE_BUILD
+#error "a detail/ header, private to throng::simcore: include the module's public headers instead"
+#endif
 
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>

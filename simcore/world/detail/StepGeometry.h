@@ -1,6 +1,9 @@
 #pragma once
 // Small planar geometry shared by the step's phases (WorldStep.cpp, WorldSteer.cpp), and
 // their constants (StepConstants.h). Internal to simcore/world; inline, no state.
+#ifndef THRONG_SIMCORE_BUILD
+#error "a detail/ header, private to throng::simcore: include the module's public headers instead"
+#endif
 
 #include "simcore/world/detail/StepConstants.h"
 

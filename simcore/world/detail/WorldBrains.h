@@ -2,6 +2,9 @@
 // The World's brain runtime (internal to simcore/world): per agent type its compiled
 // program, evaluator and sensor columns; per agent its slot and chosen action. Filled by
 // World::buildBrains, advanced by World::runBrains; never touched by another module.
+#ifndef THRONG_SIMCORE_BUILD
+#error "a detail/ header, private to throng::simcore: include the module's public headers instead"
+#endif
 
 #include "simcore/brain/BrainEvaluator.h"
 #include "simcore/brain/NodeCatalogue.h"
@@ -68,7 +71,7 @@ struct TypeBrain {
     std::vector<std::uint8_t> neighbourCount;     // per agent of the type
     std::vector<std::uint64_t> keys;              // per agent: stable random key
     float viewDeg = 360.0f;                       // the type's full view angle
-    bool gathersNeighbours = false;               // the sense phase fills m_nearIndex for its agents
+    bool gathersNeighbours = false;               // the sense phase fills m_agents.nearIndex for its agents
     // Outputs of the last evaluate, by the type's agent index; null = not driven.
     const float* speed = nullptr;
     const float* turn = nullptr;

@@ -2,6 +2,9 @@
 // Hearing for brains (internal to simcore/world): which channels a scene's brains listen
 // to, who is heard on them, and what one agent hears on one channel. Reads the World's
 // arrays and grid; writes only the caller's buffer.
+#ifndef THRONG_SIMCORE_BUILD
+#error "a detail/ header, private to throng::simcore: include the module's public headers instead"
+#endif
 
 #include "simcore/brain/NodeCatalogue.h"
 #include "simcore/scene/Scene.h"

@@ -1,8 +1,12 @@
 #pragma once
 // The one list of the World's per-agent state arrays that a WorldState holds (used by
 // WorldState.cpp and WorldStateRemap.cpp): a renamed or new array is added here.
+#ifndef THRONG_SIMCORE_BUILD
+#error "a detail/ header, private to throng::simcore: include the module's public headers instead"
+#endif
 
-// Per-agent arrays of the World (m_NAME) and of the WorldState (NAME), copied whole.
+// Per-agent arrays of the World (m_agents.NAME, AgentColumns.h) and of the WorldState
+// (NAME), copied whole.
 #define THRONG_AGENT_COLUMNS(X)                                                                          \
     X(pos) X(vel) X(fwd) X(side) X(up) X(nextPos) X(nextVel) X(nextFwd) X(nextSide) X(nextUp)             \
     X(resolvedPos) X(wander) X(nextWander) X(radius) X(maxSpeed) X(phase) X(stride) X(arrivalTime) X(goal) \
@@ -21,7 +25,7 @@
 // they are; the others (Kept) it puts back by the rule written there (a traffic system
 // only into a World that has one, the plan grid and cache only onto the same cells).
 #define THRONG_WHOLE_MEMBERS(X)                                                                     \
-    X(m_step, step, Plain) X(m_counters, counters, Plain) X(m_traffic.system, trafficSystem, Kept)  \
+    X(m_clock.step, step, Plain) X(m_count.counters(), counters, Plain) X(m_traffic.system, trafficSystem, Kept)  \
     X(m_traffic.signal, signal, Plain) X(m_traffic.before, pedestriansBefore, Plain)                \
     X(m_traffic.after, pedestriansAfter, Plain) X(m_nav.counters, navCounters, Plain)               \
     X(m_nav.grid, navGrid, Kept) X(m_nav.cache, planCache, Kept) X(m_grid, grid, Kept)              \

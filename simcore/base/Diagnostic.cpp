@@ -1,4 +1,4 @@
-#include "simcore/io/Diagnostic.h"
+#include "simcore/base/Diagnostic.h"
 
 #include <algorithm>
 

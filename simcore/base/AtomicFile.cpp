@@ -1,4 +1,4 @@
-#include "simcore/io/AtomicFile.h"
+#include "simcore/base/AtomicFile.h"
 
 #include <atomic>
 #include <cerrno>

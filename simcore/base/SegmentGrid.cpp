@@ -1,4 +1,4 @@
-#include "simcore/world/SegmentGrid.h"
+#include "simcore/base/SegmentGrid.h"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>

@@ -20,7 +20,7 @@
 #include <xmmintrin.h>
 #endif
 
-namespace throng::sim::detail {
+namespace throng::sim::simd {
 
 using F4 = float __attribute__((vector_size(16)));
 using F8 = float __attribute__((vector_size(32)));
@@ -172,4 +172,4 @@ template <class F>
     return v.x * 0.0f + v.y * 0.0f + v.z * 0.0f == 0.0f;
 }
 
-}  // namespace throng::sim::detail
+}  // namespace throng::sim::simd

@@ -1,0 +1,35 @@
+#pragma once
+// What the step's phases read of the World besides their own state: the agents' columns,
+// the types, the set, the clock, the neighbour grid and the traffic, and the threads to
+// share the work with. A phase takes it as const and names the columns it writes in its
+// own signature.
+
+#include "simcore/base/ThreadTeam.h"
+#include "simcore/world/AgentColumns.h"
+#include "simcore/world/AgentTypes.h"
+#include "simcore/world/NeighbourGrid.h"
+#include "simcore/world/StaticSet.h"
+#include "simcore/world/StepClock.h"
+#include "simcore/world/WorldTraffic.h"
+
+namespace throng::sim {
+
+struct StepView {
+    const AgentColumns& agents;
+    const AgentTypes& types;
+    const StaticSet& set;
+    const StepClock& clock;
+    const NeighbourGrid& grid;  // indexes agents.pos
+    const WorldTraffic& traffic;
+    const ThreadTeam& team;
+    bool hasFliers;   // the grid also sorts by height, for 3D queries
+    bool allFliers;   // no obstacles, crosswalks or leaders to count for anyone
+    float maxRadius;  // the largest body radius, m
+
+    const TypeParams& type(std::size_t i) const { return types.params[agents.info[i].typeIndex]; }
+    const TypeCollision& collision(std::size_t i) const { return types.collision[agents.info[i].typeIndex]; }
+    // A traffic light's state now: 0 green, 1 yellow, 2 red.
+    int lightState(std::size_t light) const;
+};
+
+}  // namespace throng::sim
