@@ -39,6 +39,13 @@ int benchCommand(const CliArguments& args, std::ostream& out, std::ostream& err)
     sim::WorldOptions options;
     options.threads = args.threads;
     sim::World world(scene, options);
+    if (!world.brainErrors().empty()) {
+        err << "throng-cli: the scenario's brain does not run: " << world.brainErrors()[0] << '\n';
+        return 1;
+    }
+    std::size_t withBrain = 0;
+    for (std::size_t i = 0; i < world.agentCount(); ++i)
+        withBrain += world.agentBrainEvaluator(i) != nullptr;
     const std::uint64_t steps = args.steps.value_or(200);
     Progress progress(err, "bench " + name, steps, !args.quiet);
     const auto start = std::chrono::steady_clock::now();
@@ -53,12 +60,14 @@ int benchCommand(const CliArguments& args, std::ostream& out, std::ostream& err)
 
     std::ostringstream j;
     j << "{\"scenario\": \"" << name << "\", ";
-    if (name == "cross")
+    if (name == "cross" || name == "cross-brain")
         j << "\"layout\": \"" << sim::crossLayoutDescription() << "\", ";
     j << "\"agents\": " << world.agentCount() << ", \"steps\": " << steps
       << ", \"threads\": " << world.threads() << ", \"seconds\": " << seconds
       << ", \"agent_steps_per_second\": " << stats.agentStepsPerSecond
       << ", \"ms_per_step\": " << (steps ? seconds * 1000.0 / double(steps) : 0.0)
+      << ", \"steps_per_second\": " << (seconds > 0.0 ? double(steps) / seconds : 0.0)
+      << ", \"agents_with_brain\": " << withBrain
       << ", \"peak_memory_bytes_per_agent\": "
       << (world.agentCount() ? double(memory - std::min(memory, memoryBefore)) / double(world.agentCount()) : 0.0)
       << ", \"overlapping_pairs_per_step\": " << (steps ? double(stats.counters.overlappingPairs) / double(steps) : 0.0)

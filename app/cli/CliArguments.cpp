@@ -30,7 +30,7 @@ std::string usageText()
            "      --export-mode exact|compact  bake every agent's joints (default), or share one\n"
            "                              cycle per look (joint data ~13x smaller; docs/export.md)\n"
            "      --export-joint-step N   exact: bake joints every N-th frame (default 1)\n"
-           "  bench [--agents N] [--steps S] [--scenario flock|cross|army|corridor] [--threads T]\n"
+           "  bench [--agents N] [--steps S] [--scenario flock|cross|cross-brain|army|corridor] [--threads T]\n"
            "                              run a built-in scenario and print figures as JSON\n"
            "\n"
            "options for every command:\n"

@@ -1,5 +1,7 @@
 #include "simcore/scenarios/BenchScenarios.h"
 
+#include "simcore/scenarios/BenchBrains.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -63,6 +65,15 @@ Scene makeCrossScenario(std::uint32_t agents, std::uint64_t seed, const CrossLay
     s.settings.boundsMax = glm::vec2(outer + 10.0f);
     // The outermost ring's walk across, and as long again for the crowd to get through.
     s.settings.durationS = 2.0f * (2.0f * outer / layout.speed) + 30.0f;
+    return s;
+}
+
+Scene makeCrossBrainScenario(std::uint32_t agents, std::uint64_t seed)
+{
+    Scene s = makeCrossScenario(agents, seed);
+    s.brains.push_back(benchPedestrianBrain());
+    for (AgentType& type : s.agentTypes)
+        type.brain = s.brains.back().name;
     return s;
 }
 
@@ -193,7 +204,7 @@ Scene makeArmyScenario(std::uint32_t agents, std::uint64_t seed)
 
 const std::vector<std::string>& benchScenarioNames()
 {
-    static const std::vector<std::string> names{"flock", "cross", "army", "corridor"};
+    static const std::vector<std::string> names{"flock", "cross", "cross-brain", "army", "corridor"};
     return names;
 }
 
@@ -203,6 +214,8 @@ bool makeBenchScenario(const std::string& name, std::uint32_t agents, Scene& out
         out = makeFlockScenario(agents);
     else if (name == "cross")
         out = makeCrossScenario(agents);
+    else if (name == "cross-brain")
+        out = makeCrossBrainScenario(agents);
     else if (name == "army")
         out = makeArmyScenario(agents);
     else if (name == "corridor")

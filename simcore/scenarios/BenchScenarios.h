@@ -27,6 +27,9 @@ struct CrossLayout {
     float speed = 1.4f;          // m/s
 };
 Scene makeCrossScenario(std::uint32_t agents, std::uint64_t seed = 1, const CrossLayout& layout = {});
+// `cross-brain`: `cross`, every walker running the 40-node pedestrian brain
+// (benchPedestrianBrain, BenchBrains.h) on top of its steering and reciprocal avoidance.
+Scene makeCrossBrainScenario(std::uint32_t agents, std::uint64_t seed = 1);
 // One line naming the layout's numbers, for the bench JSON.
 std::string crossLayoutDescription(const CrossLayout& layout = {});
 // `flock`: 3D boids migrating around a closed circuit.

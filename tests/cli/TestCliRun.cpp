@@ -217,9 +217,25 @@ private slots:
         QCOMPARE(o["scenario"].toString(), QString("corridor"));
         QCOMPARE(o["agents"].toInt(), 500);
         QCOMPARE(o["steps"].toInt(), 20);
-        for (const char* key : {"seconds", "agent_steps_per_second", "ms_per_step", "peak_memory_bytes_per_agent",
-                                "overlapping_pairs_per_step", "fraction_arrived", "wall_penetrations"})
+        for (const char* key : {"seconds", "agent_steps_per_second", "ms_per_step", "steps_per_second",
+                                "peak_memory_bytes_per_agent", "overlapping_pairs_per_step", "fraction_arrived",
+                                "wall_penetrations"})
             QVERIFY2(o.contains(key), key);
+        QCOMPARE(o["agents_with_brain"].toInt(), 0);
+    }
+
+    // The scenario of issue 27's million walkers with brains: every walker of `cross` runs
+    // the 40-node brain, and the figures come out finite.
+    void benchCrossBrainRunsTheBrain()
+    {
+        const auto r = runCli({"bench", "--agents", "400", "--steps", "60", "--scenario", "cross-brain", "--quiet"});
+        QCOMPARE(r.status, 0);
+        const QJsonObject o = QJsonDocument::fromJson(QByteArray::fromStdString(r.out)).object();
+        QCOMPARE(o["scenario"].toString(), QString("cross-brain"));
+        QCOMPARE(o["agents"].toInt(), 400);
+        QCOMPARE(o["agents_with_brain"].toInt(), 400);
+        QVERIFY(o["steps_per_second"].toDouble() > 0.0);
+        QCOMPARE(o["non_finite_values"].toInt(), 0);
     }
 };
 
