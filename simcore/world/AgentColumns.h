@@ -10,10 +10,15 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
 namespace throng::sim {
+
+// Most neighbours one agent perceives (the nearest ones in its perception cone);
+// DetourCrowd uses 6.
+inline constexpr std::size_t kMaxNeighbours = 8;
 
 struct AgentColumns {
     std::vector<AgentInfo> info;
@@ -38,7 +43,7 @@ struct AgentColumns {
     // stopped: frozen for good (see World::commit); stoppedBefore: stopped as the commit
     // phase began.
     std::vector<std::uint8_t> arrived, stopped, stoppedBefore, onCrosswalk;
-    std::vector<std::uint32_t> nearIndex;  // World::kMaxNeighbours per agent: whom it sensed this step
+    std::vector<std::uint32_t> nearIndex;  // kMaxNeighbours per agent: whom it sensed this step
     std::vector<std::uint8_t> nearCount;
     std::vector<glm::vec3> resolvedPos;     // the collide pass's result
     std::vector<std::uint8_t> contactMoved;  // per step: moved by the contact rounds

@@ -6,6 +6,7 @@
 
 #include "simcore/base/SegmentGrid.h"
 #include "simcore/scene/Scene.h"
+#include "simcore/scene/TerrainHeight.h"
 #include "simcore/steering/Steering.h"
 
 #include <glm/vec2.hpp>
@@ -44,6 +45,8 @@ struct StaticSet {
 
     // Anything to hold walkers out of: walls, box sides or circles (not in an open field).
     bool hasStatics() const { return !walls.segments().empty() || !circles.empty(); }
+    // The ground's height under (x, z), m: the terrain's, 0 without one.
+    float groundHeight(float x, float z) const { return terrainHeight(terrain, x, z); }
 };
 
 }  // namespace throng::sim

@@ -1,6 +1,7 @@
 #pragma once
 // What the step's phases read of the World besides their own state: the agents' columns,
-// the types, the set, the clock, the neighbour grid and the traffic, and the threads to
+// the types, the set, the clock, the neighbour grid, the traffic and the navigation, and
+// the threads to
 // share the work with. A phase takes it as const and names the columns it writes in its
 // own signature.
 
@@ -10,6 +11,7 @@
 #include "simcore/world/NeighbourGrid.h"
 #include "simcore/world/StaticSet.h"
 #include "simcore/world/StepClock.h"
+#include "simcore/world/WorldNav.h"
 #include "simcore/world/WorldTraffic.h"
 
 namespace throng::sim {
@@ -21,6 +23,7 @@ struct StepView {
     const StepClock& clock;
     const NeighbourGrid& grid;  // indexes agents.pos
     const WorldTraffic& traffic;
+    const WorldNav& nav;  // the navigation phase's targets for this step
     const ThreadTeam& team;
     bool hasFliers;   // the grid also sorts by height, for 3D queries
     bool allFliers;   // no obstacles, crosswalks or leaders to count for anyone

@@ -1,5 +1,7 @@
 #include "simcore/world/World.h"
 
+#include "simcore/world/Constraints.h"
+
 #include "simcore/nav/PathPlanning.h"
 #include "simcore/steering/PathFollowing.h"
 
@@ -282,7 +284,7 @@ void World::spawnGroup(const Scene& scene, const SpawnGroup& group, std::size_t 
                 p = group.center + r * glm::vec2(std::cos(a), std::sin(a));
             }
             glm::vec2 clear;
-            clearOfStatics[k] = !walker || !escapeTarget(p, bodyR, clear);
+            clearOfStatics[k] = !walker || !escapeTarget(m_set, p, bodyR, clear);
             if (clearOfStatics[k])
                 break;
         }
@@ -353,7 +355,7 @@ void World::spreadMembers(const SpawnGroup& group, std::uint16_t type, std::size
             out = q;
             return true;
         }
-        return !escapeTarget(q, radius, out);  // not into a wall or obstacle; clear of their edges
+        return !escapeTarget(m_set, q, radius, out);  // not into a wall or obstacle; clear of their edges
     };
     spreadBodies(bodies, settle, kSpreadToleranceM, kSpreadRounds);
     for (std::size_t k = 0; k < places.size(); ++k)
@@ -366,7 +368,7 @@ void World::addAgent(const Scene& scene, AgentId id, std::uint16_t type, glm::ve
     const AgentType& t = scene.agentTypes[type];
     const bool flier = t.kind == AgentKind::Flier;
     if (!flier)
-        pos.y = groundHeight(pos.x, pos.z);
+        pos.y = m_set.groundHeight(pos.x, pos.z);
     // Heading is counter-clockwise seen from above (+y up, z south): forward = (cos, 0, -sin).
     const glm::vec3 fwd(std::cos(headingRad), 0.0f, -std::sin(headingRad));
     const float speedFactor = rngRange(m_seed, id, 0, kSpeedFactor, t.variation.speedFactor.x, t.variation.speedFactor.y);
@@ -421,9 +423,23 @@ void World::addAgent(const Scene& scene, AgentId id, std::uint16_t type, glm::ve
     m_agents.resolvedPos.push_back(pos);
 }
 
-float World::groundHeight(float x, float z) const
+// Agents that start inside a wall or obstacle walk out of it first (Constraints.h).
+void World::findEscapes()
 {
-    return terrainHeight(m_set.terrain, x, z);
+    const std::size_t n = m_agents.pos.size();
+    m_agents.escaping.assign(n, 0);
+    m_agents.escapeTo.assign(n, glm::vec2(0.0f));
+    if (m_set.walls.segments().empty() && m_set.circles.empty())
+        return;
+    for (std::size_t i = 0; i < n; ++i) {
+        if (m_types.params[m_agents.info[i].typeIndex].kind != AgentKind::Pedestrian || m_traffic.isDriven(i))
+            continue;
+        glm::vec2 to;
+        if (escapeTarget(m_set, detail::xz(m_agents.pos[i]), m_agents.radius[i], to)) {
+            m_agents.escaping[i] = 1;
+            m_agents.escapeTo[i] = to;
+        }
+    }
 }
 
 std::size_t World::agentsWithGoal() const
@@ -440,10 +456,6 @@ int World::lightState(std::size_t light) const
     return view().lightState(light);
 }
 
-StepView World::view() const
-{
-    return {m_agents, m_types, m_set, m_clock, m_grid, m_traffic, m_team, m_hasFliers, m_allFliers, m_maxRadius};
-}
 
 void World::snapshot(std::vector<AgentFrame>& out) const
 {

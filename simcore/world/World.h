@@ -60,9 +60,8 @@ struct WorldOptions {
 
 class World {
 public:
-    // Most neighbours one agent perceives (the nearest ones in its perception cone);
-    // DetourCrowd uses 6.
-    static constexpr std::size_t kMaxNeighbours = 8;
+    // Most neighbours one agent perceives (AgentColumns.h).
+    static constexpr std::size_t kMaxNeighbours = sim::kMaxNeighbours;
 
     // Builds the runtime from a validated scene: placed agents, spawned groups (seeded),
     // goals, paths and leaders resolved to indices, walls and obstacles into grids.
@@ -198,8 +197,6 @@ private:
                   int path, AgentId leader);
 
     // Step phases, each for one agent; see WorldStep.cpp.
-    SteeringAgent steeringAgent(std::size_t i) const;
-    std::size_t gatherNeighbours(std::size_t i, Neighbour* out, std::uint32_t* indices) const;
     glm::vec3 separateBodies(std::size_t i) const;
     // The share of a pair's overlap agent i takes (WorldPriority.h; a walker the red caught
     // on the road takes none against those waiting at the kerb), and the way it parts.
@@ -214,16 +211,8 @@ private:
                                                  Neighbour* buffer) const;
     glm::vec3 avoidReciprocally(std::size_t i, const SteeringAgent& self, glm::vec3 force,
                                 std::span<const Neighbour> near, const TypeSteering& s) const;
-    glm::vec3 flowDirection(glm::vec3 p) const;
-    void constrain(std::size_t i, glm::vec3 from, glm::vec3& to) const;
-    // Agents inside a wall or obstacle at the start (WorldEscape.cpp): where each walks out
-    // to, and its move there this step, which constrain makes instead of holding it in.
-    bool escapeTarget(glm::vec2 p, float radiusM, glm::vec2& out) const;  // false: not deeper than radiusM
+    // Agents inside a wall or obstacle at the start: where each walks out to (Constraints.h).
     void findEscapes();
-    void escapeStep(std::size_t i, glm::vec3 from, glm::vec3& to) const;
-    // Whether wall segment s is a side of a box obstacle whose inside holds p (commit).
-    bool sideOfBoxAround(const Segment& s, glm::vec2 p) const;
-    float groundHeight(float x, float z) const;
     void commit(std::size_t i, std::uint64_t& wallCrossings);
     // The boids kernel (WorldFlock.cpp): sense, steer and integrate fused for a flier type
     // whose behaviours are only separation, alignment, cohesion, pursuit, containment, wander.
@@ -273,9 +262,6 @@ private:
     // Steps agents order[begin, end) (the grid's order), boids in batches.
     void stepInGridOrder(const std::uint32_t* order, std::size_t begin, std::size_t end, bool hasStatics,
                          NeighbourGrid::Sweep& sweep);
-    // Agents move little in a step: last step's k nearest of agent i, where they are now,
-    // bound its k-th nearest from above (squared; perception2 when it had fewer than k).
-    float lastNearestBound(std::size_t i, glm::vec3 p, float perception2) const;
     // The collide pass for agent i: m_agents.resolvedPos[i] from m_agents.nextPos[i] and the overlaps
     // with its neighbours (none looked for when the kernel found it collide-free), and a
     // walker's next velocity from its move.
@@ -290,7 +276,11 @@ private:
     void buildWalkKernel(bool enabled);
     void stepWalker(std::size_t i);
     // What the phases read of this World besides their own state (StepView.h).
-    StepView view() const;
+    StepView view() const
+    {
+        return {m_agents, m_types, m_set,      m_clock,     m_grid,     m_traffic,
+                m_nav,    m_team,  m_hasFliers, m_allFliers, m_maxRadius};
+    }
     const TypeCollision& collision(std::size_t i) const { return m_types.collision[m_agents.info[i].typeIndex]; }
     // Brain phase and its effect on steering (WorldBrain.cpp, WorldBrainSense.cpp).
     void buildBrains(const Scene& scene);
@@ -314,8 +304,6 @@ private:
     void updateNavTarget(std::size_t i);
     std::uint8_t queueDepth(std::size_t i) const;
     float crowdSpeedFraction(std::size_t i, glm::vec2 way) const;  // Weidmann, of free speed, (0, 1]
-    bool sketchedFlow(glm::vec3 p, glm::vec3& direction) const;  // false: no sketched field
-    glm::vec3 navGoal(std::size_t i, glm::vec3 goalSpot) const;  // where seek and arrival aim
 
     // Traffic phases; see WorldTraffic.cpp.
     void buildTraffic(const Scene& scene);
@@ -328,7 +316,6 @@ private:
     void trafficAfterCollide();
     void keepOffRedCrosswalks(std::size_t i, glm::vec3& p) const;
     void trafficAfterStep();
-    glm::vec2 wantedHeading(std::size_t i) const;
 
     AgentTypes m_types;  // per type: body, steering, collision layers
     std::vector<std::uint8_t> m_boidKernel;  // per type: steps through stepBoid

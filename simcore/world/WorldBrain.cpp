@@ -6,6 +6,8 @@
 #include "simcore/brain/BrainCompiler.h"
 #include "simcore/base/Rng.h"
 #include "simcore/world/World.h"
+
+#include "simcore/world/Sense.h"
 #include "simcore/world/detail/StepGeometry.h"
 #include "simcore/world/detail/WorldBrains.h"
 #include "simcore/world/detail/WorldSound.h"
@@ -251,7 +253,7 @@ std::size_t World::neighboursThisStep(std::size_t i, Neighbour* out)
 {
     std::uint32_t* index = &m_agents.nearIndex[i * kMaxNeighbours];
     if (!m_brains || m_brains->local[i] < 0 || !m_brains->types[std::size_t(m_brains->batch[i])].gathersNeighbours) {
-        const std::size_t count = gatherNeighbours(i, out, index);
+        const std::size_t count = gatherNeighbours(view(), i, out, index);
         m_agents.nearCount[i] = std::uint8_t(count);
         return count;
     }
@@ -308,7 +310,7 @@ glm::vec3 World::brainLimited(std::size_t i, glm::vec3 v, float aside, float sec
     glm::vec2 h(0.0f);
     if (m_types.params[m_agents.info[i].typeIndex].kind == AgentKind::Pedestrian && !m_types.steering[m_agents.info[i].typeIndex].vehicle.flying &&
         (m_agents.path[i] >= 0 || m_agents.goal[i] >= 0))
-        h = wantedHeading(i);
+        h = wantedHeading(view(), i);
     if (!(glm::dot(h, h) > 1e-12f))
         return v * (cap / speed);
     h = glm::normalize(h);

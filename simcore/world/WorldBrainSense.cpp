@@ -4,6 +4,8 @@
 // write only their own row.
 #include "simcore/world/World.h"
 
+#include "simcore/world/Sense.h"
+
 #include "simcore/world/detail/StepGeometry.h"
 #include "simcore/world/detail/WorldBrains.h"
 #include "simcore/world/detail/WorldSound.h"
@@ -88,7 +90,7 @@ void World::senseForBrain(TypeBrain& tb)
         // The neighbours go into the agent's own m_agents.nearIndex row, where the steer phase
         // of this step finds them instead of querying the grid a second time.
         std::array<Neighbour, kMaxNeighbours> near;
-        const std::size_t count = needNeighbours ? gatherNeighbours(i, near.data(), &m_agents.nearIndex[i * kMaxNeighbours]) : 0;
+        const std::size_t count = needNeighbours ? gatherNeighbours(view(), i, near.data(), &m_agents.nearIndex[i * kMaxNeighbours]) : 0;
         if (needNeighbours)
             m_agents.nearCount[i] = std::uint8_t(count);
         tb.neighbourCount[k] = std::uint8_t(std::min<std::size_t>(count, kBrainNeighbours));
@@ -151,7 +153,7 @@ void World::senseForBrain(TypeBrain& tb)
                 break;
             }
             case SensorFill::FlowBearing: {
-                const glm::vec2 d = xz(flowDirection(m_agents.pos[i]));
+                const glm::vec2 d = xz(flowDirection(view(), m_agents.pos[i]));
                 v = glm::dot(d, d) > 0.0f ? bearingDeg(f, d) : 0.0f;
                 break;
             }
@@ -200,7 +202,7 @@ void World::senseForBrain(TypeBrain& tb)
                     // or goal, not its facing, which wobbles while it waits) within 60
                     // degrees of the crosswalk's axis, so a walker passing the end of a
                     // crosswalk along the sidewalk is not held at it.
-                    glm::vec2 w = wantedHeading(i);
+                    glm::vec2 w = wantedHeading(view(), i);
                     w = glm::dot(w, w) > 1e-12f ? glm::normalize(w) : f;
                     for (const CrosswalkBox& c : m_set.crosswalks) {
                         if (c.light < 0)
@@ -243,7 +245,7 @@ void World::senseForBrain(TypeBrain& tb)
                 break;
             }
             case SensorFill::TerrainSlope: {
-                const float h0 = groundHeight(p.x, p.y), h1 = groundHeight(p.x + 0.5f * f.x, p.y + 0.5f * f.y);
+                const float h0 = m_set.groundHeight(p.x, p.y), h1 = m_set.groundHeight(p.x + 0.5f * f.x, p.y + 0.5f * f.y);
                 v = glm::degrees(std::atan((h1 - h0) / 0.5f));
                 break;
             }

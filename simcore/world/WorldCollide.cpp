@@ -5,6 +5,8 @@
 // overlap.
 #include "simcore/world/World.h"
 
+#include "simcore/world/Constraints.h"
+
 #include "simcore/world/detail/StepConstants.h"
 
 #include <glm/geometric.hpp>
@@ -38,7 +40,7 @@ void World::resolveCollision(std::size_t i, bool collideFree, bool hasStatics)
         p = m_agents.pos[i] + move * (maxMove / moved);
     if (!flying) {
         if (hasStatics)
-            constrain(i, m_agents.pos[i], p);
+            constrain(m_agents, m_set, m_clock.dt, i, m_agents.pos[i], p);
         p.y = m_agents.nextPos[i].y;
         // A walker's velocity is the move it made (nobody reads another's in this pass).
         m_agents.nextVel[i] = (p - m_agents.pos[i]) / m_clock.dt;
@@ -91,9 +93,9 @@ void World::settleContacts(bool hasStatics)
         if (move != p - m_agents.pos[i]) {
             p = m_agents.pos[i] + move;
             if (hasStatics)
-                constrain(i, m_agents.pos[i], p);
+                constrain(m_agents, m_set, m_clock.dt, i, m_agents.pos[i], p);
         }
-        p.y = groundHeight(p.x, p.z);
+        p.y = m_set.groundHeight(p.x, p.z);
         m_agents.resolvedPos[i] = p;
         m_agents.nextVel[i] = (p - m_agents.pos[i]) / m_clock.dt;
         m_agents.nextVel[i].y = 0.0f;
@@ -136,7 +138,7 @@ bool World::settleRound(std::size_t i, bool hasStatics)
         return false;
     glm::vec3 q = p + push;
     if (hasStatics)
-        constrain(i, p, q);
+        constrain(m_agents, m_set, m_clock.dt, i, p, q);
     q.y = p.y;
     if (q == p)
         return false;

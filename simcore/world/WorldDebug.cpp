@@ -3,6 +3,8 @@
 // path does, with the sink listening, and keeps nothing.
 #include "simcore/world/World.h"
 
+#include "simcore/world/Sense.h"
+
 #include "simcore/world/DebugSink.h"
 
 #include <glm/geometric.hpp>
@@ -94,7 +96,7 @@ void World::describeAgent(std::size_t i, DebugSink& sink) const
         sink.neighbour(m_agents.info[j].id, m_agents.pos[j]);
     }
 
-    const SteeringAgent self = steeringAgent(i);
+    const SteeringAgent self = steeringAgent(m_agents, m_types, i);
     const glm::vec2 h = glm::length(glm::vec2(m_agents.fwd[i].x, m_agents.fwd[i].z)) > 0.0f
                             ? glm::normalize(glm::vec2(m_agents.fwd[i].x, m_agents.fwd[i].z))
                             : glm::vec2(0.0f);
@@ -114,7 +116,7 @@ void World::describeAgent(std::size_t i, DebugSink& sink) const
         const std::vector<glm::vec2>& points = m_nav.plan[i]->waypoints;
         way.push_back(p);
         for (std::size_t k = std::min<std::size_t>(m_nav.waypoint[i], points.size()); k < points.size(); ++k)
-            way.emplace_back(points[k].x, groundHeight(points[k].x, points[k].y), points[k].y);
+            way.emplace_back(points[k].x, m_set.groundHeight(points[k].x, points[k].y), points[k].y);
     } else if (m_agents.path[i] >= 0) {
         const std::vector<glm::vec3>& points = m_set.pathPoints[std::size_t(m_agents.path[i])];
         way.assign(points.begin(), points.end());
@@ -123,7 +125,7 @@ void World::describeAgent(std::size_t i, DebugSink& sink) const
         sink.plannedPath(way);
     if (m_agents.goal[i] >= 0) {
         const glm::vec2 spot = m_agents.goalSpot[i];
-        sink.target(navGoal(i, glm::vec3(spot.x, groundHeight(spot.x, spot.y), spot.y)));
+        sink.target(m_nav.goal(i, glm::vec3(spot.x, m_set.groundHeight(spot.x, spot.y), spot.y)));
     }
 }
 

@@ -9,6 +9,8 @@
 // senseBoid and steerBoid (World.h); WorldFlockLanes.cpp does the second for four boids
 // at once.
 #include "simcore/world/World.h"
+
+#include "simcore/world/Sense.h"
 #include "simcore/world/NearestList.h"
 
 #include "simcore/steering/detail/SteeringConstants.h"
@@ -120,7 +122,7 @@ void World::senseBoid(std::size_t i, NeighbourGrid::Sweep* sweep, BoidSense& out
     // perception radius (everyone nearer lies inside the bound, and the grid offers all of
     // them), and when fewer are found the search runs again in full. So the result never
     // depends on the guess.
-    const float guess2 = m_neighbourSweep ? lastNearestBound(i, m_agents.pos[i], perception2) : perception2;
+    const float guess2 = m_neighbourSweep ? lastNearestBound(m_agents, i, m_agents.pos[i], perception2) : perception2;
     BoidNearest best;
     searchBoid(i, sweep, guess2, best);
     if (!best.full() && guess2 < perception2)
@@ -243,7 +245,7 @@ void World::steerBoid(std::size_t i, const BoidSense& in)
         const float probe = s.containment.probeMinM + s.containment.probeLookaheadS * speedNow + radius;
         const glm::vec3 lo = p - m_set.bounds.min, hi = m_set.bounds.max - p;
         if (std::min({lo.x, lo.y, lo.z, hi.x, hi.y, hi.z}) < probe)
-            sum += stayInside(steeringAgent(i), m_set.bounds, s.containment) * b.wContainment;
+            sum += stayInside(steeringAgent(m_agents, m_types, i), m_set.bounds, s.containment) * b.wContainment;
     }
     if (b.wSeparation > 0.0f)
         sum += push * b.wSeparation;
@@ -368,7 +370,7 @@ void World::groundBoid(std::size_t i, glm::vec3& pos, glm::vec3& vel, glm::vec3 
 {
     // Fliers may skim the ground but never pass through it (as in World::step).
     // (terrainHeight is 0 without a height field: no call for the common flat ground.)
-    const float ground = m_set.terrain.heights.empty() ? 0.0f : groundHeight(pos.x, pos.z);
+    const float ground = m_set.terrain.heights.empty() ? 0.0f : m_set.groundHeight(pos.x, pos.z);
     if (const float floor = ground + m_agents.radius[i]; pos.y < floor) {
         pos.y = floor;
         vel.y = std::max(vel.y, 0.0f);

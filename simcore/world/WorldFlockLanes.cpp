@@ -11,6 +11,8 @@
 // the build still runs on any x86-64: about 7 % less again (2 threads).
 #include "simcore/world/World.h"
 
+#include "simcore/world/Sense.h"
+
 #include "simcore/steering/detail/SteeringConstants.h"
 #include "simcore/steering/detail/SteeringMath.h"
 #include "simcore/base/Rng.h"
@@ -188,7 +190,7 @@ template <class F>
         for (unsigned bits = bitsOf(contained); bits != 0; bits &= bits - 1) {
             const int l = std::countr_zero(bits);
             const std::size_t i = boid[l];
-            contain[l] = stayInside(steeringAgent(i), m_set.bounds, m_types.steering[m_agents.info[i].typeIndex].containment) *
+            contain[l] = stayInside(steeringAgent(m_agents, m_types, i), m_set.bounds, m_types.steering[m_agents.info[i].typeIndex].containment) *
                          types[l]->wContainment;
         }
     }

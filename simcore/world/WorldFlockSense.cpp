@@ -9,6 +9,8 @@
 // (TestNeighbourSweep and the flock's state hash show it).
 #include "simcore/world/World.h"
 
+#include "simcore/world/Sense.h"
+
 #include "simcore/base/Lanes.h"
 
 #include <glm/geometric.hpp>
@@ -50,7 +52,7 @@ void World::senseFourBoids(const std::uint32_t* boid, int count, NeighbourGrid::
         fz[l] = m_agents.fwd[i].z;
         radius[l] = m_agents.radius[i];
         cone[l] = m_types.params[m_agents.info[i].typeIndex].cosHalfView;
-        guess2[l] = lastNearestBound(i, p[l], perception2);  // as senseBoid
+        guess2[l] = lastNearestBound(m_agents, i, p[l], perception2);  // as senseBoid
         bound[l] = l < count ? guess2[l] : -1.0f;
     }
     const F4 px{p[0].x, p[1].x, p[2].x, p[3].x}, py{p[0].y, p[1].y, p[2].y, p[3].y},

@@ -5,6 +5,8 @@
 // from each agent's own state, so the result does not depend on the thread count.
 #include "simcore/world/World.h"
 
+#include "simcore/world/Sense.h"
+
 #include "simcore/nav/NavDefaults.h"
 #include "simcore/traffic/LightPhase.h"
 #include "simcore/base/Rng.h"
@@ -234,7 +236,7 @@ std::uint8_t World::queueDepth(std::size_t i) const
     // are visited in does not matter. Two walkers facing each other would otherwise keep
     // each other "waiting" for ever (and never re-plan): without a head held at a light,
     // such a ring's depth grows by one a step until it passes the cap and dissolves.
-    const glm::vec2 p = xz(m_agents.pos[i]), way = wantedHeading(i);
+    const glm::vec2 p = xz(m_agents.pos[i]), way = wantedHeading(view(), i);
     const std::uint32_t* near = &m_agents.nearIndex[i * kMaxNeighbours];
     std::uint8_t ahead = kMaxQueueDepth;
     for (std::size_t k = 0; k < m_agents.nearCount[i]; ++k) {
@@ -382,22 +384,15 @@ float World::crowdSpeedFraction(std::size_t i, glm::vec2 way) const
     return std::clamp(fraction, kMinCrowdSpeedFraction, 1.0f);
 }
 
-bool World::sketchedFlow(glm::vec3 p, glm::vec3& direction) const
+bool WorldNav::sketchedFlow(glm::vec3 p, glm::vec3& direction) const
 {
-    if (!m_nav.sketch)
+    if (!sketch)
         return false;
-    const SketchField& field = *m_nav.sketch;
+    const SketchField& field = *sketch;
     const NavCell c = field.grid().cellOf(xz(p));
     const glm::vec2 d = field.grid().inside(c) && field.strength(c) >= kSketchMinStrength ? field.sample(xz(p)) : glm::vec2(0.0f);
     direction = {d.x, 0.0f, d.y};
     return true;
-}
-
-glm::vec3 World::navGoal(std::size_t i, glm::vec3 goalSpot) const
-{
-    if (!m_nav.active || !m_nav.hasTarget[i])
-        return goalSpot;
-    return {m_nav.target[i].x, goalSpot.y, m_nav.target[i].y};
 }
 
 }  // namespace throng::sim

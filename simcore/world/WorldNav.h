@@ -13,7 +13,9 @@
 #include "simcore/nav/SketchField.h"
 
 #include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -63,6 +65,18 @@ struct WorldNav {
     std::vector<std::uint8_t> waiting, waitingNext;
     std::vector<std::uint8_t> lostSteps; // A* walkers: steps the current waypoint has been out of sight
     std::vector<std::uint8_t> noWay;     // 1: no body of its size can get to its goal from where it is; it waits
+
+    // Where agent i's seek and arrival aim: its navigation target this step, or its own
+    // goalSpot when it has none.
+    glm::vec3 goal(std::size_t i, glm::vec3 goalSpot) const
+    {
+        if (!active || !hasTarget[i])
+            return goalSpot;
+        return {target[i].x, goalSpot.y, target[i].y};
+    }
+    // The sketched field's direction at p (zero where the field is weaker than
+    // kSketchMinStrength); false when the scene has no sketched field.
+    bool sketchedFlow(glm::vec3 p, glm::vec3& direction) const;
 };
 
 }  // namespace throng::sim

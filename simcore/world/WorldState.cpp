@@ -301,7 +301,7 @@ bool World::adoptMatched(const WorldState& s, const Scene& stateScene, const Sce
             const TrafficSystem& ts = *m_traffic.system;
             const std::size_t i = m_traffic.vehicleAgent[v];
             const glm::vec2 p = ts.position(v), f = ts.forward(v);
-            m_agents.pos[i] = glm::vec3(p.x, groundHeight(p.x, p.y), p.y);
+            m_agents.pos[i] = glm::vec3(p.x, m_set.groundHeight(p.x, p.y), p.y);
             m_agents.vel[i] = glm::vec3(f.x, 0.0f, f.y) * (ts.active(v) ? ts.speed(v) : 0.0f);
             m_agents.fwd[i] = glm::vec3(f.x, 0.0f, f.y);
             m_agents.side[i] = glm::vec3(-f.y, 0.0f, f.x);

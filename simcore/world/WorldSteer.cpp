@@ -1,19 +1,17 @@
-// The sense and steer phases of World::step: who an agent perceives, and what its type's
-// behaviours ask of it. Both read only the previous state.
+// The steer phase of World::step: what an agent's type's behaviours ask of it, from what
+// it senses (Sense.h). Reads only the previous state.
 #include "simcore/world/World.h"
 
-#include "simcore/world/DebugSink.h"
-#include "simcore/world/NearestList.h"
-
-#include "simcore/steering/UninitialisedArray.h"
 #include "simcore/base/Rng.h"
+#include "simcore/steering/UninitialisedArray.h"
+#include "simcore/world/DebugSink.h"
+#include "simcore/world/Sense.h"
 #include "simcore/world/detail/StepGeometry.h"
 
 #include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <array>
-#include <bit>
 #include <cmath>
 
 namespace throng::sim {
@@ -97,101 +95,6 @@ glm::vec3 slideAlongWall(const SteeringAgent& self, std::span<const WallSegment>
 
 }  // namespace
 
-SteeringAgent World::steeringAgent(std::size_t i) const
-{
-    const TypeParams& t = m_types.params[m_agents.info[i].typeIndex];
-    SteeringAgent a;
-    a.position = m_agents.pos[i];
-    a.velocity = m_agents.vel[i];
-    a.forward = m_agents.fwd[i];
-    a.side = m_agents.side[i];
-    a.up = m_agents.up[i];
-    a.radius = m_agents.radius[i];
-    a.maxSpeed = m_agents.maxSpeed[i];
-    a.maxForce = t.maxForce;
-    a.mass = t.mass;
-    a.id = m_agents.info[i].id;
-    return a;
-}
-
-// The boids and walker kernels' first search bound (World.h).
-float World::lastNearestBound(std::size_t i, glm::vec3 p, float perception2) const
-{
-    constexpr std::size_t k = kMaxNeighbours;
-    if (m_agents.nearCount[i] != k)
-        return perception2;
-    const std::uint32_t* last = &m_agents.nearIndex[i * k];
-    float far2 = 0.0f;
-    for (std::size_t n = 0; n < k; ++n) {
-        const std::uint32_t j = last[n];
-        const glm::vec3 d = j < m_agents.pos.size() ? m_agents.pos[j] - p : glm::vec3(INFINITY);
-        far2 = std::max(far2, glm::dot(d, d));
-    }
-    return std::min(perception2, far2);
-}
-
-// Sense: the nearest kMaxNeighbours agents within the perception radius and view cone
-// (Reynolds 1987), nearest first, ties by id, so the choice never depends on grid order.
-std::size_t World::gatherNeighbours(std::size_t i, Neighbour* out, std::uint32_t* indices) const
-{
-    const TypeParams& t = m_types.params[m_agents.info[i].typeIndex];
-    const glm::vec3 p = m_agents.pos[i], fwd = m_agents.fwd[i];
-    const float r2 = t.perception * t.perception;
-    // The k nearest, ties by index, kept sorted by insertion; once k are known the search
-    // radius shrinks to the k-th distance, so farther candidates and cells are skipped.
-    // A candidate is one 64-bit key: the bits of d2 (>= 0, so they order like the
-    // floats) above the index, so a comparison is one integer compare. A neighbour of
-    // higher priority ranks before every other (its top bit is clear), so a dense crowd
-    // never loses sight of the ambulance among its nearest neighbours; with priorities
-    // in the scene the radius therefore does not shrink.
-    const TypeCollision& mine = collision(i);
-    NearestList<kMaxNeighbours> best;
-    float bound = r2;
-    const float c = t.cosHalfView;
-    auto consider = [&](std::uint32_t j, const glm::vec3& q) {
-        if (m_types.makingWay && !collide(mine, collision(j)))
-            return;  // agents on layers that do not collide do not perceive each other
-        const glm::vec3 d = q - p;
-        const float d2 = glm::dot(d, d);
-        if (d2 > bound || j == i)
-            return;
-        // Outside the view cone (but a touching neighbour is always felt).
-        const float contact = m_agents.radius[i] + m_agents.radius[j];
-        if (outsideViewCone(d, d2, fwd, c) && d2 > contact * contact)
-            return;
-        const bool urgent = m_types.makingWay && collision(j).priority > mine.priority;
-        if (best.insert(nearestKey(d2, j, !urgent)) && best.full() && !m_types.makingWay)
-            bound = best.worstDistance2();
-    };
-    // Nearest rows first: once the k best are found, farther cells are skipped.
-    m_grid.forEachNearest(p, t.perception, [&] { return bound; }, consider);
-    for (std::size_t n = 0; n < best.count; ++n) {
-        const auto j = best.index(n);
-        out[n] = {m_agents.pos[j], m_agents.vel[j], m_agents.fwd[j], m_agents.radius[j], m_agents.info[j].id};
-        indices[n] = j;
-    }
-    return best.count;
-}
-
-glm::vec3 World::flowDirection(glm::vec3 p) const
-{
-    // The strokes' sketched field where it solved (WorldNav.cpp).
-    if (glm::vec3 sketched; sketchedFlow(p, sketched))
-        return sketched;
-    // The nearest stroke segment whose band holds p gives the direction.
-    const glm::vec2 q = xz(p);
-    float bestD = INFINITY;
-    glm::vec2 dir(0.0f);
-    for (const FlowSegment& s : m_set.flow) {
-        const float d = glm::distance(q, closestOnSegment(q, s.a, s.b));
-        if (d <= s.halfWidth && d < bestD && s.a != s.b) {
-            bestD = d;
-            dir = glm::normalize(s.b - s.a);
-        }
-    }
-    return {dir.x, 0.0f, dir.y};
-}
-
 // Wall following and obstacle avoidance's requests, in steer's order (after containment):
 // shared by World::steer and the walker kernel (WorldWalk.cpp), so the two add the same
 // forces with the same weights. Nothing when the world has no walls or obstacles.
@@ -252,7 +155,7 @@ glm::vec3 World::steer(std::size_t i, const SteeringAgent& self, std::span<const
     };
     const glm::vec3 p = self.position;
     const bool hasGoal = m_agents.goal[i] >= 0;
-    const glm::vec3 goal = hasGoal ? navGoal(i, glm::vec3(m_agents.goalSpot[i].x, p.y, m_agents.goalSpot[i].y)) : p + self.forward;
+    const glm::vec3 goal = hasGoal ? m_nav.goal(i, glm::vec3(m_agents.goalSpot[i].x, p.y, m_agents.goalSpot[i].y)) : p + self.forward;
     const std::int32_t leaderIndex = m_agents.leader[i];
     Neighbour leader;
     if (leaderIndex >= 0) {
@@ -296,7 +199,7 @@ glm::vec3 World::steer(std::size_t i, const SteeringAgent& self, std::span<const
         request(B::PathFollowing, [&] { return followPath(flat, path, s.path, m_agents.pathAlong[i]); });
     }
     if (!m_set.flow.empty())
-        request(B::FlowFieldFollowing, [&] { return followFlow(self, flowDirection(flowSamplePoint(self, s.flow)), s.flow); });
+        request(B::FlowFieldFollowing, [&] { return followFlow(self, flowDirection(view(), flowSamplePoint(self, s.flow)), s.flow); });
     if (hasGoal && m_agents.path[i] < 0) {
         // An exit is walked through, not stopped at: slowing down short of it, a walker
         // whose door posts pushed it back (wall following) stood in front of the door for

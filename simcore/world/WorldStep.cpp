@@ -4,6 +4,9 @@
 // is the same for any thread count.
 #include "simcore/world/World.h"
 
+#include "simcore/world/Constraints.h"
+#include "simcore/world/Sense.h"
+
 #include "simcore/scene/StepRate.h"
 
 #include "simcore/steering/KeepRight.h"
@@ -222,7 +225,7 @@ void World::stepAgent(std::size_t i, bool hasStatics, NeighbourGrid::Sweep* swee
         stepWalker(i);  // walkers in the open: the same (WorldWalk.cpp)
         return;
     }
-    const SteeringAgent self = steeringAgent(i);
+    const SteeringAgent self = steeringAgent(m_agents, m_types, i);
     // Sense: nearby agents in the perception cone.
     // (Uninitialised: only the first `count` are written, and only they are read.)
     UninitialisedArray<Neighbour, kMaxNeighbours> near;
@@ -259,11 +262,11 @@ void World::stepAgent(std::size_t i, bool hasStatics, NeighbourGrid::Sweep* swee
     // Constrain: no agent ends a step inside a wall or obstacle; walkers stand on the ground.
     if (!s.vehicle.flying) {
         if (hasStatics)
-            constrain(i, self.position, next.position);
-        next.position.y = groundHeight(next.position.x, next.position.z);
+            constrain(m_agents, m_set, m_clock.dt, i, self.position, next.position);
+        next.position.y = m_set.groundHeight(next.position.x, next.position.z);
         next.velocity = (next.position - self.position) / m_clock.dt;
         next.velocity.y = 0.0f;
-    } else if (const float floor = groundHeight(next.position.x, next.position.z) + self.radius;
+    } else if (const float floor = m_set.groundHeight(next.position.x, next.position.z) + self.radius;
                next.position.y < floor) {
         // Fliers may skim the ground but never pass through it; the dive turns into
         // level flight at no less than the stall speed.
@@ -340,7 +343,7 @@ void World::commit(std::size_t i, std::uint64_t& wallCrossings)
     if (!m_set.walls.segments().empty() && !m_types.steering[m_agents.info[i].typeIndex].vehicle.flying && !m_traffic.isDriven(i))
         m_set.walls.forEachNear((from + to) * 0.5f, 0.5f * glm::length(to - from) + 0.01f, [&](std::uint32_t k) {
         const Segment& s = m_set.walls.segment(k);
-        if (segmentsCross(from, to, s.a, s.b) && !(m_agents.escaping[i] && sideOfBoxAround(s, from)))
+        if (segmentsCross(from, to, s.a, s.b) && !(m_agents.escaping[i] && sideOfBoxAround(m_set, s, from)))
             ++wallCrossings;
     });
     if (m_agents.escaping[i] && glm::distance(to, m_agents.escapeTo[i]) < 1e-4f)
@@ -435,77 +438,6 @@ void World::commit(std::size_t i, std::uint64_t& wallCrossings)
         m_agents.stopped[i] = 1;
         m_agents.nextVel[i] = glm::vec3(0.0f);  // the velocity World::step swaps in
     }
-}
-
-bool World::sideOfBoxAround(const Segment& s, glm::vec2 p) const
-{
-    constexpr float kOnSide = 1e-3f;  // relative: the side's midpoint lies on the box's outline
-    for (const BoxObstacle& b : m_set.boxes) {
-        const glm::vec2 ax = xz(b.axis), az(-ax.y, ax.x), c = xz(b.centre);
-        const glm::vec2 d = p - c, m = 0.5f * (s.a + s.b) - c;
-        if (std::fabs(glm::dot(d, ax)) >= b.halfSize.x || std::fabs(glm::dot(d, az)) >= b.halfSize.y)
-            continue;  // p is not inside this box
-        const float edge = std::max(std::fabs(glm::dot(m, ax)) / b.halfSize.x, std::fabs(glm::dot(m, az)) / b.halfSize.y);
-        if (std::fabs(edge - 1.0f) < kOnSide)
-            return true;
-    }
-    return false;
-}
-
-void World::constrain(std::size_t i, glm::vec3 from, glm::vec3& to) const
-{
-    if (m_agents.escaping[i]) {  // started inside a wall or obstacle: on its way out (WorldEscape.cpp)
-        escapeStep(i, from, to);
-        return;
-    }
-    const float r = m_agents.radius[i];
-    glm::vec2 p = xz(to);
-    const glm::vec2 p0 = xz(from);
-    // A move that would cross a wall stops where it started (no tunnelling at any speed).
-    bool crossed = false;
-    m_set.walls.forEachNear((p0 + p) * 0.5f, 0.5f * glm::length(p - p0) + r + 0.01f, [&](std::uint32_t k) {
-        const Segment& s = m_set.walls.segment(k);
-        crossed = crossed || segmentsCross(p0, p, s.a, s.b);
-    });
-    if (crossed)
-        p = p0;
-    // Then push the body out of walls and obstacles it overlaps; two passes settle corners.
-    for (int pass = 0; pass < 2; ++pass) {
-        m_set.walls.forEachNear(p, r, [&](std::uint32_t k) {
-            const Segment& s = m_set.walls.segment(k);
-            const glm::vec2 c = closestOnSegment(p, s.a, s.b);
-            const glm::vec2 d = p - c;
-            const float dist2 = glm::dot(d, d);
-            if (dist2 >= r * r)
-                return;
-            glm::vec2 n;
-            if (dist2 > 1e-12f) {
-                n = d / std::sqrt(dist2);
-            } else {
-                const glm::vec2 along = s.b - s.a;
-                n = glm::dot(along, along) > 0.0f ? glm::normalize(glm::vec2(-along.y, along.x)) : glm::vec2(1, 0);
-                if (glm::dot(n, p0 - s.a) < 0.0f)
-                    n = -n;
-            }
-            const glm::vec2 candidate = c + n * r;
-            if (!segmentsCross(p0, candidate, s.a, s.b))
-                p = candidate;
-        });
-        m_set.obstacleGrid.forEachNear(p, r, [&](std::uint32_t k) {
-            if (k >= m_set.circles.size())
-                return;  // boxes are walls too, handled above
-            const CircleObstacle& o = m_set.circles[k];
-            const glm::vec2 d = p - xz(o.centre);
-            const float dist = glm::length(d);
-            const float minDist = o.radius + r;
-            if (dist >= minDist)
-                return;
-            const glm::vec2 n = dist > 1e-6f ? d / dist : glm::vec2(1.0f, 0.0f);
-            p = xz(o.centre) + n * minDist;
-        });
-    }
-    to.x = p.x;
-    to.z = p.y;
 }
 
 }  // namespace throng::sim

@@ -4,6 +4,9 @@
 // the one TrafficSystem.h gives; every per-agent loop writes only its own agent.
 #include "simcore/world/World.h"
 
+#include "simcore/world/Constraints.h"
+#include "simcore/world/Sense.h"
+
 #include "simcore/steering/TargetBehaviours.h"
 #include "simcore/traffic/LightPhase.h"
 #include "simcore/traffic/WalkerBarriers.h"
@@ -20,7 +23,6 @@ namespace throng::sim {
 using namespace detail;
 
 namespace {
-constexpr float kHeadingLookaheadM = 2.0f;  // m along its path: where a walker "wants to go"
 constexpr float kEndLineMarginM = 1e-3f;    // m: how far behind a crosswalk's kerb line a held walker stays
 
 glm::vec3 onGround(glm::vec2 p, float y) { return {p.x, y, p.y}; }
@@ -118,50 +120,12 @@ void World::trafficBeforeStep()
     m_traffic.system->step(m_traffic.before);
 }
 
-glm::vec2 World::wantedHeading(std::size_t i) const
-{
-    const glm::vec2 p = xz(m_agents.pos[i]);
-    if (m_agents.path[i] >= 0) {
-        // The point a little ahead of the nearest point of its path: where it is heading
-        // even while it stands still or rounds a corner.
-        const Path& path = m_set.paths[std::size_t(m_agents.path[i])];
-        const std::size_t count = path.points.size(), segments = path.closed ? count : count - 1;
-        float best = 1e30f;
-        std::size_t seg = 0;
-        float along = 0.0f;
-        for (std::size_t k = 0; k < segments; ++k) {
-            const glm::vec2 a = path.points[k], b = path.points[(k + 1) % count];
-            const glm::vec2 c = closestOnSegment(p, a, b);
-            const float d = glm::distance(p, c);
-            if (d < best) {
-                best = d;
-                seg = k;
-                along = glm::distance(a, c);
-            }
-        }
-        float ahead = kHeadingLookaheadM;
-        for (std::size_t step = 0; step < segments; ++step) {
-            const glm::vec2 a = path.points[seg], b = path.points[(seg + 1) % count];
-            const float len = glm::distance(a, b);
-            if (along + ahead <= len || (!path.closed && seg + 1 == segments))
-                return a + (b - a) * (std::min(along + ahead, len) / std::max(len, 1e-6f)) - p;
-            ahead -= len - along;
-            along = 0.0f;
-            seg = (seg + 1) % segments;
-        }
-    }
-    if (m_agents.goal[i] >= 0)
-        return xz(navGoal(i, onGround(m_agents.goalSpot[i], 0.0f))) - p;
-    const glm::vec2 v = xz(m_agents.vel[i]);
-    return glm::dot(v, v) > 1e-4f ? v : xz(m_agents.fwd[i]);
-}
-
 glm::vec3 World::obeySignal(std::size_t i, const SteeringAgent& self, glm::vec3 force)
 {
     if (m_traffic.signal.empty() || m_types.params[m_agents.info[i].typeIndex].kind != AgentKind::Pedestrian)
         return force;
     PedestrianSignal& sig = m_traffic.signal[i];
-    sig = m_traffic.system->pedestrianSignal(xz(m_agents.pos[i]), wantedHeading(i), glm::length(xz(m_agents.vel[i])),
+    sig = m_traffic.system->pedestrianSignal(xz(m_agents.pos[i]), wantedHeading(view(), i), glm::length(xz(m_agents.vel[i])),
                                              m_agents.radius[i], m_agents.info[i].id);
     if (sig.clearing) {
         // Red caught it on the road: to the nearer kerb at full speed, whatever its path says.
@@ -194,7 +158,7 @@ void World::driveTrafficAgents()
             const glm::vec2 p = ts.position(v), f = ts.forward(v);
             m_traffic.offStage[i] = ts.active(v) ? 0 : 1;
             m_traffic.anyOffStage = m_traffic.anyOffStage || !ts.active(v);
-            m_agents.nextPos[i] = onGround(p, groundHeight(p.x, p.y));
+            m_agents.nextPos[i] = onGround(p, m_set.groundHeight(p.x, p.y));
             m_agents.nextVel[i] = glm::vec3(f.x, 0.0f, f.y) * (ts.active(v) ? ts.speed(v) : 0.0f);
             m_agents.nextFwd[i] = glm::vec3(f.x, 0.0f, f.y);
             m_agents.nextSide[i] = glm::vec3(-f.y, 0.0f, f.x);
@@ -234,7 +198,7 @@ void World::trafficAfterCollide()
             }
         }
         if (moved)
-            constrain(i, m_agents.pos[i], p);
+            constrain(m_agents, m_set, m_clock.dt, i, m_agents.pos[i], p);
         // Crowd pushes and hero pushes may nudge a waiting walker, never past its stop point.
         holdAtSignal(i, p);
         keepOffRedCrosswalks(i, p);

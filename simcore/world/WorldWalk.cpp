@@ -9,6 +9,9 @@
 // usable once instead of per agent.
 #include "simcore/world/World.h"
 
+#include "simcore/world/Constraints.h"
+#include "simcore/world/Sense.h"
+
 #include "simcore/steering/KeepRight.h"
 #include "simcore/world/NearestList.h"
 
@@ -138,7 +141,7 @@ void World::stepWalker(std::size_t i)
     };
     // As in the boids kernel: start from last step's k nearest, and search in full only
     // when fewer than k lie within them (the result is the same either way).
-    const float guess2 = m_neighbourSweep ? lastNearestBound(i, p, perception2) : perception2;
+    const float guess2 = m_neighbourSweep ? lastNearestBound(m_agents, i, p, perception2) : perception2;
     search(guess2);
     if (!best.full() && guess2 < perception2)
         search(perception2);
@@ -228,12 +231,12 @@ void World::stepWalker(std::size_t i)
         const float probe = s.containment.probeMinM + s.containment.probeLookaheadS * speedNow + radius;
         const glm::vec3 lo = p - m_set.bounds.min, hi = m_set.bounds.max - p;
         if (std::min({lo.x, lo.z, hi.x, hi.z}) < probe)
-            add(stayInside(steeringAgent(i), m_set.bounds, s.containment), w.wContainment);
+            add(stayInside(steeringAgent(m_agents, m_types, i), m_set.bounds, s.containment), w.wContainment);
     }
     if (w.aroundStatics) {
         // Wall following and obstacle avoidance: steer's own requests (WorldSteer.cpp).
         SteeringRequestList around;
-        steerAroundStatics(i, steeringAgent(i), goal, around);
+        steerAroundStatics(i, steeringAgent(m_agents, m_types, i), goal, around);
         for (const SteeringRequest& request : around.requests())
             add(request.force, request.weight);
     }
@@ -279,7 +282,7 @@ void World::stepWalker(std::size_t i)
         const std::uint64_t key = rngKey(m_seed, id, m_clock.step);
         const glm::vec3 random(rngRangeOf(key, kWanderX, -1.0f, 1.0f), rngRangeOf(key, kWanderY, -1.0f, 1.0f),
                                rngRangeOf(key, kWanderZ, -1.0f, 1.0f));
-        const WanderResult result = wander(steeringAgent(i), m_agents.wander[i], random, s.wander);
+        const WanderResult result = wander(steeringAgent(m_agents, m_types, i), m_agents.wander[i], random, s.wander);
         wanderNext = result.state;
         add(result.force, w.wWander);
     }
@@ -335,8 +338,8 @@ void World::stepWalker(std::size_t i)
     }
     // Constrain: out of walls and obstacles, never through a wall (World::constrain).
     if (w.constrained)
-        constrain(i, p, pos);
-    pos.y = m_set.terrain.heights.empty() ? 0.0f : groundHeight(pos.x, pos.z);  // no terrain: flat at 0
+        constrain(m_agents, m_set, m_clock.dt, i, p, pos);
+    pos.y = m_set.terrain.heights.empty() ? 0.0f : m_set.groundHeight(pos.x, pos.z);  // no terrain: flat at 0
     glm::vec3 nextVel = (pos - p) / m_clock.dt;
     nextVel.y = 0.0f;
     m_agents.nextPos[i] = pos;
