@@ -14,6 +14,8 @@
 #include "simcore/world/WorldNav.h"
 #include "simcore/world/WorldTraffic.h"
 
+#include <cstdint>
+
 namespace throng::sim {
 
 struct StepView {
@@ -28,6 +30,7 @@ struct StepView {
     bool hasFliers;   // the grid also sorts by height, for 3D queries
     bool allFliers;   // no obstacles, crosswalks or leaders to count for anyone
     float maxRadius;  // the largest body radius, m
+    std::uint64_t seed;  // the World's: random draws are keyed by it (Rng.h)
 
     const TypeParams& type(std::size_t i) const { return types.params[agents.info[i].typeIndex]; }
     const TypeCollision& collision(std::size_t i) const { return types.collision[agents.info[i].typeIndex]; }

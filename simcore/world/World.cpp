@@ -130,7 +130,8 @@ void World::build(const Scene& scene, const WorldOptions& options)
     addTrafficAgents(scene);
     buildBrains(scene);
     findEscapes();  // before the plans: one that starts inside an obstacle plans from outside it
-    buildNav(scene);
+    m_agents.out.assign(m_agents.size(), 0);  // nobody has left yet
+    m_nav.build(scene, view());
     for (const TypeParams& t : m_types.params) {
         m_hasFliers = m_hasFliers || t.kind == AgentKind::Flier;
         m_allFliers = m_allFliers && t.kind == AgentKind::Flier;

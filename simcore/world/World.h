@@ -278,8 +278,8 @@ private:
     // What the phases read of this World besides their own state (StepView.h).
     StepView view() const
     {
-        return {m_agents, m_types, m_set,      m_clock,     m_grid,     m_traffic,
-                m_nav,    m_team,  m_hasFliers, m_allFliers, m_maxRadius};
+        return {m_agents, m_types,  m_set,       m_clock,      m_grid,      m_traffic,
+                m_nav,    m_team,   m_hasFliers, m_allFliers, m_maxRadius, m_seed};
     }
     const TypeCollision& collision(std::size_t i) const { return m_types.collision[m_agents.info[i].typeIndex]; }
     // Brain phase and its effect on steering (WorldBrain.cpp, WorldBrainSense.cpp).
@@ -294,16 +294,6 @@ private:
     float brainWeight(std::size_t i, Behaviour b) const; // multiplies the type's weight; 1 without a brain
     glm::vec3 brainTurnForce(std::size_t i, const SteeringAgent& self) const;
     Clip brainClip(std::size_t i, Clip bySpeed) const;
-
-    // Navigation phase; see WorldNav.cpp.
-    void buildNav(const Scene& scene);
-    void planNav(std::size_t i);
-    glm::vec2 navStart(std::size_t i) const;  // where its way starts: its place, or where it walks out to
-    bool noWayToGoal(std::size_t i);          // no body of its size gets to its goal (builds m_nav.reach)
-    void navBeforeStep();
-    void updateNavTarget(std::size_t i);
-    std::uint8_t queueDepth(std::size_t i) const;
-    float crowdSpeedFraction(std::size_t i, glm::vec2 way) const;  // Weidmann, of free speed, (0, 1]
 
     // Traffic phases; see WorldTraffic.cpp.
     void buildTraffic(const Scene& scene);

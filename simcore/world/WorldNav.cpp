@@ -1,11 +1,12 @@
-// The navigation phase of World::step: walkers whose type navigates by A* follow a plan
-// shared through the PlanCache (advancing within their own waypoint radius), flow-field
-// walkers follow their goal's field, and a walker that makes no progress re-plans around
-// the blockage or side-steps. Plans are made serially in agent order, targets in parallel
+// The navigation phase of World::step (WorldNav): walkers whose type navigates by A*
+// follow a plan shared through the PlanCache (advancing within their own waypoint
+// radius), flow-field walkers follow their goal's field, and a walker that makes no
+// progress re-plans around the blockage or side-steps. Plans are made serially in agent order, targets in parallel
 // from each agent's own state, so the result does not depend on the thread count.
-#include "simcore/world/World.h"
+#include "simcore/world/WorldNav.h"
 
 #include "simcore/world/Sense.h"
+#include "simcore/world/StepView.h"
 
 #include "simcore/nav/NavDefaults.h"
 #include "simcore/traffic/LightPhase.h"
@@ -60,175 +61,174 @@ constexpr std::uint8_t kLostSteps = 12;       // steps with the waypoint out of 
 
 }  // namespace
 
-void World::buildNav(const Scene& scene)
+void WorldNav::build(const Scene& scene, const StepView& v)
 {
-    const std::size_t n = m_agents.pos.size();
-    m_agents.out.assign(n, 0);
+    const std::size_t n = v.agents.pos.size();
     float inflate = 0.0f, smallest = INFINITY;
-    std::vector<Navigation> mode(n, Navigation::Direct);
+    std::vector<Navigation> modes(n, Navigation::Direct);
     for (std::size_t i = 0; i < n; ++i) {
-        const AgentType& t = scene.agentTypes[m_agents.info[i].typeIndex];
-        if (t.kind != AgentKind::Pedestrian || m_traffic.isDriven(i) || t.navigation == Navigation::Direct)
+        const AgentType& t = scene.agentTypes[v.agents.info[i].typeIndex];
+        if (t.kind != AgentKind::Pedestrian || v.traffic.isDriven(i) || t.navigation == Navigation::Direct)
             continue;
-        mode[i] = t.navigation;
+        modes[i] = t.navigation;
         inflate = std::max(inflate, t.radiusM + kNavClearanceM);
         smallest = std::min(smallest, t.radiusM);
     }
-    m_nav.active = inflate > 0.0f;
-    if (!m_nav.active && scene.flowStrokes.empty())
+    active = inflate > 0.0f;
+    if (!active && scene.flowStrokes.empty())
         return;
-    // The set as walkers meet it: walls, obstacles and the kerbs along lanes (m_set.walls holds
+    // The set as walkers meet it: walls, obstacles and the kerbs along lanes (v.set.walls holds
     // all three), so a plan never leads onto a lane except over a crosswalk.
     NavShapes shapes = navShapes(scene);
-    shapes.walls = m_set.walls.segments();
-    m_nav.grid.build(shapes, scene.settings.boundsMin, scene.settings.boundsMax,
-                     NavGridParams{scene.settings.navCellM, m_nav.active ? inflate : kNavDefaultRadiusM + kNavClearanceM});
+    shapes.walls = v.set.walls.segments();
+    grid.build(shapes, scene.settings.boundsMin, scene.settings.boundsMax,
+               NavGridParams{scene.settings.navCellM, active ? inflate : kNavDefaultRadiusM + kNavClearanceM});
     // Flow strokes become a sketched field (Jin et al. 2008) that flow_field_following
     // reads; should the solve fail, the World keeps the plain lookup along the strokes.
     if (!scene.flowStrokes.empty()) {
-        SketchField sketch;
-        if (sketch.build(scene, m_nav.grid))
-            m_nav.sketch = std::move(sketch);
+        SketchField solved;
+        if (solved.build(scene, grid))
+            sketch = std::move(solved);
     }
-    if (!m_nav.active)
+    if (!active)
         return;
-    m_nav.reachShapes = std::move(shapes);
-    m_nav.reachRadiusM = smallest;
+    reachShapes = std::move(shapes);
+    reachRadiusM = smallest;
 
-    m_nav.hasField.assign(m_set.goals.size(), 0);
-    m_nav.fields.resize(m_set.goals.size());
+    hasField.assign(v.set.goals.size(), 0);
+    fields.resize(v.set.goals.size());
     for (std::size_t i = 0; i < n; ++i)
-        if (mode[i] == Navigation::FlowField && m_agents.goal[i] >= 0)
-            m_nav.hasField[std::size_t(m_agents.goal[i])] = 1;
-    for (std::size_t g = 0; g < m_set.goals.size(); ++g)
-        if (m_nav.hasField[g]) {
-            const FlowGoal goal{m_set.goals[g].position, m_set.goals[g].radiusM};
-            m_nav.fields[g].build(m_nav.grid, std::span<const FlowGoal>(&goal, 1));
+        if (modes[i] == Navigation::FlowField && v.agents.goal[i] >= 0)
+            hasField[std::size_t(v.agents.goal[i])] = 1;
+    for (std::size_t g = 0; g < v.set.goals.size(); ++g)
+        if (hasField[g]) {
+            const FlowGoal goal{v.set.goals[g].position, v.set.goals[g].radiusM};
+            fields[g].build(grid, std::span<const FlowGoal>(&goal, 1));
         }
 
-    m_nav.mode = std::move(mode);
-    m_nav.plan.assign(n, nullptr);
-    m_nav.planGoal.assign(n, -1);
-    m_nav.waypoint.assign(n, 0);
-    m_nav.waypointRadiusM.resize(n);
+    mode = std::move(modes);
+    plan.assign(n, nullptr);
+    planGoal.assign(n, -1);
+    waypoint.assign(n, 0);
+    waypointRadiusM.resize(n);
     for (std::size_t i = 0; i < n; ++i)
-        m_nav.waypointRadiusM[i] = waypointRadiusM(kWaypointRadiusBaseM, rngUniform(m_seed, m_agents.info[i].id, 0, kWaypointRadius),
+        waypointRadiusM[i] = sim::waypointRadiusM(kWaypointRadiusBaseM, rngUniform(v.seed, v.agents.info[i].id, 0, kWaypointRadius),
                                                    kWaypointSpread);
-    m_nav.stall.assign(n, StallWatch{});
-    m_nav.replan.assign(n, 0);
-    m_nav.sideStepS.assign(n, 0.0f);
-    m_nav.sideDir.assign(n, glm::vec2(0.0f));
-    m_nav.target.assign(n, glm::vec2(0.0f));
-    m_nav.hasTarget.assign(n, 0);
-    m_nav.waiting.assign(n, 0);
-    m_nav.waitingNext.assign(n, 0);
-    m_nav.lostSteps.assign(n, 0);
-    m_nav.noWay.assign(n, 0);
+    stall.assign(n, StallWatch{});
+    replan.assign(n, 0);
+    sideStepS.assign(n, 0.0f);
+    sideDir.assign(n, glm::vec2(0.0f));
+    target.assign(n, glm::vec2(0.0f));
+    hasTarget.assign(n, 0);
+    waiting.assign(n, 0);
+    waitingNext.assign(n, 0);
+    lostSteps.assign(n, 0);
+    noWay.assign(n, 0);
     // Plans at load, in agent order: a group starting in one cell shares one plan.
     for (std::size_t i = 0; i < n; ++i)
-        if (m_nav.mode[i] == Navigation::AStar && m_agents.goal[i] >= 0 && m_agents.path[i] < 0)
-            planNav(i);
+        if (mode[i] == Navigation::AStar && v.agents.goal[i] >= 0 && v.agents.path[i] < 0)
+            planFor(v, i);
     // Flow-field walkers where the field does not reach: is there a way at all?
     for (std::size_t i = 0; i < n; ++i)
-        if (m_nav.mode[i] == Navigation::FlowField && m_agents.goal[i] >= 0 && m_agents.path[i] < 0) {
-            const FlowField& field = m_nav.fields[std::size_t(m_agents.goal[i])];
-            const NavCell c = field.grid().nearestWalkable(field.grid().cellOf(navStart(i)));
+        if (mode[i] == Navigation::FlowField && v.agents.goal[i] >= 0 && v.agents.path[i] < 0) {
+            const FlowField& field = fields[std::size_t(v.agents.goal[i])];
+            const NavCell c = field.grid().nearestWalkable(field.grid().cellOf(startOf(v, i)));
             if (!field.grid().walkable(c) || !field.reachable(c))
-                m_nav.noWay[i] = noWayToGoal(i) ? 1 : 0;
+                noWay[i] = noWayToGoal(v, i) ? 1 : 0;
         }
 }
 
-glm::vec2 World::navStart(std::size_t i) const
+glm::vec2 WorldNav::startOf(const StepView& v, std::size_t i) const
 {
     // One that started inside a wall or obstacle walks out first (WorldEscape.cpp).
-    return m_agents.escaping[i] ? m_agents.escapeTo[i] : xz(m_agents.pos[i]);
+    return v.agents.escaping[i] ? v.agents.escapeTo[i] : xz(v.agents.pos[i]);
 }
 
-bool World::noWayToGoal(std::size_t i)
+bool WorldNav::noWayToGoal(const StepView& v, std::size_t i)
 {
-    if (!m_nav.reach.built()) {
-        const NavGrid& g = m_nav.grid;
+    if (!reach.built()) {
+        const NavGrid& g = grid;
         const glm::vec2 lo = g.origin(), hi = lo + glm::vec2(float(g.cols()), float(g.rows())) * g.cellM();
-        m_nav.reach.build(m_nav.reachShapes, lo, hi, m_nav.reachRadiusM,
+        reach.build(reachShapes, lo, hi, reachRadiusM,
                           NavReach::cellFor(lo, hi, std::min(0.5f * g.cellM(), 0.1f)));
     }
     // Only a walker found in a region that does not meet the goal waits; one pushed where
     // the grid cannot place it (deep in a wall's margin) goes on as before.
-    const Goal& g = m_set.goals[std::size_t(m_agents.goal[i])];
-    return m_nav.reach.regionAt(navStart(i)) >= 0 && !m_nav.reach.reaches(navStart(i), g.position, g.radiusM);
+    const Goal& g = v.set.goals[std::size_t(v.agents.goal[i])];
+    return reach.regionAt(startOf(v, i)) >= 0 && !reach.reaches(startOf(v, i), g.position, g.radiusM);
 }
 
-void World::planNav(std::size_t i)
+void WorldNav::planFor(const StepView& v, std::size_t i)
 {
-    const Goal& g = m_set.goals[std::size_t(m_agents.goal[i])];
-    m_nav.plan[i] = planBetween(m_nav.cache, m_nav.grid, navStart(i), g.position, m_nav.astar);
-    m_nav.planGoal[i] = m_agents.goal[i];
-    m_nav.noWay[i] = m_nav.plan[i] && m_nav.plan[i]->found() ? 0 : noWayToGoal(i) ? 1 : 0;
-    m_nav.waypoint[i] = 0;
-    m_nav.stall[i] = StallWatch{};
+    const Goal& g = v.set.goals[std::size_t(v.agents.goal[i])];
+    plan[i] = planBetween(cache, grid, startOf(v, i), g.position, astar);
+    planGoal[i] = v.agents.goal[i];
+    noWay[i] = plan[i] && plan[i]->found() ? 0 : noWayToGoal(v, i) ? 1 : 0;
+    waypoint[i] = 0;
+    stall[i] = StallWatch{};
 }
 
-void World::navBeforeStep()
+void WorldNav::beforeStep(const StepView& v)
 {
-    if (!m_nav.active)
+    if (!active)
         return;
-    const std::size_t n = m_agents.pos.size();
+    const std::size_t n = v.agents.pos.size();
     // Plan: serially and in agent order, so what the cache holds never depends on threads.
     for (std::size_t i = 0; i < n; ++i) {
-        if (m_nav.mode[i] != Navigation::AStar || m_agents.stopped[i] || m_agents.goal[i] < 0 || m_agents.path[i] >= 0)
+        if (mode[i] != Navigation::AStar || v.agents.stopped[i] || v.agents.goal[i] < 0 || v.agents.path[i] >= 0)
             continue;
-        const NavPlan* plan = m_nav.plan[i].get();
-        if (!plan || m_nav.planGoal[i] != m_agents.goal[i]) {
-            planNav(i);
-        } else if (PlanCache::stale(*plan, m_nav.grid)) {
-            ++m_nav.counters.stalePlans;
-            planNav(i);
-        } else if (m_nav.lostSteps[i] >= kLostSteps) {
+        const NavPlan* current = plan[i].get();
+        if (!current || planGoal[i] != v.agents.goal[i]) {
+            planFor(v, i);
+        } else if (PlanCache::stale(*current, grid)) {
+            ++counters.stalePlans;
+            planFor(v, i);
+        } else if (lostSteps[i] >= kLostSteps) {
             // Pushed off its way (the crowd at a crossing, a side-step) until a wall or a
-            // kerb stands between the walker and its corner: plan again from where it is.
-            m_nav.lostSteps[i] = 0;
-            m_nav.replan[i] = 0;
-            ++m_nav.counters.lostPlans;
-            planNav(i);
-        } else if (m_nav.replan[i]) {
-            // Stalled: plan around the spot just ahead (the jam or what it keeps pushing
+            // kerb stands between the walker and its corner: current again from where it is.
+            lostSteps[i] = 0;
+            replan[i] = 0;
+            ++counters.lostPlans;
+            planFor(v, i);
+        } else if (replan[i]) {
+            // Stalled: current around the spot just ahead (the jam or what it keeps pushing
             // against); with no way round, step aside for a moment instead.
-            m_nav.replan[i] = 0;
-            const glm::vec2 p = xz(m_agents.pos[i]);
-            glm::vec2 way = m_nav.hasTarget[i] ? m_nav.target[i] - p : m_agents.goalSpot[i] - p;
-            way = glm::dot(way, way) > 1e-8f ? glm::normalize(way) : xz(m_agents.fwd[i]);
-            const NavGrid& grid = m_nav.grid;
-            const NavCell start = grid.nearestWalkable(grid.cellOf(p));
-            const NavCell goal = grid.nearestWalkable(grid.cellOf(m_set.goals[std::size_t(m_agents.goal[i])].position));
-            NavPlan detour = planAround(m_nav.astar, grid, start, goal, p + way * (m_agents.radius[i] + kAvoidRadiusM),
+            replan[i] = 0;
+            const glm::vec2 p = xz(v.agents.pos[i]);
+            glm::vec2 way = hasTarget[i] ? target[i] - p : v.agents.goalSpot[i] - p;
+            way = glm::dot(way, way) > 1e-8f ? glm::normalize(way) : xz(v.agents.fwd[i]);
+            const NavGrid& cells = grid;
+            const NavCell from = cells.nearestWalkable(cells.cellOf(p));
+            const NavCell to = cells.nearestWalkable(cells.cellOf(v.set.goals[std::size_t(v.agents.goal[i])].position));
+            NavPlan detour = planAround(astar, cells, from, to, p + way * (v.agents.radius[i] + kAvoidRadiusM),
                                         kAvoidRadiusM);
             // Progress is measured along the new way from here on (a detour is longer).
-            m_nav.stall[i] = StallWatch{};
+            stall[i] = StallWatch{};
             if (detour.found()) {
-                m_nav.plan[i] = std::make_shared<const NavPlan>(std::move(detour));
-                m_nav.waypoint[i] = 0;
-                ++m_nav.counters.replans;
+                plan[i] = std::make_shared<const NavPlan>(std::move(detour));
+                waypoint[i] = 0;
+                ++counters.replans;
             } else {
-                const float sign = rngUniform(m_seed, m_agents.info[i].id, m_clock.step, kSideStepSign) < 0.5f ? -1.0f : 1.0f;
-                m_nav.sideDir[i] = glm::vec2(-way.y, way.x) * sign;
-                m_nav.sideStepS[i] = kSideStepDurationS;
-                ++m_nav.counters.sideSteps;
+                const float sign = rngUniform(v.seed, v.agents.info[i].id, v.clock.step, kSideStepSign) < 0.5f ? -1.0f : 1.0f;
+                sideDir[i] = glm::vec2(-way.y, way.x) * sign;
+                sideStepS[i] = kSideStepDurationS;
+                ++counters.sideSteps;
             }
         }
     }
     // Target: each walker from its own state.
-    m_team.forEach(n, 256, [&](std::size_t i) {
-        m_nav.waitingNext[i] = queueDepth(i);
-        updateNavTarget(i);
+    v.team.forEach(n, 256, [&](std::size_t i) {
+        waitingNext[i] = queueDepth(v, i);
+        updateTarget(v, i);
     });
-    m_nav.waiting.swap(m_nav.waitingNext);
+    waiting.swap(waitingNext);
 }
 
-std::uint8_t World::queueDepth(std::size_t i) const
+std::uint8_t WorldNav::queueDepth(const StepView& v, std::size_t i) const
 {
-    if (m_agents.stopped[i] || m_traffic.signal.empty() || m_types.params[m_agents.info[i].typeIndex].kind != AgentKind::Pedestrian)
+    if (v.agents.stopped[i] || v.traffic.signal.empty() || v.types.params[v.agents.info[i].typeIndex].kind != AgentKind::Pedestrian)
         return 0;
-    const PedestrianSignal& sig = m_traffic.signal[i];
+    const PedestrianSignal& sig = v.traffic.signal[i];
     if (sig.crosswalk >= 0 && !sig.onCrosswalk && (sig.mustStop || sig.phase != LightPhase::Green))
         return 1;
     // Right behind a waiting walker, in the way it wants to go: the queue waits too, one
@@ -236,85 +236,85 @@ std::uint8_t World::queueDepth(std::size_t i) const
     // are visited in does not matter. Two walkers facing each other would otherwise keep
     // each other "waiting" for ever (and never re-plan): without a head held at a light,
     // such a ring's depth grows by one a step until it passes the cap and dissolves.
-    const glm::vec2 p = xz(m_agents.pos[i]), way = wantedHeading(view(), i);
-    const std::uint32_t* near = &m_agents.nearIndex[i * kMaxNeighbours];
+    const glm::vec2 p = xz(v.agents.pos[i]), way = wantedHeading(v, i);
+    const std::uint32_t* near = &v.agents.nearIndex[i * kMaxNeighbours];
     std::uint8_t ahead = kMaxQueueDepth;
-    for (std::size_t k = 0; k < m_agents.nearCount[i]; ++k) {
+    for (std::size_t k = 0; k < v.agents.nearCount[i]; ++k) {
         const std::uint32_t j = near[k];
-        const glm::vec2 d = xz(m_agents.pos[j]) - p;
-        if (m_nav.waiting[j] && glm::length(d) < m_agents.radius[i] + m_agents.radius[j] + kQueueGapM && glm::dot(d, way) > 0.0f)
-            ahead = std::min(ahead, m_nav.waiting[j]);
+        const glm::vec2 d = xz(v.agents.pos[j]) - p;
+        if (waiting[j] && glm::length(d) < v.agents.radius[i] + v.agents.radius[j] + kQueueGapM && glm::dot(d, way) > 0.0f)
+            ahead = std::min(ahead, waiting[j]);
     }
     return ahead < kMaxQueueDepth ? std::uint8_t(ahead + 1) : 0;
 }
 
-void World::updateNavTarget(std::size_t i)
+void WorldNav::updateTarget(const StepView& v, std::size_t i)
 {
-    m_nav.hasTarget[i] = 0;
-    const Navigation mode = m_nav.mode[i];
-    if (mode == Navigation::Direct || m_agents.stopped[i] || m_agents.goal[i] < 0 || m_agents.path[i] >= 0)
+    hasTarget[i] = 0;
+    const Navigation how = mode[i];
+    if (how == Navigation::Direct || v.agents.stopped[i] || v.agents.goal[i] < 0 || v.agents.path[i] >= 0)
         return;
-    const glm::vec2 p = xz(m_agents.pos[i]);
+    const glm::vec2 p = xz(v.agents.pos[i]);
     // The target lies beyond the arrival's slowing distance, so a walker keeps its pace
     // through corners and down the field and slows only for its own spot in the goal.
-    const float carrot = m_types.steering[m_agents.info[i].typeIndex].arrival.slowingDistanceM + 0.5f;
+    const float carrot = v.types.steering[v.agents.info[i].typeIndex].arrival.slowingDistanceM + 0.5f;
     auto aim = [&](glm::vec2 dir, float distance) {
-        m_nav.target[i] = p + dir * std::max(distance, carrot);
-        m_nav.hasTarget[i] = 1;
+        target[i] = p + dir * std::max(distance, carrot);
+        hasTarget[i] = 1;
     };
-    if (m_nav.sideStepS[i] > 0.0f) {
-        m_nav.sideStepS[i] -= m_clock.dt;
-        aim(m_nav.sideDir[i], 0.0f);
+    if (sideStepS[i] > 0.0f) {
+        sideStepS[i] -= v.clock.dt;
+        aim(sideDir[i], 0.0f);
         return;
     }
-    const std::size_t goal = std::size_t(m_agents.goal[i]);
-    float remainingM = glm::distance(p, m_agents.goalSpot[i]);
+    const std::size_t goal = std::size_t(v.agents.goal[i]);
+    float remainingM = glm::distance(p, v.agents.goalSpot[i]);
     // No way to the goal (walls close it off, or its door is narrower than the body): the
     // walker waits where it stands. Heading straight at the goal instead, it pressed against
-    // the set, stalled, side-stepped and tried again for the whole shot (issue 23). A plan
+    // the set, stalled, side-stepped and tried again for the whole shot (issue 23). A current
     // made on a changed grid is stale and made again, so a door that opens lets it go.
     auto wait = [&] {
-        m_nav.target[i] = p;
-        m_nav.hasTarget[i] = 1;
-        m_nav.stall[i] = StallWatch{};
+        target[i] = p;
+        hasTarget[i] = 1;
+        stall[i] = StallWatch{};
     };
-    if (mode == Navigation::AStar) {
-        const NavPlan* plan = m_nav.plan[i].get();
-        if (m_nav.noWay[i] && m_nav.planGoal[i] == m_agents.goal[i])
+    if (how == Navigation::AStar) {
+        const NavPlan* current = plan[i].get();
+        if (noWay[i] && planGoal[i] == v.agents.goal[i])
             return wait();
-        if (plan && plan->found() && m_nav.planGoal[i] == m_agents.goal[i]) {
-            const std::vector<glm::vec2>& w = plan->waypoints;
+        if (current && current->found() && planGoal[i] == v.agents.goal[i]) {
+            const std::vector<glm::vec2>& w = current->waypoints;
             // Within its own radius of a corner the walker turns for the next one, but only
             // once it can see it: cutting a corner short must not lead into a wall's end.
-            std::size_t k = m_nav.waypoint[i];
+            std::size_t k = waypoint[i];
             while (k + 1 < w.size()) {
-                const std::size_t next = advanceWaypoint(w, k, p, m_nav.waypointRadiusM[i]);
-                if (next == k || (glm::distance(p, w[k]) > kCornerReachedM && !lineOfSight(m_nav.grid, p, w[k + 1])))
+                const std::size_t next = advanceWaypoint(w, k, p, waypointRadiusM[i]);
+                if (next == k || (glm::distance(p, w[k]) > kCornerReachedM && !lineOfSight(grid, p, w[k + 1])))
                     break;
                 ++k;
             }
-            m_nav.waypoint[i] = std::uint32_t(k);
+            waypoint[i] = std::uint32_t(k);
             // Seen from the nearest walkable cell: a walker brushing a wall stands in its
             // inflated margin, from where nothing is in sight.
-            const NavGrid& grid = m_nav.grid;
-            const NavCell at = grid.cellOf(p);
-            const glm::vec2 eye = grid.walkable(at) ? p : grid.centre(grid.nearestWalkable(at));
-            const bool inSight = glm::distance(p, w[k]) <= kCornerReachedM || lineOfSight(grid, eye, w[k]);
-            m_nav.lostSteps[i] = inSight ? 0 : std::uint8_t(std::min<int>(m_nav.lostSteps[i] + 1, kLostSteps));
+            const NavGrid& cells = grid;
+            const NavCell at = cells.cellOf(p);
+            const glm::vec2 eye = cells.walkable(at) ? p : cells.centre(cells.nearestWalkable(at));
+            const bool inSight = glm::distance(p, w[k]) <= kCornerReachedM || lineOfSight(cells, eye, w[k]);
+            lostSteps[i] = inSight ? 0 : std::uint8_t(std::min<int>(lostSteps[i] + 1, kLostSteps));
             // The last waypoint is the goal cell's centre: from there on the walker heads
             // for its own spot, as a direct walker does.
             if (k + 1 < w.size()) {
                 const glm::vec2 d = w[k] - p;
                 const float len = glm::length(d);
-                remainingM = len + glm::distance(w.back(), m_agents.goalSpot[i]);
+                remainingM = len + glm::distance(w.back(), v.agents.goalSpot[i]);
                 for (std::size_t j = k; j + 1 < w.size(); ++j)
                     remainingM += glm::distance(w[j], w[j + 1]);
                 if (len > 1e-4f)
                     aim(d / len, len);
             }
         }
-    } else if (goal < m_nav.hasField.size() && m_nav.hasField[goal]) {
-        const FlowField& field = m_nav.fields[goal];
+    } else if (goal < hasField.size() && hasField[goal]) {
+        const FlowField& field = fields[goal];
         const NavGrid& grid = field.grid();
         const NavCell c = grid.cellOf(p);
         if (field.reachable(c)) {
@@ -325,19 +325,19 @@ void World::updateNavTarget(std::size_t i)
                 // density ahead allows, so a door's queue packs no tighter than people do.
                 // Arrival sets the speed from the target's distance, so the target comes
                 // as close as that speed asks.
-                const float slowing = m_types.steering[m_agents.info[i].typeIndex].arrival.slowingDistanceM;
-                const float fraction = crowdSpeedFraction(i, dir);
+                const float slowing = v.types.steering[v.agents.info[i].typeIndex].arrival.slowingDistanceM;
+                const float fraction = crowdSpeedFraction(v, i, dir);
                 if (fraction < 1.0f && slowing > 0.0f) {
-                    m_nav.target[i] = p + dir * (slowing * fraction);
-                    m_nav.hasTarget[i] = 1;
+                    target[i] = p + dir * (slowing * fraction);
+                    hasTarget[i] = 1;
                 } else {
                     aim(dir, 0.0f);
                 }
             }
         } else if (const NavCell free = onwardOrNearestWalkable(field, c, [&](glm::vec2 q) {
                        bool crossed = false;
-                       m_set.walls.forEachNear((p + q) * 0.5f, 0.5f * glm::distance(p, q) + 0.01f, [&](std::uint32_t k) {
-                           const Segment& w = m_set.walls.segment(k);
+                       v.set.walls.forEachNear((p + q) * 0.5f, 0.5f * glm::distance(p, q) + 0.01f, [&](std::uint32_t k) {
+                           const Segment& w = v.set.walls.segment(k);
                            crossed = crossed || segmentsCross(p, q, w.a, w.b);
                        });
                        return !crossed;
@@ -354,27 +354,27 @@ void World::updateNavTarget(std::size_t i)
             remainingM = field.distanceM(free) + len;
             if (len > 1e-4f)
                 aim(d / len, 0.0f);
-        } else if (m_nav.noWay[i]) {
+        } else if (noWay[i]) {
             return wait();
         }
     }
     // Stall watch: waiting at a light is not being stuck. A flow-field walker in a queue
     // is not stuck either (the field already leads round the set), so only A* walkers act.
-    if (m_nav.waitingNext[i])
-        m_nav.stall[i] = StallWatch{};
-    else if (updateStall(m_nav.stall[i], remainingM, m_clock.dt) && mode == Navigation::AStar)
-        m_nav.replan[i] = 1;
+    if (waitingNext[i])
+        stall[i] = StallWatch{};
+    else if (updateStall(stall[i], remainingM, v.clock.dt) && how == Navigation::AStar)
+        replan[i] = 1;
 }
 
-float World::crowdSpeedFraction(std::size_t i, glm::vec2 way) const
+float WorldNav::crowdSpeedFraction(const StepView& v, std::size_t i, glm::vec2 way) const
 {
     // Weidmann (1993): v(rho) = v0 (1 - exp(-1.913 (1/rho - 1/5.4))), rho in persons/m^2,
     // from the walkers in the half disk ahead (last step's neighbours: thread-independent).
-    const glm::vec2 p = xz(m_agents.pos[i]);
-    const std::uint32_t* near = &m_agents.nearIndex[i * kMaxNeighbours];
+    const glm::vec2 p = xz(v.agents.pos[i]);
+    const std::uint32_t* near = &v.agents.nearIndex[i * kMaxNeighbours];
     int ahead = 0;
-    for (std::size_t k = 0; k < m_agents.nearCount[i]; ++k) {
-        const glm::vec2 d = xz(m_agents.pos[near[k]]) - p;
+    for (std::size_t k = 0; k < v.agents.nearCount[i]; ++k) {
+        const glm::vec2 d = xz(v.agents.pos[near[k]]) - p;
         ahead += glm::dot(d, d) < kDensityRadiusM * kDensityRadiusM && glm::dot(d, way) > 0.0f ? 1 : 0;
     }
     const float rho = float(ahead) / (0.5f * 3.14159265f * kDensityRadiusM * kDensityRadiusM);

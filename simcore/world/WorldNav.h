@@ -1,8 +1,8 @@
 #pragma once
 // The navigation side of a World: the scene's NavGrid, shared A* plans, one flow field per
 // goal that flow-field walkers head for, and per walker where it steers this step (its
-// current waypoint, the field's way, or a side-step). Plain state the World's navigation
-// phase (WorldNav.cpp) reads and writes; it never moves agents itself.
+// current waypoint, the field's way, or a side-step). The navigation phase (WorldNav.cpp)
+// owns this state and reads the World through a StepView; it never moves agents itself.
 
 #include "simcore/nav/AStar.h"
 #include "simcore/nav/FlowField.h"
@@ -11,6 +11,7 @@
 #include "simcore/nav/NavReach.h"
 #include "simcore/nav/PlanCache.h"
 #include "simcore/nav/SketchField.h"
+#include "simcore/scene/Scene.h"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -29,6 +30,8 @@ struct NavCounters {
     std::uint64_t stalePlans = 0;  // plans made again because the grid changed
     std::uint64_t lostPlans = 0;   // walkers pushed off their way (waypoint out of sight) that planned afresh
 };
+
+struct StepView;
 
 struct WorldNav {
     bool active = false;  // some walker navigates by A* or a flow field
@@ -77,6 +80,20 @@ struct WorldNav {
     // The sketched field's direction at p (zero where the field is weaker than
     // kSketchMinStrength); false when the scene has no sketched field.
     bool sketchedFlow(glm::vec3 p, glm::vec3& direction) const;
+
+    // The phase (WorldNav.cpp). build: the grid, fields and plans for a World's agents,
+    // once; beforeStep: plans, then each walker's target for this step. Both read the
+    // World only through the view and write only this state.
+    void build(const Scene& scene, const StepView& v);
+    void beforeStep(const StepView& v);
+
+private:
+    glm::vec2 startOf(const StepView& v, std::size_t i) const;  // where its way starts: its place, or where it walks out to
+    bool noWayToGoal(const StepView& v, std::size_t i);        // no body of its size gets to its goal (builds reach)
+    void planFor(const StepView& v, std::size_t i);
+    std::uint8_t queueDepth(const StepView& v, std::size_t i) const;
+    void updateTarget(const StepView& v, std::size_t i);
+    float crowdSpeedFraction(const StepView& v, std::size_t i, glm::vec2 way) const;  // Weidmann, of free speed, (0, 1]
 };
 
 }  // namespace throng::sim

@@ -48,7 +48,7 @@ void World::stepOnce()
     m_clock.decide = decisionAt(m_clock.step, double(m_clock.dt));
     m_clock.decideDt = m_clock.decide ? float(decisionIntervalS(m_clock.step, double(m_clock.dt))) : m_clock.decideDt;
     // Navigate: plans and each walker's waypoint or flow direction (WorldNav.cpp).
-    navBeforeStep();
+    m_nav.beforeStep(view());
     // Brain: sensors from this (previous) state, then each type's program; before the
     // traffic step, which drives brain-driven vehicles by their brains' speeds.
     if (m_brains)
