@@ -65,14 +65,19 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
 
     connect(&m_document, &SceneDocument::sceneReset, this, [this] {
         m_editTimer->stop();
+        m_pendingChange.reset();
         const QString path = m_document.filePath();
         m_viewport->setSceneDirectory(path.isEmpty() ? QString() : QFileInfo(path).absolutePath());
         m_viewport->setScene(m_document.scene());
         m_viewport->setHighlight(m_document.scene(), m_document.selection());
         m_simulation->setScene(m_document.scene());
     });
-    // A brush stroke edits many times between two paints: refresh once per burst.
-    connect(&m_document, &SceneDocument::sceneChanged, m_editTimer, qOverload<>(&QTimer::start));
+    // A brush stroke edits many times between two paints: refresh once per burst, with
+    // what the whole burst changed.
+    connect(&m_document, &SceneDocument::sceneChanged, this, [this](const SceneChange& change) {
+        m_pendingChange = m_pendingChange ? *m_pendingChange | change : change;
+        m_editTimer->start();
+    });
     connect(m_editTimer, &QTimer::timeout, this, &MainWindow::refreshAfterEdit);
     connect(&m_document, &SceneDocument::selectionChanged, this,
             [this] { m_viewport->setHighlight(m_document.scene(), m_document.selection()); });
@@ -391,12 +396,16 @@ void MainWindow::createStatusBar()
 
 void MainWindow::refreshAfterEdit()
 {
+    if (!m_pendingChange)
+        return;
+    const SceneChange change = std::move(*m_pendingChange);
+    m_pendingChange.reset();
+    // The set at once, and the shown frame as the edited scene colours it; the simulation
+    // brings the frame to show when the edit changes it (the edit frame again, or frame 0
+    // of a run that starts over). Nothing here builds a World.
     m_viewport->updateScene(m_document.scene());
     m_viewport->setHighlight(m_document.scene(), m_document.selection());
-    m_simulation->setScene(m_document.scene());
-    // An edit the simulation does not read keeps the recording: stay on the shown frame.
-    if (m_simulation->currentFrame() < m_simulation->recordedFrames())
-        m_viewport->showFrame(m_simulation->cache(), m_simulation->currentFrame());
+    m_simulation->applyEdit(m_document.scene(), change);
 }
 
 void MainWindow::updateAgentStatus()

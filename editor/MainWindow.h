@@ -4,12 +4,14 @@
 // SceneDocument and one SimulationController. Wires them together; it computes nothing
 // and never edits the scene itself (tools and panels push commands).
 
+#include "editor/SceneChange.h"
 #include "editor/SceneDocument.h"
 
 #include <QMainWindow>
 #include <QMessageBox>
 
 #include <functional>
+#include <optional>
 
 class QDockWidget;
 class QLabel;
@@ -114,6 +116,9 @@ private:
     QLabel* m_frameLabel = nullptr;
     QLabel* m_speedLabel = nullptr;
     QTimer* m_editTimer = nullptr;
+    // The union of the changes since the last refresh (a brush stroke edits many times
+    // between two paints).
+    std::optional<SceneChange> m_pendingChange;
     std::function<QMessageBox::StandardButton()> m_prompt;
 };
 

@@ -86,7 +86,7 @@ void SceneDocument::setSelection(Selection selection)
     emit selectionChanged();
 }
 
-void SceneDocument::modify(const std::function<void(sim::Scene&)>& edit)
+void SceneDocument::modify(const SceneChange& change, const std::function<void(sim::Scene&)>& edit)
 {
     edit(m_scene);
     // Undoing an addition may remove a selected item.
@@ -94,7 +94,7 @@ void SceneDocument::modify(const std::function<void(sim::Scene&)>& edit)
     for (const SceneItem& item : m_selection)
         if (item.index < itemCount(m_scene, item.kind))
             kept.push_back(item);
-    emit sceneChanged();
+    emit sceneChanged(change);
     setSelection(std::move(kept));
 }
 

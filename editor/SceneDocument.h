@@ -2,6 +2,7 @@
 // The open scene: owns the sim::Scene, its undo stack and its file path, and tells views
 // when the scene is replaced or edited. Loading never half-loads; it never draws.
 
+#include "editor/SceneChange.h"
 #include "editor/SceneItem.h"
 #include "simcore/base/Diagnostic.h"
 #include "simcore/io/SceneIO.h"
@@ -48,8 +49,10 @@ public:
     void reset(sim::Scene initial = {});
 
     // The one mutator commands use: applies `edit` to the scene, then emits
-    // sceneChanged(). Only QUndoCommands call it, so every edit is undoable.
-    void modify(const std::function<void(sim::Scene&)>& edit);
+    // sceneChanged(change). `change` says what `edit` changes; a command's undo passes
+    // the same description as its redo. Only QUndoCommands call it, so every edit is
+    // undoable.
+    void modify(const SceneChange& change, const std::function<void(sim::Scene&)>& edit);
     // A stable id not yet used by any placed agent, vehicle or hero (> 0), nor by a
     // group member of a World of the scene.
     std::uint32_t nextAgentId() const;
@@ -61,8 +64,8 @@ public:
 signals:
     // The whole scene was replaced (opened); views rebuild everything.
     void sceneReset();
-    // Part of the scene was edited through a command.
-    void sceneChanged();
+    // Part of the scene was edited through a command: `change` says which.
+    void sceneChanged(const throng::editor::SceneChange& change);
     void filePathChanged(const QString& path);
     void modifiedChanged(bool modified);
     void selectionChanged();

@@ -28,6 +28,10 @@ public:
     int id() const override;
     bool mergeWith(const QUndoCommand* other) override;
 
+    // The brain's program, or only its layout when nothing but node places and labels
+    // differ (redo and undo send it).
+    SceneChange change() const;
+
 private:
     void apply(const sim::BrainGraph& graph);
 
@@ -49,6 +53,9 @@ public:
 
     void redo() override;
     void undo() override;
+
+    // The brain list, every type's brain and the placed agents' own (redo and undo send it).
+    SceneChange change() const;
 
 private:
     void apply(const State& state);

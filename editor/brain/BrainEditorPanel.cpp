@@ -65,7 +65,10 @@ BrainEditorPanel::BrainEditorPanel(SceneDocument& document, SimulationController
     auto rescene = [this] {
         refreshList();  // agent types and brain names may change without the shown graph
     };
-    connect(&m_document, &SceneDocument::sceneChanged, this, rescene);
+    connect(&m_document, &SceneDocument::sceneChanged, this, [rescene](const SceneChange& change) {
+        if (change.touches(ItemKind::Brain) || change.touches(ItemKind::AgentType))
+            rescene();
+    });
     connect(&m_document, &SceneDocument::sceneReset, this, rescene);
     connect(&m_document, &SceneDocument::sceneReset, this, [this] {
         pickAgent(-1);

@@ -12,7 +12,11 @@ namespace throng::editor {
 
 BrainGraphModel::BrainGraphModel(SceneDocument& document, QObject* parent) : QObject(parent), m_document(document)
 {
-    connect(&m_document, &SceneDocument::sceneChanged, this, &BrainGraphModel::refresh);
+    // Only the brain list holds what the model shows.
+    connect(&m_document, &SceneDocument::sceneChanged, this, [this](const SceneChange& change) {
+        if (change.touches(ItemKind::Brain))
+            refresh();
+    });
     connect(&m_document, &SceneDocument::sceneReset, this, [this] {
         m_brain = -1;
         m_fresh = false;

@@ -8,9 +8,34 @@
 #include <QString>
 #include <QUndoCommand>
 
+#include <cstddef>
+#include <type_traits>
 #include <vector>
 
 namespace throng::editor {
+
+// The kind of the scene's items of type Item (a list of Scene).
+template <class Item>
+constexpr ItemKind listKind()
+{
+    if constexpr (std::is_same_v<Item, sim::AgentType>) return ItemKind::AgentType;
+    else if constexpr (std::is_same_v<Item, sim::SpawnGroup>) return ItemKind::Group;
+    else if constexpr (std::is_same_v<Item, sim::Agent>) return ItemKind::Agent;
+    else if constexpr (std::is_same_v<Item, sim::Path>) return ItemKind::Path;
+    else if constexpr (std::is_same_v<Item, sim::Wall>) return ItemKind::Wall;
+    else if constexpr (std::is_same_v<Item, sim::Obstacle>) return ItemKind::Obstacle;
+    else if constexpr (std::is_same_v<Item, sim::Goal>) return ItemKind::Goal;
+    else if constexpr (std::is_same_v<Item, sim::TrafficLight>) return ItemKind::TrafficLight;
+    else if constexpr (std::is_same_v<Item, sim::Lane>) return ItemKind::Lane;
+    else if constexpr (std::is_same_v<Item, sim::FlowStroke>) return ItemKind::FlowStroke;
+    else if constexpr (std::is_same_v<Item, sim::Hero>) return ItemKind::Hero;
+    else if constexpr (std::is_same_v<Item, sim::BrainGraph>) return ItemKind::Brain;
+    else if constexpr (std::is_same_v<Item, sim::Crosswalk>) return ItemKind::Crosswalk;
+    else {
+        static_assert(std::is_same_v<Item, sim::Vehicle>, "not an item of a scene list");
+        return ItemKind::Vehicle;
+    }
+}
 
 template <class Item>
 class AddSceneItemCommand : public QUndoCommand {
@@ -25,15 +50,20 @@ public:
 
     void redo() override
     {
-        m_document.modify([this](sim::Scene& s) { (s.*m_list).push_back(m_item); });
+        const std::size_t index = (m_document.scene().*m_list).size();
+        m_document.modify(change(index), [this](sim::Scene& s) { (s.*m_list).push_back(m_item); });
     }
 
     void undo() override
     {
-        m_document.modify([this](sim::Scene& s) { (s.*m_list).pop_back(); });
+        const std::size_t index = (m_document.scene().*m_list).size() - 1;
+        m_document.modify(change(index), [this](sim::Scene& s) { (s.*m_list).pop_back(); });
     }
 
 private:
+    // The item at `index` of its list comes or goes.
+    static SceneChange change(std::size_t index) { return SceneChange::of(listKind<Item>(), {index}, SceneField::Items); }
+
     SceneDocument& m_document;
     List m_list;
     Item m_item;

@@ -3,6 +3,7 @@
 // assign brush. Records each agent as it was so undo restores it exactly; dabs of one
 // stroke merge into one step ("Comb 40 agents"). Never touches widgets.
 
+#include "editor/SceneChange.h"
 #include "simcore/scene/Scene.h"
 
 #include <QString>
@@ -29,6 +30,8 @@ public:
     bool mergeWith(const QUndoCommand* other) override;
 
     std::size_t agentCount() const { return m_changes.size(); }
+    // The agents changed and the fields of theirs that differ (redo and undo send it).
+    SceneChange change() const;
 
 private:
     struct Change {

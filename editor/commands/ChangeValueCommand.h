@@ -1,7 +1,8 @@
 #pragma once
 // Sets one value of the scene (a property edit), after Tiled's ChangeValue: redo and undo
 // swap the stored value with the scene's. Edits of the same property in a row (a spin
-// box scrub) merge into one step, and a net change of zero becomes obsolete.
+// box scrub) merge into one step, and a net change of zero becomes obsolete. The caller
+// says what the value is (a SceneChange), for both redo and undo.
 
 #include "editor/SceneDocument.h"
 #include "editor/commands/CommandIds.h"
@@ -17,11 +18,14 @@ namespace throng::editor {
 template <class Value>
 class ChangeValueCommand : public QUndoCommand {
 public:
-    // `locate` finds the value in the scene; `key` names the property (same key = merge).
+    // `locate` finds the value in the scene; `key` names the property (same key = merge);
+    // `change` names the item and field the value is.
     using Locate = std::function<Value&(sim::Scene&)>;
 
-    ChangeValueCommand(SceneDocument& document, QString key, Locate locate, Value value, const QString& text)
-        : m_document(document), m_key(std::move(key)), m_locate(std::move(locate)), m_value(std::move(value))
+    ChangeValueCommand(SceneDocument& document, QString key, Locate locate, Value value, const QString& text,
+                       SceneChange change)
+        : m_document(document), m_key(std::move(key)), m_locate(std::move(locate)), m_value(std::move(value)),
+          m_change(std::move(change))
     {
         setText(text);
     }
@@ -44,13 +48,14 @@ public:
 private:
     void swap()
     {
-        m_document.modify([this](sim::Scene& s) { std::swap(m_locate(s), m_value); });
+        m_document.modify(m_change, [this](sim::Scene& s) { std::swap(m_locate(s), m_value); });
     }
 
     SceneDocument& m_document;
     QString m_key;
     Locate m_locate;
     Value m_value;
+    SceneChange m_change;
 };
 
 }  // namespace throng::editor

@@ -2,7 +2,8 @@
 // Sets one property on several scene values at once (a properties-panel edit of a
 // multi-selection, or a rename with every reference to the old name): one undo step.
 // Redo and undo swap the stored values with the scene's in one SceneDocument::modify.
-// Edits with the same non-empty key in a row (a spin box drag) merge into one step.
+// Edits with the same non-empty key in a row (a spin box drag) merge into one step. The
+// caller says what the values are (a SceneChange), for both redo and undo.
 
 #include "editor/SceneDocument.h"
 #include "editor/commands/CommandIds.h"
@@ -24,8 +25,8 @@ public:
     using Locate = std::function<Value&(sim::Scene&)>;
 
     ChangeValuesCommand(SceneDocument& document, QString key, std::vector<Locate> locates, std::vector<Value> values,
-                        const QString& text)
-        : m_document(document), m_key(std::move(key)), m_locates(std::move(locates))
+                        const QString& text, SceneChange change)
+        : m_document(document), m_key(std::move(key)), m_locates(std::move(locates)), m_change(std::move(change))
     {
         values.resize(m_locates.size());
         for (std::size_t k = 0; k < values.size(); ++k)
@@ -60,7 +61,7 @@ public:
 private:
     void swap()
     {
-        m_document.modify([this](sim::Scene& s) {
+        m_document.modify(m_change, [this](sim::Scene& s) {
             for (std::size_t k = 0; k < m_locates.size(); ++k)
                 std::swap(m_locates[k](s), m_values[k].value);
         });
@@ -75,6 +76,7 @@ private:
     QString m_key;
     std::vector<Locate> m_locates;
     std::vector<Stored> m_values;
+    SceneChange m_change;
 };
 
 }  // namespace throng::editor

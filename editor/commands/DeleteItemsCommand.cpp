@@ -130,13 +130,28 @@ void DeleteItemsCommand::checkReferences(const sim::Scene& scene, const Selectio
     for (const auto& [index, vehicle] : m_vehicles)
         ids.push_back(vehicle.id);
     for (std::uint32_t id : ids)
-        for (const LeaderUse& use : leaderUses(scene, id))
+        for (const LeaderUse& use : leaderUses(scene, id)) {
             m_clearedLeaders.emplace_back(use.locate, id);
+            m_leaderUsers.push_back(use.user);
+        }
+}
+
+SceneChange DeleteItemsCommand::change()
+{
+    // Every list deleted from: the indices after a deleted item shift.
+    SceneChange change;
+    forEachList(m_document.scene(), [&change](const auto&, const auto& removed, ItemKind kind) {
+        if (!removed.empty())
+            change |= SceneChange::ofAll(kind, SceneField::Items);
+    });
+    for (const SceneItem& user : m_leaderUsers)
+        change |= SceneChange::of(user, SceneField::Route);
+    return change;
 }
 
 void DeleteItemsCommand::redo()
 {
-    m_document.modify([this](sim::Scene& s) {
+    m_document.modify(change(), [this](sim::Scene& s) {
         for (const auto& [locate, id] : m_clearedLeaders)
             locate(s) = 0;
         forEachList(s, [](auto& list, const auto& removed, ItemKind) { removeAll(list, removed); });
@@ -145,7 +160,7 @@ void DeleteItemsCommand::redo()
 
 void DeleteItemsCommand::undo()
 {
-    m_document.modify([this](sim::Scene& s) {
+    m_document.modify(change(), [this](sim::Scene& s) {
         forEachList(s, [](auto& list, const auto& removed, ItemKind) { restoreAll(list, removed); });
         for (const auto& [locate, id] : m_clearedLeaders)
             locate(s) = id;

@@ -42,6 +42,8 @@ private:
     template <class Scene, class F>
     void forEachList(Scene& scene, F f);
     void checkReferences(const sim::Scene& scene, const Selection& items);
+    // What redo and undo change: the lists deleted from, and the followers of a deleted leader.
+    SceneChange change();
 
     SceneDocument& m_document;
     std::size_t m_count = 0;
@@ -62,6 +64,7 @@ private:
     Removed<sim::BrainGraph> m_brains;
     // Leaders cleared because the agent, vehicle or hero they name is deleted, with the old id.
     std::vector<std::pair<std::function<std::uint32_t&(sim::Scene&)>, std::uint32_t>> m_clearedLeaders;
+    std::vector<SceneItem> m_leaderUsers;  // who those leaders belong to, as indexed before the delete
 };
 
 }  // namespace throng::editor

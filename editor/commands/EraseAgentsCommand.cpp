@@ -20,7 +20,8 @@ EraseAgentsCommand::EraseAgentsCommand(SceneDocument& document, std::vector<std:
 
 void EraseAgentsCommand::redo()
 {
-    m_document.modify([this](sim::Scene& s) {
+    // Removing shifts the indices of the agents after the erased ones.
+    m_document.modify(SceneChange::ofAll(ItemKind::Agent, SceneField::Items), [this](sim::Scene& s) {
         for (Batch& batch : m_batches) {
             batch.agents.clear();
             for (std::size_t i : batch.indices)
@@ -34,7 +35,7 @@ void EraseAgentsCommand::redo()
 
 void EraseAgentsCommand::undo()
 {
-    m_document.modify([this](sim::Scene& s) {
+    m_document.modify(SceneChange::ofAll(ItemKind::Agent, SceneField::Items), [this](sim::Scene& s) {
         for (auto batch = m_batches.rbegin(); batch != m_batches.rend(); ++batch)
             for (std::size_t k = 0; k < batch->indices.size(); ++k)
                 s.agents.insert(s.agents.begin() + std::ptrdiff_t(batch->indices[k]), batch->agents[k]);

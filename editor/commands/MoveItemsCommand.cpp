@@ -89,7 +89,10 @@ MoveItemsCommand::MoveItemsCommand(SceneDocument& document, Selection items, glm
 
 void MoveItemsCommand::place(bool moved)
 {
-    m_document.modify([this, moved](sim::Scene& s) {
+    SceneChange change;
+    for (const SceneItem& item : m_items)
+        change |= SceneChange::of(item, SceneField::Position);
+    m_document.modify(change, [this, moved](sim::Scene& s) {
         for (std::size_t k = 0; k < m_items.size(); ++k) {
             std::size_t n = 0;
             forEachPoint(s, m_items[k], [&](glm::vec2& p) {

@@ -147,6 +147,24 @@ std::vector<NameUse> nameUses(const sim::Scene& scene, ItemKind kind, const std:
     return out;
 }
 
+SceneChange renameChange(SceneItem item, const std::vector<NameUse>& uses)
+{
+    const SceneField reference = item.kind == ItemKind::AgentType ? SceneField::Type
+                                 : item.kind == ItemKind::Brain   ? SceneField::Brain
+                                                                  : SceneField::Route;
+    SceneChange change = SceneChange::of(item, SceneField::Name);
+    for (const NameUse& use : uses) {
+        if (use.user) {
+            change |= SceneChange::of(*use.user, reference);
+        } else {
+            // A reference held by nothing listed: say only that the simulation reads it.
+            change.fields |= fieldBit(reference);
+            change.simulationReads = true;
+        }
+    }
+    return change;
+}
+
 std::vector<LeaderUse> leaderUses(const sim::Scene& scene, std::uint32_t id)
 {
     std::vector<LeaderUse> out;

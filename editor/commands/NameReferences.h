@@ -3,6 +3,7 @@
 // an agent of a type) or by its agent id (a leader). Plain functions over the scene,
 // shared by renames (which rewrite the references) and deletes (which refuse or clear).
 
+#include "editor/SceneChange.h"
 #include "editor/SceneItem.h"
 
 #include <QString>
@@ -32,6 +33,11 @@ std::vector<std::string> namesOf(const sim::Scene& scene, ItemKind kind);
 // Every reference to `name` as an item of `kind` (types, brains, paths, goals, lanes,
 // crosswalks).
 std::vector<NameUse> nameUses(const sim::Scene& scene, ItemKind kind, const std::string& name);
+
+// A rename of `item` that rewrites `uses` (its references) too: the item's name and, in
+// each user, the field that names it (a group's path is its route, an agent's type its
+// type). The simulation reads it when it reads the name or a reference changes.
+SceneChange renameChange(SceneItem item, const std::vector<NameUse>& uses);
 
 // One reference to an agent id (a `leader`): the agents and groups that follow it.
 struct LeaderUse {

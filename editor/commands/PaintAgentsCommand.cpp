@@ -13,15 +13,25 @@ PaintAgentsCommand::PaintAgentsCommand(SceneDocument& document, std::vector<sim:
     updateText();
 }
 
+SceneChange PaintAgentsCommand::change(std::size_t first) const
+{
+    std::vector<std::size_t> indices(m_agents.size());
+    for (std::size_t k = 0; k < indices.size(); ++k)
+        indices[k] = first + k;
+    return SceneChange::of(ItemKind::Agent, std::move(indices), SceneField::Items);
+}
+
 void PaintAgentsCommand::redo()
 {
-    m_document.modify([this](sim::Scene& s) { s.agents.insert(s.agents.end(), m_agents.begin(), m_agents.end()); });
+    m_document.modify(change(m_document.scene().agents.size()),
+                      [this](sim::Scene& s) { s.agents.insert(s.agents.end(), m_agents.begin(), m_agents.end()); });
 }
 
 void PaintAgentsCommand::undo()
 {
     // Our agents are the last ones: every later command has been undone first.
-    m_document.modify([this](sim::Scene& s) { s.agents.resize(s.agents.size() - m_agents.size()); });
+    m_document.modify(change(m_document.scene().agents.size() - m_agents.size()),
+                      [this](sim::Scene& s) { s.agents.resize(s.agents.size() - m_agents.size()); });
 }
 
 int PaintAgentsCommand::id() const

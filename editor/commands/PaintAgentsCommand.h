@@ -2,6 +2,7 @@
 // Adds placed agents at the end of the scene's agent list: one brush dab. Dabs of one
 // stroke merge into a single undo step ("Paint 240 agents"). Never touches widgets.
 
+#include "editor/SceneChange.h"
 #include "simcore/scene/Scene.h"
 
 #include <QUndoCommand>
@@ -26,6 +27,8 @@ public:
     std::size_t agentCount() const { return m_agents.size(); }
 
 private:
+    // Our agents, the first of them at index `first`, come or go.
+    SceneChange change(std::size_t first) const;
     void updateText();
 
     SceneDocument& m_document;

@@ -15,6 +15,12 @@ constexpr int kKindRole = Qt::UserRole;
 constexpr int kIndexRole = Qt::UserRole + 1;
 constexpr int kGroupRole = Qt::UserRole + 2;  // agent-group rows: the group's name
 constexpr int kAgentGroups = -100;            // kKindRole of the agent-group heading and rows
+// What the rows show of an item: the lists themselves, names, an agent's id and type, a
+// vehicle's type and lane, a flow stroke's width, the agents' groups. A move, a look or a
+// brain edit leaves every row as it was.
+constexpr std::uint32_t kShownFields = fieldBit(SceneField::Items) | fieldBit(SceneField::Name) |
+                                       fieldBit(SceneField::Type) | fieldBit(SceneField::Group) |
+                                       fieldBit(SceneField::Route) | fieldBit(SceneField::Shape);
 constexpr ItemKind kListed[] = {ItemKind::Settings, ItemKind::AgentType, ItemKind::Group,    ItemKind::Agent,
                                 ItemKind::Path,     ItemKind::Wall,      ItemKind::Obstacle, ItemKind::Goal,
                                 ItemKind::TrafficLight, ItemKind::Lane,  ItemKind::Crosswalk, ItemKind::Vehicle,
@@ -28,7 +34,10 @@ OutlinerPanel::OutlinerPanel(SceneDocument& document, QWidget* parent) : QTreeWi
     setSelectionMode(QAbstractItemView::ExtendedSelection);
     setToolTip(tr("Everything in the scene; select rows to edit them in Properties"));
     connect(&m_document, &SceneDocument::sceneReset, this, &OutlinerPanel::rebuild);
-    connect(&m_document, &SceneDocument::sceneChanged, this, &OutlinerPanel::rebuild);
+    connect(&m_document, &SceneDocument::sceneChanged, this, [this](const SceneChange& change) {
+        if (change.hasAny(kShownFields))
+            rebuild();
+    });
     connect(&m_document, &SceneDocument::selectionChanged, this, &OutlinerPanel::showSelection);
     connect(this, &QTreeWidget::itemSelectionChanged, this, &OutlinerPanel::takeSelection);
     rebuild();

@@ -309,12 +309,14 @@ void PropertyForm::rename(const QString& text)
         edit->setToolTip(QString());
     // The references follow the new name, so a group still follows its renamed path.
     std::vector<ChangeValuesCommand<std::string>::Locate> locates{nameLocate(item)};
-    for (const NameUse& use : nameUses(scene(), item.kind, before))
+    const std::vector<NameUse> uses = nameUses(scene(), item.kind, before);
+    for (const NameUse& use : uses)
         locates.push_back(use.locate);
     std::vector<std::string> values(locates.size(), after);
     push(new ChangeValuesCommand<std::string>(
         m_document, QString(), std::move(locates), std::move(values),
-        tr("Rename %1 to %2").arg(QString::fromStdString(before), QString::fromStdString(after))));
+        tr("Rename %1 to %2").arg(QString::fromStdString(before), QString::fromStdString(after)),
+        renameChange(item, uses)));
 }
 
 }  // namespace throng::editor

@@ -6,6 +6,7 @@
 
 #include "editor/SceneDocument.h"
 #include "editor/commands/ChangeValuesCommand.h"
+#include "editor/panels/PropertyChange.h"
 #include "editor/panels/PropertyFields.h"
 
 #include <QObject>
@@ -107,7 +108,7 @@ public:
             values.push_back(change(locate(s, i)));
         }
         push(new ChangeValuesCommand<T>(m_document, mergeKey(key), std::move(locates), std::move(values),
-                                        tr("Change %1").arg(label)));
+                                        tr("Change %1").arg(label), propertyChange(kind(), key, indices())));
     }
     template <class T>
     void apply(const QString& key, const QString& label, Locate<T> locate, T value)

@@ -19,64 +19,55 @@ SimulationController::~SimulationController()
     m_runner.stop();
 }
 
-namespace {
-
-// True when the two scenes simulate alike: they differ at most in placed agents' hand-set
-// look, tint and height, which only export reads, and their group, which nothing reads.
-bool sameSimulation(const sim::Scene& a, const sim::Scene& b)
+void SimulationController::takeTiming(const sim::Scene& scene)
 {
-    if (a.agents.size() != b.agents.size())
-        return false;
-    for (std::size_t i = 0; i < a.agents.size(); ++i) {
-        sim::Agent x = a.agents[i];
-        x.look = b.agents[i].look;
-        x.tint = b.agents[i].tint;
-        x.heightScale = b.agents[i].heightScale;
-        x.group = b.agents[i].group;
-        if (!(x == b.agents[i]))
-            return false;
-    }
-    sim::Scene restA = a, restB = b;
-    restA.agents.clear();
-    restB.agents.clear();
-    return restA == restB;
-}
-
-}  // namespace
-
-void SimulationController::setScene(const sim::Scene& scene)
-{
-    if (m_hasScene && sameSimulation(m_scene, scene)) {
-        m_scene = scene;
-        return;
-    }
-    // Frames up to the shown one stay; the runner goes on from there with the edited scene
-    // (or starts over when the edit cannot be resumed: the first batch then says so).
-    const bool resume = m_hasScene && m_current > 0 && m_current < m_cache.frameCount();
-    m_scene = scene;
-    m_hasScene = true;
     m_fps = scene.settings.fps > 0.0f ? double(scene.settings.fps) : 24.0;
     m_totalFrames = std::size_t(std::lround(double(scene.settings.durationS) * m_fps)) + 1;
     applyTimerInterval();
-    if (resume) {
-        m_cache.truncate(m_current + 1);
-        m_brainValues.resize(std::min(m_brainValues.size(), m_current + 1));
-        m_steering.dropFrom(m_current);  // the edited World describes the edit frame again
-        m_runFrames = m_current + 1;
-        m_replaying = false;
-        m_runner.resume(scene, m_current);
-        // Playing or a step asked for goes on with the edited scene.
-        if (m_playing)
-            m_runner.setTarget(m_totalFrames);
-        else if (m_stepPending)
-            m_runner.setTarget(m_current + 2);
-        else if (m_seekTarget)
-            m_runner.setTarget(*m_seekTarget + 1);
-        emit recordedChanged(m_cache.frameCount());
+}
+
+void SimulationController::setScene(const sim::Scene& scene)
+{
+    m_hasScene = true;
+    takeTiming(scene);
+    startOver(scene);
+}
+
+void SimulationController::applyEdit(const sim::Scene& scene, const SceneChange& change)
+{
+    // What the World does not read leaves every frame as it was recorded (and the runner
+    // goes on with the scene it has, which simulates alike).
+    if (m_hasScene && !change.simulationReads)
+        return;
+    // Frames up to the shown one stay; the runner goes on from there with the edited scene
+    // (or starts over when the edit cannot be resumed: the first batch then says so).
+    const bool resume = m_hasScene && m_current > 0 && m_current < m_cache.frameCount();
+    m_hasScene = true;
+    takeTiming(scene);
+    if (!resume) {
+        startOver(scene);
         return;
     }
-    // Starting over: playback goes on from frame 0 with the edited scene (as a resumed run
-    // goes on from the edit), so Play pressed just before the edit reached here still plays.
+    m_cache.truncate(m_current + 1);
+    m_brainValues.resize(std::min(m_brainValues.size(), m_current + 1));
+    m_steering.dropFrom(m_current);  // the edited World describes the edit frame again
+    m_runFrames = m_current + 1;
+    m_replaying = false;
+    m_runner.resume(scene, m_current);
+    // Playing or a step asked for goes on with the edited scene.
+    if (m_playing)
+        m_runner.setTarget(m_totalFrames);
+    else if (m_stepPending)
+        m_runner.setTarget(m_current + 2);
+    else if (m_seekTarget)
+        m_runner.setTarget(*m_seekTarget + 1);
+    emit recordedChanged(m_cache.frameCount());
+}
+
+void SimulationController::startOver(const sim::Scene& scene)
+{
+    // Playback goes on from frame 0 with the new scene (as a resumed run goes on from the
+    // edit), so Play pressed just before the edit reached here still plays.
     const bool wasPlaying = m_playing;
     pause();
     m_stepPending = false;
@@ -103,7 +94,7 @@ void SimulationController::takeFrames()
     }
     // A run that computes recorded frames again (pickBrainAgent) brings only their values.
     const bool resumed = batch.resumedAt > 0;
-    const bool restarted = !resumed && !batch.agents.empty() && !(m_replaying && m_cache.frameCount() > 0);
+    const bool restarted = batch.started;
     if (restarted) {
         ++m_restarts;
         m_cache.reset(std::move(batch.agents), batch.fps);

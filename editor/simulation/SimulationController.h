@@ -1,10 +1,11 @@
 #pragma once
 // Live simulation for the editor: runs the document's scene on a SimulationRunner
-// thread into a FrameCache and plays, pauses, steps, loops and scrubs it. Editing the
-// scene (setScene) invalidates the recorded frames after the shown one: the edited scene
-// runs on from the shown frame's state (simcore/world/WorldState.h has the rule). Never
-// draws and never edits the scene.
+// thread into a FrameCache and plays, pauses, steps, loops and scrubs it. An edit the
+// simulation reads (applyEdit) invalidates the recorded frames after the shown one: the
+// edited scene runs on from the shown frame's state (simcore/world/WorldState.h has the
+// rule). Never draws, never edits the scene, never builds a World on the GUI thread.
 
+#include "editor/SceneChange.h"
 #include "editor/simulation/SimulationRunner.h"
 #include "editor/simulation/SteeringRecord.h"
 #include "simcore/scene/Scene.h"
@@ -27,15 +28,20 @@ public:
     explicit SimulationController(QObject* parent = nullptr);
     ~SimulationController() override;
 
-    // The scene to simulate from now on. At frame 0 (or on the first scene) every recorded
-    // frame is dropped. At a later shown frame f, frames 0..f stay and the frames after
-    // it are recomputed with the edited scene from frame f's state; playback goes on.
-    // An edit may add or remove agents (the cache then keeps both sets: the frames before
-    // show the old crowd). When the runner cannot resume the edit (the settings changed:
-    // fps, duration, seed, bounds, navigation cell) it starts over: frames dropped, playback
-    // paused at frame 0. An edit that changes nothing the simulation reads (a placed
-    // agent's hand-set look, tint or height) keeps the frames and the playback as they are.
+    // A new scene to simulate (opened, new, reverted): every recorded frame is dropped and
+    // the runner starts over at frame 0 (its first batch brings frame 0). Playing goes on.
     void setScene(const sim::Scene& scene);
+    // The document's scene after an edit, and what the edit changed (for a burst of edits
+    // between two refreshes, the union of their changes). An edit the simulation does not
+    // read (change.simulationReads false: a placed agent's look, a name nothing refers
+    // to) keeps every recorded frame, the runner and the playback as they are. Otherwise,
+    // at a later shown frame f, frames 0..f stay and the frames after it are recomputed
+    // with the edited scene from frame f's state; playback goes on. An edit may add or
+    // remove agents (the cache then keeps both sets: the frames before show the old
+    // crowd). At frame 0 the run starts over as setScene's does. When the runner cannot
+    // resume the edit (the settings changed: fps, duration, seed, bounds, navigation
+    // cell) it starts over too: frames dropped, playback paused at frame 0.
+    void applyEdit(const sim::Scene& scene, const SceneChange& change);
 
     // RealTime: the shown frame follows the wall clock at the scene's fps, skipping the
     // frames the display cannot keep up with. EveryFrame: each frame is shown in turn, at
@@ -117,9 +123,12 @@ private:
     void setCurrent(std::size_t frame);
     // Asks for the shown frame's annotations when it was recorded without them (paused).
     void describeShown();
+    // Takes the scene's frame rate and duration.
+    void takeTiming(const sim::Scene& scene);
+    // Drops every frame and runs `scene` from frame 0; playing goes on from there.
+    void startOver(const sim::Scene& scene);
 
     SimulationRunner m_runner;
-    sim::Scene m_scene;  // what the recorded frames were simulated from
     bool m_hasScene = false;
     sim::FrameCache m_cache;
     std::vector<SimulationRunner::PickedBrainValues> m_brainValues;  // per recorded frame

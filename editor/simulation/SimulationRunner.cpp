@@ -327,6 +327,7 @@ void SimulationRunner::run(std::shared_ptr<const sim::Scene> scene, std::size_t 
         if (first) {
             m_pending.agents = world->agentInfo();
             m_pending.fps = scene->settings.fps;
+            m_pending.started = frameIndex == 0;
         }
         // Only the first batch after a resume says so: the controller drops what it holds
         // after the resume frame once, not again for every batch.

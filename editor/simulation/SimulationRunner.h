@@ -101,6 +101,9 @@ public:
         std::vector<sim::AgentFrame> frames; // frame-major, agents.size() per frame
         std::size_t frameCount = 0;
         std::string error;                   // the World could not be built
+        // Set with frame 0 of a run that starts (or starts over): the frames before are
+        // gone, `agents` are the run's (none for a World without agents).
+        bool started = false;
         // Per frame of `frames`: the picked agent's brain node values (see pickBrainAgent).
         std::vector<PickedBrainValues> brainValues;
         // The watched agents' annotations, by frame (frames of this batch and described ones).

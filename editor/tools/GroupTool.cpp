@@ -282,7 +282,10 @@ QWidget* GroupTool::createOptionsWidget(QWidget* parent)
         type->setCurrentIndex(std::max(0, at));
     };
     fillTypes();
-    connect(&document(), &SceneDocument::sceneChanged, type, fillTypes);
+    connect(&document(), &SceneDocument::sceneChanged, type, [fillTypes](const SceneChange& change) {
+        if (change.touches(ItemKind::AgentType))
+            fillTypes();
+    });
     connect(&document(), &SceneDocument::sceneReset, type, fillTypes);
     connect(type, &QComboBox::currentTextChanged, this, [this](const QString& t) { m_settings.type = t.toStdString(); });
     auto* amount = new QComboBox(box);

@@ -141,7 +141,8 @@ void SelectTool::mouseDoubleClicked(const ToolMouse& mouse)
     points.insert(points.begin() + std::ptrdiff_t(hit->insertAt), glm::vec2(mouse.ground->x, mouse.ground->z));
     const QString key = QStringLiteral("insertPoint/%1/%2/%3").arg(int(item.kind)).arg(item.index).arg(++m_dragSerial);
     document().undoStack()->push(new ChangeValueCommand<std::vector<glm::vec2>>(
-        document(), key, pointsOf(item), std::move(points), tr("Insert a point in %1").arg(itemLabel(scene, item))));
+        document(), key, pointsOf(item), std::move(points), tr("Insert a point in %1").arg(itemLabel(scene, item)),
+        SceneChange::of(item, SceneField::Position)));
     emit overlayChanged();
 }
 
@@ -237,7 +238,8 @@ void SelectTool::dragTo(const ToolMouse& mouse)
         const SceneItem item = m_handleItem;
         const QString key = QStringLiteral("points/%1/%2/%3").arg(int(item.kind)).arg(item.index).arg(m_dragSerial);
         stack->push(new ChangeValueCommand<std::vector<glm::vec2>>(
-            document(), key, pointsOf(item), std::move(points), tr("Edit %1").arg(itemLabel(scene, item))));
+            document(), key, pointsOf(item), std::move(points), tr("Edit %1").arg(itemLabel(scene, item)),
+            SceneChange::of(item, SceneField::Position)));
         m_pushed = true;
     } else if (m_drag == Drag::Radius) {
         const std::size_t i = m_handleItem.index;
@@ -245,7 +247,7 @@ void SelectTool::dragTo(const ToolMouse& mouse)
         const QString key = QStringLiteral("pathRadius/%1/%2").arg(i).arg(m_dragSerial);
         stack->push(new ChangeValueCommand<float>(
             document(), key, [i](sim::Scene& s) -> float& { return s.paths[i].radiusM; }, radius,
-            tr("Change radius of %1").arg(itemLabel(scene, m_handleItem))));
+            tr("Change radius of %1").arg(itemLabel(scene, m_handleItem)), SceneChange::of(m_handleItem, SceneField::Shape)));
         m_pushed = true;
     }
     emit overlayChanged();

@@ -146,7 +146,7 @@ void TrafficLightTool::toggleStopLine(std::size_t light, glm::vec2 at)
     const QString key = QStringLiteral("stopLines/%1/%2").arg(light).arg(document().undoStack()->index());
     document().undoStack()->push(new ChangeValueCommand<std::vector<sim::StopLine>>(
         document(), key, [light](sim::Scene& s) -> std::vector<sim::StopLine>& { return s.trafficLights[light].stopLines; },
-        std::move(lines), text));
+        std::move(lines), text, SceneChange::of({ItemKind::TrafficLight, light}, SceneField::Route)));
 }
 
 }  // namespace throng::editor

@@ -18,7 +18,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <exception>
 
 namespace throng::editor {
 
@@ -82,9 +81,11 @@ void Viewport::setTool(ViewportTool* tool)
 void Viewport::updateScene(const sim::Scene& scene)
 {
     const bool frameOnNextPaint = m_frameOnNextPaint, movedByUser = m_cameraMovedByUser;
-    setScene(scene);
+    setSet(scene);
     m_frameOnNextPaint = frameOnNextPaint;
     m_cameraMovedByUser = movedByUser;
+    // The shown agents again, coloured and sized by the edited types.
+    setAgents(m_frames, m_agents, m_timeS, m_frameIndex);
 }
 
 std::optional<glm::vec3> Viewport::pixelToGround(QPointF pixel) const
@@ -128,22 +129,11 @@ QSurfaceFormat Viewport::surfaceFormat()
 
 void Viewport::setScene(const sim::Scene& scene)
 {
-    std::vector<sim::AgentFrame> frames;
-    std::vector<sim::AgentInfo> agents;
-    std::optional<double> timeS;
-    try {
-        const sim::World world(scene);
-        world.snapshot(frames);
-        sim::addOrigin(frames, world.origin());
-        agents = world.agentInfo();
-        timeS = world.timeS();
-    } catch (const std::exception& e) {
-        // The set still shows; only the agents and light states are missing.
-        qWarning().noquote() << "throng: cannot build the initial state:" << e.what();
-    }
     setSet(scene);
     m_cache = nullptr;
-    setAgents(frames, agents, timeS, 0);
+    // The lights show their phase at the start; the agents come with frame 0.
+    setAgents({}, {}, 0.0, 0);
+    m_frameWhenAgentsCome = true;
 }
 
 void Viewport::setScene(const sim::Scene& scene, const sim::World& state)
@@ -154,14 +144,28 @@ void Viewport::setScene(const sim::Scene& scene, const sim::World& state)
     setSet(scene);
     m_cache = nullptr;
     setAgents(frames, state.agentInfo(), state.timeS(), std::size_t(state.stepIndex()));
+    m_frameWhenAgentsCome = false;
 }
 
 void Viewport::showFrame(const sim::FrameCache& cache, std::size_t frame)
 {
+    // A run without agents records no frames: its frame 0 shows nobody.
+    if (frame == 0 && cache.agentCount() == 0) {
+        m_cache = &cache;
+        setAgents({}, {}, 0.0, 0);
+        return;
+    }
     if (frame >= cache.frameCount())
         return;
     m_cache = &cache;
     setAgents(cache.frame(frame), cache.agentsAt(frame), double(frame) / double(cache.fps()), frame);
+    // A scene just opened is framed with its crowd, as it would have been had the agents
+    // been there at once, unless the user has moved the camera since.
+    if (m_frameWhenAgentsCome && !cache.frame(frame).empty()) {
+        m_frameWhenAgentsCome = false;
+        if (!m_cameraMovedByUser)
+            m_frameOnNextPaint = true;
+    }
 }
 
 void Viewport::setSet(const sim::Scene& scene)
@@ -267,14 +271,19 @@ void Viewport::setAgents(std::span<const sim::AgentFrame> frames, std::span<cons
     if (m_overlays.trails)
         rebuildOverlay();
     m_overlay->update();  // the select tool's circles follow the agents too
-    m_lightMesh.clear();
-    SetGeometryBuilder::addLights(m_traffic, timeS, m_lightMesh);
-    m_lampMesh.clear();
-    SetSolids::addLamps(m_traffic.trafficLights, m_terrain, timeS, m_lampMesh);
-    m_lightsChanged = true;
+    rebuildLights();
     updateHud();
     emit agentsChanged();
     update();
+}
+
+void Viewport::rebuildLights()
+{
+    m_lightMesh.clear();
+    SetGeometryBuilder::addLights(m_traffic, m_timeS, m_lightMesh);
+    m_lampMesh.clear();
+    SetSolids::addLamps(m_traffic.trafficLights, m_terrain, m_timeS, m_lampMesh);
+    m_lightsChanged = true;
 }
 
 void Viewport::setOverlays(const ViewportOverlays& overlays)

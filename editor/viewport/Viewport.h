@@ -52,15 +52,19 @@ public:
     // rasteriser such as llvmpipe, where it triples the frame time; THRONG_MSAA=N sets it).
     static QSurfaceFormat surfaceFormat();
 
-    // Shows the scene's set and its initial state (a World built from it, so spawn groups
-    // show), and frames it on the next paint.
+    // Shows a new scene's set at once, without agents, and frames it on the next paint.
+    // The agents come with showFrame (frame 0 from the simulation's cache): building a
+    // World here would hold the GUI thread for seconds on a big crowd.
     void setScene(const sim::Scene& scene);
-    // Shows the scene's set and the current state of `state`, a World of that scene.
+    // Shows the scene's set and the current state of `state`, a World of that scene (the
+    // command line's screenshot builds its own).
     void setScene(const sim::Scene& scene, const sim::World& state);
-    // Like setScene(scene) after an edit: the camera stays where the user left it.
+    // The set of the edited scene; the camera stays where the user left it, and the agents
+    // shown stay until the simulation brings the frame to show (showFrame).
     void updateScene(const sim::Scene& scene);
-    // Shows frame `frame` (< cache.frameCount()) of a recording of the current scene. The
-    // trails read the frames before it: the caller keeps `cache` alive while it is shown.
+    // Shows frame `frame` (< cache.frameCount()) of a recording of the current scene, or
+    // nobody for frame 0 of a recording without agents. The trails read the frames
+    // before it: the caller keeps `cache` alive while it is shown.
     void showFrame(const sim::FrameCache& cache, std::size_t frame);
 
     // The HUD, trails, steering annotations, fields and density drawn over the set.
@@ -99,7 +103,7 @@ public:
 
     std::size_t agentCount() const { return m_glyphs.size() + m_carGlyphs.size() + m_birdGlyphs.size(); }
     std::size_t frameIndex() const { return m_frameIndex; }
-    // Simulation time of the shown agents; empty when no World could be built.
+    // Simulation time of the shown moment (0 for a scene just set); empty before any scene.
     std::optional<double> timeS() const { return m_timeS; }
     // The widget pixel (logical) where a world point appears through the current camera.
     QPointF worldToPixel(glm::vec3 point) const;
@@ -166,6 +170,8 @@ private:
     void setSet(const sim::Scene& scene);
     void setAgents(std::span<const sim::AgentFrame> frames, std::span<const sim::AgentInfo> agents,
                    std::optional<double> timeS, std::size_t frameIndex);
+    // The lights and lamps as they are at m_timeS.
+    void rebuildLights();
     GroundBox framingBox() const;
     void forwardToTool(QMouseEvent* event, void (ViewportTool::*handler)(const ToolMouse&));
     void dragCamera(QPointF delta, Qt::KeyboardModifiers modifiers);
@@ -246,6 +252,7 @@ private:
     HudFigures m_hudCounts;  // the shown frame's counts
 
     bool m_frameOnNextPaint = true;     // until the user moves the camera, resizing re-frames
+    bool m_frameWhenAgentsCome = false;  // a new scene's first agents have not been shown yet
     bool m_cameraMovedByUser = false;
     Qt::MouseButton m_dragButton = Qt::NoButton;
     bool m_altDrag = false;  // the drag began with Alt held: the DCC bindings

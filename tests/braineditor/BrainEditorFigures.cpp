@@ -80,10 +80,13 @@ Timing timeRepaints(QWidget* viewport, int frames, Step step)
 class SetBrain : public QUndoCommand {
 public:
     SetBrain(SceneDocument& d, sim::BrainGraph g) : m_doc(d), m_graph(std::move(g)) {}
-    void redo() override { m_doc.modify([&](sim::Scene& s) { s.brains = {m_graph}; }); }
-    void undo() override { m_doc.modify([](sim::Scene& s) { s.brains.clear(); }); }
+    void redo() override { m_doc.modify(brains(), [&](sim::Scene& s) { s.brains = {m_graph}; }); }
+    void undo() override { m_doc.modify(brains(), [](sim::Scene& s) { s.brains.clear(); }); }
 
 private:
+    // The brain list as a whole.
+    static SceneChange brains() { return SceneChange::ofAll(ItemKind::Brain, SceneField::Items); }
+
     SceneDocument& m_doc;
     sim::BrainGraph m_graph;
 };

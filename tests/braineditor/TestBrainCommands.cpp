@@ -24,10 +24,13 @@ sim::BrainGraph twoNodes(std::string name = "b")
 class SeedBrain : public QUndoCommand {
 public:
     SeedBrain(SceneDocument& d) : m_doc(d) {}
-    void redo() override { m_doc.modify([](sim::Scene& s) { s.brains = {twoNodes()}; }); }
-    void undo() override { m_doc.modify([](sim::Scene& s) { s.brains.clear(); }); }
+    void redo() override { m_doc.modify(brains(), [](sim::Scene& s) { s.brains = {twoNodes()}; }); }
+    void undo() override { m_doc.modify(brains(), [](sim::Scene& s) { s.brains.clear(); }); }
 
 private:
+    // The brain list as a whole.
+    static SceneChange brains() { return SceneChange::ofAll(ItemKind::Brain, SceneField::Items); }
+
     SceneDocument& m_doc;
 };
 
@@ -80,7 +83,8 @@ private slots:
     {
         SceneDocument doc;
         doc.undoStack()->push(new SeedBrain(doc));
-        doc.modify([](sim::Scene& s) { s.agentTypes.push_back({}); });
+        doc.modify(SceneChange::ofAll(ItemKind::AgentType, SceneField::Items),
+                   [](sim::Scene& s) { s.agentTypes.push_back({}); });
         EditBrainsCommand::State before{doc.scene().brains, doc.scene().agentTypes, {}}, after = before;
         after.brains.push_back(twoNodes("walker brain"));
         after.agentTypes[0].brain = after.brains.back().name;

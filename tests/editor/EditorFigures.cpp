@@ -7,6 +7,7 @@
 // Run under a display: xvfb-run -a -s "-screen 0 1920x1080x24" editor_figures [WINDOW.png]
 // (`editor_figures --characters`: the characters-against-glyphs figures only).
 #include "EditorUiDriver.h"
+#include "ShowInitialState.h"
 
 #include "editor/simulation/SimulationController.h"
 #include "editor/viewport/Viewport.h"
@@ -271,7 +272,7 @@ int main(int argc, char** argv)
             return 1;
         std::cout << "{\n";
         for (std::size_t n : {std::size_t(10000), std::size_t(100000)}) {
-            viewport.setScene(crowdOf(n));
+            test::showInitialState(viewport, crowdOf(n));
             std::cout << "  \"agents_" << n << "\": {\n";
             printCharacterTimes("3d", characterTimes(viewport, 0, 3), false);
             printCharacterTimes("3d_close", characterTimes(viewport, 15, 3), true);
@@ -330,7 +331,7 @@ int main(int argc, char** argv)
         QElapsedTimer t;
         t.start();
         const sim::Scene scene = crowdOf(n);
-        viewport.setScene(scene);
+        test::showInitialState(viewport, scene);
         const double setMs = double(t.nsecsElapsed()) / 1e6;
         const int frames = n >= 100000 ? 5 : 9;
         std::cout << "  \"agents_" << n << "\": {\n    \"set_scene_ms\": " << setMs << ",\n";
@@ -341,7 +342,7 @@ int main(int argc, char** argv)
             const sim::FrameCache cache = walkingCache(scene, 48);
             printOverlayTimes("top_playback", overlayTimes(viewport, scene, cache, ViewMode::Top, frames), false);
             printOverlayTimes("3d_playback", overlayTimes(viewport, scene, cache, ViewMode::Orbit, frames), true);
-            viewport.setScene(scene);
+            test::showInitialState(viewport, scene);
         }
         std::cout << "  }" << (n == counts[2] ? "\n" : ",\n");
     }

@@ -1,11 +1,14 @@
 #include "EditorUiDriver.h"
 
+#include "editor/simulation/SimulationController.h"
 #include "editor/viewport/Viewport.h"
 
 #include <QDir>
 #include <QFile>
 #include <QTest>
 #include <QToolButton>
+
+#include <algorithm>
 
 namespace throng::editor::test {
 
@@ -37,6 +40,15 @@ bool showWithSceneFile(MainWindow& window, const QString& path)
     if (!window.openScene(path))
         return false;
     QCoreApplication::processEvents();
+    // The agents come with frame 0 from the simulation's thread (a scene with nobody in
+    // it records no frame): frame the set with them, as a user sees it once they show.
+    const sim::Scene& scene = window.document().scene();
+    const bool crowd = !scene.agents.empty() || !scene.heroes.empty() || !scene.vehicles.empty() ||
+                       std::any_of(scene.groups.begin(), scene.groups.end(), [](const sim::SpawnGroup& g) {
+                           return g.count > 0;
+                       });
+    if (crowd && !QTest::qWaitFor([&window] { return window.simulation().recordedFrames() > 0; }, 60000))
+        qWarning("no frame 0 came for %s (a scene the simulation cannot run?)", qPrintable(path));
     window.viewport().frameAll();
     return true;
 }

@@ -15,7 +15,8 @@ namespace throng::editor::test {
 
 // Shows the window, waits until it is exposed and active, opens a copy of
 // resources/scenes/<name> in `dir`/scenes (beside a copy of resources/brains in
-// `dir`/brains) and frames it. False when any step fails.
+// `dir`/brains), waits for frame 0 of its crowd (the simulation's thread makes it) and
+// frames it. False when any step fails.
 bool showWithScene(MainWindow& window, const QTemporaryDir& dir, const QString& name);
 // Shows the window as showWithScene does, opening the scene file at `path`.
 bool showWithSceneFile(MainWindow& window, const QString& path);

@@ -46,7 +46,11 @@ std::size_t paintBand(MainWindow& window)
     if (!clickToolButton(window, "crowdBrush"))
         return 0;
     dragOnGround(window, {{-38, -25}, {-14, -25}});
-    return window.document().scene().agents.size();
+    // They show once the simulation's thread brings frame 0 of the painted scene.
+    const std::size_t painted = window.document().scene().agents.size();
+    if (!QTest::qWaitFor([&] { return window.viewport().agentCount() == kCrossroadsAgents + painted; }, 30000))
+        return 0;
+    return painted;
 }
 
 // Headings equal up to whole turns, degrees.

@@ -5,6 +5,7 @@
 // the selection where its agents stand now, A frames everything.
 #include "EditorTestSupport.h"
 #include "EditorUiDriver.h"
+#include "ShowInitialState.h"
 #include "TestRegistry.h"
 
 #include "editor/simulation/SimulationController.h"
@@ -112,7 +113,7 @@ private slots:
         QFETCH(int, mode);
         QFETCH(bool, hill);
         Viewport viewport;
-        viewport.setScene(loadTestScene(m_dir, hill ? kHill : kYard));
+        showInitialState(viewport, loadTestScene(m_dir, hill ? kHill : kYard));
         viewport.setViewMode(ViewMode(mode));
         renderOffscreen(viewport, kSize);
         const QPointF cursor(360, 110);  // off the centre, over the yard's north-east
@@ -142,7 +143,7 @@ private slots:
     {
         QFETCH(int, mode);
         Viewport viewport;
-        viewport.setScene(loadTestScene(m_dir, kYard));
+        showInitialState(viewport, loadTestScene(m_dir, kYard));
         viewport.setViewMode(ViewMode(mode));
         renderOffscreen(viewport, kSize);
         const QPoint start(150, 220);
@@ -169,7 +170,7 @@ private slots:
     {
         QFETCH(int, mode);
         Viewport viewport;
-        viewport.setScene(loadTestScene(m_dir, kYard));
+        showInitialState(viewport, loadTestScene(m_dir, kYard));
         viewport.setViewMode(ViewMode(mode));
         renderOffscreen(viewport, kSize);
         const QPoint centre(240, 180);

@@ -112,9 +112,10 @@ private slots:
         SceneDocument doc;
         fillFive(doc);
         auto locate = [](sim::Scene& s) -> float& { return s.agents[2].headingDeg; };
+        const SceneChange heading = SceneChange::of({ItemKind::Agent, 2}, SceneField::Heading);
         QUndoStack* stack = doc.undoStack();
-        stack->push(new ChangeValueCommand<float>(doc, "h", locate, 30.0f, "Heading"));
-        stack->push(new ChangeValueCommand<float>(doc, "h", locate, 45.0f, "Heading"));
+        stack->push(new ChangeValueCommand<float>(doc, "h", locate, 30.0f, "Heading", heading));
+        stack->push(new ChangeValueCommand<float>(doc, "h", locate, 45.0f, "Heading", heading));
         QCOMPARE(stack->count(), 1);
         QCOMPARE(doc.scene().agents[2].headingDeg, 45.0f);
         stack->undo();
@@ -122,8 +123,8 @@ private slots:
         stack->redo();
         QCOMPARE(doc.scene().agents[2].headingDeg, 45.0f);
         // Back to where the step began: the merged step does nothing and leaves the stack.
-        stack->push(new ChangeValueCommand<float>(doc, "h2", locate, 10.0f, "Heading"));
-        stack->push(new ChangeValueCommand<float>(doc, "h2", locate, 45.0f, "Heading"));
+        stack->push(new ChangeValueCommand<float>(doc, "h2", locate, 10.0f, "Heading", heading));
+        stack->push(new ChangeValueCommand<float>(doc, "h2", locate, 45.0f, "Heading", heading));
         QCOMPARE(stack->count(), 1);
         QCOMPARE(doc.scene().agents[2].headingDeg, 45.0f);
     }

@@ -267,9 +267,9 @@ private slots:
         selectInOutliner(window, {{ItemKind::Group, 0}});
         pick(window, "goal", goal, Scroll::ToWidget);
         QCOMPARE(window.document().scene().groups[0].goal, goal.toStdString());
-        // Play: the group walks east toward the gap.
-        const std::size_t agents = window.viewport().agentCount();
-        QVERIFY(agents > painted);
+        // Play: the group walks east toward the gap. (The group's members and the painted
+        // agents show once the simulation's thread brings frame 0 of the edited scene.)
+        QTRY_VERIFY(window.viewport().agentCount() > painted);
         QVERIFY(playToFrame(window, 120));
         const sim::FrameCache& cache = window.simulation().cache();
         auto meanX = [&](std::size_t frame) {

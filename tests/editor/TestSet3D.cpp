@@ -2,6 +2,7 @@
 // box turned by its angle), a traffic light's lamp of the shown phase is lit, crosswalks
 // keep their zebra stripes, and a flier is a bird (wider than tall) near, mid-way and far.
 #include "EditorTestSupport.h"
+#include "ShowInitialState.h"
 #include "TestRegistry.h"
 
 #include "editor/viewport/SetSolids.h"
@@ -52,7 +53,7 @@ bool isShadeOf(QRgb pixel, glm::vec4 colour)
 
 QImage render3D(Viewport& viewport, const sim::Scene& scene)
 {
-    viewport.setScene(scene);
+    showInitialState(viewport, scene);
     viewport.setViewMode(ViewMode::Orbit);
     return renderOffscreen(viewport, kSize);
 }
@@ -115,7 +116,7 @@ private slots:
         wall.points = {{-5.0f, 0.0f}, {5.0f, 0.0f}};
         wall.heightM = 3.0f;
         scene.walls.push_back(wall);
-        viewport.setScene(scene);
+        showInitialState(viewport, scene);
         const QImage image = renderOffscreen(viewport, kSize);
         QCOMPARE(viewport.viewMode(), ViewMode::Top);
         // The flat line's own colour, unlit: no solid drawn over it.
@@ -216,7 +217,7 @@ private slots:
         crosswalk.widthM = 3.0f;
         scene.crosswalks.push_back(crosswalk);
         Viewport viewport;
-        viewport.setScene(scene);
+        showInitialState(viewport, scene);
         viewport.setViewMode(ViewMode(mode));
         const QImage image = renderOffscreen(viewport, kSize);
         QVERIFY2(viewport.isGlReady(), qPrintable(viewport.glProblem()));
@@ -306,7 +307,7 @@ private slots:
         a.headingDeg = 0.0f;  // nose east: the wings now point at and away from the camera
         scene.agents.push_back(a);
         Viewport viewport;
-        viewport.setScene(scene);
+        showInitialState(viewport, scene);
         const QImage image = renderOffscreen(viewport, kSize);  // the top view: the bird seen from above
         const QRect box = birdBox(image, viewport, viewport.worldToPixel(a.position), 60);
         QVERIFY2(!box.isEmpty(), "no bird drawn");

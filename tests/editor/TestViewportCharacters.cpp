@@ -3,6 +3,7 @@
 // recorded phase to another; a type without a character keeps its glyph; a crowd seen
 // close up shows every agent, near ones as characters.
 #include "EditorTestSupport.h"
+#include "ShowInitialState.h"
 #include "TestRegistry.h"
 
 #include "editor/viewport/PoseTable.h"
@@ -203,7 +204,7 @@ private slots:
         Viewport viewport;
         viewport.setAgentsAsCharacters(true);
         viewport.setViewMode(ViewMode::Orbit);
-        viewport.setScene(loadTestScene(m_dir, walkerYaml()));
+        showInitialState(viewport, loadTestScene(m_dir, walkerYaml()));
         const QImage image = renderOffscreen(viewport, kSize);
         QVERIFY2(viewport.isGlReady(), qPrintable(viewport.glProblem()));
         saveForInspection(image, "character");
@@ -235,7 +236,7 @@ private slots:
         Viewport viewport;
         viewport.setViewMode(ViewMode::Orbit);
         viewport.setAgentsAsCharacters(true);
-        viewport.setScene(loadTestScene(m_dir, walkerYaml()));
+        showInitialState(viewport, loadTestScene(m_dir, walkerYaml()));
         const QImage character = renderOffscreen(viewport, kSize);
         viewport.setAgentsAsCharacters(false);
         const QImage glyph = viewport.grabFramebuffer();
@@ -252,7 +253,7 @@ private slots:
         Viewport viewport;
         viewport.setViewMode(ViewMode::Orbit);
         viewport.setAgentsAsCharacters(true);
-        viewport.setScene(loadTestScene(m_dir, walkerYaml()));
+        showInitialState(viewport, loadTestScene(m_dir, walkerYaml()));
         renderOffscreen(viewport, kSize);
         const sim::FrameCache cache = walkingFrames({0.0f, 0.25f});
         viewport.showFrame(cache, 0);
@@ -277,7 +278,7 @@ private slots:
         Viewport viewport;
         viewport.setViewMode(ViewMode::Orbit);
         viewport.setAgentsAsCharacters(true);
-        viewport.setScene(scene);
+        showInitialState(viewport, scene);
         const QImage image = renderOffscreen(viewport, kSize);
         QCOMPARE(viewport.charactersDrawn(), 0);
         const QRgb body = pixelAt(image, viewport, viewport.worldToPixel({0.0f, 0.8f, 0.0f}));
@@ -305,7 +306,7 @@ private slots:
         Viewport viewport;
         viewport.setViewMode(ViewMode::Orbit);
         viewport.setAgentsAsCharacters(true);
-        viewport.setScene(loadTestScene(m_dir, yaml));
+        showInitialState(viewport, loadTestScene(m_dir, yaml));
         renderOffscreen(viewport, kSize);
         viewport.frameAll();
         zoomIn(viewport, 1000);

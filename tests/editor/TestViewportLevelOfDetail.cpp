@@ -3,6 +3,7 @@
 // and as many as the full-detail drawing does; a crowd of 100,000 shows agents near and
 // far in 3D and the top view, every one drawn, covering what full detail covers.
 #include "EditorTestSupport.h"
+#include "ShowInitialState.h"
 #include "TestRegistry.h"
 
 #include "editor/viewport/ViewportPalette.h"
@@ -163,7 +164,7 @@ private slots:
     {
         const sim::Scene scene = crowd(24, 16, 6.0f);
         Viewport viewport;
-        viewport.setScene(scene);
+        showInitialState(viewport, scene);
         viewport.setViewMode(ViewMode::Orbit);
         renderOffscreen(viewport, kSize);
         QVERIFY2(viewport.isGlReady(), qPrintable(viewport.glProblem()));
@@ -213,7 +214,7 @@ private slots:
         QFETCH(int, zoomDelta);
         const sim::Scene scene = crowd(400, 250, 1.0f);
         Viewport viewport;
-        viewport.setScene(scene);
+        showInitialState(viewport, scene);
         viewport.setViewMode(ViewMode(mode));
         renderOffscreen(viewport, kSize);
         QVERIFY2(viewport.isGlReady(), qPrintable(viewport.glProblem()));

@@ -2,6 +2,7 @@
 // or right drag pulls the ground along with the mouse, F brings the whole scene back,
 // and the 3D view orbits with a right drag.
 #include "EditorTestSupport.h"
+#include "ShowInitialState.h"
 #include "TestRegistry.h"
 
 #include "simcore/io/SceneIO.h"
@@ -68,7 +69,7 @@ private slots:
     void wheelZoomsAroundTheCursor()
     {
         Viewport viewport;
-        viewport.setScene(m_scene);
+        showInitialState(viewport, m_scene);
         renderOffscreen(viewport, kSize);
         const QPointF cursor = viewport.worldToPixel(kCorner);
         const double spanBefore = distance(viewport.worldToPixel({0, 0, 0}), cursor);
@@ -91,7 +92,7 @@ private slots:
     {
         QFETCH(int, button);
         Viewport viewport;
-        viewport.setScene(m_scene);
+        showInitialState(viewport, m_scene);
         renderOffscreen(viewport, kSize);
         const QPointF before = viewport.worldToPixel(kCorner);
         drag(viewport, Qt::MouseButton(button), {200, 150}, {260, 130});
@@ -104,7 +105,7 @@ private slots:
     void keyFBringsTheWholeSceneBack()
     {
         Viewport viewport;
-        viewport.setScene(m_scene);
+        showInitialState(viewport, m_scene);
         const QImage framed = renderOffscreen(viewport, kSize);
         const QPointF home = viewport.worldToPixel({0, 0, 0});
         drag(viewport, Qt::MiddleButton, {200, 150}, {20, 20});
@@ -118,7 +119,7 @@ private slots:
     void rightDragOrbitsTheThreeDView()
     {
         Viewport viewport;
-        viewport.setScene(m_scene);
+        showInitialState(viewport, m_scene);
         viewport.setViewMode(ViewMode::Orbit);
         renderOffscreen(viewport, kSize);
         // Orbiting turns around the scene's centre: the centre stays put, a corner moves.

@@ -2,6 +2,7 @@
 // top view the clicked spot, in the 3D view the point of the terrain the camera ray hits
 // (not the flat ground below a hill).
 #include "EditorTestSupport.h"
+#include "ShowInitialState.h"
 #include "TestRegistry.h"
 
 #include "editor/tools/TerrainHeight.h"
@@ -41,7 +42,7 @@ private slots:
     {
         const sim::Scene scene = hillScene();
         Viewport viewport;
-        viewport.setScene(scene);
+        showInitialState(viewport, scene);
         renderOffscreen(viewport, {640, 480});
         viewport.setViewMode(ViewMode::Orbit);
         viewport.frameAll();
@@ -60,7 +61,7 @@ private slots:
         sim::Scene scene = hillScene();
         scene.terrain = {};
         Viewport viewport;
-        viewport.setScene(scene);
+        showInitialState(viewport, scene);
         renderOffscreen(viewport, {640, 480});
         viewport.frameAll();
         const glm::vec3 p(7.5f, 0.0f, -3.25f);

@@ -2,6 +2,7 @@
 // facing their heading, walls along their lines, lights in their current colour, recorded
 // frames and the 3D view.
 #include "EditorTestSupport.h"
+#include "ShowInitialState.h"
 #include "TestRegistry.h"
 
 #include "editor/viewport/ViewportPalette.h"
@@ -52,7 +53,7 @@ private slots:
     void agentStandsInItsTypeColourOnTheGround()
     {
         Viewport viewport;
-        viewport.setScene(loadScene(plazaYaml(0)));
+        showInitialState(viewport, loadScene(plazaYaml(0)));
         const QImage image = renderOffscreen(viewport, kSize);
         QVERIFY2(viewport.isGlReady(), qPrintable(viewport.glProblem()));
         QCOMPARE(viewport.agentCount(), std::size_t(2));
@@ -87,7 +88,7 @@ private slots:
         QFETCH(int, headingDeg);
         QFETCH(QPointF, screenDirection);
         Viewport viewport;
-        viewport.setScene(loadScene(plazaYaml(headingDeg)));
+        showInitialState(viewport, loadScene(plazaYaml(headingDeg)));
         const QImage image = renderOffscreen(viewport, kSize);
         const QPointF centre = viewport.worldToPixel({0.0f, 0.0f, 0.0f});
         const double radiusPx = std::abs(viewport.worldToPixel({0.4f, 0.0f, 0.0f}).x() - centre.x());
@@ -101,7 +102,7 @@ private slots:
     void wallShowsAlongItsLine()
     {
         Viewport viewport;
-        viewport.setScene(loadScene(plazaYaml(0)));
+        showInitialState(viewport, loadScene(plazaYaml(0)));
         const QImage image = renderOffscreen(viewport, kSize);
         for (float x : {-3.5f, -1.5f, 0.5f, 2.0f, 3.5f}) {
             const QRgb onWall = pixelAt(image, viewport, viewport.worldToPixel({x, 0.0f, -3.0f}));
@@ -152,7 +153,7 @@ private slots:
     {
         const sim::Scene scene = loadScene(plazaYaml(0));
         Viewport viewport;
-        viewport.setScene(scene);
+        showInitialState(viewport, scene);
         sim::FrameCache cache;
         cache.reset({{1, 0}, {2, 1}}, 24.0f);
         sim::AgentFrame a, b;
@@ -176,7 +177,7 @@ private slots:
     void orbitViewShowsAgentsStandingUp()
     {
         Viewport viewport;
-        viewport.setScene(loadScene(plazaYaml(0)));
+        showInitialState(viewport, loadScene(plazaYaml(0)));
         viewport.setViewMode(ViewMode::Orbit);
         const QImage image = renderOffscreen(viewport, kSize);
         // Half-way up the walker's prism: lit orange, neither ground nor background.

@@ -2,6 +2,7 @@
 // (not a disc), the selection outlined in the selection colour, and flow strokes as
 // arrows on a coarse grid within their width.
 #include "EditorTestSupport.h"
+#include "ShowInitialState.h"
 #include "TestRegistry.h"
 
 #include "editor/viewport/ViewportPalette.h"
@@ -53,7 +54,7 @@ private slots:
     void aCarIsALongBoxAlongItsLane()
     {
         Viewport viewport;
-        viewport.setScene(loadScene(kCarYaml));
+        showInitialState(viewport, loadScene(kCarYaml));
         const QImage image = renderOffscreen(viewport, kSize);
         QVERIFY2(viewport.isGlReady(), qPrintable(viewport.glProblem()));
         QCOMPARE(viewport.agentCount(), std::size_t(1));
@@ -73,7 +74,7 @@ private slots:
     {
         Viewport viewport;
         const sim::Scene scene = loadScene(flowYaml(false));
-        viewport.setScene(scene);
+        showInitialState(viewport, scene);
         renderOffscreen(viewport, kSize);
         // The obstacle's radius 1 m; the outline stands 0.25 m outside it.
         const QPointF ring = viewport.worldToPixel({4.0f + 1.25f, 0.0f, -6.0f});
@@ -89,8 +90,8 @@ private slots:
     void flowStrokesShowArrowsWithinTheirWidth()
     {
         Viewport plain, flowing;
-        plain.setScene(loadScene(flowYaml(false)));
-        flowing.setScene(loadScene(flowYaml(true)));
+        showInitialState(plain, loadScene(flowYaml(false)));
+        showInitialState(flowing, loadScene(flowYaml(true)));
         const QImage a = renderOffscreen(plain, kSize), b = renderOffscreen(flowing, kSize);
         QCOMPARE(plain.worldToPixel({-7, 0, -7}), flowing.worldToPixel({-7, 0, -7}));  // framed alike
         auto differs = [&](float x, float z) {
