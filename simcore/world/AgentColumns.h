@@ -36,7 +36,7 @@ struct AgentColumns {
     // advancePathProgress), so a hairpin's walked leg never draws them back. 0 without a path.
     std::vector<float> pathAlong;
     // Started inside a wall or obstacle and not yet out: walks straight to escapeTo
-    // (clear of every shape) at its own pace, through what holds it (WorldEscape.cpp).
+    // (clear of every shape) at its own pace, through what holds it (Constraints.h).
     std::vector<std::uint8_t> escaping;
     std::vector<glm::vec2> escapeTo;
     // arrived: entered its goal's area or reached its path's end (the stats' figure);

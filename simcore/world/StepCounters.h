@@ -53,7 +53,7 @@ struct StepCounters {
     std::uint64_t overlappingPairs = 0;      // pairs closer than the sum of radii less 1 cm, summed over steps
     std::uint64_t redLightViolations = 0;    // pedestrians stepping onto a crosswalk's road part on red
     std::uint64_t nonFiniteValues = 0;       // NaN/inf positions or velocities seen
-    std::uint64_t leaderOvertaken = 0;       // follower-steps ahead of a moving leader (WorldLeaders.cpp)
+    std::uint64_t leaderOvertaken = 0;       // follower-steps ahead of a moving leader (CountLeaders.cpp)
     std::uint64_t agentSteps = 0;
     OverlapDepths overlapDepths;             // how deep the overlapping pairs press in
     float peakDensity = 0.0f;                // persons/m², the highest local density sampled (LocalDensity.h)

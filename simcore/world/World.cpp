@@ -272,7 +272,7 @@ void World::spawnGroup(const Scene& scene, const SpawnGroup& group, std::size_t 
         // A walker drawn where its body does not fit (a group's area over a pillar or
         // across a wall) is drawn again, up to kSpawnTries times (draw k keyed by step k,
         // so the first draw is the one every earlier release made); one that never fits
-        // is walked out by findEscapes (WorldEscape.cpp).
+        // is walked out by findEscapes (Constraints.h).
         glm::vec2& p = places[k];
         for (std::uint64_t draw = 0; draw < kSpawnTries; ++draw) {
             const float u = rngUniform(m_seed, key, draw, kSpawnX), v = rngUniform(m_seed, key, draw, kSpawnZ);

@@ -116,7 +116,7 @@ public:
     // simulated or perceived and stays where it left (arrivalTimeS says when).
     bool isOut(std::size_t i) const { return m_agents.out[i] != 0; }
     // Agent i started inside a wall or obstacle and is still walking out of it (its way
-    // out: escapeTarget in WorldEscape.cpp, in this World's coordinates).
+    // out: escapeTarget in Constraints.h, in this World's coordinates).
     bool isEscaping(std::size_t i) const { return m_agents.escaping[i] != 0; }
     glm::vec2 escapeTo(std::size_t i) const { return m_agents.escapeTo[i]; }
     // Agent i's goal as an index into goals(), or -1.
@@ -332,7 +332,7 @@ private:
         bool reciprocal;
         float keepRight;     // as m_types.keepRight
         bool aroundStatics;  // wall following or obstacle avoidance, and walls or obstacles to steer round
-        bool constrained;    // walls or circles to hold the body out of (World::constrain)
+        bool constrained;    // walls or circles to hold the body out of (constrain, Constraints.h)
         float maxForce, range, damping, horizonS, marginM, brake, lateral;
         float toleranceM, slowingM, gainArrival, gainSeek, dtOverMass;
     };

@@ -1,5 +1,5 @@
 // The boids kernel's steering (WorldFlock.cpp, steerBoid) for four or eight boids at once,
-// one per lane of a float vector (detail/Lanes.h). What each boid's state and type decide
+// one per lane of a float vector (base/Lanes.h). What each boid's state and type decide
 // (whether it pursues, aligns or wanders, which side of a threshold it lies on) becomes a
 // lane mask, and both sides are computed and one is kept; the rare cases that need more
 // (containment near the bounds, a frame whose up had to fall back, the ground) are done
@@ -100,7 +100,7 @@ template <class F>
 }  // namespace
 
 // Always inlined, as its helpers are, so that in steerEightBoids all of it is built for
-// AVX2 and no eight-float value crosses a call (detail/Lanes.h).
+// AVX2 and no eight-float value crosses a call (base/Lanes.h).
 template <class F>
 [[gnu::always_inline]] inline void World::steerLanes(const std::uint32_t* boid, const BoidSense* sensed)
 {

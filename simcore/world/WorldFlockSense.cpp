@@ -2,7 +2,7 @@
 // the grid's order at once. They lie in one cell at rising heights, so the same columns hold
 // their neighbours: each column's window is read once for the four
 // (NeighbourGrid::forEachNearestSweep4), and each candidate's squared distance to the four,
-// and whether it lies in their view cones, are 4-wide sums and masks (detail/Lanes.h),
+// and whether it lies in their view cones, are 4-wide sums and masks (base/Lanes.h),
 // with searchBoid's operations. A candidate is then ranked only for the boids whose
 // bound it lies within, exactly as searchBoid ranks it, so each boid's k nearest, and
 // their order, are what searchBoid finds for it alone, and so is the result to the bit

@@ -140,7 +140,7 @@ void WorldNav::build(const Scene& scene, const StepView& v)
 
 glm::vec2 WorldNav::startOf(const StepView& v, std::size_t i) const
 {
-    // One that started inside a wall or obstacle walks out first (WorldEscape.cpp).
+    // One that started inside a wall or obstacle walks out first (Constraints.h).
     return v.agents.escaping[i] ? v.agents.escapeTo[i] : xz(v.agents.pos[i]);
 }
 

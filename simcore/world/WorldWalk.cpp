@@ -336,7 +336,7 @@ void World::stepWalker(std::size_t i)
         const glm::vec3 unit = normalizeOr(fwd, glm::vec3(0.0f, 0.0f, 1.0f));
         nextFwd = normalizeOr(glm::vec3(unit.x, 0.0f, unit.z), glm::vec3(0.0f, 0.0f, 1.0f));
     }
-    // Constrain: out of walls and obstacles, never through a wall (World::constrain).
+    // Constrain: out of walls and obstacles, never through a wall (constrain, Constraints.h).
     if (w.constrained)
         constrain(m_agents, m_set, m_clock.dt, i, p, pos);
     pos.y = m_set.terrain.heights.empty() ? 0.0f : m_set.groundHeight(pos.x, pos.z);  // no terrain: flat at 0
