@@ -3,7 +3,8 @@
 // thread into a FrameCache and plays, pauses, steps, loops and scrubs it. An edit the
 // simulation reads (applyEdit) invalidates the recorded frames after the shown one: the
 // edited scene runs on from the shown frame's state (simcore/world/WorldState.h has the
-// rule). Never draws, never edits the scene, never builds a World on the GUI thread.
+// rule). Never draws, never edits the scene, and never builds a World on the GUI thread
+// nor waits for one being built.
 
 #include "editor/SceneChange.h"
 #include "editor/simulation/SimulationRunner.h"

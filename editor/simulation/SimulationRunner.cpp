@@ -38,10 +38,14 @@ void SimulationRunner::replayBrainValues(sim::AgentId agentId, std::size_t recor
 
 void SimulationRunner::launch(sim::Scene scene, std::size_t resumeFrame, Replay replay)
 {
-    stop();
+    auto shared = std::make_shared<const sim::Scene>(std::move(scene));
     {
         std::lock_guard lock(m_mutex);
-        m_stop = false;
+        // The run in progress stops at its next check; one still building a World (which
+        // cannot be interrupted) hands nothing over when it is done.
+        ++m_run;
+        m_request = Request{std::move(shared), resumeFrame, replay};
+        m_quit = false;
         m_target = 1;
         m_pending = {};
         m_notified = false;
@@ -50,9 +54,36 @@ void SimulationRunner::launch(sim::Scene scene, std::size_t resumeFrame, Replay 
             m_checkpoints.clear();
             m_checkpointBytes = 0;
         }
+        if (!m_thread.joinable())
+            m_thread = std::thread([this] { work(); });
     }
-    auto shared = std::make_shared<const sim::Scene>(std::move(scene));
-    m_thread = std::thread([this, shared, resumeFrame, replay] { run(shared, resumeFrame, replay); });
+    m_stepsPerSecond = 0.0;
+    m_wake.notify_all();
+}
+
+void SimulationRunner::work()
+{
+    for (;;) {
+        Request request;
+        RunId runId = 0;
+        {
+            std::unique_lock lock(m_mutex);
+            m_computing = false;
+            m_wake.wait(lock, [this] { return m_quit || m_request; });
+            if (m_quit)
+                return;
+            request = std::move(*m_request);
+            m_request.reset();
+            runId = m_run;
+        }
+        run(std::move(request.scene), request.resumeFrame, request.replay, runId);
+    }
+}
+
+bool SimulationRunner::stoppedNow(RunId runId) const
+{
+    std::lock_guard lock(m_mutex);
+    return stopped(runId);
 }
 
 void SimulationRunner::describeFrame(std::size_t frame)
@@ -65,7 +96,7 @@ void SimulationRunner::describeFrame(std::size_t frame)
     m_wake.notify_all();
 }
 
-void SimulationRunner::describeRecorded(std::size_t frame)
+void SimulationRunner::describeRecorded(std::size_t frame, RunId runId)
 {
     const std::vector<sim::AgentId> ids = m_watch.ids();
     if (ids.empty())
@@ -87,15 +118,14 @@ void SimulationRunner::describeRecorded(std::size_t frame)
     sim::World world(*from.scene);
     world.restoreState(*from.state);
     for (std::size_t f = fromFrame; f < frame; ++f) {
-        {
-            std::lock_guard lock(m_mutex);
-            if (m_stop)
-                return;
-        }
+        if (stoppedNow(runId))
+            return;
         world.step();
     }
     FrameSteering described{frame, SteeringWatch::describe(world, ids)};
     std::lock_guard lock(m_mutex);
+    if (stopped(runId))
+        return;
     m_pending.steering.push_back(std::move(described));
     if (!m_notified) {
         m_notified = true;
@@ -129,7 +159,9 @@ void SimulationRunner::stop()
 {
     {
         std::lock_guard lock(m_mutex);
-        m_stop = true;
+        m_quit = true;
+        ++m_run;
+        m_request.reset();
     }
     m_wake.notify_all();
     if (m_thread.joinable())
@@ -164,10 +196,12 @@ SimulationRunner::Batch SimulationRunner::takeFrames()
 }
 
 void SimulationRunner::keepCheckpoint(std::size_t frame, const std::shared_ptr<const sim::Scene>& scene,
-                                      const sim::World& world, bool pinned, Checkpoint before)
+                                      const sim::World& world, bool pinned, Checkpoint before, RunId runId)
 {
     auto state = std::make_shared<const sim::WorldState>(world.saveState());
     std::lock_guard lock(m_mutex);
+    if (stopped(runId))
+        return;  // the checkpoints are another run's now
     if (auto old = m_checkpoints.find(frame); old != m_checkpoints.end())
         m_checkpointBytes -= old->second.state->memoryBytes();
     m_checkpointBytes += state->memoryBytes();
@@ -192,7 +226,8 @@ void SimulationRunner::keepCheckpoint(std::size_t frame, const std::shared_ptr<c
 }
 
 std::unique_ptr<sim::World> SimulationRunner::resumeWorld(const std::shared_ptr<const sim::Scene>& scene,
-                                                          std::size_t resumeFrame, std::vector<std::int32_t>& previous)
+                                                          std::size_t resumeFrame, std::vector<std::int32_t>& previous,
+                                                          RunId runId)
 {
     Checkpoint from;
     std::size_t fromFrame = 0;
@@ -226,16 +261,19 @@ std::unique_ptr<sim::World> SimulationRunner::resumeWorld(const std::shared_ptr<
 
     {
         std::lock_guard lock(m_mutex);
+        if (stopped(runId))
+            return nullptr;
         for (auto it = m_checkpoints.upper_bound(resumeFrame); it != m_checkpoints.end();) {
             m_checkpointBytes -= it->second.state->memoryBytes();
             it = m_checkpoints.erase(it);
         }
     }
-    keepCheckpoint(resumeFrame, scene, *edited, true, before);
+    keepCheckpoint(resumeFrame, scene, *edited, true, before, runId);
     return edited;
 }
 
-std::unique_ptr<sim::World> SimulationRunner::replayWorld(const Replay& replay, std::shared_ptr<const sim::Scene>& scene)
+std::unique_ptr<sim::World> SimulationRunner::replayWorld(const Replay& replay, std::shared_ptr<const sim::Scene>& scene,
+                                                          RunId runId)
 {
     std::vector<std::pair<std::size_t, Checkpoint>> spans;
     {
@@ -257,16 +295,15 @@ std::unique_ptr<sim::World> SimulationRunner::replayWorld(const Replay& replay, 
                 picked = std::ptrdiff_t(i);
         world->pickBrainAgent(picked);
         for (std::size_t f = from; f < to; ++f) {
-            {
-                std::lock_guard lock(m_mutex);
-                if (m_stop)
-                    return nullptr;
-            }
+            if (stoppedNow(runId))
+                return nullptr;
             world->step();
             PickedBrainValues brain{picked, {}};
             if (const sim::BrainEvaluator* e = picked < 0 ? nullptr : world->agentBrainEvaluator(std::size_t(picked)))
                 brain.values = e->pickedValues();
             std::lock_guard lock(m_mutex);
+            if (stopped(runId))
+                return nullptr;
             m_pending.brainValues.push_back(std::move(brain));
             ++m_pending.frameCount;
             if (!m_notified) {
@@ -278,7 +315,8 @@ std::unique_ptr<sim::World> SimulationRunner::replayWorld(const Replay& replay, 
     return world;
 }
 
-void SimulationRunner::run(std::shared_ptr<const sim::Scene> scene, std::size_t resumeFrame, Replay replay)
+void SimulationRunner::run(std::shared_ptr<const sim::Scene> scene, std::size_t resumeFrame, Replay replay,
+                           RunId runId)
 {
     using Clock = std::chrono::steady_clock;
     std::unique_ptr<sim::World> world;
@@ -287,12 +325,12 @@ void SimulationRunner::run(std::shared_ptr<const sim::Scene> scene, std::size_t 
     std::vector<std::int32_t> previous;
     try {
         if (replay.on) {
-            world = replayWorld(replay, scene);
+            world = replayWorld(replay, scene, runId);
             if (!world)
                 return;
             resumeFrame = replay.recordedFrames - 1;  // the live run goes on from there
         } else if (resumeFrame > 0) {
-            world = resumeWorld(scene, resumeFrame, previous);
+            world = resumeWorld(scene, resumeFrame, previous, runId);
         }
         if (world) {
             produced = resumeFrame + 1;
@@ -300,14 +338,18 @@ void SimulationRunner::run(std::shared_ptr<const sim::Scene> scene, std::size_t 
             resumeFrame = 0;
             {
                 std::lock_guard lock(m_mutex);
+                if (stopped(runId))
+                    return;
                 m_checkpoints.clear();
                 m_checkpointBytes = 0;
             }
             world = std::make_unique<sim::World>(*scene);
-            keepCheckpoint(0, scene, *world, true, Checkpoint{});
+            keepCheckpoint(0, scene, *world, true, Checkpoint{}, runId);
         }
     } catch (const std::exception& e) {
         std::lock_guard lock(m_mutex);
+        if (stopped(runId))
+            return;
         m_pending.error = e.what();
         m_notified = true;
         m_notify();
@@ -324,6 +366,8 @@ void SimulationRunner::run(std::shared_ptr<const sim::Scene> scene, std::size_t 
         if (const sim::BrainEvaluator* e = first || picked < 0 ? nullptr : world->agentBrainEvaluator(std::size_t(picked)))
             brain.values = e->pickedValues();
         std::lock_guard lock(m_mutex);
+        if (stopped(runId))
+            return;
         if (first) {
             m_pending.agents = world->agentInfo();
             m_pending.fps = scene->settings.fps;
@@ -354,18 +398,21 @@ void SimulationRunner::run(std::shared_ptr<const sim::Scene> scene, std::size_t 
         // (a stroke's agents at their spawn state, erased ones gone).
         publish(true, resumeFrame);
         std::lock_guard lock(m_mutex);
-        m_target = std::max(m_target, produced);
+        if (!stopped(runId))
+            m_target = std::max(m_target, produced);
     } else {
         std::lock_guard lock(m_mutex);
-        m_pending.fps = scene->settings.fps;
-        m_target = std::max(m_target, produced);
+        if (!stopped(runId)) {
+            m_pending.fps = scene->settings.fps;
+            m_target = std::max(m_target, produced);
+        }
     }
     for (;;) {
         {
             std::unique_lock lock(m_mutex);
             m_computing = false;
-            m_wake.wait(lock, [&] { return m_stop || produced < m_target || !m_describe.empty(); });
-            if (m_stop)
+            m_wake.wait(lock, [&] { return stopped(runId) || produced < m_target || !m_describe.empty(); });
+            if (stopped(runId))
                 return;
             m_computing = true;
         }
@@ -374,13 +421,13 @@ void SimulationRunner::run(std::shared_ptr<const sim::Scene> scene, std::size_t 
             std::size_t describe = 0;
             {
                 std::lock_guard lock(m_mutex);
-                if (m_describe.empty() || m_stop)
+                if (m_describe.empty() || stopped(runId))
                     break;
                 describe = m_describe.front();
                 m_describe.erase(m_describe.begin());
             }
             if (describe < produced)
-                describeRecorded(describe);
+                describeRecorded(describe, runId);
         }
         const Clock::time_point begin = Clock::now();
         std::size_t steps = 0;
@@ -389,7 +436,7 @@ void SimulationRunner::run(std::shared_ptr<const sim::Scene> scene, std::size_t 
             std::size_t interval = 0;
             {
                 std::lock_guard lock(m_mutex);
-                if (m_stop || produced >= m_target)
+                if (stopped(runId) || produced >= m_target)
                     break;
                 interval = m_interval;
             }
@@ -400,7 +447,7 @@ void SimulationRunner::run(std::shared_ptr<const sim::Scene> scene, std::size_t 
             world->step();
             publish(false, produced);
             if (produced % interval == 0)
-                keepCheckpoint(produced, scene, *world, false, Checkpoint{});
+                keepCheckpoint(produced, scene, *world, false, Checkpoint{}, runId);
             ++produced;
             ++steps;
         }

@@ -3,7 +3,8 @@
 // with takeFrames(). Keeps checkpoints of the World (every interval frames, within a byte
 // budget) so that an edit resumes from the edit frame instead of frame 0 (resume; the
 // rule is in simcore/world/WorldState.h). Knows nothing of widgets; the World never
-// leaves its thread.
+// leaves its thread, and the caller never waits for it: a new run asked for while one
+// is building a World is taken up when that build ends (only the latest one asked for).
 
 #include "editor/simulation/SteeringWatch.h"
 #include "simcore/brain/BrainEvaluator.h"
@@ -14,10 +15,12 @@
 #include <atomic>
 #include <condition_variable>
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
@@ -36,7 +39,8 @@ public:
     ~SimulationRunner();
 
     // Stops any run, then builds a World of `scene` on the runner thread and records
-    // frame 0. Frames are computed up to the target (setTarget).
+    // frame 0. Frames are computed up to the target (setTarget). Returns at once: the run
+    // stopped hands over nothing more (a World it is building is dropped when built).
     void start(const sim::Scene& scene);
     // Stops any run, then runs the edited `scene` on from frame `editFrame` (> 0) of the
     // recorded run: from the last checkpoint at or before it, the run is stepped again to
@@ -49,6 +53,7 @@ public:
     // crosswalks or vehicles changed; see WorldState.h), the run starts again from frame
     // 0 instead, as start() does.
     void resume(const sim::Scene& scene, std::size_t editFrame);
+    // Stops any run and ends the runner thread (waits for it).
     void stop();
     // Checkpoint every `intervalFrames` frames while their bytes stay within `budgetBytes`;
     // past it the interval doubles and every other checkpoint goes. Call before start().
@@ -134,25 +139,41 @@ private:
         sim::AgentId id = 0;
         std::size_t recordedFrames = 0;
     };
+    // A run asked for and not taken up yet.
+    struct Request {
+        std::shared_ptr<const sim::Scene> scene;
+        std::size_t resumeFrame = 0;
+        Replay replay;
+    };
+    // Every run below is numbered (m_run when it was asked for): once another is asked
+    // for, it stops at its next check and writes nothing more.
+    using RunId = std::uint64_t;
     void launch(sim::Scene scene, std::size_t resumeFrame, Replay replay);
-    void run(std::shared_ptr<const sim::Scene> scene, std::size_t resumeFrame, Replay replay);
+    // The runner thread: takes up the latest run asked for, one after the other.
+    void work();
+    // Whether run `runId` is to stop (m_mutex held).
+    bool stopped(RunId runId) const { return m_quit || runId != m_run; }
+    bool stoppedNow(RunId runId) const;  // the same, taking m_mutex
+    void run(std::shared_ptr<const sim::Scene> scene, std::size_t resumeFrame, Replay replay, RunId runId);
     // On the runner thread: the replay's spans (values published as they are computed);
     // the World at the last recorded frame and its scene, or null when stopped.
-    std::unique_ptr<sim::World> replayWorld(const Replay& replay, std::shared_ptr<const sim::Scene>& scene);
+    std::unique_ptr<sim::World> replayWorld(const Replay& replay, std::shared_ptr<const sim::Scene>& scene, RunId runId);
     // On the runner thread: the World to go on with from resumeFrame, or null to start over.
     std::unique_ptr<sim::World> resumeWorld(const std::shared_ptr<const sim::Scene>& scene, std::size_t resumeFrame,
-                                            std::vector<std::int32_t>& previous);
+                                            std::vector<std::int32_t>& previous, RunId runId);
     // On the runner thread: the watched agents on recorded frame `frame`, from a checkpoint.
-    void describeRecorded(std::size_t frame);
+    void describeRecorded(std::size_t frame, RunId runId);
     void keepCheckpoint(std::size_t frame, const std::shared_ptr<const sim::Scene>& scene, const sim::World& world,
-                        bool pinned, Checkpoint before);
+                        bool pinned, Checkpoint before, RunId runId);
 
     std::function<void()> m_notify;
     std::thread m_thread;
     mutable std::mutex m_mutex;
     std::condition_variable m_wake;
     std::size_t m_target = 1;
-    bool m_stop = false;
+    std::optional<Request> m_request;
+    RunId m_run = 0;
+    bool m_quit = false;  // the thread ends (stop)
     Batch m_pending;
     bool m_notified = false;
     std::atomic<double> m_stepsPerSecond{0.0};
@@ -160,7 +181,7 @@ private:
     std::atomic<std::ptrdiff_t> m_brainAgent{-1};
     SteeringWatch m_watch;
     std::vector<std::size_t> m_describe;  // recorded frames to describe (describeFrame)
-    // Written by the runner thread (under m_mutex), read by start/resume once it stopped.
+    // Written by the current run (under m_mutex); a run that resumes reads them.
     std::map<std::size_t, Checkpoint> m_checkpoints;
     std::size_t m_checkpointBytes = 0;
     std::size_t m_interval = 24;

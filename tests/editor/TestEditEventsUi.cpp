@@ -6,7 +6,8 @@
 // (a brush stroke, a key pressed before the window repaints) counts as read by the
 // simulation when any edit of it is. And the viewport never builds the crowd on the GUI
 // thread: an edit of a 200,000-agent scene returns to the event loop in a fraction of the
-// time a World of it takes to build, and the agents then shown are frame 0 of the cache.
+// time a World of it takes to build (a second edit too, while the simulation's thread
+// still builds the first), and the agents then shown are frame 0 of the cache.
 #include "EditorTestSupport.h"
 #include "EditorUiDriver.h"
 #include "TestRegistry.h"
@@ -294,6 +295,15 @@ groups:
         qInfo("a World of 200,000 agents builds in %.0f ms; the edit returned in %.0f ms", buildMs, editMs);
         QVERIFY2(editMs * 4.0 < buildMs,
                  qPrintable(QString("the edit held the GUI thread %1 ms, a World builds in %2 ms").arg(editMs).arg(buildMs)));
+
+        // Again, while the simulation's thread builds the crowd of the first edit (which
+        // cannot be interrupted): the edit does not wait for it.
+        QVERIFY(sim.recordedFrames() == 0);
+        const double againMs = edit("-12");
+        QCOMPARE(window.document().scene().goals[0].position.y, -12.0f);
+        qInfo("an edit while that World is being built returned in %.0f ms", againMs);
+        QVERIFY2(againMs * 4.0 < buildMs,
+                 qPrintable(QString("the edit waited %1 ms for the World being built (%2 ms)").arg(againMs).arg(buildMs)));
 
         // Until frame 0 of the edited scene comes, the crowd shown before stays.
         if (sim.recordedFrames() == 0)

@@ -1,8 +1,9 @@
 // The simulation runner's checkpoints as the editor relies on them: kept within their
 // byte budget by thinning (the interval doubles), an edit resumes from the last one before
 // the edit frame and pins one there, an edit that adds an agent resumes too (the new agent
-// marked new), a settings edit starts over, and picking an agent for brain values after
-// an edit replays each span with the scene it was recorded with.
+// marked new), a settings edit starts over, picking an agent for brain values after an
+// edit replays each span with the scene it was recorded with, and a new run asked for
+// while a World is being built neither waits for it nor gets anything of it.
 #include "TestRegistry.h"
 
 #include "editor/simulation/SimulationRunner.h"
@@ -12,6 +13,7 @@
 #include <QElapsedTimer>
 #include <QTest>
 
+#include <algorithm>
 #include <vector>
 
 using namespace throng;
@@ -177,6 +179,56 @@ private slots:
         // From frame 31 the car is agent car + 2 of the edited World, and the values are still its.
         QCOMPARE(replay.brainValues[30].agent, std::ptrdiff_t(car + 2));
         QVERIFY(!replay.brainValues[48].values.empty());
+    }
+
+    // A run asked for while the runner builds a big World returns at once (the World
+    // cannot be interrupted: the GUI thread would otherwise wait for it, seconds on a big
+    // crowd), and what comes is the latest run's alone: nothing of the run it replaced.
+    void aNewRunDoesNotWaitForTheWorldBeingBuilt()
+    {
+        sim::Scene big;
+        big.settings.boundsMin = {-300.0f, -300.0f};
+        big.settings.boundsMax = {300.0f, 300.0f};
+        sim::AgentType walker;
+        walker.name = "walker";
+        big.agentTypes.push_back(walker);
+        sim::SpawnGroup crowd;
+        crowd.name = "crowd";
+        crowd.type = "walker";
+        crowd.count = 100000;
+        crowd.min = {-200.0f, -200.0f};
+        crowd.max = {200.0f, 200.0f};
+        big.groups.push_back(crowd);
+        sim::Scene small = big;
+        small.groups[0].count = 30;
+
+        QElapsedTimer clock;
+        clock.start();
+        const std::size_t bigAgents = sim::World(big).agentCount();
+        const double buildMs = double(clock.nsecsElapsed()) / 1e6;
+        QCOMPARE(bigAgents, std::size_t(100000));
+
+        SimulationRunner runner([] {});
+        runner.start(big);
+        QTest::qWait(int(std::min(200.0, buildMs / 4.0)));  // the runner is building it now
+        clock.restart();
+        runner.start(small);
+        const double startMs = double(clock.nsecsElapsed()) / 1e6;
+        qInfo("a World of 100,000 agents builds in %.0f ms; a start during its build returned in %.1f ms", buildMs,
+              startMs);
+        QVERIFY2(startMs * 4.0 < buildMs, qPrintable(QString("start took %1 ms").arg(startMs)));
+
+        runner.setTarget(5);
+        const SimulationRunner::Batch got = collect(runner, 5);
+        QCOMPARE(got.frameCount, std::size_t(5));
+        QCOMPARE(got.agents.size(), std::size_t(30));
+        QCOMPARE(got.frames.size(), std::size_t(5 * 30));
+        QCOMPARE(runner.checkpointFrames(), std::vector<std::size_t>{0});
+        // Nothing of the big run comes later either.
+        QTest::qWait(int(buildMs));
+        const SimulationRunner::Batch late = runner.takeFrames();
+        QCOMPARE(late.frameCount, std::size_t(0));
+        QVERIFY(late.agents.empty());
     }
 };
 
