@@ -22,6 +22,7 @@
 
 namespace throng::sim::simd {
 
+using F1 = float __attribute__((vector_size(4)));  // one agent, in code written for lanes
 using F4 = float __attribute__((vector_size(16)));
 using F8 = float __attribute__((vector_size(32)));
 using M4 = std::int32_t __attribute__((vector_size(16)));  // lane masks: all ones or zero

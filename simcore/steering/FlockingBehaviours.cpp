@@ -1,7 +1,7 @@
 // Separation, alignment, cohesion (Reynolds 1987, "Flocks, Herds, and Schools"; 1999).
 #include "simcore/steering/FlockingBehaviours.h"
 
-#include "simcore/steering/TargetBehaviours.h"
+#include "simcore/steering/detail/BehaviourMath.h"
 #include "simcore/steering/detail/SteeringMath.h"
 #include "simcore/base/Rng.h"
 
@@ -43,22 +43,15 @@ glm::vec3 separate(const SteeringAgent& agent, std::span<const Neighbour> neighb
     const float damping = effectiveMass(agent.mass) / std::max(nonNegative(params.dampingTimeS), kMinResponseTimeS);
     const float maxForce = nonNegative(agent.maxForce);
     glm::vec3 push(0.0f);
+    behave::SeparationFloor floor;
     for (const Neighbour& n : neighbours) {
         const glm::vec3 rel = p - finiteOrZero(n.position);
         const float d = glm::length(rel);
         const float contact = nonNegative(agent.radius) + nonNegative(n.radius);
-        const float reach = contact + range;
-        if (!(d < reach))
+        if (!(d < contact + range))
             continue;
-        // Reynolds 1999: each neighbour's push is weighted by 1 / distance.
-        const float reference = contact > kTiny ? contact : range;
-        const float w = reference / std::max(d, reference / kMaxSeparationWeight);
-        const float fade = range > kTiny ? std::min(1.0f, (reach - d) / range) : 1.0f;
-        const glm::vec3 away = d > kTiny ? rel / d : separationAxis(agent.id, n.id);
-        // The damper on the speed along the line between the two lets a squeezed pair settle
-        // instead of bouncing like two springs; side-by-side walkers are not slowed.
-        const float opening = glm::dot(v - finiteOrZero(n.velocity), away);
-        push += away * (fade * (maxForce * w - damping * opening));
+        push += behave::separationPush(rel, d, contact, range, maxForce, damping, v - finiteOrZero(n.velocity),
+                                       [&] { return separationAxis(agent.id, n.id); }, floor);
     }
     return push;
 }
@@ -72,27 +65,24 @@ glm::vec3 align(const SteeringAgent& agent, std::span<const Neighbour> neighbour
         headings += normalizeOr(n.forward, glm::vec3(0.0f));
         velocities += finiteOrZero(n.velocity);
     }
-    glm::vec3 desired(0.0f);
-    if (params.matchSpeed) {
-        desired = truncate(velocities / float(neighbours.size()), agent.maxSpeed);
-    } else {
-        const glm::vec3 dir = normalizeOr(headings, glm::vec3(0.0f));
-        if (dir == glm::vec3(0.0f))
-            return glm::vec3(0.0f);
-        desired = dir * std::min(glm::length(finiteOrZero(agent.velocity)), nonNegative(agent.maxSpeed));
-    }
-    return steerTowards(agent, desired, params.responseTimeS);
+    const behave::Alignment<float> a =
+        behave::alignmentVelocity(headings, velocities, float(neighbours.size()),
+                                  glm::length(finiteOrZero(agent.velocity)), nonNegative(agent.maxSpeed), params.matchSpeed);
+    return a.aligned ? steerTowards(agent, a.desired, params.responseTimeS) : glm::vec3(0.0f);
 }
 
 glm::vec3 cohere(const SteeringAgent& agent, std::span<const Neighbour> neighbours, const CohesionParams& params)
 {
     if (neighbours.empty())
         return glm::vec3(0.0f);
-    glm::vec3 centre(0.0f);
+    glm::vec3 positions(0.0f);
     for (const Neighbour& n : neighbours)
-        centre += finiteOrZero(n.position);
-    centre /= float(neighbours.size());
-    return arrive(agent, centre, ArrivalParams{params.slowingDistanceM, 0.0f, params.responseTimeS});
+        positions += finiteOrZero(n.position);
+    const float slowing = std::max(nonNegative(params.slowingDistanceM), kTiny);
+    return steerTowards(agent,
+                        behave::cohesionVelocity(agent.position, positions, float(neighbours.size()),
+                                                 nonNegative(agent.maxSpeed), slowing),
+                        params.responseTimeS);
 }
 
 }  // namespace throng::sim

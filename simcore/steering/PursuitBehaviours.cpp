@@ -2,6 +2,7 @@
 #include "simcore/steering/PursuitBehaviours.h"
 
 #include "simcore/steering/TargetBehaviours.h"
+#include "simcore/steering/detail/BehaviourMath.h"
 #include "simcore/steering/detail/SteeringMath.h"
 
 #include <glm/geometric.hpp>
@@ -32,9 +33,10 @@ glm::vec3 predictedPosition(const Neighbour& other, float t)
 
 glm::vec3 pursue(const SteeringAgent& agent, const Neighbour& quarry, const PursuitParams& params)
 {
-    const float dist = glm::length(finiteOrZero(quarry.position - agent.position));
-    const float t = predictionInterval(dist, nonNegative(agent.maxSpeed), params.maxPredictionS);
-    return seek(agent, predictedPosition(quarry, t), SeekParams{params.responseTimeS});
+    const glm::vec3 desired =
+        behave::pursuitVelocity(agent.position, finiteOrZero(quarry.position), finiteOrZero(quarry.velocity),
+                                nonNegative(agent.maxSpeed), nonNegative(params.maxPredictionS));
+    return steerTowards(agent, desired, params.responseTimeS);
 }
 
 glm::vec3 evade(const SteeringAgent& agent, const Neighbour& threat, const EvasionParams& params)

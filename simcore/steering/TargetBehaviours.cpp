@@ -1,6 +1,7 @@
 // Seek, flee and arrival (Reynolds 1999, "Seek and Flee", "Arrival").
 #include "simcore/steering/TargetBehaviours.h"
 
+#include "simcore/steering/detail/BehaviourMath.h"
 #include "simcore/steering/detail/SteeringMath.h"
 
 #include <glm/geometric.hpp>
@@ -13,7 +14,8 @@ using namespace detail;
 
 glm::vec3 seek(const SteeringAgent& agent, glm::vec3 target, const SeekParams& params)
 {
-    return steerTowards(agent, atMaxSpeed(agent, finiteOrZero(target - agent.position)), params.responseTimeS);
+    return steerTowards(agent, behave::seekVelocity(finiteOrZero(target - agent.position), nonNegative(agent.maxSpeed)),
+                        params.responseTimeS);
 }
 
 glm::vec3 flee(const SteeringAgent& agent, glm::vec3 threat, const FleeParams& params)
@@ -23,7 +25,7 @@ glm::vec3 flee(const SteeringAgent& agent, glm::vec3 threat, const FleeParams& p
     if (panic > 0.0f && glm::length(away) >= panic)
         return glm::vec3(0.0f);
     const glm::vec3 dir = normalizeOr(away, heading(agent));
-    return steerTowards(agent, atMaxSpeed(agent, dir), params.responseTimeS);
+    return steerTowards(agent, behave::seekVelocity(dir, nonNegative(agent.maxSpeed)), params.responseTimeS);
 }
 
 glm::vec3 arrivalVelocity(const SteeringAgent& agent, glm::vec3 target, float slowingDistanceM, float toleranceM)
@@ -32,10 +34,8 @@ glm::vec3 arrivalVelocity(const SteeringAgent& agent, glm::vec3 target, float sl
     const float dist = glm::length(offset);
     if (dist <= nonNegative(toleranceM) || dist <= kTiny)
         return glm::vec3(0.0f);
-    // Reynolds 1999, Arrival: the desired speed falls linearly to zero at the target.
     const float slowing = std::max(nonNegative(slowingDistanceM), kTiny);
-    const float speed = nonNegative(agent.maxSpeed) * std::min(1.0f, dist / slowing);
-    return offset * (speed / dist);
+    return behave::arrivalVelocity(offset, dist, nonNegative(agent.maxSpeed), slowing);
 }
 
 glm::vec3 arrive(const SteeringAgent& agent, glm::vec3 target, const ArrivalParams& params)

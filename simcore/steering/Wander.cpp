@@ -1,6 +1,7 @@
 // Wander (Reynolds 1999, "Wander"): a constrained random walk of the steering target.
 #include "simcore/steering/Wander.h"
 
+#include "simcore/steering/detail/BehaviourMath.h"
 #include "simcore/steering/detail/SteeringMath.h"
 
 #include <glm/common.hpp>
@@ -23,7 +24,7 @@ WanderResult wander(const SteeringAgent& agent, const WanderState& previous, glm
     // Buckland's formulation of Reynolds' wander: jitter the point on the circle, then put it back
     // on the circle; the old point stays if the jitter cancels it exactly.
     WanderResult result;
-    result.state.target = normalizeOr(prev * radius + jitter, prev);
+    result.state.target = behave::wanderTarget(prev, radius, jitter);
 
     glm::vec3 forward, up;
     if (params.flying) {
@@ -35,10 +36,8 @@ WanderResult wander(const SteeringAgent& agent, const WanderState& previous, glm
         up = kWorldUp;
     }
     const glm::vec3 right = normalizeOr(glm::cross(forward, up), rightOfForward(forward));
-    const glm::vec3 t = result.state.target;
-    const glm::vec3 local = right * t.x + up * t.y + forward * t.z;
-    const glm::vec3 aim = forward * nonNegative(params.distanceM) + local * radius;
-    result.force = steerTowards(agent, atMaxSpeed(agent, aim), params.responseTimeS);
+    const glm::vec3 aim = behave::wanderAim(forward, right, up, result.state.target, radius, nonNegative(params.distanceM));
+    result.force = steerTowards(agent, behave::seekVelocity(aim, nonNegative(agent.maxSpeed)), params.responseTimeS);
     return result;
 }
 

@@ -243,19 +243,17 @@ private:
     // senseBoid for boid[0, count), up to four consecutive boids of the grid's order in one
     // cell, searched together (WorldFlockSense.cpp).
     void senseFourBoids(const std::uint32_t* boid, int count, NeighbourGrid::Sweep& sweep, BoidSense* out);
+    // The steering and integration of boids (WorldFlockLanes.cpp), written once as
+    // steerLanes over a lane type F of one, four or eight floats, for boid[0, width):
+    // steerBoid for one, steerBoids for boid[0, count), eight or four at a time where it can.
     void steerBoid(std::size_t i, const BoidSense& in);
-    // steerBoid for boid[0, count), eight or four at a time where it can
-    // (WorldFlockLanes.cpp): steerLanes, with F four or eight floats, for boid[0, width).
     void steerBoids(const std::uint32_t* boid, const BoidSense* sensed, std::size_t count);
     template <class F>
     void steerLanes(const std::uint32_t* boid, const BoidSense* sensed);
     void steerFourBoids(const std::uint32_t* boid, const BoidSense* sensed);
     void steerEightBoids(const std::uint32_t* boid, const BoidSense* sensed);  // only where canSteerEight
-    // steerBoid's last part: the ground, the collide pass's flags, the next state. Its
-    // parts: the ground (for a boid below its floor, or over a height field), and the
-    // flag and state stored (steerLanes checks the k nearest itself).
-    void finishBoid(std::size_t i, const BoidSense& in, glm::vec3 pos, glm::vec3 vel, glm::vec3 nextFwd,
-                    glm::vec3 side, glm::vec3 nextUp, WanderState wanderNext);
+    // steerLanes' last part, lane by lane: the ground (for a boid below its floor, or over
+    // a height field), and the collide pass's flag and the next state stored.
     void groundBoid(std::size_t i, glm::vec3& pos, glm::vec3& vel, glm::vec3 nextFwd) const;
     void storeBoid(std::size_t i, bool collideFree, glm::vec3 pos, glm::vec3 vel, glm::vec3 nextFwd, glm::vec3 side,
                    glm::vec3 nextUp, const WanderState& wanderNext);

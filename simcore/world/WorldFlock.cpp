@@ -4,16 +4,18 @@
 // such a type, in the same order, but in one pass over the neighbours: their positions,
 // velocities and headings are read by index (no Neighbour copies, no request list), the
 // three flocking sums accumulate together, and the vehicle step skips the re-normalising
-// of a frame that is already orthonormal. Only the last bits differ from the general path
-// (TestBoidKernel compares the two on the quality figures). A step has two halves,
-// senseBoid and steerBoid (World.h); WorldFlockLanes.cpp does the second for four boids
-// at once.
+// of a frame that is already orthonormal. Each behaviour's formula is the general path's
+// (steering/detail/BehaviourMath.h); only the order of the sums and the skipped
+// re-normalising make the last bits differ (TestBoidKernel compares the two on the
+// quality figures). A step has two halves, senseBoid here and steerBoid, which
+// WorldFlockLanes.cpp writes once for one, four or eight boids at once.
 #include "simcore/world/World.h"
 
 #include "simcore/world/Sense.h"
 #include "simcore/world/NearestList.h"
 
 #include "simcore/steering/detail/SteeringConstants.h"
+#include "simcore/steering/detail/BehaviourMath.h"
 #include "simcore/steering/detail/SteeringMath.h"
 #include "simcore/base/Rng.h"
 #include "simcore/base/Lanes.h"
@@ -31,15 +33,6 @@ using namespace detail;
 using namespace simd;
 
 namespace {
-
-// steerTowards (SteeringMath.h) for finite inputs: the velocity change, as a force that
-// reaches it in the response time (gain = mass / response time), truncated to maxForce.
-glm::vec3 towardsVelocity(glm::vec3 velocity, glm::vec3 desired, float gain, float maxForce)
-{
-    const glm::vec3 f = (desired - velocity) * gain;
-    const float f2 = glm::dot(f, f);
-    return f2 > maxForce * maxForce ? f * (maxForce / std::sqrt(f2)) : f;
-}
 
 bool fusable(const TypeSteering& s)
 {
@@ -173,11 +166,9 @@ void World::sumBoid(std::size_t i, const BoidNearest& best, BoidSense& out)
     glm::vec3 push(0.0f), headings(0.0f), velocities(0.0f), centre(0.0f);
     std::uint32_t* nearIndex = &m_agents.nearIndex[i * k];
     // Where each neighbour's old velocity takes it, and how close it may come (for the
-    // collide pass: see collideFree in finishBoid).
+    // collide pass: see collideFree in WorldFlockLanes.cpp).
     float* keepOut = out.keepOut;
-    // The weight's floor, reference / kMaxSeparationWeight, is the same for neighbours of
-    // the same contact distance (all of them, where the flock has one radius).
-    float limitContact = NAN, limit = 0.0f;
+    behave::SeparationFloor floor;
     for (std::size_t n = 0; n < count; ++n) {
         const auto j = best.index(n);
         nearIndex[n] = j;
@@ -196,20 +187,9 @@ void World::sumBoid(std::size_t i, const BoidNearest& best, BoidSense& out)
         if (!(d2 < reach * reach))
             continue;
         const float d = std::sqrt(d2);
-        const glm::vec3 rel = p - q;
-        const float reference = contact > kTiny ? contact : range;
-        if (!(contact == limitContact)) {
-            limitContact = contact;
-            limit = reference / kMaxSeparationWeight;
-        }
-        const float w = reference / std::max(d, limit);
-        // rel / d and (reach - d) / range, the same divisions in one instruction.
-        const F4 quotient = F4{rel.x, rel.y, rel.z, reach - d} / F4{d, d, d, range};
-        const float fade = range > kTiny ? std::min(1.0f, quotient[3]) : 1.0f;
-        const glm::vec3 away = d > kTiny ? glm::vec3(quotient[0], quotient[1], quotient[2])
-                                         : separationAxis(m_agents.info[i].id, m_agents.info[j].id);
-        const float opening = glm::dot(v - vj, away);
-        push += away * (fade * (maxForce * w - damping * opening));
+        push += behave::separationPush(p - q, d, contact, range, maxForce, damping, v - vj, [&] {
+            return separationAxis(m_agents.info[i].id, m_agents.info[j].id);
+        }, floor);
     }
     m_agents.nearCount[i] = std::uint8_t(count);
     out.push = push;
@@ -217,153 +197,6 @@ void World::sumBoid(std::size_t i, const BoidNearest& best, BoidSense& out)
     out.velocities = velocities;
     out.centre = centre;
     out.count = std::uint32_t(count);
-}
-
-// steerLanes (WorldFlockLanes.cpp) repeats this, operation for operation, for four or
-// eight boids at once: a change here needs the same change there. TestNeighbourSweep fails
-// when they differ in a bit (the grid-order path steers by eights or fours, the index-order
-// one here).
-void World::steerBoid(std::size_t i, const BoidSense& in)
-{
-    const std::uint16_t type = m_agents.info[i].typeIndex;
-    const TypeSteering& s = m_types.steering[type];
-    const BoidType& b = m_boidTypes[type];
-    const glm::vec3 p = m_agents.pos[i], v = m_agents.vel[i], fwd = m_agents.fwd[i];
-    const float radius = m_agents.radius[i], maxSpeed = nonNegative(m_agents.maxSpeed[i]);
-    const std::size_t count = in.count;
-    const glm::vec3 push = in.push, headings = in.headings, velocities = in.velocities, centre = in.centre;
-    const float maxForce = b.maxForce;
-
-    // Blended in World::steer's order (containment, separation, pursuit, alignment,
-    // cohesion, wander), each behaviour as its function in simcore/steering computes it
-    // for a finite state.
-    const float speedNow = glm::length(v);
-    const glm::vec3 heading = speedNow > kTiny ? v * (1.0f / speedNow) : fwd;
-    auto towards = [&](glm::vec3 desired, float gain) { return towardsVelocity(v, desired, gain, maxForce); };
-    glm::vec3 sum(0.0f);
-    if (b.wContainment > 0.0f) {
-        const float probe = s.containment.probeMinM + s.containment.probeLookaheadS * speedNow + radius;
-        const glm::vec3 lo = p - m_set.bounds.min, hi = m_set.bounds.max - p;
-        if (std::min({lo.x, lo.y, lo.z, hi.x, hi.y, hi.z}) < probe)
-            sum += stayInside(steeringAgent(m_agents, m_types, i), m_set.bounds, s.containment) * b.wContainment;
-    }
-    if (b.wSeparation > 0.0f)
-        sum += push * b.wSeparation;
-    if (const std::int32_t leader = m_agents.leader[i]; leader >= 0 && b.wPursuit > 0.0f) {
-        // Pursuit: seek where the quarry will be after distance / max speed.
-        const auto j = std::size_t(leader);
-        const glm::vec3 q = m_agents.pos[j];
-        const float cap = b.predictionCapS;
-        const float ahead = maxSpeed > kTiny ? std::min(glm::length(q - p) / maxSpeed, cap) : cap;
-        const glm::vec3 aim = q + m_agents.vel[j] * ahead - p;
-        sum += towards(normalizeOr(aim, glm::vec3(0.0f)) * maxSpeed, b.gainPursuit) * b.wPursuit;
-    }
-    if (count > 0 && b.wAlignment > 0.0f) {
-        // Alignment: the neighbours' mean heading at the current speed, or their mean velocity.
-        glm::vec3 desired(0.0f);
-        bool any = true;
-        if (s.alignment.matchSpeed) {
-            desired = truncate(velocities / float(count), maxSpeed);
-        } else {
-            const glm::vec3 dir = normalizeOr(headings, glm::vec3(0.0f));
-            any = dir != glm::vec3(0.0f);
-            desired = dir * std::min(speedNow, maxSpeed);
-        }
-        if (any)
-            sum += towards(desired, b.gainAlignment) * b.wAlignment;
-    }
-    if (count > 0 && b.wCohesion > 0.0f) {
-        // Cohesion: arrive at the neighbours' centre, slowing within slowingDistanceM.
-        const glm::vec3 offset = centre / float(count) - p;
-        const float dist = glm::length(offset);
-        glm::vec3 desired(0.0f);
-        if (dist > kTiny) {
-            desired = offset * (maxSpeed * std::min(1.0f, dist / b.slowingM) / dist);
-        }
-        sum += towards(desired, b.gainCohesion) * b.wCohesion;
-    }
-    WanderState wanderNext = m_agents.wander[i];
-    if (b.wWander > 0.0f) {
-        // Wander (Wander.cpp, in 3D): jitter the target on the unit sphere (kept unit from
-        // step to step), then aim at it on the sphere ahead, in the agent's own frame.
-        const std::uint64_t key = rngKey(m_seed, m_agents.info[i].id, m_clock.step);
-        const glm::vec3 jitter = glm::vec3(rngRangeOf(key, kWanderX, -1.0f, 1.0f), rngRangeOf(key, kWanderY, -1.0f, 1.0f),
-                                           rngRangeOf(key, kWanderZ, -1.0f, 1.0f)) *
-                                 b.jitterM;
-        const float wanderRadius = b.wanderRadiusM;
-        const glm::vec3 prev = wanderNext.target;
-        const glm::vec3 target = normalizeOr(prev * wanderRadius + jitter, prev);
-        wanderNext.target = target;
-        // Up made square to the heading; heading x up is then unit already (both unit and
-        // square), so it is normalised only where up had to fall back.
-        const glm::vec3 upRaw = m_agents.up[i] - heading * glm::dot(m_agents.up[i], heading);
-        const float upLen = glm::length(upRaw);
-        glm::vec3 up, right;
-        if (upLen > 0.5f && upLen < kInfinity) {
-            up = upRaw * (1.0f / upLen);
-            right = glm::cross(heading, up);
-        } else {
-            up = normalizeOr(upRaw, kWorldUp);
-            right = normalizeOr(glm::cross(heading, up), rightOfForward(heading));
-        }
-        const glm::vec3 aim = heading * b.wanderDistanceM +
-                              (right * target.x + up * target.y + heading * target.z) * wanderRadius;
-        sum += towards(normalizeOr(aim, glm::vec3(0.0f)) * maxSpeed, b.gainWander) * b.wWander;
-    }
-    const glm::vec3 force = truncate(sum, maxForce);
-
-    // Integrate: integrateVehicle's flier step (VehicleModel.cpp) on a state that is
-    // already finite and orthonormal.
-    glm::vec3 vel = truncate(v + force * (m_clock.dt / b.mass), maxSpeed);
-    const float minSpeed = std::min(b.minSpeed, maxSpeed);
-    float speed = glm::length(vel);
-    if (speed < minSpeed) {
-        vel = (speed > kStoppedSpeed ? vel / speed : fwd) * minSpeed;
-        speed = glm::length(vel);
-    }
-    vel = finiteOrZero(vel);
-    glm::vec3 pos = finiteOrZero(p + vel * m_clock.dt);
-    glm::vec3 nextFwd = fwd;
-    if (speed > kStoppedSpeed)
-        nextFwd = vel / speed;
-    // Bank: up leans toward the lateral acceleration, smoothed.
-    const glm::vec3 acceleration = (vel - v) / m_clock.dt;
-    const glm::vec3 lateral = acceleration - nextFwd * glm::dot(acceleration, nextFwd);
-    const glm::vec3 bankedUp = normalizeOr(kWorldUp + lateral * b.bankGain, kWorldUp);
-    const glm::vec3 up0 = m_agents.up[i];
-    const glm::vec3 up = normalizeOr(up0 + (bankedUp - up0) * b.bankBlend, kWorldUp);
-    // As for wander's frame: side x forward is unit once side is (both unit and square).
-    const glm::vec3 sideRaw = glm::cross(nextFwd, up);
-    const float sideLen = glm::length(sideRaw);
-    glm::vec3 side, nextUp;
-    if (sideLen > 0.5f && sideLen < kInfinity) {
-        side = sideRaw * (1.0f / sideLen);
-        nextUp = glm::cross(side, nextFwd);
-    } else {
-        side = normalizeOr(sideRaw, m_agents.side[i]);
-        nextUp = normalizeOr(glm::cross(side, nextFwd), kWorldUp);
-    }
-
-    finishBoid(i, in, pos, vel, nextFwd, side, nextUp, wanderNext);
-}
-
-void World::finishBoid(std::size_t i, const BoidSense& in, glm::vec3 pos, glm::vec3 vel, glm::vec3 nextFwd,
-                       glm::vec3 side, glm::vec3 nextUp, WanderState wanderNext)
-{
-    groundBoid(i, pos, vel, nextFwd);
-    // Collide-free: none of the k nearest can end the step within contact distance, as
-    // long as each lies within m_boidSlackM of where its old velocity takes it (what the
-    // collide pass checks before it trusts this flag); the margin covers the rounding of
-    // these sums and of the pass's own. (steerLanes repeats this, a vector of neighbours
-    // at a time.)
-    const float margin = 1e-4f + 4e-6f * (std::fabs(pos.x) + std::fabs(pos.y) + std::fabs(pos.z));
-    bool collideFree = m_boidSlackM > 0.0f;
-    for (std::size_t n = 0; n < in.count; ++n) {
-        const glm::vec3 d = pos - glm::vec3(in.driftX[n], in.driftY[n], in.driftZ[n]);
-        const float keep = in.keepOut[n] + margin;
-        collideFree = collideFree && glm::dot(d, d) > keep * keep;
-    }
-    storeBoid(i, collideFree, pos, vel, nextFwd, side, nextUp, wanderNext);
 }
 
 void World::groundBoid(std::size_t i, glm::vec3& pos, glm::vec3& vel, glm::vec3 nextFwd) const

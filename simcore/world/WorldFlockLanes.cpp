@@ -1,19 +1,23 @@
-// The boids kernel's steering (WorldFlock.cpp, steerBoid) for four or eight boids at once,
-// one per lane of a float vector (base/Lanes.h). What each boid's state and type decide
-// (whether it pursues, aligns or wanders, which side of a threshold it lies on) becomes a
-// lane mask, and both sides are computed and one is kept; the rare cases that need more
-// (containment near the bounds, a frame whose up had to fall back, the ground) are done
-// for their lane alone. Operation for operation what steerBoid does, so the result is the
-// same to the bit at either width (TestNeighbourSweep and the flock's state hash show it).
-// The square roots and divisions of four boids go together: a step of 100,000 birds takes
-// about 12 % less time than with steerBoid for each (1 thread). Where the CPU has AVX2,
-// eight go together in one function built for it (steerEightBoids), chosen at run time, so
-// the build still runs on any x86-64: about 7 % less again (2 threads).
+// The boids kernel's steering and integration (the second half of its step; WorldFlock.cpp
+// senses), written once for one, four or eight boids at once, one per lane of a float
+// vector (base/Lanes.h): steerBoid runs it with one lane, steerBoids with four or eight.
+// Each behaviour's formula comes from steering/detail/BehaviourMath.h, which the general
+// path uses too. What each boid's state and type decide (whether it pursues, aligns or
+// wanders, which side of a threshold it lies on) becomes a lane mask, and both sides are
+// computed and one is kept; the rare cases that need more (containment near the bounds, a
+// frame whose up had to fall back, the ground) are done for their lane alone. The result
+// is the same to the bit at every width (TestNeighbourSweep steers the same flock one
+// boid at a time and by fours and eights). The square roots and divisions of four boids
+// go together: a step of 100,000 birds takes about 12 % less time than one boid at a time
+// (1 thread). Where the CPU has AVX2, eight go together in one function built for it
+// (steerEightBoids), chosen at run time, so the build still runs on any x86-64: about 7 %
+// less again (2 threads).
 #include "simcore/world/World.h"
 
 #include "simcore/world/Sense.h"
 
 #include "simcore/steering/detail/SteeringConstants.h"
+#include "simcore/steering/detail/BehaviourMath.h"
 #include "simcore/steering/detail/SteeringMath.h"
 #include "simcore/base/Rng.h"
 #include "simcore/base/Lanes.h"
@@ -59,15 +63,6 @@ template <class F>
     v.z[l] = x.z;
 }
 
-// towardsVelocity (WorldFlock.cpp): (desired - velocity) * gain, truncated to maxForce.
-template <class F>
-[[gnu::always_inline]] inline Lanes3<F> towards(Lanes3<F> velocity, Lanes3<F> desired, F gain, F maxForce)
-{
-    const Lanes3<F> f = (desired - velocity) * gain;
-    const F f2 = dot(f, f);
-    return select(f2 > maxForce * maxForce, f * (maxForce / sqrtOf(f2)), f);
-}
-
 // finishBoid's collide-free check for one boid at `at`, its k nearest a vector at a time:
 // none of them within its keep-out distance (plus the margin) of where it drifts. The
 // lanes past `count` hold another boid's neighbours (or zeros) and are left out.
@@ -109,13 +104,15 @@ template <class F>
     using V3 = Lanes3<F>;
     const V3 kUp{F{}, splat<F>(1.0f), F{}};
     // Gather: each lane's state, its type's parameters and its neighbours' sums, and the
-    // parts steerBoid computes with branches of its own (containment, pursuit's quarry,
-    // wander's random jitter).
-    glm::vec3 p[kLanes], v[kLanes], fwd[kLanes], up0[kLanes], contain[kLanes], quarry[kLanes], quarryVel[kLanes],
-        jitter[kLanes], prevTarget[kLanes], push[kLanes], headings[kLanes], velocities[kLanes], centre[kLanes];
-    F maxSpeed, n, radius, probeMin, probeAhead;
-    M pursues, matchSpeed, wanders;
-    const BoidType* types[kLanes];
+    // parts that take a branch of their own (containment, pursuit's quarry, wander's
+    // random jitter). (Every lane is written below; the braces only keep GCC from taking
+    // the one-lane form's arrays for unset.)
+    glm::vec3 p[kLanes]{}, v[kLanes]{}, fwd[kLanes]{}, up0[kLanes]{}, contain[kLanes]{}, quarry[kLanes]{},
+        quarryVel[kLanes]{}, jitter[kLanes]{}, prevTarget[kLanes]{}, push[kLanes]{}, headings[kLanes]{},
+        velocities[kLanes]{}, centre[kLanes]{};
+    F maxSpeed{}, n{}, radius{}, probeMin{}, probeAhead{};
+    M pursues{}, matchSpeed{}, wanders{};
+    const BoidType* types[kLanes]{};
     bool oneType = true;
     for (int l = 0; l < kLanes; ++l) {
         const std::size_t i = boid[l];
@@ -195,38 +192,33 @@ template <class F>
         }
     }
 
-    // Steer, in steerBoid's order: containment, separation, pursuit, alignment, cohesion,
-    // wander.
+    // Steer, in World::steer's order: containment, separation, pursuit, alignment,
+    // cohesion, wander, each behaviour's formula from BehaviourMath.h.
     const V3 heading = select(speedNow > kTiny, V * (1.0f / speedNow), Fwd);
     V3 sum = select(contained, lanes<F>(contain), V3{});
     sum = select(wSep > 0.0f, sum + lanes<F>(push) * wSep, sum);
     {
-        const V3 q = lanes<F>(quarry);
-        const F ahead = select(maxSpeed > kTiny, minOf(length(q - P) / maxSpeed, cap), cap);
-        const V3 aim = q + lanes<F>(quarryVel) * ahead - P;
-        const V3 force = towards(V, normalizeOr(aim, V3{}, kTiny) * maxSpeed, gPur, maxForce) * wPur;
-        sum = select(pursues, sum + force, sum);
+        const V3 desired = behave::pursuitVelocity(P, lanes<F>(quarry), lanes<F>(quarryVel), maxSpeed, cap);
+        sum = select(pursues, sum + behave::towards(V, desired, gPur, maxForce) * wPur, sum);
     }
     const M some = n > 0.0f;
     {
-        const V3 matched = truncate(lanes<F>(velocities) / n, maxSpeed);
-        const V3 dir = normalizeOr(lanes<F>(headings), V3{}, kTiny);
-        const M anyDir = (dir.x != 0.0f) | (dir.y != 0.0f) | (dir.z != 0.0f);
-        const V3 desired = select(matchSpeed, matched, dir * minOf(speedNow, maxSpeed));
-        const V3 force = towards(V, desired, gAli, maxForce) * wAli;
-        sum = select(some & (wAli > 0.0f) & (matchSpeed | anyDir), sum + force, sum);
+        const behave::Alignment<F> a =
+            behave::alignmentVelocity(lanes<F>(headings), lanes<F>(velocities), n, speedNow, maxSpeed, matchSpeed);
+        const V3 force = behave::towards(V, a.desired, gAli, maxForce) * wAli;
+        sum = select(some & (wAli > 0.0f) & a.aligned, sum + force, sum);
     }
     {
-        const V3 offset = lanes<F>(centre) / n - P;
-        const F dist = length(offset);
-        const V3 desired = select(dist > kTiny, offset * (maxSpeed * minOf(splat<F>(1.0f), dist / slowing) / dist), V3{});
-        const V3 force = towards(V, desired, gCoh, maxForce) * wCoh;
+        const V3 desired = behave::cohesionVelocity(P, lanes<F>(centre), n, maxSpeed, slowing);
+        const V3 force = behave::towards(V, desired, gCoh, maxForce) * wCoh;
         sum = select(some & (wCoh > 0.0f), sum + force, sum);
     }
     V3 target = lanes<F>(prevTarget);
     if (any(wanders)) {
+        // Up made square to the heading; heading x up is then unit already (both unit and
+        // square), so it is normalised only where up had to fall back.
         const V3 prev = target;
-        target = select(wanders, normalizeOr(prev * wanderR + lanes<F>(jitter), prev, kTiny), prev);
+        target = select(wanders, behave::wanderTarget(prev, wanderR, lanes<F>(jitter)), prev);
         const V3 upNow = lanes<F>(up0);
         const V3 upRaw = upNow - heading * dot(upNow, heading);
         const F upLen = length(upRaw);
@@ -241,8 +233,8 @@ template <class F>
                 setLane(right, l, normalizeOr(glm::cross(h, u), rightOfForward(h)));
             }
         }
-        const V3 aim = heading * wanderD + (right * target.x + up * target.y + heading * target.z) * wanderR;
-        const V3 force = towards(V, normalizeOr(aim, V3{}, kTiny) * maxSpeed, gWan, maxForce) * wWan;
+        const V3 aim = behave::wanderAim(heading, right, up, target, wanderR, wanderD);
+        const V3 force = behave::towards(V, behave::seekVelocity(aim, maxSpeed), gWan, maxForce) * wWan;
         sum = select(wanders, sum + force, sum);
     }
     const V3 force = truncate(sum, maxForce);
@@ -322,6 +314,12 @@ void World::steerBoids(const std::uint32_t* boid, const BoidSense* sensed, std::
 }
 
 void World::steerFourBoids(const std::uint32_t* boid, const BoidSense* sensed) { steerLanes<F4>(boid, sensed); }
+
+void World::steerBoid(std::size_t i, const BoidSense& in)
+{
+    const auto boid = std::uint32_t(i);
+    steerLanes<F1>(&boid, &in);
+}
 
 #if defined(__x86_64__)
 // The same kernel, inlined here and so built with AVX2's eight-float registers (without

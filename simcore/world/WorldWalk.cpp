@@ -17,6 +17,7 @@
 
 #include "simcore/steering/UninitialisedArray.h"
 #include "simcore/steering/detail/SteeringConstants.h"
+#include "simcore/steering/detail/BehaviourMath.h"
 #include "simcore/steering/detail/SteeringMath.h"
 #include "simcore/base/Rng.h"
 #include "simcore/world/detail/StepConstants.h"
@@ -36,10 +37,7 @@ namespace {
 // steerTowards (SteeringMath.h) with its gain (mass / response time) made once per type.
 [[gnu::always_inline]] inline glm::vec3 towardsVelocity(glm::vec3 velocity, glm::vec3 desired, float gain, float maxForce)
 {
-    const glm::vec3 dv = finiteOrZero(desired) - velocity;
-    if (dv == glm::vec3(0.0f))
-        return glm::vec3(0.0f);
-    return truncate(dv * gain, maxForce);
+    return behave::towards(velocity, finiteOrZero(desired), gain, maxForce);
 }
 
 // Behaviours the kernel computes. Path following only for agents without a path (then
@@ -155,6 +153,7 @@ void World::stepWalker(std::size_t i)
     const float horizon = w.horizonS;
     const bool unaligned = w.wUnaligned > 0.0f && horizon > kTiny;
     glm::vec3 push(0.0f);
+    behave::SeparationFloor floor;
     float threatT = -1.0f;
     AgentId threatId = 0;
     std::uint32_t threatJ = 0;
@@ -171,34 +170,22 @@ void World::stepWalker(std::size_t i)
         const float rj = m_agents.radius[j];
         if (w.wSeparation > 0.0f) {
             // The squared distance is the search key's (the same dot product, negated offset).
-            const float contact = r + nonNegative(rj), reach = contact + range;
+            const float contact = r + nonNegative(rj);
             const float d = std::sqrt(std::bit_cast<float>(std::uint32_t(best.keys[n] >> 32)));
-            if (d < reach) {
-                const glm::vec3 rel = p - q;
-                const float reference = contact > kTiny ? contact : range;
-                const float weight = reference / std::max(d, reference / kMaxSeparationWeight);
-                const float fade = range > kTiny ? std::min(1.0f, (reach - d) / range) : 1.0f;
-                const glm::vec3 away = d > kTiny ? rel / d : separationAxis(id, m_agents.info[j].id);
-                const float opening = glm::dot(v - vj, away);
-                push += away * (fade * (maxForce * weight - w.damping * opening));
-            }
+            if (d < contact + range)
+                push += behave::separationPush(p - q, d, contact, range, maxForce, w.damping, v - vj,
+                                               [&] { return separationAxis(id, m_agents.info[j].id); }, floor);
         }
         if (unaligned) {
-            const glm::vec3 dp = q - p, dv = vj - v;
-            const float dv2 = glm::dot(dv, dv);
-            if (dv2 > kTiny * kTiny) {
-                const float tc = -glm::dot(dp, dv) / dv2;
-                if (tc >= 0.0f && tc <= horizon) {
-                    const glm::vec3 offset = dp + dv * tc;
-                    const float clear = r + nonNegative(rj) + w.marginM;
-                    const AgentId other = m_agents.info[j].id;
-                    if (glm::length(offset) < clear &&
-                        (threatT < 0.0f || tc < threatT || (tc == threatT && other < threatId))) {
-                        threatT = tc;
-                        threatId = other;
-                        threatJ = j;
-                        threatOffset = offset;
-                    }
+            float tc;
+            glm::vec3 offset;
+            if (behave::approachesWithin(q - p, vj - v, horizon, r + nonNegative(rj) + w.marginM, tc, offset)) {
+                const AgentId other = m_agents.info[j].id;
+                if (threatT < 0.0f || tc < threatT || (tc == threatT && other < threatId)) {
+                    threatT = tc;
+                    threatId = other;
+                    threatJ = j;
+                    threatOffset = offset;
                 }
             }
         }
@@ -249,15 +236,11 @@ void World::stepWalker(std::size_t i)
             const glm::vec3 h = speedNow > kTiny && speedNow < kInfinity ? v * (1.0f / speedNow)
                                                                           : normalizeOr(fwd, glm::vec3(0.0f, 0.0f, 1.0f));
             const glm::vec3 right = normalizeOr(glm::cross(h, normalizeOr(m_agents.up[i], kWorldUp)), rightOfForward(h));
-            const float sideSign = glm::dot(threatOffset, right) > kDeadAheadM ? -1.0f : 1.0f;
-            const float urgency = 1.0f - threatT / horizon;
             const glm::vec3 threatForward =
                 normalizeOr(m_agents.vel[threatJ], normalizeOr(m_agents.fwd[threatJ], glm::vec3(0.0f)));
             const bool headOn = glm::dot(h, threatForward) < s.unaligned.headOnCosine;
-            const float brake = headOn ? w.brake : 0.0f;
-            const glm::vec3 lateralPart = right * (sideSign * (headOn ? w.lateral : 1.0f));
-            const glm::vec3 brakePart = v == glm::vec3(0.0f) ? glm::vec3(0.0f) : -h * brake;
-            force = (lateralPart + brakePart) * (maxForce * urgency);
+            force = behave::unalignedAvoidance(h, right, threatOffset, threatT, horizon, headOn, w.brake, w.lateral,
+                                               v != glm::vec3(0.0f), maxForce);
         }
         add(force, w.wUnaligned);
     }
@@ -270,12 +253,12 @@ void World::stepWalker(std::size_t i)
         const bool throughExit = m_set.goals[std::size_t(m_agents.goal[i])].exit && !(m_nav.active && m_nav.hasTarget[i]);
         const float slowing = throughExit ? 1e-6f : w.slowingM;
         if (!(dist <= w.toleranceM || dist <= kTiny))
-            desired = offset * (nonNegative(maxSpeed) * std::min(1.0f, dist / slowing) / dist);
+            desired = behave::arrivalVelocity(offset, dist, nonNegative(maxSpeed), slowing);
         add(towardsVelocity(v, desired, w.gainArrival, maxForce), w.wArrival);
     }
     if (hasGoal && w.wSeek > 0.0f)
-        add(towardsVelocity(v, normalizeOr(finiteOrZero(goal - p), glm::vec3(0.0f)) * nonNegative(maxSpeed),
-                            w.gainSeek, maxForce),
+        add(towardsVelocity(v, behave::seekVelocity(finiteOrZero(goal - p), nonNegative(maxSpeed)), w.gainSeek,
+                            maxForce),
             w.wSeek);
     WanderState wanderNext = m_agents.wander[i];
     if (w.wWander > 0.0f) {

@@ -117,10 +117,4 @@ inline glm::vec3 steerTowards(const SteeringAgent& agent, glm::vec3 desiredVeloc
     return truncate(dv * responseGain(effectiveMass(agent.mass), responseTimeS), agent.maxForce);
 }
 
-// A velocity of the agent's top speed along direction (need not be unit); zero for a zero direction.
-inline glm::vec3 atMaxSpeed(const SteeringAgent& agent, glm::vec3 direction)
-{
-    return normalizeOr(direction, glm::vec3(0.0f)) * nonNegative(agent.maxSpeed);
-}
-
 }  // namespace throng::sim::detail

@@ -1,0 +1,276 @@
+#pragma once
+// The steering behaviours' formulas, each written once, as templates over a lane type:
+// F is float (one agent, with glm::vec3 for its vectors) or a vector of floats from
+// base/Lanes.h (F4 or F8 for four or eight agents at once, F1 for one), and V3 is the
+// matching vector (Vec3Of<F>). The general steering functions (FlockingBehaviours.cpp,
+// TargetBehaviours.cpp, PursuitBehaviours.cpp), the walker kernel (WorldWalk.cpp) and the
+// boids kernel (WorldFlock.cpp, WorldFlockLanes.cpp) all call these, so a change to a
+// behaviour is made here and reaches every path.
+//
+// A choice one agent makes with a branch, several make with a lane mask: both sides are
+// computed and select keeps one, which gives the branch's bits wherever the kept side is
+// computed the same way. Every operation is what the scalar code did before, in the same
+// order (simcore builds with -ffp-contract=off, so no fused multiply-add changes a bit),
+// which kept every result to the bit (demos.TestGoldenRuns). Always inlined: an eight-float
+// value may not cross a call into code not built for AVX (base/Lanes.h).
+#ifndef THRONG_SIMCORE_BUILD
+#error "a detail/ header, private to throng::simcore: include the module's public headers instead"
+#endif
+
+#include "simcore/base/Lanes.h"
+#include "simcore/steering/FlockingBehaviours.h"
+#include "simcore/steering/detail/SteeringConstants.h"
+#include "simcore/steering/detail/SteeringMath.h"
+
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+
+#include <cmath>
+#include <type_traits>
+
+namespace throng::sim::behave {
+
+using simd::Lanes3;
+
+// The vector of a lane type: glm::vec3 for one float, Lanes3 for a vector of floats.
+template <class F>
+struct Vec3Of_ {
+    using type = Lanes3<F>;
+};
+template <>
+struct Vec3Of_<float> {
+    using type = glm::vec3;
+};
+template <class F>
+using Vec3Of = typename Vec3Of_<F>::type;
+
+template <class F>
+inline constexpr bool kScalar = std::is_same_v<F, float>;
+
+// The lane helpers for one float (base/Lanes.h has them for vectors); the same operations.
+using simd::maxOf;
+using simd::minOf;
+using simd::select;
+[[gnu::always_inline]] inline float sqrtOf(float x) { return std::sqrt(x); }
+using simd::sqrtOf;
+[[gnu::always_inline]] inline float dot(glm::vec3 a, glm::vec3 b) { return glm::dot(a, b); }
+using simd::dot;
+[[gnu::always_inline]] inline float length(glm::vec3 v) { return glm::length(v); }
+using simd::length;
+template <class F>
+[[gnu::always_inline]] inline F splat(float x)
+{
+    if constexpr (kScalar<F>)
+        return x;
+    else
+        return simd::splat<F>(x);
+}
+template <class V3>
+[[gnu::always_inline]] inline V3 zero3()
+{
+    if constexpr (std::is_same_v<V3, glm::vec3>)
+        return glm::vec3(0.0f);
+    else
+        return V3{};
+}
+// SteeringMath.h's normalizeOr (lengths up to kTiny count as zero) and truncate.
+[[gnu::always_inline]] inline glm::vec3 normalizeOr(glm::vec3 v, glm::vec3 fallback)
+{
+    return detail::normalizeOr(v, fallback);
+}
+template <class F>
+[[gnu::always_inline]] inline Lanes3<F> normalizeOr(Lanes3<F> v, Lanes3<F> fallback)
+{
+    return simd::normalizeOr(v, fallback, detail::kTiny);
+}
+[[gnu::always_inline]] inline glm::vec3 truncate(glm::vec3 v, float maxLength) { return detail::truncate(v, maxLength); }
+using simd::truncate;
+
+// --- Turning a desired velocity into a force ---------------------------------------------
+
+// Reynolds 1999's steering = desired velocity - velocity, as the force that reaches it in
+// the response time (gain = mass / response time: responseGain), truncated to maxForce
+// (>= 0). For finite input what steerTowards (SteeringMath.h) gives.
+template <class F, class V3 = Vec3Of<F>>
+[[gnu::always_inline]] inline V3 towards(V3 velocity, V3 desired, F gain, F maxForce)
+{
+    const V3 f = (desired - velocity) * gain;
+    const F f2 = dot(f, f);
+    if constexpr (kScalar<F>)
+        return f2 > maxForce * maxForce ? f * (maxForce / sqrtOf(f2)) : f;
+    else
+        return select(f2 > maxForce * maxForce, f * (maxForce / sqrtOf(f2)), f);
+}
+
+// --- Desired velocities ---------------------------------------------------------------
+
+// Seek (Reynolds 1999): top speed straight at the target, `offset` = target - position;
+// zero for a zero offset.
+template <class F, class V3 = Vec3Of<F>>
+[[gnu::always_inline]] inline V3 seekVelocity(V3 offset, F maxSpeed)
+{
+    return normalizeOr(offset, zero3<V3>()) * maxSpeed;
+}
+
+// Arrival (Reynolds 1999): the desired speed falls linearly from maxSpeed at slowingM
+// (> 0) to zero at the target; `dist` is the length of `offset` (target - position), and
+// the caller has checked it is above the tolerance and kTiny.
+template <class F, class V3 = Vec3Of<F>>
+[[gnu::always_inline]] inline V3 arrivalVelocity(V3 offset, F dist, F maxSpeed, F slowingM)
+{
+    return offset * (maxSpeed * minOf(splat<F>(1.0f), dist / slowingM) / dist);
+}
+
+// Pursuit (Reynolds 1999): seek where the quarry will be after distance / max speed,
+// looking at most capS ahead.
+template <class F, class V3 = Vec3Of<F>>
+[[gnu::always_inline]] inline V3 pursuitVelocity(V3 position, V3 quarry, V3 quarryVelocity, F maxSpeed, F capS)
+{
+    F ahead;
+    if constexpr (kScalar<F>)
+        ahead = maxSpeed > detail::kTiny ? minOf(length(quarry - position) / maxSpeed, capS) : capS;
+    else
+        ahead = select(maxSpeed > detail::kTiny, minOf(length(quarry - position) / maxSpeed, capS), capS);
+    return seekVelocity(quarry + quarryVelocity * ahead - position, maxSpeed);
+}
+
+// Alignment (Reynolds 1987) over n > 0 neighbours, from the sums of their velocities and
+// (unit) headings: their mean velocity (matchSpeed), or their mean heading at the agent's
+// speed, capped at its top speed. `aligned` is false where the headings cancel out (no
+// force then).
+template <class F>
+struct Alignment {
+    Vec3Of<F> desired;
+    simd::MaskOf<F> aligned;
+};
+template <class F, class V3 = Vec3Of<F>>
+[[gnu::always_inline]] inline Alignment<F> alignmentVelocity(V3 headings, V3 velocities, F n, F speed, F maxSpeed,
+                                                             simd::MaskOf<F> matchSpeed)
+{
+    if constexpr (kScalar<F>) {
+        if (matchSpeed)
+            return {truncate(velocities / n, maxSpeed), true};
+        const glm::vec3 dir = normalizeOr(headings, glm::vec3(0.0f));
+        return {dir * minOf(speed, maxSpeed), dir != glm::vec3(0.0f)};
+    } else {
+        using M = simd::MaskOf<F>;
+        const V3 matched = truncate(velocities / n, maxSpeed);
+        const V3 dir = normalizeOr(headings, V3{});
+        const M anyDir = (dir.x != 0.0f) | (dir.y != 0.0f) | (dir.z != 0.0f);
+        return {select(matchSpeed, matched, dir * minOf(speed, maxSpeed)), matchSpeed | anyDir};
+    }
+}
+
+// Cohesion (Reynolds 1987): arrive at the centre of n > 0 neighbours (the sum of their
+// positions), slowing within slowingM.
+template <class F, class V3 = Vec3Of<F>>
+[[gnu::always_inline]] inline V3 cohesionVelocity(V3 position, V3 positions, F n, F maxSpeed, F slowingM)
+{
+    const V3 offset = positions / n - position;
+    const F dist = length(offset);
+    if constexpr (kScalar<F>)
+        return dist > detail::kTiny ? arrivalVelocity(offset, dist, maxSpeed, slowingM) : glm::vec3(0.0f);
+    else
+        return select(dist > detail::kTiny, arrivalVelocity(offset, dist, maxSpeed, slowingM), V3{});
+}
+
+// Wander (Reynolds 1999), its target: jittered on the unit sphere (or circle), kept unit
+// from step to step; the previous target where the jitter cancels it.
+template <class F, class V3 = Vec3Of<F>>
+[[gnu::always_inline]] inline V3 wanderTarget(V3 previous, F radiusM, V3 jitter)
+{
+    return normalizeOr(previous * radiusM + jitter, previous);
+}
+
+// Wander's aim: the target on the sphere of radiusM distanceM ahead, in the frame of
+// heading, right and up.
+template <class F, class V3 = Vec3Of<F>>
+[[gnu::always_inline]] inline V3 wanderAim(V3 heading, V3 right, V3 up, V3 target, F radiusM, F distanceM)
+{
+    return heading * distanceM + (right * target.x + up * target.y + heading * target.z) * radiusM;
+}
+
+// --- Separation ------------------------------------------------------------------------
+
+// The floor of separation's weight, reference / kMaxSeparationWeight, kept between the
+// neighbours of one agent: it is the same for every neighbour of the same contact
+// distance (all of them, where a crowd has one radius), and a division per neighbour
+// costs as much as the rest of the push.
+struct SeparationFloor {
+    float contact = NAN, rangeM = NAN, floor = 0.0f;
+};
+
+// One neighbour's push in separation (Reynolds 1999), for a neighbour whose distance d
+// is below contact + rangeM (the caller checks: it has d from its search or a length):
+//   fade * (maxForce * w - damping * opening speed) * away,
+// w = reference / d capped at kMaxSeparationWeight, reference the contact distance (the
+// range where the bodies have no size), fading to zero at the edge of the range; the
+// damper on the closing speed lets a squeezed pair settle instead of bouncing like two
+// springs, and leaves side-by-side walkers alone. `rel` is position - the neighbour's,
+// `relVelocity` velocity - the neighbour's; where the two coincide (d up to kTiny) the
+// push leaves along axis() (separationAxis), asked only then. One agent's form keeps the
+// weight's floor in `kept` (SeparationFloor); the lanes' computes it.
+template <class F, class V3 = Vec3Of<F>, class Axis>
+[[gnu::always_inline]] inline V3 separationPush(V3 rel, F d, F contact, F rangeM, F maxForce, F damping,
+                                                V3 relVelocity, Axis&& axis, SeparationFloor& kept)
+{
+    const F reach = contact + rangeM;
+    V3 away;
+    F reference, fade, floor;
+    if constexpr (kScalar<F>) {
+        reference = contact > detail::kTiny ? contact : rangeM;
+        if (!(contact == kept.contact && rangeM == kept.rangeM))
+            kept = {contact, rangeM, reference / kMaxSeparationWeight};
+        floor = kept.floor;
+        // rel / d and (reach - d) / range, the same divisions in one instruction.
+        const simd::F4 q = simd::F4{rel.x, rel.y, rel.z, reach - d} / simd::F4{d, d, d, rangeM};
+        fade = rangeM > detail::kTiny ? minOf(1.0f, q[3]) : 1.0f;
+        away = d > detail::kTiny ? glm::vec3(q[0], q[1], q[2]) : axis();
+    } else {
+        reference = select(contact > detail::kTiny, contact, rangeM);
+        floor = reference / kMaxSeparationWeight;
+        fade = select(rangeM > detail::kTiny, minOf(splat<F>(1.0f), (reach - d) / rangeM), splat<F>(1.0f));
+        const auto apart = d > detail::kTiny;
+        away = select(apart, rel / d, simd::any(~apart) ? axis() : V3{});
+    }
+    const F w = reference / maxOf(d, floor);
+    const F opening = dot(relVelocity, away);
+    return away * (fade * (maxForce * w - damping * opening));
+}
+
+// --- Unaligned collision avoidance ------------------------------------------------------
+// (Reynolds 1999.) One agent at a time: no lane kernel runs it yet.
+
+// Whether a neighbour `dp` away (its position - the agent's), moving at `dv` relative to
+// the agent, comes nearer than `clear` within horizonS: then the time of nearest approach
+// and the neighbour's offset at that time. Two moving together never close the gap.
+[[gnu::always_inline]] inline bool approachesWithin(glm::vec3 dp, glm::vec3 dv, float horizonS, float clear, float& t,
+                                                    glm::vec3& offset)
+{
+    const float dv2 = glm::dot(dv, dv);
+    if (!(dv2 > detail::kTiny * detail::kTiny))
+        return false;
+    t = -glm::dot(dp, dv) / dv2;
+    if (!(t >= 0.0f && t <= horizonS))
+        return false;
+    offset = dp + dv * t;
+    return glm::length(offset) < clear;
+}
+
+// The force that avoids the soonest threat: to the side away from where it will be (right
+// when it comes dead ahead), harder the sooner it comes. Head on, the agent also brakes
+// with `brake` of the budget (when moving along its heading h) and steers with `lateral`
+// = sqrt(1 - brake^2), so the two together never exceed maxForce.
+[[gnu::always_inline]] inline glm::vec3 unalignedAvoidance(glm::vec3 h, glm::vec3 right, glm::vec3 offset, float t,
+                                                           float horizonS, bool headOn, float brake, float lateral,
+                                                           bool moving, float maxForce)
+{
+    const float sideSign = glm::dot(offset, right) > detail::kDeadAheadM ? -1.0f : 1.0f;
+    const float urgency = 1.0f - t / horizonS;
+    const float braking = headOn ? brake : 0.0f;
+    const glm::vec3 lateralPart = right * (sideSign * (headOn ? lateral : 1.0f));
+    const glm::vec3 brakePart = moving ? -h * braking : glm::vec3(0.0f);
+    return (lateralPart + brakePart) * (maxForce * urgency);
+}
+
+}  // namespace throng::sim::behave
