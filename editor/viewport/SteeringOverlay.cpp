@@ -15,6 +15,7 @@ namespace {
 constexpr float kLineM = 0.035f;
 constexpr float kArrowM = 0.05f;
 constexpr float kTinyForceN = 1e-3f;
+constexpr float kFieldArrowM = 0.35f;  // the length of a field sample's arrow
 
 glm::vec2 xz(glm::vec3 v) { return {v.x, v.z}; }
 
@@ -85,6 +86,10 @@ void SteeringOverlay::add(std::span<const sim::AgentDebug> agents, ShapeMesh& me
         }
         for (const sim::AgentDebug::Feeler& feeler : a.feelers)
             mesh.addLine(xz(feeler.from), xz(feeler.to), kLineM, palette::kFeeler);
+        // The field it follows: a short arrow from each sample along its direction.
+        for (const sim::AgentDebug::FieldSample& f : a.field)
+            if (f.direction != glm::vec3(0.0f))
+                addArrow(mesh, xz(f.at), xz(f.direction) * kFieldArrowM, kArrowM * 0.6f, palette::kFlowArrow);
         for (const sim::AgentDebug::Force& f : a.forces) {
             const glm::vec3 weighted = f.force * f.weight;
             if (glm::length(weighted) > kTinyForceN)

@@ -1,8 +1,8 @@
 #pragma once
 // The classic steering annotations (Reynolds 1999, OpenSteer) of the watched agents, as
 // ground shapes: the view cone, lines to the neighbours sensed, the feelers, each
-// behaviour's weighted force and their blend as arrows, the velocity, the planned way and
-// where the agent steers. Reads what simcore published (sim::AgentDebug); no GL.
+// behaviour's weighted force and their blend as arrows, the velocity, the planned way, the
+// field the agent follows and where it steers. Reads what simcore published (sim::AgentDebug); no GL.
 
 #include "editor/viewport/AgentColours.h"
 #include "editor/viewport/ShapeMesh.h"

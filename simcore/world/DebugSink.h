@@ -1,7 +1,8 @@
 #pragma once
 // What the World senses and decides for one agent, published for drawing: the classic
 // steering annotations of Reynolds (1999) and OpenSteer (view cone, neighbours, each
-// behaviour's force and their blend, feelers, the planned way and where it steers). The
+// behaviour's force and their blend, feelers, the planned way, the field it follows and
+// where it steers). The
 // World publishes to a sink only for the agents it is asked about (World::describeAgent),
 // never for the whole crowd and never from inside the step. Qt-free; the editor draws
 // what a DebugRecorder kept.
@@ -38,7 +39,17 @@ public:
     virtual void plannedPath(std::span<const glm::vec3> points) = 0;
     // Where it steers this step (its goal spot, its next waypoint or the field's way).
     virtual void target(glm::vec3 point) = 0;
+    // One sample of the field it follows (its goal's navigation flow field, or the scene's
+    // flow strokes), on a square of kFieldSamples x kFieldSamples points about it: the
+    // unit direction of travel there, or zero where the field gives none (a wall, an
+    // unreachable cell, no stroke near).
+    virtual void field(glm::vec3 at, glm::vec3 direction) = 0;
 };
+
+// The field's samples on each side of the agent make a square of this many points a side,
+// one navigation cell apart for a flow field and kFlowSampleStepM apart for the strokes.
+inline constexpr int kFieldSamples = 5;
+inline constexpr float kFlowSampleStepM = 1.0f;
 
 // One agent's annotations as plain data, for drawing on another thread.
 struct AgentDebug {
@@ -65,6 +76,10 @@ struct AgentDebug {
     std::vector<glm::vec3> path;
     bool hasTarget = false;
     glm::vec3 target{0.0f};
+    struct FieldSample {
+        glm::vec3 at, direction;
+    };
+    std::vector<FieldSample> field;
 };
 
 // A sink that keeps what it is told, one AgentDebug per agent() call.
@@ -81,6 +96,7 @@ public:
     void feeler(glm::vec3 from, glm::vec3 to) override;
     void plannedPath(std::span<const glm::vec3> points) override;
     void target(glm::vec3 point) override;
+    void field(glm::vec3 at, glm::vec3 direction) override;
 
 private:
     AgentDebug& current();

@@ -160,8 +160,8 @@ public:
 
     // Publishes to `sink` what agent i senses and decides in the current state: its view
     // cone, the neighbours it sensed at the last step, each behaviour's force and their
-    // blend as the general steering path computes them, its feelers, its planned way and
-    // where it steers (WorldDebug.cpp). For the few agents a user watches; never changes
+    // blend as the general steering path computes them, its feelers, its planned way, the
+    // field it follows and where it steers (WorldDebug.cpp). For the few agents a user watches; never changes
     // the World and never runs inside step().
     void describeAgent(std::size_t i, DebugSink& sink) const;
 

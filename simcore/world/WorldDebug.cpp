@@ -31,6 +31,37 @@ void publishFeelers(DebugSink& sink, glm::vec3 p, glm::vec2 h, float length, flo
         sink.feeler(p, p + glm::vec3(dirs[k].x, 0.0f, dirs[k].y) * lengths[k]);
 }
 
+void publishField(const StepView& v, std::size_t i, DebugSink& sink)
+{
+    // Its goal's navigation flow field, where it walks by one, else the scene's flow
+    // strokes, where its type follows them; sampled on a square about it.
+    const std::int32_t goal = v.agents.goal[i];
+    const FlowField* navField = nullptr;
+    if (v.nav.active && i < v.nav.mode.size() && v.nav.mode[i] == Navigation::FlowField && goal >= 0 &&
+        std::size_t(goal) < v.nav.hasField.size() && v.nav.hasField[std::size_t(goal)])
+        navField = &v.nav.fields[std::size_t(goal)];
+    const bool strokes = !v.set.flow.empty() && v.types.steering[v.agents.info[i].typeIndex].on(Behaviour::FlowFieldFollowing);
+    if (!navField && !strokes)
+        return;
+    const float step = navField ? v.nav.grid.cellM() : kFlowSampleStepM;
+    const glm::vec3 p = v.agents.pos[i];
+    constexpr int kHalf = kFieldSamples / 2;
+    for (int dz = -kHalf; dz <= kHalf; ++dz) {
+        for (int dx = -kHalf; dx <= kHalf; ++dx) {
+            const float x = p.x + float(dx) * step, z = p.z + float(dz) * step;
+            const glm::vec3 at(x, v.set.groundHeight(x, z), z);
+            glm::vec3 direction;
+            if (navField) {
+                const glm::vec2 d = navField->sample(glm::vec2(x, z));
+                direction = glm::vec3(d.x, 0.0f, d.y);
+            } else {
+                direction = flowDirection(v, at);
+            }
+            sink.field(at, direction);
+        }
+    }
+}
+
 }  // namespace
 
 void DebugRecorder::agent(AgentId id, glm::vec3 position, glm::vec3 forward, glm::vec3 velocity, float radiusM)
@@ -74,6 +105,8 @@ void DebugRecorder::target(glm::vec3 point)
     current().hasTarget = true;
     current().target = point;
 }
+
+void DebugRecorder::field(glm::vec3 at, glm::vec3 direction) { current().field.push_back({at, direction}); }
 
 void World::describeAgent(std::size_t i, DebugSink& sink) const
 {
@@ -127,6 +160,7 @@ void World::describeAgent(std::size_t i, DebugSink& sink) const
         const glm::vec2 spot = m_agents.goalSpot[i];
         sink.target(m_nav.goal(i, glm::vec3(spot.x, m_set.groundHeight(spot.x, spot.y), spot.y)));
     }
+    publishField(view(), i, sink);
 }
 
 }  // namespace throng::sim

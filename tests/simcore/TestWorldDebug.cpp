@@ -1,7 +1,9 @@
 // World::describeAgent as the editor's steering overlay uses it: describing agents
 // changes nothing the run does, the published forces blend to the published steering,
 // the neighbours are those the agent can perceive, the feelers reach as far as its speed
-// says, and the planned way of an A* walker leads round the wall to its goal.
+// says, the planned way of an A* walker leads round the wall to its goal, and the field a
+// walker follows (a flow field to its goal, or painted flow strokes) is sampled about it
+// as the walker would read it.
 #include "CrowdChecks.h"
 #include "TestRegistry.h"
 
@@ -47,6 +49,45 @@ std::vector<AgentDebug> describeAll(const World& world, std::size_t every)
     for (std::size_t i = 0; i < world.agentCount(); i += every)
         world.describeAgent(i, recorder);
     return std::move(recorder.agents());
+}
+
+// Flow-field walkers to a goal east of a wall with a gap at z in [-1.5, 1.5]; walker 1 stands
+// just west of the wall, north of the gap, so some of the cells about it are the wall's.
+const char* kFieldScene = R"(throng: 1
+settings: {fps: 24, seed: 3, bounds: {min: [-20, -20], max: [20, 20]}, nav_cell: 0.5}
+agent_types:
+  - {name: walker, radius: 0.3, max_speed: 1.4, navigation: flow_field}
+goals:
+  - {name: east, position: [15, 0], radius: 1}
+walls:
+  - {points: [[5, -20], [5, -1.5]]}
+  - {points: [[5, 1.5], [5, 20]]}
+agents:
+  - {id: 1, type: walker, position: [4.2, 0, 4], goal: east}
+  - {id: 2, type: walker, position: [-10, 0, -6], goal: east}
+)";
+
+// Walkers drawn east along a painted stroke (z = 0, 3 m wide); walker 2 does not follow it.
+const char* kStrokeScene = R"(throng: 1
+settings: {fps: 24, seed: 3, bounds: {min: [-20, -20], max: [20, 20]}}
+agent_types:
+  - {name: follower, radius: 0.3, max_speed: 1.4, behaviours: {flow_field_following: 1, separation: 1}}
+  - {name: walker, radius: 0.3, max_speed: 1.4}
+goals:
+  - {name: west, position: [-15, 10], radius: 1}
+flow_strokes:
+  - {points: [[-15, 0], [15, 0]], width: 3}
+agents:
+  - {id: 1, type: follower, position: [0, 0, 0]}
+  - {id: 2, type: walker, position: [0, 0, 1], goal: west}
+)";
+
+std::size_t indexOf(const World& world, AgentId id)
+{
+    for (std::size_t i = 0; i < world.agentCount(); ++i)
+        if (world.id(i) == id)
+            return i;
+    return world.agentCount();
 }
 
 glm::vec3 truncated(glm::vec3 v, float length)
@@ -192,6 +233,72 @@ private slots:
         }
         QVERIFY(a.hasTarget);
         QVERIFY(glm::distance(a.target, a.position) > 0.1f);
+    }
+
+    // A flow-field walker's field: a square of 5 x 5 samples one navigation cell apart,
+    // centred on it; each a unit direction or zero; zero on the wall's cells; and where
+    // it points, the walker's way to the goal gets shorter (through the gap, not into
+    // the wall: north of the gap the field leads south).
+    void flowFieldIsSampledAboutTheWalker()
+    {
+        const Scene scene = parse(kFieldScene);
+        World world(scene);
+        world.step();
+        const std::size_t i = indexOf(world, 1);
+        QVERIFY(i < world.agentCount());
+        DebugRecorder recorder;
+        world.describeAgent(i, recorder);
+        const AgentDebug& a = recorder.agents().front();
+        QCOMPARE(int(a.field.size()), kFieldSamples * kFieldSamples);
+        const AgentDebug::FieldSample& centre = a.field[a.field.size() / 2];
+        QVERIFY(glm::distance(centre.at, a.position) < 1e-4f);
+        QVERIFY(std::abs(a.field[1].at.x - a.field[0].at.x - 0.5f) < 1e-4f);  // one cell apart
+        int onWall = 0, leading = 0;
+        for (const AgentDebug::FieldSample& f : a.field) {
+            const float length = glm::length(f.direction);
+            QVERIFY2(length == 0.0f || std::abs(length - 1.0f) < 1e-3f, "a unit direction or none");
+            QCOMPARE(f.direction.y, 0.0f);
+            if (std::abs(f.at.x - 5.0f) < 0.45f) {
+                // The wall's cells: the wall and a body's radius (0.3 m) and 0.15 m about it.
+                onWall += 1;
+                QVERIFY2(length == 0.0f, qPrintable(QString("a direction on the wall at z = %1").arg(double(f.at.z))));
+            } else if (f.at.x < 4.5f) {
+                // West of the wall and north of the gap: the way goes south to the gap.
+                QVERIFY2(f.direction.z < -0.3f, qPrintable(QString("at (%1, %2) the field leads (%3, %4)")
+                                                               .arg(double(f.at.x))
+                                                               .arg(double(f.at.z))
+                                                               .arg(double(f.direction.x))
+                                                               .arg(double(f.direction.z))));
+                leading += 1;
+            }
+        }
+        QVERIFY(onWall >= 5);
+        QVERIFY(leading >= 10);
+    }
+
+    // A stroke follower's field: the stroke's direction (+x) all about it; a walker that
+    // follows no field publishes none.
+    void strokesAreSampledAboutAFollower()
+    {
+        const Scene scene = parse(kStrokeScene);
+        World world(scene);
+        world.step();
+        DebugRecorder recorder;
+        world.describeAgent(indexOf(world, 1), recorder);
+        world.describeAgent(indexOf(world, 2), recorder);
+        const AgentDebug& follower = recorder.agents()[0];
+        QCOMPARE(int(follower.field.size()), kFieldSamples * kFieldSamples);
+        QVERIFY(std::abs(follower.field[1].at.x - follower.field[0].at.x - kFlowSampleStepM) < 1e-4f);
+        // The strokes' field is solved over the whole set (WorldNav.cpp), so every sample
+        // within 2 m of a straight stroke leads along it.
+        for (const AgentDebug::FieldSample& f : follower.field)
+            QVERIFY2(glm::distance(f.direction, glm::vec3(1.0f, 0.0f, 0.0f)) < 0.05f,
+                     qPrintable(QString("at (%1, %2) the field leads (%3, %4)")
+                                    .arg(double(f.at.x))
+                                    .arg(double(f.at.z))
+                                    .arg(double(f.direction.x))
+                                    .arg(double(f.direction.z))));
+        QVERIFY(recorder.agents()[1].field.empty());
     }
 };
 
