@@ -124,7 +124,7 @@ void World::build(const Scene& scene, const WorldOptions& options)
     for (const TypeCollision& c : m_types.collision)
         m_types.makingWay = m_types.makingWay || c.priority != m_types.collision[0].priority || c.layerBit != m_types.collision[0].layerBit ||
                       c.collidesWith != m_types.collision[0].collidesWith;
-    buildTraffic(scene);
+    m_traffic.build(scene, m_seed, m_team.size());
     buildStatics(scene);
     buildAgents(scene);
     addTrafficAgents(scene);
@@ -172,7 +172,7 @@ void World::buildStatics(const Scene& scene)
         const float reach = glm::length(h);
         obstacleBoxes.push_back({o.center - glm::vec2(reach), o.center + glm::vec2(reach)});
     }
-    appendKerbs(walls);
+    m_traffic.appendKerbs(walls);
     removeRepeatedSegments(walls);
     // The wall grid's cells fit a walker's feelers; obstacle boxes are found by their bounds.
     // Both grids cover the bounds and a margin only: one wall point at -1e30 m would
@@ -489,6 +489,47 @@ std::size_t World::memoryBytes() const
     return n * (sizeof(AgentInfo) + 11 * sizeof(glm::vec3) + 2 * sizeof(WanderState) + 6 * sizeof(float) +
                 3 * sizeof(std::int32_t) + 2 * sizeof(glm::vec2) + 5 + kMaxNeighbours * sizeof(std::uint32_t)) +
            m_grid.memoryBytes();
+}
+
+// The traffic's vehicles and heroes, as agents after the scene's own.
+void World::addTrafficAgents(const Scene& scene)
+{
+    auto typeOf = [&](const std::string& name) {
+        for (std::size_t t = 0; t < scene.agentTypes.size(); ++t)
+            if (scene.agentTypes[t].name == name)
+                return std::uint16_t(t);
+        return std::uint16_t(0);
+    };
+    const std::size_t walkers = m_agents.pos.size();
+    if (m_traffic.system) {
+        const TrafficSystem& ts = *m_traffic.system;
+        std::map<std::uint32_t, std::string> typeById;
+        for (const Vehicle& v : scene.vehicles)
+            typeById[v.id] = v.type;
+        for (std::size_t v = 0; v < ts.vehicleCount(); ++v) {
+            const glm::vec2 p = ts.position(v), f = ts.forward(v);
+            m_traffic.vehicleAgent.push_back(std::uint32_t(m_agents.pos.size()));
+            addAgent(scene, ts.id(v), typeOf(typeById[ts.id(v)]), glm::vec3(p.x, 0.0f, p.y), std::atan2(-f.y, f.x), -1, -1, 0);
+            m_agents.vel.back() = glm::vec3(f.x, 0.0f, f.y) * ts.speed(v);
+            m_agents.radius.back() = ts.radius(v);
+        }
+    }
+    std::size_t k = 0;
+    for (const Hero& h : scene.heroes) {
+        if (h.keyframes.empty())
+            continue;
+        const HeroTrack& track = m_traffic.heroes[k++];
+        const glm::vec2 f = track.forwardAt(0.0);
+        m_traffic.heroAgent.push_back(std::uint32_t(m_agents.pos.size()));
+        addAgent(scene, h.id, typeOf(h.type), glm::vec3(0.0f), std::atan2(-f.y, f.x), -1, -1, 0);
+        m_agents.pos.back() = m_agents.nextPos.back() = m_agents.resolvedPos.back() = track.positionAt(0.0);
+        m_agents.vel.back() = track.velocityAt(0.0);
+    }
+    m_traffic.markAgents(m_agents, m_types, walkers);
+    // A driven agent counts as standing for the step's phases: it is never steered, and a
+    // walker that overlaps it takes the whole correction.
+    for (std::size_t i = walkers; i < m_agents.pos.size(); ++i)
+        m_agents.stopped[i] = m_agents.stoppedBefore[i] = 1;
 }
 
 }  // namespace throng::sim

@@ -293,17 +293,9 @@ private:
     glm::vec3 brainTurnForce(std::size_t i, const SteeringAgent& self) const;
     Clip brainClip(std::size_t i, Clip bySpeed) const;
 
-    // Traffic phases; see WorldTraffic.cpp.
-    void buildTraffic(const Scene& scene);
+    // The traffic's vehicles and heroes as agents, after the scene's own (World.cpp); the
+    // traffic phase itself is m_traffic (WorldTraffic.h).
     void addTrafficAgents(const Scene& scene);
-    void appendKerbs(std::vector<Segment>& walls) const;
-    void trafficBeforeStep();
-    glm::vec3 obeySignal(std::size_t i, const SteeringAgent& self, glm::vec3 force);
-    void holdAtSignal(std::size_t i, glm::vec3& p) const;
-    void driveTrafficAgents();
-    void trafficAfterCollide();
-    void keepOffRedCrosswalks(std::size_t i, glm::vec3& p) const;
-    void trafficAfterStep();
 
     AgentTypes m_types;  // per type: body, steering, collision layers
     std::vector<std::uint8_t> m_boidKernel;  // per type: steps through stepBoid

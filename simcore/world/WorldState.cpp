@@ -296,7 +296,7 @@ bool World::adoptMatched(const WorldState& s, const Scene& stateScene, const Sce
         if (stateScene.crosswalks != thisScene.crosswalks || m_traffic.signal.size() != signal.size())
             m_traffic.signal = signal;
         // Vehicles stand where their (re-projected or new) lane state puts them, as a step
-        // leaves them (driveTrafficAgents).
+        // leaves them (WorldTraffic::drive).
         for (std::size_t v = 0; m_traffic.system && v < m_traffic.vehicleAgent.size(); ++v) {
             const TrafficSystem& ts = *m_traffic.system;
             const std::size_t i = m_traffic.vehicleAgent[v];

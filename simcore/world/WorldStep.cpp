@@ -53,7 +53,7 @@ void World::stepOnce()
     // traffic step, which drives brain-driven vehicles by their brains' speeds.
     if (m_brains)
         runBrains();
-    trafficBeforeStep();
+    m_traffic.beforeStep(m_agents);
 
     // With fliers, agents are stepped in the grid's order (by cell, then by height) when it
     // holds them all: consecutive boids then query the same columns at rising heights
@@ -76,7 +76,7 @@ void World::stepOnce()
     } else {
         m_team.forEach(n, 256, [&](std::size_t i) { stepAgent(i, hasStatics, nullptr); });
     }
-    driveTrafficAgents();
+    m_traffic.drive(m_clock, m_set, m_agents);
 
     // Collide: bodies still overlapping after steering move apart, each by its share of
     // the overlap (DetourCrowd's collision handling, done Jacobi-style: every agent reads
@@ -108,7 +108,7 @@ void World::stepOnce()
         settleContacts(hasStatics);
     // The resolved positions are the next ones (the pass wrote every agent's).
     std::swap(m_agents.nextPos, m_agents.resolvedPos);
-    trafficAfterCollide();
+    m_traffic.afterCollide(view(), m_agents);
 
     // Commit: animate and note arrivals, then swap in the new state (no copying: every path
     // of the step (stopped, boids, walkers, the general one, traffic and heroes over those)
@@ -141,7 +141,7 @@ void World::stepOnce()
     m_gridCurrent = true;
     // Count: the run's figures on the positions the step ended at (CountPhase.h).
     m_count.count(view(), m_agents.onCrosswalk, nonFinite.load());
-    trafficAfterStep();
+    m_traffic.afterStep(m_agents);
 }
 
 // Boids in batches of kBoidBatch (World.h, BoidSense): their senses, then their steering.
@@ -254,11 +254,12 @@ void World::stepAgent(std::size_t i, bool hasStatics, NeighbourGrid::Sweep* swee
             wanderNext = m_agents.wander[i];
         }
     }
-    force = obeySignal(i, self, force);
+    if (!m_traffic.signal.empty())
+        force = m_traffic.obeySignal(view(), i, self, force);
     // Integrate: the simple vehicle model (Reynolds 1999).
     SteeringAgent next = integrateVehicle(self, force, m_clock.dt, s.vehicle);
     capToBrainSpeed(i, self, next);
-    holdAtSignal(i, next.position);
+    m_traffic.holdAtSignal(i, next.position);
     // Constrain: no agent ends a step inside a wall or obstacle; walkers stand on the ground.
     if (!s.vehicle.flying) {
         if (hasStatics)
