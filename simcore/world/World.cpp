@@ -128,7 +128,7 @@ void World::build(const Scene& scene, const WorldOptions& options)
     buildStatics(scene);
     buildAgents(scene);
     addTrafficAgents(scene);
-    buildBrains(scene);
+    m_brains.build(scene, view());
     findEscapes();  // before the plans: one that starts inside an obstacle plans from outside it
     m_agents.out.assign(m_agents.size(), 0);  // nobody has left yet
     m_nav.build(scene, view());
@@ -469,7 +469,7 @@ void World::snapshot(std::vector<AgentFrame>& out) const
         f.speed = speed;
         f.phase = m_agents.phase[i];
         // Clip thresholds relative to a walker: below 0.1 m/s stand, above 2.5 m/s run.
-        f.clip = brainClip(i, speed < 0.1f ? Clip::Idle : (speed < 2.5f ? Clip::Walk : Clip::Run));
+        f.clip = m_brains.clip(i, speed < 0.1f ? Clip::Idle : (speed < 2.5f ? Clip::Walk : Clip::Run));
         f.out = m_agents.out[i] != 0;
         f.arrived = m_agents.arrived[i] != 0;
     }
@@ -531,5 +531,13 @@ void World::addTrafficAgents(const Scene& scene)
     for (std::size_t i = walkers; i < m_agents.pos.size(); ++i)
         m_agents.stopped[i] = m_agents.stoppedBefore[i] = 1;
 }
+
+// The brains' facade (BrainPhase.h).
+int World::brainAction(std::size_t i) const { return m_brains.action(i); }
+std::string World::brainActionName(std::size_t i) const { return m_brains.actionName(i); }
+const std::vector<std::string>& World::brainErrors() const { return m_brains.errors(); }
+const BrainEvaluator* World::brainEvaluator(std::size_t typeIndex) const { return m_brains.evaluator(typeIndex); }
+const BrainEvaluator* World::agentBrainEvaluator(std::size_t i) const { return m_brains.agentEvaluator(i); }
+void World::pickBrainAgent(std::ptrdiff_t i) { m_brains.pickAgent(i, m_agents.pos.size()); }
 
 }  // namespace throng::sim

@@ -3,22 +3,23 @@
 // Reads only the previous state within a step, so results do not depend on the thread
 // count. Never reads a clock, never allocates inside step(), never draws.
 
+#include "simcore/base/SegmentGrid.h"
 #include "simcore/base/ThreadTeam.h"
 #include "simcore/scene/Scene.h"
 #include "simcore/steering/Steering.h"
 #include "simcore/world/AgentColumns.h"
 #include "simcore/world/AgentTypes.h"
+#include "simcore/world/BrainPhase.h"
 #include "simcore/world/CountPhase.h"
 #include "simcore/world/FrameCache.h"
 #include "simcore/world/NearestList.h"
 #include "simcore/world/NeighbourGrid.h"
-#include "simcore/base/SegmentGrid.h"
 #include "simcore/world/StaticSet.h"
 #include "simcore/world/StepClock.h"
 #include "simcore/world/StepCounters.h"
 #include "simcore/world/TypeSteering.h"
-#include "simcore/world/WorldPriority.h"
 #include "simcore/world/WorldNav.h"
+#include "simcore/world/WorldPriority.h"
 #include "simcore/world/WorldTraffic.h"
 
 #include <glm/vec3.hpp>
@@ -35,10 +36,6 @@ namespace throng::sim {
 class BrainEvaluator;
 class DebugSink;
 struct WorldState;
-namespace detail {
-struct TypeBrain;
-struct WorldBrains;
-}  // namespace detail
 
 struct WorldOptions {
     std::uint64_t seed = 0;     // used when overrideSeed; else the scene's seed
@@ -280,18 +277,9 @@ private:
                 m_nav,    m_team,   m_hasFliers, m_allFliers, m_maxRadius, m_seed};
     }
     const TypeCollision& collision(std::size_t i) const { return m_types.collision[m_agents.info[i].typeIndex]; }
-    // Brain phase and its effect on steering (WorldBrain.cpp, WorldBrainSense.cpp).
-    void buildBrains(const Scene& scene);
-    void runBrains();
-    void senseForBrain(detail::TypeBrain& brain);
-    // Agent i's neighbours from the brain's sense phase of this step, or from the grid.
+    // Agent i's neighbours: those the brain phase gathered this step, or from the grid
+    // (WorldStep.cpp).
     std::size_t neighboursThisStep(std::size_t i, Neighbour* out);
-    float brainSpeedCap(std::size_t i) const;            // m/s: max speed, or less when the brain asks
-    void capToBrainSpeed(std::size_t i, const SteeringAgent& self, SteeringAgent& next) const;
-    glm::vec3 brainLimited(std::size_t i, glm::vec3 v, float aside, float seconds) const;
-    float brainWeight(std::size_t i, Behaviour b) const; // multiplies the type's weight; 1 without a brain
-    glm::vec3 brainTurnForce(std::size_t i, const SteeringAgent& self) const;
-    Clip brainClip(std::size_t i, Clip bySpeed) const;
 
     // The traffic's vehicles and heroes as agents, after the scene's own (World.cpp); the
     // traffic phase itself is m_traffic (WorldTraffic.h).
@@ -346,7 +334,7 @@ private:
     WorldTraffic m_traffic;
     WorldNav m_nav;
     glm::dvec2 m_origin{0.0};         // the scene's (x, z) of this World's (0, 0)
-    std::shared_ptr<detail::WorldBrains> m_brains;  // null when no type has a brain
+    BrainPhase m_brains;
 };
 
 }  // namespace throng::sim

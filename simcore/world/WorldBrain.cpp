@@ -6,6 +6,8 @@
 #include "simcore/brain/BrainCompiler.h"
 #include "simcore/base/Rng.h"
 #include "simcore/world/World.h"
+#include "simcore/world/BrainPhase.h"
+#include "simcore/world/StepView.h"
 
 #include "simcore/world/Sense.h"
 #include "simcore/world/detail/StepGeometry.h"
@@ -45,7 +47,7 @@ std::uint32_t tagIndex(std::vector<std::string>& tags, const std::string& name)
 
 }  // namespace
 
-void World::buildBrains(const Scene& scene)
+void BrainPhase::build(const Scene& scene, const StepView& v)
 {
     // Placed agents may run a brain of their own in place of their type's.
     std::map<AgentId, const std::string*> ownBrain;
@@ -63,12 +65,12 @@ void World::buildBrains(const Scene& scene)
     // (type, brain) pair that placed agents ask for, in (type, brain name) order, so the
     // batches do not depend on the agents' order.
     const std::size_t typeCount = scene.agentTypes.size();
-    wb.batch.resize(m_agents.pos.size());
+    wb.batch.resize(v.agents.pos.size());
     std::map<std::pair<std::size_t, std::string>, std::int32_t> extra;
-    for (std::size_t i = 0; i < m_agents.pos.size(); ++i) {
-        const std::size_t t = m_agents.info[i].typeIndex;
+    for (std::size_t i = 0; i < v.agents.pos.size(); ++i) {
+        const std::size_t t = v.agents.info[i].typeIndex;
         wb.batch[i] = std::int32_t(t);
-        const auto own = ownBrain.find(m_agents.info[i].id);
+        const auto own = ownBrain.find(v.agents.info[i].id);
         if (own != ownBrain.end() && *own->second != scene.agentTypes[t].brain)
             extra.emplace(std::pair(t, *own->second), 0);
     }
@@ -79,16 +81,16 @@ void World::buildBrains(const Scene& scene)
         index = std::int32_t(batches.size());
         batches.push_back(key);
     }
-    for (std::size_t i = 0; i < m_agents.pos.size(); ++i)
-        if (const auto own = ownBrain.find(m_agents.info[i].id); own != ownBrain.end())
-            if (const auto it = extra.find({m_agents.info[i].typeIndex, *own->second}); it != extra.end())
+    for (std::size_t i = 0; i < v.agents.pos.size(); ++i)
+        if (const auto own = ownBrain.find(v.agents.info[i].id); own != ownBrain.end())
+            if (const auto it = extra.find({v.agents.info[i].typeIndex, *own->second}); it != extra.end())
                 wb.batch[i] = it->second;
     wb.types.resize(batches.size());
-    wb.local.assign(m_agents.pos.size(), -1);
-    wb.action.assign(m_agents.pos.size(), -1);
+    wb.local.assign(v.agents.pos.size(), -1);
+    wb.action.assign(v.agents.pos.size(), -1);
     std::map<std::string, std::int32_t> goalByName;
-    for (std::size_t g = 0; g < m_set.goals.size(); ++g)
-        goalByName.emplace(m_set.goals[g].name, std::int32_t(g));
+    for (std::size_t g = 0; g < v.set.goals.size(); ++g)
+        goalByName.emplace(v.set.goals[g].name, std::int32_t(g));
     for (std::size_t b = 0; b < batches.size(); ++b) {
         const AgentType& type = scene.agentTypes[batches[b].first];
         const std::string& brainName = batches[b].second;
@@ -139,19 +141,19 @@ void World::buildBrains(const Scene& scene)
                                     : name == "run"  ? std::int8_t(Clip::Run)
                                                      : std::int8_t(-1));
     }
-    for (std::size_t i = 0; i < m_agents.pos.size(); ++i) {
+    for (std::size_t i = 0; i < v.agents.pos.size(); ++i) {
         detail::TypeBrain& tb = wb.types[std::size_t(wb.batch[i])];
         if (!tb.program)
             continue;
         wb.local[i] = std::int32_t(tb.agents.size());
         tb.agents.push_back(std::uint32_t(i));
-        tb.keys.push_back(rng(m_seed, m_agents.info[i].id, 0, kBrainKey));
+        tb.keys.push_back(rng(v.seed, v.agents.info[i].id, 0, kBrainKey));
     }
-    wb.tagValues.assign(wb.tags.size(), std::vector<float>(m_agents.pos.size(), 0.0f));
-    wb.vehicleOf.assign(m_agents.pos.size(), -1);
-    for (std::size_t v = 0; v < m_traffic.vehicleAgent.size(); ++v)
-        wb.vehicleOf[m_traffic.vehicleAgent[v]] = std::int32_t(v);
-    wb.vehicleSpeed.assign(m_traffic.vehicleAgent.size(), std::nanf(""));
+    wb.tagValues.assign(wb.tags.size(), std::vector<float>(v.agents.pos.size(), 0.0f));
+    wb.vehicleOf.assign(v.agents.pos.size(), -1);
+    for (std::size_t vehicle = 0; vehicle < v.traffic.vehicleAgent.size(); ++vehicle)
+        wb.vehicleOf[v.traffic.vehicleAgent[vehicle]] = std::int32_t(vehicle);
+    wb.vehicleSpeed.assign(v.traffic.vehicleAgent.size(), std::nanf(""));
     for (detail::TypeBrain& tb : wb.types) {
         if (!tb.program)
             continue;
@@ -167,18 +169,18 @@ void World::buildBrains(const Scene& scene)
             tb.itemSetChannel.push_back(sound ? std::int32_t(detail::channelIndex(wb, set.substr(6))) : -1);
         }
     }
-    detail::buildSoundChannels(wb, scene, m_agents.info);
+    detail::buildSoundChannels(wb, scene, v.agents.info);
 }
 
 // Brain: sense from the previous state, evaluate each type's program for all its agents,
 // then take up the choices (goal, action) that are the agent's own state.
-void World::runBrains()
+void BrainPhase::run(const StepView& v, AgentColumns& agents, WorldTraffic& traffic)
 {
     detail::WorldBrains& wb = *m_brains;
     for (detail::TypeBrain& tb : wb.types) {
         if (!tb.program)
             continue;
-        senseForBrain(tb);
+        sense(v, agents, tb);
         BrainInputs in;
         for (const std::vector<float>& c : tb.columns)
             in.sensors.push_back(c.data());
@@ -186,10 +188,10 @@ void World::runBrains()
             in.itemCounts.push_back(tb.program->itemSets[s] == "neighbours" ? tb.neighbourCount.data()
                                                                             : tb.itemCounts[s].data());
         in.agentKey = tb.keys.data();
-        in.timeS = float(timeS());
-        in.dtS = m_clock.dt;
+        in.timeS = float(v.clock.timeS());
+        in.dtS = v.clock.dt;
         std::string error;
-        if (!tb.evaluator->evaluate(in, &error, &m_team)) {
+        if (!tb.evaluator->evaluate(in, &error, &v.team)) {
             wb.errors.push_back(error);
             tb.program.reset();
             continue;
@@ -208,34 +210,34 @@ void World::runBrains()
             if (const std::optional<Behaviour> b = behaviourFromName(name))
                 tb.weight[std::size_t(*b)] = column;
         const std::size_t n = tb.agents.size();
-        m_team.forEach(n, 1024, [&](std::size_t k) {
+        v.team.forEach(n, 1024, [&](std::size_t k) {
             const std::size_t i = tb.agents[k];
             if (tb.action)
                 wb.action[i] = std::int16_t(tb.action[k]);
-            if (!tb.goal || m_agents.stopped[i])
+            if (!tb.goal || v.agents.stopped[i])
                 return;
             const auto choice = std::size_t(std::max(0.0f, tb.goal[k]));
             const std::int32_t g = choice < tb.goalIndex.size() ? tb.goalIndex[choice] : -1;
-            if (g < 0 || g == m_agents.goal[i])
+            if (g < 0 || g == v.agents.goal[i])
                 return;
             // A new goal: the agent heads for its own spot in it, drawn as at the start.
-            m_agents.goal[i] = g;
-            const Goal& goal = m_set.goals[std::size_t(g)];
-            const AgentId id = m_agents.info[i].id;
-            m_agents.goalSpot[i] = detail::goalSpot(goal.position, goal.radiusM, goal.exit, m_agents.radius[i],
-                                             rngUniform(m_seed, id, std::uint64_t(g) + 1, kGoalSpotR),
-                                             rngUniform(m_seed, id, std::uint64_t(g) + 1, kGoalSpotA));
+            agents.goal[i] = g;
+            const Goal& goal = v.set.goals[std::size_t(g)];
+            const AgentId id = v.agents.info[i].id;
+            agents.goalSpot[i] = detail::goalSpot(goal.position, goal.radiusM, goal.exit, v.agents.radius[i],
+                                             rngUniform(v.seed, id, std::uint64_t(g) + 1, kGoalSpotR),
+                                             rngUniform(v.seed, id, std::uint64_t(g) + 1, kGoalSpotA));
         });
     }
     // Vehicles with a speed output are driven by it along their lanes (this step's traffic
     // step comes after the brains).
-    if (m_traffic.system && !wb.vehicleSpeed.empty()) {
-        for (std::size_t v = 0; v < wb.vehicleSpeed.size(); ++v) {
-            const std::size_t i = m_traffic.vehicleAgent[v];
+    if (v.traffic.system && !wb.vehicleSpeed.empty()) {
+        for (std::size_t vehicle = 0; vehicle < wb.vehicleSpeed.size(); ++vehicle) {
+            const std::size_t i = v.traffic.vehicleAgent[vehicle];
             const detail::TypeBrain& tb = wb.types[std::size_t(wb.batch[i])];
-            wb.vehicleSpeed[v] = tb.program && tb.speed ? tb.speed[wb.local[i]] : std::nanf("");
+            wb.vehicleSpeed[vehicle] = tb.program && tb.speed ? tb.speed[wb.local[i]] : std::nanf("");
         }
-        m_traffic.system->setBrainSpeeds(wb.vehicleSpeed);
+        traffic.system->setBrainSpeeds(wb.vehicleSpeed);
     }
     // Tags are published only once every type has sensed, so all read last step's values.
     for (detail::TypeBrain& tb : wb.types) {
@@ -249,31 +251,20 @@ void World::runBrains()
     }
 }
 
-std::size_t World::neighboursThisStep(std::size_t i, Neighbour* out)
+bool BrainPhase::gatheredNeighbours(std::size_t i) const
 {
-    std::uint32_t* index = &m_agents.nearIndex[i * kMaxNeighbours];
-    if (!m_brains || m_brains->local[i] < 0 || !m_brains->types[std::size_t(m_brains->batch[i])].gathersNeighbours) {
-        const std::size_t count = gatherNeighbours(view(), i, out, index);
-        m_agents.nearCount[i] = std::uint8_t(count);
-        return count;
-    }
-    const std::size_t count = m_agents.nearCount[i];
-    for (std::size_t k = 0; k < count; ++k) {
-        const std::uint32_t j = index[k];
-        out[k] = {m_agents.pos[j], m_agents.vel[j], m_agents.fwd[j], m_agents.radius[j], m_agents.info[j].id};
-    }
-    return count;
+    return m_brains && m_brains->local[i] >= 0 && m_brains->types[std::size_t(m_brains->batch[i])].gathersNeighbours;
 }
 
-float World::brainSpeedCap(std::size_t i) const
+float BrainPhase::speedCap(const StepView& v, std::size_t i) const
 {
     // A driven vehicle's brain speed went to the TrafficSystem, which moves it.
-    if (!m_brains || m_brains->local[i] < 0 || isDriven(i))
-        return m_agents.maxSpeed[i];
+    if (!m_brains || m_brains->local[i] < 0 || v.traffic.isDriven(i))
+        return v.agents.maxSpeed[i];
     const detail::TypeBrain& tb = m_brains->types[std::size_t(m_brains->batch[i])];
     if (!tb.speed)
-        return m_agents.maxSpeed[i];
-    return std::clamp(tb.speed[m_brains->local[i]], 0.0f, m_agents.maxSpeed[i]);
+        return v.agents.maxSpeed[i];
+    return std::clamp(tb.speed[m_brains->local[i]], 0.0f, v.agents.maxSpeed[i]);
 }
 
 // The brain's speed is a cap applied after steering, not a lower max speed for the
@@ -282,35 +273,35 @@ float World::brainSpeedCap(std::size_t i) const
 // For a walker it caps progress (the velocity along the way it wants to go), not making
 // way: sideways and back it may still move at kYieldSpeedMps, so one its brain holds (at
 // a light, for a hero) steps aside for those who pass instead of standing as a post.
-void World::capToBrainSpeed(std::size_t i, const SteeringAgent& self, SteeringAgent& next) const
+void BrainPhase::capToSpeed(const StepView& v, std::size_t i, const SteeringAgent& self, SteeringAgent& next) const
 {
     if (!m_brains || m_brains->local[i] < 0)
         return;
-    const float cap = brainSpeedCap(i);
+    const float cap = speedCap(v, i);
     if (glm::length(next.velocity) <= cap)
         return;
-    next.velocity = brainLimited(i, next.velocity, std::max(cap, std::min(kYieldSpeedMps, m_agents.maxSpeed[i])), 1.0f);
-    next.position = self.position + next.velocity * m_clock.dt;
+    next.velocity = limited(v, i, next.velocity, std::max(cap, std::min(kYieldSpeedMps, v.agents.maxSpeed[i])), 1.0f);
+    next.position = self.position + next.velocity * v.clock.dt;
 }
 
 // Agent i's move v over `seconds` (a velocity for 1) within its brain's speed: along the
 // way a walker wants to go at most the brain's speed, sideways and back at most `aside`
 // (m/s); for other agents (or a walker with no path or goal) at most the brain's speed in
 // all. v itself when it is within them or the agent runs no brain.
-glm::vec3 World::brainLimited(std::size_t i, glm::vec3 v, float aside, float seconds) const
+glm::vec3 BrainPhase::limited(const StepView& view, std::size_t i, glm::vec3 v, float aside, float seconds) const
 {
-    if (!m_brains || m_brains->local[i] < 0 || isDriven(i))
+    if (!m_brains || m_brains->local[i] < 0 || view.traffic.isDriven(i))
         return v;
-    const float cap = brainSpeedCap(i) * seconds, speed = glm::length(v);
+    const float cap = speedCap(view, i) * seconds, speed = glm::length(v);
     aside *= seconds;
     if (speed <= cap)
         return v;
     // The way it wants to go: only a walker with a path or a goal has one (for the rest,
     // wantedHeading is where it happens to be heading).
     glm::vec2 h(0.0f);
-    if (m_types.params[m_agents.info[i].typeIndex].kind == AgentKind::Pedestrian && !m_types.steering[m_agents.info[i].typeIndex].vehicle.flying &&
-        (m_agents.path[i] >= 0 || m_agents.goal[i] >= 0))
-        h = wantedHeading(view(), i);
+    if (view.types.params[view.agents.info[i].typeIndex].kind == AgentKind::Pedestrian && !view.types.steering[view.agents.info[i].typeIndex].vehicle.flying &&
+        (view.agents.path[i] >= 0 || view.agents.goal[i] >= 0))
+        h = wantedHeading(view, i);
     if (!(glm::dot(h, h) > 1e-12f))
         return v * (cap / speed);
     h = glm::normalize(h);
@@ -323,7 +314,7 @@ glm::vec3 World::brainLimited(std::size_t i, glm::vec3 v, float aside, float sec
     return w * std::clamp(along, -aside, cap) + side + glm::vec3(0.0f, v.y, 0.0f);
 }
 
-float World::brainWeight(std::size_t i, Behaviour b) const
+float BrainPhase::weight(std::size_t i, Behaviour b) const
 {
     if (!m_brains || m_brains->local[i] < 0)
         return 1.0f;
@@ -333,7 +324,7 @@ float World::brainWeight(std::size_t i, Behaviour b) const
 
 // Turn (degrees/s, + = left) as a sideways force: the centripetal acceleration v·ω of a
 // turn at that rate, toward the agent's left.
-glm::vec3 World::brainTurnForce(std::size_t i, const SteeringAgent& self) const
+glm::vec3 BrainPhase::turnForce(std::size_t i, const SteeringAgent& self) const
 {
     if (!m_brains || m_brains->local[i] < 0)
         return glm::vec3(0.0f);
@@ -345,7 +336,7 @@ glm::vec3 World::brainTurnForce(std::size_t i, const SteeringAgent& self) const
     return left * (omega * std::max(self.speed(), 0.1f) * self.mass);
 }
 
-Clip World::brainClip(std::size_t i, Clip bySpeed) const
+Clip BrainPhase::clip(std::size_t i, Clip bySpeed) const
 {
     if (!m_brains || m_brains->action[i] < 0)
         return bySpeed;
@@ -354,12 +345,12 @@ Clip World::brainClip(std::size_t i, Clip bySpeed) const
     return a < tb.actionClip.size() && tb.actionClip[a] >= 0 ? Clip(tb.actionClip[a]) : bySpeed;
 }
 
-int World::brainAction(std::size_t i) const
+int BrainPhase::action(std::size_t i) const
 {
     return m_brains ? m_brains->action[i] : -1;
 }
 
-std::string World::brainActionName(std::size_t i) const
+std::string BrainPhase::actionName(std::size_t i) const
 {
     if (!m_brains || m_brains->action[i] < 0 || !m_brains->types[std::size_t(m_brains->batch[i])].program)
         return {};
@@ -368,34 +359,34 @@ std::string World::brainActionName(std::size_t i) const
     return a < names.size() ? names[a] : std::string();
 }
 
-const std::vector<std::string>& World::brainErrors() const
+const std::vector<std::string>& BrainPhase::errors() const
 {
     static const std::vector<std::string> none;
     return m_brains ? m_brains->errors : none;
 }
 
-const BrainEvaluator* World::brainEvaluator(std::size_t typeIndex) const
+const BrainEvaluator* BrainPhase::evaluator(std::size_t typeIndex) const
 {
     if (!m_brains || typeIndex >= m_brains->types.size())
         return nullptr;
     return m_brains->types[typeIndex].evaluator.get();
 }
 
-const BrainEvaluator* World::agentBrainEvaluator(std::size_t i) const
+const BrainEvaluator* BrainPhase::agentEvaluator(std::size_t i) const
 {
     if (!m_brains || i >= m_brains->batch.size())
         return nullptr;
     return m_brains->types[std::size_t(m_brains->batch[i])].evaluator.get();
 }
 
-void World::pickBrainAgent(std::ptrdiff_t i)
+void BrainPhase::pickAgent(std::ptrdiff_t i, std::size_t agentCount)
 {
     if (!m_brains)
         return;
     for (detail::TypeBrain& tb : m_brains->types)
         if (tb.evaluator)
             tb.evaluator->setPickedAgent(-1);
-    if (i < 0 || std::size_t(i) >= m_agents.pos.size() || m_brains->local[std::size_t(i)] < 0)
+    if (i < 0 || std::size_t(i) >= agentCount || m_brains->local[std::size_t(i)] < 0)
         return;
     m_brains->types[std::size_t(m_brains->batch[std::size_t(i)])].evaluator->setPickedAgent(m_brains->local[std::size_t(i)]);
 }

@@ -2,7 +2,9 @@
 // columns its program lists, from the previous state only (positions, velocities, the
 // neighbour grid, walls, obstacles, crosswalk and lane lights, heroes, sounds). Agents
 // write only their own row.
-#include "simcore/world/World.h"
+#include "simcore/world/BrainPhase.h"
+
+#include "simcore/world/StepView.h"
 
 #include "simcore/world/Sense.h"
 
@@ -67,7 +69,7 @@ glm::vec2 rotated(glm::vec2 v, float rad)
 
 }  // namespace
 
-void World::senseForBrain(TypeBrain& tb)
+void BrainPhase::sense(const StepView& view, AgentColumns& agents, TypeBrain& tb) const
 {
     bool needNeighbours = false, needFeelers = false;
     for (SensorFill f : tb.fills) {
@@ -77,22 +79,22 @@ void World::senseForBrain(TypeBrain& tb)
     }
     tb.gathersNeighbours = needNeighbours;
     const std::size_t n = tb.agents.size(), sensors = tb.fills.size();
-    const float time = float(timeS());
+    const float time = float(view.clock.timeS());
     const float third = tb.viewDeg / 6.0f;
-    m_team.forEach(n, 256, [&](std::size_t k) {
+    view.team.forEach(n, 256, [&](std::size_t k) {
         const std::size_t i = tb.agents[k];
-        const TypeParams& type = m_types.params[m_agents.info[i].typeIndex];
-        const TypeSteering& steering = m_types.steering[m_agents.info[i].typeIndex];
-        const glm::vec2 p = xz(m_agents.pos[i]);
-        glm::vec2 f = xz(m_agents.fwd[i]);
+        const TypeParams& type = view.types.params[view.agents.info[i].typeIndex];
+        const TypeSteering& steering = view.types.steering[view.agents.info[i].typeIndex];
+        const glm::vec2 p = xz(view.agents.pos[i]);
+        glm::vec2 f = xz(view.agents.fwd[i]);
         f = glm::dot(f, f) > 1e-12f ? glm::normalize(f) : glm::vec2(1.0f, 0.0f);
-        const float speed = glm::length(m_agents.vel[i]);
-        // The neighbours go into the agent's own m_agents.nearIndex row, where the steer phase
+        const float speed = glm::length(view.agents.vel[i]);
+        // The neighbours go into the agent's own view.agents.nearIndex row, where the steer phase
         // of this step finds them instead of querying the grid a second time.
         std::array<Neighbour, kMaxNeighbours> near;
-        const std::size_t count = needNeighbours ? gatherNeighbours(view(), i, near.data(), &m_agents.nearIndex[i * kMaxNeighbours]) : 0;
+        const std::size_t count = needNeighbours ? gatherNeighbours(view, i, near.data(), &agents.nearIndex[i * kMaxNeighbours]) : 0;
         if (needNeighbours)
-            m_agents.nearCount[i] = std::uint8_t(count);
+            agents.nearCount[i] = std::uint8_t(count);
         tb.neighbourCount[k] = std::uint8_t(std::min<std::size_t>(count, kBrainNeighbours));
         std::array<float, 3> feeler{};  // left, centre, right
         if (needFeelers) {
@@ -101,13 +103,13 @@ void World::senseForBrain(TypeBrain& tb)
             for (int s = 0; s < 3; ++s) {
                 const glm::vec2 dir = rotated(f, angles[s]);
                 float t = length;
-                m_set.walls.forEachNear(p + dir * (0.5f * length), 0.5f * length, [&](std::uint32_t w) {
-                    const Segment& seg = m_set.walls.segment(w);
+                view.set.walls.forEachNear(p + dir * (0.5f * length), 0.5f * length, [&](std::uint32_t w) {
+                    const Segment& seg = view.set.walls.segment(w);
                     t = std::min(t, rayToSegment(p, dir, length, seg.a, seg.b));
                 });
-                m_set.obstacleGrid.forEachNear(p + dir * (0.5f * length), 0.5f * length, [&](std::uint32_t o) {
-                    if (o < m_set.circles.size())
-                        t = std::min(t, rayToCircle(p, dir, length, xz(m_set.circles[o].centre), m_set.circles[o].radius));
+                view.set.obstacleGrid.forEachNear(p + dir * (0.5f * length), 0.5f * length, [&](std::uint32_t o) {
+                    if (o < view.set.circles.size())
+                        t = std::min(t, rayToCircle(p, dir, length, xz(view.set.circles[o].centre), view.set.circles[o].radius));
                 });
                 feeler[std::size_t(s)] = t;
             }
@@ -121,12 +123,12 @@ void World::senseForBrain(TypeBrain& tb)
             case SensorFill::GoalDistance: {
                 bool has = false;
                 glm::vec2 target(0.0f);
-                if (m_agents.path[i] >= 0 && !m_set.paths[std::size_t(m_agents.path[i])].closed) {
+                if (view.agents.path[i] >= 0 && !view.set.paths[std::size_t(view.agents.path[i])].closed) {
                     has = true;
-                    target = m_set.paths[std::size_t(m_agents.path[i])].points.back();
-                } else if (m_agents.path[i] < 0 && m_agents.goal[i] >= 0) {
+                    target = view.set.paths[std::size_t(view.agents.path[i])].points.back();
+                } else if (view.agents.path[i] < 0 && view.agents.goal[i] >= 0) {
                     has = true;
-                    target = m_agents.goalSpot[i];
+                    target = view.agents.goalSpot[i];
                 }
                 if (tb.fills[s] == SensorFill::GoalDistance)
                     v = has ? glm::distance(p, target) : kNoneM;
@@ -136,9 +138,9 @@ void World::senseForBrain(TypeBrain& tb)
             }
             case SensorFill::PathOffset: {
                 v = 0.0f;
-                if (m_agents.path[i] < 0)
+                if (view.agents.path[i] < 0)
                     break;
-                const std::vector<glm::vec2>& pts = m_set.paths[std::size_t(m_agents.path[i])].points;
+                const std::vector<glm::vec2>& pts = view.set.paths[std::size_t(view.agents.path[i])].points;
                 float best = INFINITY;
                 for (std::size_t q = 0; q + 1 < pts.size(); ++q) {
                     const glm::vec2 c = closestOnSegment(p, pts[q], pts[q + 1]);
@@ -153,7 +155,7 @@ void World::senseForBrain(TypeBrain& tb)
                 break;
             }
             case SensorFill::FlowBearing: {
-                const glm::vec2 d = xz(flowDirection(view(), m_agents.pos[i]));
+                const glm::vec2 d = xz(flowDirection(view, view.agents.pos[i]));
                 v = glm::dot(d, d) > 0.0f ? bearingDeg(f, d) : 0.0f;
                 break;
             }
@@ -179,8 +181,8 @@ void World::senseForBrain(TypeBrain& tb)
             case SensorFill::FeelerRight: v = feeler[2]; break;
             case SensorFill::WallDistance: {
                 v = kWallReachM;
-                m_set.walls.forEachNear(p, kWallReachM, [&](std::uint32_t w) {
-                    const Segment& seg = m_set.walls.segment(w);
+                view.set.walls.forEachNear(p, kWallReachM, [&](std::uint32_t w) {
+                    const Segment& seg = view.set.walls.segment(w);
                     v = std::min(v, glm::distance(p, closestOnSegment(p, seg.a, seg.b)));
                 });
                 break;
@@ -190,7 +192,7 @@ void World::senseForBrain(TypeBrain& tb)
                 float gap = kNoneM, light = 0.0f;
                 if (const std::int32_t vehicle = m_brains->vehicleOf[i]; vehicle >= 0) {
                     // A vehicle's stop line is the next one on its lane, from its front.
-                    const VehicleStopLine line = m_traffic.system->stopLineAhead(std::size_t(vehicle));
+                    const VehicleStopLine line = view.traffic.system->stopLineAhead(std::size_t(vehicle));
                     if (line.found) {
                         gap = line.distanceM;
                         light = 0.5f * float(int(line.phase));
@@ -202,9 +204,9 @@ void World::senseForBrain(TypeBrain& tb)
                     // or goal, not its facing, which wobbles while it waits) within 60
                     // degrees of the crosswalk's axis, so a walker passing the end of a
                     // crosswalk along the sidewalk is not held at it.
-                    glm::vec2 w = wantedHeading(view(), i);
+                    glm::vec2 w = wantedHeading(view, i);
                     w = glm::dot(w, w) > 1e-12f ? glm::normalize(w) : f;
-                    for (const CrosswalkBox& c : m_set.crosswalks) {
+                    for (const CrosswalkBox& c : view.set.crosswalks) {
                         if (c.light < 0)
                             continue;
                         const glm::vec2 ab = c.b - c.a;
@@ -217,12 +219,12 @@ void World::senseForBrain(TypeBrain& tb)
                             continue;
                         float d = kNoneM;
                         if (along < 0.0f && glm::dot(w, dir) > kAlongCos)
-                            d = -along - m_agents.radius[i];
+                            d = -along - view.agents.radius[i];
                         else if (along > len && glm::dot(w, dir) < -kAlongCos)
-                            d = along - len - m_agents.radius[i];
+                            d = along - len - view.agents.radius[i];
                         if (d < gap) {
                             gap = d;
-                            light = 0.5f * float(lightState(std::size_t(c.light)));
+                            light = 0.5f * float(view.lightState(std::size_t(c.light)));
                         }
                     }
                 }
@@ -233,8 +235,8 @@ void World::senseForBrain(TypeBrain& tb)
             case SensorFill::HeroBearing: {
                 // The nearest hero other than the agent itself, where it stood at the step's start.
                 float best = kNoneM, bearing = 0.0f;
-                for (const std::uint32_t h : m_traffic.heroAgent) {
-                    const glm::vec2 d = xz(m_agents.pos[h]) - p;
+                for (const std::uint32_t h : view.traffic.heroAgent) {
+                    const glm::vec2 d = xz(view.agents.pos[h]) - p;
                     const float dist = glm::length(d);
                     if (h != i && dist < best) {
                         best = dist;
@@ -245,17 +247,17 @@ void World::senseForBrain(TypeBrain& tb)
                 break;
             }
             case SensorFill::TerrainSlope: {
-                const float h0 = m_set.groundHeight(p.x, p.y), h1 = m_set.groundHeight(p.x + 0.5f * f.x, p.y + 0.5f * f.y);
+                const float h0 = view.set.groundHeight(p.x, p.y), h1 = view.set.groundHeight(p.x + 0.5f * f.x, p.y + 0.5f * f.y);
                 v = glm::degrees(std::atan((h1 - h0) / 0.5f));
                 break;
             }
             case SensorFill::Time: v = time; break;
-            case SensorFill::AttrMaxSpeed: v = m_agents.maxSpeed[i]; break;
-            case SensorFill::AttrRadius: v = m_agents.radius[i]; break;
+            case SensorFill::AttrMaxSpeed: v = view.agents.maxSpeed[i]; break;
+            case SensorFill::AttrRadius: v = view.agents.radius[i]; break;
             case SensorFill::AttrMass: v = type.mass; break;
             case SensorFill::AttrMaxForce: v = type.maxForce; break;
             case SensorFill::AttrPerception: v = type.perception; break;
-            case SensorFill::AttrSpeedFactor: v = type.maxSpeed > 0.0f ? m_agents.maxSpeed[i] / type.maxSpeed : 1.0f; break;
+            case SensorFill::AttrSpeedFactor: v = type.maxSpeed > 0.0f ? view.agents.maxSpeed[i] / type.maxSpeed : 1.0f; break;
             case SensorFill::SoundBearing:
             case SensorFill::SoundDistance:
             case SensorFill::SoundStrength:
@@ -276,7 +278,7 @@ void World::senseForBrain(TypeBrain& tb)
                         case SensorFill::NeighbourBearing: x = bearingDeg(f, q - p); break;
                         case SensorFill::NeighbourSpeed: x = glm::length(near[j].velocity); break;
                         case SensorFill::NeighbourTag:
-                            x = m_brains->tagValues[tb.fillTag[s]][m_agents.nearIndex[i * kMaxNeighbours + j]];
+                            x = m_brains->tagValues[tb.fillTag[s]][view.agents.nearIndex[i * kMaxNeighbours + j]];
                             break;
                         default: x = bearingDeg(f, xz(near[j].forward)); break;
                         }
@@ -289,7 +291,7 @@ void World::senseForBrain(TypeBrain& tb)
         // Sound: each channel the type hears once, then every sensor reading it.
         for (const std::uint32_t c : tb.hears) {
             HeardList heard;
-            const std::size_t loud = hearChannel(*m_brains, c, m_grid, m_agents.info, m_agents.pos, m_agents.out, i, p, f, heard);
+            const std::size_t loud = hearChannel(*m_brains, c, view.grid, view.agents.info, view.agents.pos, view.agents.out, i, p, f, heard);
             for (std::size_t s = 0; s < sensors; ++s) {
                 const SensorFill fill = tb.fills[s];
                 if (!isSoundFill(fill) || tb.fillTag[s] != c)

@@ -29,8 +29,8 @@ void World::resolveCollision(std::size_t i, bool collideFree, bool hasStatics)
     // back only the walker's progress: pushes may move it aside or back, so a walker
     // its brain stops still gives way, but never on past where its brain holds it.
     glm::vec3 move = p - m_agents.pos[i];
-    if (m_brains) {
-        if (const glm::vec3 held = brainLimited(i, move, m_agents.maxSpeed[i], m_clock.dt); held != move) {
+    if (m_brains.active()) {
+        if (const glm::vec3 held = m_brains.limited(view(), i, move, m_agents.maxSpeed[i], m_clock.dt); held != move) {
             move = held;
             p = m_agents.pos[i] + move;
         }
@@ -85,8 +85,8 @@ void World::settleContacts(bool hasStatics)
         if (!m_agents.contactMoved[i])
             return;
         glm::vec3 p = m_agents.resolvedPos[i], move = p - m_agents.pos[i];
-        if (m_brains)
-            move = brainLimited(i, move, m_agents.maxSpeed[i], m_clock.dt);
+        if (m_brains.active())
+            move = m_brains.limited(view(), i, move, m_agents.maxSpeed[i], m_clock.dt);
         const float maxMove = m_agents.maxSpeed[i] * m_clock.dt, moved = glm::length(move);
         if (moved > maxMove && moved > 0.0f)
             move *= maxMove / moved;

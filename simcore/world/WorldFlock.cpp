@@ -55,7 +55,7 @@ void World::buildBoidKernel(bool enabled, bool collideShortcut)
 {
     // Brains change weights and speeds per agent, layers or priorities change whom an
     // agent perceives, and signals hold agents back: those worlds keep the general path.
-    const bool plain = enabled && !m_brains && !m_types.makingWay && m_traffic.signal.empty();
+    const bool plain = enabled && !m_brains.active() && !m_types.makingWay && m_traffic.signal.empty();
     m_boidKernel.assign(m_types.steering.size(), 0);
     m_collideFree.assign(m_agents.pos.size(), 0);
     // How far a flier's next position may lie from where its old velocity takes it: the

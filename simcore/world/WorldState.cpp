@@ -95,8 +95,8 @@ WorldState World::saveState() const
 #define THRONG_SAVE(world, name) s.name = m_nav.world;
     THRONG_NAV_COLUMNS(THRONG_SAVE)
 #undef THRONG_SAVE
-    if (m_brains) {
-        const detail::WorldBrains& wb = *m_brains;
+    if (const detail::WorldBrains* brains = m_brains.runtime()) {
+        const detail::WorldBrains& wb = *brains;
         s.hasBrains = true;
         for (const detail::TypeBrain& tb : wb.types)
             s.brainState.push_back(tb.evaluator ? tb.evaluator->stateColumns() : std::vector<std::vector<float>>{});
@@ -162,9 +162,9 @@ void World::restoreDynamicState(const WorldState& s, const std::vector<std::uint
     if (sameCells)
         m_grid = s.grid;
     m_gridCurrent = sameCells && s.gridCurrent;
-    if (!m_brains || !s.hasBrains)
+    if (!m_brains.active() || !s.hasBrains)
         return;
-    detail::WorldBrains& wb = *m_brains;
+    detail::WorldBrains& wb = *m_brains.runtime();
     // Brain memory, agent by agent, where the agent's old and new type run programs with
     // the same state columns (adoptState has checked that they are the same brain).
     std::vector<std::vector<std::vector<float>>> columns(wb.types.size());

@@ -104,7 +104,7 @@ void World::steerAroundStatics(std::size_t i, const SteeringAgent& self, glm::ve
     const TypeSteering& s = m_types.steering[m_agents.info[i].typeIndex];
     using B = Behaviour;
     auto request = [&](B b, auto&& force) {
-        requestBehaviour(s, b, brainWeight(i, b), force, requests, sink);
+        requestBehaviour(s, b, m_brains.weight(i, b), force, requests, sink);
     };
     const glm::vec3 p = self.position;
     if (s.on(B::WallFollowing) && !m_set.walls.segments().empty()) {
@@ -151,7 +151,7 @@ glm::vec3 World::steer(std::size_t i, const SteeringAgent& self, std::span<const
     using B = Behaviour;
     SteeringRequestList requests;
     auto request = [&](B b, auto&& force) {
-        requestBehaviour(s, b, brainWeight(i, b), force, requests, sink);
+        requestBehaviour(s, b, m_brains.weight(i, b), force, requests, sink);
     };
     const glm::vec3 p = self.position;
     const bool hasGoal = m_agents.goal[i] >= 0;
@@ -223,9 +223,9 @@ glm::vec3 World::steer(std::size_t i, const SteeringAgent& self, std::span<const
                                rngRangeOf(key, kWanderZ, -1.0f, 1.0f));
         const WanderResult w = wander(self, m_agents.wander[i], random, s.wander);
         wanderOut = w.state;
-        requests.add(w.force, s.w(B::Wander) * brainWeight(i, B::Wander));
+        requests.add(w.force, s.w(B::Wander) * m_brains.weight(i, B::Wander));
         if (sink)
-            sink->force(B::Wander, w.force, s.w(B::Wander) * brainWeight(i, B::Wander));
+            sink->force(B::Wander, w.force, s.w(B::Wander) * m_brains.weight(i, B::Wander));
     }
     // A walker or vehicle with nowhere to go comes to rest instead of coasting on what
     // separation or a collision gave it (the lowest priority: anything else comes first).

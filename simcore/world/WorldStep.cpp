@@ -51,8 +51,8 @@ void World::stepOnce()
     m_nav.beforeStep(view());
     // Brain: sensors from this (previous) state, then each type's program; before the
     // traffic step, which drives brain-driven vehicles by their brains' speeds.
-    if (m_brains)
-        runBrains();
+    if (m_brains.active())
+        m_brains.run(view(), m_agents, m_traffic);
     m_traffic.beforeStep(m_agents);
 
     // With fliers, agents are stepped in the grid's order (by cell, then by height) when it
@@ -232,7 +232,7 @@ void World::stepAgent(std::size_t i, bool hasStatics, NeighbourGrid::Sweep* swee
     const std::size_t count = neighboursThisStep(i, near.data());
     // Steer: the type's behaviours, combined.
     WanderState wanderNext;
-    glm::vec3 force = steer(i, self, {near.data(), count}, wanderNext) + brainTurnForce(i, self);
+    glm::vec3 force = steer(i, self, {near.data(), count}, wanderNext) + m_brains.turnForce(i, self);
     // A walker that only keeps its distance, with an oncoming walker in its way, steps to its
     // right (KeepRight.h), as people do: two crowds meeting head-on form lanes instead of
     // pressing face to face for good.
@@ -258,7 +258,8 @@ void World::stepAgent(std::size_t i, bool hasStatics, NeighbourGrid::Sweep* swee
         force = m_traffic.obeySignal(view(), i, self, force);
     // Integrate: the simple vehicle model (Reynolds 1999).
     SteeringAgent next = integrateVehicle(self, force, m_clock.dt, s.vehicle);
-    capToBrainSpeed(i, self, next);
+    if (m_brains.active())
+        m_brains.capToSpeed(view(), i, self, next);
     m_traffic.holdAtSignal(i, next.position);
     // Constrain: no agent ends a step inside a wall or obstacle; walkers stand on the ground.
     if (!s.vehicle.flying) {
@@ -439,6 +440,23 @@ void World::commit(std::size_t i, std::uint64_t& wallCrossings)
         m_agents.stopped[i] = 1;
         m_agents.nextVel[i] = glm::vec3(0.0f);  // the velocity World::step swaps in
     }
+}
+
+// Agent i's neighbours: those the brain phase gathered this step, or from the grid.
+std::size_t World::neighboursThisStep(std::size_t i, Neighbour* out)
+{
+    std::uint32_t* index = &m_agents.nearIndex[i * kMaxNeighbours];
+    if (!m_brains.gatheredNeighbours(i)) {
+        const std::size_t count = gatherNeighbours(view(), i, out, index);
+        m_agents.nearCount[i] = std::uint8_t(count);
+        return count;
+    }
+    const std::size_t count = m_agents.nearCount[i];
+    for (std::size_t k = 0; k < count; ++k) {
+        const std::uint32_t j = index[k];
+        out[k] = {m_agents.pos[j], m_agents.vel[j], m_agents.fwd[j], m_agents.radius[j], m_agents.info[j].id};
+    }
+    return count;
 }
 
 }  // namespace throng::sim

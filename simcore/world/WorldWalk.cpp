@@ -68,7 +68,7 @@ void World::buildWalkKernel(bool enabled)
     // perceives and avoids, and signals hold agents back: those worlds keep the general path.
     // Walls and obstacles the kernel steers round and constrains against as steer and
     // World::step do, through the same functions (steerAroundStatics, constrain).
-    const bool plain = enabled && !m_brains && !m_types.makingWay && m_traffic.signal.empty();
+    const bool plain = enabled && !m_brains.active() && !m_types.makingWay && m_traffic.signal.empty();
     const bool walls = !m_set.walls.segments().empty(), obstacles = !m_set.circles.empty() || !m_set.boxes.empty();
     m_walkKernel.assign(m_types.steering.size(), 0);
     m_walkTypes.assign(m_types.steering.size(), WalkType{});

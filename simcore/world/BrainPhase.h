@@ -1,0 +1,84 @@
+#pragma once
+// The brain phase of a World: compiles each agent type's brain once (and the brains
+// placed agents carry of their own), fills the sensor columns its program reads from the
+// previous state, evaluates it for all its agents each step before steering, and takes up
+// the choices that are the agent's own state (its goal, its action). The steering phases
+// then ask it how a brain changes an agent's steering: the weight of each behaviour, a
+// turn, a speed cap, the clip. Reads the World through a StepView; each method names the
+// agent columns it writes (WorldBrain.cpp, WorldBrainSense.cpp).
+
+#include "simcore/steering/Neighbour.h"
+#include "simcore/steering/SteeringAgent.h"
+#include "simcore/world/AgentColumns.h"
+#include "simcore/world/FrameCache.h"
+
+#include <glm/vec3.hpp>
+
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace throng::sim {
+
+class BrainEvaluator;
+enum class Behaviour : std::uint8_t;
+struct Scene;
+struct StepView;
+struct WorldTraffic;
+
+namespace detail {
+struct TypeBrain;
+struct WorldBrains;
+}  // namespace detail
+
+class BrainPhase {
+public:
+    // Compiles the scene's brains for the World's agents (v.agents); no runtime at all
+    // when no type or placed agent has a brain.
+    void build(const Scene& scene, const StepView& v);
+    bool active() const { return m_brains != nullptr; }
+
+    // The step: sense, evaluate, and take up each agent's new goal (writes agents' goal,
+    // goalSpot and, for the types whose sensors need them, nearIndex and nearCount) and
+    // the speeds brain-driven vehicles ask the traffic for.
+    void run(const StepView& v, AgentColumns& agents, WorldTraffic& traffic);
+
+    // What a brain changes in agent i's steering; each is the identity for an agent that
+    // runs no brain. Whether the brain's sense phase of this step gathered its neighbours
+    // (in agents.nearIndex).
+    bool gatheredNeighbours(std::size_t i) const;
+    // m/s: its max speed, or less where its brain asks.
+    float speedCap(const StepView& v, std::size_t i) const;
+    // The brain's speed as a cap on the next state's velocity (and position).
+    void capToSpeed(const StepView& v, std::size_t i, const SteeringAgent& self, SteeringAgent& next) const;
+    // A move `move` over `seconds` kept within the brain's speed: along the way a walker
+    // wants to go at most that, sideways and back at most `aside` (m/s).
+    glm::vec3 limited(const StepView& v, std::size_t i, glm::vec3 move, float aside, float seconds) const;
+    // Multiplies the type's weight of behaviour b.
+    float weight(std::size_t i, Behaviour b) const;
+    // The brain's turn (degrees/s) as a sideways force.
+    glm::vec3 turnForce(std::size_t i, const SteeringAgent& self) const;
+    // The clip of the action the brain chose, else `bySpeed`.
+    Clip clip(std::size_t i, Clip bySpeed) const;
+
+    // For the World's facade (World.h documents them).
+    int action(std::size_t i) const;
+    std::string actionName(std::size_t i) const;
+    const std::vector<std::string>& errors() const;
+    const BrainEvaluator* evaluator(std::size_t typeIndex) const;
+    const BrainEvaluator* agentEvaluator(std::size_t i) const;
+    void pickAgent(std::ptrdiff_t i, std::size_t agentCount);
+
+    // The runtime, for saving and restoring its state (WorldState.cpp); null when inactive.
+    detail::WorldBrains* runtime() { return m_brains.get(); }
+    const detail::WorldBrains* runtime() const { return m_brains.get(); }
+
+private:
+    // Fills the sensor columns of one batch of agents (WorldBrainSense.cpp).
+    void sense(const StepView& v, AgentColumns& agents, detail::TypeBrain& brain) const;
+
+    std::shared_ptr<detail::WorldBrains> m_brains;  // null when no type has a brain
+};
+
+}  // namespace throng::sim
