@@ -1,6 +1,8 @@
 #include "CliArguments.h"
 
+#include <algorithm>
 #include <charconv>
+#include <filesystem>
 
 namespace throng::cli {
 
@@ -10,6 +12,26 @@ bool parseCount(const std::string& text, std::uint64_t& out)
 {
     auto [p, ec] = std::from_chars(text.data(), text.data() + text.size(), out);
     return ec == std::errc() && p == text.data() + text.size() && !text.empty();
+}
+
+// Why `path` names no format: "unknown format '.xyz' (known: .glb, ...)".
+std::string unknownFormat(const std::string& path)
+{
+    const std::string suffix = std::filesystem::path(path).extension().string();
+    return (suffix.empty() ? std::string("no format suffix") : "unknown format '" + suffix + "'") + " (known: " +
+           exporting::knownPathForms() + ")";
+}
+
+// "                                .glb, .gltf  glTF 2.0 ...\n", a line per format.
+std::string formatLines()
+{
+    std::string text;
+    for (const exporting::ExportFormat& f : exporting::exportFormats()) {
+        std::string forms = exporting::pathForms(f);
+        forms.resize(std::max<std::size_t>(forms.size() + 1, 13), ' ');
+        text += "                                " + forms + f.label + "\n";
+    }
+    return text;
 }
 
 }  // namespace
@@ -26,10 +48,13 @@ std::string usageText()
            "      --threads T             worker threads (default: all cores)\n"
            "      --stats OUT.json        write the run's figures as JSON\n"
            "      --trajectories OUT.csv  write frame,agent,x,y,z,heading,speed,clip,phase rows\n"
-           "      --export OUT.glb|.gltf  write the animated crowd as glTF 2.0 (skinned characters)\n"
-           "      --export-mode exact|compact  bake every agent's joints (default), or share one\n"
+           "                              (the same file as --export OUT.csv)\n"
+           "      --export OUT            write the recorded run in the format OUT's suffix names;\n"
+           "                              give it again for more outputs of the same run:\n" +
+           formatLines() +
+           "      --export-mode exact|compact  glTF: bake every agent's joints (default), or share one\n"
            "                              cycle per look (joint data ~13x smaller; docs/export.md)\n"
-           "      --export-joint-step N   exact: bake joints every N-th frame (default 1)\n"
+           "      --export-joint-step N   glTF, exact: bake joints every N-th frame (default 1)\n"
            "  bench [--agents N] [--steps S] [--scenario flock|cross|cross-brain|army|corridor] [--threads T]\n"
            "                              run a built-in scenario and print figures as JSON\n"
            "\n"
@@ -46,6 +71,13 @@ ParseOutcome parseArguments(const std::vector<std::string>& argv)
     ParseOutcome out;
     CliArguments& a = out.args;
     std::vector<std::string> positional;
+    auto addOutput = [&](const std::string& flag, const std::string& path, const exporting::ExportFormat* format) {
+        for (const ExportOutput& o : a.exports)
+            if (o.path == path)
+                out.error = "--" + flag + " " + path + ": already an output of this run";
+        if (out.error.empty())
+            a.exports.push_back({flag, path, format});
+    };
     for (std::size_t i = 0; i < argv.size(); ++i) {
         const std::string& arg = argv[i];
         auto value = [&](std::string& into) {
@@ -88,8 +120,19 @@ ParseOutcome parseArguments(const std::vector<std::string>& argv)
             else if (t)
                 a.threads = int(*t);
         } else if (arg == "--stats") value(a.statsPath);
-        else if (arg == "--trajectories") value(a.trajectoriesPath);
-        else if (arg == "--export") value(a.exportPath);
+        else if (arg == "--trajectories") {
+            std::string path;
+            if (value(path))
+                addOutput("trajectories", path, exporting::formatByKey("csv"));
+        } else if (arg == "--export") {
+            std::string path;
+            if (value(path)) {
+                if (const exporting::ExportFormat* format = exporting::formatForPath(path))
+                    addOutput("export", path, format);
+                else
+                    out.error = "--export " + path + ": " + unknownFormat(path);
+            }
+        }
         else if (arg == "--export-mode") {
             if (value(a.exportMode) && a.exportMode != "exact" && a.exportMode != "compact")
                 out.error = "--export-mode is exact or compact, got '" + a.exportMode + "'";
@@ -124,7 +167,7 @@ ParseOutcome parseArguments(const std::vector<std::string>& argv)
         out.error = "unknown command '" + a.command + "'";
     }
     if (out.error.empty() && a.command != "run" &&
-        (!a.statsPath.empty() || !a.trajectoriesPath.empty() || !a.exportPath.empty() || a.frames ||
+        (!a.statsPath.empty() || !a.exports.empty() || a.frames ||
          !a.exportMode.empty() || a.exportJointStep))
         out.error = "--frames, --stats, --trajectories and --export options belong to 'run'";
     return out;

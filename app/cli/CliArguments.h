@@ -1,6 +1,8 @@
 #pragma once
 // Parses throng-cli's command line into a plain struct; reports usage errors as text.
-// Knows nothing of scenes or simulation.
+// Knows the export formats' table, but nothing of scenes or simulation.
+
+#include "export/ExportFormats.h"
 
 #include <cstdint>
 #include <optional>
@@ -9,12 +11,20 @@
 
 namespace throng::cli {
 
+// One recorded output of `run`: --export PATH, or --trajectories PATH (the CSV format).
+struct ExportOutput {
+    std::string flag;                                // "export" or "trajectories": says where it went
+    std::string path;
+    const exporting::ExportFormat* format = nullptr;  // a row of exporting::exportFormats()
+};
+
 struct CliArguments {
     std::string command;  // check | run | bench | help | version
     std::string scene;
     std::optional<std::uint64_t> frames, seed, agents, steps;
     int threads = 0;
-    std::string statsPath, trajectoriesPath, exportPath, scenario;
+    std::string statsPath, scenario;
+    std::vector<ExportOutput> exports;             // in the order given; the run records frames for them
     std::string exportMode;                        // exact | compact; empty = exact
     std::optional<std::uint64_t> exportJointStep;  // >= 1
     bool quiet = false;

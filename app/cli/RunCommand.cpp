@@ -45,7 +45,7 @@ int runCommand(const CliArguments& args, std::ostream& out, std::ostream& err)
         return 1;
     }
 
-    const bool record = !args.trajectoriesPath.empty() || !args.exportPath.empty();
+    const bool record = !args.exports.empty();
     sim::FrameCache cache;
     if (record)
         world.startRecording(cache);

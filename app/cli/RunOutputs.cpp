@@ -1,11 +1,11 @@
 #include "RunOutputs.h"
 
-#include "export/GltfExporter.h"
-#include "export/TrajectoryCsv.h"
+#include "export/ExportFormats.h"
 #include "simcore/io/SceneIO.h"
 
 #include <filesystem>
 #include <ostream>
+#include <string>
 
 namespace throng::cli {
 
@@ -21,24 +21,24 @@ bool writeRunOutputs(const CliArguments& args, const sim::Scene& scene, const si
             ok = false;
         }
     };
-    if (!args.trajectoriesPath.empty()) {
-        const exporting::ExportResult r = exporting::writeTrajectoryCsv(cache, args.trajectoriesPath);
-        report("trajectories", r.ok(), args.trajectoriesPath, r.error);
-    }
-    if (!args.exportPath.empty()) {
-        exporting::GltfOptions options;
-        options.path = args.exportPath;
-        options.mode = args.exportMode == "compact" ? exporting::GltfMode::Compact : exporting::GltfMode::Exact;
-        options.sceneDirectory = std::filesystem::path(args.scene).parent_path().string();
-        options.threads = args.threads;
-        options.seed = args.seed;
-        if (args.exportJointStep)
-            options.jointFrameStep = static_cast<int>(*args.exportJointStep);
-        const exporting::ExportResult r = exporting::exportGltf(scene, cache, options);
+    exporting::ExportRequest request;
+    request.sceneDirectory = std::filesystem::path(args.scene).parent_path().string();
+    request.seed = args.seed;
+    request.threads = args.threads;
+    request.jointBake = args.exportMode == "compact" ? exporting::JointBake::Compact : exporting::JointBake::Exact;
+    if (args.exportJointStep)
+        request.jointFrameStep = static_cast<int>(*args.exportJointStep);
+    for (const ExportOutput& output : args.exports) {
+        request.path = output.path;
+        const exporting::ExportResult r = output.format->write(scene, cache, request, {});
+        // A directory holds a file per agent: name the directory, not thousands of files.
         std::string written;
-        for (const std::string& p : r.writtenPaths)
-            written += (written.empty() ? "" : ", ") + p;
-        report("export", r.ok(), written, r.error);
+        if (output.format->writesDirectory)
+            written = output.path + " (" + std::to_string(r.writtenPaths.size()) + " files)";
+        else
+            for (const std::string& p : r.writtenPaths)
+                written += (written.empty() ? "" : ", ") + p;
+        report(output.flag.c_str(), r.ok(), written, r.error);
     }
     // Stats last, so a pipeline that sees the stats file knows the other outputs are done.
     if (!args.statsPath.empty()) {

@@ -1,6 +1,6 @@
 #pragma once
-// Writes what `throng-cli run` was asked for (stats JSON, trajectories CSV, glTF) and
-// says where each went. Every file is written atomically.
+// Writes what `throng-cli run` was asked for (each export through its format's writer,
+// then the stats JSON) and says where each went. Every output is written atomically.
 
 #include "CliArguments.h"
 

@@ -18,11 +18,21 @@
 #include <QTimer>
 #include <QVBoxLayout>
 
+#include <algorithm>
+
 namespace throng::editor {
 
 namespace {
-const char* const kSuffix[] = {"glb", "gltf", "csv"};
 constexpr int kProgressSteps = 1000;
+
+// "glTF 2.0 ... (*.glb *.gltf)" for the file chooser.
+QString fileFilter(const exporting::ExportFormat& format)
+{
+    QStringList patterns;
+    for (const std::string& suffix : format.suffixes)
+        patterns << '*' + QString::fromStdString(suffix);
+    return QStringLiteral("%1 (%2)").arg(QString::fromStdString(format.label), patterns.join(' '));
+}
 }  // namespace
 
 ExportDialog::ExportDialog(SceneDocument& document, SimulationController& simulation, QWidget* parent)
@@ -33,8 +43,10 @@ ExportDialog::ExportDialog(SceneDocument& document, SimulationController& simula
     auto* form = new QFormLayout;
     m_format = new QComboBox(this);
     m_format->setObjectName("exportFormat");
-    m_format->addItems({tr("glTF binary (.glb)"), tr("glTF with .bin (.gltf)"), tr("Trajectories (.csv)")});
-    m_format->setToolTip(tr("Animated glTF for Blender, Maya, Houdini or a game engine, or a CSV of every agent per frame"));
+    for (const exporting::ExportFormat& f : exporting::exportFormats())
+        m_format->addItem(QString::fromStdString(f.label), QString::fromStdString(f.key));
+    m_format->setToolTip(tr("The formats throng-cli run --export writes: animated glTF for Blender, Maya, Houdini "
+                            "or a game engine, a CSV of every agent per frame, or a text file per agent"));
     form->addRow(tr("Format"), m_format);
 
     auto* pathRow = new QHBoxLayout;
@@ -102,31 +114,49 @@ QString ExportDialog::outcome() const
     return m_status->text();
 }
 
+const exporting::ExportFormat& ExportDialog::format() const
+{
+    const exporting::ExportFormat* f = exporting::formatByKey(m_format->currentData().toString().toStdString());
+    return f ? *f : exporting::exportFormats().front();
+}
+
 void ExportDialog::formatChanged()
 {
-    const int f = m_format->currentIndex();
-    QFileInfo info(m_path->text());
-    m_path->setText(info.absolutePath() + '/' + info.completeBaseName() + '.' + kSuffix[f]);
-    m_pretty->setEnabled(ExportFormat(f) == ExportFormat::Gltf);
+    const exporting::ExportFormat& f = format();
+    QString path = m_path->text();
+    while (path.size() > 1 && path.endsWith('/'))
+        path.chop(1);
+    const QFileInfo info(path);
+    const QString stem = info.absolutePath() + '/' + info.completeBaseName();
+    const std::string suffix = '.' + info.suffix().toLower().toStdString();
+    if (f.writesDirectory)
+        m_path->setText(stem);
+    else if (std::find(f.suffixes.begin(), f.suffixes.end(), suffix) == f.suffixes.end())
+        m_path->setText(stem + QString::fromStdString(f.suffixes.front()));
+    m_pretty->setEnabled(f.readsIndentedText);
 }
 
 void ExportDialog::browse()
 {
-    const int f = m_format->currentIndex();
-    const QString path = QFileDialog::getSaveFileName(this, tr("Export To"), m_path->text(),
-                                                      QStringLiteral("*.%1").arg(kSuffix[f]));
+    const exporting::ExportFormat& f = format();
+    const QString path = f.writesDirectory
+                             ? QFileDialog::getExistingDirectory(this, tr("Export Into"), m_path->text())
+                             : QFileDialog::getSaveFileName(this, tr("Export To"), m_path->text(), fileFilter(f));
     if (!path.isEmpty())
         m_path->setText(path);
 }
 
-ExportRequest ExportDialog::request() const
+ExportJobRequest ExportDialog::request() const
 {
-    ExportRequest r;
-    r.format = ExportFormat(m_format->currentIndex());
-    r.path = m_path->text().toStdString();
+    ExportJobRequest r;
+    r.format = &format();
+    r.output.path = m_path->text().toStdString();
+    // Character files named relative to the scene resolve as the viewport resolves them.
+    if (!m_document.filePath().isEmpty())
+        r.output.sceneDirectory = QFileInfo(m_document.filePath()).absolutePath().toStdString();
+    r.output.indentedText = m_pretty->isChecked();
     r.firstFrame = std::size_t(std::min(m_first->value(), m_last->value()));
     r.lastFrame = std::size_t(std::max(m_first->value(), m_last->value()));
-    r.prettyJson = m_pretty->isChecked();
     return r;
 }
 
@@ -148,7 +178,7 @@ void ExportDialog::start()
 
 void ExportDialog::poll()
 {
-    const ExportRequest r = request();
+    const ExportJobRequest r = request();
     if (m_waitingForFrames) {
         // The first half of the bar is the simulation, the second the writing.
         const double recorded = double(m_simulation.recordedFrames());
@@ -156,7 +186,7 @@ void ExportDialog::poll()
         if (m_simulation.recordedFrames() <= r.lastFrame)
             return;
         m_waitingForFrames = false;
-        m_status->setText(tr("Writing %1...").arg(QString::fromStdString(r.path)));
+        m_status->setText(tr("Writing %1...").arg(QString::fromStdString(r.output.path)));
         m_job = std::make_unique<ExportJob>(m_document.scene(), m_simulation.cache(), r);
         return;
     }
@@ -166,11 +196,16 @@ void ExportDialog::poll()
     if (!m_job->isDone())
         return;
     const exporting::ExportResult result = m_job->result();
+    const bool directory = m_job->format().writesDirectory;
     m_job.reset();
     if (result.cancelled)
         finish(false, tr("Cancelled; no file was written."));
     else if (!result.ok())
         finish(false, QString::fromStdString(result.error));
+    else if (directory || result.writtenPaths.empty())
+        finish(true, tr("Wrote %1 files into %2")
+                         .arg(result.writtenPaths.size())
+                         .arg(QString::fromStdString(r.output.path)));
     else
         finish(true, tr("Wrote %1").arg(QString::fromStdString(result.writtenPaths.front())));
 }

@@ -1,7 +1,7 @@
 #pragma once
-// File > Export: format, file, frame range and options; simulates the missing frames,
-// then exports on a worker thread with a progress bar and Cancel. Reads the document and
-// the recording; never edits the scene.
+// File > Export: a format from exporting::exportFormats(), its file or directory, frame
+// range and options; simulates the missing frames, then exports on a worker thread with a
+// progress bar and Cancel. Reads the document and the recording; never edits the scene.
 
 #include "editor/exporting/ExportJob.h"
 
@@ -46,7 +46,9 @@ private:
     void poll();
     void cancelOrClose();
     void finish(bool ok, const QString& message);
-    ExportRequest request() const;
+    // The table's row the format list shows.
+    const exporting::ExportFormat& format() const;
+    ExportJobRequest request() const;
 
     SceneDocument& m_document;
     SimulationController& m_simulation;

@@ -1,8 +1,5 @@
 #include "editor/exporting/ExportJob.h"
 
-#include "export/GltfExporter.h"
-#include "export/TrajectoryCsv.h"
-
 #include <algorithm>
 
 namespace throng::editor {
@@ -17,7 +14,8 @@ sim::FrameCache sliceFrames(const sim::FrameCache& cache, std::size_t first, std
     return out;
 }
 
-ExportJob::ExportJob(const sim::Scene& scene, const sim::FrameCache& cache, ExportRequest request)
+ExportJob::ExportJob(const sim::Scene& scene, const sim::FrameCache& cache, ExportJobRequest request)
+    : m_format(request.format)
 {
     sim::FrameCache frames = sliceFrames(cache, request.firstFrame, request.lastFrame);
     m_thread = std::thread([this, scene, frames = std::move(frames), request]() mutable {
@@ -32,20 +30,13 @@ ExportJob::~ExportJob()
         m_thread.join();
 }
 
-void ExportJob::run(sim::Scene scene, sim::FrameCache frames, ExportRequest request)
+void ExportJob::run(sim::Scene scene, sim::FrameCache frames, ExportJobRequest request)
 {
     const exporting::ProgressFn progress = [this](float fraction) {
         m_progress = fraction;
         return !m_cancel.load();
     };
-    if (request.format == ExportFormat::TrajectoryCsv) {
-        m_result = exporting::writeTrajectoryCsv(frames, request.path, progress);
-    } else {
-        exporting::GltfOptions options;
-        options.path = request.path;
-        options.prettyJson = request.prettyJson;
-        m_result = exporting::exportGltf(scene, frames, options, progress);
-    }
+    m_result = request.format->write(scene, frames, request.output, progress);
     m_progress = 1.0f;
     m_done = true;
 }

@@ -1,9 +1,9 @@
 #pragma once
-// Runs one export (glTF/GLB or trajectory CSV) of a frame range on its own thread, with
-// progress and cancel readable from the GUI thread. Copies what it exports, so the
-// recording may change meanwhile; never touches widgets.
+// Runs one export (any row of exporting::exportFormats()) of a frame range on its own
+// thread, with progress and cancel readable from the GUI thread. Copies what it exports,
+// so the recording may change meanwhile; never touches widgets.
 
-#include "export/ExportResult.h"
+#include "export/ExportFormats.h"
 #include "simcore/scene/Scene.h"
 #include "simcore/world/FrameCache.h"
 
@@ -14,30 +14,29 @@
 
 namespace throng::editor {
 
-enum class ExportFormat { Glb, Gltf, TrajectoryCsv };
-
-struct ExportRequest {
-    ExportFormat format = ExportFormat::Glb;
-    std::string path;
-    std::size_t firstFrame = 0, lastFrame = 0;  // inclusive, < cache.frameCount()
-    bool prettyJson = true;                     // .gltf only
+struct ExportJobRequest {
+    const exporting::ExportFormat* format = nullptr;  // a row of exporting::exportFormats()
+    exporting::ExportRequest output;                  // path and the format's choices
+    std::size_t firstFrame = 0, lastFrame = 0;        // inclusive, < cache.frameCount()
 };
 
 class ExportJob {
 public:
     // Starts exporting frames first..last of `cache` (copied) on a new thread.
-    ExportJob(const sim::Scene& scene, const sim::FrameCache& cache, ExportRequest request);
+    ExportJob(const sim::Scene& scene, const sim::FrameCache& cache, ExportJobRequest request);
     ~ExportJob();  // cancels and waits
 
     float progress() const { return m_progress.load(); }
     bool isDone() const { return m_done.load(); }
     void cancel() { m_cancel = true; }
+    const exporting::ExportFormat& format() const { return *m_format; }
     // Valid once isDone().
     const exporting::ExportResult& result() const { return m_result; }
 
 private:
-    void run(sim::Scene scene, sim::FrameCache frames, ExportRequest request);
+    void run(sim::Scene scene, sim::FrameCache frames, ExportJobRequest request);
 
+    const exporting::ExportFormat* m_format = nullptr;
     std::atomic<float> m_progress{0.0f};
     std::atomic<bool> m_cancel{false};
     std::atomic<bool> m_done{false};

@@ -9,9 +9,12 @@
 #include "editor/panels/TimelinePanel.h"
 #include "editor/simulation/SimulationController.h"
 #include "editor/viewport/Viewport.h"
+#include "export/ExportFormats.h"
 
 #include <glm/geometric.hpp>
 
+#include <QComboBox>
+#include <QDir>
 #include <QFile>
 #include <QLabel>
 #include <QLineEdit>
@@ -172,6 +175,34 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(!dialog->isBusy(), 30000);
         QVERIFY2(dialog->outcome().startsWith("Cancelled"), qPrintable(dialog->outcome()));
         QVERIFY(!QFile::exists(out));
+    }
+
+    // The format list is the export table; the text cache writes a file per agent into
+    // the directory the path names, and switching back gives the path a suffix again.
+    void exportWritesTheTextCacheIntoADirectory()
+    {
+        MainWindow window;
+        QVERIFY(showWithScene(window, m_dir, "crossroads.yaml"));
+        ExportDialog* dialog = window.showExportDialog();
+        auto* format = dialog->findChild<QComboBox*>("exportFormat");
+        QCOMPARE(std::size_t(format->count()), exporting::exportFormats().size());
+        auto* path = dialog->findChild<QLineEdit*>("exportPath");
+        QVERIFY(path->text().endsWith(".glb"));
+        format->setCurrentIndex(format->findData(QStringLiteral("text-cache")));
+        QVERIFY2(!path->text().endsWith(".glb"), qPrintable(path->text()));
+        const QString out = m_dir.filePath("caches/shot1");
+        path->setText(out);
+        dialog->findChild<QSpinBox*>("exportLastFrame")->setValue(4);
+        QTest::mouseClick(dialog->findChild<QPushButton*>("exportButton"), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(!dialog->isBusy(), 60000);
+        QVERIFY2(dialog->outcome().startsWith("Wrote"), qPrintable(dialog->outcome()));
+        const QStringList files = QDir(out).entryList(QDir::Files);
+        QVERIFY(!files.isEmpty());
+        QVERIFY2(dialog->outcome().contains(QString::number(files.size()) + " files"), qPrintable(dialog->outcome()));
+        for (const QString& f : files)
+            QVERIFY2(f.startsWith("agent_") && f.endsWith(".txt"), qPrintable(f));
+        format->setCurrentIndex(format->findData(QStringLiteral("csv")));
+        QCOMPARE(path->text(), m_dir.filePath("caches/shot1.csv"));
     }
 
     void unsavedChangesAreAskedAbout()

@@ -1,0 +1,114 @@
+#include "export/ExportFormats.h"
+
+#include "export/AgentTextCache.h"
+#include "export/GltfExporter.h"
+#include "export/TrajectoryCsv.h"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+
+namespace throng::exporting {
+
+namespace {
+
+ExportResult writeGltf(const sim::Scene& scene, const sim::FrameCache& cache, const ExportRequest& request,
+                       const ProgressFn& progress)
+{
+    GltfOptions options;
+    options.path = request.path;
+    options.mode = request.jointBake == JointBake::Compact ? GltfMode::Compact : GltfMode::Exact;
+    options.sceneDirectory = request.sceneDirectory;
+    options.seed = request.seed;
+    options.jointFrameStep = request.jointFrameStep;
+    options.prettyJson = request.indentedText;
+    options.threads = request.threads;
+    return exportGltf(scene, cache, options, progress);
+}
+
+ExportResult writeCsv(const sim::Scene&, const sim::FrameCache& cache, const ExportRequest& request,
+                      const ProgressFn& progress)
+{
+    return writeTrajectoryCsv(cache, request.path, progress);
+}
+
+ExportResult writeTextCache(const sim::Scene&, const sim::FrameCache& cache, const ExportRequest& request,
+                            const ProgressFn& progress)
+{
+    // "shot/" names the directory "shot": its staging sibling must not land inside it.
+    std::string directory = request.path;
+    while (directory.size() > 1 && directory.back() == '/')
+        directory.pop_back();
+    return writeAgentTextCache(cache, directory, progress);
+}
+
+std::string lowerCase(std::string text)
+{
+    std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    return text;
+}
+
+}  // namespace
+
+const std::vector<ExportFormat>& exportFormats()
+{
+    static const std::vector<ExportFormat> formats{
+        {.key = "gltf",
+         .label = "glTF 2.0 animated crowd (.glb, or .gltf + .bin)",
+         .suffixes = {".glb", ".gltf"},
+         .readsIndentedText = true,
+         .write = writeGltf},
+        {.key = "csv", .label = "Trajectories CSV (.csv)", .suffixes = {".csv"}, .write = writeCsv},
+        {.key = "text-cache",
+         .label = "Per-agent text cache (a directory)",
+         .suffixes = {},
+         .writesDirectory = true,
+         .write = writeTextCache},
+    };
+    return formats;
+}
+
+const ExportFormat* formatForPath(const std::string& path)
+{
+    const std::vector<ExportFormat>& formats = exportFormats();
+    if (!path.empty() && path.back() == '/') {
+        const auto found = std::find_if(formats.begin(), formats.end(),
+                                        [](const ExportFormat& f) { return f.writesDirectory; });
+        return found == formats.end() ? nullptr : &*found;
+    }
+    const std::string suffix = lowerCase(std::filesystem::path(path).extension().string());
+    if (suffix.empty())
+        return nullptr;
+    for (const ExportFormat& f : formats)
+        if (std::find(f.suffixes.begin(), f.suffixes.end(), suffix) != f.suffixes.end())
+            return &f;
+    return nullptr;
+}
+
+const ExportFormat* formatByKey(const std::string& key)
+{
+    for (const ExportFormat& f : exportFormats())
+        if (f.key == key)
+            return &f;
+    return nullptr;
+}
+
+std::string pathForms(const ExportFormat& format)
+{
+    if (format.writesDirectory)
+        return "DIR/";
+    std::string text;
+    for (const std::string& s : format.suffixes)
+        text += (text.empty() ? "" : ", ") + s;
+    return text;
+}
+
+std::string knownPathForms()
+{
+    std::string text;
+    for (const ExportFormat& f : exportFormats())
+        text += (text.empty() ? "" : ", ") + pathForms(f);
+    return text;
+}
+
+}  // namespace throng::exporting

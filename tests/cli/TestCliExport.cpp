@@ -1,0 +1,134 @@
+// `throng-cli run --export` picks the format by the path's suffix from the export
+// formats' table: the CSV through --export is --trajectories' file, one run writes every
+// output asked for, an unknown suffix stops before the run, and `DIR/` is the text cache.
+#include "CliRunner.h"
+#include "TestRegistry.h"
+
+#include "export/ExportFormats.h"
+
+#include <QDir>
+#include <QFile>
+#include <QTemporaryDir>
+#include <QTest>
+
+using throng::test::runCli;
+
+namespace {
+
+const char* kScene = R"(throng: 1
+settings: {fps: 10, duration: 3, seed: 4}
+agent_types: [{name: walker, max_speed: 1.5, max_force: 6}]
+goals: [{name: exit, position: [8, 0], radius: 1}]
+groups: [{name: g, type: walker, count: 12, rect: {min: [-6, -5], max: [0, 5]}, goal: exit}]
+)";
+
+QByteArray readAll(const QString& path)
+{
+    QFile f(path);
+    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+}
+
+QStringList entries(const QString& dir)
+{
+    QStringList names = QDir(dir).entryList(QDir::AllEntries | QDir::Hidden | QDir::NoDotAndDotDot);
+    names.sort();
+    return names;
+}
+
+}  // namespace
+
+class TestCliExport : public QObject {
+    Q_OBJECT
+private slots:
+    void exportCsvIsTheTrajectoriesFile()
+    {
+        QTemporaryDir tmp;
+        const std::string scene = throng::test::writeText(tmp.filePath("s.yaml"), kScene).toStdString();
+        const QString trajectories = tmp.filePath("trajectories.csv"), exported = tmp.filePath("exported.csv");
+        auto r = runCli({"run", scene, "--frames", "15", "--seed", "11", "--trajectories", trajectories.toStdString(),
+                         "--quiet"});
+        QCOMPARE(r.status, 0);
+        QVERIFY2(r.out.find("trajectories: " + trajectories.toStdString()) != std::string::npos, r.out.c_str());
+        r = runCli({"run", scene, "--frames", "15", "--seed", "11", "--export", exported.toStdString(), "--quiet"});
+        QCOMPARE(r.status, 0);
+        QVERIFY2(r.out.find("export: " + exported.toStdString()) != std::string::npos, r.out.c_str());
+        const QByteArray bytes = readAll(trajectories);
+        QVERIFY(bytes.startsWith("frame,agent,x,y,z,heading,speed,clip,phase\n"));
+        QCOMPARE(bytes.count('\n'), 1 + 15 * 12);
+        QCOMPARE(readAll(exported), bytes);
+    }
+
+    void everyOutputOfOneRunIsWritten()
+    {
+        QTemporaryDir tmp;
+        const std::string scene = throng::test::writeText(tmp.filePath("s.yaml"), kScene).toStdString();
+        const QString glb = tmp.filePath("crowd.glb"), csv = tmp.filePath("crowd.csv"), more = tmp.filePath("t.csv");
+        const auto r = runCli({"run", scene, "--frames", "10", "--export", glb.toStdString(), "--export",
+                               csv.toStdString(), "--trajectories", more.toStdString(), "--quiet"});
+        QCOMPARE(r.status, 0);
+        QCOMPARE(readAll(glb).left(4), QByteArray("glTF"));
+        QCOMPARE(readAll(csv).count('\n'), 1 + 10 * 12);
+        QCOMPARE(readAll(more), readAll(csv));
+    }
+
+    void unknownSuffixStopsBeforeTheRun()
+    {
+        QTemporaryDir tmp;
+        const std::string scene = throng::test::writeText(tmp.filePath("s.yaml"), kScene).toStdString();
+        const std::string glb = tmp.filePath("crowd.glb").toStdString(), xyz = tmp.filePath("out.xyz").toStdString();
+        const auto r = runCli({"run", scene, "--export", glb, "--export", xyz, "--stats",
+                               tmp.filePath("s.json").toStdString()});
+        QCOMPARE(r.status, 2);
+        const std::string message = "throng-cli: --export " + xyz + ": unknown format '.xyz' (known: " +
+                                    throng::exporting::knownPathForms() + ")";
+        QVERIFY2(r.err.rfind(message, 0) == 0, r.err.c_str());
+        QVERIFY(throng::exporting::knownPathForms().find(".glb, .gltf, .csv") != std::string::npos);
+        QVERIFY(r.out.empty());
+        QCOMPARE(entries(tmp.path()), QStringList{"s.yaml"});
+    }
+
+    void sameOutputTwiceIsAUsageError()
+    {
+        const auto r = runCli({"run", "s.yaml", "--export", "a.csv", "--trajectories", "a.csv"});
+        QCOMPARE(r.status, 2);
+        QVERIFY2(r.err.find("--trajectories a.csv: already an output of this run") != std::string::npos, r.err.c_str());
+    }
+
+    void exportBelongsToRun()
+    {
+        const auto r = runCli({"check", "s.yaml", "--export", "a.glb"});
+        QCOMPARE(r.status, 2);
+        QVERIFY2(r.err.find("belong to 'run'") != std::string::npos, r.err.c_str());
+    }
+
+    // A path ending in '/' is the text cache: one agent_<id>.txt per agent, a line per frame.
+    void textCacheIsOneFilePerAgent()
+    {
+        QTemporaryDir tmp;
+        const std::string scene = throng::test::writeText(tmp.filePath("s.yaml"), kScene).toStdString();
+        const QString dir = tmp.filePath("cache/shot1");
+        const auto r = runCli({"run", scene, "--frames", "8", "--export", dir.toStdString() + "/", "--quiet"});
+        QCOMPARE(r.status, 0);
+        QVERIFY2(r.out.find("export: " + dir.toStdString() + "/ (12 files)") != std::string::npos, r.out.c_str());
+        const QStringList files = entries(dir);
+        QCOMPARE(files.size(), 12);
+        for (const QString& f : files) {
+            QVERIFY2(f.startsWith("agent_") && f.endsWith(".txt"), qPrintable(f));
+            QCOMPARE(readAll(QDir(dir).filePath(f)).count('\n'), 8);
+        }
+        QCOMPARE(entries(tmp.filePath("cache")), QStringList{"shot1"});  // no staging directory left
+    }
+
+    void usageListsEveryFormatOfTheTable()
+    {
+        const auto r = runCli({"--help"});
+        QCOMPARE(r.status, 0);
+        for (const throng::exporting::ExportFormat& f : throng::exporting::exportFormats()) {
+            QVERIFY2(r.out.find(throng::exporting::pathForms(f)) != std::string::npos, f.key.c_str());
+            QVERIFY2(r.out.find(f.label) != std::string::npos, f.key.c_str());
+        }
+    }
+};
+
+THRONG_REGISTER_TEST(TestCliExport)
+#include "TestCliExport.moc"

@@ -1,0 +1,161 @@
+// The table of export formats that the CLI and the editor offer: suffixes name one format
+// each, a path finds its format, and every row's writer writes what that format's reader
+// accepts, or, cancelled, nothing at all.
+#include "CrowdFixture.h"
+#include "GltfReadBack.h"
+#include "TestRegistry.h"
+
+#include "export/ExportFormats.h"
+
+#include <QDir>
+#include <QFile>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <set>
+
+using namespace throng;
+using throng::test::CrowdFixture;
+
+namespace {
+
+QStringList entries(const QString& dir)
+{
+    QStringList names = QDir(dir).entryList(QDir::AllEntries | QDir::Hidden | QDir::NoDotAndDotDot);
+    names.sort();
+    return names;
+}
+
+QStringList readLines(const QString& path)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly))
+        return {};
+    return QString::fromUtf8(file.readAll()).split('\n', Qt::SkipEmptyParts);
+}
+
+// Where a row writes in `dir`: a file with its first suffix, or a directory as the CLI names it.
+QString targetIn(const QTemporaryDir& dir, const exporting::ExportFormat& format)
+{
+    return format.writesDirectory ? dir.filePath("out") + '/'
+                                  : dir.filePath("out" + QString::fromStdString(format.suffixes.front()));
+}
+
+}  // namespace
+
+class TestExportFormats : public QObject {
+    Q_OBJECT
+private slots:
+    void rowsAreCompleteAndSuffixesUnique()
+    {
+        std::set<std::string> keys, suffixes;
+        int directories = 0;
+        for (const exporting::ExportFormat& f : exporting::exportFormats()) {
+            QVERIFY2(keys.insert(f.key).second, f.key.c_str());
+            QVERIFY2(!f.label.empty() && f.write, f.key.c_str());
+            QVERIFY2(f.writesDirectory == f.suffixes.empty(), f.key.c_str());
+            directories += f.writesDirectory;
+            for (const std::string& s : f.suffixes) {
+                QVERIFY2(s.size() > 1 && s[0] == '.', s.c_str());
+                QVERIFY2(QString::fromStdString(s) == QString::fromStdString(s).toLower(), s.c_str());
+                QVERIFY2(suffixes.insert(s).second, ("suffix in two rows: " + s).c_str());
+            }
+            QCOMPARE(exporting::formatByKey(f.key), &f);
+        }
+        // A trailing '/' names the directory format: a second one would need a key to choose it.
+        QVERIFY(directories <= 1);
+    }
+
+    void formatForPathGoesBySuffix()
+    {
+        const exporting::ExportFormat* gltf = exporting::formatByKey("gltf");
+        const exporting::ExportFormat* csv = exporting::formatByKey("csv");
+        const exporting::ExportFormat* cache = exporting::formatByKey("text-cache");
+        QVERIFY(gltf && csv && cache);
+        QCOMPARE(exporting::formatForPath("shot.glb"), gltf);
+        QCOMPARE(exporting::formatForPath("out/shot.gltf"), gltf);
+        QCOMPARE(exporting::formatForPath("SHOT.GLB"), gltf);
+        QCOMPARE(exporting::formatForPath("/tmp/run.1.csv"), csv);
+        QCOMPARE(exporting::formatForPath("caches/shot1/"), cache);
+        QCOMPARE(exporting::formatForPath("out.xyz"), nullptr);
+        QCOMPARE(exporting::formatForPath("out"), nullptr);
+        QCOMPARE(exporting::formatForPath(""), nullptr);
+        QCOMPARE(exporting::formatByKey("fbx"), nullptr);
+        QCOMPARE(exporting::knownPathForms(), std::string(".glb, .gltf, .csv, DIR/"));
+    }
+
+    // Each row writes the fixture's 3 agents x 49 frames; a row without a check here fails,
+    // so a new format brings its reader along.
+    void everyWriterWritesWhatItsReaderAccepts()
+    {
+        const CrowdFixture fx = CrowdFixture::make();
+        for (const exporting::ExportFormat& f : exporting::exportFormats()) {
+            QTemporaryDir dir;
+            exporting::ExportRequest request;
+            request.path = targetIn(dir, f).toStdString();
+            const exporting::ExportResult result = f.write(fx.scene, fx.cache, request, {});
+            QVERIFY2(result.ok(), result.error.c_str());
+            QVERIFY2(!result.writtenPaths.empty(), f.key.c_str());
+            for (const std::string& p : result.writtenPaths)
+                QVERIFY2(QFile::exists(QString::fromStdString(p)), p.c_str());
+            if (f.key == "gltf") {
+                tinygltf::Model model;
+                std::string error;
+                QVERIFY2(test::loadGltf(request.path, model, error), error.c_str());
+                QCOMPARE(model.animations.size(), std::size_t(1));
+                for (const char* node : {"agent_7_walker", "agent_42_runner", "agent_1000_walker"})
+                    QVERIFY2(test::nodeNamed(model, node) >= 0, node);
+            } else if (f.key == "csv") {
+                const QStringList lines = readLines(QString::fromStdString(request.path));
+                QCOMPARE(lines.size(), 1 + 3 * int(CrowdFixture::kFrames));
+                QCOMPARE(lines.first(), QStringLiteral("frame,agent,x,y,z,heading,speed,clip,phase"));
+            } else if (f.key == "text-cache") {
+                const QString out = dir.filePath("out");
+                QCOMPARE(entries(out), (QStringList{"agent_1000.txt", "agent_42.txt", "agent_7.txt"}));
+                for (const QString& file : entries(out))
+                    QCOMPARE(readLines(QDir(out).filePath(file)).size(), int(CrowdFixture::kFrames));
+                QCOMPARE(entries(dir.path()), QStringList{"out"});  // no staging directory left beside it
+            } else {
+                QFAIL(("no reader check for format '" + f.key + "': add one here").c_str());
+            }
+        }
+    }
+
+    // The glTF row reads the request's choices: .gltf writes its .bin beside it, indented.
+    void gltfRowHonoursTheRequest()
+    {
+        const CrowdFixture fx = CrowdFixture::make();
+        QTemporaryDir dir;
+        exporting::ExportRequest request;
+        request.path = dir.filePath("shot.gltf").toStdString();
+        request.indentedText = true;
+        request.jointBake = exporting::JointBake::Compact;
+        const exporting::ExportResult result = exporting::formatForPath(request.path)->write(fx.scene, fx.cache, request, {});
+        QVERIFY2(result.ok(), result.error.c_str());
+        QCOMPARE(entries(dir.path()), (QStringList{"shot.bin", "shot.gltf"}));
+        QFile json(dir.filePath("shot.gltf"));
+        QVERIFY(json.open(QIODevice::ReadOnly));
+        const QByteArray text = json.readAll();
+        QVERIFY(text.contains("\n  "));
+        QVERIFY(text.contains("compact"));
+    }
+
+    void cancelledWriterLeavesNothing()
+    {
+        const CrowdFixture fx = CrowdFixture::make();
+        for (const exporting::ExportFormat& f : exporting::exportFormats()) {
+            QTemporaryDir dir;
+            exporting::ExportRequest request;
+            request.path = targetIn(dir, f).toStdString();
+            int calls = 0;
+            const exporting::ExportResult result =
+                f.write(fx.scene, fx.cache, request, [&](float) { return ++calls < 2; });
+            QVERIFY2(result.cancelled, f.key.c_str());
+            QVERIFY2(!result.ok() && result.writtenPaths.empty(), f.key.c_str());
+            QVERIFY2(entries(dir.path()).isEmpty(), qPrintable(f.key.c_str() + (": " + entries(dir.path()).join(' '))));
+        }
+    }
+};
+
+THRONG_REGISTER_TEST(TestExportFormats)
+#include "TestExportFormats.moc"
