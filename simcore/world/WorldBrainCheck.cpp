@@ -92,7 +92,7 @@ bool usedByAType(const Scene& scene, const std::string& brain)
     return false;
 }
 
-// Whether the World compiles `brain`: a type's or a placed agent's brain (World::buildBrains).
+// Whether the World compiles `brain`: a type's or a placed agent's brain (BrainPhase::build).
 bool runByTheWorld(const Scene& scene, const std::string& brain)
 {
     if (usedByAType(scene, brain))

@@ -1,7 +1,7 @@
 #pragma once
 // The World's brain runtime (internal to simcore/world): per agent type its compiled
 // program, evaluator and sensor columns; per agent its slot and chosen action. Filled by
-// World::buildBrains, advanced by World::runBrains; never touched by another module.
+// BrainPhase::build, advanced by BrainPhase::run; never touched by another module.
 #ifndef THRONG_SIMCORE_BUILD
 #error "a detail/ header, private to throng::simcore: include the module's public headers instead"
 #endif
