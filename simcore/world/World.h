@@ -194,11 +194,6 @@ private:
                   int path, AgentId leader);
 
     // Step phases, each for one agent; see WorldStep.cpp.
-    glm::vec3 separateBodies(std::size_t i) const;
-    // The share of a pair's overlap agent i takes (WorldPriority.h; a walker the red caught
-    // on the road takes none against those waiting at the kerb), and the way it parts.
-    float contactShare(std::size_t i, std::size_t j) const;
-    glm::vec3 partingDirection(std::size_t i, std::size_t j, glm::vec3 d, float dist) const;
     // `sink`, when given, hears each behaviour's force (describeAgent); null in the step.
     glm::vec3 steer(std::size_t i, const SteeringAgent& self, std::span<const Neighbour> near,
                     WanderState& wanderOut, DebugSink* sink = nullptr) const;
@@ -257,15 +252,6 @@ private:
     // Steps agents order[begin, end) (the grid's order), boids in batches.
     void stepInGridOrder(const std::uint32_t* order, std::size_t begin, std::size_t end, bool hasStatics,
                          NeighbourGrid::Sweep& sweep);
-    // The collide pass for agent i: m_agents.resolvedPos[i] from m_agents.nextPos[i] and the overlaps
-    // with its neighbours (none looked for when the kernel found it collide-free), and a
-    // walker's next velocity from its move.
-    void resolveCollision(std::size_t i, bool collideFree, bool hasStatics);
-    // Then the contact rounds (WorldCollide.cpp): ground bodies that still overlap are
-    // projected apart until none does, or kContactRounds; m_agents.nextPos is their scratch.
-    void settleContacts(bool hasStatics);
-    bool settles(std::size_t i) const;
-    bool settleRound(std::size_t i, bool hasStatics);
     // The walker kernel (WorldWalk.cpp): the same for a ground type whose behaviours are only
     // arrival, seek, separation, unaligned collision and reciprocal avoidance, containment, wander.
     void buildWalkKernel(bool enabled);
@@ -297,11 +283,11 @@ private:
         float minSpeed, bankGain, bankBlend;
     };
     std::vector<BoidType> m_boidTypes;
-    // Per agent, written by stepBoid: 1 when none of its k nearest can be within contact
-    // distance after the step, provided every agent's next position lies within
-    // m_boidSlackM of where its old velocity would take it (the collide pass checks that).
+    // Per agent, written by stepBoid: kCollideFree (Collide.h) when none of its k nearest
+    // can be within contact distance after the step, provided every agent's next position
+    // lies within m_boidSlackM of where its old velocity would take it (the collide phase
+    // checks that).
     std::vector<std::uint8_t> m_collideFree;
-    static constexpr std::uint8_t kCollideFree = 1;
     float m_boidSlackM = 0.0f;
     std::vector<std::uint8_t> m_walkKernel;  // per type: walkers without a path step through stepWalker
     // Per type, the walker kernel's parameters made usable once (WorldWalk.cpp).

@@ -11,6 +11,7 @@
 // WorldFlockLanes.cpp writes once for one, four or eight boids at once.
 #include "simcore/world/World.h"
 
+#include "simcore/world/Collide.h"
 #include "simcore/world/Sense.h"
 #include "simcore/world/NearestList.h"
 
@@ -109,7 +110,8 @@ void World::stepBoid(std::size_t i, NeighbourGrid::Sweep* sweep)
 
 void World::senseBoid(std::size_t i, NeighbourGrid::Sweep* sweep, BoidSense& out)
 {
-    const float perception = m_types.params[m_agents.info[i].typeIndex].perception, perception2 = perception * perception;
+    const float perception = m_types.params[m_agents.info[i].typeIndex].perception,
+                perception2 = perception * perception;
     // Searching within last step's k nearest (lastNearestBound) visits far fewer cells and
     // candidates; when k are found in it they are exactly the k nearest within the
     // perception radius (everyone nearer lies inside the bound, and the grid offers all of
@@ -207,7 +209,8 @@ void World::groundBoid(std::size_t i, glm::vec3& pos, glm::vec3& vel, glm::vec3 
     if (const float floor = ground + m_agents.radius[i]; pos.y < floor) {
         pos.y = floor;
         vel.y = std::max(vel.y, 0.0f);
-        const float stall = std::min(m_types.steering[m_agents.info[i].typeIndex].vehicle.minSpeed, m_agents.maxSpeed[i]);
+        const float stall =
+            std::min(m_types.steering[m_agents.info[i].typeIndex].vehicle.minSpeed, m_agents.maxSpeed[i]);
         const float now = glm::length(vel);
         if (now < stall)
             vel = now > 1e-6f ? vel * (stall / now) : nextFwd * stall;

@@ -4,6 +4,7 @@
 // is the same for any thread count.
 #include "simcore/world/World.h"
 
+#include "simcore/world/Collide.h"
 #include "simcore/world/Constraints.h"
 #include "simcore/world/Sense.h"
 
@@ -78,36 +79,9 @@ void World::stepOnce()
     }
     m_traffic.drive(m_clock, m_set, m_agents);
 
-    // Collide: bodies still overlapping after steering move apart, each by its share of
-    // the overlap (DetourCrowd's collision handling, done Jacobi-style: every agent reads
-    // the others' proposed positions and moves only itself). Walls stay hard. Boids the
-    // kernel found collide-free skip the search for overlaps (it would find none) once
-    // every agent is seen to lie within the kernel's slack of its old velocity's reach;
-    // should one not, the pass runs again in full, so the result is the same either way.
-    const bool trustKernel = m_boidSlackM > 0.0f && m_collideFree.size() == n;
-    const float slack2 = m_boidSlackM * m_boidSlackM;
-    const std::uint64_t slackBroken = m_team.sumChunks(n, 256, [&](std::size_t begin, std::size_t end, int) {
-        std::uint64_t broken = 0;
-        for (std::size_t i = begin; i < end; ++i) {
-            bool collideFree = false;
-            if (trustKernel) {
-                const glm::vec3 drift = m_agents.nextPos[i] - (m_agents.pos[i] + m_agents.vel[i] * m_clock.dt);
-                broken += glm::dot(drift, drift) > slack2;
-                collideFree = (m_collideFree[i] & kCollideFree) != 0;
-            }
-            resolveCollision(i, collideFree, hasStatics);
-        }
-        return broken;
-    });
-    if (trustKernel && slackBroken > 0)
-        m_team.forEach(n, 256, [&](std::size_t i) { resolveCollision(i, false, hasStatics); });
-    // Contact rounds: on each decision (every step at 24 fps and below), the bodies that
-    // still overlap are parted (WorldCollide.cpp); between decisions the collide pass
-    // keeps what they parted apart.
-    if (m_clock.decide && !m_allFliers)
-        settleContacts(hasStatics);
-    // The resolved positions are the next ones (the pass wrote every agent's).
-    std::swap(m_agents.nextPos, m_agents.resolvedPos);
+    // Collide: bodies still overlapping move apart, and on each decision the contact
+    // rounds part those still pressed together (Collide.h).
+    collide(view(), m_brains, m_agents, m_collideFree, m_boidSlackM, hasStatics);
     m_traffic.afterCollide(view(), m_agents);
 
     // Commit: animate and note arrivals, then swap in the new state (no copying: every path
@@ -286,55 +260,6 @@ void World::stepAgent(std::size_t i, bool hasStatics, NeighbourGrid::Sweep* swee
     m_agents.nextWander[i] = wanderNext;
 }
 
-glm::vec3 World::separateBodies(std::size_t i) const
-{
-    if (m_agents.stopped[i])
-        return glm::vec3(0.0f);
-    const bool flying = m_types.steering[m_agents.info[i].typeIndex].vehicle.flying;
-    glm::vec3 push(0.0f);
-    const std::uint32_t* near = &m_agents.nearIndex[i * kMaxNeighbours];
-    for (std::size_t k = 0; k < m_agents.nearCount[i]; ++k) {
-        const std::uint32_t j = near[k];
-        glm::vec3 d = m_agents.nextPos[i] - m_agents.nextPos[j];
-        if (!flying)
-            d.y = 0.0f;
-        const float contact = m_agents.radius[i] + m_agents.radius[j];
-        const float d2 = glm::dot(d, d);
-        if (d2 >= contact * contact)
-            continue;
-        const float dist = std::sqrt(d2);
-        push += partingDirection(i, j, d, dist) * ((contact - dist) * contactShare(i, j));
-    }
-    // Cap the correction so a squeezed agent is nudged, never thrown: at most half its
-    // body and half what it could walk in the step.
-    const float cap = std::min(0.5f * m_agents.radius[i], 0.5f * m_agents.maxSpeed[i] * m_clock.dt);
-    const float len = glm::length(push);
-    return len > cap ? push * (cap / len) : push;
-}
-
-glm::vec3 World::partingDirection(std::size_t i, std::size_t j, glm::vec3 d, float dist) const
-{
-    if (dist > 1e-6f)
-        return d / dist;
-    // Coincident bodies part along a direction both derive from their ids, in opposite
-    // senses, so the pair never moves together.
-    const AgentId lo = std::min(m_agents.info[i].id, m_agents.info[j].id), hi = std::max(m_agents.info[i].id, m_agents.info[j].id);
-    const float a = float(rngUniform(lo, hi, 0, 77)) * 6.2831853f;
-    return glm::vec3(std::cos(a), 0.0f, std::sin(a)) * (m_agents.info[i].id == lo ? 1.0f : -1.0f);
-}
-
-float World::contactShare(std::size_t i, std::size_t j) const
-{
-    // A standing neighbour, or one of higher priority, does not give way, so this agent
-    // takes the whole overlap; against one of lower priority it takes none.
-    float share = avoidanceShare(collision(i), collision(j), m_agents.stopped[j] != 0);
-    // A walker that the red caught on the road goes first: those waiting at the kerb,
-    // where it must get to, make room for it (set by this step's steer phase).
-    if (!m_traffic.signal.empty() && m_traffic.signal[i].clearing != m_traffic.signal[j].clearing)
-        share = m_traffic.signal[i].clearing ? 0.0f : 1.0f;
-    return share;
-}
-
 void World::commit(std::size_t i, std::uint64_t& wallCrossings)
 {
     const glm::vec2 from = xz(m_agents.pos[i]), to = xz(m_agents.nextPos[i]);
@@ -342,7 +267,8 @@ void World::commit(std::size_t i, std::uint64_t& wallCrossings)
     // Vehicles and heroes go where traffic and keyframes say (a car crosses a crosswalk's kerb).
     // One walking out of a box it started in crosses that box's side on purpose; any other
     // wall it crosses on its way out counts, as the trajectories show it.
-    if (!m_set.walls.segments().empty() && !m_types.steering[m_agents.info[i].typeIndex].vehicle.flying && !m_traffic.isDriven(i))
+    if (!m_set.walls.segments().empty() && !m_types.steering[m_agents.info[i].typeIndex].vehicle.flying &&
+        !m_traffic.isDriven(i))
         m_set.walls.forEachNear((from + to) * 0.5f, 0.5f * glm::length(to - from) + 0.01f, [&](std::uint32_t k) {
         const Segment& s = m_set.walls.segment(k);
         if (segmentsCross(from, to, s.a, s.b) && !(m_agents.escaping[i] && sideOfBoxAround(m_set, s, from)))
@@ -377,8 +303,9 @@ void World::commit(std::size_t i, std::uint64_t& wallCrossings)
         const Path& path = m_set.paths[std::size_t(m_agents.path[i])];
         const SteeringPath spine{m_set.pathPoints[std::size_t(m_agents.path[i])], path.radiusM, path.closed};
         const PathFollowParams& follow = m_types.steering[m_agents.info[i].typeIndex].path;
-        m_agents.pathAlong[i] = advancePathProgress(spine, m_agents.nextPos[i], m_agents.pathAlong[i],
-                                             pathReachM(spine, follow, m_agents.maxSpeed[i], m_clock.dt), follow.reverse);
+        m_agents.pathAlong[i] =
+            advancePathProgress(spine, m_agents.nextPos[i], m_agents.pathAlong[i],
+                                pathReachM(spine, follow, m_agents.maxSpeed[i], m_clock.dt), follow.reverse);
         const float tolerance = std::max(0.1f, 0.25f * path.radiusM);
         const float toEnd = glm::distance(to, path.points.back());
         // Or, within the path's width of its end, held there to a crawl by those round it:
@@ -430,8 +357,8 @@ void World::commit(std::size_t i, std::uint64_t& wallCrossings)
             const std::uint32_t j = near[k];
             const float contact = m_agents.radius[i] + m_agents.radius[j] + gap;
             const glm::vec2 q = xz(m_agents.nextPos[j]);
-            stop = m_agents.stoppedBefore[j] && m_agents.goal[j] == m_agents.goal[i] && glm::distance(to, q) < contact &&
-                   glm::dot(q - to, m_agents.goalSpot[i] - to) > 0.0f;
+            stop = m_agents.stoppedBefore[j] && m_agents.goal[j] == m_agents.goal[i] &&
+                   glm::distance(to, q) < contact && glm::dot(q - to, m_agents.goalSpot[i] - to) > 0.0f;
         }
         if (stop)
             arrive();

@@ -26,7 +26,7 @@ constexpr float kSettleSpeedMps = 0.1f;
 constexpr float kSettleGapM = 0.05f;
 // Overlap tolerance: touching within 1 cm is contact, not overlap.
 constexpr float kOverlapToleranceM = 0.01f;
-// The contact rounds after the collide pass (World::settleContacts): at most this many, and
+// The contact rounds after the collide pass (settleContacts, Collide.cpp): at most this many, and
 // an overlap shallower than kContactSlopM is left (it is contact).
 constexpr int kContactRounds = 4;
 constexpr float kContactSlopM = 0.001f;
