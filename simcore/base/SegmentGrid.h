@@ -60,8 +60,8 @@ public:
                                z1 == m_rows - 1 && m_clippedHi.y ? INFINITY : m_min.y + float(z1 + 1) * m_cell);
             for (std::uint32_t k = 0; k < m_segments.size(); ++k) {
                 const Segment& s = m_segments[k];
-                if (std::max(s.a.x, s.b.x) >= lo.x && std::min(s.a.x, s.b.x) <= hi.x && std::max(s.a.y, s.b.y) >= lo.y &&
-                    std::min(s.a.y, s.b.y) <= hi.y)
+                if (std::max(s.a.x, s.b.x) >= lo.x && std::min(s.a.x, s.b.x) <= hi.x &&
+                    std::max(s.a.y, s.b.y) >= lo.y && std::min(s.a.y, s.b.y) <= hi.y)
                     f(k);
             }
             return;

@@ -186,7 +186,8 @@ private:
         const BrainLink& l = g.links[li];
         const auto from = index.find(l.fromNode), to = index.find(l.toNode);
         if (from == index.end() || to == index.end()) {
-            linkError(top, li, origin, where, "no node with id " + std::to_string(from == index.end() ? l.fromNode : l.toNode));
+            linkError(top, li, origin, where,
+                      "no node with id " + std::to_string(from == index.end() ? l.fromNode : l.toNode));
             return;
         }
         const FlatNode& fn = m_out[std::size_t(from->second)];
@@ -199,7 +200,9 @@ private:
         if (auto m = macros.find(from->second); m != macros.end()) {
             auto o = m->second.outs.find(l.fromPort);
             if (o == m->second.outs.end()) {
-                linkError(top, li, origin, where, "macro node " + std::to_string(l.fromNode) + " has no output port " + std::to_string(l.fromPort));
+                linkError(top, li, origin, where,
+                          "macro node " + std::to_string(l.fromNode) + " has no output port " +
+                              std::to_string(l.fromPort));
                 return;
             }
             src = {o->second, 0};
@@ -214,7 +217,8 @@ private:
         if (auto m = macros.find(to->second); m != macros.end()) {
             auto in = m->second.ins.find(l.toPort);
             if (in == m->second.ins.end()) {
-                linkError(top, li, origin, where, "macro node " + std::to_string(l.toNode) + " has no input port " + std::to_string(l.toPort));
+                linkError(top, li, origin, where,
+                          "macro node " + std::to_string(l.toNode) + " has no input port " + std::to_string(l.toPort));
                 return;
             }
             for (int k : in->second)
@@ -246,8 +250,9 @@ private:
         if (n.inputs.size() <= port)
             n.inputs.resize(port + 1);
         if (n.inputs[port].node >= 0) {
-            linkError(top, li, origin, where, "input " + std::to_string(port) + " of node " + std::to_string(n.node->id) +
-                                                  " is connected twice");
+            linkError(top, li, origin, where,
+                      "input " + std::to_string(port) + " of node " + std::to_string(n.node->id) +
+                          " is connected twice");
             return;
         }
         n.inputs[port] = src;
@@ -293,7 +298,8 @@ std::vector<std::string> words(const std::string& text)
     return out;
 }
 
-std::vector<FlatNode> flattenBrain(const BrainGraph& top, const std::vector<BrainGraph>& library, BrainErrorList& errors)
+std::vector<FlatNode> flattenBrain(const BrainGraph& top, const std::vector<BrainGraph>& library,
+                                   BrainErrorList& errors)
 {
     std::vector<FlatNode> nodes;
     nodes.reserve(top.nodes.size());

@@ -146,7 +146,8 @@ std::shared_ptr<BrainProgram> emitBrain(std::vector<FlatNode>& nodes, const std:
     std::vector<std::string> sets;
     std::vector<std::vector<int>> kinds(nodes.size());
     const auto setName = [&](int k) {
-        return sets[std::size_t(k)] == "neighbours" ? std::string("neighbour") : "source heard on '" + sets[std::size_t(k)].substr(6) + "'";
+        return sets[std::size_t(k)] == "neighbours" ? std::string("neighbour")
+                                                    : "source heard on '" + sets[std::size_t(k)].substr(6) + "'";
     };
     for (int i : sorted) {
         FlatNode& n = nodes[std::size_t(i)];
@@ -159,8 +160,8 @@ std::shared_ptr<BrainProgram> emitBrain(std::vector<FlatNode>& nodes, const std:
             const int srcSet = s.port < from.size() ? from[s.port] : -1;
             const std::string id = std::to_string(nodes[std::size_t(s.node)].node->id);
             if (srcSet >= 0 && set >= 0 && srcSet != set)
-                errors.at(n, "input " + std::to_string(p) + " gives one value per " + setName(srcSet) +
-                                 " (node " + id + ") but another input one per " + setName(set) + "; filter one of them first");
+                errors.at(n, "input " + std::to_string(p) + " gives one value per " + setName(srcSet) + " (node " + id +
+                                 ") but another input one per " + setName(set) + "; filter one of them first");
             if (srcSet >= 0 && set < 0)
                 set = srcSet;
             if (n.pass)
@@ -214,7 +215,8 @@ std::shared_ptr<BrainProgram> emitBrain(std::vector<FlatNode>& nodes, const std:
             errors.at(n, "duplicate output channel '" + key + "': node " + std::to_string(it->second->origin) +
                              " already drives it");
     }
-    if (errors.errors().size() != before || std::any_of(nodes.begin(), nodes.end(), [](const FlatNode& n) { return n.badParams; }))
+    if (errors.errors().size() != before ||
+        std::any_of(nodes.begin(), nodes.end(), [](const FlatNode& n) { return n.badParams; }))
         return nullptr;
     if (sets.size() > 255) {
         errors.node(0, "more than 255 sets of per-item values");

@@ -64,7 +64,8 @@ struct EmitPass {
         in.node = n.origin;
         in.argBegin = std::uint32_t(p.operands.size());
         // A memory node reads its input only after the step (MemoryWrite), not here.
-        const std::size_t args = op == BrainOp::MemoryRead ? 0 : std::max(n.inputs.size(), n.spec->variadic ? 0u : n.spec->inputs.size());
+        const std::size_t args =
+            op == BrainOp::MemoryRead ? 0 : std::max(n.inputs.size(), n.spec->variadic ? 0u : n.spec->inputs.size());
         bool allConstant = true;
         for (std::size_t a = 0; a < args; ++a) {
             const std::uint32_t s = operand(n, a);
@@ -76,7 +77,9 @@ struct EmitPass {
         in.paramCount = std::uint32_t(params.size());
         p.params.insert(p.params.end(), params.begin(), params.end());
         in.state = stateColumn;
-        const int set = op == BrainOp::Filter ? n.filterSet : kinds[std::size_t(i)].empty() ? -1 : kinds[std::size_t(i)][0];
+        const int set = op == BrainOp::Filter           ? n.filterSet
+                        : kinds[std::size_t(i)].empty() ? -1
+                                                        : kinds[std::size_t(i)][0];
         in.perNeighbour = set >= 0 && op != BrainOp::Filter;
         in.itemSet = std::uint8_t(std::max(set, 0));
         in.outCount = std::uint32_t(outputs);
@@ -134,7 +137,8 @@ void emitNode(EmitPass& e, int i)
         if (sensor == "time")
             return e.emit(i, BrainOp::Time, {});
         const SensorSpec* spec = findSensorSpec(sensor);
-        BrainSensorUse use{sensor, spec->argument.empty() ? std::string() : textParam(n, spec->argument), spec->perNeighbour, {}};
+        BrainSensorUse use{
+            sensor, spec->argument.empty() ? std::string() : textParam(n, spec->argument), spec->perNeighbour, {}};
         const int set = e.kinds[std::size_t(i)][0];
         if (set >= 0)
             use.itemSet = e.p.itemSets[std::size_t(set)];
@@ -198,7 +202,8 @@ void emitNode(EmitPass& e, int i)
         return e.emit(i, BrainOp::Divide, {num("fallback")});
     if (t == "math.remap") {
         const std::vector<float> from = nums("from"), to = nums("to");
-        return e.emit(i, BrainOp::Remap, {from[0], from[1], to[0], to[1], textParam(n, "clamp") == "yes" ? 1.0f : 0.0f});
+        return e.emit(i, BrainOp::Remap,
+                      {from[0], from[1], to[0], to[1], textParam(n, "clamp") == "yes" ? 1.0f : 0.0f});
     }
     const auto choiceIndex = [&](const char* key) {
         const std::string v = textParam(n, key);
@@ -224,7 +229,9 @@ void emitNode(EmitPass& e, int i)
     if (t == "output") {
         e.emit(i, BrainOp::Scale, {num("scale")});
         const std::string channel = textParam(n, "channel");
-        const std::string name = channel == "weight" ? textParam(n, "behaviour") : channel == "tag" ? textParam(n, "tag") : "";
+        const std::string name = channel == "weight" ? textParam(n, "behaviour")
+                                 : channel == "tag"  ? textParam(n, "tag")
+                                                     : "";
         e.p.outputs.push_back({channel, name, slots[0]});
         return;
     }

@@ -187,7 +187,8 @@ std::vector<std::pair<std::string, float>> BrainEvaluator::pickedProbes() const
         // Sensor columns belong to the caller; a probe on a sensor reads the kept copy.
         float v = 0.0f;
         if (!sensor)
-            v = column(probe.slot)[std::size_t(m_picked) * (m_program->valueSlots[probe.slot].perNeighbour ? kBrainNeighbours : 1)];
+            v = column(probe.slot)[std::size_t(m_picked) *
+                                   (m_program->valueSlots[probe.slot].perNeighbour ? kBrainNeighbours : 1)];
         else
             for (const BrainNodeSlot& ns : m_program->nodeSlots)
                 if (ns.slot == probe.slot)

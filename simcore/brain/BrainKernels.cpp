@@ -270,7 +270,8 @@ void runInstr(const BrainProgram& prog, const BrainInstr& I, const BrainFrame& f
         // min(rising edge, falling edge) clamped to [0, 1], branch-free so it vectorises;
         // a vertical edge (a == b or c == d) is a step.
         const float a = c.param(0), b1 = c.param(1);
-        const float c1 = I.op == BrainOp::Triangle ? c.param(1) : c.param(2), d = c.param(I.op == BrainOp::Triangle ? 2 : 3);
+        const float c1 = I.op == BrainOp::Triangle ? c.param(1) : c.param(2),
+                    d = c.param(I.op == BrainOp::Triangle ? 2 : 3);
         const bool stepUp = !(b1 > a), stepDown = !(d > c1);
         const float up = stepUp ? 0.0f : 1.0f / (b1 - a), down = stepDown ? 0.0f : 1.0f / (d - c1);
         unary(c, c.arg(0), c.out(), [=](float x) {
@@ -327,9 +328,12 @@ void runInstr(const BrainProgram& prog, const BrainInstr& I, const BrainFrame& f
         break;
     }
     case BrainOp::Clamp:
-        ternary(c, c.arg(0), c.arg(1), c.arg(2), [](float x, float lo, float hi) { return std::min(std::max(x, lo), hi); });
+        ternary(c, c.arg(0), c.arg(1), c.arg(2),
+                [](float x, float lo, float hi) { return std::min(std::max(x, lo), hi); });
         break;
-    case BrainOp::Lerp: ternary(c, c.arg(0), c.arg(1), c.arg(2), [](float a, float x, float t) { return a + (x - a) * t; }); break;
+    case BrainOp::Lerp:
+        ternary(c, c.arg(0), c.arg(1), c.arg(2), [](float a, float x, float t) { return a + (x - a) * t; });
+        break;
     case BrainOp::Remap: {
         const float f0 = c.param(0), inv = 1.0f / (c.param(1) - c.param(0)), t0 = c.param(2), t1 = c.param(3);
         const bool clamp = c.param(4) != 0.0f;

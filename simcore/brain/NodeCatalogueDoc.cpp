@@ -35,7 +35,8 @@ std::string paramType(const ParamSpec& p)
         const std::string lo = number(p.min), hi = number(p.max);
         if (lo.empty() && hi.empty())
             return "number";
-        return "number in [" + (lo.empty() ? std::string("-inf") : lo) + ", " + (hi.empty() ? std::string("inf") : hi) + "]";
+        return "number in [" + (lo.empty() ? std::string("-inf") : lo) + ", " + (hi.empty() ? std::string("inf") : hi) +
+               "]";
     }
     case ParamType::Numbers: return p.count ? "list of " + std::to_string(p.count) + " numbers" : "list of numbers";
     case ParamType::Text: return "text";
@@ -60,7 +61,8 @@ std::string paramDefault(const ParamSpec& p)
     }
 }
 
-void writePorts(std::ostringstream& o, const char* title, const NodeSpec& n, const std::vector<PortSpec>& ports, bool inputs)
+void writePorts(std::ostringstream& o, const char* title, const NodeSpec& n, const std::vector<PortSpec>& ports,
+                bool inputs)
 {
     if (ports.empty())
         return;
@@ -111,8 +113,12 @@ std::string brainCatalogueMarkdown()
     o << "### Sensors\n\nThe `sensor` parameter of an `input` node names one of these.\n\n";
     o << "| Sensor | Kind | Unit | Parameter | Meaning |\n|---|---|---|---|---|\n";
     for (const SensorSpec& s : sensorCatalogue())
-        o << "| `" << s.name << "` | " << (s.itemSet == "sound" ? "per-source" : s.perNeighbour ? "per-neighbour" : "scalar") << " | " << s.unit << " | "
-          << (s.argument.empty() ? "" : "`" + s.argument + "`") << " | " << s.description << " |\n";
+        o << "| `" << s.name << "` | "
+          << (s.itemSet == "sound" ? "per-source"
+              : s.perNeighbour     ? "per-neighbour"
+                                   : "scalar")
+          << " | " << s.unit << " | " << (s.argument.empty() ? "" : "`" + s.argument + "`") << " | " << s.description
+          << " |\n";
     return o.str();
 }
 

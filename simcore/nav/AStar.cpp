@@ -193,7 +193,8 @@ NavPlan AStar::plan(const NavGrid& grid, NavCell start, NavCell goal)
                 continue;
             const int i = grid.index(nb);
             const double g = top.g + (k >= 4 ? kSqrt2 : 1.0);
-            if (m_closed[std::size_t(i)] == m_search || (m_stamp[std::size_t(i)] == m_search && g >= m_g[std::size_t(i)]))
+            if (m_closed[std::size_t(i)] == m_search ||
+                (m_stamp[std::size_t(i)] == m_search && g >= m_g[std::size_t(i)]))
                 continue;
             m_stamp[std::size_t(i)] = m_search;
             m_g[std::size_t(i)] = g;
@@ -221,13 +222,16 @@ NavPlan AStar::plan(const NavGrid& grid, NavCell start, NavCell goal)
     return result;
 }
 
-NavPlan planAround(AStar& astar, const NavGrid& grid, NavCell start, NavCell goal, glm::vec2 avoidAt, float avoidRadiusM)
+NavPlan planAround(AStar& astar, const NavGrid& grid, NavCell start, NavCell goal, glm::vec2 avoidAt,
+                   float avoidRadiusM)
 {
     NavGrid detour = grid;
-    const NavCell c0 = grid.cellOf(avoidAt - glm::vec2(avoidRadiusM)), c1 = grid.cellOf(avoidAt + glm::vec2(avoidRadiusM));
+    const NavCell c0 = grid.cellOf(avoidAt - glm::vec2(avoidRadiusM)),
+                  c1 = grid.cellOf(avoidAt + glm::vec2(avoidRadiusM));
     for (int z = std::max(c0.z, 0); z <= std::min(c1.z, grid.rows() - 1); ++z)
         for (int x = std::max(c0.x, 0); x <= std::min(c1.x, grid.cols() - 1); ++x)
-            if (!(NavCell{x, z} == start) && !(NavCell{x, z} == goal) && glm::distance(grid.centre({x, z}), avoidAt) <= avoidRadiusM)
+            if (!(NavCell{x, z} == start) && !(NavCell{x, z} == goal) &&
+                glm::distance(grid.centre({x, z}), avoidAt) <= avoidRadiusM)
                 detour.setWalkable({x, z}, false);
     NavPlan plan = astar.plan(detour, start, goal);
     plan.generation = grid.generation();

@@ -73,6 +73,7 @@ private:
 // obstacle it keeps pushing against) count as blocked, start and goal excepted. The plan
 // carries the grid's own generation; it is not for sharing through a PlanCache.
 // Unreachable means there is no way round: side-step or wait instead.
-NavPlan planAround(AStar& astar, const NavGrid& grid, NavCell start, NavCell goal, glm::vec2 avoidAt, float avoidRadiusM);
+NavPlan planAround(AStar& astar, const NavGrid& grid, NavCell start, NavCell goal, glm::vec2 avoidAt,
+                   float avoidRadiusM);
 
 }  // namespace throng::sim

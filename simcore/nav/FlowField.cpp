@@ -90,7 +90,8 @@ void FlowField::build(const NavGrid& grid, std::span<const FlowGoal> goals)
 {
     std::vector<NavCell> cells;
     for (const FlowGoal& g : goals) {
-        const NavCell c0 = grid.cellOf(g.centre - glm::vec2(g.radiusM)), c1 = grid.cellOf(g.centre + glm::vec2(g.radiusM));
+        const NavCell c0 = grid.cellOf(g.centre - glm::vec2(g.radiusM)),
+                      c1 = grid.cellOf(g.centre + glm::vec2(g.radiusM));
         bool any = false;
         for (int z = std::max(c0.z, 0); z <= std::min(c1.z, grid.rows() - 1); ++z)
             for (int x = std::max(c0.x, 0); x <= std::min(c1.x, grid.cols() - 1); ++x)
@@ -148,7 +149,9 @@ void FlowField::march(std::span<const int> seeds)
     };
     // A diagonal neighbour's time counts only where both cells beside the step are walkable.
     const auto diagonal = [&](int p, int dx, int dz) {
-        return walk[std::size_t(p + dx)] != 0 && walk[std::size_t(p + dz * w)] != 0 ? frozenT[std::size_t(p + dx + dz * w)] : inf;
+        return walk[std::size_t(p + dx)] != 0 && walk[std::size_t(p + dz * w)] != 0
+                   ? frozenT[std::size_t(p + dx + dz * w)]
+                   : inf;
     };
     constexpr int kDx[8] = {1, -1, 0, 0, 1, -1, 1, -1}, kDz[8] = {0, 0, 1, -1, 1, 1, -1, -1};
     m_settled = 0;
@@ -218,7 +221,8 @@ void FlowField::buildDirections()
             for (int dz = -1; dz <= 1; ++dz)
                 for (int dx = -1; dx <= 1; ++dx) {
                     const NavCell nb{c.x + dx, c.z + dz};
-                    const bool legal = (dx == 0 || dz == 0) || (m_grid.walkable({nb.x, c.z}) && m_grid.walkable({c.x, nb.z}));
+                    const bool legal =
+                        (dx == 0 || dz == 0) || (m_grid.walkable({nb.x, c.z}) && m_grid.walkable({c.x, nb.z}));
                     if ((dx != 0 || dz != 0) && legal && reachable(nb) && distanceM(nb) < best) {
                         best = distanceM(nb);
                         fall = glm::normalize(glm::vec2(float(dx), float(dz)));

@@ -1,9 +1,9 @@
 #pragma once
 // A flow field over a NavGrid: the travel distance from every walkable cell to the nearest
 // of one or several goals (fast marching, Sethian 1996: a first-order upwind Eikonal solve
-// with axis and diagonal stencils, Hassouna & Farag 2007), and a unit direction per cell down that distance that never leads
-// into a blocked cell. Thousands of agents read it at the cost of one lookup; it never
-// moves agents and never changes after build.
+// with axis and diagonal stencils, Hassouna & Farag 2007), and a unit direction per cell down that distance that never
+// leads into a blocked cell. Thousands of agents read it at the cost of one lookup; it never moves agents and never
+// changes after build.
 
 #include "simcore/nav/NavGrid.h"
 

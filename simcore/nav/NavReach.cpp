@@ -37,7 +37,8 @@ void NavReach::build(const NavShapes& shapes, glm::vec2 boundsMin, glm::vec2 bou
                     const NavCell d{c.x + dx, c.z + dz};
                     // Diagonal steps only between two open sides, as a body passes a corner.
                     if ((dx == 0 && dz == 0) || !m_grid.walkable(d) ||
-                        (dx != 0 && dz != 0 && (!m_grid.walkable({c.x + dx, c.z}) || !m_grid.walkable({c.x, c.z + dz}))))
+                        (dx != 0 && dz != 0 &&
+                         (!m_grid.walkable({c.x + dx, c.z}) || !m_grid.walkable({c.x, c.z + dz}))))
                         continue;
                     std::int32_t& r = m_region[std::size_t(m_grid.index(d))];
                     if (r < 0) {

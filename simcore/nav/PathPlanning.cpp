@@ -32,7 +32,8 @@ PlannedPath planOnGrid(const NavGrid& grid, const Path& path)
     out.points.push_back(path.points.front());
     for (std::size_t k = 0; k + 1 < path.points.size(); ++k) {
         const glm::vec2 from = path.points[k], to = path.points[k + 1];
-        const NavPlan plan = astar.plan(grid, grid.nearestWalkable(grid.cellOf(from)), grid.nearestWalkable(grid.cellOf(to)));
+        const NavPlan plan =
+            astar.plan(grid, grid.nearestWalkable(grid.cellOf(from)), grid.nearestWalkable(grid.cellOf(to)));
         if (!plan.found()) {
             out.error += (out.error.empty() ? "" : "; ") + std::string("no way from waypoint ") + std::to_string(k) +
                          " to " + std::to_string(k + 1) + " (" + toString(plan.status) + ")";
@@ -52,7 +53,8 @@ PlannedPath planOnGrid(const NavGrid& grid, const Path& path)
 NavGrid gridFor(const Scene& scene, const NavShapes& shapes, float clearanceM)
 {
     NavGrid grid;
-    grid.build(shapes, scene.settings.boundsMin, scene.settings.boundsMax, NavGridParams{scene.settings.navCellM, clearanceM});
+    grid.build(shapes, scene.settings.boundsMin, scene.settings.boundsMax,
+               NavGridParams{scene.settings.navCellM, clearanceM});
     return grid;
 }
 

@@ -12,7 +12,8 @@ std::shared_ptr<const NavPlan> PlanCache::plan(const NavGrid& grid, NavCell star
     }
     // Cells outside the grid have no index of their own; they all plan to StartBlocked or
     // GoalBlocked, so they share the key -1.
-    const auto key = std::make_pair(grid.inside(start) ? grid.index(start) : -1, grid.inside(goal) ? grid.index(goal) : -1);
+    const auto key =
+        std::make_pair(grid.inside(start) ? grid.index(start) : -1, grid.inside(goal) ? grid.index(goal) : -1);
     if (const auto it = m_plans.find(key); it != m_plans.end()) {
         ++m_hits;
         return it->second;
@@ -28,7 +29,8 @@ void PlanCache::clear()
     m_plans.clear();
 }
 
-std::shared_ptr<const NavPlan> planBetween(PlanCache& cache, const NavGrid& grid, glm::vec2 from, glm::vec2 to, AStar& astar)
+std::shared_ptr<const NavPlan> planBetween(PlanCache& cache, const NavGrid& grid, glm::vec2 from, glm::vec2 to,
+                                           AStar& astar)
 {
     const NavCell start = grid.nearestWalkable(grid.cellOf(from)), goal = grid.nearestWalkable(grid.cellOf(to));
     if (!grid.walkable(start) || !grid.walkable(goal))

@@ -36,6 +36,7 @@ private:
 // cell, or to the nearest walkable cell when that is blocked (an agent brushing a wall
 // stands in its inflated margin), then the cache answers. Null when the grid has no
 // walkable cell at all.
-std::shared_ptr<const NavPlan> planBetween(PlanCache& cache, const NavGrid& grid, glm::vec2 from, glm::vec2 to, AStar& astar);
+std::shared_ptr<const NavPlan> planBetween(PlanCache& cache, const NavGrid& grid, glm::vec2 from, glm::vec2 to,
+                                           AStar& astar);
 
 }  // namespace throng::sim

@@ -31,8 +31,10 @@ bool SketchField::solve(std::span<const VectorSample> strokes, std::span<const B
 bool SketchField::build(const Scene& scene, const NavGrid& grid, const SketchParams& params)
 {
     const std::vector<VectorSample> strokes = strokeSamples(scene.flowStrokes, params.sampleSpacingM);
-    const std::vector<BoundarySample> boundary = boundarySamples(navShapes(scene), params.boundarySpacingM, strokes, params.wallReachM);
-    if (!solve(strokes, boundary, params, grid.origin(), grid.origin() + grid.cellM() * glm::vec2(float(grid.cols()), float(grid.rows()))))
+    const std::vector<BoundarySample> boundary =
+        boundarySamples(navShapes(scene), params.boundarySpacingM, strokes, params.wallReachM);
+    if (!solve(strokes, boundary, params, grid.origin(),
+               grid.origin() + grid.cellM() * glm::vec2(float(grid.cols()), float(grid.rows()))))
         return false;
     bake(grid, params.threads);
     return true;

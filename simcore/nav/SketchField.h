@@ -34,8 +34,9 @@ public:
     // Solves for the RBF weights. False (see error()) when there is no stroke sample or the
     // system cannot be factorised.
     // [domainMin, domainMax]: where the field will be evaluated (the grid's extent), when known.
-    bool solve(std::span<const VectorSample> strokes, std::span<const BoundarySample> boundary, const SketchParams& params,
-               glm::vec2 domainMin = glm::vec2(INFINITY), glm::vec2 domainMax = glm::vec2(-INFINITY));
+    bool solve(std::span<const VectorSample> strokes, std::span<const BoundarySample> boundary,
+               const SketchParams& params, glm::vec2 domainMin = glm::vec2(INFINITY),
+               glm::vec2 domainMax = glm::vec2(-INFINITY));
     // strokeSamples + boundarySamples of the scene's strokes, walls and obstacles, then solve and bake.
     bool build(const Scene& scene, const NavGrid& grid, const SketchParams& params = {});
 

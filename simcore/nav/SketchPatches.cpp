@@ -81,7 +81,8 @@ bool SketchPatches::solve(std::span<const VectorSample> strokes, std::span<const
     std::vector<std::string> errors(m_patches.size());
     // Each patch is its own solve, written only to its own entry: the same for any threads.
     const ThreadTeam team(threads);
-    team.forEach(m_patches.size(), 1, [&](std::size_t k) { solvePatch(m_patches[k], std::max(ridge, 0.0), errors[k]); });
+    team.forEach(m_patches.size(), 1,
+                 [&](std::size_t k) { solvePatch(m_patches[k], std::max(ridge, 0.0), errors[k]); });
     for (const std::string& e : errors)
         if (!e.empty()) {
             m_error = e;
@@ -165,7 +166,8 @@ void SketchPatches::addPatch(glm::dvec2 centre, double radius, const std::vector
     p.centre = centre;
     p.radius = radius;
     for (std::uint32_t i : chosen)
-        (i < m_strokes.size() ? p.strokes : p.boundary).push_back(i < m_strokes.size() ? i : i - std::uint32_t(m_strokes.size()));
+        (i < m_strokes.size() ? p.strokes : p.boundary)
+            .push_back(i < m_strokes.size() ? i : i - std::uint32_t(m_strokes.size()));
     m_patches.push_back(std::move(p));
 }
 
@@ -177,7 +179,9 @@ bool SketchPatches::solvePatch(Patch& patch, double ridge, std::string& error) c
     // definite, factorised by Cholesky. Order: x weights, z weights, boundary weights.
     const Eigen::Index s = Eigen::Index(patch.strokes.size()), b = Eigen::Index(patch.boundary.size()), n = 2 * s + b;
     const auto stroke = [&](Eigen::Index i) -> const VectorSample& { return m_strokes[patch.strokes[std::size_t(i)]]; };
-    const auto wall = [&](Eigen::Index i) -> const BoundarySample& { return m_boundary[patch.boundary[std::size_t(i)]]; };
+    const auto wall = [&](Eigen::Index i) -> const BoundarySample& {
+        return m_boundary[patch.boundary[std::size_t(i)]];
+    };
     Eigen::MatrixXd a = Eigen::MatrixXd::Zero(n, n);  // the x-z coupling blocks stay zero
     Eigen::VectorXd rhs(n);
     for (Eigen::Index i = 0; i < s; ++i) {

@@ -35,7 +35,8 @@ BrainGraph benchPedestrianBrain()
 {
     Builder b;
     const NodeId gd = b.sensor("goal_distance"), gb = b.sensor("goal_bearing"), light = b.sensor("light_state");
-    const NodeId line = b.sensor("stop_line_distance"), nearest = b.sensor("nearest_distance"), speed = b.sensor("speed");
+    const NodeId line = b.sensor("stop_line_distance"), nearest = b.sensor("nearest_distance"),
+                 speed = b.sensor("speed");
     const NodeId nd = b.sensor("neighbour_distance"), nb = b.sensor("neighbour_bearing");
     const NodeId maxSpeed = b.sensor("attribute", {t("name", "max_speed")});
     const NodeId far = b.add("fuzz.trapezoid", {pts({0.2f, 1.5f, 1e6f, 1e6f})}, {gd});
@@ -77,11 +78,13 @@ BrainGraph benchPedestrianBrain()
 BrainGraph benchListenerBrain()
 {
     Builder b;
-    const NodeId bearing = b.add("filter", {t("mode", "nearest")}, {b.sensor("sound_source_bearing", {t("channel", "chat")})});
+    const NodeId bearing =
+        b.add("filter", {t("mode", "nearest")}, {b.sensor("sound_source_bearing", {t("channel", "chat")})});
     b.add("output", {t("channel", "turn")}, {bearing});
     const NodeId heard = b.add("filter", {t("mode", "count"), n("threshold", 0.2f)},
                                {b.sensor("sound_source_strength", {t("channel", "chat")})});
-    b.add("output", {t("channel", "speed")}, {b.add("math.remap", {{"from", {}, {0, 8}}, {"to", {}, {1.4f, 0.4f}}}, {heard})});
+    b.add("output", {t("channel", "speed")},
+          {b.add("math.remap", {{"from", {}, {0, 8}}, {"to", {}, {1.4f, 0.4f}}}, {heard})});
     b.g.name = "listen";
     return b.g;
 }

@@ -65,9 +65,9 @@ glm::vec3 align(const SteeringAgent& agent, std::span<const Neighbour> neighbour
         headings += normalizeOr(n.forward, glm::vec3(0.0f));
         velocities += finiteOrZero(n.velocity);
     }
-    const behave::Alignment<float> a =
-        behave::alignmentVelocity(headings, velocities, float(neighbours.size()),
-                                  glm::length(finiteOrZero(agent.velocity)), nonNegative(agent.maxSpeed), params.matchSpeed);
+    const behave::Alignment<float> a = behave::alignmentVelocity(headings, velocities, float(neighbours.size()),
+                                                                 glm::length(finiteOrZero(agent.velocity)),
+                                                                 nonNegative(agent.maxSpeed), params.matchSpeed);
     return a.aligned ? steerTowards(agent, a.desired, params.responseTimeS) : glm::vec3(0.0f);
 }
 

@@ -114,7 +114,8 @@ glm::vec3 avoidObstacles(const SteeringAgent& agent, std::span<const CircleObsta
         return glm::vec3(0.0f);
     const float sweep = r + nonNegative(params.marginM);
     const float whisker = finiteOr(params.whiskerAngleRad, 0.0f);
-    const Feeler feelers[3] = {{h, length}, {rotateRight(h, whisker), 0.5f * length}, {rotateRight(h, -whisker), 0.5f * length}};
+    const Feeler feelers[3] = {
+        {h, length}, {rotateRight(h, whisker), 0.5f * length}, {rotateRight(h, -whisker), 0.5f * length}};
 
     Threat threat;
     for (const Feeler& f : feelers) {

@@ -201,7 +201,8 @@ glm::vec3 followPath(const SteeringAgent& agent, const SteeringPath& path, const
     const float reach = remembered ? pathReachM(path, params, agent.maxSpeed, 0.0f) : 0.0f;
     auto window = [&](float extraM) {
         const float r = reach + extraM;
-        return params.reverse ? std::pair{progressM - r, progressM + kBackM} : std::pair{progressM - kBackM, progressM + r};
+        return params.reverse ? std::pair{progressM - r, progressM + kBackM}
+                              : std::pair{progressM - kBackM, progressM + r};
     };
     // The nearest point of the whole spine, as Reynolds has it, unless it lies on a stretch
     // already walked: then the nearest point from the progress made on.

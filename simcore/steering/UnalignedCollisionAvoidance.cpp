@@ -56,7 +56,8 @@ glm::vec3 avoidUnalignedCollisions(const SteeringAgent& agent, std::span<const N
     const bool headOn = glm::dot(h, threat.forward) < params.headOnCosine;
     const float brake = std::clamp(finiteOr(params.brakeFraction, 0.0f), 0.0f, 1.0f);
     return behave::unalignedAvoidance(h, right, threat.offsetAtApproach, threat.timeS, horizon, headOn, brake,
-                                      std::sqrt(1.0f - brake * brake), v != glm::vec3(0.0f), nonNegative(agent.maxForce));
+                                      std::sqrt(1.0f - brake * brake), v != glm::vec3(0.0f),
+                                      nonNegative(agent.maxForce));
 }
 
 }  // namespace throng::sim

@@ -16,7 +16,8 @@ WanderResult wander(const SteeringAgent& agent, const WanderState& previous, glm
 {
     const float radius = nonNegative(params.radiusM);
     glm::vec3 prev = normalizeOr(previous.target, glm::vec3(0.0f, 0.0f, 1.0f));
-    glm::vec3 jitter = glm::clamp(finiteOrZero(random), glm::vec3(-1.0f), glm::vec3(1.0f)) * nonNegative(params.jitterM);
+    glm::vec3 jitter =
+        glm::clamp(finiteOrZero(random), glm::vec3(-1.0f), glm::vec3(1.0f)) * nonNegative(params.jitterM);
     if (!params.flying) {
         prev = normalizeOr(glm::vec3(prev.x, 0.0f, prev.z), glm::vec3(0.0f, 0.0f, 1.0f));
         jitter.y = 0.0f;
@@ -36,7 +37,8 @@ WanderResult wander(const SteeringAgent& agent, const WanderState& previous, glm
         up = kWorldUp;
     }
     const glm::vec3 right = normalizeOr(glm::cross(forward, up), rightOfForward(forward));
-    const glm::vec3 aim = behave::wanderAim(forward, right, up, result.state.target, radius, nonNegative(params.distanceM));
+    const glm::vec3 aim =
+        behave::wanderAim(forward, right, up, result.state.target, radius, nonNegative(params.distanceM));
     result.force = steerTowards(agent, behave::seekVelocity(aim, nonNegative(agent.maxSpeed)), params.responseTimeS);
     return result;
 }

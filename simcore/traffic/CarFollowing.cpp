@@ -58,7 +58,8 @@ float idmAcceleration(const FollowingParams& p, float speed, float gapM, float l
         return -p.maxDecel;
     // Desired dynamical gap s* = s0 + max(0, vT + v dv / (2 sqrt(ab))).
     const float dv = c.v - c.vl;
-    const float sStar = p.minGapM + std::max(0.0f, c.v * p.timeHeadwayS + c.v * dv / (2.0f * std::sqrt(p.maxAccel * p.comfortDecel)));
+    const float sStar =
+        p.minGapM + std::max(0.0f, c.v * p.timeHeadwayS + c.v * dv / (2.0f * std::sqrt(p.maxAccel * p.comfortDecel)));
     const float ratio = sStar / std::max(c.gap, 1e-3f);
     return bound(p, free - p.maxAccel * ratio * ratio);
 }
@@ -88,7 +89,8 @@ float fuzzyAcceleration(const FollowingParams& p, float speed, float gapM, float
     const float safeGap = std::max(p.minGapM + c.v * p.timeHeadwayS, 0.1f);
     const float r = c.free ? 10.0f : c.gap / safeGap;
     const float closing = c.free ? 0.0f : c.v - c.vl;
-    const float need = closing > 0.0f ? closing * closing / (2.0f * std::max(c.gap - p.minGapM, 0.01f)) / p.comfortDecel : 0.0f;
+    const float need =
+        closing > 0.0f ? closing * closing / (2.0f * std::max(c.gap - p.minGapM, 0.01f)) / p.comfortDecel : 0.0f;
 
     const float gapClose = 1.0f - ramp(r, 0.5f, 1.0f);
     const float gapOk = tri(r, 0.5f, 1.0f, 2.0f);
@@ -105,9 +107,11 @@ float fuzzyAcceleration(const FollowingParams& p, float speed, float gapM, float
     // weighted average cannot dilute full braking when the kinematics demand it.
     const float hardBrake = std::max(ramp(need, 1.0f, 1.5f), std::min(gapClose, ramp(closing, 0.0f, 1.0f)));
     const float calm = 1.0f - hardBrake;
-    const float accelerate = std::min({std::max(gapFar, std::min(gapOk, opening)), under, 1.0f - ramp(need, 0.0f, 0.3f), calm});
+    const float accelerate =
+        std::min({std::max(gapFar, std::min(gapOk, opening)), under, 1.0f - ramp(need, 0.0f, 0.3f), calm});
     const float keep = std::min(std::max(std::min(gapOk, steady), std::min(gapFar, 1.0f - under)), calm);
-    const float brake = std::min(std::max({ramp(need, 0.3f, 0.8f), std::min(gapOk, closingFast), over, gapClose}), calm);
+    const float brake =
+        std::min(std::max({ramp(need, 0.3f, 0.8f), std::min(gapOk, closingFast), over, gapClose}), calm);
 
     const float sum = accelerate + keep + brake + hardBrake;
     if (!(sum > 0.0f))

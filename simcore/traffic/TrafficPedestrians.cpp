@@ -69,7 +69,8 @@ PedestrianSignal TrafficSystem::pedestrianSignal(glm::vec2 p, glm::vec2 heading,
             s.light >= 0 ? lightPhaseAt(m_lights[std::size_t(s.light)], timeS()) : LightPhase::Green;
         const float headingLength = glm::length(heading);
         const float alignment = headingLength > 0.0f ? glm::dot(heading, s.dir) / headingLength : 0.0f;
-        const float wClamped = std::clamp(w, -std::max(0.0f, s.halfWidthM - radiusM), std::max(0.0f, s.halfWidthM - radiusM));
+        const float wClamped =
+            std::clamp(w, -std::max(0.0f, s.halfWidthM - radiusM), std::max(0.0f, s.halfWidthM - radiusM));
         // On the road part and walking along the strip; strips that meet at a corner may
         // overlap, and a walker crossing one sideways there is not on that crossing. The
         // walk from a strip's end over the pavement to the kerb is no crossing yet: the
@@ -140,7 +141,8 @@ PedestrianSignal TrafficSystem::pedestrianSignal(glm::vec2 p, glm::vec2 heading,
         // last step or later (it stepped onto the road as the red began).
         const double cycle = double(light.greenS) + double(light.yellowS) + double(light.redS);
         const double shifted = timeS() + double(light.offsetS);
-        const double yellowLeftS = double(light.greenS) + double(light.yellowS) - (shifted - std::floor(shifted / cycle) * cycle);
+        const double yellowLeftS =
+            double(light.greenS) + double(light.yellowS) - (shifted - std::floor(shifted / cycle) * cycle);
         const bool lateForYellow = double(best.distanceToLineM) >= double(speed) * (yellowLeftS - double(m_dt));
         best.mustStop =
             lateForYellow || canStopWithin(speed, best.distanceToLineM - radiusM - kStopBackM, m_opt.pedestrianDecel);

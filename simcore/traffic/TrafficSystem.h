@@ -47,7 +47,7 @@ struct TrafficOptions {
     // s: a standing driver's reaction once free to go; drawn from rng(seed, vehicle id,
     // its count of stops so far), so each queue it waits in gives it a new delay.
     float goDelayMinS = 0.3f, goDelayMaxS = 1.5f;
-    float pedGoDelayMinS = 0.0f, pedGoDelayMaxS = 2.0f;  // s: a pedestrian's reaction after green, per (id, light cycle)
+    float pedGoDelayMinS = 0.0f, pedGoDelayMaxS = 2.0f; // s: a pedestrian's reaction after green, per (id, light cycle)
     float respawnDelayMinS = 0.5f, respawnDelayMaxS = 6.0f;  // s: off-stage time at an open lane's end
     float stopMarginM = 0.5f;    // m: a vehicle waits with its front this far before a stop line
     float yieldHorizonS = 3.0f;  // s: yield to a pedestrian reaching the lane within this time
@@ -57,8 +57,10 @@ struct TrafficOptions {
 
 struct TrafficCounters {
     std::uint64_t vehicleRedLightViolations = 0;    // a vehicle's front crossed a stop line on red
-    std::uint64_t pedestrianRedLightViolations = 0; // a pedestrian stepped onto a crosswalk's road part on red (LaneNetwork::onRoadPart, light at the step's end)
-    std::uint64_t carPedestrianCollisions = 0;      // vehicle-pedestrian pairs closer than the sum of radii, summed over steps
+    std::uint64_t pedestrianRedLightViolations = 0; // a pedestrian stepped onto a crosswalk's road part on red
+                                                    // (LaneNetwork::onRoadPart, light at the step's end)
+    std::uint64_t carPedestrianCollisions =
+        0; // vehicle-pedestrian pairs closer than the sum of radii, summed over steps
     std::uint64_t vehicleCollisions = 0;            // vehicle pairs closer than the sum of radii, summed over steps
     std::uint64_t nonFiniteValues = 0;              // NaN/inf vehicle positions or speeds seen
     std::uint64_t vehicleSteps = 0;                 // active vehicle-steps simulated

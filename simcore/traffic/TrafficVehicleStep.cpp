@@ -36,7 +36,8 @@ TrafficSystem::NextState TrafficSystem::advanceVehicle(std::size_t i, std::span<
     }
     // The car-following model, the stop line and the pedestrians bound every vehicle; a
     // brain only ever lowers that (it cannot close the gap, run a red or hit a walker).
-    float a = std::min({followingAcceleration(q, v, gap, leaderSpeed), stopLineLimit(i, q, next), yieldLimit(i, q, peds)});
+    float a =
+        std::min({followingAcceleration(q, v, gap, leaderSpeed), stopLineLimit(i, q, next), yieldLimit(i, q, peds)});
     if (i < m_brainSpeed.size() && !std::isnan(m_brainSpeed[i]))
         a = std::min(a, brainAcceleration(i, q));
 
@@ -159,7 +160,8 @@ float TrafficSystem::yieldLimit(std::size_t i, const FollowingParams& q, std::sp
         const float corridor = r + kPedBufferM;  // the body's half width and a buffer around the centre line
         // Past the stop line guarding the crosswalk, walkers wait for this vehicle (see
         // markBusyCrosswalks): it yields only to those already on the strip.
-        const bool inBox = st.boxEntryS < st.s0 && inRange(aheadM(lane, st.boxEntryS, front), 0.0f, st.s0 - st.boxEntryS);
+        const bool inBox =
+            st.boxEntryS < st.s0 && inRange(aheadM(lane, st.boxEntryS, front), 0.0f, st.s0 - st.boxEntryS);
         if (crosswalkConflict(st.crosswalk, uLane, corridor, !inBox, peds))
             a = std::min(a, followingAcceleration(q, v, d - kYieldBeforeM + q.minGapM, 0.0f));
     }

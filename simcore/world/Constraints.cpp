@@ -34,7 +34,8 @@ bool sideOfBoxAround(const StaticSet& set, const Segment& s, glm::vec2 p)
         const glm::vec2 d = p - c, m = 0.5f * (s.a + s.b) - c;
         if (std::fabs(glm::dot(d, ax)) >= b.halfSize.x || std::fabs(glm::dot(d, az)) >= b.halfSize.y)
             continue;  // p is not inside this box
-        const float edge = std::max(std::fabs(glm::dot(m, ax)) / b.halfSize.x, std::fabs(glm::dot(m, az)) / b.halfSize.y);
+        const float edge =
+            std::max(std::fabs(glm::dot(m, ax)) / b.halfSize.x, std::fabs(glm::dot(m, az)) / b.halfSize.y);
         if (std::fabs(edge - 1.0f) < kOnSide)
             return true;
     }

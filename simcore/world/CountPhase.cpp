@@ -96,7 +96,8 @@ void CountPhase::countGround(const StepView& v, std::vector<std::uint8_t>& onCro
                 }
                 const BoxObstacle& b = set.boxes[k - set.circles.size()];
                 const glm::vec2 d = p - xz(b.centre), ax(b.axis.x, b.axis.z), az(-b.axis.z, b.axis.x);
-                const glm::vec2 outside = glm::max(glm::abs(glm::vec2(glm::dot(d, ax), glm::dot(d, az))) - b.halfSize, 0.0f);
+                const glm::vec2 outside =
+                    glm::max(glm::abs(glm::vec2(glm::dot(d, ax), glm::dot(d, az))) - b.halfSize, 0.0f);
                 if (glm::length(outside) < r - kOverlapToleranceM)
                     ++inObstacle;
             });

@@ -137,7 +137,8 @@ void startsInside(const Scene& scene, const World& world, const Origins& origins
 void reachability(const Scene& scene, const World& world, const Origins& origins, const std::string& file,
                   std::vector<Diagnostic>& out)
 {
-    const Scene local = world.origin() == glm::dvec3(0.0) ? Scene{} : shiftedScene(scene, {world.origin().x, world.origin().z});
+    const Scene local =
+        world.origin() == glm::dvec3(0.0) ? Scene{} : shiftedScene(scene, {world.origin().x, world.origin().z});
     const Scene& s = world.origin() == glm::dvec3(0.0) ? scene : local;
     // One grid per body radius that has somewhere to go; walkers only (fliers fly over the
     // set, vehicles keep to lanes).
@@ -186,7 +187,8 @@ void reachability(const Scene& scene, const World& world, const Origins& origins
             }
             continue;
         }
-        const glm::vec2 from = world.isEscaping(i) ? world.escapeTo(i) : glm::vec2(world.positions()[i].x, world.positions()[i].z);
+        const glm::vec2 from =
+            world.isEscaping(i) ? world.escapeTo(i) : glm::vec2(world.positions()[i].x, world.positions()[i].z);
         if (!reach.reaches(from, goal.position, goal.radiusM))
             stranded[{g, info.typeIndex}].push_back(i);
     }
@@ -209,11 +211,11 @@ void reachability(const Scene& scene, const World& world, const Origins& origins
             who += " and " + std::to_string(named - kNamedAgents) + " more placed agents";
         for (std::size_t grp = 0; grp < perGroup.size(); ++grp)
             if (perGroup[grp] > 0)
-                who += (who.empty() ? "" : "; ") + std::to_string(perGroup[grp]) + " of group '" + s.groups[grp].name + "'";
-        const std::string how = type.navigation == Navigation::AStar
-                                    ? "A* walkers wait where they stand"
-                                    : type.navigation == Navigation::FlowField ? "flow-field walkers wait where they stand"
-                                                                               : "they walk at it and stay short of it";
+                who += (who.empty() ? "" : "; ") + std::to_string(perGroup[grp]) + " of group '" + s.groups[grp].name +
+                       "'";
+        const std::string how = type.navigation == Navigation::AStar       ? "A* walkers wait where they stand"
+                                : type.navigation == Navigation::FlowField ? "flow-field walkers wait where they stand"
+                                                                           : "they walk at it and stay short of it";
         out.push_back({Severity::Warning, file, 0, 0, "goals[" + std::to_string(key.first) + "]",
                        std::string(goal.exit ? "exit '" : "goal '") + goal.name + "' cannot be reached by " +
                            std::to_string(agents.size()) + " agents of type '" + type.name + "' (" + who +
@@ -236,7 +238,8 @@ std::vector<Diagnostic> checkSceneGeometry(const Scene& scene, const std::string
         reachability(scene, world, origins, file, out);
     } catch (const std::exception& e) {
         // The run would fail the same way; `run` reports it. The checks above still hold.
-        out.push_back({Severity::Warning, file, 0, 0, "", std::string("cannot build the run's initial state: ") + e.what()});
+        out.push_back(
+            {Severity::Warning, file, 0, 0, "", std::string("cannot build the run's initial state: ") + e.what()});
     }
     return out;
 }

@@ -87,7 +87,9 @@ NavStats NavStats::from(const World& world)
 std::string NavStats::jsonFields() const
 {
     std::string j;
-    auto field = [&](const char* key, const std::string& value) { j += std::string("  \"") + key + "\": " + value + ",\n"; };
+    auto field = [&](const char* key, const std::string& value) {
+        j += std::string("  \"") + key + "\": " + value + ",\n";
+    };
     field("agents_out", std::to_string(agentsOut));
     field("exit_agents", std::to_string(exitAgents));
     field("fraction_out", exitAgents > 0 ? number(double(agentsOut) / double(exitAgents)) : "null");

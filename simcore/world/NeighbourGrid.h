@@ -109,7 +109,8 @@ public:
                 for (int x = x0; x <= x1; ++x) {
                     const std::size_t c = row + std::size_t(x);
                     const std::uint32_t end = m_start[c + 1];
-                    for (std::uint32_t k = firstAtOrAbove(m_start[c], end, yLo); k < end && m_sortedPos[k].y <= yHi; ++k)
+                    for (std::uint32_t k = firstAtOrAbove(m_start[c], end, yLo); k < end && m_sortedPos[k].y <= yHi;
+                         ++k)
                         f(m_sorted[k], m_sortedPos[k]);
                 }
             }

@@ -126,7 +126,8 @@ std::string RunStats::toJson() const
         flows += std::string(k ? "," : "") + "\n    {\"light\": " + quoted(f.light) + ", " +
                  (f.lane.empty() ? "\"crosswalk\": " + quoted(f.crosswalk) : "\"lane\": " + quoted(f.lane)) +
                  ", \"crossings\": " + std::to_string(f.crossings) +
-                 ", \"green_phases\": " + std::to_string(f.greenPhases) + ", \"per_green\": " + number(f.perGreen) + "}";
+                 ", \"green_phases\": " + std::to_string(f.greenPhases) + ", \"per_green\": " + number(f.perGreen) +
+                 "}";
     }
     field("throughput_per_green", flows + (throughput.empty() ? "]" : "\n  ]"));
     field("leader_overtaken", std::to_string(counters.leaderOvertaken));

@@ -46,7 +46,10 @@ private:
             return std::int64_t(-1e15);
         return std::int64_t(std::floor(std::min(c, 1e15f)));
     }
-    static std::uint64_t key(std::int64_t x, std::int64_t z) { return (std::uint64_t(x) * 0x9E3779B97F4A7C15ull) ^ std::uint64_t(z); }
+    static std::uint64_t key(std::int64_t x, std::int64_t z)
+    {
+        return (std::uint64_t(x) * 0x9E3779B97F4A7C15ull) ^ std::uint64_t(z);
+    }
     float m_inv;
     std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> m_cells;
 };

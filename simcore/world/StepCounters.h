@@ -48,8 +48,10 @@ struct OverlapDepths {
 };
 
 struct StepCounters {
-    std::uint64_t wallPenetrations = 0;      // steered agents' moves whose centre crossed a wall segment (kerbs and box sides too)
-    std::uint64_t obstaclePenetrations = 0;  // agent-steps ending with the body > 1 cm into a circle or box obstacle (heroes, vehicles too)
+    std::uint64_t wallPenetrations =
+        0; // steered agents' moves whose centre crossed a wall segment (kerbs and box sides too)
+    std::uint64_t obstaclePenetrations =
+        0; // agent-steps ending with the body > 1 cm into a circle or box obstacle (heroes, vehicles too)
     std::uint64_t overlappingPairs = 0;      // pairs closer than the sum of radii less 1 cm, summed over steps
     std::uint64_t redLightViolations = 0;    // pedestrians stepping onto a crosswalk's road part on red
     std::uint64_t nonFiniteValues = 0;       // NaN/inf positions or velocities seen

@@ -44,8 +44,8 @@ const std::vector<ParamSlot>& slots()
          [](TypeSteering& t) -> float& { return t.evasion.panicDistanceM; }},
         {B::Evasion, "response_time", "s, > 0", Kind::Number, 1e-3f, kBig,
          [](TypeSteering& t) -> float& { return t.evasion.responseTimeS; }},
-        {B::OffsetPursuit, "offset", "[x, y, z] m in the leader's frame: x right, y up, z forward",
-         Kind::Vector3, -kBig, kBig, nullptr},
+        {B::OffsetPursuit, "offset", "[x, y, z] m in the leader's frame: x right, y up, z forward", Kind::Vector3,
+         -kBig, kBig, nullptr},
         {B::OffsetPursuit, "slowing_distance", "m, > 0", Kind::Number, 1e-3f, kBig,
          [](TypeSteering& t) -> float& { return t.offsetPursuit.slowingDistanceM; }},
         {B::OffsetPursuit, "response_time", "s, > 0", Kind::Number, 1e-3f, kBig,
@@ -95,8 +95,9 @@ const std::vector<ParamSlot>& slots()
          [](TypeSteering& t) -> float& { return t.flow.responseTimeS; }},
         {B::Separation, "range", "m, >= 0: body gap below which neighbours push", Kind::Number, 0, kBig,
          [](TypeSteering& t) -> float& { return t.separation.rangeM; }},
-        {B::Separation, "keep_right", "0..1: share of max force a walker steps right with, an oncoming walker in its way",
-         Kind::Number, 0, 1, [](TypeSteering& t) -> float& { return t.separation.keepRight; }},
+        {B::Separation, "keep_right",
+         "0..1: share of max force a walker steps right with, an oncoming walker in its way", Kind::Number, 0, 1,
+         [](TypeSteering& t) -> float& { return t.separation.keepRight; }},
         {B::Alignment, "match_speed", "true: match speed too, not only heading", Kind::Flag, 0, 1, nullptr},
         {B::Alignment, "response_time", "s, > 0", Kind::Number, 1e-3f, kBig,
          [](TypeSteering& t) -> float& { return t.alignment.responseTimeS; }},
@@ -110,12 +111,12 @@ const std::vector<ParamSlot>& slots()
          [](TypeSteering& t) -> float& { return t.leader.corridorHalfWidthM; }},
         {B::UnalignedCollisionAvoidance, "horizon", "s, > 0: approaches later than this are ignored", Kind::Number,
          1e-3f, kBig, [](TypeSteering& t) -> float& { return t.unaligned.horizonS; }},
-        {B::UnalignedCollisionAvoidance, "margin", "m, >= 0: clearance beyond the two bodies", Kind::Number, 0,
-         kBig, [](TypeSteering& t) -> float& { return t.unaligned.marginM; }},
-        {B::UnalignedCollisionAvoidance, "brake_fraction", "0..1: share of force spent braking head-on",
-         Kind::Number, 0, 1, [](TypeSteering& t) -> float& { return t.unaligned.brakeFraction; }},
-        {B::ReciprocalAvoidance, "time_horizon", "s, > 0: collisions further ahead are ignored", Kind::Number,
-         1e-3f, kBig, [](TypeSteering& t) -> float& { return t.reciprocal.timeHorizonS; }},
+        {B::UnalignedCollisionAvoidance, "margin", "m, >= 0: clearance beyond the two bodies", Kind::Number, 0, kBig,
+         [](TypeSteering& t) -> float& { return t.unaligned.marginM; }},
+        {B::UnalignedCollisionAvoidance, "brake_fraction", "0..1: share of force spent braking head-on", Kind::Number,
+         0, 1, [](TypeSteering& t) -> float& { return t.unaligned.brakeFraction; }},
+        {B::ReciprocalAvoidance, "time_horizon", "s, > 0: collisions further ahead are ignored", Kind::Number, 1e-3f,
+         kBig, [](TypeSteering& t) -> float& { return t.reciprocal.timeHorizonS; }},
         {B::ReciprocalAvoidance, "keep_right", "degrees, 0..90: turn right of the way while walkers come the other way",
          Kind::AngleDeg, 0, 90, [](TypeSteering& t) -> float& { return t.reciprocal.keepRightRad; }},
     };
@@ -165,7 +166,8 @@ std::string apply(TypeSteering& t, Behaviour b, const BrainParam& p)
     case Kind::AngleDeg:
         if (!p.text.empty() || p.numbers.size() != 1) return std::string(slot->key) + " must be a number";
         if (p.numbers[0] < slot->lo || p.numbers[0] > slot->hi)
-            return "must be within [" + std::to_string(slot->lo) + ", " + std::to_string(slot->hi) + "] (" + slot->meaning + ")";
+            return "must be within [" + std::to_string(slot->lo) + ", " + std::to_string(slot->hi) + "] (" +
+                   slot->meaning + ")";
         slot->number(t) = slot->kind == Kind::AngleDeg ? p.numbers[0] * 0.017453292f : p.numbers[0];
         return {};
     }

@@ -299,7 +299,8 @@ glm::vec3 BrainPhase::limited(const StepView& view, std::size_t i, glm::vec3 v, 
     // The way it wants to go: only a walker with a path or a goal has one (for the rest,
     // wantedHeading is where it happens to be heading).
     glm::vec2 h(0.0f);
-    if (view.types.params[view.agents.info[i].typeIndex].kind == AgentKind::Pedestrian && !view.types.steering[view.agents.info[i].typeIndex].vehicle.flying &&
+    if (view.types.params[view.agents.info[i].typeIndex].kind == AgentKind::Pedestrian &&
+        !view.types.steering[view.agents.info[i].typeIndex].vehicle.flying &&
         (view.agents.path[i] >= 0 || view.agents.goal[i] >= 0))
         h = wantedHeading(view, i);
     if (!(glm::dot(h, h) > 1e-12f))
@@ -388,7 +389,8 @@ void BrainPhase::pickAgent(std::ptrdiff_t i, std::size_t agentCount)
             tb.evaluator->setPickedAgent(-1);
     if (i < 0 || std::size_t(i) >= agentCount || m_brains->local[std::size_t(i)] < 0)
         return;
-    m_brains->types[std::size_t(m_brains->batch[std::size_t(i)])].evaluator->setPickedAgent(m_brains->local[std::size_t(i)]);
+    m_brains->types[std::size_t(m_brains->batch[std::size_t(i)])].evaluator->setPickedAgent(
+        m_brains->local[std::size_t(i)]);
 }
 
 }  // namespace throng::sim

@@ -126,7 +126,8 @@ std::vector<Diagnostic> checkSceneBrains(const Scene& scene)
         // so a broken brain nobody runs is news, not a reason to refuse the scene.
         const bool runs = runByTheWorld(scene, g.name);
         const Severity severity = runs ? Severity::Error : Severity::Warning;
-        const std::string idle = runs ? std::string() : "brain '" + g.name + "' is run by no agent, so a run ignores this: ";
+        const std::string idle =
+            runs ? std::string() : "brain '" + g.name + "' is run by no agent, so a run ignores this: ";
         for (const BrainError& e : r.errors)
             out.push_back({severity, e.file, e.line, e.column, key, idle + e.message});
         if (!r.ok())

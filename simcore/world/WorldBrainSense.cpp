@@ -92,7 +92,8 @@ void BrainPhase::sense(const StepView& view, AgentColumns& agents, TypeBrain& tb
         // The neighbours go into the agent's own view.agents.nearIndex row, where the steer phase
         // of this step finds them instead of querying the grid a second time.
         std::array<Neighbour, kMaxNeighbours> near;
-        const std::size_t count = needNeighbours ? gatherNeighbours(view, i, near.data(), &agents.nearIndex[i * kMaxNeighbours]) : 0;
+        const std::size_t count =
+            needNeighbours ? gatherNeighbours(view, i, near.data(), &agents.nearIndex[i * kMaxNeighbours]) : 0;
         if (needNeighbours)
             agents.nearCount[i] = std::uint8_t(count);
         tb.neighbourCount[k] = std::uint8_t(std::min<std::size_t>(count, kBrainNeighbours));
@@ -109,7 +110,8 @@ void BrainPhase::sense(const StepView& view, AgentColumns& agents, TypeBrain& tb
                 });
                 view.set.obstacleGrid.forEachNear(p + dir * (0.5f * length), 0.5f * length, [&](std::uint32_t o) {
                     if (o < view.set.circles.size())
-                        t = std::min(t, rayToCircle(p, dir, length, xz(view.set.circles[o].centre), view.set.circles[o].radius));
+                        t = std::min(
+                            t, rayToCircle(p, dir, length, xz(view.set.circles[o].centre), view.set.circles[o].radius));
                 });
                 feeler[std::size_t(s)] = t;
             }
@@ -163,7 +165,9 @@ void BrainPhase::sense(const StepView& view, AgentColumns& agents, TypeBrain& tb
             case SensorFill::NeighbourDensity:
                 v = float(count) / (3.14159265f * type.perception * type.perception * tb.viewDeg / 360.0f);
                 break;
-            case SensorFill::NearestDistance: v = count ? glm::distance(p, xz(near[0].position)) : type.perception; break;
+            case SensorFill::NearestDistance:
+                v = count ? glm::distance(p, xz(near[0].position)) : type.perception;
+                break;
             case SensorFill::NearestBearing: v = count ? bearingDeg(f, xz(near[0].position) - p) : 0.0f; break;
             case SensorFill::VisionLeft:
             case SensorFill::VisionCentre:
@@ -247,7 +251,8 @@ void BrainPhase::sense(const StepView& view, AgentColumns& agents, TypeBrain& tb
                 break;
             }
             case SensorFill::TerrainSlope: {
-                const float h0 = view.set.groundHeight(p.x, p.y), h1 = view.set.groundHeight(p.x + 0.5f * f.x, p.y + 0.5f * f.y);
+                const float h0 = view.set.groundHeight(p.x, p.y),
+                            h1 = view.set.groundHeight(p.x + 0.5f * f.x, p.y + 0.5f * f.y);
                 v = glm::degrees(std::atan((h1 - h0) / 0.5f));
                 break;
             }
@@ -257,7 +262,9 @@ void BrainPhase::sense(const StepView& view, AgentColumns& agents, TypeBrain& tb
             case SensorFill::AttrMass: v = type.mass; break;
             case SensorFill::AttrMaxForce: v = type.maxForce; break;
             case SensorFill::AttrPerception: v = type.perception; break;
-            case SensorFill::AttrSpeedFactor: v = type.maxSpeed > 0.0f ? view.agents.maxSpeed[i] / type.maxSpeed : 1.0f; break;
+            case SensorFill::AttrSpeedFactor:
+                v = type.maxSpeed > 0.0f ? view.agents.maxSpeed[i] / type.maxSpeed : 1.0f;
+                break;
             case SensorFill::SoundBearing:
             case SensorFill::SoundDistance:
             case SensorFill::SoundStrength:
@@ -291,7 +298,8 @@ void BrainPhase::sense(const StepView& view, AgentColumns& agents, TypeBrain& tb
         // Sound: each channel the type hears once, then every sensor reading it.
         for (const std::uint32_t c : tb.hears) {
             HeardList heard;
-            const std::size_t loud = hearChannel(*m_brains, c, view.grid, view.agents.info, view.agents.pos, view.agents.out, i, p, f, heard);
+            const std::size_t loud = hearChannel(*m_brains, c, view.grid, view.agents.info, view.agents.pos,
+                                                 view.agents.out, i, p, f, heard);
             for (std::size_t s = 0; s < sensors; ++s) {
                 const SensorFill fill = tb.fills[s];
                 if (!isSoundFill(fill) || tb.fillTag[s] != c)

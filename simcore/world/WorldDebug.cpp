@@ -40,7 +40,8 @@ void publishField(const StepView& v, std::size_t i, DebugSink& sink)
     if (v.nav.active && i < v.nav.mode.size() && v.nav.mode[i] == Navigation::FlowField && goal >= 0 &&
         std::size_t(goal) < v.nav.hasField.size() && v.nav.hasField[std::size_t(goal)])
         navField = &v.nav.fields[std::size_t(goal)];
-    const bool strokes = !v.set.flow.empty() && v.types.steering[v.agents.info[i].typeIndex].on(Behaviour::FlowFieldFollowing);
+    const bool strokes =
+        !v.set.flow.empty() && v.types.steering[v.agents.info[i].typeIndex].on(Behaviour::FlowFieldFollowing);
     if (!navField && !strokes)
         return;
     const float step = navField ? v.nav.grid.cellM() : kFlowSampleStepM;
@@ -98,7 +99,10 @@ void DebugRecorder::steering(glm::vec3 force) { current().steering = force; }
 
 void DebugRecorder::feeler(glm::vec3 from, glm::vec3 to) { current().feelers.push_back({from, to}); }
 
-void DebugRecorder::plannedPath(std::span<const glm::vec3> points) { current().path.assign(points.begin(), points.end()); }
+void DebugRecorder::plannedPath(std::span<const glm::vec3> points)
+{
+    current().path.assign(points.begin(), points.end());
+}
 
 void DebugRecorder::target(glm::vec3 point)
 {

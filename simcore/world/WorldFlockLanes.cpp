@@ -187,7 +187,8 @@ template <class F>
         for (unsigned bits = bitsOf(contained); bits != 0; bits &= bits - 1) {
             const int l = std::countr_zero(bits);
             const std::size_t i = boid[l];
-            contain[l] = stayInside(steeringAgent(m_agents, m_types, i), m_set.bounds, m_types.steering[m_agents.info[i].typeIndex].containment) *
+            contain[l] = stayInside(steeringAgent(m_agents, m_types, i), m_set.bounds,
+                                    m_types.steering[m_agents.info[i].typeIndex].containment) *
                          types[l]->wContainment;
         }
     }

@@ -112,8 +112,8 @@ void WorldNav::build(const Scene& scene, const StepView& v)
     waypoint.assign(n, 0);
     waypointRadiusM.resize(n);
     for (std::size_t i = 0; i < n; ++i)
-        waypointRadiusM[i] = sim::waypointRadiusM(kWaypointRadiusBaseM, rngUniform(v.seed, v.agents.info[i].id, 0, kWaypointRadius),
-                                                   kWaypointSpread);
+        waypointRadiusM[i] = sim::waypointRadiusM(
+            kWaypointRadiusBaseM, rngUniform(v.seed, v.agents.info[i].id, 0, kWaypointRadius), kWaypointSpread);
     stall.assign(n, StallWatch{});
     replan.assign(n, 0);
     sideStepS.assign(n, 0.0f);
@@ -209,7 +209,8 @@ void WorldNav::beforeStep(const StepView& v)
                 waypoint[i] = 0;
                 ++counters.replans;
             } else {
-                const float sign = rngUniform(v.seed, v.agents.info[i].id, v.clock.step, kSideStepSign) < 0.5f ? -1.0f : 1.0f;
+                const float sign =
+                    rngUniform(v.seed, v.agents.info[i].id, v.clock.step, kSideStepSign) < 0.5f ? -1.0f : 1.0f;
                 sideDir[i] = glm::vec2(-way.y, way.x) * sign;
                 sideStepS[i] = kSideStepDurationS;
                 ++counters.sideSteps;
@@ -226,7 +227,8 @@ void WorldNav::beforeStep(const StepView& v)
 
 std::uint8_t WorldNav::queueDepth(const StepView& v, std::size_t i) const
 {
-    if (v.agents.stopped[i] || v.traffic.signal.empty() || v.types.params[v.agents.info[i].typeIndex].kind != AgentKind::Pedestrian)
+    if (v.agents.stopped[i] || v.traffic.signal.empty() ||
+        v.types.params[v.agents.info[i].typeIndex].kind != AgentKind::Pedestrian)
         return 0;
     const PedestrianSignal& sig = v.traffic.signal[i];
     if (sig.crosswalk >= 0 && !sig.onCrosswalk && (sig.mustStop || sig.phase != LightPhase::Green))
@@ -242,7 +244,8 @@ std::uint8_t WorldNav::queueDepth(const StepView& v, std::size_t i) const
     for (std::size_t k = 0; k < v.agents.nearCount[i]; ++k) {
         const std::uint32_t j = near[k];
         const glm::vec2 d = xz(v.agents.pos[j]) - p;
-        if (waiting[j] && glm::length(d) < v.agents.radius[i] + v.agents.radius[j] + kQueueGapM && glm::dot(d, way) > 0.0f)
+        if (waiting[j] && glm::length(d) < v.agents.radius[i] + v.agents.radius[j] + kQueueGapM &&
+            glm::dot(d, way) > 0.0f)
             ahead = std::min(ahead, waiting[j]);
     }
     return ahead < kMaxQueueDepth ? std::uint8_t(ahead + 1) : 0;
@@ -336,10 +339,11 @@ void WorldNav::updateTarget(const StepView& v, std::size_t i)
             }
         } else if (const NavCell free = onwardOrNearestWalkable(field, c, [&](glm::vec2 q) {
                        bool crossed = false;
-                       v.set.walls.forEachNear((p + q) * 0.5f, 0.5f * glm::distance(p, q) + 0.01f, [&](std::uint32_t k) {
-                           const Segment& w = v.set.walls.segment(k);
-                           crossed = crossed || segmentsCross(p, q, w.a, w.b);
-                       });
+                       v.set.walls.forEachNear((p + q) * 0.5f, 0.5f * glm::distance(p, q) + 0.01f,
+                                               [&](std::uint32_t k) {
+                                                   const Segment& w = v.set.walls.segment(k);
+                                                   crossed = crossed || segmentsCross(p, q, w.a, w.b);
+                                               });
                        return !crossed;
                    });
                    grid.walkable(free) && field.reachable(free)) {
@@ -390,7 +394,8 @@ bool WorldNav::sketchedFlow(glm::vec3 p, glm::vec3& direction) const
         return false;
     const SketchField& field = *sketch;
     const NavCell c = field.grid().cellOf(xz(p));
-    const glm::vec2 d = field.grid().inside(c) && field.strength(c) >= kSketchMinStrength ? field.sample(xz(p)) : glm::vec2(0.0f);
+    const glm::vec2 d =
+        field.grid().inside(c) && field.strength(c) >= kSketchMinStrength ? field.sample(xz(p)) : glm::vec2(0.0f);
     direction = {d.x, 0.0f, d.y};
     return true;
 }

@@ -88,7 +88,8 @@ struct WorldNav {
     void beforeStep(const StepView& v);
 
 private:
-    glm::vec2 startOf(const StepView& v, std::size_t i) const;  // where its way starts: its place, or where it walks out to
+    glm::vec2 startOf(const StepView& v,
+                      std::size_t i) const; // where its way starts: its place, or where it walks out to
     bool noWayToGoal(const StepView& v, std::size_t i);        // no body of its size gets to its goal (builds reach)
     void planFor(const StepView& v, std::size_t i);
     std::uint8_t queueDepth(const StepView& v, std::size_t i) const;

@@ -129,7 +129,8 @@ std::size_t hearChannel(const WorldBrains& wb, std::uint32_t c, const NeighbourG
     const glm::vec2 left(f.y, -f.x);
     for (std::size_t k = 0; k < count; ++k) {
         const glm::vec2 d = best[k].offset;
-        const float bearing = best[k].distanceM > 0.0f ? glm::degrees(std::atan2(glm::dot(d, left), glm::dot(d, f))) : 0.0f;
+        const float bearing =
+            best[k].distanceM > 0.0f ? glm::degrees(std::atan2(glm::dot(d, left), glm::dot(d, f))) : 0.0f;
         out[k] = {best[k].strength, best[k].distanceM, bearing};
     }
     return count;

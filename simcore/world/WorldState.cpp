@@ -32,7 +32,8 @@ std::size_t WorldState::memoryBytes() const
             bytes += column.size() * sizeof(float);
     for (const auto& column : tagValues)
         bytes += column.size() * sizeof(float);
-    return bytes + brainBatch.size() * sizeof(std::int32_t) + (brainLocal.size() + brainAction.size()) * 6 + vehicleSpeed.size() * sizeof(float);
+    return bytes + brainBatch.size() * sizeof(std::int32_t) + (brainLocal.size() + brainAction.size()) * 6 +
+           vehicleSpeed.size() * sizeof(float);
 }
 
 bool sameTrafficSet(const Scene& a, const Scene& b)
@@ -176,7 +177,8 @@ void World::restoreDynamicState(const WorldState& s, const std::vector<std::uint
             continue;
         const auto t0 = std::size_t(s.brainBatch[i]), t1 = std::size_t(wb.batch[i]);
         const std::int32_t l0 = s.brainLocal[i], l1 = wb.local[i];
-        if ((!keepBrain.empty() && !keepBrain[i]) || l0 < 0 || l1 < 0 || t0 >= s.brainState.size() || s.brainState[t0].size() != columns[t1].size())
+        if ((!keepBrain.empty() && !keepBrain[i]) || l0 < 0 || l1 < 0 || t0 >= s.brainState.size() ||
+            s.brainState[t0].size() != columns[t1].size())
             continue;
         for (std::size_t c = 0; c < columns[t1].size(); ++c)
             columns[t1][c][std::size_t(l1)] = s.brainState[t0][c][std::size_t(l0)];
@@ -275,7 +277,8 @@ bool World::adoptMatched(const WorldState& s, const Scene& stateScene, const Sce
         keepBrain[i] = before && after && *before == *after ? 1 : 0;
     }
     // The edited scene's parameters and fresh legs, as this World was built.
-    const auto radius = m_agents.radius, maxSpeed = m_agents.maxSpeed, stride = m_agents.stride, arrivalTime = m_agents.arrivalTime;
+    const auto radius = m_agents.radius, maxSpeed = m_agents.maxSpeed, stride = m_agents.stride,
+               arrivalTime = m_agents.arrivalTime;
     const auto leader = m_agents.leader, goal = m_agents.goal, path = m_agents.path;
     const auto goalSpot = m_agents.goalSpot;
     const auto mode = m_nav.mode;

@@ -111,7 +111,7 @@ struct WorldState {
 
     // Brains (empty when no type has one).
     bool hasBrains = false;
-    std::vector<std::vector<std::vector<float>>> brainState;  // per brain batch, per state column, per batch-local agent
+    std::vector<std::vector<std::vector<float>>> brainState; // per brain batch, per state column, per batch-local agent
     std::vector<std::int32_t> brainBatch;                     // per agent: its batch (type, or type and own brain)
     std::vector<std::int32_t> brainLocal;                     // per agent: index among its batch's agents, -1 = none
     std::vector<std::int16_t> brainAction;                    // per agent

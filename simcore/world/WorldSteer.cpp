@@ -155,7 +155,8 @@ glm::vec3 World::steer(std::size_t i, const SteeringAgent& self, std::span<const
     };
     const glm::vec3 p = self.position;
     const bool hasGoal = m_agents.goal[i] >= 0;
-    const glm::vec3 goal = hasGoal ? m_nav.goal(i, glm::vec3(m_agents.goalSpot[i].x, p.y, m_agents.goalSpot[i].y)) : p + self.forward;
+    const glm::vec3 goal =
+        hasGoal ? m_nav.goal(i, glm::vec3(m_agents.goalSpot[i].x, p.y, m_agents.goalSpot[i].y)) : p + self.forward;
     const std::int32_t leaderIndex = m_agents.leader[i];
     Neighbour leader;
     if (leaderIndex >= 0) {
@@ -199,7 +200,8 @@ glm::vec3 World::steer(std::size_t i, const SteeringAgent& self, std::span<const
         request(B::PathFollowing, [&] { return followPath(flat, path, s.path, m_agents.pathAlong[i]); });
     }
     if (!m_set.flow.empty())
-        request(B::FlowFieldFollowing, [&] { return followFlow(self, flowDirection(view(), flowSamplePoint(self, s.flow)), s.flow); });
+        request(B::FlowFieldFollowing,
+                [&] { return followFlow(self, flowDirection(view(), flowSamplePoint(self, s.flow)), s.flow); });
     if (hasGoal && m_agents.path[i] < 0) {
         // An exit is walked through, not stopped at: slowing down short of it, a walker
         // whose door posts pushed it back (wall following) stood in front of the door for
@@ -276,12 +278,14 @@ glm::vec3 World::avoidReciprocally(std::size_t i, const SteeringAgent& self, glm
     for (std::size_t k = 0; k < near.size(); ++k) {
         const bool stopped = m_agents.stopped[index[k]] != 0;
         // Between equals (no priorities in the scene) the share is 1 or 1/2, as avoidanceShare says.
-        const float share = m_types.makingWay ? avoidanceShare(mine, collision(index[k]), stopped) : (stopped ? 1.0f : 0.5f);
+        const float share =
+            m_types.makingWay ? avoidanceShare(mine, collision(index[k]), stopped) : (stopped ? 1.0f : 0.5f);
         if (share <= 0.0f)
             continue;
         PlanarNeighbour& o = others[count++];
         o = {xz(near[k].position), xz(near[k].velocity), near[k].radius, share};
-        if (!stopped && glm::dot(xz(near[k].forward), fwd) < -0.5f && glm::dot(o.position - xz(self.position), fwd) > 0.0f)
+        if (!stopped && glm::dot(xz(near[k].forward), fwd) < -0.5f &&
+            glm::dot(o.position - xz(self.position), fwd) > 0.0f)
             ++oncoming;
     }
     // Keep to the right of oncoming walkers (the pedestrians' convention), more the more
@@ -293,7 +297,8 @@ glm::vec3 World::avoidReciprocally(std::size_t i, const SteeringAgent& self, glm
     }
     const PlanarBody body{xz(self.position), xz(self.velocity), self.radius, self.maxSpeed};
     const glm::vec2 v = sim::avoidReciprocally(body, preferred, {others.data(), count}, m_clock.decideDt, s.reciprocal);
-    return (glm::vec3(v.x, 0.0f, v.y) - glm::vec3(self.velocity.x, 0.0f, self.velocity.z)) * (self.mass / m_clock.decideDt);
+    return (glm::vec3(v.x, 0.0f, v.y) - glm::vec3(self.velocity.x, 0.0f, self.velocity.z)) *
+           (self.mass / m_clock.decideDt);
 }
 
 }  // namespace throng::sim

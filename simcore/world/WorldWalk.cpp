@@ -1,8 +1,8 @@
 // The walker kernel: one agent step (sense, steer, avoid, integrate, constrain) for a
 // ground type whose behaviours are only arrival, seek, separation, unaligned collision
 // avoidance, containment, wall following, obstacle avoidance, wander and reciprocal
-// avoidance (those of `cross`, `corridor` and of an ordinary crowd), fused. It computes what World::steer, World::avoidReciprocally and
-// integrateVehicle compute for such an agent, operation for operation in the same order,
+// avoidance (those of `cross`, `corridor` and of an ordinary crowd), fused. It computes what World::steer,
+// World::avoidReciprocally and integrateVehicle compute for such an agent, operation for operation in the same order,
 // so the result is bit-identical to the general path (TestWalkKernel checks it); but in
 // one pass over the neighbours, read by index (no Neighbour copies, no request list),
 // with the squared distances the search already has and the type's constants made
@@ -35,7 +35,8 @@ using namespace detail;
 namespace {
 
 // steerTowards (SteeringMath.h) with its gain (mass / response time) made once per type.
-[[gnu::always_inline]] inline glm::vec3 towardsVelocity(glm::vec3 velocity, glm::vec3 desired, float gain, float maxForce)
+[[gnu::always_inline]] inline glm::vec3 towardsVelocity(glm::vec3 velocity, glm::vec3 desired, float gain,
+                                                        float maxForce)
 {
     return behave::towards(velocity, finiteOrZero(desired), gain, maxForce);
 }
@@ -86,7 +87,8 @@ void World::buildWalkKernel(bool enabled)
         w.wWander = s.weightIfOn(Behaviour::Wander);
         w.reciprocal = s.on(Behaviour::ReciprocalAvoidance);
         w.keepRight = m_types.keepRight[t];
-        w.aroundStatics = (walls && s.on(Behaviour::WallFollowing)) || (obstacles && s.on(Behaviour::ObstacleAvoidance));
+        w.aroundStatics =
+            (walls && s.on(Behaviour::WallFollowing)) || (obstacles && s.on(Behaviour::ObstacleAvoidance));
         w.constrained = walls || !m_set.circles.empty();  // as World::step's hasStatics
         w.maxForce = nonNegative(m_types.params[t].maxForce);
         w.range = nonNegative(s.separation.rangeM);
@@ -233,9 +235,11 @@ void World::stepWalker(std::size_t i)
         glm::vec3 force(0.0f);
         if (threatT >= 0.0f) {
             // heading(agent), the agent's right, and the side and brake of the avoidance.
-            const glm::vec3 h = speedNow > kTiny && speedNow < kInfinity ? v * (1.0f / speedNow)
-                                                                          : normalizeOr(fwd, glm::vec3(0.0f, 0.0f, 1.0f));
-            const glm::vec3 right = normalizeOr(glm::cross(h, normalizeOr(m_agents.up[i], kWorldUp)), rightOfForward(h));
+            const glm::vec3 h = speedNow > kTiny && speedNow < kInfinity
+                                    ? v * (1.0f / speedNow)
+                                    : normalizeOr(fwd, glm::vec3(0.0f, 0.0f, 1.0f));
+            const glm::vec3 right =
+                normalizeOr(glm::cross(h, normalizeOr(m_agents.up[i], kWorldUp)), rightOfForward(h));
             const glm::vec3 threatForward =
                 normalizeOr(m_agents.vel[threatJ], normalizeOr(m_agents.fwd[threatJ], glm::vec3(0.0f)));
             const bool headOn = glm::dot(h, threatForward) < s.unaligned.headOnCosine;
@@ -250,7 +254,8 @@ void World::stepWalker(std::size_t i)
         const float dist = glm::length(offset);
         glm::vec3 desired(0.0f);
         // Through an exit at full speed: it is walked through, not stopped at (World::steer).
-        const bool throughExit = m_set.goals[std::size_t(m_agents.goal[i])].exit && !(m_nav.active && m_nav.hasTarget[i]);
+        const bool throughExit =
+            m_set.goals[std::size_t(m_agents.goal[i])].exit && !(m_nav.active && m_nav.hasTarget[i]);
         const float slowing = throughExit ? 1e-6f : w.slowingM;
         if (!(dist <= w.toleranceM || dist <= kTiny))
             desired = behave::arrivalVelocity(offset, dist, nonNegative(maxSpeed), slowing);

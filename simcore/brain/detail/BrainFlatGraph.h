@@ -57,7 +57,8 @@ std::string textParam(const FlatNode& n, const std::string& key);
 std::vector<std::string> words(const std::string& text);
 
 // Expands macros and resolves links of `top`; reports structural and parameter errors.
-std::vector<FlatNode> flattenBrain(const BrainGraph& top, const std::vector<BrainGraph>& library, BrainErrorList& errors);
+std::vector<FlatNode> flattenBrain(const BrainGraph& top, const std::vector<BrainGraph>& library,
+                                   BrainErrorList& errors);
 // Checks one node's parameters against its spec and its own rules.
 void checkNodeParams(FlatNode& n, BrainErrorList& errors);
 // Orders, types and emits the program; null when errors were found.

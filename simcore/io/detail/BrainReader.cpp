@@ -127,12 +127,14 @@ void readBrainGraph(YamlFields& f, const YAML::Node& node, const std::string& ke
                 continue;
             f.checkKeys(item, lk, {"from", "to"});
             BrainLink l;
-            if (!readPort(f, item, "from", lk, l.fromNode, l.fromPort) || !readPort(f, item, "to", lk, l.toNode, l.toPort))
+            if (!readPort(f, item, "from", lk, l.fromNode, l.fromPort) ||
+                !readPort(f, item, "to", lk, l.toNode, l.toPort))
                 continue;
             bool ok = true;
             for (auto [id, end] : {std::pair{l.fromNode, "from"}, std::pair{l.toNode, "to"}})
                 if (!ids.count(id)) {
-                    f.error(item[end].Mark(), lk + "." + end, "no node with id " + std::to_string(id) + " in this brain");
+                    f.error(item[end].Mark(), lk + "." + end,
+                            "no node with id " + std::to_string(id) + " in this brain");
                     ok = false;
                 }
             if (ok) {

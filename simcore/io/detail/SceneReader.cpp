@@ -243,7 +243,9 @@ void SceneReader::readAgentTypes(const YAML::Node& node, Scene& scene)
             if (kind == "pedestrian") t.kind = AgentKind::Pedestrian;
             else if (kind == "vehicle") t.kind = AgentKind::Vehicle;
             else if (kind == "flier") t.kind = AgentKind::Flier;
-            else m_f.error(item["kind"].Mark(), key + ".kind", "must be pedestrian, vehicle or flier, got '" + kind + "'");
+            else
+                m_f.error(item["kind"].Mark(), key + ".kind",
+                          "must be pedestrian, vehicle or flier, got '" + kind + "'");
         }
         if (t.kind == AgentKind::Vehicle) {
             t.radiusM = 1.0f;
@@ -418,8 +420,9 @@ void SceneReader::readGroups(const YAML::Node& node, Scene& scene)
         const YAML::Node item = node[i];
         if (!m_f.expectMap(item, key))
             continue;
-        m_f.checkKeys(item, key,
-                      {"name", "type", "count", "rect", "circle", "shape", "points", "goal", "path", "leader", "altitude"});
+        m_f.checkKeys(
+            item, key,
+            {"name", "type", "count", "rect", "circle", "shape", "points", "goal", "path", "leader", "altitude"});
         SpawnGroup g;
         if (m_f.readName(item, "name", key, g.name, true))
             claimName(item, key, g.name, "group");

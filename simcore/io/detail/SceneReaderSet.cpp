@@ -207,7 +207,8 @@ void SceneReader::readTrafficLights(const YAML::Node& node, Scene& scene)
         m_f.readVec2(item, "position", key, t.position, false);
         if (t.greenS + t.yellowS + t.redS <= 0.0f)
             m_f.error(item.Mark(), key, "the phases green + yellow + red must last longer than 0 s");
-        if (YAML::Node lines = item["stop_lines"]; lines.IsDefined() && m_f.expectSequence(lines, key + ".stop_lines")) {
+        if (YAML::Node lines = item["stop_lines"];
+            lines.IsDefined() && m_f.expectSequence(lines, key + ".stop_lines")) {
             for (std::size_t j = 0; j < lines.size(); ++j) {
                 const std::string lk = indexKey(key + ".stop_lines", j);
                 const YAML::Node line = lines[j];

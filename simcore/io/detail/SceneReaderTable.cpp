@@ -12,8 +12,8 @@ namespace {
 
 enum Column { kId, kType, kX, kY, kZ, kHeading, kGoal, kPath, kLeader, kLook, kTint, kHeight, kBrain, kGroup,
               kColumnCount };
-const std::array<const char*, kColumnCount> kColumnNames{"id",   "type",   "x",    "y",    "z",      "heading", "goal",
-                                                         "path", "leader", "look", "tint", "height", "brain",   "group"};
+const std::array<const char*, kColumnCount> kColumnNames{
+    "id", "type", "x", "y", "z", "heading", "goal", "path", "leader", "look", "tint", "height", "brain", "group"};
 
 // Finds a 0-based line of the source text.
 struct LineIndex {
@@ -50,8 +50,10 @@ void SceneReader::readAgentTable(const YAML::Node& node, const std::string& key,
                 found = c;
         const std::string ck = indexKey(key + ".columns", i);
         if (found < 0) {
-            m_f.error(node["columns"][i].Mark(), ck, "unknown column '" + columns[i] +
-                                                        "' (known: id, type, x, y, z, heading, goal, path, leader, look, tint, height, brain, group)");
+            m_f.error(
+                node["columns"][i].Mark(), ck,
+                "unknown column '" + columns[i] +
+                    "' (known: id, type, x, y, z, heading, goal, path, leader, look, tint, height, brain, group)");
             return;
         }
         if (at[found] >= 0) {
@@ -144,7 +146,8 @@ void SceneReader::readAgentTable(const YAML::Node& node, const std::string& key,
             std::string_view t = tok[std::size_t(at[kId])];
             auto [p, ec] = std::from_chars(t.data(), t.data() + t.size(), a.id);
             if (ec != std::errc() || p != t.data() + t.size() || a.id == 0) {
-                m_f.errorAtLine(line1, col1(kId), rk + ".id", "must be a whole number >= 1, got '" + std::string(t) + "'");
+                m_f.errorAtLine(line1, col1(kId), rk + ".id",
+                                "must be a whole number >= 1, got '" + std::string(t) + "'");
                 ok = false;
             } else if (!m_ids.insert(a.id).second) {
                 m_f.errorAtLine(line1, col1(kId), rk + ".id",
@@ -191,7 +194,8 @@ void SceneReader::readAgentTable(const YAML::Node& node, const std::string& key,
             auto [p, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
             if (ec != std::errc() || p != t.data() + t.size() || (type && v >= count)) {
                 m_f.errorAtLine(line1, col1(c), rk + "." + kColumnNames[c],
-                                "must be an index below " + std::to_string(count) + " or '-', got '" + std::string(t) + "'");
+                                "must be an index below " + std::to_string(count) + " or '-', got '" + std::string(t) +
+                                    "'");
                 ok = false;
                 return;
             }

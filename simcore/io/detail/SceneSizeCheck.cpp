@@ -100,7 +100,8 @@ void checkAgents(YamlFields& f, const YAML::Node& root, const Scene& scene)
         if (total <= double(kMaxSceneAgents))
             continue;
         const bool located = groups.IsSequence() && groups.size() == scene.groups.size();
-        f.error(located ? markOf(groups[i], {"count"}, root.Mark()) : root.Mark(), "groups[" + std::to_string(i) + "].count",
+        f.error(located ? markOf(groups[i], {"count"}, root.Mark()) : root.Mark(),
+                "groups[" + std::to_string(i) + "].count",
                 "the scene would hold " + withCommas(total) + " agents with this group, more than " +
                     withCommas(double(kMaxSceneAgents)));
         return;
@@ -131,9 +132,12 @@ void checkGroupDensity(YamlFields& f, const YAML::Node& root, const Scene& scene
         if (double(g.count) <= kDenseGroupFactor * fit)
             continue;
         char m[200];
-        std::snprintf(m, sizeof m, "%u agents of radius %g m would start packed %.0f times as tight as bodies fit in %s (room for about %.0f)",
-                      g.count, r, double(g.count) / std::max(fit, 1e-9), flier ? "its area and altitude range" : "its area", fit);
-        f.error(located ? markOf(groups[i], {"count"}, root.Mark()) : root.Mark(), "groups[" + std::to_string(i) + "].count", m);
+        std::snprintf(
+            m, sizeof m,
+            "%u agents of radius %g m would start packed %.0f times as tight as bodies fit in %s (room for about %.0f)",
+            g.count, r, double(g.count) / std::max(fit, 1e-9), flier ? "its area and altitude range" : "its area", fit);
+        f.error(located ? markOf(groups[i], {"count"}, root.Mark()) : root.Mark(),
+                "groups[" + std::to_string(i) + "].count", m);
     }
 }
 
@@ -148,7 +152,8 @@ void checkFlowStrokes(YamlFields& f, const YAML::Node& root, const Scene& scene)
         if (total <= kMaxFlowStrokeLengthM)
             continue;
         const bool located = strokes.IsSequence() && strokes.size() == scene.flowStrokes.size();
-        f.error(located ? markOf(strokes[i], {"points"}, root.Mark()) : root.Mark(), "flow_strokes[" + std::to_string(i) + "]",
+        f.error(located ? markOf(strokes[i], {"points"}, root.Mark()) : root.Mark(),
+                "flow_strokes[" + std::to_string(i) + "]",
                 "the flow strokes would be " + withCommas(total) + " m long with this one, more than " +
                     withCommas(kMaxFlowStrokeLengthM) + " m (the sketched field takes a sample a metre)");
         return;
@@ -186,15 +191,18 @@ void checkStatics(YamlFields& f, const YAML::Node& root, const Scene& scene)
             return;
         const std::string key = std::string(section) + "[" + std::to_string(first) + "]";
         f.warning(located ? list[first].Mark() : root.Mark(), key,
-                  withCommas(double(repeats)) + " " + what + " repeat an earlier one exactly; the simulation counts each once");
+                  withCommas(double(repeats)) + " " + what +
+                      " repeat an earlier one exactly; the simulation counts each once");
     };
     warnRepeats(seen, "walls", walls, wallsLocated, "wall segments");
     seen.clear();
     for (std::size_t i = 0; i < scene.obstacles.size(); ++i) {
         const Obstacle& o = scene.obstacles[i];
-        seen.push_back({Key{float(int(o.shape)), o.center.x, o.center.y, o.shape == ObstacleShape::Circle ? o.radiusM : o.size.x,
-                            o.shape == ObstacleShape::Circle ? 0.0f : o.size.y, o.shape == ObstacleShape::Circle ? 0.0f : o.angleDeg},
-                        i});
+        seen.push_back(
+            {Key{float(int(o.shape)), o.center.x, o.center.y, o.shape == ObstacleShape::Circle ? o.radiusM : o.size.x,
+                 o.shape == ObstacleShape::Circle ? 0.0f : o.size.y,
+                 o.shape == ObstacleShape::Circle ? 0.0f : o.angleDeg},
+             i});
     }
     warnRepeats(seen, "obstacles", obstacles, obstaclesLocated, "obstacles");
 
@@ -206,7 +214,8 @@ void checkStatics(YamlFields& f, const YAML::Node& root, const Scene& scene)
         if (extent > kMaxObstacleM) {
             const char* name = o.shape == ObstacleShape::Circle ? "radius" : "size";
             char m[96];
-            std::snprintf(m, sizeof m, "%s %.3g m is larger than %.0f km", name, double(extent), double(kMaxObstacleM) / 1000.0);
+            std::snprintf(m, sizeof m, "%s %.3g m is larger than %.0f km", name, double(extent),
+                          double(kMaxObstacleM) / 1000.0);
             f.error(obstaclesLocated ? markOf(obstacles[i], {name}, root.Mark()) : root.Mark(),
                     "obstacles[" + std::to_string(i) + "]." + name, m);
         }

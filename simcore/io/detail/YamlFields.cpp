@@ -79,7 +79,8 @@ bool isValidName(const std::string& name)
     if (name.empty() || name == "-")
         return false;
     // '#' starts a comment in agent tables, so it cannot be part of a name.
-    return std::none_of(name.begin(), name.end(), [](unsigned char c) { return std::isspace(c) || c < 32 || c == '#'; });
+    return std::none_of(name.begin(), name.end(),
+                        [](unsigned char c) { return std::isspace(c) || c < 32 || c == '#'; });
 }
 
 std::string indexKey(const std::string& key, std::size_t index) { return key + "[" + std::to_string(index) + "]"; }
@@ -128,8 +129,8 @@ void YamlFields::checkDuplicateKeys(const YAML::Node& map, const std::string& ke
     checkKeysImpl(map, key, {}, false);
 }
 
-void YamlFields::checkKeysImpl(const YAML::Node& map, const std::string& key, std::initializer_list<const char*> allowed,
-                               bool warnUnknown)
+void YamlFields::checkKeysImpl(const YAML::Node& map, const std::string& key,
+                               std::initializer_list<const char*> allowed, bool warnUnknown)
 {
     std::map<std::string, int> seen;
     for (auto it = map.begin(); it != map.end(); ++it) {
@@ -291,8 +292,8 @@ bool YamlFields::readBool(const YAML::Node& map, const char* name, const std::st
         out = false;
         return true;
     }
-    error(node.Mark(), childKey(key, name), "must be true or false, got " +
-                                               (node.IsScalar() ? "'" + node.Scalar() + "'" : std::string(typeName(node))));
+    error(node.Mark(), childKey(key, name),
+          "must be true or false, got " + (node.IsScalar() ? "'" + node.Scalar() + "'" : std::string(typeName(node))));
     return false;
 }
 
@@ -323,7 +324,8 @@ bool YamlFields::readName(const YAML::Node& map, const char* name, const std::st
     if (!readString(map, name, key, s, required))
         return false;
     if (!isValidName(s)) {
-        error(node.Mark(), childKey(key, name), "'" + s + "' is not a valid name (non-empty, no spaces or '#', not '-')");
+        error(node.Mark(), childKey(key, name),
+              "'" + s + "' is not a valid name (non-empty, no spaces or '#', not '-')");
         return false;
     }
     out = s;

@@ -83,7 +83,10 @@ template <class F>
 {
     return simd::normalizeOr(v, fallback, detail::kTiny);
 }
-[[gnu::always_inline]] inline glm::vec3 truncate(glm::vec3 v, float maxLength) { return detail::truncate(v, maxLength); }
+[[gnu::always_inline]] inline glm::vec3 truncate(glm::vec3 v, float maxLength)
+{
+    return detail::truncate(v, maxLength);
+}
 using simd::truncate;
 
 // --- Turning a desired velocity into a force ---------------------------------------------

@@ -7,18 +7,19 @@
 
 // Per-agent arrays of the World (m_agents.NAME, AgentColumns.h) and of the WorldState
 // (NAME), copied whole.
-#define THRONG_AGENT_COLUMNS(X)                                                                          \
-    X(pos) X(vel) X(fwd) X(side) X(up) X(nextPos) X(nextVel) X(nextFwd) X(nextSide) X(nextUp)             \
-    X(resolvedPos) X(wander) X(nextWander) X(radius) X(maxSpeed) X(phase) X(stride) X(arrivalTime) X(goal) \
-    X(path) X(leader) X(goalSpot) X(pathAlong) X(escaping) X(escapeTo) X(arrived) X(stopped) X(stoppedBefore) X(onCrosswalk) X(nearCount)     \
-    X(out) X(nearIndex) X(heldForce)
+#define THRONG_AGENT_COLUMNS(X)                                                                                        \
+    X(pos)                                                                                                             \
+    X(vel) X(fwd) X(side) X(up) X(nextPos) X(nextVel) X(nextFwd) X(nextSide) X(nextUp) X(resolvedPos) X(wander)        \
+        X(nextWander) X(radius) X(maxSpeed) X(phase) X(stride) X(arrivalTime) X(goal) X(path) X(leader) X(goalSpot)    \
+            X(pathAlong) X(escaping) X(escapeTo) X(arrived) X(stopped) X(stoppedBefore) X(onCrosswalk) X(nearCount)    \
+                X(out) X(nearIndex) X(heldForce)
 
 // Per-agent navigation arrays (m_nav.NAME in the World).
-#define THRONG_NAV_COLUMNS(X)                                                                             \
-    X(plan, plan) X(planGoal, planGoal) X(waypoint, waypoint) X(waypointRadiusM, waypointRadiusM)          \
-    X(sideStepS, sideStepS) X(stall, stall) X(replan, replan) X(hasTarget, hasTarget) X(waiting, waiting) \
-    X(waitingNext, waitingNext) X(lostSteps, lostSteps) X(sideDir, sideDir) X(target, target) X(mode, navMode) X(noWay, noWay)
-
+#define THRONG_NAV_COLUMNS(X)                                                                                          \
+    X(plan, plan)                                                                                                      \
+    X(planGoal, planGoal) X(waypoint, waypoint) X(waypointRadiusM, waypointRadiusM) X(sideStepS, sideStepS)            \
+        X(stall, stall) X(replan, replan) X(hasTarget, hasTarget) X(waiting, waiting) X(waitingNext, waitingNext)      \
+            X(lostSteps, lostSteps) X(sideDir, sideDir) X(target, target) X(mode, navMode) X(noWay, noWay)
 
 // Whole members of the World (its member expression) and of the WorldState (NAME),
 // copied as they are by saveState. restoreDynamicState puts back those marked Plain as
