@@ -343,6 +343,8 @@ void SimulationRunner::run(std::shared_ptr<const sim::Scene> scene, std::size_t 
                 m_checkpoints.clear();
                 m_checkpointBytes = 0;
             }
+            if (m_buildGate)
+                m_buildGate();
             world = std::make_unique<sim::World>(*scene);
             keepCheckpoint(0, scene, *world, true, Checkpoint{}, runId);
         }

@@ -61,6 +61,10 @@ public:
     // Frames that have a checkpoint, and the bytes they hold (for tests and the status).
     std::vector<std::size_t> checkpointFrames() const;
     std::size_t checkpointBytes() const;
+    // Called on the runner thread just before it builds a World for a run from frame 0:
+    // tests hold a build there to show that a run asked for meanwhile does not wait for
+    // it. Call before start().
+    void setBuildGate(std::function<void()> gate) { m_buildGate = std::move(gate); }
     // Computes frames until `frameCount` frames exist (including frame 0).
     void setTarget(std::size_t frameCount);
     // Computes nothing more until the next setTarget; frames already made stay.
@@ -167,6 +171,7 @@ private:
                         bool pinned, Checkpoint before, RunId runId);
 
     std::function<void()> m_notify;
+    std::function<void()> m_buildGate;  // setBuildGate
     std::thread m_thread;
     mutable std::mutex m_mutex;
     std::condition_variable m_wake;

@@ -1,5 +1,7 @@
 #include "simcore/world/World.h"
 
+#include "simcore/world/WorldBuilds.h"
+
 #include "simcore/world/Constraints.h"
 
 #include "simcore/nav/PathPlanning.h"
@@ -77,7 +79,11 @@ private:
     std::map<std::string, int> m_index;
 };
 
+thread_local std::uint64_t t_worldsBuilt = 0;
+
 }  // namespace
+
+std::uint64_t worldsBuiltOnThisThread() { return t_worldsBuilt; }
 
 World::World(const Scene& scene, const WorldOptions& options)
     : m_team(options.threads), m_origin(simulationOrigin(scene))
@@ -88,6 +94,7 @@ World::World(const Scene& scene, const WorldOptions& options)
         build(scene, options);
     else
         build(shiftedScene(scene, m_origin), options);
+    ++t_worldsBuilt;
 }
 
 void World::build(const Scene& scene, const WorldOptions& options)
@@ -122,8 +129,9 @@ void World::build(const Scene& scene, const WorldOptions& options)
     }
     cell = std::clamp(cell, 0.5f, 4.0f);
     for (const TypeCollision& c : m_types.collision)
-        m_types.makingWay = m_types.makingWay || c.priority != m_types.collision[0].priority || c.layerBit != m_types.collision[0].layerBit ||
-                      c.collidesWith != m_types.collision[0].collidesWith;
+        m_types.makingWay = m_types.makingWay || c.priority != m_types.collision[0].priority ||
+                            c.layerBit != m_types.collision[0].layerBit ||
+                            c.collidesWith != m_types.collision[0].collidesWith;
     m_traffic.build(scene, m_seed, m_team.size());
     buildStatics(scene);
     buildAgents(scene);
@@ -297,7 +305,8 @@ void World::spawnGroup(const Scene& scene, const SpawnGroup& group, std::size_t 
         const glm::vec2 p = places[k];
         float heading = 6.28318531f * rngUniform(m_seed, key, 0, kSpawnHeading);
         // Fliers spawn at a height drawn from the group's altitude range.
-        const float y = group.altitudeM.x + (group.altitudeM.y - group.altitudeM.x) * rngUniform(m_seed, key, 0, kSpawnY);
+        const float y =
+            group.altitudeM.x + (group.altitudeM.y - group.altitudeM.x) * rngUniform(m_seed, key, 0, kSpawnY);
         if (goal >= 0) {
             const glm::vec2 d = scene.goals[std::size_t(goal)].position - p;
             if (glm::dot(d, d) > 1e-6f)
@@ -341,8 +350,9 @@ void World::spreadMembers(const SpawnGroup& group, std::uint16_t type, std::size
     const float reach = 8.0f * largest;  // members part by a few radii at most
     for (std::size_t i = 0; i < m_agents.pos.size(); ++i) {
         const glm::vec2 q = detail::xz(m_agents.pos[i]);
-        if (m_types.params[m_agents.info[i].typeIndex].kind == AgentKind::Flier || !collide(m_types.collision[type], collision(i)) ||
-            q.x < lo.x - reach || q.y < lo.y - reach || q.x > hi.x + reach || q.y > hi.y + reach)
+        if (m_types.params[m_agents.info[i].typeIndex].kind == AgentKind::Flier ||
+            !collide(m_types.collision[type], collision(i)) || q.x < lo.x - reach || q.y < lo.y - reach ||
+            q.x > hi.x + reach || q.y > hi.y + reach)
             continue;
         bodies.push_back({q, m_agents.radius[i], false, m_agents.info[i].id});
     }
@@ -372,7 +382,8 @@ void World::addAgent(const Scene& scene, AgentId id, std::uint16_t type, glm::ve
         pos.y = m_set.groundHeight(pos.x, pos.z);
     // Heading is counter-clockwise seen from above (+y up, z south): forward = (cos, 0, -sin).
     const glm::vec3 fwd(std::cos(headingRad), 0.0f, -std::sin(headingRad));
-    const float speedFactor = rngRange(m_seed, id, 0, kSpeedFactor, t.variation.speedFactor.x, t.variation.speedFactor.y);
+    const float speedFactor =
+        rngRange(m_seed, id, 0, kSpeedFactor, t.variation.speedFactor.x, t.variation.speedFactor.y);
     m_agents.info.push_back({id, type});
     m_agents.pos.push_back(pos);
     // Fliers start at their stall speed so they never fall out of the sky on frame 1.
@@ -383,7 +394,8 @@ void World::addAgent(const Scene& scene, AgentId id, std::uint16_t type, glm::ve
     m_agents.up.push_back(glm::vec3(0.0f, 1.0f, 0.0f));
     m_agents.radius.push_back(t.radiusM);
     m_agents.maxSpeed.push_back(maxSpeed);
-    m_agents.phase.push_back(rngRange(m_seed, id, 0, kPhaseOffset, t.variation.phaseOffset.x, t.variation.phaseOffset.y));
+    m_agents.phase.push_back(
+        rngRange(m_seed, id, 0, kPhaseOffset, t.variation.phaseOffset.x, t.variation.phaseOffset.y));
     // Stride length scales with body size; 1.4 m is an adult's walking stride.
     m_agents.stride.push_back(t.kind == AgentKind::Pedestrian
                            ? 1.4f * std::max(0.5f, t.radiusM / 0.3f) * rngRange(m_seed, id, 0, kStride, 0.95f, 1.05f)
@@ -403,10 +415,11 @@ void World::addAgent(const Scene& scene, AgentId id, std::uint16_t type, glm::ve
                                 rngUniform(m_seed, id, 0, kSpotA));
     }
     m_agents.goalSpot.push_back(spot);
-    m_agents.pathAlong.push_back(path >= 0 ? startPathProgress(SteeringPath{m_set.pathPoints[std::size_t(path)], m_set.paths[std::size_t(path)].radiusM,
-                                                                  m_set.paths[std::size_t(path)].closed},
-                                                     pos)
-                                    : 0.0f);
+    m_agents.pathAlong.push_back(path >= 0 ? startPathProgress(SteeringPath{m_set.pathPoints[std::size_t(path)],
+                                                                            m_set.paths[std::size_t(path)].radiusM,
+                                                                            m_set.paths[std::size_t(path)].closed},
+                                                               pos)
+                                           : 0.0f);
     m_agents.arrived.push_back(0);
     m_agents.stopped.push_back(0);
     m_agents.stoppedBefore.push_back(0);
@@ -447,7 +460,8 @@ std::size_t World::agentsWithGoal() const
 {
     std::size_t count = 0;
     for (std::size_t i = 0; i < m_agents.pos.size(); ++i)
-        if ((m_agents.path[i] >= 0 && !m_set.paths[std::size_t(m_agents.path[i])].closed) || (m_agents.path[i] < 0 && m_agents.goal[i] >= 0))
+        if ((m_agents.path[i] >= 0 && !m_set.paths[std::size_t(m_agents.path[i])].closed) ||
+            (m_agents.path[i] < 0 && m_agents.goal[i] >= 0))
             ++count;
     return count;
 }
@@ -509,7 +523,8 @@ void World::addTrafficAgents(const Scene& scene)
         for (std::size_t v = 0; v < ts.vehicleCount(); ++v) {
             const glm::vec2 p = ts.position(v), f = ts.forward(v);
             m_traffic.vehicleAgent.push_back(std::uint32_t(m_agents.pos.size()));
-            addAgent(scene, ts.id(v), typeOf(typeById[ts.id(v)]), glm::vec3(p.x, 0.0f, p.y), std::atan2(-f.y, f.x), -1, -1, 0);
+            addAgent(scene, ts.id(v), typeOf(typeById[ts.id(v)]), glm::vec3(p.x, 0.0f, p.y), std::atan2(-f.y, f.x), -1,
+                     -1, 0);
             m_agents.vel.back() = glm::vec3(f.x, 0.0f, f.y) * ts.speed(v);
             m_agents.radius.back() = ts.radius(v);
         }

@@ -11,9 +11,13 @@
 #include "simcore/world/World.h"
 
 #include <QElapsedTimer>
+#include <QScopeGuard>
 #include <QTest>
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <future>
 #include <vector>
 
 using namespace throng;
@@ -202,21 +206,29 @@ private slots:
         sim::Scene small = big;
         small.groups[0].count = 30;
 
-        QElapsedTimer clock;
-        clock.start();
-        const std::size_t bigAgents = sim::World(big).agentCount();
-        const double buildMs = double(clock.nsecsElapsed()) / 1e6;
-        QCOMPARE(bigAgents, std::size_t(100000));
-
+        // The runner is held just before it builds the big crowd's World, as if the build
+        // took forever: a start asked for then must return all the same.
+        std::promise<void> release;
+        const std::shared_future<void> released = release.get_future().share();
+        std::atomic<int> builds{0};
         SimulationRunner runner([] {});
+        runner.setBuildGate([&] {
+            if (builds++ == 0)
+                released.wait();
+        });
+        auto letGo = qScopeGuard([&] {
+            if (released.wait_for(std::chrono::seconds(0)) != std::future_status::ready)
+                release.set_value();
+        });
         runner.start(big);
-        QTest::qWait(int(std::min(200.0, buildMs / 4.0)));  // the runner is building it now
-        clock.restart();
-        runner.start(small);
-        const double startMs = double(clock.nsecsElapsed()) / 1e6;
-        qInfo("a World of 100,000 agents builds in %.0f ms; a start during its build returned in %.1f ms", buildMs,
-              startMs);
-        QVERIFY2(startMs * 4.0 < buildMs, qPrintable(QString("start took %1 ms").arg(startMs)));
+        QTRY_VERIFY_WITH_TIMEOUT(builds.load() == 1, 30000);
+        std::future<void> started = std::async(std::launch::async, [&] { runner.start(small); });
+        if (started.wait_for(std::chrono::seconds(30)) != std::future_status::ready) {
+            release.set_value();
+            QFAIL("the start waited for the World being built");
+        }
+        QCOMPARE(builds.load(), 1);  // the big World is still not built
+        release.set_value();
 
         runner.setTarget(5);
         const SimulationRunner::Batch got = collect(runner, 5);
@@ -224,8 +236,9 @@ private slots:
         QCOMPARE(got.agents.size(), std::size_t(30));
         QCOMPARE(got.frames.size(), std::size_t(5 * 30));
         QCOMPARE(runner.checkpointFrames(), std::vector<std::size_t>{0});
-        // Nothing of the big run comes later either.
-        QTest::qWait(int(buildMs));
+        // Nothing of the big run came: the runner built it (after the gate let go) before
+        // it took up the small run, and handed none of it over.
+        QCOMPARE(builds.load(), 2);
         const SimulationRunner::Batch late = runner.takeFrames();
         QCOMPARE(late.frameCount, std::size_t(0));
         QVERIFY(late.agents.empty());
