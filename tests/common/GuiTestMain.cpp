@@ -2,9 +2,17 @@
 #include "TestRegistry.h"
 
 #include <QApplication>
+#include <QTemporaryDir>
 
 int main(int argc, char** argv)
 {
+    // Every test process gets a home of its own: QSettings and QStandardPaths (in test mode
+    // too, ~/.qttest) write under it, so test classes that run side by side (ctest -j) never
+    // read each other's saved settings (a viewport overlay one turned on, a colouring
+    // another remembered). Removed when the process ends.
+    QTemporaryDir home;
+    if (home.isValid())
+        qputenv("HOME", home.path().toLocal8Bit());
     QApplication app(argc, argv);
     return throng::test::runRegisteredTests(argc, argv);
 }
