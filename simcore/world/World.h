@@ -205,7 +205,6 @@ private:
                                 std::span<const Neighbour> near, const TypeSteering& s) const;
     // Agents inside a wall or obstacle at the start: where each walks out to (Constraints.h).
     void findEscapes();
-    void commit(std::size_t i, std::uint64_t& wallCrossings);
     // The boids kernel (WorldFlock.cpp): sense, steer and integrate fused for a flier type
     // whose behaviours are only separation, alignment, cohesion, pursuit, containment, wander.
     void buildBoidKernel(bool enabled, bool collideShortcut);
