@@ -193,16 +193,6 @@ private:
     void addAgent(const Scene& scene, AgentId id, std::uint16_t type, glm::vec3 pos, float headingRad, int goal,
                   int path, AgentId leader);
 
-    // Step phases, each for one agent; see WorldStep.cpp.
-    // `sink`, when given, hears each behaviour's force (describeAgent); null in the step.
-    glm::vec3 steer(std::size_t i, const SteeringAgent& self, std::span<const Neighbour> near,
-                    WanderState& wanderOut, DebugSink* sink = nullptr) const;
-    void steerAroundStatics(std::size_t i, const SteeringAgent& self, glm::vec3 goal,
-                            SteeringRequestList& requests, DebugSink* sink = nullptr) const;
-    std::span<const Neighbour> neighboursToAvoid(std::size_t i, std::span<const Neighbour> near,
-                                                 Neighbour* buffer) const;
-    glm::vec3 avoidReciprocally(std::size_t i, const SteeringAgent& self, glm::vec3 force,
-                                std::span<const Neighbour> near, const TypeSteering& s) const;
     // Agents inside a wall or obstacle at the start: where each walks out to (Constraints.h).
     void findEscapes();
     // The boids kernel (WorldFlock.cpp): sense, steer and integrate fused for a flier type

@@ -4,6 +4,7 @@
 #include "simcore/world/World.h"
 
 #include "simcore/world/Sense.h"
+#include "simcore/world/Steer.h"
 
 #include "simcore/world/DebugSink.h"
 
@@ -145,7 +146,7 @@ void World::describeAgent(std::size_t i, DebugSink& sink) const
                        s.obstacles.whiskerAngleRad);
 
     WanderState wander;
-    sink.steering(steer(i, self, {near.data(), count}, wander, &sink));
+    sink.steering(steer(view(), m_brains, i, self, {near.data(), count}, wander, &sink));
 
     // The way ahead: an A* walker's waypoints from the current one, or its path's points.
     std::vector<glm::vec3> way;

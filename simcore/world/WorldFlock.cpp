@@ -1,6 +1,6 @@
 // The boids kernel: one agent step (sense, steer, integrate) for a flier type whose
 // behaviours are only separation, alignment, cohesion, pursuit, containment and wander
-// (Reynolds 1987), fused. It computes what World::steer and integrateVehicle compute for
+// (Reynolds 1987), fused. It computes what steer (Steer.h) and integrateVehicle compute for
 // such a type, in the same order, but in one pass over the neighbours: their positions,
 // velocities and headings are read by index (no Neighbour copies, no request list), the
 // three flocking sums accumulate together, and the vehicle step skips the re-normalising

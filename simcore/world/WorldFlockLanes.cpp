@@ -193,7 +193,7 @@ template <class F>
         }
     }
 
-    // Steer, in World::steer's order: containment, separation, pursuit, alignment,
+    // Steer, in steer's (Steer.h) order: containment, separation, pursuit, alignment,
     // cohesion, wander, each behaviour's formula from BehaviourMath.h.
     const V3 heading = select(speedNow > kTiny, V * (1.0f / speedNow), Fwd);
     V3 sum = select(contained, lanes<F>(contain), V3{});

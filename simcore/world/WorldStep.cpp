@@ -8,6 +8,7 @@
 #include "simcore/world/Commit.h"
 #include "simcore/world/Constraints.h"
 #include "simcore/world/Sense.h"
+#include "simcore/world/Steer.h"
 
 #include "simcore/scene/StepRate.h"
 
@@ -58,7 +59,7 @@ void World::stepOnce()
     m_traffic.beforeStep(m_agents);
 
     // Steer, avoid, integrate and constrain, agent by agent: the general path (stepAgent,
-    // WorldSteer.cpp), the walker kernel (WorldWalk.cpp) or the boids kernel
+    // Steer.cpp), the walker kernel (WorldWalk.cpp) or the boids kernel
     // (WorldFlock*.cpp). With fliers, agents are stepped in the grid's order (by cell, then
     // by height) when it holds them all: consecutive boids then query the same columns at
     // rising heights (NeighbourGrid::forEachNearestSweep) and read neighbours that are
@@ -190,7 +191,7 @@ void World::stepAgent(std::size_t i, bool hasStatics, NeighbourGrid::Sweep* swee
     const std::size_t count = neighboursThisStep(i, near.data());
     // Steer: the type's behaviours, combined.
     WanderState wanderNext;
-    glm::vec3 force = steer(i, self, {near.data(), count}, wanderNext) + m_brains.turnForce(i, self);
+    glm::vec3 force = steer(view(), m_brains, i, self, {near.data(), count}, wanderNext) + m_brains.turnForce(i, self);
     // A walker that only keeps its distance, with an oncoming walker in its way, steps to its
     // right (KeepRight.h), as people do: two crowds meeting head-on form lanes instead of
     // pressing face to face for good.
@@ -202,7 +203,7 @@ void World::stepAgent(std::size_t i, bool hasStatics, NeighbourGrid::Sweep* swee
                 break;
             }
     if (s.on(Behaviour::ReciprocalAvoidance) && !s.vehicle.flying && m_clock.decide)
-        force = avoidReciprocally(i, self, force, {near.data(), count}, s);
+        force = avoidReciprocally(view(), i, self, force, {near.data(), count}, s);
     // Between decisions (StepRate.h) a ground agent applies the force it decided last.
     if (!s.vehicle.flying) {
         if (m_clock.decide) {

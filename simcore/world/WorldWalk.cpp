@@ -1,9 +1,9 @@
 // The walker kernel: one agent step (sense, steer, avoid, integrate, constrain) for a
 // ground type whose behaviours are only arrival, seek, separation, unaligned collision
 // avoidance, containment, wall following, obstacle avoidance, wander and reciprocal
-// avoidance (those of `cross`, `corridor` and of an ordinary crowd), fused. It computes what World::steer,
-// World::avoidReciprocally and integrateVehicle compute for such an agent, operation for operation in the same order,
-// so the result is bit-identical to the general path (TestWalkKernel checks it); but in
+// avoidance (those of `cross`, `corridor` and of an ordinary crowd), fused. It computes
+// what steer, avoidReciprocally (Steer.h) and integrateVehicle compute for such an
+// agent, operation for operation in the same order, so the result is bit-identical to the general path (TestWalkKernel checks it); but in
 // one pass over the neighbours, read by index (no Neighbour copies, no request list),
 // with the squared distances the search already has and the type's constants made
 // usable once instead of per agent.
@@ -11,6 +11,7 @@
 
 #include "simcore/world/Constraints.h"
 #include "simcore/world/Sense.h"
+#include "simcore/world/Steer.h"
 
 #include "simcore/steering/KeepRight.h"
 #include "simcore/world/NearestList.h"
@@ -42,7 +43,7 @@ namespace {
 }
 
 // Behaviours the kernel computes. Path following only for agents without a path (then
-// World::steer asks nothing of it either; World::step sends the others the general way).
+// steer (Steer.h) asks nothing of it either; World::step sends the others the general way).
 bool fusable(const TypeSteering& s)
 {
     using B = Behaviour;
@@ -150,7 +151,7 @@ void World::stepWalker(std::size_t i)
 
     // One pass over the neighbours: separation's push (separate), the soonest threat
     // (avoidUnalignedCollisions), and the planar neighbours and oncoming walkers of
-    // reciprocal avoidance (World::avoidReciprocally).
+    // reciprocal avoidance (avoidReciprocally (Steer.h)).
     const float r = nonNegative(radius), range = w.range, maxForce = w.maxForce;
     const float horizon = w.horizonS;
     const bool unaligned = w.wUnaligned > 0.0f && horizon > kTiny;
@@ -202,7 +203,7 @@ void World::stepWalker(std::size_t i)
         }
     }
 
-    // Steer: World::steer's requests in its order, blended (blendWeighted).
+    // Steer: steer's (Steer.h) requests in its order, blended (blendWeighted).
     const bool hasGoal = m_agents.goal[i] >= 0;
     glm::vec3 sum(0.0f);
     auto add = [&](glm::vec3 force, float weight) {
@@ -223,9 +224,9 @@ void World::stepWalker(std::size_t i)
             add(stayInside(steeringAgent(m_agents, m_types, i), m_set.bounds, s.containment), w.wContainment);
     }
     if (w.aroundStatics) {
-        // Wall following and obstacle avoidance: steer's own requests (WorldSteer.cpp).
+        // Wall following and obstacle avoidance: steer's own requests (Steer.cpp).
         SteeringRequestList around;
-        steerAroundStatics(i, steeringAgent(m_agents, m_types, i), goal, around);
+        steerAroundStatics(view(), m_brains, i, steeringAgent(m_agents, m_types, i), goal, around);
         for (const SteeringRequest& request : around.requests())
             add(request.force, request.weight);
     }
@@ -253,7 +254,7 @@ void World::stepWalker(std::size_t i)
         const glm::vec3 offset = finiteOrZero(goal - p);
         const float dist = glm::length(offset);
         glm::vec3 desired(0.0f);
-        // Through an exit at full speed: it is walked through, not stopped at (World::steer).
+        // Through an exit at full speed: it is walked through, not stopped at (steer, Steer.h).
         const bool throughExit =
             m_set.goals[std::size_t(m_agents.goal[i])].exit && !(m_nav.active && m_nav.hasTarget[i]);
         const float slowing = throughExit ? 1e-6f : w.slowingM;
@@ -274,7 +275,7 @@ void World::stepWalker(std::size_t i)
         wanderNext = result.state;
         add(result.force, w.wWander);
     }
-    // A walker with nowhere to go comes to rest (as World::steer).
+    // A walker with nowhere to go comes to rest (as in steer, Steer.h).
     if (!hasGoal && m_agents.leader[i] < 0 && !(w.wWander > 0.0f))
         add(-v * (t.mass / kStandStillResponseS), 1.0f);
     glm::vec3 force = truncate(sum, t.maxForce) + glm::vec3(0.0f);  // + the brain's turn: none
@@ -282,7 +283,7 @@ void World::stepWalker(std::size_t i)
         force += keepRightForce(fwd, t.maxForce, w.keepRight);
 
     // Avoid: the velocity the blend asks for becomes the nearest that touches no neighbour
-    // within the horizon (World::avoidReciprocally between equals).
+    // within the horizon (avoidReciprocally (Steer.h) between equals).
     // (Between decisions the force held replaces it below: no avoidance is worked out.)
     if (w.reciprocal && m_clock.decide && t.mass > 0.0f && m_clock.decideDt > 0.0f) {
         const glm::vec3 wanted = v + force * (m_clock.decideDt / t.mass);

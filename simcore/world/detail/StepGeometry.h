@@ -1,5 +1,5 @@
 #pragma once
-// Small planar geometry shared by the step's phases (WorldStep.cpp, WorldSteer.cpp), and
+// Small planar geometry shared by the step's phases (WorldStep.cpp, Steer.cpp), and
 // their constants (StepConstants.h). Internal to simcore/world; inline, no state.
 #ifndef THRONG_SIMCORE_BUILD
 #error "a detail/ header, private to throng::simcore: include the module's public headers instead"

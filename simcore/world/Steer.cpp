@@ -1,6 +1,10 @@
-// The steer phase of World::step: what an agent's type's behaviours ask of it, from what
-// it senses (Sense.h). Reads only the previous state.
-#include "simcore/world/World.h"
+// The steer phase (Steer.h): what an agent's type's behaviours ask of it, from what it
+// senses (Sense.h). Reads only the previous state.
+#include "simcore/world/Steer.h"
+
+#include "simcore/world/BrainPhase.h"
+#include "simcore/world/StepView.h"
+#include "simcore/world/WorldPriority.h"
 
 #include "simcore/base/Rng.h"
 #include "simcore/steering/UninitialisedArray.h"
@@ -96,25 +100,25 @@ glm::vec3 slideAlongWall(const SteeringAgent& self, std::span<const WallSegment>
 }  // namespace
 
 // Wall following and obstacle avoidance's requests, in steer's order (after containment):
-// shared by World::steer and the walker kernel (WorldWalk.cpp), so the two add the same
+// shared by steer (Steer.h) and the walker kernel (WorldWalk.cpp), so the two add the same
 // forces with the same weights. Nothing when the world has no walls or obstacles.
-void World::steerAroundStatics(std::size_t i, const SteeringAgent& self, glm::vec3 goal,
-                               SteeringRequestList& requests, DebugSink* sink) const
+void steerAroundStatics(const StepView& v, const BrainPhase& brains, std::size_t i, const SteeringAgent& self,
+                        glm::vec3 goal, SteeringRequestList& requests, DebugSink* sink)
 {
-    const TypeSteering& s = m_types.steering[m_agents.info[i].typeIndex];
+    const TypeSteering& s = v.types.steering[v.agents.info[i].typeIndex];
     using B = Behaviour;
     auto request = [&](B b, auto&& force) {
-        requestBehaviour(s, b, m_brains.weight(i, b), force, requests, sink);
+        requestBehaviour(s, b, brains.weight(i, b), force, requests, sink);
     };
     const glm::vec3 p = self.position;
-    if (s.on(B::WallFollowing) && !m_set.walls.segments().empty()) {
+    if (s.on(B::WallFollowing) && !v.set.walls.segments().empty()) {
         std::array<WallSegment, kMaxNearWalls> walls;
         std::size_t n = 0;
         const float reach = s.walls.feelerMinM + s.walls.feelerLookaheadS * self.speed() + s.walls.standoffM +
                             self.radius;
-        m_set.walls.forEachNear(xz(p), reach, [&](std::uint32_t k) {
+        v.set.walls.forEachNear(xz(p), reach, [&](std::uint32_t k) {
             if (n < walls.size()) {
-                const Segment& seg = m_set.walls.segment(k);
+                const Segment& seg = v.set.walls.segment(k);
                 walls[n++] = {glm::vec3(seg.a.x, 0.0f, seg.a.y), glm::vec3(seg.b.x, 0.0f, seg.b.y)};
             }
         });
@@ -123,18 +127,18 @@ void World::steerAroundStatics(std::size_t i, const SteeringAgent& self, glm::ve
             request(B::WallFollowing, [&] { return slideAlongWall(self, {walls.data(), n}, goal, s.walls); });
         }
     }
-    if (s.on(B::ObstacleAvoidance) && (!m_set.circles.empty() || !m_set.boxes.empty())) {
+    if (s.on(B::ObstacleAvoidance) && (!v.set.circles.empty() || !v.set.boxes.empty())) {
         std::array<CircleObstacle, kMaxNearObstacles> circles;
         std::array<BoxObstacle, kMaxNearObstacles> boxes;
         std::size_t nc = 0, nb = 0;
         const float reach = s.obstacles.minLengthM + s.obstacles.lookaheadS * self.speed() + self.radius +
                             s.obstacles.marginM;
-        m_set.obstacleGrid.forEachNear(xz(p), reach, [&](std::uint32_t k) {
-            if (k < m_set.circles.size()) {
+        v.set.obstacleGrid.forEachNear(xz(p), reach, [&](std::uint32_t k) {
+            if (k < v.set.circles.size()) {
                 if (nc < circles.size())
-                    circles[nc++] = m_set.circles[k];
+                    circles[nc++] = v.set.circles[k];
             } else if (nb < boxes.size()) {
-                boxes[nb++] = m_set.boxes[k - m_set.circles.size()];
+                boxes[nb++] = v.set.boxes[k - v.set.circles.size()];
             }
         });
         request(B::ObstacleAvoidance,
@@ -144,41 +148,42 @@ void World::steerAroundStatics(std::size_t i, const SteeringAgent& self, glm::ve
 
 // Steer: every behaviour the type runs, in priority order, combined by blending or by
 // prioritised allocation. Pure in the previous state; the new wander state goes out.
-glm::vec3 World::steer(std::size_t i, const SteeringAgent& self, std::span<const Neighbour> near,
-                       WanderState& wanderOut, DebugSink* sink) const
+glm::vec3 steer(const StepView& v, const BrainPhase& brains, std::size_t i, const SteeringAgent& self,
+                std::span<const Neighbour> near, WanderState& wanderOut, DebugSink* sink)
 {
-    const TypeSteering& s = m_types.steering[m_agents.info[i].typeIndex];
+    const TypeSteering& s = v.types.steering[v.agents.info[i].typeIndex];
     using B = Behaviour;
     SteeringRequestList requests;
     auto request = [&](B b, auto&& force) {
-        requestBehaviour(s, b, m_brains.weight(i, b), force, requests, sink);
+        requestBehaviour(s, b, brains.weight(i, b), force, requests, sink);
     };
     const glm::vec3 p = self.position;
-    const bool hasGoal = m_agents.goal[i] >= 0;
+    const bool hasGoal = v.agents.goal[i] >= 0;
     const glm::vec3 goal =
-        hasGoal ? m_nav.goal(i, glm::vec3(m_agents.goalSpot[i].x, p.y, m_agents.goalSpot[i].y)) : p + self.forward;
-    const std::int32_t leaderIndex = m_agents.leader[i];
+        hasGoal ? v.nav.goal(i, glm::vec3(v.agents.goalSpot[i].x, p.y, v.agents.goalSpot[i].y)) : p + self.forward;
+    const std::int32_t leaderIndex = v.agents.leader[i];
     Neighbour leader;
     if (leaderIndex >= 0) {
         const auto j = std::size_t(leaderIndex);
-        leader = {m_agents.pos[j], m_agents.vel[j], m_agents.fwd[j], m_agents.radius[j], m_agents.info[j].id};
+        leader = {v.agents.pos[j], v.agents.vel[j], v.agents.fwd[j], v.agents.radius[j], v.agents.info[j].id};
     }
 
     if (s.on(B::Containment)) {
         // Only agents whose probes can reach the bounds ask; the rest are far inside.
         const float probe = s.containment.probeMinM + s.containment.probeLookaheadS * self.speed() + self.radius;
-        const glm::vec3 lo = p - m_set.bounds.min, hi = m_set.bounds.max - p;
+        const glm::vec3 lo = p - v.set.bounds.min, hi = v.set.bounds.max - p;
         const float nearest = s.vehicle.flying ? std::min({lo.x, lo.y, lo.z, hi.x, hi.y, hi.z})
                                                : std::min({lo.x, lo.z, hi.x, hi.z});  // walkers ignore height
         if (nearest < probe)
-            request(B::Containment, [&] { return stayInside(self, m_set.bounds, s.containment); });
+            request(B::Containment, [&] { return stayInside(self, v.set.bounds, s.containment); });
     }
-    steerAroundStatics(i, self, goal, requests, sink);
+    steerAroundStatics(v, brains, i, self, goal, requests, sink);
     // Separation and collision avoidance leave to lower-priority neighbours the whole
     // of making way (WorldPriority.h).
     // (The buffer is only written when priorities differ, and only as far as it is read.)
     UninitialisedArray<Neighbour, kMaxNeighbours> yielding;
-    const std::span<const Neighbour> avoided = m_types.makingWay ? neighboursToAvoid(i, near, yielding.data()) : near;
+    const std::span<const Neighbour> avoided =
+        v.types.makingWay ? neighboursToAvoid(v, i, near, yielding.data()) : near;
     request(B::Separation, [&] { return separate(self, avoided, s.separation); });
     request(B::UnalignedCollisionAvoidance, [&] { return avoidUnalignedCollisions(self, avoided, s.unaligned); });
     if (leaderIndex >= 0) {
@@ -190,25 +195,25 @@ glm::vec3 World::steer(std::size_t i, const SteeringAgent& self, std::span<const
     } else if (hasGoal) {
         request(B::Flee, [&] { return flee(self, goal, s.flee); });
     }
-    if (m_agents.path[i] >= 0) {
-        const auto k = std::size_t(m_agents.path[i]);
-        const SteeringPath path{m_set.pathPoints[k], m_set.paths[k].radiusM, m_set.paths[k].closed};
+    if (v.agents.path[i] >= 0) {
+        const auto k = std::size_t(v.agents.path[i]);
+        const SteeringPath path{v.set.pathPoints[k], v.set.paths[k].radiusM, v.set.paths[k].closed};
         // Paths lie on the ground; a flier follows one in the horizontal at its own height.
         SteeringAgent flat = self;
         if (s.vehicle.flying)
             flat.position.y = flat.velocity.y = 0.0f;
-        request(B::PathFollowing, [&] { return followPath(flat, path, s.path, m_agents.pathAlong[i]); });
+        request(B::PathFollowing, [&] { return followPath(flat, path, s.path, v.agents.pathAlong[i]); });
     }
-    if (!m_set.flow.empty())
+    if (!v.set.flow.empty())
         request(B::FlowFieldFollowing,
-                [&] { return followFlow(self, flowDirection(view(), flowSamplePoint(self, s.flow)), s.flow); });
-    if (hasGoal && m_agents.path[i] < 0) {
+                [&] { return followFlow(self, flowDirection(v, flowSamplePoint(self, s.flow)), s.flow); });
+    if (hasGoal && v.agents.path[i] < 0) {
         // An exit is walked through, not stopped at: slowing down short of it, a walker
         // whose door posts pushed it back (wall following) stood in front of the door for
         // good (issue 23). Walkers with a navigation target keep their slowing: it sets a
         // flow-field walker's pace in a crowd (WorldNav.cpp, Weidmann).
         request(B::Arrival, [&] {
-            if (!m_set.goals[std::size_t(m_agents.goal[i])].exit || (m_nav.active && m_nav.hasTarget[i]))
+            if (!v.set.goals[std::size_t(v.agents.goal[i])].exit || (v.nav.active && v.nav.hasTarget[i]))
                 return arrive(self, goal, s.arrival);
             ArrivalParams through = s.arrival;
             through.slowingDistanceM = 1e-6f;
@@ -218,21 +223,21 @@ glm::vec3 World::steer(std::size_t i, const SteeringAgent& self, std::span<const
     }
     request(B::Alignment, [&] { return align(self, near, s.alignment); });
     request(B::Cohesion, [&] { return cohere(self, near, s.cohesion); });
-    wanderOut = m_agents.wander[i];
+    wanderOut = v.agents.wander[i];
     if (s.on(B::Wander)) {
-        const std::uint64_t key = rngKey(m_seed, m_agents.info[i].id, m_clock.step);
+        const std::uint64_t key = rngKey(v.seed, v.agents.info[i].id, v.clock.step);
         const glm::vec3 random(rngRangeOf(key, kWanderX, -1.0f, 1.0f), rngRangeOf(key, kWanderY, -1.0f, 1.0f),
                                rngRangeOf(key, kWanderZ, -1.0f, 1.0f));
-        const WanderResult w = wander(self, m_agents.wander[i], random, s.wander);
+        const WanderResult w = wander(self, v.agents.wander[i], random, s.wander);
         wanderOut = w.state;
-        requests.add(w.force, s.w(B::Wander) * m_brains.weight(i, B::Wander));
+        requests.add(w.force, s.w(B::Wander) * brains.weight(i, B::Wander));
         if (sink)
-            sink->force(B::Wander, w.force, s.w(B::Wander) * m_brains.weight(i, B::Wander));
+            sink->force(B::Wander, w.force, s.w(B::Wander) * brains.weight(i, B::Wander));
     }
     // A walker or vehicle with nowhere to go comes to rest instead of coasting on what
     // separation or a collision gave it (the lowest priority: anything else comes first).
-    const bool goesSomewhere = hasGoal || m_agents.path[i] >= 0 || leaderIndex >= 0 || s.on(B::Wander) ||
-                               (!m_set.flow.empty() && s.on(B::FlowFieldFollowing));
+    const bool goesSomewhere = hasGoal || v.agents.path[i] >= 0 || leaderIndex >= 0 || s.on(B::Wander) ||
+                               (!v.set.flow.empty() && s.on(B::FlowFieldFollowing));
     if (!goesSomewhere && !s.vehicle.flying)
         requests.add(-self.velocity * (self.mass / kStandStillResponseS), 1.0f);
     return s.priority ? allocateByPriority(requests, self.maxForce) : blendWeighted(requests, self.maxForce);
@@ -240,16 +245,16 @@ glm::vec3 World::steer(std::size_t i, const SteeringAgent& self, std::span<const
 
 // The neighbours agent i avoids: all but those of lower priority, which make way for it.
 // `near` itself when nobody is of lower priority (always, between equals).
-std::span<const Neighbour> World::neighboursToAvoid(std::size_t i, std::span<const Neighbour> near,
-                                                    Neighbour* buffer) const
+std::span<const Neighbour> neighboursToAvoid(const StepView& v, std::size_t i, std::span<const Neighbour> near,
+                                             Neighbour* buffer)
 {
-    if (!m_types.makingWay)
+    if (!v.types.makingWay)
         return near;  // all equals: nobody makes way
-    const std::uint32_t* index = &m_agents.nearIndex[i * kMaxNeighbours];
-    const float priority = collision(i).priority;
+    const std::uint32_t* index = &v.agents.nearIndex[i * kMaxNeighbours];
+    const float priority = v.collision(i).priority;
     std::size_t n = 0;
     for (std::size_t k = 0; k < near.size(); ++k)
-        if (collision(index[k]).priority >= priority)
+        if (v.collision(index[k]).priority >= priority)
             buffer[n++] = near[k];
     return n == near.size() ? near : std::span<const Neighbour>(buffer, n);
 }
@@ -259,27 +264,27 @@ std::span<const Neighbour> World::neighboursToAvoid(std::size_t i, std::span<con
 // avoidance by priority (WorldPriority.h): an agent that has stopped will not move and
 // one of higher priority will not yield, so the other takes all of it; against one of
 // lower priority an agent takes none and does not see it here at all.
-glm::vec3 World::avoidReciprocally(std::size_t i, const SteeringAgent& self, glm::vec3 force,
-                                   std::span<const Neighbour> near, const TypeSteering& s) const
+glm::vec3 avoidReciprocally(const StepView& v, std::size_t i, const SteeringAgent& self, glm::vec3 force,
+                            std::span<const Neighbour> near, const TypeSteering& s)
 {
-    // Decided for the time until the next decision (StepRate.h), m_clock.decideDt.
-    if (self.mass <= 0.0f || m_clock.decideDt <= 0.0f)
+    // Decided for the time until the next decision (StepRate.h), v.clock.decideDt.
+    if (self.mass <= 0.0f || v.clock.decideDt <= 0.0f)
         return force;
-    const glm::vec3 wanted = self.velocity + force * (m_clock.decideDt / self.mass);
+    const glm::vec3 wanted = self.velocity + force * (v.clock.decideDt / self.mass);
     glm::vec2 preferred(wanted.x, wanted.z);
     const float speed = glm::length(preferred);
     if (speed > self.maxSpeed && speed > 0.0f)
         preferred *= self.maxSpeed / speed;
     UninitialisedArray<PlanarNeighbour, kMaxNeighbours> others;  // the first `count` are written, and read
-    const std::uint32_t* index = &m_agents.nearIndex[i * kMaxNeighbours];
+    const std::uint32_t* index = &v.agents.nearIndex[i * kMaxNeighbours];
     const glm::vec2 fwd = xz(self.forward);
     std::size_t oncoming = 0, count = 0;
-    const TypeCollision& mine = collision(i);
+    const TypeCollision& mine = v.collision(i);
     for (std::size_t k = 0; k < near.size(); ++k) {
-        const bool stopped = m_agents.stopped[index[k]] != 0;
+        const bool stopped = v.agents.stopped[index[k]] != 0;
         // Between equals (no priorities in the scene) the share is 1 or 1/2, as avoidanceShare says.
         const float share =
-            m_types.makingWay ? avoidanceShare(mine, collision(index[k]), stopped) : (stopped ? 1.0f : 0.5f);
+            v.types.makingWay ? avoidanceShare(mine, v.collision(index[k]), stopped) : (stopped ? 1.0f : 0.5f);
         if (share <= 0.0f)
             continue;
         PlanarNeighbour& o = others[count++];
@@ -296,9 +301,10 @@ glm::vec3 World::avoidReciprocally(std::size_t i, const SteeringAgent& self, glm
         preferred = preferred * turn.x + right * turn.y;
     }
     const PlanarBody body{xz(self.position), xz(self.velocity), self.radius, self.maxSpeed};
-    const glm::vec2 v = sim::avoidReciprocally(body, preferred, {others.data(), count}, m_clock.decideDt, s.reciprocal);
-    return (glm::vec3(v.x, 0.0f, v.y) - glm::vec3(self.velocity.x, 0.0f, self.velocity.z)) *
-           (self.mass / m_clock.decideDt);
+    const glm::vec2 chosen =
+        sim::avoidReciprocally(body, preferred, {others.data(), count}, v.clock.decideDt, s.reciprocal);
+    return (glm::vec3(chosen.x, 0.0f, chosen.y) - glm::vec3(self.velocity.x, 0.0f, self.velocity.z)) *
+           (self.mass / v.clock.decideDt);
 }
 
 }  // namespace throng::sim
