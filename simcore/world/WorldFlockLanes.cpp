@@ -12,6 +12,11 @@
 // (1 thread). Where the CPU has AVX2, eight go together in one function built for it
 // (steerEightBoids), chosen at run time, so the build still runs on any x86-64: about 7 %
 // less again (2 threads).
+// GCC takes the arrays steerLanes gathers into for unset in its one-lane form (steerBoid),
+// though the gather writes every lane of each: a false -Wmaybe-uninitialized, which the
+// braces that would silence it cost the four- and eight-lane forms 4 % of a flock's step.
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+
 #include "simcore/world/World.h"
 
 #include "simcore/world/Sense.h"
@@ -105,14 +110,12 @@ template <class F>
     const V3 kUp{F{}, splat<F>(1.0f), F{}};
     // Gather: each lane's state, its type's parameters and its neighbours' sums, and the
     // parts that take a branch of their own (containment, pursuit's quarry, wander's
-    // random jitter). (Every lane is written below; the braces only keep GCC from taking
-    // the one-lane form's arrays for unset.)
-    glm::vec3 p[kLanes]{}, v[kLanes]{}, fwd[kLanes]{}, up0[kLanes]{}, contain[kLanes]{}, quarry[kLanes]{},
-        quarryVel[kLanes]{}, jitter[kLanes]{}, prevTarget[kLanes]{}, push[kLanes]{}, headings[kLanes]{},
-        velocities[kLanes]{}, centre[kLanes]{};
-    F maxSpeed{}, n{}, radius{}, probeMin{}, probeAhead{};
-    M pursues{}, matchSpeed{}, wanders{};
-    const BoidType* types[kLanes]{};
+    // random jitter). Every lane of each is written below.
+    glm::vec3 p[kLanes], v[kLanes], fwd[kLanes], up0[kLanes], contain[kLanes], quarry[kLanes], quarryVel[kLanes],
+        jitter[kLanes], prevTarget[kLanes], push[kLanes], headings[kLanes], velocities[kLanes], centre[kLanes];
+    F maxSpeed, n, radius, probeMin, probeAhead;
+    M pursues, matchSpeed, wanders;
+    const BoidType* types[kLanes];
     bool oneType = true;
     for (int l = 0; l < kLanes; ++l) {
         const std::size_t i = boid[l];
