@@ -225,8 +225,8 @@ void BrainPhase::run(const StepView& v, AgentColumns& agents, WorldTraffic& traf
             const Goal& goal = v.set.goals[std::size_t(g)];
             const AgentId id = v.agents.info[i].id;
             agents.goalSpot[i] = detail::goalSpot(goal.position, goal.radiusM, goal.exit, v.agents.radius[i],
-                                             rngUniform(v.seed, id, std::uint64_t(g) + 1, kGoalSpotR),
-                                             rngUniform(v.seed, id, std::uint64_t(g) + 1, kGoalSpotA));
+                                                  rngUniform(v.seed, id, std::uint64_t(g) + 1, kGoalSpotR),
+                                                  rngUniform(v.seed, id, std::uint64_t(g) + 1, kGoalSpotA));
         });
     }
     // Vehicles with a speed output are driven by it along their lanes (this step's traffic

@@ -90,7 +90,7 @@ glm::vec3 WorldTraffic::obeySignal(const StepView& v, std::size_t i, const Steer
         return force;
     PedestrianSignal& sig = signal[i];
     sig = system->pedestrianSignal(xz(v.agents.pos[i]), wantedHeading(v, i), glm::length(xz(v.agents.vel[i])),
-                                             v.agents.radius[i], v.agents.info[i].id);
+                                   v.agents.radius[i], v.agents.info[i].id);
     if (sig.clearing) {
         // Red caught it on the road: to the nearer kerb at full speed, whatever its path says.
         return seek(self, onGround(sig.clearPoint, self.position.y));
