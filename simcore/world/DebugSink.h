@@ -2,10 +2,9 @@
 // What the World senses and decides for one agent, published for drawing: the classic
 // steering annotations of Reynolds (1999) and OpenSteer (view cone, neighbours, each
 // behaviour's force and their blend, feelers, the planned way, the field it follows and
-// where it steers). The
-// World publishes to a sink only for the agents it is asked about (World::describeAgent),
-// never for the whole crowd and never from inside the step. Qt-free; the editor draws
-// what a DebugRecorder kept.
+// where it steers). The World publishes to a sink only for the agents it is asked about
+// (World::describeAgent), never for the whole crowd and never from inside the step.
+// Qt-free; the editor draws what a DebugRecorder kept.
 //
 // Positions are in the World's coordinates (relative to World::origin, as its frames are).
 
