@@ -63,7 +63,8 @@ public:
     std::size_t checkpointBytes() const;
     // Called on the runner thread just before it builds a World for a run from frame 0:
     // tests hold a build there to show that a run asked for meanwhile does not wait for
-    // it. Call before start().
+    // it. Set it while no World is being built (before start(), or once the run's first
+    // frame has come): the runner reads it without a lock.
     void setBuildGate(std::function<void()> gate) { m_buildGate = std::move(gate); }
     // Computes frames until `frameCount` frames exist (including frame 0).
     void setTarget(std::size_t frameCount);
