@@ -86,10 +86,10 @@ void SteeringOverlay::add(std::span<const sim::AgentDebug> agents, ShapeMesh& me
         }
         for (const sim::AgentDebug::Feeler& feeler : a.feelers)
             mesh.addLine(xz(feeler.from), xz(feeler.to), kLineM, palette::kFeeler);
-        // The field it follows: a short arrow from each sample along its direction.
+        // The field it follows: a short arrow from each sample along its direction (none
+        // where it has none).
         for (const sim::AgentDebug::FieldSample& f : a.field)
-            if (f.direction != glm::vec3(0.0f))
-                addArrow(mesh, xz(f.at), xz(f.direction) * kFieldArrowM, kArrowM * 0.6f, palette::kFlowArrow);
+            addArrow(mesh, xz(f.at), xz(f.direction) * kFieldArrowM, kArrowM * 0.6f, palette::kFlowArrow);
         for (const sim::AgentDebug::Force& f : a.forces) {
             const glm::vec3 weighted = f.force * f.weight;
             if (glm::length(weighted) > kTinyForceN)

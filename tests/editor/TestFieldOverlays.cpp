@@ -1,12 +1,16 @@
 // The viewport's field overlays without GL: the sketched field's arrows follow a stroke and
 // keep out of walls, a goal's arrows lead down an L-shaped corridor and round its corner,
 // the arrow count stays under its cap on a 1 km set, and the density heatmap gives persons
-// per m² (LocalDensity's kernel) on a colour scale that starts transparent.
+// per m² (LocalDensity's kernel) on a colour scale that starts transparent. And the
+// steering overlay draws the field a watched agent follows: an arrow from each sample
+// along its direction, none where the field gives none.
 #include "TestRegistry.h"
 
 #include "editor/viewport/DensityHeatmap.h"
 #include "editor/viewport/FieldArrows.h"
 #include "editor/viewport/ShapeMesh.h"
+#include "editor/viewport/SteeringOverlay.h"
+#include "editor/viewport/ViewportPalette.h"
 #include "simcore/world/LocalDensity.h"
 
 #include <glm/geometric.hpp>
@@ -456,6 +460,44 @@ private slots:
             for (float x = -40.5f; x < 40.0f; x += 1.0f, ++cells)
                 sum += double(map.densityAt({x, z}));
         QVERIFY(std::abs(sum / double(cells) - 10.0) < 0.5);
+    }
+
+    void steeringOverlayDrawsTheFieldAnAgentFollows()
+    {
+        sim::AgentDebug a;
+        a.id = 1;
+        // Three samples with a direction, two without (on a wall's cells), far apart.
+        const std::vector<sim::AgentDebug::FieldSample> samples{
+            {{0.0f, 0.0f, 0.0f}, {1.0f, 0.0f, 0.0f}},   {{5.0f, 0.0f, 0.0f}, {0.0f, 0.0f, -1.0f}},
+            {{10.0f, 0.0f, 0.0f}, {0.6f, 0.0f, 0.8f}},  {{0.0f, 0.0f, 5.0f}, {0.0f, 0.0f, 0.0f}},
+            {{5.0f, 0.0f, 5.0f}, {0.0f, 0.0f, 0.0f}}};
+        a.field = samples;
+        auto fieldVertices = [](const sim::AgentDebug& agent) {
+            ShapeMesh mesh;
+            SteeringOverlay::add(std::span(&agent, 1), mesh);
+            std::vector<glm::vec2> out;
+            for (const ShapeVertex& v : mesh.vertices())
+                if (v.colour == palette::kFlowArrow)
+                    out.emplace_back(v.position.x, v.position.z);
+            return out;
+        };
+        const std::vector<glm::vec2> drawn = fieldVertices(a);
+        for (const sim::AgentDebug::FieldSample& f : samples) {
+            const glm::vec2 at(f.at.x, f.at.z), dir(f.direction.x, f.direction.z);
+            auto near = [&](glm::vec2 q, float within) {
+                return std::any_of(drawn.begin(), drawn.end(), [&](glm::vec2 p) { return glm::distance(p, q) < within; });
+            };
+            if (dir == glm::vec2(0.0f)) {
+                QVERIFY2(!near(at, 1.0f), "an arrow where the field gives no direction");
+            } else {
+                // From the sample, a third of a metre or so along its direction.
+                QVERIFY(near(at, 0.1f));
+                QVERIFY2(near(at + dir * 0.35f, 0.1f), qPrintable(QString("no tip along (%1, %2)").arg(dir.x).arg(dir.y)));
+                QVERIFY(!near(at - dir * 0.35f, 0.2f));
+            }
+        }
+        a.field.clear();
+        QVERIFY(fieldVertices(a).empty());
     }
 };
 
