@@ -485,14 +485,16 @@ private slots:
         for (const sim::AgentDebug::FieldSample& f : samples) {
             const glm::vec2 at(f.at.x, f.at.z), dir(f.direction.x, f.direction.z);
             auto near = [&](glm::vec2 q, float within) {
-                return std::any_of(drawn.begin(), drawn.end(), [&](glm::vec2 p) { return glm::distance(p, q) < within; });
+                return std::any_of(drawn.begin(), drawn.end(),
+                                   [&](glm::vec2 p) { return glm::distance(p, q) < within; });
             };
             if (dir == glm::vec2(0.0f)) {
                 QVERIFY2(!near(at, 1.0f), "an arrow where the field gives no direction");
             } else {
                 // From the sample, a third of a metre or so along its direction.
                 QVERIFY(near(at, 0.1f));
-                QVERIFY2(near(at + dir * 0.35f, 0.1f), qPrintable(QString("no tip along (%1, %2)").arg(dir.x).arg(dir.y)));
+                QVERIFY2(near(at + dir * 0.35f, 0.1f),
+                         qPrintable(QString("no tip along (%1, %2)").arg(dir.x).arg(dir.y)));
                 QVERIFY(!near(at - dir * 0.35f, 0.2f));
             }
         }
