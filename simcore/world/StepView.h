@@ -31,6 +31,9 @@ struct StepView {
     bool allFliers;   // no obstacles, crosswalks or leaders to count for anyone
     float maxRadius;  // the largest body radius, m
     std::uint64_t seed;  // the World's: random draws are keyed by it (Rng.h)
+    // Neighbour searches start from last step's k nearest (lastNearestBound, Sense.h)
+    // instead of the perception radius: the same result, fewer cells (WorldOptions).
+    bool warmSearch;
 
     const TypeParams& type(std::size_t i) const { return types.params[agents.info[i].typeIndex]; }
     const TypeCollision& collision(std::size_t i) const { return types.collision[agents.info[i].typeIndex]; }

@@ -46,9 +46,9 @@ struct WorldOptions {
     // trusting what the boids kernel found (tests compare)
     bool collideShortcut = true;
     bool walkKernel = true;     // false: walkers take the general steering path too (tests compare the two)
-    // false: agents step in index order and the kernels' neighbour searches start from the
-    // perception radius, instead of in the grid's order (fliers) from last step's
-    // neighbours (the result is the same; tests compare)
+    // false: agents step in index order and neighbour searches start from the perception
+    // radius, instead of in the grid's order (fliers) from last step's neighbours (the
+    // result is the same; tests compare)
     bool neighbourSweep = true;
     // false: the boids kernel steers four boids at a time even where the CPU has AVX2,
     // instead of eight (the result is the same; tests compare)
@@ -249,7 +249,7 @@ private:
     StepView view() const
     {
         return {m_agents, m_types,  m_set,       m_clock,      m_grid,      m_traffic,
-                m_nav,    m_team,   m_hasFliers, m_allFliers, m_maxRadius, m_seed};
+                m_nav,    m_team,   m_hasFliers, m_allFliers, m_maxRadius, m_seed, m_neighbourSweep};
     }
     const TypeCollision& collision(std::size_t i) const { return m_types.collision[m_agents.info[i].typeIndex]; }
     // Agent i's neighbours: those the brain phase gathered this step, or from the grid
