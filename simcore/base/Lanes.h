@@ -1,6 +1,6 @@
 #pragma once
 // Floats side by side, four (F4) or eight (F8), for the boids kernel's search and steering
-// of several boids at once (WorldFlockSense.cpp, WorldFlockLanes.cpp). GCC's vector
+// of several boids at once (BoidKernelSense.cpp, BoidKernelLanes.cpp). GCC's vector
 // extension: SSE on x86-64, plain code elsewhere; eight lanes are one AVX register inside
 // a function built for AVX2 (World::steerEightBoids) and two SSE ones anywhere else. A
 // mask picks lanes with the vector form of ?:, which GCC has in C++. Each helper does per

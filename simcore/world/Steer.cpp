@@ -100,7 +100,7 @@ glm::vec3 slideAlongWall(const SteeringAgent& self, std::span<const WallSegment>
 }  // namespace
 
 // Wall following and obstacle avoidance's requests, in steer's order (after containment):
-// shared by steer (Steer.h) and the walker kernel (WorldWalk.cpp), so the two add the same
+// shared by steer (Steer.h) and the walker kernel (WalkKernel.cpp), so the two add the same
 // forces with the same weights. Nothing when the world has no walls or obstacles.
 void steerAroundStatics(const StepView& v, const BrainPhase& brains, std::size_t i, const SteeringAgent& self,
                         glm::vec3 goal, SteeringRequestList& requests, DebugSink* sink)

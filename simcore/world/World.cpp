@@ -104,7 +104,6 @@ void World::build(const Scene& scene, const WorldOptions& options)
     m_clock.subSteps = subStepsPerFrame(scene.settings.fps);
     m_clock.dt = physicsStepS(scene.settings.fps);
     m_neighbourSweep = options.neighbourSweep;
-    m_steerEight = options.steerEight && canSteerEight();
 
     // Cells of half the perception radius on the ground: a nearest-first query then
     // stops a little beyond the k-th neighbour. Fliers get cells as large as the radius,
@@ -147,8 +146,13 @@ void World::build(const Scene& scene, const WorldOptions& options)
     }
     m_grid.configure(scene.settings.boundsMin, scene.settings.boundsMax, cell);
     m_grid.rebuild(m_agents.pos, m_hasFliers, m_agents.out, &m_team);
-    buildBoidKernel(options.boidKernel, options.collideShortcut);
-    buildWalkKernel(options.walkKernel);
+    // Brains change weights and speeds per agent, layers or priorities change whom an
+    // agent perceives and avoids, and signals hold agents back: those worlds keep the
+    // general path.
+    const bool plain = !m_brains.active() && !m_types.makingWay && m_traffic.signal.empty();
+    m_boids.build(m_types, m_clock.dt, m_agents.size(), options.boidKernel, plain, options.collideShortcut,
+                  options.steerEight);
+    m_walk.build(m_types, m_set, m_clock.dt, options.walkKernel, plain);
 }
 
 void World::buildStatics(const Scene& scene)
@@ -433,7 +437,7 @@ void World::addAgent(const Scene& scene, AgentId id, std::uint16_t type, glm::ve
     m_agents.heldForce.push_back(glm::vec3(0.0f));
     m_agents.nearIndex.resize(m_agents.nearIndex.size() + kMaxNeighbours);
     m_agents.nearCount.push_back(0);
-    m_collideFree.push_back(0);
+    m_boids.addAgent();
     m_agents.resolvedPos.push_back(pos);
 }
 

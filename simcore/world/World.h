@@ -9,6 +9,7 @@
 #include "simcore/steering/Steering.h"
 #include "simcore/world/AgentColumns.h"
 #include "simcore/world/AgentTypes.h"
+#include "simcore/world/BoidKernel.h"
 #include "simcore/world/BrainPhase.h"
 #include "simcore/world/CountPhase.h"
 #include "simcore/world/FrameCache.h"
@@ -18,6 +19,7 @@
 #include "simcore/world/StepClock.h"
 #include "simcore/world/StepCounters.h"
 #include "simcore/world/TypeSteering.h"
+#include "simcore/world/WalkKernel.h"
 #include "simcore/world/WorldNav.h"
 #include "simcore/world/WorldPriority.h"
 #include "simcore/world/WorldTraffic.h"
@@ -101,14 +103,14 @@ public:
     // The dense index of the agent that agent i pursues, evades or follows; -1 for none.
     std::int32_t leaderOf(std::size_t i) const { return m_agents.leader[i]; }
     AgentKind agentKind(std::size_t i) const { return m_types.params[m_agents.info[i].typeIndex].kind; }
-    // Agents of this type step through the fused boids kernel (WorldFlock.cpp).
-    bool usesBoidKernel(std::size_t typeIndex) const { return m_boidKernel[typeIndex] != 0; }
+    // Agents of this type step through the fused boids kernel (BoidKernel.h).
+    bool usesBoidKernel(std::size_t typeIndex) const { return m_boids.runs(typeIndex); }
     // How many boids the kernel steers at once: 8 where the CPU has AVX2 (canSteerEight)
     // and WorldOptions::steerEight asks for it, else 4.
-    int boidLanes() const { return m_steerEight ? 8 : 4; }
-    static bool canSteerEight();
-    // Agents of this type without a path step through the fused walker kernel (WorldWalk.cpp).
-    bool usesWalkKernel(std::size_t typeIndex) const { return m_walkKernel[typeIndex] != 0; }
+    int boidLanes() const { return m_boids.lanes(); }
+    static bool canSteerEight() { return BoidKernel::canSteerEight(); }
+    // Agents of this type without a path step through the fused walker kernel (WalkKernel.h).
+    bool usesWalkKernel(std::size_t typeIndex) const { return m_walk.runs(typeIndex); }
     // Navigation (WorldNav.cpp): agent i left through an exit goal; it is no longer
     // simulated or perceived and stays where it left (arrivalTimeS says when).
     bool isOut(std::size_t i) const { return m_agents.out[i] != 0; }
@@ -195,56 +197,13 @@ private:
 
     // Agents inside a wall or obstacle at the start: where each walks out to (Constraints.h).
     void findEscapes();
-    // The boids kernel (WorldFlock.cpp): sense, steer and integrate fused for a flier type
-    // whose behaviours are only separation, alignment, cohesion, pursuit, containment, wander.
-    void buildBoidKernel(bool enabled, bool collideShortcut);
-    // sweep: the thread's cursor when agents are stepped in the grid's order, else null.
+    // One agent's sense, steer, avoid, integrate and constrain (WorldStep.cpp): the general
+    // path, or the walker or boids kernel for the types they run. sweep: the thread's
+    // cursor when agents are stepped in the grid's order, else null.
     void stepAgent(std::size_t i, bool hasStatics, NeighbourGrid::Sweep* sweep);
-    void stepBoid(std::size_t i, NeighbourGrid::Sweep* sweep);
-    // stepBoid in two passes (WorldFlock.cpp): senseBoid finds the k nearest and sums
-    // over them (the branchy part), steerBoid steers and integrates (chains of square
-    // roots and divisions, few branches). stepInGridOrder runs them over batches of boids,
-    // one pass after the other: the same arithmetic, about 5 % faster than boid by boid
-    // (the steering of consecutive boids can overlap in the core, no mispredicted search
-    // branch between them), and the steering then goes four boids at a time (steerBoids).
-    struct BoidSense {
-        glm::vec3 push, headings, velocities, centre;
-        std::uint32_t count;
-        // Where each neighbour's old velocity takes it (x, y and z apart, so the check of
-        // a boid's next position against all of them is one vector's), and how close it
-        // may come.
-        float driftX[kMaxNeighbours], driftY[kMaxNeighbours], driftZ[kMaxNeighbours];
-        float keepOut[kMaxNeighbours];
-    };
-    void senseBoid(std::size_t i, NeighbourGrid::Sweep* sweep, BoidSense& out);
-    // senseBoid's two parts: the k nearest within a squared bound, then the sums over them.
-    using BoidNearest = NearestList<kMaxNeighbours>;
-    void searchBoid(std::size_t i, NeighbourGrid::Sweep* sweep, float startBound, BoidNearest& best) const;
-    void sumBoid(std::size_t i, const BoidNearest& best, BoidSense& out);
-    // senseBoid for boid[0, count), up to four consecutive boids of the grid's order in one
-    // cell, searched together (WorldFlockSense.cpp).
-    void senseFourBoids(const std::uint32_t* boid, int count, NeighbourGrid::Sweep& sweep, BoidSense* out);
-    // The steering and integration of boids (WorldFlockLanes.cpp), written once as
-    // steerLanes over a lane type F of one, four or eight floats, for boid[0, width):
-    // steerBoid for one, steerBoids for boid[0, count), eight or four at a time where it can.
-    void steerBoid(std::size_t i, const BoidSense& in);
-    void steerBoids(const std::uint32_t* boid, const BoidSense* sensed, std::size_t count);
-    template <class F>
-    void steerLanes(const std::uint32_t* boid, const BoidSense* sensed);
-    void steerFourBoids(const std::uint32_t* boid, const BoidSense* sensed);
-    void steerEightBoids(const std::uint32_t* boid, const BoidSense* sensed);  // only where canSteerEight
-    // steerLanes' last part, lane by lane: the ground (for a boid below its floor, or over
-    // a height field), and the collide pass's flag and the next state stored.
-    void groundBoid(std::size_t i, glm::vec3& pos, glm::vec3& vel, glm::vec3 nextFwd) const;
-    void storeBoid(std::size_t i, bool collideFree, glm::vec3 pos, glm::vec3 vel, glm::vec3 nextFwd, glm::vec3 side,
-                   glm::vec3 nextUp, const WanderState& wanderNext);
     // Steps agents order[begin, end) (the grid's order), boids in batches.
     void stepInGridOrder(const std::uint32_t* order, std::size_t begin, std::size_t end, bool hasStatics,
                          NeighbourGrid::Sweep& sweep);
-    // The walker kernel (WorldWalk.cpp): the same for a ground type whose behaviours are only
-    // arrival, seek, separation, unaligned collision and reciprocal avoidance, containment, wander.
-    void buildWalkKernel(bool enabled);
-    void stepWalker(std::size_t i);
     // What the phases read of this World besides their own state (StepView.h).
     StepView view() const
     {
@@ -261,35 +220,8 @@ private:
     void addTrafficAgents(const Scene& scene);
 
     AgentTypes m_types;  // per type: body, steering, collision layers
-    std::vector<std::uint8_t> m_boidKernel;  // per type: steps through stepBoid
-    // Per type, the boids kernel's parameters made usable once (WorldFlock.cpp): weights
-    // (0 = off), gains = mass / response time, lengths in m.
-    struct BoidType {
-        float wContainment, wSeparation, wPursuit, wAlignment, wCohesion, wWander;
-        float mass, maxForce, range, damping;
-        float gainPursuit, gainAlignment, gainCohesion, gainWander;
-        float predictionCapS, slowingM, jitterM, wanderRadiusM, wanderDistanceM;
-        float minSpeed, bankGain, bankBlend;
-    };
-    std::vector<BoidType> m_boidTypes;
-    // Per agent, written by stepBoid: kCollideFree (Collide.h) when none of its k nearest
-    // can be within contact distance after the step, provided every agent's next position
-    // lies within m_boidSlackM of where its old velocity would take it (the collide phase
-    // checks that).
-    std::vector<std::uint8_t> m_collideFree;
-    float m_boidSlackM = 0.0f;
-    std::vector<std::uint8_t> m_walkKernel;  // per type: walkers without a path step through stepWalker
-    // Per type, the walker kernel's parameters made usable once (WorldWalk.cpp).
-    struct WalkType {
-        float wContainment, wSeparation, wUnaligned, wArrival, wSeek, wWander;
-        bool reciprocal;
-        float keepRight;     // as m_types.keepRight
-        bool aroundStatics;  // wall following or obstacle avoidance, and walls or obstacles to steer round
-        bool constrained;    // walls or circles to hold the body out of (constrain, Constraints.h)
-        float maxForce, range, damping, horizonS, marginM, brake, lateral;
-        float toleranceM, slowingM, gainArrival, gainSeek, dtOverMass;
-    };
-    std::vector<WalkType> m_walkTypes;
+    BoidKernel m_boids;  // the boids kernel (BoidKernel.h)
+    WalkKernel m_walk;  // the walker kernel (WalkKernel.h)
 
     StaticSet m_set;  // walls, obstacles, goals, paths, lights, crosswalks, flow, terrain, bounds
 
@@ -300,7 +232,6 @@ private:
     bool m_hasFliers = false;    // then the grid also sorts by height for 3D queries
     bool m_allFliers = true;     // no obstacles or crosswalks to count for anyone
     bool m_neighbourSweep = true;  // WorldOptions::neighbourSweep
-    bool m_steerEight = false;     // WorldOptions::steerEight, where canSteerEight
     float m_maxRadius = 0.0f;    // the largest body radius, m
     CountPhase m_count;  // the run's figures (StepCounters.h)
     std::uint64_t m_seed = 1;

@@ -59,8 +59,8 @@ void World::stepOnce()
     m_traffic.beforeStep(m_agents);
 
     // Steer, avoid, integrate and constrain, agent by agent: the general path (stepAgent,
-    // Steer.cpp), the walker kernel (WorldWalk.cpp) or the boids kernel
-    // (WorldFlock*.cpp). With fliers, agents are stepped in the grid's order (by cell, then
+    // Steer.cpp), the walker kernel (WalkKernel.cpp) or the boids kernel
+    // (BoidKernel*.cpp). With fliers, agents are stepped in the grid's order (by cell, then
     // by height) when it holds them all: consecutive boids then query the same columns at
     // rising heights (NeighbourGrid::forEachNearestSweep) and read neighbours that are
     // already in cache. Each agent still reads only the old state and writes only its own
@@ -86,7 +86,7 @@ void World::stepOnce()
 
     // Collide: bodies still overlapping move apart, and on each decision the contact
     // rounds part those still pressed together (Collide.h).
-    collide(view(), m_brains, m_agents, m_collideFree, m_boidSlackM, hasStatics);
+    collide(view(), m_brains, m_agents, m_boids.collideFree(), m_boids.slackM(), hasStatics);
     // Traffic: walkers out of the heroes' way, behind their stop lines, off red crosswalks.
     m_traffic.afterCollide(view(), m_agents);
 
@@ -110,14 +110,15 @@ void World::stepInGridOrder(const std::uint32_t* order, std::size_t begin, std::
     constexpr std::size_t kBoidBatch = 16;  // 8 to 32 measured alike, 1 about 5 % slower
     constexpr std::size_t kSenseLanes = 4;  // boids sensed together (senseFourBoids)
     constexpr std::size_t kPrefetchAhead = 32;
-    BoidSense sensed[kBoidBatch]{};  // zeros: the lanes past a boid's count are read (steerLanes)
+    BoidPass pass(m_boids, view(), m_agents);
+    BoidPass::BoidSense sensed[kBoidBatch]{};  // zeros: the lanes past a boid's count are read (steerLanes)
     std::uint32_t boid[kBoidBatch];
     static_assert(kBoidBatch % kSenseLanes == 0);
     // boid[held - unsensed, held) await their senses, all in cell unsensedCell.
     std::size_t held = 0, unsensed = 0;
     std::uint32_t unsensedCell = 0;
     auto senseHeld = [&] {
-        senseFourBoids(&boid[held - unsensed], int(unsensed), sweep, &sensed[held - unsensed]);
+        pass.senseFourBoids(&boid[held - unsensed], int(unsensed), sweep, &sensed[held - unsensed]);
         unsensed = 0;
     };
     for (std::size_t k = begin; k < end; ++k) {
@@ -139,7 +140,7 @@ void World::stepInGridOrder(const std::uint32_t* order, std::size_t begin, std::
             __builtin_prefetch(&m_agents.nextVel[a], 1);
             __builtin_prefetch(&m_agents.nextFwd[a], 1);
         }
-        if (!m_boidKernel[m_agents.info[i].typeIndex] || m_agents.stopped[i]) {
+        if (!m_boids.runs(m_agents.info[i].typeIndex) || m_agents.stopped[i]) {
             stepAgent(i, hasStatics, &sweep);
             continue;
         }
@@ -147,7 +148,7 @@ void World::stepInGridOrder(const std::uint32_t* order, std::size_t begin, std::
         if (unsensed > 0 && cell != unsensedCell)
             senseHeld();
         if (held == kBoidBatch) {
-            steerBoids(boid, sensed, held);
+            pass.steerBoids(boid, sensed, held);
             held = 0;
         }
         boid[held++] = i;
@@ -157,7 +158,7 @@ void World::stepInGridOrder(const std::uint32_t* order, std::size_t begin, std::
     }
     if (unsensed > 0)
         senseHeld();
-    steerBoids(boid, sensed, held);
+    pass.steerBoids(boid, sensed, held);
 }
 
 // One agent's sense, steer and integrate: its next state from the old one.
@@ -173,15 +174,16 @@ void World::stepAgent(std::size_t i, bool hasStatics, NeighbourGrid::Sweep* swee
         m_agents.nextUp[i] = m_agents.up[i];
         m_agents.nextWander[i] = m_agents.wander[i];
         m_agents.nearCount[i] = 0;
-        m_collideFree[i] = 0;  // a stopped boid's last flag no longer holds: others may come
+        m_boids.collideFree()[i] = 0;  // a stopped boid's last flag no longer holds: others may come
         return;
     }
-    if (m_boidKernel[m_agents.info[i].typeIndex]) {
-        stepBoid(i, sweep);  // boids: sense, steer and integrate in one pass (WorldFlock.cpp)
+    if (m_boids.runs(m_agents.info[i].typeIndex)) {
+        // boids: sense, steer and integrate in one pass (BoidKernel.h)
+        BoidPass(m_boids, view(), m_agents).stepBoid(i, sweep);
         return;
     }
-    if (m_walkKernel[m_agents.info[i].typeIndex] && m_agents.path[i] < 0) {
-        stepWalker(i);  // walkers in the open: the same (WorldWalk.cpp)
+    if (m_walk.runs(m_agents.info[i].typeIndex) && m_agents.path[i] < 0) {
+        m_walk.step(view(), m_brains, m_agents, i);  // walkers in the open: the same (WalkKernel.h)
         return;
     }
     const SteeringAgent self = steeringAgent(m_agents, m_types, i);

@@ -1,4 +1,4 @@
-// `cross` run to its end twice, through the fused walker kernel (WorldWalk.cpp) and through
+// `cross` run to its end twice, through the fused walker kernel (WalkKernel.cpp) and through
 // the general steering path: the figures a user of the bench reads (fraction arrived, time
 // to arrive, overlapping pairs per step) must be the same. The kernel does the general
 // path's arithmetic in the same order, so they are equal to the last bit, not only close.

@@ -1,4 +1,4 @@
-// The fused boids kernel (WorldFlock.cpp) against the general steering path: the same
+// The fused boids kernel (BoidKernel.cpp) against the general steering path: the same
 // bench flock, run both ways, must fly the same way. One step apart they agree to
 // rounding; after a run (where rounding has long grown chaotically) their quality figures
 // agree: polarisation, nearest-neighbour distance, overlaps per step, distance to the

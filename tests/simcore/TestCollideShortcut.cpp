@@ -1,4 +1,4 @@
-// The collide pass's shortcut for boids (WorldStep.cpp, WorldFlock.cpp): the kernel flags
+// The collide pass's shortcut for boids (WorldStep.cpp, BoidKernel.cpp): the kernel flags
 // birds none of whose neighbours can end the step within contact distance, and the pass
 // skips their overlap search. It must change nothing: the same flock run with and without
 // the shortcut ends bit-identical, for 1 and 2 threads, whether birds start packed

@@ -1,4 +1,4 @@
-// The fused walker kernel (WorldWalk.cpp) against the general steering path. The kernel
+// The fused walker kernel (WalkKernel.cpp) against the general steering path. The kernel
 // does the general path's arithmetic in the same order, so the two must agree to the
 // bit: on `cross` through its dense middle (arrival, separation, unaligned collision and
 // reciprocal avoidance with keep-right), and on a crowd that also wanders, is held in by

@@ -4,8 +4,8 @@
 // base/Lanes.h (F4 or F8 for four or eight agents at once, F1 for one), and V3 is the
 // matching vector (Vec3Of<F>). The general steering functions (FlockingBehaviours.cpp,
 // TargetBehaviours.cpp, PursuitBehaviours.cpp, Wander.cpp,
-// UnalignedCollisionAvoidance.cpp), the walker kernel (WorldWalk.cpp) and the boids
-// kernel (WorldFlock.cpp, WorldFlockLanes.cpp) all call these, so a change to a behaviour
+// UnalignedCollisionAvoidance.cpp), the walker kernel (WalkKernel.cpp) and the boids
+// kernel (BoidKernel.cpp, BoidKernelLanes.cpp) all call these, so a change to a behaviour
 // is made here and reaches every path.
 //
 // A choice one agent makes with a branch, several make with a lane mask: both sides are

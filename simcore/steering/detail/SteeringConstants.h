@@ -1,6 +1,6 @@
 #pragma once
-// Thresholds of the steering functions that the fused kernels (world/WorldWalk.cpp,
-// world/WorldFlock.cpp) repeat inline; one definition, so kernel and function cannot part.
+// Thresholds of the steering functions that the fused kernels (world/WalkKernel.cpp,
+// world/BoidKernel.cpp) repeat inline; one definition, so kernel and function cannot part.
 #ifndef THRONG_SIMCORE_BUILD
 #error "a detail/ header, private to throng::simcore: include the module's public headers instead"
 #endif

@@ -1,4 +1,4 @@
-// The boids kernel's search (WorldFlock.cpp, searchBoid) for up to four consecutive boids of
+// The boids kernel's search (BoidKernel.cpp, searchBoid) for up to four consecutive boids of
 // the grid's order at once. They lie in one cell at rising heights, so the same columns hold
 // their neighbours: each column's window is read once for the four
 // (NeighbourGrid::forEachNearestSweep4), and each candidate's squared distance to the four,
@@ -7,7 +7,7 @@
 // bound it lies within, exactly as searchBoid ranks it, so each boid's k nearest, and
 // their order, are what searchBoid finds for it alone, and so is the result to the bit
 // (TestNeighbourSweep and the flock's state hash show it).
-#include "simcore/world/World.h"
+#include "simcore/world/BoidKernel.h"
 
 #include "simcore/world/Sense.h"
 
@@ -21,10 +21,9 @@
 
 namespace throng::sim {
 
-using namespace detail;
 using namespace simd;
 
-void World::senseFourBoids(const std::uint32_t* boid, int count, NeighbourGrid::Sweep& sweep, BoidSense* out)
+void BoidPass::senseFourBoids(const std::uint32_t* boid, int count, NeighbourGrid::Sweep& sweep, BoidSense* out)
 {
     constexpr int kLanes = 4;
     const float perception = m_types.params[m_agents.info[boid[0]].typeIndex].perception;

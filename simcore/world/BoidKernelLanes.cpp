@@ -1,4 +1,4 @@
-// The boids kernel's steering and integration (the second half of its step; WorldFlock.cpp
+// The boids kernel's steering and integration (the second half of its step; BoidKernel.cpp
 // senses), written once for one, four or eight boids at once, one per lane of a float
 // vector (base/Lanes.h): steerBoid runs it with one lane, steerBoids with four or eight.
 // Each behaviour's formula comes from steering/detail/BehaviourMath.h, which the general
@@ -17,7 +17,7 @@
 // braces that would silence it cost the four- and eight-lane forms 4 % of a flock's step.
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 
-#include "simcore/world/World.h"
+#include "simcore/world/BoidKernel.h"
 
 #include "simcore/world/Sense.h"
 
@@ -77,7 +77,7 @@ template <class F>
                                                float slack)
 {
     constexpr std::size_t kLanes = std::size_t(kWidth<F>);
-    static_assert(World::kMaxNeighbours % kLanes == 0);
+    static_assert(kMaxNeighbours % kLanes == 0);
     if (!(slack > 0.0f))
         return false;
     const float margin = 1e-4f + 4e-6f * (std::fabs(at.x) + std::fabs(at.y) + std::fabs(at.z));
@@ -102,7 +102,7 @@ template <class F>
 // Always inlined, as its helpers are, so that in steerEightBoids all of it is built for
 // AVX2 and no eight-float value crosses a call (base/Lanes.h).
 template <class F>
-[[gnu::always_inline]] inline void World::steerLanes(const std::uint32_t* boid, const BoidSense* sensed)
+[[gnu::always_inline]] inline void BoidPass::steerLanes(const std::uint32_t* boid, const BoidSense* sensed)
 {
     constexpr int kLanes = kWidth<F>;
     using M = MaskOf<F>;
@@ -293,7 +293,7 @@ template <class F>
     }
 }
 
-bool World::canSteerEight()
+bool BoidKernel::canSteerEight()
 {
 #if defined(__x86_64__)
     static const bool avx2 = __builtin_cpu_supports("avx2");  // and the OS keeps its registers
@@ -303,7 +303,7 @@ bool World::canSteerEight()
 #endif
 }
 
-void World::steerBoids(const std::uint32_t* boid, const BoidSense* sensed, std::size_t count)
+void BoidPass::steerBoids(const std::uint32_t* boid, const BoidSense* sensed, std::size_t count)
 {
     std::size_t first = 0;
 #if defined(__x86_64__)
@@ -317,9 +317,9 @@ void World::steerBoids(const std::uint32_t* boid, const BoidSense* sensed, std::
         steerBoid(boid[first], sensed[first]);
 }
 
-void World::steerFourBoids(const std::uint32_t* boid, const BoidSense* sensed) { steerLanes<F4>(boid, sensed); }
+void BoidPass::steerFourBoids(const std::uint32_t* boid, const BoidSense* sensed) { steerLanes<F4>(boid, sensed); }
 
-void World::steerBoid(std::size_t i, const BoidSense& in)
+void BoidPass::steerBoid(std::size_t i, const BoidSense& in)
 {
     const auto boid = std::uint32_t(i);
     steerLanes<F1>(&boid, &in);
@@ -328,7 +328,7 @@ void World::steerBoid(std::size_t i, const BoidSense& in)
 #if defined(__x86_64__)
 // The same kernel, inlined here and so built with AVX2's eight-float registers (without
 // fused multiply-add, which would change the bits); called only where the CPU has AVX2.
-__attribute__((target("avx2"))) void World::steerEightBoids(const std::uint32_t* boid, const BoidSense* sensed)
+__attribute__((target("avx2"))) void BoidPass::steerEightBoids(const std::uint32_t* boid, const BoidSense* sensed)
 {
     steerLanes<F8>(boid, sensed);
 }

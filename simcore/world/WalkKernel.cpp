@@ -7,7 +7,9 @@
 // one pass over the neighbours, read by index (no Neighbour copies, no request list),
 // with the squared distances the search already has and the type's constants made
 // usable once instead of per agent.
-#include "simcore/world/World.h"
+#include "simcore/world/WalkKernel.h"
+
+#include "simcore/world/BrainPhase.h"
 
 #include "simcore/world/Constraints.h"
 #include "simcore/world/Sense.h"
@@ -64,21 +66,21 @@ bool fusable(const TypeSteering& s)
 
 }  // namespace
 
-void World::buildWalkKernel(bool enabled)
+void WalkKernel::build(const AgentTypes& types, const StaticSet& set, float dt, bool enabled, bool plain)
 {
     // Brains change weights and speeds per agent, layers or priorities change whom an agent
     // perceives and avoids, and signals hold agents back: those worlds keep the general path.
     // Walls and obstacles the kernel steers round and constrains against as steer and
     // World::step do, through the same functions (steerAroundStatics, constrain).
-    const bool plain = enabled && !m_brains.active() && !m_types.makingWay && m_traffic.signal.empty();
-    const bool walls = !m_set.walls.segments().empty(), obstacles = !m_set.circles.empty() || !m_set.boxes.empty();
-    m_walkKernel.assign(m_types.steering.size(), 0);
-    m_walkTypes.assign(m_types.steering.size(), WalkType{});
-    for (std::size_t t = 0; t < m_types.steering.size(); ++t) {
-        const TypeSteering& s = m_types.steering[t];
-        m_walkKernel[t] = plain && m_types.params[t].kind != AgentKind::Flier && fusable(s) ? 1 : 0;
+    plain = plain && enabled;
+    const bool walls = !set.walls.segments().empty(), obstacles = !set.circles.empty() || !set.boxes.empty();
+    m_runs.assign(types.steering.size(), 0);
+    m_walkTypes.assign(types.steering.size(), WalkType{});
+    for (std::size_t t = 0; t < types.steering.size(); ++t) {
+        const TypeSteering& s = types.steering[t];
+        m_runs[t] = plain && types.params[t].kind != AgentKind::Flier && fusable(s) ? 1 : 0;
         // Each constant as the behaviour's function computes it from the parameters.
-        const float mass = effectiveMass(m_types.params[t].mass);
+        const float mass = effectiveMass(types.params[t].mass);
         WalkType& w = m_walkTypes[t];
         w.wContainment = s.weightIfOn(Behaviour::Containment);
         w.wSeparation = s.weightIfOn(Behaviour::Separation);
@@ -87,11 +89,11 @@ void World::buildWalkKernel(bool enabled)
         w.wSeek = s.weightIfOn(Behaviour::Seek);
         w.wWander = s.weightIfOn(Behaviour::Wander);
         w.reciprocal = s.on(Behaviour::ReciprocalAvoidance);
-        w.keepRight = m_types.keepRight[t];
+        w.keepRight = types.keepRight[t];
         w.aroundStatics =
             (walls && s.on(Behaviour::WallFollowing)) || (obstacles && s.on(Behaviour::ObstacleAvoidance));
-        w.constrained = walls || !m_set.circles.empty();  // as World::step's hasStatics
-        w.maxForce = nonNegative(m_types.params[t].maxForce);
+        w.constrained = walls || !set.circles.empty();  // as World::step's hasStatics
+        w.maxForce = nonNegative(types.params[t].maxForce);
         w.range = nonNegative(s.separation.rangeM);
         w.damping = mass / std::max(nonNegative(s.separation.dampingTimeS), kMinResponseTimeS);
         w.horizonS = nonNegative(s.unaligned.horizonS);
@@ -102,19 +104,19 @@ void World::buildWalkKernel(bool enabled)
         w.slowingM = std::max(nonNegative(s.arrival.slowingDistanceM), kTiny);
         w.gainArrival = responseGain(mass, s.arrival.responseTimeS);
         w.gainSeek = responseGain(mass, s.seek.responseTimeS);
-        w.dtOverMass = m_clock.dt / mass;
+        w.dtOverMass = dt / mass;
     }
 }
 
-void World::stepWalker(std::size_t i)
+void WalkKernel::step(const StepView& view, const BrainPhase& brains, AgentColumns& agents, std::size_t i) const
 {
-    const std::uint16_t type = m_agents.info[i].typeIndex;
-    const TypeSteering& s = m_types.steering[type];
-    const TypeParams& t = m_types.params[type];
+    const std::uint16_t type = agents.info[i].typeIndex;
+    const TypeSteering& s = view.types.steering[type];
+    const TypeParams& t = view.types.params[type];
     const WalkType& w = m_walkTypes[type];
-    const glm::vec3 p = m_agents.pos[i], v = m_agents.vel[i], fwd = m_agents.fwd[i];
-    const float radius = m_agents.radius[i], maxSpeed = m_agents.maxSpeed[i];
-    const AgentId id = m_agents.info[i].id;
+    const glm::vec3 p = agents.pos[i], v = agents.vel[i], fwd = agents.fwd[i];
+    const float radius = agents.radius[i], maxSpeed = agents.maxSpeed[i];
+    const AgentId id = agents.info[i].id;
 
     // Sense: the k nearest in the perception radius and view cone, nearest first, ties by
     // index (gatherNeighbours, without the layers and priorities this world lacks).
@@ -126,13 +128,13 @@ void World::stepWalker(std::size_t i)
     auto search = [&](float startBound) {
         best.clear();
         bound = startBound;
-        m_grid.forEachNearest(p, t.perception, [&] { return bound; }, [&](std::uint32_t j, const glm::vec3& q) {
+        view.grid.forEachNearest(p, t.perception, [&] { return bound; }, [&](std::uint32_t j, const glm::vec3& q) {
             const glm::vec3 d = q - p;
             const float d2 = glm::dot(d, d);
             if (d2 > bound || j == i)
                 return;
             if (outsideViewCone(d, d2, fwd, c)) {
-                const float contact = radius + m_agents.radius[j];
+                const float contact = radius + agents.radius[j];
                 if (d2 > contact * contact)
                     return;
             }
@@ -142,12 +144,12 @@ void World::stepWalker(std::size_t i)
     };
     // As in the boids kernel: start from last step's k nearest, and search in full only
     // when fewer than k lie within them (the result is the same either way).
-    const float guess2 = m_neighbourSweep ? lastNearestBound(m_agents, i, p, perception2) : perception2;
+    const float guess2 = view.warmSearch ? lastNearestBound(agents, i, p, perception2) : perception2;
     search(guess2);
     if (!best.full() && guess2 < perception2)
         search(perception2);
     const std::size_t count = best.count;
-    m_agents.nearCount[i] = std::uint8_t(count);
+    agents.nearCount[i] = std::uint8_t(count);
 
     // One pass over the neighbours: separation's push (separate), the soonest threat
     // (avoidUnalignedCollisions), and the planar neighbours and oncoming walkers of
@@ -165,25 +167,25 @@ void World::stepWalker(std::size_t i)
     std::size_t oncoming = 0;
     bool oncomingInTheWayAhead = false;  // keeping right (KeepRight.h), as World::stepAgent
     const glm::vec2 fwd2 = xz(fwd), p2 = xz(p);
-    std::uint32_t* nearIndex = &m_agents.nearIndex[i * k];
+    std::uint32_t* nearIndex = &agents.nearIndex[i * k];
     for (std::size_t n = 0; n < count; ++n) {
         const auto j = best.index(n);
         nearIndex[n] = j;
-        const glm::vec3 q = m_agents.pos[j], vj = m_agents.vel[j];
-        const float rj = m_agents.radius[j];
+        const glm::vec3 q = agents.pos[j], vj = agents.vel[j];
+        const float rj = agents.radius[j];
         if (w.wSeparation > 0.0f) {
             // The squared distance is the search key's (the same dot product, negated offset).
             const float contact = r + nonNegative(rj);
             const float d = std::sqrt(std::bit_cast<float>(std::uint32_t(best.keys[n] >> 32)));
             if (d < contact + range)
                 push += behave::separationPush(p - q, d, contact, range, maxForce, w.damping, v - vj,
-                                               [&] { return separationAxis(id, m_agents.info[j].id); }, floor);
+                                               [&] { return separationAxis(id, agents.info[j].id); }, floor);
         }
         if (unaligned) {
             float tc;
             glm::vec3 offset;
             if (behave::approachesWithin(q - p, vj - v, horizon, r + nonNegative(rj) + w.marginM, tc, offset)) {
-                const AgentId other = m_agents.info[j].id;
+                const AgentId other = agents.info[j].id;
                 if (threatT < 0.0f || tc < threatT || (tc == threatT && other < threatId)) {
                     threatT = tc;
                     threatId = other;
@@ -193,18 +195,18 @@ void World::stepWalker(std::size_t i)
             }
         }
         if (w.keepRight > 0.0f && !oncomingInTheWayAhead)
-            oncomingInTheWayAhead = oncomingInTheWay(p, fwd, radius, q, m_agents.fwd[j], vj, rj);
+            oncomingInTheWayAhead = oncomingInTheWay(p, fwd, radius, q, agents.fwd[j], vj, rj);
         if (w.reciprocal) {
-            const bool stopped = m_agents.stopped[j] != 0;
+            const bool stopped = agents.stopped[j] != 0;
             PlanarNeighbour& o = others[n];
             o = {xz(q), xz(vj), rj, stopped ? 1.0f : 0.5f};
-            if (!stopped && glm::dot(xz(m_agents.fwd[j]), fwd2) < -0.5f && glm::dot(o.position - p2, fwd2) > 0.0f)
+            if (!stopped && glm::dot(xz(agents.fwd[j]), fwd2) < -0.5f && glm::dot(o.position - p2, fwd2) > 0.0f)
                 ++oncoming;
         }
     }
 
     // Steer: steer's (Steer.h) requests in its order, blended (blendWeighted).
-    const bool hasGoal = m_agents.goal[i] >= 0;
+    const bool hasGoal = agents.goal[i] >= 0;
     glm::vec3 sum(0.0f);
     auto add = [&](glm::vec3 force, float weight) {
         const glm::vec3 f = force * weight;
@@ -213,20 +215,20 @@ void World::stepWalker(std::size_t i)
     };
     // Where seek and arrival aim: the goal's spot for this agent, or its navigation target (navGoal).
     const glm::vec3 goal = !hasGoal ? p + fwd
-                           : m_nav.active && m_nav.hasTarget[i]
-                               ? glm::vec3(m_nav.target[i].x, p.y, m_nav.target[i].y)
-                               : glm::vec3(m_agents.goalSpot[i].x, p.y, m_agents.goalSpot[i].y);
+                           : view.nav.active && view.nav.hasTarget[i]
+                               ? glm::vec3(view.nav.target[i].x, p.y, view.nav.target[i].y)
+                               : glm::vec3(agents.goalSpot[i].x, p.y, agents.goalSpot[i].y);
     const float speedNow = glm::length(v);
     if (w.wContainment > 0.0f) {
         const float probe = s.containment.probeMinM + s.containment.probeLookaheadS * speedNow + radius;
-        const glm::vec3 lo = p - m_set.bounds.min, hi = m_set.bounds.max - p;
+        const glm::vec3 lo = p - view.set.bounds.min, hi = view.set.bounds.max - p;
         if (std::min({lo.x, lo.z, hi.x, hi.z}) < probe)
-            add(stayInside(steeringAgent(m_agents, m_types, i), m_set.bounds, s.containment), w.wContainment);
+            add(stayInside(steeringAgent(agents, view.types, i), view.set.bounds, s.containment), w.wContainment);
     }
     if (w.aroundStatics) {
         // Wall following and obstacle avoidance: steer's own requests (Steer.cpp).
         SteeringRequestList around;
-        steerAroundStatics(view(), m_brains, i, steeringAgent(m_agents, m_types, i), goal, around);
+        steerAroundStatics(view, brains, i, steeringAgent(agents, view.types, i), goal, around);
         for (const SteeringRequest& request : around.requests())
             add(request.force, request.weight);
     }
@@ -240,9 +242,9 @@ void World::stepWalker(std::size_t i)
                                     ? v * (1.0f / speedNow)
                                     : normalizeOr(fwd, glm::vec3(0.0f, 0.0f, 1.0f));
             const glm::vec3 right =
-                normalizeOr(glm::cross(h, normalizeOr(m_agents.up[i], kWorldUp)), rightOfForward(h));
+                normalizeOr(glm::cross(h, normalizeOr(agents.up[i], kWorldUp)), rightOfForward(h));
             const glm::vec3 threatForward =
-                normalizeOr(m_agents.vel[threatJ], normalizeOr(m_agents.fwd[threatJ], glm::vec3(0.0f)));
+                normalizeOr(agents.vel[threatJ], normalizeOr(agents.fwd[threatJ], glm::vec3(0.0f)));
             const bool headOn = glm::dot(h, threatForward) < s.unaligned.headOnCosine;
             force = behave::unalignedAvoidance(h, right, threatOffset, threatT, horizon, headOn, w.brake, w.lateral,
                                                v != glm::vec3(0.0f), maxForce);
@@ -256,7 +258,7 @@ void World::stepWalker(std::size_t i)
         glm::vec3 desired(0.0f);
         // Through an exit at full speed: it is walked through, not stopped at (steer, Steer.h).
         const bool throughExit =
-            m_set.goals[std::size_t(m_agents.goal[i])].exit && !(m_nav.active && m_nav.hasTarget[i]);
+            view.set.goals[std::size_t(agents.goal[i])].exit && !(view.nav.active && view.nav.hasTarget[i]);
         const float slowing = throughExit ? 1e-6f : w.slowingM;
         if (!(dist <= w.toleranceM || dist <= kTiny))
             desired = behave::arrivalVelocity(offset, dist, nonNegative(maxSpeed), slowing);
@@ -266,17 +268,17 @@ void World::stepWalker(std::size_t i)
         add(towardsVelocity(v, behave::seekVelocity(finiteOrZero(goal - p), nonNegative(maxSpeed)), w.gainSeek,
                             maxForce),
             w.wSeek);
-    WanderState wanderNext = m_agents.wander[i];
+    WanderState wanderNext = agents.wander[i];
     if (w.wWander > 0.0f) {
-        const std::uint64_t key = rngKey(m_seed, id, m_clock.step);
+        const std::uint64_t key = rngKey(view.seed, id, view.clock.step);
         const glm::vec3 random(rngRangeOf(key, kWanderX, -1.0f, 1.0f), rngRangeOf(key, kWanderY, -1.0f, 1.0f),
                                rngRangeOf(key, kWanderZ, -1.0f, 1.0f));
-        const WanderResult result = wander(steeringAgent(m_agents, m_types, i), m_agents.wander[i], random, s.wander);
+        const WanderResult result = wander(steeringAgent(agents, view.types, i), agents.wander[i], random, s.wander);
         wanderNext = result.state;
         add(result.force, w.wWander);
     }
     // A walker with nowhere to go comes to rest (as in steer, Steer.h).
-    if (!hasGoal && m_agents.leader[i] < 0 && !(w.wWander > 0.0f))
+    if (!hasGoal && agents.leader[i] < 0 && !(w.wWander > 0.0f))
         add(-v * (t.mass / kStandStillResponseS), 1.0f);
     glm::vec3 force = truncate(sum, t.maxForce) + glm::vec3(0.0f);  // + the brain's turn: none
     if (oncomingInTheWayAhead)
@@ -285,8 +287,8 @@ void World::stepWalker(std::size_t i)
     // Avoid: the velocity the blend asks for becomes the nearest that touches no neighbour
     // within the horizon (avoidReciprocally (Steer.h) between equals).
     // (Between decisions the force held replaces it below: no avoidance is worked out.)
-    if (w.reciprocal && m_clock.decide && t.mass > 0.0f && m_clock.decideDt > 0.0f) {
-        const glm::vec3 wanted = v + force * (m_clock.decideDt / t.mass);
+    if (w.reciprocal && view.clock.decide && t.mass > 0.0f && view.clock.decideDt > 0.0f) {
+        const glm::vec3 wanted = v + force * (view.clock.decideDt / t.mass);
         glm::vec2 preferred(wanted.x, wanted.z);
         const float speed = glm::length(preferred);
         if (speed > maxSpeed && speed > 0.0f)
@@ -298,15 +300,15 @@ void World::stepWalker(std::size_t i)
         }
         const PlanarBody body{p2, xz(v), radius, maxSpeed};
         const glm::vec2 chosen =
-            sim::avoidReciprocally(body, preferred, {others.data(), count}, m_clock.decideDt, s.reciprocal);
-        force = (glm::vec3(chosen.x, 0.0f, chosen.y) - glm::vec3(v.x, 0.0f, v.z)) * (t.mass / m_clock.decideDt);
+            sim::avoidReciprocally(body, preferred, {others.data(), count}, view.clock.decideDt, s.reciprocal);
+        force = (glm::vec3(chosen.x, 0.0f, chosen.y) - glm::vec3(v.x, 0.0f, v.z)) * (t.mass / view.clock.decideDt);
     }
     // Between decisions (StepRate.h) the force decided last holds, and wander stands still.
-    if (m_clock.decide) {
-        m_agents.heldForce[i] = force;
+    if (view.clock.decide) {
+        agents.heldForce[i] = force;
     } else {
-        force = m_agents.heldForce[i];
-        wanderNext = m_agents.wander[i];
+        force = agents.heldForce[i];
+        wanderNext = agents.wander[i];
     }
 
     // Integrate: integrateVehicle's walker step (VehicleModel.cpp) on a finite state, then
@@ -315,7 +317,7 @@ void World::stepWalker(std::size_t i)
     glm::vec3 vel = truncate(v + f * w.dtOverMass, nonNegative(maxSpeed));
     vel.y = 0.0f;
     vel = finiteOrZero(vel);
-    glm::vec3 pos = finiteOrZero(p + vel * m_clock.dt);
+    glm::vec3 pos = finiteOrZero(p + vel * view.clock.dt);
     vel.y = 0.0f;
     const float speed = glm::length(vel);
     glm::vec3 nextFwd;
@@ -327,16 +329,16 @@ void World::stepWalker(std::size_t i)
     }
     // Constrain: out of walls and obstacles, never through a wall (constrain, Constraints.h).
     if (w.constrained)
-        constrain(m_agents, m_set, m_clock.dt, i, p, pos);
-    pos.y = m_set.terrain.heights.empty() ? 0.0f : m_set.groundHeight(pos.x, pos.z);  // no terrain: flat at 0
-    glm::vec3 nextVel = (pos - p) / m_clock.dt;
+        constrain(agents, view.set, view.clock.dt, i, p, pos);
+    pos.y = view.set.terrain.heights.empty() ? 0.0f : view.set.groundHeight(pos.x, pos.z);  // no terrain: flat at 0
+    glm::vec3 nextVel = (pos - p) / view.clock.dt;
     nextVel.y = 0.0f;
-    m_agents.nextPos[i] = pos;
-    m_agents.nextVel[i] = nextVel;
-    m_agents.nextFwd[i] = nextFwd;
-    m_agents.nextSide[i] = rightOfForward(nextFwd);
-    m_agents.nextUp[i] = kWorldUp;
-    m_agents.nextWander[i] = wanderNext;
+    agents.nextPos[i] = pos;
+    agents.nextVel[i] = nextVel;
+    agents.nextFwd[i] = nextFwd;
+    agents.nextSide[i] = rightOfForward(nextFwd);
+    agents.nextUp[i] = kWorldUp;
+    agents.nextWander[i] = wanderNext;
 }
 
 }  // namespace throng::sim

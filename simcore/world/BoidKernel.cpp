@@ -8,8 +8,8 @@
 // (steering/detail/BehaviourMath.h); only the order of the sums and the skipped
 // re-normalising make the last bits differ (TestBoidKernel compares the two on the
 // quality figures). A step has two halves, senseBoid here and steerBoid, which
-// WorldFlockLanes.cpp writes once for one, four or eight boids at once.
-#include "simcore/world/World.h"
+// BoidKernelLanes.cpp writes once for one, four or eight boids at once.
+#include "simcore/world/BoidKernel.h"
 
 #include "simcore/world/Collide.h"
 #include "simcore/world/Sense.h"
@@ -52,26 +52,28 @@ bool fusable(const TypeSteering& s)
 
 }  // namespace
 
-void World::buildBoidKernel(bool enabled, bool collideShortcut)
+void BoidKernel::build(const AgentTypes& types, float dt, std::size_t agents, bool enabled, bool plain,
+                       bool collideShortcut, bool steerEight)
 {
     // Brains change weights and speeds per agent, layers or priorities change whom an
     // agent perceives, and signals hold agents back: those worlds keep the general path.
-    const bool plain = enabled && !m_brains.active() && !m_types.makingWay && m_traffic.signal.empty();
-    m_boidKernel.assign(m_types.steering.size(), 0);
-    m_collideFree.assign(m_agents.pos.size(), 0);
+    plain = plain && enabled;
+    m_steerEight = steerEight && canSteerEight();
+    m_runs.assign(types.steering.size(), 0);
+    m_collideFree.assign(agents, 0);
     // How far a flier's next position may lie from where its old velocity takes it: the
     // force changes the velocity by at most maxForce / mass * dt, and lifting it back to
     // its min speed by as much again. The collide pass checks it holds for every agent.
     float accelMax = 0.0f;
     bool anyKernel = false;
-    m_boidTypes.assign(m_types.steering.size(), BoidType{});
-    for (std::size_t t = 0; t < m_types.steering.size(); ++t) {
-        const TypeSteering& s = m_types.steering[t];
-        m_boidKernel[t] = plain && fusable(s) ? 1 : 0;
-        anyKernel = anyKernel || m_boidKernel[t];
-        accelMax = std::max(accelMax, nonNegative(m_types.params[t].maxForce) / effectiveMass(m_types.params[t].mass));
+    m_boidTypes.assign(types.steering.size(), BoidType{});
+    for (std::size_t t = 0; t < types.steering.size(); ++t) {
+        const TypeSteering& s = types.steering[t];
+        m_runs[t] = plain && fusable(s) ? 1 : 0;
+        anyKernel = anyKernel || m_runs[t];
+        accelMax = std::max(accelMax, nonNegative(types.params[t].maxForce) / effectiveMass(types.params[t].mass));
         // As steerTowards, separate and integrateVehicle make each parameter usable.
-        const float mass = effectiveMass(m_types.params[t].mass);
+        const float mass = effectiveMass(types.params[t].mass);
         BoidType& b = m_boidTypes[t];
         b.wContainment = s.weightIfOn(Behaviour::Containment);
         b.wSeparation = s.weightIfOn(Behaviour::Separation);
@@ -80,7 +82,7 @@ void World::buildBoidKernel(bool enabled, bool collideShortcut)
         b.wCohesion = s.weightIfOn(Behaviour::Cohesion);
         b.wWander = s.weightIfOn(Behaviour::Wander);
         b.mass = mass;
-        b.maxForce = nonNegative(m_types.params[t].maxForce);
+        b.maxForce = nonNegative(types.params[t].maxForce);
         b.range = nonNegative(s.separation.rangeM);
         b.damping = mass / std::max(nonNegative(s.separation.dampingTimeS), kMinResponseTimeS);
         b.gainPursuit = responseGain(mass, s.pursuit.responseTimeS);
@@ -95,20 +97,27 @@ void World::buildBoidKernel(bool enabled, bool collideShortcut)
         b.minSpeed = nonNegative(s.vehicle.minSpeed);
         b.bankGain = nonNegative(s.vehicle.bankingGainS2PerM);
         const float response = std::max(nonNegative(s.vehicle.bankingResponseS), kMinResponseTimeS);
-        b.bankBlend = 1.0f - std::exp(-m_clock.dt / response);
+        b.bankBlend = 1.0f - std::exp(-dt / response);
     }
-    const float slack = 2.0f * accelMax * m_clock.dt * m_clock.dt;
-    m_boidSlackM = collideShortcut && anyKernel && std::isfinite(slack) ? slack : 0.0f;
+    const float slack = 2.0f * accelMax * dt * dt;
+    m_slackM = collideShortcut && anyKernel && std::isfinite(slack) ? slack : 0.0f;
 }
 
-void World::stepBoid(std::size_t i, NeighbourGrid::Sweep* sweep)
+BoidPass::BoidPass(BoidKernel& kernel, const StepView& v, AgentColumns& agents)
+    : m_types(v.types), m_set(v.set), m_clock(v.clock), m_grid(v.grid), m_agents(agents),
+      m_boidTypes(kernel.m_boidTypes), m_collideFree(kernel.m_collideFree.data()), m_boidSlackM(kernel.m_slackM),
+      m_steerEight(kernel.m_steerEight), m_neighbourSweep(v.warmSearch), m_seed(v.seed)
+{
+}
+
+void BoidPass::stepBoid(std::size_t i, NeighbourGrid::Sweep* sweep)
 {
     BoidSense sense;
     senseBoid(i, sweep, sense);
     steerBoid(i, sense);
 }
 
-void World::senseBoid(std::size_t i, NeighbourGrid::Sweep* sweep, BoidSense& out)
+void BoidPass::senseBoid(std::size_t i, NeighbourGrid::Sweep* sweep, BoidSense& out)
 {
     const float perception = m_types.params[m_agents.info[i].typeIndex].perception,
                 perception2 = perception * perception;
@@ -125,7 +134,7 @@ void World::senseBoid(std::size_t i, NeighbourGrid::Sweep* sweep, BoidSense& out
     sumBoid(i, best, out);
 }
 
-void World::searchBoid(std::size_t i, NeighbourGrid::Sweep* sweep, float startBound, BoidNearest& best) const
+void BoidPass::searchBoid(std::size_t i, NeighbourGrid::Sweep* sweep, float startBound, BoidNearest& best) const
 {
     const TypeParams& t = m_types.params[m_agents.info[i].typeIndex];
     const glm::vec3 p = m_agents.pos[i], fwd = m_agents.fwd[i];
@@ -155,7 +164,7 @@ void World::searchBoid(std::size_t i, NeighbourGrid::Sweep* sweep, float startBo
         m_grid.forEachNearest(p, t.perception, [&] { return bound; }, consider);
 }
 
-void World::sumBoid(std::size_t i, const BoidNearest& best, BoidSense& out)
+void BoidPass::sumBoid(std::size_t i, const BoidNearest& best, BoidSense& out)
 {
     const BoidType& b = m_boidTypes[m_agents.info[i].typeIndex];
     const glm::vec3 p = m_agents.pos[i], v = m_agents.vel[i];
@@ -168,7 +177,7 @@ void World::sumBoid(std::size_t i, const BoidNearest& best, BoidSense& out)
     glm::vec3 push(0.0f), headings(0.0f), velocities(0.0f), centre(0.0f);
     std::uint32_t* nearIndex = &m_agents.nearIndex[i * k];
     // Where each neighbour's old velocity takes it, and how close it may come (for the
-    // collide pass: see collideFree in WorldFlockLanes.cpp).
+    // collide pass: see collideFree in BoidKernelLanes.cpp).
     float* keepOut = out.keepOut;
     behave::SeparationFloor floor;
     for (std::size_t n = 0; n < count; ++n) {
@@ -201,7 +210,7 @@ void World::sumBoid(std::size_t i, const BoidNearest& best, BoidSense& out)
     out.count = std::uint32_t(count);
 }
 
-void World::groundBoid(std::size_t i, glm::vec3& pos, glm::vec3& vel, glm::vec3 nextFwd) const
+void BoidPass::groundBoid(std::size_t i, glm::vec3& pos, glm::vec3& vel, glm::vec3 nextFwd) const
 {
     // Fliers may skim the ground but never pass through it (as in World::step).
     // (terrainHeight is 0 without a height field: no call for the common flat ground.)
@@ -217,7 +226,7 @@ void World::groundBoid(std::size_t i, glm::vec3& pos, glm::vec3& vel, glm::vec3 
     }
 }
 
-void World::storeBoid(std::size_t i, bool collideFree, glm::vec3 pos, glm::vec3 vel, glm::vec3 nextFwd,
+void BoidPass::storeBoid(std::size_t i, bool collideFree, glm::vec3 pos, glm::vec3 vel, glm::vec3 nextFwd,
                       glm::vec3 side, glm::vec3 nextUp, const WanderState& wanderNext)
 {
     m_collideFree[i] = collideFree ? kCollideFree : 0;
