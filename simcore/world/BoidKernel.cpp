@@ -212,7 +212,7 @@ void BoidPass::sumBoid(std::size_t i, const BoidNearest& best, BoidSense& out)
 
 void BoidPass::groundBoid(std::size_t i, glm::vec3& pos, glm::vec3& vel, glm::vec3 nextFwd) const
 {
-    // Fliers may skim the ground but never pass through it (as in World::step).
+    // Fliers may skim the ground but never pass through it (as in the general path, MovePhase.cpp).
     // (terrainHeight is 0 without a height field: no call for the common flat ground.)
     const float ground = m_set.terrain.heights.empty() ? 0.0f : m_set.groundHeight(pos.x, pos.z);
     if (const float floor = ground + m_agents.radius[i]; pos.y < floor) {

@@ -73,9 +73,9 @@ public:
     void stepBoid(std::size_t i, NeighbourGrid::Sweep* sweep);
     // What a boid's sense hands its steering (stepBoid in two halves, senseBoid finds the
     // k nearest and sums over them, the branchy part; steerBoid steers and integrates,
-    // chains of square roots and divisions, few branches). World::stepInGridOrder runs
-    // them over batches of boids, one half after the other: the same arithmetic, about
-    // 5 % faster than boid by boid, and the steering then goes four or eight boids at once.
+    // chains of square roots and divisions, few branches). The move phase (MovePhase.cpp)
+    // runs them over batches of boids, one half after the other: the same arithmetic,
+    // about 5 % faster than boid by boid, and the steering then goes four or eight at once.
     struct BoidSense {
         glm::vec3 push, headings, velocities, centre;
         std::uint32_t count;

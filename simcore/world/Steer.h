@@ -2,7 +2,7 @@
 // The steer phase of the general path: what an agent's type's behaviours ask of it, from
 // what it senses, combined by blending or prioritised allocation, then reciprocal
 // avoidance on the ground. Functions over the StepView that read only the previous state
-// and write nothing (Steer.cpp); World::stepAgent integrates what they return, and the
+// and write nothing (Steer.cpp); the move phase (MovePhase.cpp) integrates what they return, and the
 // walker kernel and describeAgent call them too.
 
 #include "simcore/steering/Neighbour.h"

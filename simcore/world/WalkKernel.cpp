@@ -3,10 +3,10 @@
 // avoidance, containment, wall following, obstacle avoidance, wander and reciprocal
 // avoidance (those of `cross`, `corridor` and of an ordinary crowd), fused. It computes
 // what steer, avoidReciprocally (Steer.h) and integrateVehicle compute for such an
-// agent, operation for operation in the same order, so the result is bit-identical to the general path (TestWalkKernel checks it); but in
-// one pass over the neighbours, read by index (no Neighbour copies, no request list),
-// with the squared distances the search already has and the type's constants made
-// usable once instead of per agent.
+// agent, operation for operation in the same order, so the result is bit-identical to
+// the general path (TestWalkKernel checks it); but in one pass over the neighbours, read
+// by index (no Neighbour copies, no request list), with the squared distances the search
+// already has and the type's constants made usable once instead of per agent.
 #include "simcore/world/WalkKernel.h"
 
 #include "simcore/world/BrainPhase.h"
@@ -45,7 +45,7 @@ namespace {
 }
 
 // Behaviours the kernel computes. Path following only for agents without a path (then
-// steer (Steer.h) asks nothing of it either; World::step sends the others the general way).
+// steer (Steer.h) asks nothing of it either; the move phase sends the others the general way).
 bool fusable(const TypeSteering& s)
 {
     using B = Behaviour;
@@ -71,7 +71,7 @@ void WalkKernel::build(const AgentTypes& types, const StaticSet& set, float dt, 
     // Brains change weights and speeds per agent, layers or priorities change whom an agent
     // perceives and avoids, and signals hold agents back: those worlds keep the general path.
     // Walls and obstacles the kernel steers round and constrains against as steer and
-    // World::step do, through the same functions (steerAroundStatics, constrain).
+    // the general path do (MovePhase.cpp), through the same functions (steerAroundStatics, constrain).
     plain = plain && enabled;
     const bool walls = !set.walls.segments().empty(), obstacles = !set.circles.empty() || !set.boxes.empty();
     m_runs.assign(types.steering.size(), 0);
@@ -92,7 +92,7 @@ void WalkKernel::build(const AgentTypes& types, const StaticSet& set, float dt, 
         w.keepRight = types.keepRight[t];
         w.aroundStatics =
             (walls && s.on(Behaviour::WallFollowing)) || (obstacles && s.on(Behaviour::ObstacleAvoidance));
-        w.constrained = walls || !set.circles.empty();  // as World::step's hasStatics
+        w.constrained = walls || !set.circles.empty();  // as the move phase's hasStatics
         w.maxForce = nonNegative(types.params[t].maxForce);
         w.range = nonNegative(s.separation.rangeM);
         w.damping = mass / std::max(nonNegative(s.separation.dampingTimeS), kMinResponseTimeS);
@@ -165,7 +165,7 @@ void WalkKernel::step(const StepView& view, const BrainPhase& brains, AgentColum
     glm::vec3 threatOffset(0.0f);
     UninitialisedArray<PlanarNeighbour, kMaxNeighbours> others;  // the first `count` are written, and read
     std::size_t oncoming = 0;
-    bool oncomingInTheWayAhead = false;  // keeping right (KeepRight.h), as World::stepAgent
+    bool oncomingInTheWayAhead = false;  // keeping right (KeepRight.h), as the general path (MovePhase.cpp)
     const glm::vec2 fwd2 = xz(fwd), p2 = xz(p);
     std::uint32_t* nearIndex = &agents.nearIndex[i * k];
     for (std::size_t n = 0; n < count; ++n) {
@@ -312,7 +312,7 @@ void WalkKernel::step(const StepView& view, const BrainPhase& brains, AgentColum
     }
 
     // Integrate: integrateVehicle's walker step (VehicleModel.cpp) on a finite state, then
-    // stand on the ground (World::step).
+    // stand on the ground (as the general path, MovePhase.cpp).
     const glm::vec3 f = truncate(finiteOrZero(force), t.maxForce);
     glm::vec3 vel = truncate(v + f * w.dtOverMass, nonNegative(maxSpeed));
     vel.y = 0.0f;

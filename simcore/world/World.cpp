@@ -150,9 +150,8 @@ void World::build(const Scene& scene, const WorldOptions& options)
     // agent perceives and avoids, and signals hold agents back: those worlds keep the
     // general path.
     const bool plain = !m_brains.active() && !m_types.makingWay && m_traffic.signal.empty();
-    m_boids.build(m_types, m_clock.dt, m_agents.size(), options.boidKernel, plain, options.collideShortcut,
-                  options.steerEight);
-    m_walk.build(m_types, m_set, m_clock.dt, options.walkKernel, plain);
+    m_move.build(m_types, m_set, m_clock.dt, m_agents.size(), plain,
+                 {options.boidKernel, options.walkKernel, options.collideShortcut, options.steerEight});
 }
 
 void World::buildStatics(const Scene& scene)
@@ -437,7 +436,7 @@ void World::addAgent(const Scene& scene, AgentId id, std::uint16_t type, glm::ve
     m_agents.heldForce.push_back(glm::vec3(0.0f));
     m_agents.nearIndex.resize(m_agents.nearIndex.size() + kMaxNeighbours);
     m_agents.nearCount.push_back(0);
-    m_boids.addAgent();
+    m_move.addAgent();
     m_agents.resolvedPos.push_back(pos);
 }
 

@@ -9,17 +9,16 @@
 #include "simcore/steering/Steering.h"
 #include "simcore/world/AgentColumns.h"
 #include "simcore/world/AgentTypes.h"
-#include "simcore/world/BoidKernel.h"
 #include "simcore/world/BrainPhase.h"
 #include "simcore/world/CountPhase.h"
 #include "simcore/world/FrameCache.h"
+#include "simcore/world/MovePhase.h"
 #include "simcore/world/NearestList.h"
 #include "simcore/world/NeighbourGrid.h"
 #include "simcore/world/StaticSet.h"
 #include "simcore/world/StepClock.h"
 #include "simcore/world/StepCounters.h"
 #include "simcore/world/TypeSteering.h"
-#include "simcore/world/WalkKernel.h"
 #include "simcore/world/WorldNav.h"
 #include "simcore/world/WorldPriority.h"
 #include "simcore/world/WorldTraffic.h"
@@ -104,13 +103,13 @@ public:
     std::int32_t leaderOf(std::size_t i) const { return m_agents.leader[i]; }
     AgentKind agentKind(std::size_t i) const { return m_types.params[m_agents.info[i].typeIndex].kind; }
     // Agents of this type step through the fused boids kernel (BoidKernel.h).
-    bool usesBoidKernel(std::size_t typeIndex) const { return m_boids.runs(typeIndex); }
+    bool usesBoidKernel(std::size_t typeIndex) const { return m_move.boids().runs(typeIndex); }
     // How many boids the kernel steers at once: 8 where the CPU has AVX2 (canSteerEight)
     // and WorldOptions::steerEight asks for it, else 4.
-    int boidLanes() const { return m_boids.lanes(); }
+    int boidLanes() const { return m_move.boids().lanes(); }
     static bool canSteerEight() { return BoidKernel::canSteerEight(); }
     // Agents of this type without a path step through the fused walker kernel (WalkKernel.h).
-    bool usesWalkKernel(std::size_t typeIndex) const { return m_walk.runs(typeIndex); }
+    bool usesWalkKernel(std::size_t typeIndex) const { return m_move.walk().runs(typeIndex); }
     // Navigation (WorldNav.cpp): agent i left through an exit goal; it is no longer
     // simulated or perceived and stays where it left (arrivalTimeS says when).
     bool isOut(std::size_t i) const { return m_agents.out[i] != 0; }
@@ -197,13 +196,6 @@ private:
 
     // Agents inside a wall or obstacle at the start: where each walks out to (Constraints.h).
     void findEscapes();
-    // One agent's sense, steer, avoid, integrate and constrain (WorldStep.cpp): the general
-    // path, or the walker or boids kernel for the types they run. sweep: the thread's
-    // cursor when agents are stepped in the grid's order, else null.
-    void stepAgent(std::size_t i, bool hasStatics, NeighbourGrid::Sweep* sweep);
-    // Steps agents order[begin, end) (the grid's order), boids in batches.
-    void stepInGridOrder(const std::uint32_t* order, std::size_t begin, std::size_t end, bool hasStatics,
-                         NeighbourGrid::Sweep& sweep);
     // What the phases read of this World besides their own state (StepView.h).
     StepView view() const
     {
@@ -211,17 +203,13 @@ private:
                 m_nav,    m_team,   m_hasFliers, m_allFliers, m_maxRadius, m_seed, m_neighbourSweep};
     }
     const TypeCollision& collision(std::size_t i) const { return m_types.collision[m_agents.info[i].typeIndex]; }
-    // Agent i's neighbours: those the brain phase gathered this step, or from the grid
-    // (WorldStep.cpp).
-    std::size_t neighboursThisStep(std::size_t i, Neighbour* out);
 
     // The traffic's vehicles and heroes as agents, after the scene's own (World.cpp); the
     // traffic phase itself is m_traffic (WorldTraffic.h).
     void addTrafficAgents(const Scene& scene);
 
     AgentTypes m_types;  // per type: body, steering, collision layers
-    BoidKernel m_boids;  // the boids kernel (BoidKernel.h)
-    WalkKernel m_walk;  // the walker kernel (WalkKernel.h)
+    MovePhase m_move;  // steer, avoid, integrate, constrain; owns the kernels (MovePhase.h)
 
     StaticSet m_set;  // walls, obstacles, goals, paths, lights, crosswalks, flow, terrain, bounds
 

@@ -6,28 +6,10 @@
 
 #include "simcore/world/Collide.h"
 #include "simcore/world/Commit.h"
-#include "simcore/world/Constraints.h"
-#include "simcore/world/Sense.h"
-#include "simcore/world/Steer.h"
 
 #include "simcore/scene/StepRate.h"
 
-#include "simcore/steering/KeepRight.h"
-#include "simcore/steering/UninitialisedArray.h"
-#include "simcore/base/Rng.h"
-#include "simcore/world/detail/StepGeometry.h"
-
-#include <glm/common.hpp>
-#include <glm/geometric.hpp>
-
-#include <algorithm>
-#include <cmath>
-#include <cstdint>
-#include <utility>
-
 namespace throng::sim {
-
-using namespace detail;
 
 void World::step()
 {
@@ -37,7 +19,6 @@ void World::step()
 
 void World::stepOnce()
 {
-    const std::size_t n = m_agents.pos.size();
     // Anything to constrain walkers against? Not in an open field like `cross`.
     const bool hasStatics = m_set.hasStatics();
 
@@ -58,35 +39,14 @@ void World::stepOnce()
     // Traffic: the lanes' vehicles step on the pedestrians' state before this step.
     m_traffic.beforeStep(m_agents);
 
-    // Steer, avoid, integrate and constrain, agent by agent: the general path (stepAgent,
-    // Steer.cpp), the walker kernel (WalkKernel.cpp) or the boids kernel
-    // (BoidKernel*.cpp). With fliers, agents are stepped in the grid's order (by cell, then
-    // by height) when it holds them all: consecutive boids then query the same columns at
-    // rising heights (NeighbourGrid::forEachNearestSweep) and read neighbours that are
-    // already in cache. Each agent still reads only the old state and writes only its own
-    // next state, so the order changes nothing in the result. The order is cut into runs of
-    // consecutive cells, and each thread takes runs as it comes free: a run is a region of
-    // space, so the threads write the next state in regions of their own (in short
-    // interleaved runs both threads wrote the same cache lines: 2 threads gained 2 % over 1
-    // thread's 19 %, instead of 17 %), and a flock that gathers in one part of the order,
-    // or a thread that the machine holds off its core, unbalances nothing.
-    const std::span<const std::uint32_t> gridOrder = m_grid.order();
-    if (m_neighbourSweep && m_grid.sortedByHeight() && gridOrder.size() == n) {
-        const std::uint32_t* order = gridOrder.data();
-        const std::size_t run = std::max<std::size_t>(1024, n / (std::size_t(m_team.size()) * 16));
-        m_team.forChunks(n, run, [&](std::size_t first, std::size_t last, int) {
-            NeighbourGrid::Sweep sweep;
-            stepInGridOrder(order, first, last, hasStatics, sweep);
-        });
-    } else {
-        m_team.forEach(n, 256, [&](std::size_t i) { stepAgent(i, hasStatics, nullptr); });
-    }
+    // Move: steer, avoid, integrate and constrain, agent by agent (MovePhase.h).
+    m_move.run(view(), m_brains, m_traffic, m_agents, hasStatics);
     // Traffic: vehicles and heroes to where the system and their tracks put them.
     m_traffic.drive(m_clock, m_set, m_agents);
 
     // Collide: bodies still overlapping move apart, and on each decision the contact
     // rounds part those still pressed together (Collide.h).
-    collide(view(), m_brains, m_agents, m_boids.collideFree(), m_boids.slackM(), hasStatics);
+    collide(view(), m_brains, m_agents, m_move.boids().collideFree(), m_move.boids().slackM(), hasStatics);
     // Traffic: walkers out of the heroes' way, behind their stop lines, off red crosswalks.
     m_traffic.afterCollide(view(), m_agents);
 
@@ -101,167 +61,6 @@ void World::stepOnce()
     // Count: the run's figures on the positions the step ended at (CountPhase.h).
     m_count.count(view(), m_agents.onCrosswalk, committed.nonFinite);
     m_traffic.afterStep(m_agents);
-}
-
-// Boids in batches of kBoidBatch (World.h, BoidSense): their senses, then their steering.
-void World::stepInGridOrder(const std::uint32_t* order, std::size_t begin, std::size_t end, bool hasStatics,
-                            NeighbourGrid::Sweep& sweep)
-{
-    constexpr std::size_t kBoidBatch = 16;  // 8 to 32 measured alike, 1 about 5 % slower
-    constexpr std::size_t kSenseLanes = 4;  // boids sensed together (senseFourBoids)
-    constexpr std::size_t kPrefetchAhead = 32;
-    BoidPass pass(m_boids, view(), m_agents);
-    BoidPass::BoidSense sensed[kBoidBatch]{};  // zeros: the lanes past a boid's count are read (steerLanes)
-    std::uint32_t boid[kBoidBatch];
-    static_assert(kBoidBatch % kSenseLanes == 0);
-    // boid[held - unsensed, held) await their senses, all in cell unsensedCell.
-    std::size_t held = 0, unsensed = 0;
-    std::uint32_t unsensedCell = 0;
-    auto senseHeld = [&] {
-        pass.senseFourBoids(&boid[held - unsensed], int(unsensed), sweep, &sensed[held - unsensed]);
-        unsensed = 0;
-    };
-    for (std::size_t k = begin; k < end; ++k) {
-        const std::uint32_t i = order[k];
-        // The grid's order is not the index order, so the agents' own states lie scattered
-        // in memory. Asked for two batches ahead, they are in cache when their turn comes
-        // (32 and 64 ahead measured alike; prefetching the neighbours' states gained nothing).
-        if (k + kPrefetchAhead < end) {
-            const std::uint32_t a = order[k + kPrefetchAhead];
-            __builtin_prefetch(&m_agents.info[a]);
-            __builtin_prefetch(&m_agents.pos[a]);
-            __builtin_prefetch(&m_agents.vel[a]);
-            __builtin_prefetch(&m_agents.fwd[a]);
-            __builtin_prefetch(&m_agents.up[a]);
-            __builtin_prefetch(&m_agents.nearIndex[std::size_t(a) * kMaxNeighbours]);
-            __builtin_prefetch(&m_agents.wander[a]);
-            __builtin_prefetch(&m_agents.radius[a]);
-            __builtin_prefetch(&m_agents.nextPos[a], 1);
-            __builtin_prefetch(&m_agents.nextVel[a], 1);
-            __builtin_prefetch(&m_agents.nextFwd[a], 1);
-        }
-        if (!m_boids.runs(m_agents.info[i].typeIndex) || m_agents.stopped[i]) {
-            stepAgent(i, hasStatics, &sweep);
-            continue;
-        }
-        const std::uint32_t cell = m_grid.cellIndex(m_agents.pos[i]);
-        if (unsensed > 0 && cell != unsensedCell)
-            senseHeld();
-        if (held == kBoidBatch) {
-            pass.steerBoids(boid, sensed, held);
-            held = 0;
-        }
-        boid[held++] = i;
-        unsensedCell = cell;
-        if (++unsensed == kSenseLanes || held == kBoidBatch)
-            senseHeld();
-    }
-    if (unsensed > 0)
-        senseHeld();
-    pass.steerBoids(boid, sensed, held);
-}
-
-// One agent's sense, steer and integrate: its next state from the old one.
-void World::stepAgent(std::size_t i, bool hasStatics, NeighbourGrid::Sweep* sweep)
-{
-    const TypeSteering& s = m_types.steering[m_agents.info[i].typeIndex];
-    if (m_agents.stopped[i]) {
-        // An agent that has arrived stays put: no dodging, no yo-yo.
-        m_agents.nextPos[i] = m_agents.pos[i];
-        m_agents.nextVel[i] = glm::vec3(0.0f);
-        m_agents.nextFwd[i] = m_agents.fwd[i];
-        m_agents.nextSide[i] = m_agents.side[i];
-        m_agents.nextUp[i] = m_agents.up[i];
-        m_agents.nextWander[i] = m_agents.wander[i];
-        m_agents.nearCount[i] = 0;
-        m_boids.collideFree()[i] = 0;  // a stopped boid's last flag no longer holds: others may come
-        return;
-    }
-    if (m_boids.runs(m_agents.info[i].typeIndex)) {
-        // boids: sense, steer and integrate in one pass (BoidKernel.h)
-        BoidPass(m_boids, view(), m_agents).stepBoid(i, sweep);
-        return;
-    }
-    if (m_walk.runs(m_agents.info[i].typeIndex) && m_agents.path[i] < 0) {
-        m_walk.step(view(), m_brains, m_agents, i);  // walkers in the open: the same (WalkKernel.h)
-        return;
-    }
-    const SteeringAgent self = steeringAgent(m_agents, m_types, i);
-    // Sense: nearby agents in the perception cone.
-    // (Uninitialised: only the first `count` are written, and only they are read.)
-    UninitialisedArray<Neighbour, kMaxNeighbours> near;
-    const std::size_t count = neighboursThisStep(i, near.data());
-    // Steer: the type's behaviours, combined.
-    WanderState wanderNext;
-    glm::vec3 force = steer(view(), m_brains, i, self, {near.data(), count}, wanderNext) + m_brains.turnForce(i, self);
-    // A walker that only keeps its distance, with an oncoming walker in its way, steps to its
-    // right (KeepRight.h), as people do: two crowds meeting head-on form lanes instead of
-    // pressing face to face for good.
-    if (const float keepRight = m_types.keepRight[m_agents.info[i].typeIndex]; keepRight > 0.0f)
-        for (std::size_t k = 0; k < count; ++k)
-            if (oncomingInTheWay(self.position, self.forward, self.radius, near[k].position, near[k].forward,
-                                 near[k].velocity, near[k].radius)) {
-                force += keepRightForce(self.forward, self.maxForce, keepRight);
-                break;
-            }
-    if (s.on(Behaviour::ReciprocalAvoidance) && !s.vehicle.flying && m_clock.decide)
-        force = avoidReciprocally(view(), i, self, force, {near.data(), count}, s);
-    // Between decisions (StepRate.h) a ground agent applies the force it decided last.
-    if (!s.vehicle.flying) {
-        if (m_clock.decide) {
-            m_agents.heldForce[i] = force;
-        } else {
-            force = m_agents.heldForce[i];
-            wanderNext = m_agents.wander[i];
-        }
-    }
-    if (!m_traffic.signal.empty())
-        force = m_traffic.obeySignal(view(), i, self, force);
-    // Integrate: the simple vehicle model (Reynolds 1999).
-    SteeringAgent next = integrateVehicle(self, force, m_clock.dt, s.vehicle);
-    if (m_brains.active())
-        m_brains.capToSpeed(view(), i, self, next);
-    m_traffic.holdAtSignal(i, next.position);
-    // Constrain: no agent ends a step inside a wall or obstacle; walkers stand on the ground.
-    if (!s.vehicle.flying) {
-        if (hasStatics)
-            constrain(m_agents, m_set, m_clock.dt, i, self.position, next.position);
-        next.position.y = m_set.groundHeight(next.position.x, next.position.z);
-        next.velocity = (next.position - self.position) / m_clock.dt;
-        next.velocity.y = 0.0f;
-    } else if (const float floor = m_set.groundHeight(next.position.x, next.position.z) + self.radius;
-               next.position.y < floor) {
-        // Fliers may skim the ground but never pass through it; the dive turns into
-        // level flight at no less than the stall speed.
-        next.position.y = floor;
-        next.velocity.y = std::max(next.velocity.y, 0.0f);
-        const float stall = std::min(s.vehicle.minSpeed, m_agents.maxSpeed[i]), v = glm::length(next.velocity);
-        if (v < stall)
-            next.velocity = v > 1e-6f ? next.velocity * (stall / v) : next.forward * stall;
-    }
-    m_agents.nextPos[i] = next.position;
-    m_agents.nextVel[i] = next.velocity;
-    m_agents.nextFwd[i] = next.forward;
-    m_agents.nextSide[i] = next.side;
-    m_agents.nextUp[i] = next.up;
-    m_agents.nextWander[i] = wanderNext;
-}
-
-// Agent i's neighbours: those the brain phase gathered this step, or from the grid.
-std::size_t World::neighboursThisStep(std::size_t i, Neighbour* out)
-{
-    std::uint32_t* index = &m_agents.nearIndex[i * kMaxNeighbours];
-    if (!m_brains.gatheredNeighbours(i)) {
-        const std::size_t count = gatherNeighbours(view(), i, out, index);
-        m_agents.nearCount[i] = std::uint8_t(count);
-        return count;
-    }
-    const std::size_t count = m_agents.nearCount[i];
-    for (std::size_t k = 0; k < count; ++k) {
-        const std::uint32_t j = index[k];
-        out[k] = {m_agents.pos[j], m_agents.vel[j], m_agents.fwd[j], m_agents.radius[j], m_agents.info[j].id};
-    }
-    return count;
 }
 
 }  // namespace throng::sim
