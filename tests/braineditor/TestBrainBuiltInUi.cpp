@@ -14,7 +14,6 @@
 #include <glm/geometric.hpp>
 
 #include <QComboBox>
-#include <QStandardPaths>
 #include <QTest>
 #include <QToolButton>
 
@@ -26,8 +25,6 @@ class TestBrainBuiltInUi : public QObject {
     Q_OBJECT
 
 private slots:
-    void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
-
     void walkersStopAtRedWithABrainBuiltInTheEditor()
     {
         QTemporaryDir dir;

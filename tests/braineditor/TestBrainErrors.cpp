@@ -11,7 +11,6 @@
 #include "editor/brain/LinkItem.h"
 #include "editor/brain/NodeItem.h"
 
-#include <QStandardPaths>
 #include <QTest>
 
 using namespace throng;
@@ -32,8 +31,6 @@ class TestBrainErrors : public QObject {
     Q_OBJECT
 
 private slots:
-    void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
-
     void theOffendingNodeIsMarkedAndListed()
     {
         QTemporaryDir dir;

@@ -17,7 +17,6 @@
 #include <QLineEdit>
 #include <QListWidget>
 #include <QMenu>
-#include <QStandardPaths>
 #include <QTest>
 #include <QToolButton>
 
@@ -33,8 +32,6 @@ class TestBrainGraphEditing : public QObject {
     Q_OBJECT
 
 private slots:
-    void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
-
     void typingInThePaletteAddsTheNodeUnderTheMouse()
     {
         QTemporaryDir dir;

@@ -17,7 +17,6 @@
 #include <QApplication>
 #include <QLineEdit>
 #include <QWheelEvent>
-#include <QStandardPaths>
 #include <QTest>
 
 #include <set>
@@ -37,8 +36,6 @@ class TestBrainGraphTools : public QObject {
     Q_OBJECT
 
 private slots:
-    void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
-
     void boxSelectCopyPasteAndDuplicate()
     {
         QTemporaryDir dir;

@@ -15,7 +15,6 @@
 
 #include <QComboBox>
 #include <QDockWidget>
-#include <QStandardPaths>
 #include <QTest>
 
 using namespace throng;
@@ -26,8 +25,6 @@ class TestBrainGraphView : public QObject {
     Q_OBJECT
 
 private slots:
-    void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
-
     void theDockShowsNodesPortsParamsAndLinks()
     {
         QTemporaryDir dir;

@@ -11,7 +11,6 @@
 
 #include <QComboBox>
 #include <QFile>
-#include <QStandardPaths>
 #include <QTest>
 #include <QToolButton>
 
@@ -23,8 +22,6 @@ class TestBrainLibrary : public QObject {
     Q_OBJECT
 
 private slots:
-    void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
-
     void renameDuplicateAndDelete()
     {
         QTemporaryDir dir;

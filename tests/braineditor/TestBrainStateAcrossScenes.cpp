@@ -12,7 +12,6 @@
 #include "editor/brain/NodeItem.h"
 
 #include <QAbstractButton>
-#include <QStandardPaths>
 #include <QTest>
 #include <QUndoStack>
 
@@ -41,8 +40,6 @@ class TestBrainStateAcrossScenes : public QObject {
     Q_OBJECT
 
 private slots:
-    void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
-
     void theNextSceneShowsNoCurveOfTheCavalryBrain_data()
     {
         QTest::addColumn<QString>("next");

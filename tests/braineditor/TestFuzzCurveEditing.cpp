@@ -10,7 +10,6 @@
 #include "editor/brain/FuzzCurveItem.h"
 #include "editor/brain/NodeItem.h"
 
-#include <QStandardPaths>
 #include <QTest>
 
 using namespace throng;
@@ -28,8 +27,6 @@ class TestFuzzCurveEditing : public QObject {
     Q_OBJECT
 
 private slots:
-    void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
-
     void everyFuzzNodeDrawsItsCurve()
     {
         QTemporaryDir dir;

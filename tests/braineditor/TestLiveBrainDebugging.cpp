@@ -11,7 +11,6 @@
 #include "editor/simulation/SimulationController.h"
 #include "editor/viewport/Viewport.h"
 
-#include <QStandardPaths>
 #include <QTest>
 #include <QToolButton>
 
@@ -23,8 +22,6 @@ class TestLiveBrainDebugging : public QObject {
     Q_OBJECT
 
 private slots:
-    void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
-
     void aPickedAgentsValuesChangeWhilePlaying()
     {
         QTemporaryDir dir;

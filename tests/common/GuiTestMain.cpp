@@ -2,6 +2,7 @@
 #include "TestRegistry.h"
 
 #include <QApplication>
+#include <QStandardPaths>
 #include <QTemporaryDir>
 
 int main(int argc, char** argv)
@@ -14,5 +15,10 @@ int main(int argc, char** argv)
     if (home.isValid())
         qputenv("HOME", home.path().toLocal8Bit());
     QApplication app(argc, argv);
+    // Settings and standard paths in test mode, under the tests' organisation; each test
+    // class runs under its own application name (runRegisteredTests), so no test class
+    // sees what another saved even within one process.
+    QStandardPaths::setTestModeEnabled(true);
+    QCoreApplication::setOrganizationName("ThrongTests");
     return throng::test::runRegisteredTests(argc, argv);
 }

@@ -1,5 +1,6 @@
 #include "TestRegistry.h"
 
+#include <QCoreApplication>
 #include <QTest>
 
 #include <cstring>
@@ -35,6 +36,7 @@ int runRegisteredTests(int argc, char** argv)
         if (!only.empty() && t.name != only)
             continue;
         found = true;
+        QCoreApplication::setApplicationName(QString::fromStdString(t.name));  // its settings apart
         std::unique_ptr<QObject> object = t.make();
         failures += QTest::qExec(object.get(), int(args.size()), args.data());
     }

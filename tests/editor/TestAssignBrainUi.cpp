@@ -15,7 +15,6 @@
 
 #include <QComboBox>
 #include <QLineEdit>
-#include <QStandardPaths>
 #include <QTest>
 
 #include <algorithm>
@@ -67,13 +66,6 @@ private:
     QTemporaryDir m_dir;
 
 private slots:
-    void initTestCase()
-    {
-        QStandardPaths::setTestModeEnabled(true);
-        QCoreApplication::setOrganizationName("ThrongTests");
-        QCoreApplication::setApplicationName("TestAssignBrainUi");
-    }
-
     void assignBrushPaintsBrainAndGroupThatThePlaybackObeys()
     {
         MainWindow window;

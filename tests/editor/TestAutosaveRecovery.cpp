@@ -9,7 +9,6 @@
 #include "editor/viewport/Viewport.h"
 
 #include <QFile>
-#include <QStandardPaths>
 #include <QTest>
 
 using namespace throng;
@@ -25,9 +24,6 @@ private:
 private slots:
     void initTestCase()
     {
-        QStandardPaths::setTestModeEnabled(true);
-        QCoreApplication::setOrganizationName("ThrongTests");
-        QCoreApplication::setApplicationName("TestAutosaveRecovery");
         QFile::remove(AutosaveRecovery::recoveryPath());
     }
 

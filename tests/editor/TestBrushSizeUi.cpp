@@ -14,7 +14,6 @@
 #include <glm/geometric.hpp>
 
 #include <QDoubleSpinBox>
-#include <QStandardPaths>
 #include <QTest>
 #include <QToolBar>
 #include <QUndoStack>
@@ -79,13 +78,6 @@ private:
     QTemporaryDir m_dir;
 
 private slots:
-    void initTestCase()
-    {
-        QStandardPaths::setTestModeEnabled(true);
-        QCoreApplication::setOrganizationName("ThrongTests");
-        QCoreApplication::setApplicationName("TestBrushSizeUi");
-    }
-
     void bracketsStepEveryBrushAndItsFieldFollows()
     {
         MainWindow window;

@@ -14,7 +14,6 @@
 
 #include <QAction>
 #include <QApplication>
-#include <QStandardPaths>
 #include <QTest>
 #include <QWheelEvent>
 
@@ -92,13 +91,6 @@ private:
     QTemporaryDir m_dir;
 
 private slots:
-    void initTestCase()
-    {
-        QStandardPaths::setTestModeEnabled(true);
-        QCoreApplication::setOrganizationName("ThrongTests");
-        QCoreApplication::setApplicationName("TestDccNavigationUi");
-    }
-
     void wheelZoomsTowardsTheCursor_data()
     {
         QTest::addColumn<int>("mode");

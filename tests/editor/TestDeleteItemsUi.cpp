@@ -11,7 +11,6 @@
 #include "editor/panels/OutlinerPanel.h"
 #include "editor/viewport/Viewport.h"
 
-#include <QStandardPaths>
 #include <QTest>
 
 #include <algorithm>
@@ -51,13 +50,6 @@ private:
     QTemporaryDir m_dir;
 
 private slots:
-    void initTestCase()
-    {
-        QStandardPaths::setTestModeEnabled(true);
-        QCoreApplication::setOrganizationName("ThrongTests");
-        QCoreApplication::setApplicationName("TestDeleteItemsUi");
-    }
-
     void deleteRemovesTheItemAndUndoRestoresItExactly_data()
     {
         QTest::addColumn<ItemKind>("kind");

@@ -14,7 +14,6 @@
 #include <QFileDialog>
 #include <QMessageBox>
 #include <QPushButton>
-#include <QStandardPaths>
 #include <QTest>
 
 #include <algorithm>
@@ -74,13 +73,6 @@ private:
     QTemporaryDir m_dir;
 
 private slots:
-    void initTestCase()
-    {
-        QStandardPaths::setTestModeEnabled(true);
-        QCoreApplication::setOrganizationName("ThrongTests");
-        QCoreApplication::setApplicationName("TestDrawingToolsUi");
-    }
-
     void laneDrawnWithClicksKeepsItsDirectionAndWidth()
     {
         MainWindow window;

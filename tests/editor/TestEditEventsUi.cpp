@@ -23,7 +23,6 @@
 #include <QElapsedTimer>
 #include <QScopeGuard>
 #include <QSignalSpy>
-#include <QStandardPaths>
 #include <QTest>
 
 #include <algorithm>
@@ -98,13 +97,6 @@ private:
     QTemporaryDir m_dir;
 
 private slots:
-    void initTestCase()
-    {
-        QStandardPaths::setTestModeEnabled(true);
-        QCoreApplication::setOrganizationName("ThrongTests");
-        QCoreApplication::setApplicationName("TestEditEventsUi");
-    }
-
     // Before issue 27 the controller compared whole scenes to decide this; now the edit
     // says it, and a wrong answer would drop frames (or keep stale ones).
     void aTintPickedAtFrame100KeepsEveryFrame()

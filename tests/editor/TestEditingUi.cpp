@@ -14,7 +14,6 @@
 
 #include <QDoubleSpinBox>
 #include <QLabel>
-#include <QStandardPaths>
 #include <QTest>
 
 #include <algorithm>
@@ -44,13 +43,6 @@ private:
     QTemporaryDir m_dir;
 
 private slots:
-    void initTestCase()
-    {
-        QStandardPaths::setTestModeEnabled(true);
-        QCoreApplication::setOrganizationName("ThrongTests");
-        QCoreApplication::setApplicationName("TestEditingUi");
-    }
-
     void crowdBrushStrokeAddsAgentsAlongItAndUndoRedoWork()
     {
         MainWindow window;

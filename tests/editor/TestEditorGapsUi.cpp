@@ -14,7 +14,6 @@
 
 #include <glm/geometric.hpp>
 
-#include <QStandardPaths>
 #include <QTest>
 
 #include <cmath>
@@ -65,13 +64,6 @@ private:
     bool open(MainWindow& window) { return showWithSceneFile(window, writeScene(m_dir, "gaps.yaml", kScene)); }
 
 private slots:
-    void initTestCase()
-    {
-        QStandardPaths::setTestModeEnabled(true);
-        QCoreApplication::setOrganizationName("ThrongTests");
-        QCoreApplication::setApplicationName("TestEditorGapsUi");
-    }
-
     void selectionOutlineFollowsTheAgentDuringPlayback()
     {
         MainWindow window;

@@ -15,7 +15,6 @@
 #include <QLabel>
 #include <QMenuBar>
 #include <QMimeData>
-#include <QStandardPaths>
 #include <QTest>
 #include <QUrl>
 
@@ -66,13 +65,6 @@ private:
     QTemporaryDir m_dir;
 
 private slots:
-    void initTestCase()
-    {
-        QStandardPaths::setTestModeEnabled(true);
-        QCoreApplication::setOrganizationName("ThrongTests");
-        QCoreApplication::setApplicationName("TestFilesUi");
-    }
-
     void droppingASceneFileOpensIt()
     {
         MainWindow window;

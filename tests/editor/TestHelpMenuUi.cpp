@@ -16,7 +16,6 @@
 #include <QToolButton>
 
 #include <functional>
-#include <QStandardPaths>
 #include <QTableWidget>
 #include <QTest>
 #include <QTextBrowser>
@@ -29,12 +28,6 @@ class TestHelpMenuUi : public QObject {
     Q_OBJECT
 
 private slots:
-    void initTestCase()
-    {
-        QStandardPaths::setTestModeEnabled(true);
-        QCoreApplication::setOrganizationName("ThrongTests");
-    }
-
     void f1OpensTheUserGuide()
     {
         MainWindow window;

@@ -13,7 +13,6 @@
 #include <QFileInfo>
 #include <QLabel>
 #include <QMenuBar>
-#include <QStandardPaths>
 #include <QTest>
 
 using namespace throng;
@@ -62,14 +61,6 @@ private:
     QTemporaryDir m_dir;
 
 private slots:
-    void initTestCase()
-    {
-        // Keeps the remembered geometry out of the user's settings.
-        QStandardPaths::setTestModeEnabled(true);
-        QCoreApplication::setOrganizationName("ThrongTests");
-        QCoreApplication::setApplicationName("TestMainWindow");
-    }
-
     void openingASceneShowsItsAgentCount()
     {
         MainWindow window;

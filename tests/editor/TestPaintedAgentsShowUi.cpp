@@ -12,7 +12,6 @@
 
 #include <glm/geometric.hpp>
 
-#include <QStandardPaths>
 #include <QTest>
 #include <QToolButton>
 
@@ -43,13 +42,6 @@ private:
     QTemporaryDir m_dir;
 
 private slots:
-    void initTestCase()
-    {
-        QStandardPaths::setTestModeEnabled(true);
-        QCoreApplication::setOrganizationName("ThrongTests");
-        QCoreApplication::setApplicationName("TestPaintedAgentsShowUi");
-    }
-
     void aStrokeWhilePausedShowsItsAgentsAtTheEditFrame()
     {
         MainWindow window;

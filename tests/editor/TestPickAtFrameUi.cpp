@@ -19,7 +19,6 @@
 #include <glm/geometric.hpp>
 
 #include <QDockWidget>
-#include <QStandardPaths>
 #include <QTest>
 
 #include <cmath>
@@ -179,13 +178,6 @@ private:
     }
 
 private slots:
-    void initTestCase()
-    {
-        QStandardPaths::setTestModeEnabled(true);
-        QCoreApplication::setOrganizationName("ThrongTests");
-        QCoreApplication::setApplicationName("TestPickAtFrameUi");
-    }
-
     void topViewPicksWhereAgentsAreNow()
     {
         MainWindow window;

@@ -21,7 +21,6 @@
 #include <QPushButton>
 #include <QSpinBox>
 #include <QSlider>
-#include <QStandardPaths>
 #include <QTest>
 #include <QToolButton>
 
@@ -36,13 +35,6 @@ private:
     QTemporaryDir m_dir;
 
 private slots:
-    void initTestCase()
-    {
-        QStandardPaths::setTestModeEnabled(true);
-        QCoreApplication::setOrganizationName("ThrongTests");
-        QCoreApplication::setApplicationName("TestPlaybackAndFilesUi");
-    }
-
     void playAdvancesFramesAndMovesAgentsAndScrubbingGoesBack()
     {
         MainWindow window;

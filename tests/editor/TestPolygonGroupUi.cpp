@@ -18,7 +18,6 @@
 #include <QDoubleSpinBox>
 #include <QFile>
 #include <QSpinBox>
-#include <QStandardPaths>
 #include <QTableWidget>
 #include <QTest>
 
@@ -79,12 +78,6 @@ class TestPolygonGroupUi : public QObject {
     Q_OBJECT
 
 private slots:
-    void initTestCase()
-    {
-        QStandardPaths::setTestModeEnabled(true);
-        QCoreApplication::setOrganizationName("ThrongTests");
-    }
-
     void aConcavePolygonIsClickedClosedShownUndoneAndSaved()
     {
         MainWindow window;

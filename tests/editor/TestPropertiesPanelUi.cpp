@@ -22,7 +22,6 @@
 #include <QLineEdit>
 #include <QScrollArea>
 #include <QSpinBox>
-#include <QStandardPaths>
 #include <QStyle>
 #include <QStyleOptionButton>
 #include <QTableWidget>
@@ -58,13 +57,6 @@ private:
     QTemporaryDir m_dir;
 
 private slots:
-    void initTestCase()
-    {
-        QStandardPaths::setTestModeEnabled(true);
-        QCoreApplication::setOrganizationName("ThrongTests");
-        QCoreApplication::setApplicationName("TestPropertiesPanelUi");
-    }
-
     void agentBrainAndGroupFromTheCombosUndoRedoAndSave()
     {
         MainWindow window;

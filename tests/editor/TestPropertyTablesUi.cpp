@@ -19,7 +19,6 @@
 #include <QDoubleSpinBox>
 #include <QLabel>
 #include <QLineEdit>
-#include <QStandardPaths>
 #include <QTableWidget>
 #include <QTest>
 
@@ -58,13 +57,6 @@ private:
     QTemporaryDir m_dir;
 
 private slots:
-    void initTestCase()
-    {
-        QStandardPaths::setTestModeEnabled(true);
-        QCoreApplication::setOrganizationName("ThrongTests");
-        QCoreApplication::setApplicationName("TestPropertyTablesUi");
-    }
-
     void aPathsPointsAreEditedInTheirTable()
     {
         MainWindow window;

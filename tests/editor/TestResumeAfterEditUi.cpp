@@ -17,7 +17,6 @@
 
 #include <QDoubleSpinBox>
 #include <QSlider>
-#include <QStandardPaths>
 #include <QTest>
 #include <QTreeWidgetItem>
 
@@ -76,13 +75,6 @@ private:
     QTemporaryDir m_dir;
 
 private slots:
-    void initTestCase()
-    {
-        QStandardPaths::setTestModeEnabled(true);
-        QCoreApplication::setOrganizationName("ThrongTests");
-        QCoreApplication::setApplicationName("TestResumeAfterEditUi");
-    }
-
     void aWallRecomputesFramesFromTheEditOnAndUndoAgain()
     {
         MainWindow window;

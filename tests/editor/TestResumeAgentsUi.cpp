@@ -12,7 +12,6 @@
 
 #include <glm/geometric.hpp>
 
-#include <QStandardPaths>
 #include <QTest>
 
 #include <set>
@@ -34,13 +33,6 @@ private:
     QTemporaryDir m_dir;
 
 private slots:
-    void initTestCase()
-    {
-        QStandardPaths::setTestModeEnabled(true);
-        QCoreApplication::setOrganizationName("ThrongTests");
-        QCoreApplication::setApplicationName("TestResumeAgentsUi");
-    }
-
     void playPressedRightAfterAStrokeAtFrameZeroPlays()
     {
         // The stroke reaches the simulation a moment after the mouse is released: the run

@@ -10,7 +10,6 @@
 #include "editor/simulation/SimulationController.h"
 #include "editor/viewport/Viewport.h"
 
-#include <QStandardPaths>
 #include <QTest>
 
 using namespace throng;
@@ -30,13 +29,6 @@ private:
     QTemporaryDir m_dir;
 
 private slots:
-    void initTestCase()
-    {
-        QStandardPaths::setTestModeEnabled(true);
-        QCoreApplication::setOrganizationName("ThrongTests");
-        QCoreApplication::setApplicationName("TestResumeTrafficUi");
-    }
-
     void aLaneDrawnAtFrameFortyResumesThereAndUndoGivesTheRecordingBack()
     {
         MainWindow window;

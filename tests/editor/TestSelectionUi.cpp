@@ -7,7 +7,6 @@
 
 #include <glm/geometric.hpp>
 
-#include <QStandardPaths>
 #include <QTest>
 
 #include <algorithm>
@@ -46,13 +45,6 @@ private:
     QTemporaryDir m_dir;
 
 private slots:
-    void initTestCase()
-    {
-        QStandardPaths::setTestModeEnabled(true);
-        QCoreApplication::setOrganizationName("ThrongTests");
-        QCoreApplication::setApplicationName("TestSelectionUi");
-    }
-
     void boxSelectTakesWhatIsInsideAndDragMovesItAll()
     {
         MainWindow window;

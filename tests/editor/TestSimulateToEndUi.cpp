@@ -14,7 +14,6 @@
 #include <QProgressDialog>
 #include <QPushButton>
 #include <QSlider>
-#include <QStandardPaths>
 #include <QTest>
 #include <QToolButton>
 
@@ -59,13 +58,6 @@ private:
     QTemporaryDir m_dir;
 
 private slots:
-    void initTestCase()
-    {
-        QStandardPaths::setTestModeEnabled(true);
-        QCoreApplication::setOrganizationName("ThrongTests");
-        QCoreApplication::setApplicationName("TestSimulateToEndUi");
-    }
-
     void recordsEveryFrameAndCloses()
     {
         MainWindow window;

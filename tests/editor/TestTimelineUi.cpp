@@ -17,7 +17,6 @@
 #include <QElapsedTimer>
 #include <QLabel>
 #include <QSpinBox>
-#include <QStandardPaths>
 #include <QTest>
 #include <QThread>
 #include <QTreeWidget>
@@ -148,13 +147,6 @@ private:
     }
 
 private slots:
-    void initTestCase()
-    {
-        QStandardPaths::setTestModeEnabled(true);
-        QCoreApplication::setOrganizationName("ThrongTests");
-        QCoreApplication::setApplicationName("TestTimelineUi");
-    }
-
     void theScrubBarSpansTheShotAndTheStripShowsWhatIsComputed()
     {
         MainWindow window;

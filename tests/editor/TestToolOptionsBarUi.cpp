@@ -8,7 +8,6 @@
 #include "editor/tools/ToolManager.h"
 
 #include <QApplication>
-#include <QStandardPaths>
 #include <QTest>
 #include <QToolBar>
 
@@ -23,8 +22,6 @@ private:
     QTemporaryDir m_dir;
 
 private slots:
-    void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
-
     void clickingThroughEveryToolMovesNothing()
     {
         MainWindow window;

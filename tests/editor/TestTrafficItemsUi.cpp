@@ -20,7 +20,6 @@
 #include <QDoubleSpinBox>
 #include <QLabel>
 #include <QLineEdit>
-#include <QStandardPaths>
 #include <QTest>
 
 #include <cmath>
@@ -72,13 +71,6 @@ private:
     QTemporaryDir m_dir;
 
 private slots:
-    void initTestCase()
-    {
-        QStandardPaths::setTestModeEnabled(true);
-        QCoreApplication::setOrganizationName("ThrongTests");
-        QCoreApplication::setApplicationName("TestTrafficItemsUi");
-    }
-
     void aCrosswalkPickedInTheViewportTakesItsEndsAndWidth()
     {
         MainWindow window;

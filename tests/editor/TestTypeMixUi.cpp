@@ -9,7 +9,6 @@
 #include "editor/tools/TypeMixTable.h"
 
 #include <QDoubleSpinBox>
-#include <QStandardPaths>
 #include <QTableWidget>
 #include <QTest>
 #include <QToolBar>
@@ -68,8 +67,6 @@ private:
     QTemporaryDir m_dir;
 
 private slots:
-    void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
-
     void theTableListsTheTypesAndTheDefault()
     {
         MainWindow window;

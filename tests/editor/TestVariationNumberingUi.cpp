@@ -13,7 +13,6 @@
 #include <QColor>
 #include <QComboBox>
 #include <QSpinBox>
-#include <QStandardPaths>
 #include <QTest>
 
 using namespace throng;
@@ -27,8 +26,6 @@ private:
     QTemporaryDir m_dir;
 
 private slots:
-    void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
-
     void lookTwoOfTheBrushIsLookTwoInProperties()
     {
         MainWindow window;

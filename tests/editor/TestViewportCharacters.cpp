@@ -13,7 +13,6 @@
 #include <QAction>
 #include <QApplication>
 #include <QSettings>
-#include <QStandardPaths>
 #include <QTest>
 #include <QWheelEvent>
 
@@ -170,9 +169,6 @@ private:
 private slots:
     void initTestCase()
     {
-        QStandardPaths::setTestModeEnabled(true);
-        QCoreApplication::setOrganizationName("ThrongTests");
-        QCoreApplication::setApplicationName("TestViewportCharacters");
         QSettings().remove("viewport/agentsAs");
     }
 

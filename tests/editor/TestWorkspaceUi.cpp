@@ -21,7 +21,6 @@
 #include <QScrollBar>
 #include <QSettings>
 #include <QSlider>
-#include <QStandardPaths>
 #include <QTabBar>
 #include <QTest>
 #include <QTimer>
@@ -86,8 +85,6 @@ private:
 private slots:
     void initTestCase()
     {
-        QStandardPaths::setTestModeEnabled(true);
-        QCoreApplication::setOrganizationName("ThrongTests");
         QVERIFY(m_dir.isValid());
     }
 
