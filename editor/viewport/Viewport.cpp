@@ -3,7 +3,6 @@
 #include "editor/viewport/GroundRay.h"
 #include "editor/viewport/SetGeometryBuilder.h"
 #include "editor/viewport/SetSolids.h"
-#include "editor/viewport/SteeringOverlay.h"
 #include "editor/viewport/ToolOverlay.h"
 #include "editor/viewport/TrailBuilder.h"
 #include "editor/viewport/ViewportPalette.h"
@@ -58,7 +57,7 @@ Viewport::Viewport(QWidget* parent) : QOpenGLWidget(parent)
     m_overlay->resize(size());
     m_hud = new ViewportHud(this);
     m_hud->resize(size());
-    m_hud->setVisible(m_overlays.hud);
+    m_hud->setVisible(m_layers.settings().hud);
 }
 
 void Viewport::setTool(ViewportTool* tool)
@@ -196,10 +195,8 @@ void Viewport::setSet(const sim::Scene& scene)
     }
     m_boundsMin = scene.settings.boundsMin;
     m_boundsMax = scene.settings.boundsMax;
-    m_fieldParts = FieldArrows::partsOf(scene);
-    if (m_fieldGoal >= scene.goals.size())
-        m_fieldGoal = 0;
-    rebuildFields();
+    m_layers.setScene(scene);
+    update();
     m_grid.setBounds(m_boundsMin, m_boundsMax);
     m_setBox = setExtent(scene);
     m_frameOnNextPaint = true;
@@ -215,8 +212,9 @@ void Viewport::setAgents(std::span<const sim::AgentFrame> frames, std::span<cons
         m_frames.assign(frames.begin(), frames.begin() + std::ptrdiff_t(n));
         m_agents.assign(agents.begin(), agents.begin() + std::ptrdiff_t(n));
     }
-    rebuildDensity(frames.first(n));
-    const std::vector<glm::vec3>& colours = m_agentColours.coloursFor(frames.first(n), agents.first(n), m_density);
+    m_layers.rebuildDensity(frames.first(n), m_agentColours.colourBy() == ColourBy::Density);
+    const std::vector<glm::vec3>& colours =
+        m_agentColours.coloursFor(frames.first(n), agents.first(n), m_layers.density());
     m_agentCharacters.posesFor(frames.first(n), agents.first(n), m_shownPoses);
     m_glyphs.clear();
     m_carGlyphs.clear();
@@ -268,7 +266,7 @@ void Viewport::setAgents(std::span<const sim::AgentFrame> frames, std::span<cons
     }
     if (m_marks.followsAgents())
         rebuildHighlight();
-    if (m_overlays.trails)
+    if (m_layers.settings().trails)
         rebuildOverlay();
     m_overlay->update();  // the select tool's circles follow the agents too
     rebuildLights();
@@ -288,16 +286,9 @@ void Viewport::rebuildLights()
 
 void Viewport::setOverlays(const ViewportOverlays& overlays)
 {
-    if (overlays == m_overlays)
+    if (!m_layers.setSettings(overlays, m_frames, m_agentColours.colourBy() == ColourBy::Density))
         return;
-    const bool fieldsChanged = overlays.sketchField != m_overlays.sketchField || overlays.goalField != m_overlays.goalField;
-    const bool densityChanged = overlays.density != m_overlays.density;
-    m_overlays = overlays;
-    m_hud->setVisible(m_overlays.hud);
-    if (fieldsChanged)
-        rebuildFields();
-    if (densityChanged)
-        rebuildDensity(m_frames);
+    m_hud->setVisible(overlays.hud);
     rebuildOverlay();
     updateHud();
 }
@@ -312,8 +303,8 @@ void Viewport::setColourBy(ColourBy by)
 
 void Viewport::setSteering(std::vector<sim::AgentDebug> agents)
 {
-    m_steering = std::move(agents);
-    if (m_overlays.steering) {
+    m_layers.setSteering(std::move(agents));
+    if (m_layers.settings().steering) {
         rebuildOverlay();
         updateHud();
     }
@@ -324,59 +315,17 @@ void Viewport::setSimulationRate(double stepsPerSecond)
     m_stepsPerSecond = stepsPerSecond;
 }
 
-void Viewport::rebuildFields()
-{
-    m_fieldMesh.clear();
-    m_fieldChanged = true;
-    update();
-    if (!m_overlays.sketchField && !m_overlays.goalField)
-        return;
-    m_fields.setScene(m_fieldParts);  // builds again only when the parts changed
-    constexpr float kWantedSpacingM = 1.0f;
-    const float spacing = FieldArrows::spacingFor(m_boundsMin, m_boundsMax, kWantedSpacingM);
-    if (m_overlays.sketchField)
-        m_fields.addSketchArrows(m_fieldMesh, spacing);
-    if (m_overlays.goalField && m_fieldGoal < m_fields.goalCount())
-        m_fields.addGoalArrows(m_fieldGoal, m_fieldMesh, spacing);
-}
-
-void Viewport::rebuildDensity(std::span<const sim::AgentFrame> frames)
-{
-    const bool map = m_overlays.density, colour = m_agentColours.colourBy() == ColourBy::Density;
-    if (!map && !colour) {
-        if (!m_heatMesh.empty()) {
-            m_heatMesh.clear();
-            m_heatChanged = true;
-        }
-        return;
-    }
-    m_heatmap.build(frames, m_boundsMin, m_boundsMax);
-    m_density.resize(frames.size());
-    for (std::size_t i = 0; i < frames.size(); ++i)
-        m_density[i] = m_heatmap.densityAt({frames[i].position.x, frames[i].position.z});
-    m_heatMesh.clear();
-    if (map)
-        m_heatmap.addCells(m_heatMesh);
-    m_heatChanged = true;
-}
-
 void Viewport::rebuildOverlay()
 {
-    m_overlayMesh.clear();
-    if (m_overlays.trails && m_cache && m_frameIndex < m_cache->frameCount()) {
-        const std::vector<std::size_t> followed = m_marks.followed(m_shown, TrailBuilder::kMaxTrails);
-        const auto frames = std::size_t(std::lround(double(m_overlays.trailSeconds) * double(m_fps)));
-        TrailBuilder::add(*m_cache, m_frameIndex, followed, std::max<std::size_t>(2, frames), m_overlayMesh);
-    }
-    if (m_overlays.steering)
-        SteeringOverlay::add(m_steering, m_overlayMesh);
-    m_overlayChanged = true;
+    const std::vector<std::size_t> followed =
+        m_layers.settings().trails ? m_marks.followed(m_shown, TrailBuilder::kMaxTrails) : std::vector<std::size_t>{};
+    m_layers.rebuildLines(m_cache, m_frameIndex, followed, m_fps);
     update();
 }
 
 void Viewport::updateHud()
 {
-    if (!m_overlays.hud)
+    if (!m_layers.settings().hud)
         return;
     HudFigures figures = m_hudCounts;
     figures.frame = m_frameIndex;
@@ -386,41 +335,7 @@ void Viewport::updateHud()
     ColourLegend colouring = m_agentColours.legend();
     colouring.title = "Colour by " + colouring.title;
     figures.legends.push_back(std::move(colouring));
-    if (m_overlays.density) {
-        char peak[96];
-        std::snprintf(peak, sizeof peak, "Density map (agents per m², peak %.1f)", double(m_heatmap.maxDensity()));
-        ColourLegend density{peak, {}, true, 0};
-        for (const DensityHeatmap::ScaleStop& stop : DensityHeatmap::scale())
-            density.entries.push_back({std::to_string(int(stop.density)), glm::vec3(stop.colour)});
-        density.entries.back().label += " and more";
-        figures.legends.push_back(std::move(density));
-    }
-    if (m_overlays.sketchField) {
-        std::string note = "Sketched field: ";
-        if (m_fieldParts.flowStrokes.empty())
-            note += "the scene has no flow strokes";
-        else if (!m_fields.sketchError().empty())
-            note += m_fields.sketchError();
-        else
-            note += std::to_string(m_fieldParts.flowStrokes.size()) + " strokes";
-        figures.legends.push_back({note, {{"arrows", glm::vec3(FieldArrows::kSketchColour)}}, false, 0});
-    }
-    if (m_overlays.goalField)
-        figures.legends.push_back({m_fieldGoal < m_fieldParts.goals.size()
-                                       ? "Flow field to goal '" + m_fieldParts.goals[m_fieldGoal].name + "'"
-                                       : std::string("Flow field: the scene has no goal"),
-                                   {{"arrows", glm::vec3(FieldArrows::kGoalColour)}},
-                                   false,
-                                   0});
-    if (m_overlays.steering) {
-        constexpr std::size_t kDescribed = 2;  // agents whose forces the HUD lists
-        for (std::size_t k = 0; k < m_steering.size() && k < kDescribed; ++k)
-            figures.legends.push_back(SteeringOverlay::describe(m_steering[k]));
-        if (m_steering.empty())
-            figures.legends.push_back({m_marks.watchedIds().empty() ? "Steering: select an agent to see its steering"
-                                                                    : "Steering: computing the shown frame",
-                                       {}, false, 0});
-    }
+    m_layers.addLegends(figures, !m_marks.watchedIds().empty());
     m_hud->setFigures(std::move(figures));
 }
 
@@ -429,10 +344,8 @@ void Viewport::setHighlight(const sim::Scene& scene, const Selection& selection)
     const std::vector<sim::AgentId> watched = m_marks.watchedIds();
     m_marks.setSelection(scene, selection);
     for (const SceneItem& item : selection)
-        if (item.kind == ItemKind::Goal && item.index < scene.goals.size() && item.index != m_fieldGoal) {
-            m_fieldGoal = item.index;
-            if (m_overlays.goalField)
-                rebuildFields();
+        if (item.kind == ItemKind::Goal && item.index < scene.goals.size() && m_layers.showGoal(item.index)) {
+            update();
             updateHud();
             break;
         }
@@ -460,7 +373,7 @@ void Viewport::setInspectedAgent(sim::AgentId id)
 void Viewport::marksChanged(const std::vector<sim::AgentId>& watchedBefore)
 {
     rebuildHighlight();
-    if (m_overlays.trails || m_overlays.steering)
+    if (m_layers.settings().trails || m_layers.settings().steering)
         rebuildOverlay();
     if (m_marks.watchedIds() != watchedBefore)
         emit watchedAgentsChanged();
@@ -563,7 +476,7 @@ void Viewport::initializeGL()
         doneCurrent();
     });
     m_setChanged = m_lightsChanged = m_agentsChanged = m_highlightChanged = m_charactersChanged = true;
-    m_overlayChanged = m_fieldChanged = m_heatChanged = true;
+    m_layers.markAllChanged();
     m_glReady = true;
 }
 
@@ -607,14 +520,14 @@ void Viewport::uploadChanged()
         m_agentRenderer.upload(*this, {m_glyphs, m_glyphPoses}, {m_carGlyphs, m_carPoses}, {m_birdGlyphs, m_birdPoses});
     if (m_highlightChanged)
         m_highlightRenderer.upload(*this, m_highlightMesh);
-    if (m_overlayChanged)
-        m_overlayRenderer.upload(*this, m_overlayMesh);
-    if (m_fieldChanged)
-        m_fieldRenderer.upload(*this, m_fieldMesh);
-    if (m_heatChanged)
-        m_heatRenderer.upload(*this, m_heatMesh);
+    const OverlayLayers::Changed layers = m_layers.takeChanged();
+    if (layers.lines)
+        m_overlayRenderer.upload(*this, m_layers.lines());
+    if (layers.fields)
+        m_fieldRenderer.upload(*this, m_layers.fields());
+    if (layers.heat)
+        m_heatRenderer.upload(*this, m_layers.heat());
     m_setChanged = m_lightsChanged = m_agentsChanged = m_highlightChanged = m_charactersChanged = false;
-    m_overlayChanged = m_fieldChanged = m_heatChanged = false;
 }
 
 void Viewport::paintGL()

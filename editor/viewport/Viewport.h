@@ -9,10 +9,9 @@
 #include "editor/viewport/AgentColours.h"
 #include "editor/viewport/AgentRenderer.h"
 #include "editor/viewport/CameraRig.h"
-#include "editor/viewport/DensityHeatmap.h"
-#include "editor/viewport/FieldArrows.h"
 #include "editor/viewport/GridRenderer.h"
 #include "editor/viewport/GroundBox.h"
+#include "editor/viewport/OverlayLayers.h"
 #include "editor/viewport/SelectionMarks.h"
 #include "editor/viewport/ShapeMesh.h"
 #include "editor/viewport/ShapeRenderer.h"
@@ -69,7 +68,7 @@ public:
 
     // The HUD, trails, steering annotations, fields and density drawn over the set.
     void setOverlays(const ViewportOverlays& overlays);
-    const ViewportOverlays& overlays() const { return m_overlays; }
+    const ViewportOverlays& overlays() const { return m_layers.settings(); }
     void setColourBy(ColourBy by);
     ColourBy colourBy() const { return m_agentColours.colourBy(); }
     // The watched agents' steering annotations on the shown frame (steering overlay).
@@ -183,10 +182,6 @@ private:
     void marksChanged(const std::vector<sim::AgentId>& watchedBefore);
     // The trails and steering annotations of the shown frame.
     void rebuildOverlay();
-    // The sketched and goal fields' arrows (built from m_fieldParts on first use).
-    void rebuildFields();
-    // The shown frame's density map, and each shown agent's density (m_density).
-    void rebuildDensity(std::span<const sim::AgentFrame> frames);
     void updateHud();
     void releaseGl();
 
@@ -205,16 +200,7 @@ private:
     ShapeMesh m_setMesh;
     ShapeMesh m_lightMesh;
     ShapeMesh m_highlightMesh;
-    ShapeMesh m_overlayMesh;
-    bool m_overlayChanged = true;
-    ShapeMesh m_fieldMesh, m_heatMesh;
-    bool m_fieldChanged = true, m_heatChanged = true;
-    FieldArrows m_fields;
-    // What the fields are built from (FieldArrows::partsOf).
-    sim::Scene m_fieldParts;
-    std::size_t m_fieldGoal = 0;  // the selected goal, else the first
-    DensityHeatmap m_heatmap;
-    std::vector<float> m_density;  // agents per m² where each shown agent stands
+    OverlayLayers m_layers;  // trails, steering, fields and density, and what is on
     SolidMesh m_solidMesh, m_lampMesh;
     SelectionMarks m_marks;
     ShownAgents m_shown;  // the shown frame's agents, by World index
@@ -245,8 +231,6 @@ private:
     std::vector<sim::AgentInfo> m_agents;
     const sim::FrameCache* m_cache = nullptr;  // the recording shown, null for a World's state
     std::vector<std::string> m_typeNames;      // by Scene::agentTypes index
-    ViewportOverlays m_overlays;
-    std::vector<sim::AgentDebug> m_steering;
     double m_stepsPerSecond = 0.0;
     ViewportHud* m_hud = nullptr;
     HudFigures m_hudCounts;  // the shown frame's counts
