@@ -1,5 +1,5 @@
 #pragma once
-// The editor's icon set: hand-drawn SVGs compiled in from resources/icons (icons.qrc),
+// The editor's icon set: hand-drawn SVGs compiled in from resources/icons (every SVG there),
 // looked up by key ("tool-select", "action-play"). Draws nothing itself and never falls
 // back to another icon, so a misspelt key shows up as a missing icon rather than a wrong one.
 

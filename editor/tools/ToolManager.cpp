@@ -1,21 +1,8 @@
 #include "editor/tools/ToolManager.h"
 
+#include "ToolList.h"  // generated from THRONG_EDITOR_TOOLS in editor/CMakeLists.txt
+
 #include "editor/Icons.h"
-#include "editor/tools/AssignBrushTool.h"
-#include "editor/tools/CrowdBrushTool.h"
-#include "editor/tools/EraseBrushTool.h"
-#include "editor/tools/FlowStrokeTool.h"
-#include "editor/tools/GoalTool.h"
-#include "editor/tools/GroupTool.h"
-#include "editor/tools/HeroTool.h"
-#include "editor/tools/LaneTool.h"
-#include "editor/tools/ObstacleTool.h"
-#include "editor/tools/OrientBrushTool.h"
-#include "editor/tools/PathTool.h"
-#include "editor/tools/SelectTool.h"
-#include "editor/tools/TrafficLightTool.h"
-#include "editor/tools/VariationBrushTool.h"
-#include "editor/tools/WallTool.h"
 #include "editor/viewport/Viewport.h"
 
 #include <QAction>
@@ -30,15 +17,7 @@ namespace throng::editor {
 ToolManager::ToolManager(SceneDocument& document, Viewport& viewport, QObject* parent)
     : QObject(parent), m_viewport(viewport)
 {
-    m_tools = {new SelectTool(document, viewport, this),   new CrowdBrushTool(document, viewport, this),
-               new GroupTool(document, viewport, this),
-               new EraseBrushTool(document, viewport, this), new VariationBrushTool(document, viewport, this),
-               new OrientBrushTool(document, viewport, this), new AssignBrushTool(document, viewport, this),
-               new WallTool(document, viewport, this),
-               new PathTool(document, viewport, this),       new ObstacleTool(document, viewport, this),
-               new TrafficLightTool(document, viewport, this), new LaneTool(document, viewport, this),
-               new FlowStrokeTool(document, viewport, this),   new HeroTool(document, viewport, this),
-               new GoalTool(document, viewport, this)};
+    m_tools = createListedTools(document, viewport, this);
     m_group = new QActionGroup(this);
     m_group->setExclusive(true);
     for (ViewportTool* t : m_tools) {

@@ -1,7 +1,7 @@
 #pragma once
-// Owns the viewport tools and the exclusive QActionGroup that picks one; shows the
-// active tool's options in the tool options bar. Routes nothing itself: the viewport
-// forwards input to the tool it is given.
+// Owns the viewport tools (THRONG_EDITOR_TOOLS in editor/CMakeLists.txt lists them) and the
+// exclusive QActionGroup that picks one; shows the active tool's options in the tool options
+// bar. Routes nothing itself: the viewport forwards input to the tool it is given.
 
 #include "editor/tools/ViewportTool.h"
 

@@ -10,6 +10,7 @@
 #include "editor/SceneDocument.h"
 #include "editor/brain/BrainGraphModel.h"
 #include "editor/brain/BrainScene.h"
+#include "editor/tools/ToolManager.h"
 #include "editor/viewport/ViewportPalette.h"
 
 #include <QDockWidget>
@@ -202,6 +203,32 @@ private slots:
             }
         QTest::ignoreMessage(QtWarningMsg, QRegularExpression("no icon named \"tool-teleport\""));
         QVERIFY(themeIcon("tool-teleport").isNull());
+    }
+
+    // The tools bar shows kExpected's tools, in its order and with their icons, and starts on
+    // the first: the order comes from THRONG_EDITOR_TOOLS (editor/CMakeLists.txt), so a tool
+    // listed there and not here, or listed out of order, fails.
+    void toolsBarShowsTheExpectedToolsInOrder()
+    {
+        MainWindow window;
+        showNewWindow(window);
+        auto* bar = window.findChild<QToolBar*>("toolsToolBar");
+        QVERIFY(bar);
+        QStringList shown;
+        for (QAction* action : bar->actions()) {
+            const ViewportTool* tool = window.tools().tool(action->objectName().chopped(6));
+            QVERIFY2(tool, qPrintable(action->objectName()));
+            shown << tool->iconKey();
+            auto* button = qobject_cast<QToolButton*>(bar->widgetForAction(action));
+            QVERIFY2(button, qPrintable(action->objectName()));
+            const QImage drawn = button->icon().pixmap(24, 24).toImage();
+            QVERIFY2(!drawn.isNull() && drawn == themeIcon(tool->iconKey()).pixmap(24, 24).toImage(),
+                     qPrintable(tool->iconKey() + " is not the icon its button shows"));
+        }
+        QCOMPARE(shown, kExpected.front().keys);
+        QVERIFY(bar->actions().front()->isChecked());
+        QCOMPARE(window.tools().activeTool(), window.tools().tools().front());
+        QCOMPARE(window.viewport().tool(), window.tools().tools().front());
     }
 
     void everyIconDrawsLightLinesInsideItsBox_data()
