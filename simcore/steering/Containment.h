@@ -3,10 +3,15 @@
 // against a walkable region; when one is outside, steer along the surface normal back in.
 // Pure; zero while every probe is inside; never moves the agent or allocates.
 
+#include "simcore/steering/BehaviourKey.h"
 #include "simcore/steering/SteeringAgent.h"
 #include "simcore/steering/SteeringGeometry.h"
 
 #include <glm/vec3.hpp>
+
+#include <algorithm>
+#include <array>
+#include <string_view>
 
 namespace throng::sim {
 
@@ -24,5 +29,32 @@ glm::vec3 stayInside(const SteeringAgent& agent, const WalkableBox& region, cons
 
 // The same for a polygon in the ground plane (probes are tested by their (x, z)).
 glm::vec3 stayInside(const SteeringAgent& agent, const WalkablePolygon& region, const ContainmentParams& params = {});
+
+// Containment's entry in the behaviour list (BehaviourTable.h). Only agents whose probes
+// can reach the bounds ask; the rest are far inside.
+struct ContainmentBehaviour {
+    static constexpr std::string_view kName = "containment";
+    struct Slot {
+        ContainmentParams containment;
+    };
+    static constexpr auto kParams = &Slot::containment;
+    static constexpr std::array kKeys{
+        ParamKey<ContainmentParams>{.key = "probe_length", .meaning = "m, >= 0: probe when standing",
+                                    .number = &ContainmentParams::probeMinM},
+        ParamKey<ContainmentParams>{.key = "lookahead", .meaning = "s, >= 0: extra probe per m/s",
+                                    .number = &ContainmentParams::probeLookaheadS},
+    };
+    template <class Step, class Emit>
+    static void request(const Step& step, const ContainmentParams& p, Emit&& emit)
+    {
+        const SteeringAgent& self = step.self;
+        const float probe = p.probeMinM + p.probeLookaheadS * self.speed() + self.radius;
+        const glm::vec3 lo = self.position - step.bounds().min, hi = step.bounds().max - self.position;
+        const float nearest = step.flying ? std::min({lo.x, lo.y, lo.z, hi.x, hi.y, hi.z})
+                                          : std::min({lo.x, lo.z, hi.x, hi.z});  // walkers ignore height
+        if (nearest < probe)
+            emit(stayInside(self, step.bounds(), p));
+    }
+};
 
 }  // namespace throng::sim

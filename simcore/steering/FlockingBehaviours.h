@@ -3,6 +3,7 @@
 // behaviours over the neighbours the caller gathered. Pure; zero without neighbours in
 // range; never allocates, never reads the world, never draws random numbers.
 
+#include "simcore/steering/BehaviourKey.h"
 #include "simcore/steering/Neighbour.h"
 #include "simcore/steering/SteeringAgent.h"
 
@@ -10,6 +11,8 @@
 
 #include <cstdint>
 #include <span>
+#include <array>
+#include <string_view>
 
 namespace throng::sim {
 
@@ -55,5 +58,66 @@ glm::vec3 align(const SteeringAgent& agent, std::span<const Neighbour> neighbour
 
 // Arrives at the neighbours' centre. Zero without neighbours.
 glm::vec3 cohere(const SteeringAgent& agent, std::span<const Neighbour> neighbours, const CohesionParams& params = {});
+
+// Separation's, alignment's and cohesion's entries in the behaviour list (BehaviourTable.h).
+// Separation keeps off the neighbours the agent avoids (not those making way for it);
+// alignment and cohesion follow every neighbour it sees.
+struct SeparationBehaviour {
+    static constexpr std::string_view kName = "separation";
+    struct Slot {
+        SeparationParams separation;
+    };
+    static constexpr auto kParams = &Slot::separation;
+    static constexpr std::array kKeys{
+        ParamKey<SeparationParams>{.key = "range", .meaning = "m, >= 0: body gap below which neighbours push",
+                                   .number = &SeparationParams::rangeM},
+        ParamKey<SeparationParams>{
+            .key = "keep_right",
+            .meaning = "0..1: share of max force a walker steps right with, an oncoming walker in its way",
+            .hi = 1,
+            .number = &SeparationParams::keepRight},
+    };
+    template <class Step, class Emit>
+    static void request(const Step& step, const SeparationParams& p, Emit&& emit)
+    {
+        emit(separate(step.self, step.avoided, p));
+    }
+};
+
+struct AlignmentBehaviour {
+    static constexpr std::string_view kName = "alignment";
+    struct Slot {
+        AlignmentParams alignment;
+    };
+    static constexpr auto kParams = &Slot::alignment;
+    static constexpr std::array kKeys{
+        ParamKey<AlignmentParams>{.key = "match_speed", .meaning = "true: match speed too, not only heading",
+                                  .kind = ParamKind::Flag, .hi = 1, .flag = &AlignmentParams::matchSpeed},
+        ParamKey<AlignmentParams>{.key = "response_time", .meaning = "s, > 0", .lo = 1e-3f,
+                                  .number = &AlignmentParams::responseTimeS},
+    };
+    template <class Step, class Emit>
+    static void request(const Step& step, const AlignmentParams& p, Emit&& emit)
+    {
+        emit(align(step.self, step.near, p));
+    }
+};
+
+struct CohesionBehaviour {
+    static constexpr std::string_view kName = "cohesion";
+    struct Slot {
+        CohesionParams cohesion;
+    };
+    static constexpr auto kParams = &Slot::cohesion;
+    static constexpr std::array kKeys{
+        ParamKey<CohesionParams>{.key = "slowing_distance", .meaning = "m, > 0", .lo = 1e-3f,
+                                 .number = &CohesionParams::slowingDistanceM},
+    };
+    template <class Step, class Emit>
+    static void request(const Step& step, const CohesionParams& p, Emit&& emit)
+    {
+        emit(cohere(step.self, step.near, p));
+    }
+};
 
 }  // namespace throng::sim

@@ -3,10 +3,14 @@
 // when standing in the corridor ahead of it. Separation from other followers is the
 // caller's to add. Pure; never allocates, never reads anything but its arguments.
 
+#include "simcore/steering/BehaviourKey.h"
 #include "simcore/steering/Neighbour.h"
 #include "simcore/steering/SteeringAgent.h"
 
 #include <glm/vec3.hpp>
+
+#include <array>
+#include <string_view>
 
 namespace throng::sim {
 
@@ -26,5 +30,28 @@ bool inLeaderCorridor(const SteeringAgent& follower, const Neighbour& leader, co
 // a follower exactly on the line goes right when its id is odd, left when even). Elsewhere:
 // offset pursuit of the point behindM behind the leader.
 glm::vec3 followLeader(const SteeringAgent& follower, const Neighbour& leader, const LeaderFollowParams& params = {});
+
+// Leader following's entry in the behaviour list (BehaviourTable.h): asks only of an
+// agent with a leader.
+struct LeaderFollowingBehaviour {
+    static constexpr std::string_view kName = "leader_following";
+    struct Slot {
+        LeaderFollowParams leader;
+    };
+    static constexpr auto kParams = &Slot::leader;
+    using P = LeaderFollowParams;
+    static constexpr std::array kKeys{
+        ParamKey<P>{.key = "behind", .meaning = "m, >= 0: follow point behind the leader", .number = &P::behindM},
+        ParamKey<P>{.key = "corridor_length", .meaning = "m, >= 0: kept clear ahead of the leader",
+                    .number = &P::corridorLengthM},
+        ParamKey<P>{.key = "corridor_half_width", .meaning = "m, >= 0", .number = &P::corridorHalfWidthM},
+    };
+    template <class Step, class Emit>
+    static void request(const Step& step, const LeaderFollowParams& p, Emit&& emit)
+    {
+        if (step.leader)
+            emit(followLeader(step.self, *step.leader, p));
+    }
+};
 
 }  // namespace throng::sim

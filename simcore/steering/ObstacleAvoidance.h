@@ -3,12 +3,15 @@
 // cylinder ahead of the agent, growing with speed, must stay clear. Pure; returns exactly
 // zero when no collision is imminent, and never moves the agent or allocates.
 
+#include "simcore/steering/BehaviourKey.h"
 #include "simcore/steering/SteeringAgent.h"
 #include "simcore/steering/SteeringGeometry.h"
 
 #include <glm/vec3.hpp>
 
 #include <span>
+#include <array>
+#include <string_view>
 
 namespace throng::sim {
 
@@ -38,5 +41,40 @@ struct ObstacleAvoidanceParams {
 glm::vec3 avoidObstacles(const SteeringAgent& agent, std::span<const CircleObstacle> circles,
                          std::span<const BoxObstacle> boxes, glm::vec3 target,
                          const ObstacleAvoidanceParams& params = {});
+
+// Obstacle avoidance's entry in the behaviour list (BehaviourTable.h): asks wherever the
+// world has obstacles, with those within the cylinder's reach.
+struct ObstacleAvoidanceBehaviour {
+    static constexpr std::string_view kName = "obstacle_avoidance";
+    struct Slot {
+        ObstacleAvoidanceParams obstacles;
+    };
+    static constexpr auto kParams = &Slot::obstacles;
+    using P = ObstacleAvoidanceParams;
+    static constexpr std::array kKeys{
+        ParamKey<P>{.key = "min_length", .meaning = "m, >= 0: look-ahead cylinder when standing",
+                    .number = &P::minLengthM},
+        ParamKey<P>{.key = "lookahead", .meaning = "s, >= 0: extra cylinder length per m/s", .number = &P::lookaheadS},
+        ParamKey<P>{.key = "margin", .meaning = "m, >= 0: clearance beyond the body", .number = &P::marginM},
+        ParamKey<P>{.key = "whisker_angle", .meaning = "degrees, 0..90: side feelers' angle",
+                    .kind = ParamKind::AngleDeg, .hi = 90, .number = &P::whiskerAngleRad},
+        ParamKey<P>{.key = "response", .meaning = "lateral or repulsive", .kind = ParamKind::Choice,
+                    .choose = [](P& params, std::string_view word) {
+                        if (word == "lateral")
+                            params.response = AvoidanceResponse::Lateral;
+                        else if (word == "repulsive")
+                            params.response = AvoidanceResponse::Repulsive;
+                        return word == "lateral" || word == "repulsive";
+                    }},
+    };
+    template <class Step, class Emit>
+    static void request(const Step& step, const ObstacleAvoidanceParams& p, Emit&& emit)
+    {
+        const float reach = p.minLengthM + p.lookaheadS * step.self.speed() + step.self.radius + p.marginM;
+        step.withObstaclesNear(reach, [&](std::span<const CircleObstacle> circles, std::span<const BoxObstacle> boxes) {
+            emit(avoidObstacles(step.self, circles, boxes, step.goal, p));
+        });
+    }
+};
 
 }  // namespace throng::sim

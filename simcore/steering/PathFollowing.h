@@ -3,10 +3,14 @@
 // radius around a polyline spine, moving along it in one direction. Pure; returns exactly
 // zero while the agent is on the path and progressing, and never allocates.
 
+#include "simcore/steering/BehaviourKey.h"
 #include "simcore/steering/SteeringAgent.h"
 #include "simcore/steering/SteeringGeometry.h"
 
 #include <glm/vec3.hpp>
+
+#include <array>
+#include <string_view>
 
 namespace throng::sim {
 
@@ -62,5 +66,32 @@ glm::vec3 pointAlongPath(const SteeringPath& path, float distanceAlongM);
 
 // Total spine length in metres, including the closing segment of a closed path.
 float pathLength(const SteeringPath& path);
+
+// Path following's entry in the behaviour list (BehaviourTable.h): asks of an agent on a
+// path. Paths lie on the ground; a flier follows one in the horizontal at its own height.
+struct PathFollowingBehaviour {
+    static constexpr std::string_view kName = "path_following";
+    struct Slot {
+        PathFollowParams path;
+    };
+    static constexpr auto kParams = &Slot::path;
+    using P = PathFollowParams;
+    static constexpr std::array kKeys{
+        ParamKey<P>{.key = "prediction", .meaning = "s, >= 0: look-ahead of the future position",
+                    .number = &P::predictionS},
+        ParamKey<P>{.key = "ahead", .meaning = "m, >= 0: how far along the spine to aim", .number = &P::aheadM},
+        ParamKey<P>{.key = "response_time", .meaning = "s, > 0", .lo = 1e-3f, .number = &P::responseTimeS},
+    };
+    template <class Step, class Emit>
+    static void request(const Step& step, const PathFollowParams& p, Emit&& emit)
+    {
+        if (!step.onPath())
+            return;
+        SteeringAgent flat = step.self;
+        if (step.flying)
+            flat.position.y = flat.velocity.y = 0.0f;
+        emit(followPath(flat, step.path(), p, step.pathProgressM()));
+    }
+};
 
 }  // namespace throng::sim

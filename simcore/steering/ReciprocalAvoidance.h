@@ -7,9 +7,13 @@
 // small linear program. Where no velocity is allowed, the one that least violates the
 // worst half-plane. Pure, deterministic for a given neighbour order; no allocation.
 
+#include "simcore/steering/BehaviourKey.h"
+
 #include <glm/vec2.hpp>
 
+#include <array>
 #include <span>
+#include <string_view>
 
 namespace throng::sim {
 
@@ -37,5 +41,27 @@ struct PlanarBody {
 // (they part within one step). At most 16 neighbours are considered (the nearest first).
 glm::vec2 avoidReciprocally(const PlanarBody& self, glm::vec2 preferred, std::span<const PlanarNeighbour> neighbours,
                             float dt, const ReciprocalAvoidanceParams& params = {});
+
+// Reciprocal avoidance's entry in the behaviour list (BehaviourTable.h). It asks for no
+// force: it filters what the others ask for (Steer.h, avoidReciprocally).
+struct ReciprocalAvoidanceBehaviour {
+    static constexpr std::string_view kName = "reciprocal_avoidance";
+    struct Slot {
+        ReciprocalAvoidanceParams reciprocal;
+    };
+    static constexpr auto kParams = &Slot::reciprocal;
+    using P = ReciprocalAvoidanceParams;
+    static constexpr std::array kKeys{
+        ParamKey<P>{.key = "time_horizon", .meaning = "s, > 0: collisions further ahead are ignored", .lo = 1e-3f,
+                    .number = &P::timeHorizonS},
+        ParamKey<P>{.key = "keep_right",
+                    .meaning = "degrees, 0..90: turn right of the way while walkers come the other way",
+                    .kind = ParamKind::AngleDeg, .hi = 90, .number = &P::keepRightRad},
+    };
+    template <class Step, class Emit>
+    static void request(const Step&, const ReciprocalAvoidanceParams&, Emit&&)
+    {
+    }
+};
 
 }  // namespace throng::sim

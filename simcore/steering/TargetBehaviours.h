@@ -3,9 +3,13 @@
 // Pure functions of their arguments; they return a force (N, at most maxForce) and never
 // integrate, allocate or read anything but their parameters.
 
+#include "simcore/steering/BehaviourKey.h"
 #include "simcore/steering/SteeringAgent.h"
 
 #include <glm/vec3.hpp>
+
+#include <array>
+#include <string_view>
 
 namespace throng::sim {
 
@@ -39,5 +43,81 @@ glm::vec3 arrive(const SteeringAgent& agent, glm::vec3 target, const ArrivalPara
 
 // The desired velocity of arrival alone, for behaviours that add a feed-forward velocity to it.
 glm::vec3 arrivalVelocity(const SteeringAgent& agent, glm::vec3 target, float slowingDistanceM, float toleranceM);
+
+// Flee's, arrival's and seek's entries in the behaviour list (BehaviourTable.h). Flee runs
+// from the leader when there is one, else from the goal; arrival and seek head for the
+// goal of an agent that follows no path.
+struct FleeBehaviour {
+    static constexpr std::string_view kName = "flee";
+    struct Slot {
+        FleeParams flee;
+    };
+    static constexpr auto kParams = &Slot::flee;
+    static constexpr std::array kKeys{
+        ParamKey<FleeParams>{.key = "panic_distance", .meaning = "m, >= 0: flee only nearer than this; 0 = always",
+                             .number = &FleeParams::panicDistanceM},
+        ParamKey<FleeParams>{.key = "response_time", .meaning = "s, > 0", .lo = 1e-3f,
+                             .number = &FleeParams::responseTimeS},
+    };
+    template <class Step, class Emit>
+    static void request(const Step& step, const FleeParams& p, Emit&& emit)
+    {
+        if (step.leader)
+            emit(flee(step.self, step.leader->position, p));
+        else if (step.hasGoal)
+            emit(flee(step.self, step.goal, p));
+    }
+};
+
+struct ArrivalBehaviour {
+    static constexpr std::string_view kName = "arrival";
+    struct Slot {
+        ArrivalParams arrival;
+    };
+    static constexpr auto kParams = &Slot::arrival;
+    static constexpr std::array kKeys{
+        ParamKey<ArrivalParams>{.key = "slowing_distance", .meaning = "m, > 0: the speed ramps down inside it",
+                                .lo = 1e-3f, .number = &ArrivalParams::slowingDistanceM},
+        ParamKey<ArrivalParams>{.key = "tolerance", .meaning = "m, >= 0: stopped this near the target",
+                                .number = &ArrivalParams::toleranceM},
+        ParamKey<ArrivalParams>{.key = "response_time", .meaning = "s, > 0", .lo = 1e-3f,
+                                .number = &ArrivalParams::responseTimeS},
+    };
+    template <class Step, class Emit>
+    static void request(const Step& step, const ArrivalParams& p, Emit&& emit)
+    {
+        if (!step.hasGoal || step.onPath())
+            return;
+        // An exit is walked through, not stopped at: slowing down short of it, a walker
+        // whose door posts pushed it back (wall following) stood in front of the door for
+        // good (issue 23). Walkers with a navigation target keep their slowing: it sets a
+        // flow-field walker's pace in a crowd (WorldNav.cpp, Weidmann).
+        if (!step.walksThroughGoal()) {
+            emit(arrive(step.self, step.goal, p));
+            return;
+        }
+        ArrivalParams through = p;
+        through.slowingDistanceM = 1e-6f;
+        emit(arrive(step.self, step.goal, through));
+    }
+};
+
+struct SeekBehaviour {
+    static constexpr std::string_view kName = "seek";
+    struct Slot {
+        SeekParams seek;
+    };
+    static constexpr auto kParams = &Slot::seek;
+    static constexpr std::array kKeys{
+        ParamKey<SeekParams>{.key = "response_time", .meaning = "s, > 0: time to reach the desired velocity",
+                             .lo = 1e-3f, .number = &SeekParams::responseTimeS},
+    };
+    template <class Step, class Emit>
+    static void request(const Step& step, const SeekParams& p, Emit&& emit)
+    {
+        if (step.hasGoal && !step.onPath())
+            emit(seek(step.self, step.goal, p));
+    }
+};
 
 }  // namespace throng::sim

@@ -3,12 +3,15 @@
 // approach assuming straight motion, and steer laterally away from the soonest one that will
 // come too close, braking when it comes head-on. Pure; zero without a threat; no allocation.
 
+#include "simcore/steering/BehaviourKey.h"
 #include "simcore/steering/Neighbour.h"
 #include "simcore/steering/SteeringAgent.h"
 
 #include <glm/vec3.hpp>
 
 #include <span>
+#include <array>
+#include <string_view>
 
 namespace throng::sim {
 
@@ -26,5 +29,28 @@ struct UnalignedAvoidanceParams {
 // (1 - time / horizon), the lateral and braking parts together at most maxForce.
 glm::vec3 avoidUnalignedCollisions(const SteeringAgent& agent, std::span<const Neighbour> neighbours,
                                    const UnalignedAvoidanceParams& params = {});
+
+// Unaligned collision avoidance's entry in the behaviour list (BehaviourTable.h), against
+// the neighbours the agent avoids (not those making way for it).
+struct UnalignedCollisionAvoidanceBehaviour {
+    static constexpr std::string_view kName = "unaligned_collision_avoidance";
+    struct Slot {
+        UnalignedAvoidanceParams unaligned;
+    };
+    static constexpr auto kParams = &Slot::unaligned;
+    using P = UnalignedAvoidanceParams;
+    static constexpr std::array kKeys{
+        ParamKey<P>{.key = "horizon", .meaning = "s, > 0: approaches later than this are ignored", .lo = 1e-3f,
+                    .number = &P::horizonS},
+        ParamKey<P>{.key = "margin", .meaning = "m, >= 0: clearance beyond the two bodies", .number = &P::marginM},
+        ParamKey<P>{.key = "brake_fraction", .meaning = "0..1: share of force spent braking head-on", .hi = 1,
+                    .number = &P::brakeFraction},
+    };
+    template <class Step, class Emit>
+    static void request(const Step& step, const UnalignedAvoidanceParams& p, Emit&& emit)
+    {
+        emit(avoidUnalignedCollisions(step.self, step.avoided, p));
+    }
+};
 
 }  // namespace throng::sim

@@ -3,12 +3,15 @@
 // the approach to walls ahead, a standoff term holds the agent off near walls even against
 // other forces. Pure; zero with no wall near or approached; never moves the agent or allocates.
 
+#include "simcore/steering/BehaviourKey.h"
 #include "simcore/steering/SteeringAgent.h"
 #include "simcore/steering/SteeringGeometry.h"
 
 #include <glm/vec3.hpp>
 
 #include <span>
+#include <array>
+#include <string_view>
 
 namespace throng::sim {
 
@@ -35,5 +38,39 @@ struct WallAvoidanceParams {
 // An agent exactly on a wall is pushed back against its heading. Not truncated.
 glm::vec3 avoidWalls(const SteeringAgent& agent, std::span<const WallSegment> walls,
                      const WallAvoidanceParams& params = {}, const glm::vec3* target = nullptr);
+
+// Wall following (Reynolds 1999): an agent whose way leads into a nearby wall travels
+// along it toward the end nearer its way, instead of pressing against its face (the local
+// minimum a goal straight behind a wall makes). Zero when no wall is in the way.
+glm::vec3 slideAlongWall(const SteeringAgent& agent, std::span<const WallSegment> walls, glm::vec3 target,
+                         const WallAvoidanceParams& params);
+
+// Wall following's entry in the behaviour list (BehaviourTable.h): two requests, the
+// feelers' and the slide along the wall in the way, when walls are within the feelers.
+struct WallFollowingBehaviour {
+    static constexpr std::string_view kName = "wall_following";
+    struct Slot {
+        WallAvoidanceParams walls;
+    };
+    static constexpr auto kParams = &Slot::walls;
+    using P = WallAvoidanceParams;
+    static constexpr std::array kKeys{
+        ParamKey<P>{.key = "feeler_length", .meaning = "m, >= 0: feeler when standing", .number = &P::feelerMinM},
+        ParamKey<P>{.key = "lookahead", .meaning = "s, >= 0: extra feeler per m/s", .number = &P::feelerLookaheadS},
+        ParamKey<P>{.key = "feeler_angle", .meaning = "degrees, 0..90: side feelers' angle",
+                    .kind = ParamKind::AngleDeg, .hi = 90, .number = &P::sideFeelerAngleRad},
+        ParamKey<P>{.key = "standoff", .meaning = "m, > 0: gap below which a wall pushes back", .lo = 1e-3f,
+                    .number = &P::standoffM},
+    };
+    template <class Step, class Emit>
+    static void request(const Step& step, const WallAvoidanceParams& p, Emit&& emit)
+    {
+        const float reach = p.feelerMinM + p.feelerLookaheadS * step.self.speed() + p.standoffM + step.self.radius;
+        step.withWallsNear(reach, [&](std::span<const WallSegment> walls) {
+            emit(avoidWalls(step.self, walls, p, &step.goal));
+            emit(slideAlongWall(step.self, walls, step.goal, p));
+        });
+    }
+};
 
 }  // namespace throng::sim

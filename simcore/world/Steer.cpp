@@ -6,10 +6,10 @@
 #include "simcore/world/StepView.h"
 #include "simcore/world/WorldPriority.h"
 
-#include "simcore/base/Rng.h"
 #include "simcore/steering/UninitialisedArray.h"
 #include "simcore/world/DebugSink.h"
 #include "simcore/world/Sense.h"
+#include "simcore/world/detail/BehaviourStep.h"
 #include "simcore/world/detail/StepGeometry.h"
 
 #include <glm/geometric.hpp>
@@ -20,143 +20,73 @@
 
 namespace throng::sim {
 
-namespace {
-
-// Adds behaviour b's force, weighted by its type and the agent's brain, to the requests
-// when the type runs it, and tells the sink (describeAgent) what it asked for. The force
-// is only computed for a behaviour that runs.
-template <class Force>
-void requestBehaviour(const TypeSteering& s, Behaviour b, float brainWeight, Force&& force,
-                      SteeringRequestList& requests, DebugSink* sink)
-{
-    if (!s.on(b))
-        return;
-    const glm::vec3 f = force();
-    const float weight = s.w(b) * brainWeight;
-    requests.add(f, weight);
-    if (sink)
-        sink->force(b, f, weight);
-}
-
-}  // namespace
-
 using namespace detail;
 
 namespace {
 
-// Head-on to a wall, a walker sliding along it faster than this keeps its way.
-constexpr float kSlideOnMps = 0.1f;
+using detail::BehaviourStep;
 
-// Wall following (Reynolds 1999): an agent whose way leads into a nearby wall travels
-// along it toward the end nearer its way, instead of pressing against its face (the
-// local minimum a goal straight behind a wall makes). Zero when no wall is in the way.
-glm::vec3 slideAlongWall(const SteeringAgent& self, std::span<const WallSegment> walls, glm::vec3 target,
-                         const WallAvoidanceParams& params)
+// Asks each behaviour of `Rows` that agent's type runs for its forces, in the list's order,
+// weighted by the type and the agent's brain, and tells the sink (describeAgent) what each
+// asked for. A behaviour the type does not run (weight 0) is not asked.
+template <class... Rows>
+void requestBehaviours(BehaviourRows<Rows...>, const BehaviourStep& step, const TypeSteering& s,
+                       const BrainPhase& brains, SteeringRequestList& requests, DebugSink* sink)
 {
-    const glm::vec2 p(self.position.x, self.position.z);
-    glm::vec2 way(target.x - p.x, target.z - p.y);
-    if (glm::dot(way, way) < 1e-8f)
-        way = glm::vec2(self.forward.x, self.forward.z);
-    if (glm::dot(way, way) < 1e-8f)
-        return glm::vec3(0.0f);
-    way = glm::normalize(way);
-    const float reach = self.radius + params.standoffM + 0.5f;
-    float nearest = reach;
-    glm::vec2 tangent(0.0f);
-    for (const WallSegment& w : walls) {
-        const glm::vec2 a(w.a.x, w.a.z), b(w.b.x, w.b.z);
-        const glm::vec2 c = closestOnSegment(p, a, b);
-        const float d = glm::distance(p, c);
-        const glm::vec2 along = b - a;
-        if (d >= nearest || glm::dot(along, along) < 1e-8f || d < 1e-6f)
-            continue;
-        // Only a wall that the way actually runs into (a ray from the body's centre
-        // widened by its radius) counts; door jambs beside the way do not.
-        const glm::vec2 sideways(-way.y, way.x);
-        bool blocked = false;
-        for (float offset : {-self.radius, 0.0f, self.radius})
-            blocked = blocked || segmentsCross(p + sideways * offset, p + sideways * offset + way * reach, a, b);
-        if (!blocked)
-            continue;
-        glm::vec2 t = glm::normalize(along);
-        float side = glm::dot(way, t);
-        if (std::fabs(side) < 0.2f) {
-            // Nearly head-on: keep on the way it already slides, so a walker near the middle
-            // of a face does not turn back each time the nearer end changes; from a stand,
-            // go round the nearer end.
-            const float sliding = glm::dot(glm::vec2(self.velocity.x, self.velocity.z), t);
-            if (std::fabs(sliding) > kSlideOnMps)
-                side = sliding;
-            else
-                side = glm::distance(c, a) < glm::distance(c, b) ? -1.0f : 1.0f;
-        }
-        tangent = side < 0.0f ? -t : t;
-        nearest = d;
-    }
-    return glm::vec3(tangent.x, 0.0f, tangent.y) * self.maxForce;
+    auto one = [&]<class Row>(Row) {
+        constexpr Behaviour b = Row::kBehaviour;
+        using D = typename Row::Type;
+        if (!s.on(b))
+            return;
+        D::request(step, s.*D::kParams, [&](glm::vec3 force) {
+            const float weight = s.w(b) * brains.weight(step.i, b);
+            requests.add(force, weight);
+            if (sink)
+                sink->force(b, force, weight);
+        });
+    };
+    (one(Rows{}), ...);
 }
 
+// Whether a behaviour the type runs gives agent `step` somewhere to go without a goal, a
+// path or a leader (a descriptor says so with leadsSomewhere; most do not).
+template <class... Rows>
+bool leadsSomewhere(BehaviourRows<Rows...>, const BehaviourStep& step, const TypeSteering& s)
+{
+    auto one = [&]<class Row>(Row) {
+        if constexpr (requires { Row::Type::leadsSomewhere(step); })
+            return s.on(Row::kBehaviour) && Row::Type::leadsSomewhere(step);
+        else
+            return false;
+    };
+    return (one(Rows{}) || ...);
+}
+
+template <Behaviour B>
+using RowOf = typename BehaviourRowOf<BehaviourList, B>::Type;
 
 }  // namespace
 
-// Wall following and obstacle avoidance's requests, in steer's order (after containment):
-// shared by steer (Steer.h) and the walker kernel (WalkKernel.cpp), so the two add the same
+// Wall following's and obstacle avoidance's requests, in steer's order (after containment):
+// the walker kernel (WalkKernel.cpp) adds them through here, so it and steer add the same
 // forces with the same weights. Nothing when the world has no walls or obstacles.
 void steerAroundStatics(const StepView& v, const BrainPhase& brains, std::size_t i, const SteeringAgent& self,
                         glm::vec3 goal, SteeringRequestList& requests, DebugSink* sink)
 {
     const TypeSteering& s = v.types.steering[v.agents.info[i].typeIndex];
-    using B = Behaviour;
-    auto request = [&](B b, auto&& force) {
-        requestBehaviour(s, b, brains.weight(i, b), force, requests, sink);
-    };
-    const glm::vec3 p = self.position;
-    if (s.on(B::WallFollowing) && !v.set.walls.segments().empty()) {
-        std::array<WallSegment, kMaxNearWalls> walls;
-        std::size_t n = 0;
-        const float reach = s.walls.feelerMinM + s.walls.feelerLookaheadS * self.speed() + s.walls.standoffM +
-                            self.radius;
-        v.set.walls.forEachNear(xz(p), reach, [&](std::uint32_t k) {
-            if (n < walls.size()) {
-                const Segment& seg = v.set.walls.segment(k);
-                walls[n++] = {glm::vec3(seg.a.x, 0.0f, seg.a.y), glm::vec3(seg.b.x, 0.0f, seg.b.y)};
-            }
-        });
-        if (n > 0) {
-            request(B::WallFollowing, [&] { return avoidWalls(self, {walls.data(), n}, s.walls, &goal); });
-            request(B::WallFollowing, [&] { return slideAlongWall(self, {walls.data(), n}, goal, s.walls); });
-        }
-    }
-    if (s.on(B::ObstacleAvoidance) && (!v.set.circles.empty() || !v.set.boxes.empty())) {
-        std::array<CircleObstacle, kMaxNearObstacles> circles;
-        std::array<BoxObstacle, kMaxNearObstacles> boxes;
-        std::size_t nc = 0, nb = 0;
-        const float reach = s.obstacles.minLengthM + s.obstacles.lookaheadS * self.speed() + self.radius +
-                            s.obstacles.marginM;
-        v.set.obstacleGrid.forEachNear(xz(p), reach, [&](std::uint32_t k) {
-            if (k < v.set.circles.size()) {
-                if (nc < circles.size())
-                    circles[nc++] = v.set.circles[k];
-            } else if (nb < boxes.size()) {
-                boxes[nb++] = v.set.boxes[k - v.set.circles.size()];
-            }
-        });
-        request(B::ObstacleAvoidance,
-                [&] { return avoidObstacles(self, {circles.data(), nc}, {boxes.data(), nb}, goal, s.obstacles); });
-    }
+    const BehaviourStep step{.v = v, .i = i, .self = self, .flying = s.vehicle.flying, .goal = goal};
+    requestBehaviours(BehaviourRows<RowOf<Behaviour::WallFollowing>, RowOf<Behaviour::ObstacleAvoidance>>{}, step, s,
+                      brains, requests, sink);
 }
 
-// Steer: every behaviour the type runs, in priority order, combined by blending or by
-// prioritised allocation. Pure in the previous state; the new wander state goes out.
+// Steer: every behaviour the type runs, in the behaviour list's order (BehaviourTable.h),
+// combined by blending or by prioritised allocation. Pure in the previous state; the new
+// wander state goes out.
 glm::vec3 steer(const StepView& v, const BrainPhase& brains, std::size_t i, const SteeringAgent& self,
                 std::span<const Neighbour> near, WanderState& wanderOut, DebugSink* sink)
 {
     const TypeSteering& s = v.types.steering[v.agents.info[i].typeIndex];
-    using B = Behaviour;
     SteeringRequestList requests;
-    auto request = [&](B b, auto&& force) {
-        requestBehaviour(s, b, brains.weight(i, b), force, requests, sink);
-    };
     const glm::vec3 p = self.position;
     const bool hasGoal = v.agents.goal[i] >= 0;
     const glm::vec3 goal =
@@ -167,77 +97,28 @@ glm::vec3 steer(const StepView& v, const BrainPhase& brains, std::size_t i, cons
         const auto j = std::size_t(leaderIndex);
         leader = {v.agents.pos[j], v.agents.vel[j], v.agents.fwd[j], v.agents.radius[j], v.agents.info[j].id};
     }
-
-    if (s.on(B::Containment)) {
-        // Only agents whose probes can reach the bounds ask; the rest are far inside.
-        const float probe = s.containment.probeMinM + s.containment.probeLookaheadS * self.speed() + self.radius;
-        const glm::vec3 lo = p - v.set.bounds.min, hi = v.set.bounds.max - p;
-        const float nearest = s.vehicle.flying ? std::min({lo.x, lo.y, lo.z, hi.x, hi.y, hi.z})
-                                               : std::min({lo.x, lo.z, hi.x, hi.z});  // walkers ignore height
-        if (nearest < probe)
-            request(B::Containment, [&] { return stayInside(self, v.set.bounds, s.containment); });
-    }
-    steerAroundStatics(v, brains, i, self, goal, requests, sink);
     // Separation and collision avoidance leave to lower-priority neighbours the whole
     // of making way (WorldPriority.h).
     // (The buffer is only written when priorities differ, and only as far as it is read.)
     UninitialisedArray<Neighbour, kMaxNeighbours> yielding;
     const std::span<const Neighbour> avoided =
         v.types.makingWay ? neighboursToAvoid(v, i, near, yielding.data()) : near;
-    request(B::Separation, [&] { return separate(self, avoided, s.separation); });
-    request(B::UnalignedCollisionAvoidance, [&] { return avoidUnalignedCollisions(self, avoided, s.unaligned); });
-    if (leaderIndex >= 0) {
-        request(B::Evasion, [&] { return evade(self, leader, s.evasion); });
-        request(B::Flee, [&] { return flee(self, leader.position, s.flee); });
-        request(B::LeaderFollowing, [&] { return followLeader(self, leader, s.leader); });
-        request(B::OffsetPursuit, [&] { return pursueOffset(self, leader, s.offsetPursuit); });
-        request(B::Pursuit, [&] { return pursue(self, leader, s.pursuit); });
-    } else if (hasGoal) {
-        request(B::Flee, [&] { return flee(self, goal, s.flee); });
-    }
-    if (v.agents.path[i] >= 0) {
-        const auto k = std::size_t(v.agents.path[i]);
-        const SteeringPath path{v.set.pathPoints[k], v.set.paths[k].radiusM, v.set.paths[k].closed};
-        // Paths lie on the ground; a flier follows one in the horizontal at its own height.
-        SteeringAgent flat = self;
-        if (s.vehicle.flying)
-            flat.position.y = flat.velocity.y = 0.0f;
-        request(B::PathFollowing, [&] { return followPath(flat, path, s.path, v.agents.pathAlong[i]); });
-    }
-    if (!v.set.flow.empty())
-        request(B::FlowFieldFollowing,
-                [&] { return followFlow(self, flowDirection(v, flowSamplePoint(self, s.flow)), s.flow); });
-    if (hasGoal && v.agents.path[i] < 0) {
-        // An exit is walked through, not stopped at: slowing down short of it, a walker
-        // whose door posts pushed it back (wall following) stood in front of the door for
-        // good (issue 23). Walkers with a navigation target keep their slowing: it sets a
-        // flow-field walker's pace in a crowd (WorldNav.cpp, Weidmann).
-        request(B::Arrival, [&] {
-            if (!v.set.goals[std::size_t(v.agents.goal[i])].exit || (v.nav.active && v.nav.hasTarget[i]))
-                return arrive(self, goal, s.arrival);
-            ArrivalParams through = s.arrival;
-            through.slowingDistanceM = 1e-6f;
-            return arrive(self, goal, through);
-        });
-        request(B::Seek, [&] { return seek(self, goal, s.seek); });
-    }
-    request(B::Alignment, [&] { return align(self, near, s.alignment); });
-    request(B::Cohesion, [&] { return cohere(self, near, s.cohesion); });
     wanderOut = v.agents.wander[i];
-    if (s.on(B::Wander)) {
-        const std::uint64_t key = rngKey(v.seed, v.agents.info[i].id, v.clock.step);
-        const glm::vec3 random(rngRangeOf(key, kWanderX, -1.0f, 1.0f), rngRangeOf(key, kWanderY, -1.0f, 1.0f),
-                               rngRangeOf(key, kWanderZ, -1.0f, 1.0f));
-        const WanderResult w = wander(self, v.agents.wander[i], random, s.wander);
-        wanderOut = w.state;
-        requests.add(w.force, s.w(B::Wander) * brains.weight(i, B::Wander));
-        if (sink)
-            sink->force(B::Wander, w.force, s.w(B::Wander) * brains.weight(i, B::Wander));
-    }
+    const BehaviourStep step{.v = v,
+                             .i = i,
+                             .self = self,
+                             .flying = s.vehicle.flying,
+                             .goal = goal,
+                             .hasGoal = hasGoal,
+                             .leader = leaderIndex >= 0 ? &leader : nullptr,
+                             .avoided = avoided,
+                             .near = near,
+                             .wanderOut = &wanderOut};
+    requestBehaviours(BehaviourList{}, step, s, brains, requests, sink);
     // A walker or vehicle with nowhere to go comes to rest instead of coasting on what
     // separation or a collision gave it (the lowest priority: anything else comes first).
-    const bool goesSomewhere = hasGoal || v.agents.path[i] >= 0 || leaderIndex >= 0 || s.on(B::Wander) ||
-                               (!v.set.flow.empty() && s.on(B::FlowFieldFollowing));
+    const bool goesSomewhere =
+        hasGoal || v.agents.path[i] >= 0 || leaderIndex >= 0 || leadsSomewhere(BehaviourList{}, step, s);
     if (!goesSomewhere && !s.vehicle.flying)
         requests.add(-self.velocity * (self.mass / kStandStillResponseS), 1.0f);
     return s.priority ? allocateByPriority(requests, self.maxForce) : blendWeighted(requests, self.maxForce);

@@ -5,7 +5,6 @@
 
 #include "simcore/scene/BehaviourTable.h"
 #include "simcore/scene/Scene.h"
-#include "simcore/steering/ReciprocalAvoidance.h"
 #include "simcore/steering/Steering.h"
 
 #include <array>
@@ -15,28 +14,12 @@
 
 namespace throng::sim {
 
-struct TypeSteering {
+// The behaviours' parameters come from the behaviour list (BehaviourTable.h): one member
+// per behaviour, named by its descriptor's Slot (`seek`, `walls`, `obstacles`, ...).
+struct TypeSteering : BehaviourParamsOf<BehaviourList> {
     std::array<float, kBehaviourCount> weight{};  // >= 0; 0 = the behaviour does not run
     bool priority = false;                        // prioritised allocation instead of blending
     VehicleParams vehicle;
-    SeekParams seek;
-    FleeParams flee;
-    PursuitParams pursuit;
-    EvasionParams evasion;
-    OffsetPursuitParams offsetPursuit;
-    ArrivalParams arrival;
-    ObstacleAvoidanceParams obstacles;
-    WanderParams wander;
-    PathFollowParams path;
-    WallAvoidanceParams walls;
-    ContainmentParams containment;
-    FlowFollowParams flow;
-    SeparationParams separation;
-    AlignmentParams alignment;
-    CohesionParams cohesion;
-    LeaderFollowParams leader;
-    UnalignedAvoidanceParams unaligned;
-    ReciprocalAvoidanceParams reciprocal;
     // cos and sin of the keep-right turn for 1, 2 and 3 or more oncoming walkers
     // (computed once here, not per agent per step).
     std::array<glm::vec2, 3> keepRightTurn{};
