@@ -1,9 +1,9 @@
 // Wall following's slide along the wall in the way (Reynolds 1999, "Wall Following"). It
-// uses the step's planar helpers (world/detail/StepGeometry.h), the ones it was written
+// uses the step's planar helpers (base/detail/PlanarSegments.h), the ones it was written
 // with, so a wall follower's path stays exactly as it was.
 #include "simcore/steering/WallAvoidance.h"
 
-#include "simcore/world/detail/StepGeometry.h"
+#include "simcore/base/detail/PlanarSegments.h"
 
 #include <glm/geometric.hpp>
 
