@@ -1,10 +1,9 @@
 // The neighbour sweep (NeighbourGrid::forEachNearestSweep, WorldOptions::neighbourSweep):
 // boids step in the grid's order, each search moving the last one's height windows and
-// starting from last step's k nearest (walkers and the general path start from theirs
-// too). It must change nothing: a k-nearest search through the sweep finds exactly what a
-// brute-force scan finds, and a flock or a crowd run with and without it ends
-// bit-identical, for 1 and 2 threads, from a packed start, once it has gathered, and in
-// the jam of `cross` (with the walker kernel, with brains, with priorities).
+// starting from last step's k nearest (walkers start from theirs too). It must change
+// nothing: a k-nearest search through the sweep finds exactly what a brute-force scan
+// finds, and a flock or a crowd run with and without it ends bit-identical, for 1 and 2
+// threads, from a packed start, once it has gathered, and in the jam of `cross`.
 #include "RunBits.h"
 #include "TestRegistry.h"
 
@@ -186,44 +185,6 @@ private slots:
 
     // Walkers: `cross` (the agents of a circle meet in a jam at its centre).
     void crowdIsUnchanged() { checkSame(makeCrossScenario(600), 900, false); }
-
-    void brainCrowdIsUnchanged_data()
-    {
-        QTest::addColumn<bool>("cone");
-        QTest::newRow("all round (reciprocal avoidance)") << false;
-        QTest::newRow("a 120 degree view, which drops some of last step's nearest") << true;
-    }
-
-    // Walkers with a brain step the general path: its search (gatherNeighbours, for the
-    // brain's senses and the steering) starts from last step's k nearest too, and searches
-    // the whole radius when fewer than k of them are still in view.
-    void brainCrowdIsUnchanged()
-    {
-        QFETCH(bool, cone);
-        Scene s = makeCrossBrainScenario(600);
-        if (cone) {
-            s.agentTypes[0].viewAngleDeg = 120.0f;
-            s.agentTypes[0].behaviours = {
-                {"arrival", 1.0f, {}}, {"separation", 1.0f, {}}, {"unaligned_collision_avoidance", 1.0f, {}}};
-        }
-        QVERIFY(!World(s).usesWalkKernel(0));  // else this compares the walker kernel again
-        checkSame(s, 900, false);
-    }
-
-    // Two priorities: the general path again, where the search must not start from last
-    // step's k nearest (a neighbour of higher priority outranks nearer ones).
-    void crowdThatMakesWayIsUnchanged()
-    {
-        Scene s = makeCrossScenario(600);
-        AgentType urgent = s.agentTypes[0];
-        urgent.name = "urgent";
-        urgent.priority = 1.0f;
-        s.agentTypes.push_back(urgent);
-        for (std::size_t k = 0; k < s.agents.size(); k += 5)
-            s.agents[k].type = urgent.name;
-        QVERIFY(!World(s).usesWalkKernel(0));
-        checkSame(s, 900, false);
-    }
 
     // The kernel steers eight boids at once exactly where the CPU has AVX2, unless told
     // not to; flockIsUnchanged compares both widths with the plain path.
