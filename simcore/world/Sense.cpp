@@ -83,18 +83,8 @@ std::size_t gatherNeighbours(const StepView& v, std::size_t i, Neighbour* out, s
         if (best.insert(nearestKey(d2, j, !urgent)) && best.full() && !v.types.makingWay)
             bound = best.worstDistance2();
     };
-    // As the kernels: start from last step's k nearest where they are now. When k pass
-    // within that bound they are the k nearest of the whole radius; else search it all.
-    // Not when types make way: a neighbour of higher priority outranks every nearer one.
-    const float guess2 = v.warmSearch && !v.types.makingWay ? lastNearestBound(v.agents, i, p, r2) : r2;
     // Nearest rows first: once the k best are found, farther cells are skipped.
-    bound = guess2;
     v.grid.forEachNearest(p, t.perception, [&] { return bound; }, consider);
-    if (!best.full() && guess2 < r2) {
-        best.clear();
-        bound = r2;
-        v.grid.forEachNearest(p, t.perception, [&] { return bound; }, consider);
-    }
     for (std::size_t n = 0; n < best.count; ++n) {
         const auto j = best.index(n);
         out[n] = {v.agents.pos[j], v.agents.vel[j], v.agents.fwd[j], v.agents.radius[j], v.agents.info[j].id};

@@ -31,8 +31,8 @@ struct StepView {
     bool allFliers;   // no obstacles, crosswalks or leaders to count for anyone
     float maxRadius;  // the largest body radius, m
     std::uint64_t seed;  // the World's: random draws are keyed by it (Rng.h)
-    // Neighbour searches start from last step's k nearest (lastNearestBound, Sense.h)
-    // instead of the perception radius: the same result, fewer cells (WorldOptions).
+    // The kernels' neighbour searches start from last step's k nearest (lastNearestBound,
+    // Sense.h) instead of the perception radius: the same result, fewer cells (WorldOptions).
     bool warmSearch;
 
     const TypeParams& type(std::size_t i) const { return types.params[agents.info[i].typeIndex]; }

@@ -47,9 +47,9 @@ struct WorldOptions {
     // trusting what the boids kernel found (tests compare)
     bool collideShortcut = true;
     bool walkKernel = true;     // false: walkers take the general steering path too (tests compare the two)
-    // false: agents step in index order and neighbour searches start from the perception
-    // radius, instead of in the grid's order (fliers) from last step's neighbours (the
-    // result is the same; tests compare)
+    // false: agents step in index order and the kernels' neighbour searches start from the
+    // perception radius, instead of in the grid's order (fliers) from last step's
+    // neighbours (the result is the same; tests compare)
     bool neighbourSweep = true;
     // false: the boids kernel steers four boids at a time even where the CPU has AVX2,
     // instead of eight (the result is the same; tests compare)
