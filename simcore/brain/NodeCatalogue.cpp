@@ -184,7 +184,9 @@ std::vector<NodeSpec> makeCatalogue()
         variadic(node("output.action", "output",
                       "Action layer: the most desirable action becomes current whenever the current clip ends.",
                       {in("desire", S)}, {out("action", S)},
-                      {text("actions", true, "action names, space-separated: idle walk run wait or your own"),
+                      {text("actions", true,
+                            "action names, space-separated: idle walk run, a clip (wait look_around wave talk "
+                            "phone cheer) or your own"),
                        nums("durations", 0, false, "clip length per action in seconds; 0 = may change every step")}),
                  1));
     c.push_back(

@@ -6,16 +6,6 @@
 
 namespace throng::sim {
 
-const char* toString(Clip clip)
-{
-    switch (clip) {
-    case Clip::Idle: return "idle";
-    case Clip::Walk: return "walk";
-    case Clip::Run: return "run";
-    }
-    return "idle";
-}
-
 namespace {
 
 AgentFrame absentFrame()

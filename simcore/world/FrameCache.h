@@ -11,6 +11,8 @@
 // maps to the cache's agent index (worldSlot); an "epoch" starts wherever the set or an
 // agent's type changed, and agentsAt(f) gives each agent's type on frame f.
 
+#include "simcore/scene/Clip.h"
+
 #include <glm/vec3.hpp>
 
 #include <cstddef>
@@ -22,14 +24,11 @@ namespace throng::sim {
 
 using AgentId = std::uint32_t;
 
-enum class Clip : std::uint8_t { Idle = 0, Walk = 1, Run = 2 };
-const char* toString(Clip clip);
-
 struct AgentFrame {
     glm::vec3 position{0.0f};  // m
     float headingRad = 0.0f;   // yaw about +y, 0 = facing +x, counter-clockwise from above
     float speed = 0.0f;        // m/s
-    float phase = 0.0f;        // gait cycle phase in [0, 1)
+    float phase = 0.0f;        // gait cycle phase in [0, 1) (an action's phase: actionPhase, Clip.h)
     Clip clip = Clip::Idle;
     // Left through an exit on or before this frame: no longer in the shot (the viewport
     // draws nothing, exports hide it); position and heading stay where it left.

@@ -135,11 +135,12 @@ void BrainPhase::build(const Scene& scene, const StepView& v)
             const auto it = goalByName.find(name);
             tb.goalIndex.push_back(it == goalByName.end() ? -1 : it->second);
         }
-        for (const std::string& name : r.program->action.names)
-            tb.actionClip.push_back(name == "idle" ? std::int8_t(Clip::Idle)
-                                    : name == "walk" ? std::int8_t(Clip::Walk)
-                                    : name == "run"  ? std::int8_t(Clip::Run)
-                                                     : std::int8_t(-1));
+        // An action named as a clip plays it (Clip.h); any other name keeps the clip the
+        // agent's speed gives.
+        for (const std::string& name : r.program->action.names) {
+            const std::optional<Clip> clip = clipFromName(name);
+            tb.actionClip.push_back(clip ? std::int8_t(*clip) : std::int8_t(-1));
+        }
     }
     for (std::size_t i = 0; i < v.agents.pos.size(); ++i) {
         detail::TypeBrain& tb = wb.types[std::size_t(wb.batch[i])];

@@ -236,6 +236,73 @@ private slots:
         QCOMPARE(frame[0].clip, Clip::Walk);
     }
 
+    // Every clip reads back from its name; actions loop in time, each agent at its own
+    // offset, the same on every call.
+    void actionClipsAreNamedAndTimed()
+    {
+        for (int c = 0; c < kClipCount; ++c) {
+            const std::optional<Clip> back = clipFromName(toString(Clip(c)));
+            QVERIFY(back && *back == Clip(c));
+            QCOMPARE(isAction(Clip(c)), c >= int(Clip::Wait));
+            QCOMPARE(clipCycleS(Clip(c)) > 0.0f, isAction(Clip(c)));
+        }
+        QVERIFY(!clipFromName("dance"));
+        QCOMPARE(QString(toString(Clip::LookAround)), QString("look_around"));
+        // A wave is 1 s a cycle: a quarter second on, a quarter cycle on (mod 1).
+        for (const std::uint32_t id : {1u, 2u, 77u}) {
+            const float a = actionPhase(Clip::Wave, 3.0, id), b = actionPhase(Clip::Wave, 3.25, id);
+            QVERIFY(a >= 0.0f && a < 1.0f);
+            const float step = b - a + (b < a ? 1.0f : 0.0f);
+            QVERIFY2(std::abs(step - 0.25f) < 1e-4f, qPrintable(QString::number(step)));
+            QCOMPARE(actionPhase(Clip::Wave, 3.0, id), a);
+        }
+        // Offsets differ between agents: ten agents at one moment are not in step.
+        std::vector<float> phases;
+        for (std::uint32_t id = 1; id <= 10; ++id)
+            phases.push_back(actionPhase(Clip::Cheer, 5.0, id));
+        std::sort(phases.begin(), phases.end());
+        QVERIFY(phases.back() - phases.front() > 0.5f);
+        QCOMPARE(actionPhase(Clip::Walk, 5.0, 3), 0.0f);
+    }
+
+    // A brain's action named as a clip is the recorded clip; another name keeps the speed's.
+    void actionNamedAsAClipIsRecorded()
+    {
+        const char* scene = R"(throng: 1
+settings: {fps: 24, seed: 2, bounds: {min: [-30, -30], max: [30, 30]}}
+agent_types: [{name: walker, max_speed: 1.5, brain: b}]
+goals: [{name: east, position: [20, 0], radius: 1}]
+agents: [{id: 1, type: walker, position: [0, 0, 0], goal: east}, {id: 2, type: walker, position: [0, 0, 5]}]
+brains:
+  - name: b
+    nodes:
+      - {id: 1, type: input, params: {sensor: goal_distance}}
+      - {id: 2, type: math.compare, params: {mode: lt, value: 1000}}
+      - {id: 3, type: rule.not}
+      - {id: 4, type: output.action, params: {actions: "dance phone"}}
+    links:
+      - {from: [1, 0], to: [2, 0]}
+      - {from: [2, 0], to: [3, 0]}
+      - {from: [3, 0], to: [4, 0]}
+      - {from: [2, 0], to: [4, 1]}
+)";
+        const Scene s = load(scene);
+        World world(s, kSerial);
+        QVERIFY(world.brainErrors().empty());
+        for (int k = 0; k < 24; ++k)
+            world.step();
+        std::vector<AgentFrame> frame;
+        world.snapshot(frame);
+        // Agent 1 has a goal: "phone" while it walks there.
+        QCOMPARE(QString::fromStdString(world.brainActionName(0)), QString("phone"));
+        QCOMPARE(frame[0].clip, Clip::Phone);
+        QVERIFY(frame[0].speed > 0.5f);
+        // Agent 2 has none (the distance sensor says 1e6 m): "dance" is no clip, so its
+        // speed's clip stands.
+        QCOMPARE(QString::fromStdString(world.brainActionName(1)), QString("dance"));
+        QCOMPARE(frame[1].clip, Clip::Idle);
+    }
+
     void goalChoiceSendsTheAgentToTheChosenGoal()
     {
         const Scene s = load(R"(throng: 1
