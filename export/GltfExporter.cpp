@@ -249,7 +249,8 @@ ExportResult exportGltf(const sim::Scene& scene, const sim::FrameCache& cache, c
     auto prepare = [&](std::size_t i, AgentWork& w, bool bakeJoints) {
         w.positions.resize(frames);
         w.yaw.resize(frames);
-        std::vector<float> speeds(frames);
+        std::vector<float> speeds(frames), phases(frames, 0.0f);
+        std::vector<sim::Clip> clips(frames, sim::Clip::Idle);
         w.hidden.assign(frames, 0);
         std::size_t firstPresent = frames;
         for (std::size_t f = 0; f < frames; ++f) {
@@ -273,6 +274,9 @@ ExportResult exportGltf(const sim::Scene& scene, const sim::FrameCache& cache, c
             }
             w.positions[f] = a.position;
             speeds[f] = a.speed;
+            clips[f] = a.clip;
+            phases[f] = sim::actionPhase(a.clip, static_cast<double>(f) / static_cast<double>(cache.fps()),
+                                         cache.agents()[i].id);
             // Rotation about +Y by the heading: the character's +X nose turns to (cos h, 0, -sin h).
             const double half = 0.5 * static_cast<double>(a.headingRad);
             w.yaw[f] = glm::quat(static_cast<float>(std::cos(half)), 0.0f, static_cast<float>(std::sin(half)), 0.0f);
@@ -282,7 +286,7 @@ ExportResult exportGltf(const sim::Scene& scene, const sim::FrameCache& cache, c
         w.variation = variationOf(i);
         w.character = library.looksOf(cache.agents()[i].typeIndex)[w.variation.look];
         const Character& character = library.character(w.character);
-        w.gait = computeGait(character, w.positions, speeds, w.variation);
+        w.gait = computeGait(character, w.positions, speeds, w.variation, {clips, phases, cache.fps()});
         w.firstPose = gaitPose(character, w.gait[0]);
         if (!bakeJoints)
             return;

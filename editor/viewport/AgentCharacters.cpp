@@ -11,6 +11,10 @@ namespace throng::editor {
 
 namespace {
 
+// m/s: at or above this an agent with an action walks on while it plays it (World's idle
+// threshold for a walker).
+constexpr float kMovingMps = 0.1f;
+
 // What the characters depend on: each type's kind, character, clips and looks.
 std::string signatureOf(const sim::Scene& scene, const std::string& sceneDirectory)
 {
@@ -99,7 +103,7 @@ const std::vector<AgentCharacters::Look>& AgentCharacters::looksFor(std::span<co
 }
 
 void AgentCharacters::posesFor(std::span<const sim::AgentFrame> frames, std::span<const sim::AgentInfo> agents,
-                               std::vector<AgentPose>& poses)
+                               double timeS, std::vector<AgentPose>& poses)
 {
     const std::vector<Look>& looks = looksFor(agents);
     poses.resize(frames.size());
@@ -107,7 +111,9 @@ void AgentCharacters::posesFor(std::span<const sim::AgentFrame> frames, std::spa
         const Look& look = looks[i];
         poses[i] = {look.character, 0, look.heightScale};
         if (look.character >= 0)
-            poses[i].pose = m_tables[std::size_t(look.character)].poseFor(frames[i].clip, frames[i].phase);
+            poses[i].pose = m_tables[std::size_t(look.character)].poseFor(
+                frames[i].clip, frames[i].phase, sim::actionPhase(frames[i].clip, timeS, agents[i].id),
+                frames[i].speed >= kMovingMps);
     }
 }
 

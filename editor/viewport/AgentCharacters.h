@@ -27,8 +27,9 @@ public:
     // Why some types keep the glyph; empty when every type has its character.
     const std::string& problems() const { return m_problems; }
 
-    // One pose per agent of `frames`/`agents` (same length), in order.
-    void posesFor(std::span<const sim::AgentFrame> frames, std::span<const sim::AgentInfo> agents,
+    // One pose per agent of `frames`/`agents` (same length), in order; timeS: the frame's
+    // time (frame / fps), which an action's phase runs by.
+    void posesFor(std::span<const sim::AgentFrame> frames, std::span<const sim::AgentInfo> agents, double timeS,
                   std::vector<AgentPose>& poses);
 
 private:

@@ -1,5 +1,7 @@
 #include "editor/viewport/PoseTable.h"
 
+#include "export/character/Gait.h"
+
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
@@ -18,14 +20,20 @@ int sampleOf(float phase, int samples)
 
 }  // namespace
 
-int PoseTable::poseFor(sim::Clip clip, float phase) const
+int PoseTable::poseFor(sim::Clip clip, float phase, float actionPhase, bool moving) const
 {
-    switch (clip) {
-    case sim::Clip::Run: return runPose(sampleOf(phase, kRunPoses));
-    case sim::Clip::Walk: return walkPose(sampleOf(phase, kWalkPoses));
-    case sim::Clip::Idle: break;
+    if (sim::isAction(clip)) {
+        const int a = int(clip) - int(sim::Clip::Wait);
+        if (a < kActions && std::size_t(a) < hasAction.size() && hasAction[std::size_t(a)])
+            return moving ? walkingActionPose(a, sampleOf(phase, kWalkPoses))
+                          : actionPose(a, sampleOf(actionPhase, kActionPoses));
+        clip = moving ? sim::Clip::Walk : sim::Clip::Idle;
     }
-    return hasIdle ? 0 : walkPose(sampleOf(phase, kWalkPoses));
+    if (clip == sim::Clip::Run)
+        return runPose(sampleOf(phase, kRunPoses));
+    if (clip == sim::Clip::Walk || !hasIdle)
+        return walkPose(sampleOf(phase, kWalkPoses));
+    return 0;
 }
 
 void skinMesh(const exporting::Character& character, const exporting::Pose& pose, std::vector<glm::vec3>& positions,
@@ -70,6 +78,28 @@ PoseTable buildPoseTable(const exporting::Character& character)
         add(exporting::sampleClip(character.walk, double(k) / PoseTable::kWalkPoses));
     for (int k = 0; k < PoseTable::kRunPoses; ++k)
         add(exporting::sampleClip(character.run, double(k) / PoseTable::kRunPoses));
+    // The actions as the export poses them (gaitPose): standing, the action in full;
+    // walking, the walk with the action's upper body at mid-cycle.
+    std::vector<int> actionOf(PoseTable::kActions, -1);
+    for (int a = 0; a < PoseTable::kActions; ++a) {
+        actionOf[std::size_t(a)] = character.actionIndex(sim::toString(sim::Clip(int(sim::Clip::Wait) + a)));
+        table.hasAction.push_back(actionOf[std::size_t(a)] >= 0 ? 1 : 0);
+    }
+    const exporting::Pose idle = exporting::sampleClip(character.idle, 0.0);
+    for (int a = 0; a < PoseTable::kActions; ++a)
+        for (int k = 0; k < PoseTable::kActionPoses; ++k) {
+            exporting::GaitFrame g;
+            g.moveWeight = 0.0f;
+            g.action = {actionOf[std::size_t(a)], double(k) / PoseTable::kActionPoses, 1.0f};
+            add(g.action.action >= 0 ? exporting::gaitPose(character, g) : idle);
+        }
+    for (int a = 0; a < PoseTable::kActions; ++a)
+        for (int k = 0; k < PoseTable::kWalkPoses; ++k) {
+            exporting::GaitFrame g;
+            g.phase = double(k) / PoseTable::kWalkPoses;
+            g.action = {actionOf[std::size_t(a)], 0.5, 1.0f};
+            add(exporting::gaitPose(character, g));
+        }
     return table;
 }
 

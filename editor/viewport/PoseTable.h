@@ -16,25 +16,41 @@ namespace throng::editor {
 struct PoseTable {
     static constexpr int kWalkPoses = 8;
     static constexpr int kRunPoses = 8;
-    static constexpr int kPoseCount = 1 + kWalkPoses + kRunPoses;  // idle, walk 0..7, run 0..7
+    static constexpr int kActions = sim::kClipCount - int(sim::Clip::Wait);  // sim::Clip's actions, in order
+    static constexpr int kActionPoses = 8;  // per action, standing, over its cycle
+    // idle, walk 0..7, run 0..7, then per action its standing poses 0..7, then per action
+    // its walking poses (walk sample 0..7 with the action's upper body at mid-cycle)
+    static constexpr int kPoseCount = 1 + kWalkPoses + kRunPoses + kActions * (kActionPoses + kWalkPoses);
 
     std::size_t vertexCount = 0;               // vertices of one pose
     std::vector<glm::vec3> positions;          // pose-major: pose p's vertex v at p * vertexCount + v, m
     std::vector<glm::vec3> normals;            // unit length, same layout
     std::vector<std::uint32_t> indices;        // the mesh's triangles, into one pose's vertices
     bool hasIdle = true;                       // false: a stopped agent holds the walk (wheels, wings)
+    std::vector<std::uint8_t> hasAction;       // per action (kActions): the character plays it
 
-    // The pose an agent shows for its recorded clip and gait phase (cycles; wraps).
-    int poseFor(sim::Clip clip, float phase) const;
+    // The pose an agent shows for its recorded clip and gait phase (cycles; wraps). For an
+    // action the character plays: its pose at actionPhase (sim::actionPhase) where the
+    // agent stands, its walking pose at the gait phase where it moves; for one it lacks,
+    // the pose its speed gives.
+    int poseFor(sim::Clip clip, float phase, float actionPhase = 0.0f, bool moving = false) const;
     // Pose index of walk sample k (0..kWalkPoses-1) and run sample k.
     static int walkPose(int k) { return 1 + k; }
     static int runPose(int k) { return 1 + kWalkPoses + k; }
+    // Pose index of action a's (0..kActions-1) standing sample k, and of its walking pose
+    // over walk sample k.
+    static int actionPose(int a, int k) { return 1 + kWalkPoses + kRunPoses + a * kActionPoses + k; }
+    static int walkingActionPose(int a, int k)
+    {
+        return 1 + kWalkPoses + kRunPoses + kActions * kActionPoses + a * kWalkPoses + k;
+    }
 };
 
 // Linear blend skinning of `character`'s mesh in `pose`, in the character's space.
 void skinMesh(const exporting::Character& character, const exporting::Pose& pose, std::vector<glm::vec3>& positions,
               std::vector<glm::vec3>& normals);
-// The idle pose, then walk pose k = sampleClip(walk, k / kWalkPoses), then run likewise.
+// The idle pose, then walk pose k = sampleClip(walk, k / kWalkPoses), then run likewise,
+// then the actions (gaitPose with the action in full; a character without it repeats idle).
 PoseTable buildPoseTable(const exporting::Character& character);
 
 }  // namespace throng::editor

@@ -215,7 +215,7 @@ void Viewport::setAgents(std::span<const sim::AgentFrame> frames, std::span<cons
     m_layers.rebuildDensity(frames.first(n), m_agentColours.colourBy() == ColourBy::Density);
     const std::vector<glm::vec3>& colours =
         m_agentColours.coloursFor(frames.first(n), agents.first(n), m_layers.density());
-    m_agentCharacters.posesFor(frames.first(n), agents.first(n), m_shownPoses);
+    m_agentCharacters.posesFor(frames.first(n), agents.first(n), timeS.value_or(0.0), m_shownPoses);
     m_glyphs.clear();
     m_carGlyphs.clear();
     m_birdGlyphs.clear();

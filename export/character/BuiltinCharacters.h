@@ -39,5 +39,8 @@ Character makeCar();
 Character makeBird();
 // Adds idle, walk and run to a humanoid whose skeleton makeHumanoid built.
 void addHumanoidClips(Character& character, float scale);
+// Adds the actions (sim::Clip's wait, look_around, wave, talk, phone, cheer) to a humanoid
+// that has its idle clip.
+void addHumanoidActions(Character& character, float scale);
 
 }  // namespace throng::exporting

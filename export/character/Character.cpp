@@ -4,6 +4,7 @@
 #include <glm/gtc/quaternion.hpp>
 #include <glm/mat4x4.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace throng::exporting {
@@ -50,6 +51,30 @@ Pose blendPoses(const Pose& a, const Pose& b, float t)
         out.rotations[j] = nlerpShort(a.rotations[j], b.rotations[j], t);
     out.rootTranslation = a.rootTranslation + (b.rootTranslation - a.rootTranslation) * t;
     return out;
+}
+
+Pose blendPosesLayered(const Pose& a, const Pose& b, const std::vector<std::uint8_t>& layered, float t, float rest)
+{
+    t = std::clamp(t, 0.0f, 1.0f);
+    rest = std::clamp(rest, 0.0f, 1.0f);
+    Pose out;
+    out.rotations.resize(a.rotations.size());
+    for (std::size_t j = 0; j < a.rotations.size(); ++j) {
+        const float w = j < layered.size() && layered[j] ? t : rest;
+        out.rotations[j] = w <= 0.0f   ? a.rotations[j]
+                           : w >= 1.0f ? b.rotations[j]
+                                       : nlerpShort(a.rotations[j], b.rotations[j], w);
+    }
+    out.rootTranslation = a.rootTranslation + (b.rootTranslation - a.rootTranslation) * rest;
+    return out;
+}
+
+int Character::actionIndex(std::string_view name) const
+{
+    for (std::size_t a = 0; a < actions.size(); ++a)
+        if (actions[a].clip.name == name)
+            return static_cast<int>(a);
+    return -1;
 }
 
 std::vector<glm::mat4> jointGlobalTransforms(const Character& character, const Pose& pose)
@@ -114,6 +139,13 @@ std::string checkCharacter(const Character& c)
         for (const Pose& p : clip->samples)
             if (p.rotations.size() != c.joints.size())
                 return where + "clip '" + clip->name + "' poses a different number of joints";
+    }
+    for (const ActionClip& a : c.actions) {
+        if (a.clip.samples.empty() || a.layered.size() != c.joints.size() || !(a.blendS >= 0.0f))
+            return where + "action '" + a.clip.name + "' has no samples, no mask per joint or a bad blend time";
+        for (const Pose& p : a.clip.samples)
+            if (p.rotations.size() != c.joints.size())
+                return where + "action '" + a.clip.name + "' poses a different number of joints";
     }
     return {};
 }

@@ -10,6 +10,7 @@
 #include <array>
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace throng::exporting {
@@ -46,6 +47,15 @@ struct CycleClip {
     std::vector<Pose> samples;
 };
 
+// An action a brain picks (sim::Clip's names): a loop of poses over the action's cycle
+// (sim::clipCycleS), played over a standing agent in full and, over walking or running,
+// on the joints `layered` marks only (the upper body: a wave while walking).
+struct ActionClip {
+    CycleClip clip;                     // clip.name: the action's name, as sim::toString gives it
+    std::vector<std::uint8_t> layered;  // per joint: 1 = played over locomotion too
+    float blendS = 0.3f;                // s to blend in, and out again
+};
+
 struct Character {
     std::string name;
     std::vector<Joint> joints;  // joint 0 is the root of the skeleton
@@ -55,12 +65,19 @@ struct Character {
     // Speeds (m/s at scale 1) the gait blends between: idle below idleSpeed, all walk from
     // walkSpeed, walk turning into run between runStartSpeed and runSpeed.
     float idleSpeed = 0.05f, walkSpeed = 0.4f, runStartSpeed = 2.2f, runSpeed = 3.0f;
+    std::vector<ActionClip> actions;  // none: every action plays the locomotion its speed gives
+
+    // The index in `actions` of the action of that name, or -1.
+    int actionIndex(std::string_view name) const;
 };
 
 // The pose of `clip` at `phase` cycles (any real; wraps), interpolating neighbouring samples.
 Pose sampleClip(const CycleClip& clip, double phase);
 // Joint by joint: rotations nlerp'd in the shorter arc, root translations lerp'd; t in [0, 1].
 Pose blendPoses(const Pose& a, const Pose& b, float t);
+// As blendPoses, with t for the joints `layered` marks and `rest` for the others and the
+// root translation.
+Pose blendPosesLayered(const Pose& a, const Pose& b, const std::vector<std::uint8_t>& layered, float t, float rest);
 // Each joint's transform in the character's space for `pose` (rest translation, pose rotation).
 std::vector<glm::mat4> jointGlobalTransforms(const Character& character, const Pose& pose);
 // The rest pose: rest rotations and the rest translation of joint 0.

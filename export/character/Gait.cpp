@@ -3,6 +3,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <optional>
 
 namespace throng::exporting {
 
@@ -24,8 +25,56 @@ double strideAt(const Character& c, float runWeight, float heightScale)
     return (walk + (run - walk) * static_cast<double>(runWeight)) * static_cast<double>(heightScale);
 }
 
+namespace {
+
+// The action each frame plays, blended: a new action fades in over its blend time while
+// the one before fades out from where it was; one that ends fades out. An action already
+// playing on the first frame plays in full from it.
+void layerActions(const Character& c, const RecordedClips& recorded, std::vector<GaitFrame>& out)
+{
+    if (c.actions.empty() || recorded.clips.size() != out.size() || recorded.phases.size() != out.size())
+        return;
+    const float dt = recorded.fps > 0.0f ? 1.0f / recorded.fps : 0.0f;
+    // Weight gained or lost per frame, and cycles played per frame, of action a.
+    auto rate = [&](int a) {
+        const float blend = c.actions[static_cast<std::size_t>(a)].blendS;
+        return blend > 0.0f ? dt / blend : 1.0f;
+    };
+    auto cyclesPerFrame = [&](int a) {
+        const std::optional<sim::Clip> clip = sim::clipFromName(c.actions[static_cast<std::size_t>(a)].clip.name);
+        const float cycle = clip ? sim::clipCycleS(*clip) : 0.0f;
+        return cycle > 0.0f ? static_cast<double>(dt / cycle) : 0.0;
+    };
+    ActionLayer current, fading;
+    for (std::size_t f = 0; f < out.size(); ++f) {
+        const sim::Clip clip = recorded.clips[f];
+        const int action = sim::isAction(clip) ? c.actionIndex(sim::toString(clip)) : -1;
+        if (fading.action >= 0) {
+            fading.phase += cyclesPerFrame(fading.action);
+            fading.weight -= rate(fading.action);
+            if (fading.weight <= 0.0f)
+                fading = {};
+        }
+        if (action != current.action) {
+            if (current.action >= 0)
+                fading = current;
+            current = {action, 0.0, f == 0 ? 1.0f : 0.0f};
+        }
+        if (current.action >= 0) {
+            if (f > 0)
+                current.weight = std::min(1.0f, current.weight + rate(current.action));
+            current.phase = static_cast<double>(recorded.phases[f]);
+        }
+        out[f].action = current;
+        out[f].fading = fading;
+    }
+}
+
+}  // namespace
+
 std::vector<GaitFrame> computeGait(const Character& c, std::span<const glm::vec3> positions,
-                                   std::span<const float> speeds, const AgentVariation& v)
+                                   std::span<const float> speeds, const AgentVariation& v,
+                                   const RecordedClips& recorded)
 {
     // Thresholds grow with the body (longer legs walk faster) and with the agent's pace.
     const float k = v.heightScale * v.speedFactor;
@@ -43,6 +92,7 @@ std::vector<GaitFrame> computeGait(const Character& c, std::span<const glm::vec3
         }
         g.phase = phase;
     }
+    layerActions(c, recorded, out);
     return out;
 }
 
@@ -51,9 +101,18 @@ Pose gaitPose(const Character& c, const GaitFrame& g)
     Pose moving = sampleClip(c.walk, g.phase);
     if (g.runWeight > 0.0f)
         moving = blendPoses(moving, sampleClip(c.run, g.phase), g.runWeight);
-    if (g.moveWeight >= 1.0f)
-        return moving;
-    return blendPoses(sampleClip(c.idle, g.phase), moving, g.moveWeight);
+    Pose pose =
+        g.moveWeight >= 1.0f ? std::move(moving) : blendPoses(sampleClip(c.idle, g.phase), moving, g.moveWeight);
+    // Actions over the gait: the upper body in full, the legs and hips only as far as the
+    // agent stands (a walker's legs keep walking).
+    for (const ActionLayer* layer : {&g.fading, &g.action}) {
+        if (layer->action < 0 || layer->weight <= 0.0f)
+            continue;
+        const ActionClip& a = c.actions[static_cast<std::size_t>(layer->action)];
+        pose = blendPosesLayered(pose, sampleClip(a.clip, layer->phase), a.layered, layer->weight,
+                                 layer->weight * (1.0f - g.moveWeight));
+    }
+    return pose;
 }
 
 }  // namespace throng::exporting

@@ -1,10 +1,13 @@
 #pragma once
 // Turns an agent's recorded motion into its character's clip state, frame by frame: the
 // phase advances by distance travelled divided by stride (so planted feet stay planted),
-// walk blends into run by speed, a stopped agent idles. Pure maths over the inputs.
+// walk blends into run by speed, a stopped agent idles. An action its brain picked plays
+// over that (in full while it stands, on the upper body while it walks), blended in and
+// out over the action's blend time. Pure maths over the inputs.
 
 #include "export/character/AgentVariation.h"
 #include "export/character/Character.h"
+#include "simcore/scene/Clip.h"
 
 #include <glm/vec3.hpp>
 
@@ -13,15 +16,33 @@
 
 namespace throng::exporting {
 
+// One action as a frame plays it.
+struct ActionLayer {
+    int action = -1;      // index into Character::actions, -1 = none
+    double phase = 0.0;   // cycles
+    float weight = 0.0f;  // 0 = not at all, 1 = in full
+};
+
 struct GaitFrame {
     double phase = 0.0;      // cycles since the clip's start, including the agent's offset
     float moveWeight = 1.0f; // 0 = idle pose, 1 = walk/run
     float runWeight = 0.0f;  // 0 = walk, 1 = run
+    ActionLayer fading;      // the action before, blending out
+    ActionLayer action;      // the recorded action, blending in
 };
 
-// positions (m) and speeds (m/s) of one agent, one entry per frame; both the same length.
+// The recorded clips and their phases (sim::AgentFrame's clip and phase), one per frame,
+// and the frame rate; empty spans: no actions.
+struct RecordedClips {
+    std::span<const sim::Clip> clips;
+    std::span<const float> phases;
+    float fps = 24.0f;
+};
+
+// positions (m) and speeds (m/s) of one agent, one entry per frame; all the same length.
 std::vector<GaitFrame> computeGait(const Character& character, std::span<const glm::vec3> positions,
-                                   std::span<const float> speeds, const AgentVariation& variation);
+                                   std::span<const float> speeds, const AgentVariation& variation,
+                                   const RecordedClips& recorded = {});
 // The character's pose for one gait frame.
 Pose gaitPose(const Character& character, const GaitFrame& frame);
 // Stride of one cycle at this blend, for a character scaled by heightScale, m.

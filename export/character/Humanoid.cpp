@@ -82,6 +82,7 @@ Character makeHumanoid(const std::string& name, const HumanoidBody& body)
     }
     c.mesh.inverseBindMatrices = restInverseBindMatrices(c.joints);
     addHumanoidClips(c, s);
+    addHumanoidActions(c, s);
     return c;
 }
 

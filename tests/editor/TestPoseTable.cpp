@@ -6,6 +6,7 @@
 
 #include "editor/viewport/PoseTable.h"
 #include "export/character/BuiltinCharacters.h"
+#include "export/character/Gait.h"
 
 #include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>
@@ -120,6 +121,56 @@ private slots:
         const PoseTable car = buildPoseTable(*exporting::makeBuiltinCharacter("car"));
         QVERIFY(!car.hasIdle);
         QCOMPARE(car.poseFor(sim::Clip::Idle, 0.5f), PoseTable::walkPose(4));
+        // An action: standing, its own pose at the action's phase; moving, the walk at the
+        // gait phase with the action's upper body; a car has no actions and keeps its wheels.
+        const int wave = int(sim::Clip::Wave) - int(sim::Clip::Wait);
+        QCOMPARE(man.poseFor(sim::Clip::Wave, 0.3f, 0.26f, false), PoseTable::actionPose(wave, 2));
+        QCOMPARE(man.poseFor(sim::Clip::Wave, 0.5f, 0.9f, true), PoseTable::walkingActionPose(wave, 4));
+        QCOMPARE(man.poseFor(sim::Clip::Cheer, 0.0f, 0.0f, false), PoseTable::actionPose(PoseTable::kActions - 1, 0));
+        QCOMPARE(car.poseFor(sim::Clip::Wave, 0.5f, 0.0f, false), PoseTable::walkPose(4));
+    }
+
+    // Each action pose is the export's pose for it (gaitPose), skinned; the wave lifts a
+    // hand above the head, and the walking wave keeps the walk's legs.
+    void actionPosesAreTheExportsPoses()
+    {
+        const exporting::Character man = *exporting::makeBuiltinCharacter("man");
+        const PoseTable table = buildPoseTable(man);
+        QCOMPARE(table.hasAction, std::vector<std::uint8_t>(PoseTable::kActions, 1));
+        auto skinned = [&](const exporting::GaitFrame& g) {
+            const std::vector<glm::mat4> globals = exporting::jointGlobalTransforms(man, exporting::gaitPose(man, g));
+            std::vector<glm::vec3> out(man.mesh.positions.size());
+            for (std::size_t v = 0; v < out.size(); ++v)
+                out[v] = skinnedVertex(man, globals, v);
+            return out;
+        };
+        for (int a = 0; a < PoseTable::kActions; ++a) {
+            const int index = man.actionIndex(sim::toString(sim::Clip(int(sim::Clip::Wait) + a)));
+            QVERIFY(index >= 0);
+            for (int k = 0; k < PoseTable::kActionPoses; ++k) {
+                exporting::GaitFrame standing;
+                standing.moveWeight = 0.0f;
+                standing.action = {index, double(k) / PoseTable::kActionPoses, 1.0f};
+                QVERIFY(maxDistance(table, PoseTable::actionPose(a, k), skinned(standing)) < 1e-4f);
+                exporting::GaitFrame walking;
+                walking.phase = double(k) / PoseTable::kWalkPoses;
+                walking.action = {index, 0.5, 1.0f};
+                QVERIFY(maxDistance(table, PoseTable::walkingActionPose(a, k), skinned(walking)) < 1e-4f);
+            }
+        }
+        auto top = [&](int pose) {
+            float y = -1e9f;
+            for (std::size_t v = 0; v < table.vertexCount; ++v)
+                y = std::max(y, table.positions[std::size_t(pose) * table.vertexCount + v].y);
+            return y;
+        };
+        const int wave = int(sim::Clip::Wave) - int(sim::Clip::Wait);
+        QVERIFY2(top(PoseTable::actionPose(wave, 0)) > top(0) + 0.15f,
+                 qPrintable(QString("%1 %2").arg(top(PoseTable::actionPose(wave, 0))).arg(top(0))));
+        // Walking and waving: the legs are the walk's (some vertex far from the idle pose's
+        // place, as in walk pose 2), and the hand is up.
+        QVERIFY(top(PoseTable::walkingActionPose(wave, 2)) > top(0) + 0.15f);
+        QVERIFY(maxDistance(table, PoseTable::walkingActionPose(wave, 2), skinnedAt(man, man.idle, 0.0)) > 0.15f);
     }
 };
 

@@ -1,7 +1,8 @@
 // Agents as characters in the 3D view, as a user sees them: a walker stands as a figure
 // of its character's height in its tint, differs from its glyph, moves its legs from one
-// recorded phase to another; a type without a character keeps its glyph; a crowd seen
-// close up shows every agent, near ones as characters.
+// recorded phase to another, raises a hand when its brain waves; a type without a
+// character keeps its glyph; a crowd seen close up shows every agent, near ones as
+// characters.
 #include "EditorTestSupport.h"
 #include "ShowInitialState.h"
 #include "TestRegistry.h"
@@ -264,6 +265,66 @@ private slots:
         const double wider = std::max(a.legsWidth, b.legsWidth), narrower = std::min(a.legsWidth, b.legsWidth);
         QVERIFY2(wider > 1.3 * narrower, qPrintable(describe(a) + " / " + describe(b)));
         QVERIFY2(difference(stride, passing) > 0.1, qPrintable(QString::number(difference(stride, passing))));
+    }
+
+    // A brain's action plays in the view: a bystander turned so its right side faces
+    // east waves, and the figure on screen is the wave's pose (its top and right edge
+    // where the pose's vertices project, a hand's breadth above and beside the standing
+    // figure's), then stands again.
+    void wavingBystanderRaisesAHand()
+    {
+        Viewport viewport;
+        viewport.setViewMode(ViewMode::Orbit);
+        viewport.setAgentsAsCharacters(true);
+        showInitialState(viewport, loadTestScene(m_dir, walkerYaml()));
+        renderOffscreen(viewport, kSize);
+        const float heading = 1.5707963f;  // the nose to -z (north), the right side to +x (east)
+        sim::FrameCache cache;
+        cache.reset({sim::AgentInfo{1, 0}}, 24.0f);
+        for (const sim::Clip clip : {sim::Clip::Idle, sim::Clip::Wave, sim::Clip::Idle}) {
+            sim::AgentFrame f;
+            f.clip = clip;
+            f.headingRad = heading;
+            cache.append({&f, 1});
+        }
+        // Where pose p of the man's table lies on screen: its top and right edge, px.
+        const PoseTable table = buildPoseTable(*exporting::makeBuiltinCharacter("man"));
+        auto projected = [&](int pose) {
+            double top = 1e9, right = -1e9;
+            for (std::size_t v = 0; v < table.vertexCount; ++v) {
+                const glm::vec3 p = table.positions[std::size_t(pose) * table.vertexCount + v];
+                const glm::vec3 world(p.x * std::cos(heading) + p.z * std::sin(heading), p.y,
+                                      -p.x * std::sin(heading) + p.z * std::cos(heading));
+                const QPointF q = viewport.worldToPixel(world);
+                top = std::min(top, q.y());
+                right = std::max(right, q.x());
+            }
+            return QRectF(QPointF(right - 1.0, top), QPointF(right, top + 1.0));
+        };
+        const double tenCm =
+            viewport.worldToPixel({0.0f, 1.6f, 0.0f}).y() - viewport.worldToPixel({0.0f, 1.7f, 0.0f}).y();
+        std::vector<Silhouette> seen;
+        std::vector<QRectF> expected;
+        for (std::size_t frame = 0; frame < 3; ++frame) {
+            viewport.showFrame(cache, frame);
+            const QImage image = viewport.grabFramebuffer();
+            saveForInspection(image, QString("wave%1").arg(frame));
+            seen.push_back(silhouetteOf(image));
+            QVERIFY2(seen.back().pixels > 200, qPrintable(describe(seen.back())));
+            const sim::AgentFrame& f = cache.at(frame, 0);
+            const float actionPhase = sim::actionPhase(f.clip, double(frame) / 24.0, 1);
+            expected.push_back(projected(table.poseFor(f.clip, f.phase, actionPhase, false)));
+            QVERIFY2(std::abs(seen.back().box.top() - expected.back().top()) < 3.0 &&
+                         std::abs(seen.back().box.right() - expected.back().right()) < 3.0,
+                     qPrintable(QString("frame %1: %2, the pose projects to top %3, right %4")
+                                    .arg(frame)
+                                    .arg(describe(seen.back()))
+                                    .arg(expected.back().top())
+                                    .arg(expected.back().right())));
+        }
+        QVERIFY2(seen[0].box.top() - seen[1].box.top() > tenCm && seen[1].box.right() - seen[0].box.right() > tenCm,
+                 qPrintable(describe(seen[0]) + " / " + describe(seen[1]) + QString(", 10 cm = %1 px").arg(tenCm)));
+        QCOMPARE(seen[2].box, seen[0].box);
     }
 
     void typeWithoutItsCharacterKeepsTheGlyph()

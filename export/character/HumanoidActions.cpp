@@ -1,0 +1,124 @@
+// Humanoid actions (sim::Clip's wait, look_around, wave, talk, phone, cheer): each a loop
+// over the idle pose's legs, with the arms, chest, neck and head posed by hand. The feet
+// stay where the idle pose puts them (wait's weight shift turns the legs about the
+// planted feet), so an action over a standing agent slides no foot.
+#include "export/character/BuiltinCharacters.h"
+
+#include "simcore/scene/Clip.h"
+
+#include <glm/gtc/quaternion.hpp>
+#include <glm/mat4x4.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+
+namespace throng::exporting {
+
+namespace {
+
+constexpr float kTwoPi = 6.28318530717959f;
+constexpr int kSamplesPerAction = 16;
+
+glm::quat aboutX(float a) { return glm::angleAxis(a, glm::vec3(1.0f, 0.0f, 0.0f)); }
+glm::quat aboutY(float a) { return glm::angleAxis(a, glm::vec3(0.0f, 1.0f, 0.0f)); }
+glm::quat aboutZ(float a) { return glm::angleAxis(a, glm::vec3(0.0f, 0.0f, 1.0f)); }
+
+// The joints an action plays over walking: the chest and everything above it.
+std::vector<std::uint8_t> upperBody()
+{
+    std::vector<std::uint8_t> mask(kHumanoidJointCount, 0);
+    for (int j : {kChest, kNeck, kHead, kUpperArmL, kLowerArmL, kHandL, kUpperArmR, kLowerArmR, kHandR})
+        mask[std::size_t(j)] = 1;
+    return mask;
+}
+
+// Poses over one cycle: the idle pose, changed by `pose(phase in radians, pose)`.
+ActionClip makeAction(const Character& c, sim::Clip clip, const std::function<void(float, Pose&)>& pose)
+{
+    ActionClip a;
+    a.clip.name = sim::toString(clip);
+    a.clip.strideM = 1.0f;  // unused: an action's phase runs by time
+    a.layered = upperBody();
+    for (int k = 0; k < kSamplesPerAction; ++k) {
+        Pose p = c.idle.samples.front();
+        pose(kTwoPi * static_cast<float>(k) / static_cast<float>(kSamplesPerAction), p);
+        a.clip.samples.push_back(std::move(p));
+    }
+    return a;
+}
+
+}  // namespace
+
+void addHumanoidActions(Character& c, float scale)
+{
+    // Arms hang along -Y: about Z swings a hand forward (+X), about X (negative on the
+    // right, +Z side) raises it out to the side. Joint rotations are absolute (the rest
+    // rotations are all identity).
+    const Pose& idle = c.idle.samples.front();
+    // Hip joint to ankle in the idle pose: the leg that turns about the planted foot.
+    const std::vector<glm::mat4> at = jointGlobalTransforms(c, idle);
+    const float legM = at[kUpperLegL][3].y - at[kFootL][3].y;
+    c.actions.push_back(makeAction(c, sim::Clip::Wait, [&](float t, Pose& p) {
+        // Weight from foot to foot: the hips sway 3 cm while the feet stay put, the hands
+        // rest together in front, the head turns a little now and then.
+        const float sway = 0.03f * scale * std::sin(t);
+        const float lean = std::asin(sway / legM);
+        p.rootTranslation.z += sway;
+        p.rootTranslation.y -= legM * (1.0f - std::cos(lean));
+        for (int side = 0; side < 2; ++side) {
+            // The whole leg turns about X at the hip; the foot turns back, so the sole
+            // stays level: its new local rotation undoes the turn in the leg's frame.
+            const int upper = side == 0 ? kUpperLegL : kUpperLegR;
+            const glm::quat leg = idle.rotations[upper] * idle.rotations[upper + 1];
+            p.rotations[upper] = aboutX(lean) * idle.rotations[upper];
+            p.rotations[upper + 2] = glm::inverse(leg) * aboutX(-lean) * leg * idle.rotations[upper + 2];
+        }
+        p.rotations[kUpperArmL] = aboutZ(0.25f) * aboutX(-0.15f);
+        p.rotations[kUpperArmR] = aboutZ(0.25f) * aboutX(0.15f);
+        p.rotations[kLowerArmL] = aboutZ(1.1f) * aboutY(-0.5f);
+        p.rotations[kLowerArmR] = aboutZ(1.1f) * aboutY(0.5f);
+        p.rotations[kNeck] = aboutY(0.25f * std::sin(2.0f * t) * std::max(0.0f, std::sin(t)));
+    }));
+    c.actions.push_back(makeAction(c, sim::Clip::LookAround, [&](float t, Pose& p) {
+        // Left, right and back: the head leads, the chest follows a little.
+        p.rotations[kNeck] = aboutY(0.7f * std::sin(t));
+        p.rotations[kHead] = aboutZ(0.08f * std::sin(2.0f * t));
+        p.rotations[kChest] = aboutY(0.2f * std::sin(t));
+    }));
+    c.actions.push_back(makeAction(c, sim::Clip::Wave, [&](float t, Pose& p) {
+        // The right arm up and out, the forearm upright and swinging side to side.
+        p.rotations[kUpperArmR] = aboutX(-2.2f) * aboutZ(0.2f);
+        p.rotations[kLowerArmR] = aboutX(-(0.9f + 0.45f * std::sin(t)));
+        p.rotations[kHandR] = aboutX(-0.2f * std::sin(t));
+        p.rotations[kNeck] = aboutY(0.15f);
+    }));
+    c.actions.push_back(makeAction(c, sim::Clip::Talk, [&](float t, Pose& p) {
+        // Both forearms forward, gesturing out of step; a nod on each gesture.
+        p.rotations[kUpperArmL] = aboutZ(0.35f + 0.1f * std::sin(t));
+        p.rotations[kUpperArmR] = aboutZ(0.35f + 0.1f * std::sin(t + 2.0f));
+        p.rotations[kLowerArmL] = aboutZ(1.2f + 0.35f * std::sin(t)) * aboutY(-0.3f);
+        p.rotations[kLowerArmR] = aboutZ(1.2f + 0.35f * std::sin(t + 2.0f)) * aboutY(0.3f);
+        p.rotations[kHandL] = aboutX(0.3f * std::sin(t));
+        p.rotations[kHandR] = aboutX(-0.3f * std::sin(t + 2.0f));
+        p.rotations[kHead] = aboutZ(0.06f * std::sin(2.0f * t));
+    }));
+    c.actions.push_back(makeAction(c, sim::Clip::Phone, [&](float t, Pose& p) {
+        // The right hand at the ear, the head tilted toward it, nodding now and then.
+        p.rotations[kUpperArmR] = aboutZ(0.4f) * aboutX(-0.3f);
+        p.rotations[kLowerArmR] = aboutZ(2.55f) * aboutY(0.5f);
+        p.rotations[kNeck] = aboutX(-0.12f);
+        p.rotations[kHead] = aboutZ(0.05f * std::sin(2.0f * t));
+    }));
+    c.actions.push_back(makeAction(c, sim::Clip::Cheer, [&](float t, Pose& p) {
+        // Both arms overhead, pumping.
+        const float pump = 0.5f + 0.5f * std::sin(t);
+        p.rotations[kUpperArmL] = aboutX(2.7f - 0.25f * pump);
+        p.rotations[kUpperArmR] = aboutX(-(2.7f - 0.25f * pump));
+        p.rotations[kLowerArmL] = aboutZ(0.2f + 0.5f * pump);
+        p.rotations[kLowerArmR] = aboutZ(0.2f + 0.5f * pump);
+        p.rotations[kHead] = aboutZ(-0.1f * pump);
+    }));
+}
+
+}  // namespace throng::exporting
