@@ -22,6 +22,8 @@ std::string signatureOf(const sim::Scene& scene, const std::string& sceneDirecto
     for (const sim::AgentType& t : scene.agentTypes) {
         s += '\n' + std::to_string(int(t.kind)) + '|' + t.character + '|' + t.clips.idle + '|' + t.clips.walk + '|' +
              t.clips.run;
+        for (const auto& [action, clip] : t.clips.actions)
+            s += '|' + action + '=' + clip;
         for (const std::string& look : t.variation.looks)
             s += '|' + look;
     }

@@ -47,12 +47,14 @@ std::string CharacterLibrary::resolve(const sim::Scene& scene, const std::string
         std::ptrdiff_t baseIndex = builtin(base);
         if (baseIndex < 0) {
             const std::filesystem::path file = std::filesystem::path(sceneDirectory.empty() ? "." : sceneDirectory) / base;
-            const std::string key = "file:" + file.lexically_normal().string() + "#" + type.clips.idle + "," +
-                                    type.clips.walk + "," + type.clips.run;
+            std::string key = "file:" + file.lexically_normal().string() + "#" + type.clips.idle + "," +
+                              type.clips.walk + "," + type.clips.run;
+            for (const auto& [action, clip] : type.clips.actions)
+                key += "," + action + "=" + clip;
             baseIndex = find(key);
             if (baseIndex < 0) {
                 std::string error;
-                const ClipNames clips{type.clips.idle, type.clips.walk, type.clips.run};
+                const ClipNames clips{type.clips.idle, type.clips.walk, type.clips.run, type.clips.actions};
                 std::optional<Character> loaded = loadCharacterFile(file.string(), clips, error);
                 if (!loaded)
                     return "agent type '" + type.name + "': " + error;

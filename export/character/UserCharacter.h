@@ -7,6 +7,8 @@
 
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace throng::exporting {
 
@@ -14,10 +16,15 @@ namespace throng::exporting {
 // containing "idle" or "stand", "walk", "run" (case-insensitive).
 struct ClipNames {
     std::string idle, walk, run;
+    // Action (sim::Clip's names: wave, talk, ...) -> the clip that plays it, by exact name.
+    std::vector<std::pair<std::string, std::string>> actions;
 };
 
 // The file's character faces +Z (glTF's convention) and is turned to face +X like the
 // built-ins. Without an idle clip it idles in its rest pose; without run it runs its walk.
+// A clip mapped to an action is stretched over the action's cycle (sim::clipCycleS) and
+// played over walking on the joints that are not the root, the hips or a leg (by name:
+// hip, pelvis, leg, thigh, knee, shin, calf, ankle, foot, toe, and their children).
 // Stride: the horizontal root travel of a root-motion clip, else 0.8 x the character's
 // height for walk and 1.6 x for run. nullopt with `error` naming the file when it fails.
 std::optional<Character> loadCharacterFile(const std::string& path, const ClipNames& clips, std::string& error);

@@ -84,6 +84,28 @@ int findClip(const tinygltf::Model& model, const std::string& wanted, std::initi
     return best;
 }
 
+// The joints an action plays over walking: all but the root, the hips and the legs with
+// what hangs from them (by name, case-insensitive, so any skeleton's naming will do).
+std::vector<std::uint8_t> upperBodyByName(const Character& c)
+{
+    static const char* const trunk[] = {"hip", "pelvis"};  // left out, its children not
+    static const char* const legs[] = {"leg", "thigh", "knee", "shin", "calf", "ankle", "foot", "toe"};
+    auto named = [](const std::string& name, const auto& words) {
+        for (const char* word : words)
+            if (name.find(word) != std::string::npos)
+                return true;
+        return false;
+    };
+    std::vector<std::uint8_t> layered(c.joints.size(), 1), leg(c.joints.size(), 0);
+    for (std::size_t j = 0; j < c.joints.size(); ++j) {
+        const std::string name = lower(c.joints[j].name);
+        const int parent = c.joints[j].parent;  // parents come first
+        leg[j] = named(name, legs) || (parent >= 0 && leg[static_cast<std::size_t>(parent)]) ? 1 : 0;
+        layered[j] = j == 0 || leg[j] || named(name, trunk) ? 0 : 1;
+    }
+    return layered;
+}
+
 }  // namespace
 
 std::vector<float> readFloats(const tinygltf::Model& model, int index)
@@ -269,6 +291,17 @@ bool sampleUserClips(const tinygltf::Model& model, Character& c, const std::map<
         c.idle.samples = {restPose(c)};
     }
     c.idle.strideM = c.walk.strideM;
+    for (const auto& [action, clipName] : names.actions) {
+        const int anim = findClip(model, clipName, {});
+        if (anim < 0) {
+            error = "no clip named '" + clipName + "' for the action '" + action + "'; its clips are " + found;
+            return false;
+        }
+        ActionClip a;
+        a.clip = sample(anim, action.c_str(), 0.8f);
+        a.layered = upperBodyByName(c);
+        c.actions.push_back(std::move(a));
+    }
     const float k = height / 1.75f;
     c.idleSpeed = 0.05f * k;
     c.walkSpeed = 0.4f * k;

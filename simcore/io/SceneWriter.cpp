@@ -106,6 +106,8 @@ void writeAgentTypes(Writer& w, const Scene& s)
             w.kvOpt("idle", t.clips.idle);
             w.kvOpt("walk", t.clips.walk);
             w.kvOpt("run", t.clips.run);
+            for (const auto& [action, clip] : t.clips.actions)
+                w.kvOpt(action.c_str(), clip);
             o << YAML::EndMap;
         }
         w.key("variation");

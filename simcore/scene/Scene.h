@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace throng::sim {
@@ -43,6 +44,9 @@ struct Variation {
 // Names of a character file's clips to use; empty = found by name (idle/stand, walk, run).
 struct CharacterClips {
     std::string idle, walk, run;
+    // Action (one of Clip.h's: wait, look_around, wave, talk, phone, cheer) -> the file's
+    // clip that plays it; an action without one plays the locomotion its speed gives.
+    std::vector<std::pair<std::string, std::string>> actions;
     bool operator==(const CharacterClips&) const = default;
 };
 

@@ -2,6 +2,8 @@
 
 #include <tiny_gltf.h>
 
+#include <cctype>
+
 #include <glm/gtc/type_ptr.hpp>
 
 #include <cstring>
@@ -113,7 +115,15 @@ bool writeCharacterFile(const exporting::Character& c, const CharacterFileSpec& 
 
     // Each clip as a 1 s animation whose keys are the clip's samples, looping back to the first.
     for (const std::string& name : spec.clips) {
-        const exporting::CycleClip& clip = name == "Idle" ? c.idle : name == "Run" ? c.run : c.walk;
+        // A clip named after one of the character's actions ("Wave", "Cheer") is cut from it.
+        std::string lower = name;
+        for (char& ch : lower)
+            ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+        const int action = c.actionIndex(lower);
+        const exporting::CycleClip& clip = action >= 0        ? c.actions[static_cast<std::size_t>(action)].clip
+                                           : name == "Idle" ? c.idle
+                                           : name == "Run"  ? c.run
+                                                            : c.walk;
         const std::size_t keys = clip.samples.size() + 1;
         std::vector<float> times(keys);
         for (std::size_t k = 0; k < keys; ++k)

@@ -12,7 +12,8 @@ namespace throng::test {
 
 struct CharacterFileSpec {
     bool skin = true;                                             // false: a plain mesh
-    std::vector<std::string> clips{"Idle", "Walk", "Run"};        // animations, cut from the character's clips
+    // animations, cut from the character's clips; one named after an action (Wave) from it
+    std::vector<std::string> clips{"Idle", "Walk", "Run"};
 };
 
 // False with `error` when tinygltf cannot write the file.

@@ -89,6 +89,84 @@ private slots:
         QVERIFY2(error.find("'Sprint'") != std::string::npos, error.c_str());  // lists what there is
     }
 
+    // A file's clip mapped to an action plays it: `clips: {wave: Hello}` loads the clip as
+    // the wave (the hand goes above the head), over walking on the arms and head but not
+    // the legs or hips; a clip the file lacks is refused by name; an unknown action is a
+    // warning at its line; the mapping survives a save and a load.
+    void mapsClipsToActions()
+    {
+        QTemporaryDir dir;
+        std::string error;
+        test::CharacterFileSpec spec;
+        spec.clips = {"Idle", "Walk", "Wave"};
+        QVERIFY2(test::writeCharacterFile(*makeBuiltinCharacter("man"), spec, dir.filePath("hero.glb").toStdString(),
+                                          error),
+                 error.c_str());
+        const std::string yaml = "throng: 1\n"
+                                 "agent_types:\n"
+                                 "  - name: hero\n"
+                                 "    character: hero.glb\n"
+                                 "    clips: {walk: Walk, wave: Wave, cheer: Wave}\n"
+                                 "agents:\n"
+                                 "  - {id: 1, type: hero, position: [0, 0, 0]}\n";
+        const sim::LoadResult loaded = sim::parseScene(yaml, "scene.yaml", dir.path().toStdString());
+        QVERIFY2(loaded.ok(), loaded.ok() ? "" : loaded.diagnostics[0].format().c_str());
+        const sim::CharacterClips& clips = loaded.scene.agentTypes.at(0).clips;
+        using Mapping = std::vector<std::pair<std::string, std::string>>;
+        QVERIFY(clips.actions == (Mapping{{"wave", "Wave"}, {"cheer", "Wave"}}));
+        const sim::LoadResult again =
+            sim::parseScene(sim::sceneToYaml(loaded.scene), "scene.yaml", dir.path().toStdString());
+        QVERIFY(again.ok());
+        QCOMPARE(again.scene.agentTypes.at(0).clips, clips);
+
+        ClipNames names;
+        names.actions = clips.actions;
+        const std::optional<Character> c =
+            loadCharacterFile(dir.filePath("hero.glb").toStdString(), names, error);
+        QVERIFY2(c, error.c_str());
+        QCOMPARE(checkCharacter(*c), std::string());
+        const int wave = c->actionIndex("wave");
+        QVERIFY(wave >= 0 && c->actionIndex("cheer") >= 0 && c->actionIndex("talk") < 0);
+        const ActionClip& a = c->actions[std::size_t(wave)];
+        auto jointNamed = [&](const std::string& name) {
+            for (std::size_t j = 0; j < c->joints.size(); ++j)
+                if (c->joints[j].name == name)
+                    return j;
+            return c->joints.size();
+        };
+        const std::size_t hand = jointNamed("hand_r"), head = jointNamed("head"), shin = jointNamed("lower_leg_l"),
+                          hips = jointNamed("hips"), chest = jointNamed("chest");
+        QVERIFY(hand < c->joints.size() && head < c->joints.size() && shin < c->joints.size());
+        // The hand above the head all through the wave.
+        for (double phase : {0.0, 0.25, 0.5, 0.75}) {
+            const std::vector<glm::mat4> at = jointGlobalTransforms(*c, sampleClip(a.clip, phase));
+            QVERIFY2(at[hand][3].y > at[head][3].y, qPrintable(QString("%1: hand %2, head %3")
+                                                                   .arg(phase)
+                                                                   .arg(at[hand][3].y)
+                                                                   .arg(at[head][3].y)));
+        }
+        QCOMPARE(int(a.layered[hand]), 1);
+        QCOMPARE(int(a.layered[chest]), 1);
+        QCOMPARE(int(a.layered[shin]), 0);
+        QCOMPARE(int(a.layered[hips]), 0);
+        QCOMPARE(int(a.layered[0]), 0);
+
+        names.actions = {{"talk", "Chatter"}};
+        QVERIFY(!loadCharacterFile(dir.filePath("hero.glb").toStdString(), names, error));
+        QVERIFY2(error.find("no clip named 'Chatter' for the action 'talk'") != std::string::npos, error.c_str());
+        QVERIFY2(error.find("'Wave'") != std::string::npos, error.c_str());  // lists what there is
+
+        std::string bad = yaml;
+        bad.replace(bad.find("cheer: Wave"), 11, "dance: Wave");
+        const sim::LoadResult warned = sim::parseScene(bad, "scene.yaml", dir.path().toStdString());
+        QVERIFY(warned.ok() && !warned.diagnostics.empty());
+        const std::string message = warned.diagnostics[0].format();
+        QVERIFY2(message.find("scene.yaml:5:") != std::string::npos &&
+                     message.find("unknown key 'dance' is ignored") != std::string::npos,
+                 message.c_str());
+        QVERIFY(warned.scene.agentTypes.at(0).clips.actions == (Mapping{{"wave", "Wave"}}));
+    }
+
     // The scene file names the clips: `clips: {walk: ..., run: ...}` under the agent type
     // reaches the loader, and survives a save and a load.
     void sceneNamesTheClips()

@@ -2,12 +2,14 @@
 
 #include "simcore/io/detail/SceneSizeCheck.h"
 #include "simcore/io/detail/YamlDocument.h"
+#include "simcore/scene/Clip.h"
 #include "simcore/scene/GroundPolygon.h"
 #include "simcore/world/TypeSteering.h"
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <optional>
 
 namespace throng::sim::detail {
 
@@ -275,10 +277,20 @@ void SceneReader::readAgentTypes(const YAML::Node& node, Scene& scene)
                           "character file '" + resolvePath(m_baseDir, t.character) + "' does not exist");
         }
         if (YAML::Node c = item["clips"]; c.IsDefined() && m_f.expectMap(c, key + ".clips")) {
-            m_f.checkKeys(c, key + ".clips", {"idle", "walk", "run"});
+            m_f.checkKeys(c, key + ".clips",
+                          {"idle", "walk", "run", "wait", "look_around", "wave", "talk", "phone", "cheer"});
             m_f.readString(c, "idle", key + ".clips", t.clips.idle, false);
             m_f.readString(c, "walk", key + ".clips", t.clips.walk, false);
             m_f.readString(c, "run", key + ".clips", t.clips.run, false);
+            // The actions a file's clips play, in the file's order (Clip.h's names).
+            for (const auto& entry : c) {
+                const std::string name = entry.first.as<std::string>("");
+                const std::optional<Clip> clip = clipFromName(name);
+                std::string file;
+                if (clip && isAction(*clip) && m_f.readString(c, name.c_str(), key + ".clips", file, false) &&
+                    !file.empty())
+                    t.clips.actions.emplace_back(name, file);
+            }
         }
         if (YAML::Node v = item["variation"]; v.IsDefined())
             readVariation(v, key + ".variation", t.variation);
