@@ -4,7 +4,8 @@
 // usage: throng-bench-export [OUT_DIR] [--quick] [--only NAME]
 //   OUT_DIR (default: the system's temp folder) receives the .glb files, removed after.
 //   --quick: 200 agents x 120 frames only, to check the program runs.
-//   --only NAME: just that case (e.g. a10000_f240_compact).
+//   --only NAME: just that case (e.g. a10000_f240_compact, a10000_f240_exact_actions: half
+//   the agents playing brain actions over a third of the shot).
 #include "export/GltfExporter.h"
 
 #include <chrono>
@@ -19,8 +20,12 @@ using namespace throng;
 namespace {
 
 // A crowd on a 2 m grid, each agent on its own slowly curving path at its own pace
-// (standing, strolling, walking, jogging, running), every third stopping half-way.
-void makeCrowd(std::size_t agents, std::size_t frames, sim::Scene& scene, sim::FrameCache& cache)
+// (standing, strolling, walking, jogging, running), every third stopping half-way. With
+// `actions`, half the agents play one of the six actions (by id) over the middle third of
+// the shot, as a brain would have them: over walking, over standing, and blending in and
+// out; the clips are otherwise walk, run or idle by speed.
+void makeCrowd(std::size_t agents, std::size_t frames, sim::Scene& scene, sim::FrameCache& cache,
+               bool actions = false)
 {
     constexpr float kFps = 24.0f;
     sim::AgentType walker;
@@ -46,6 +51,9 @@ void makeCrowd(std::size_t agents, std::size_t frames, sim::Scene& scene, sim::F
             sim::AgentFrame& a = frame[i];
             const bool stopped = i % 3 == 0 && f > frames / 2;
             a.speed = stopped ? 0.0f : paces[i % std::size(paces)];
+            a.clip = a.speed < 0.1f ? sim::Clip::Idle : a.speed < 2.5f ? sim::Clip::Walk : sim::Clip::Run;
+            if (actions && i % 2 == 1 && f > frames / 3 && f < 2 * frames / 3)
+                a.clip = sim::Clip(int(sim::Clip::Wait) + int(i / 2 % 6));
             if (f > 0) {
                 a.headingRad += (0.2f + 0.1f * static_cast<float>(i % 5)) / kFps * (i % 2 ? 1.0f : -1.0f);
                 a.position += a.speed / kFps * glm::vec3(std::cos(a.headingRad), 0.0f, -std::sin(a.headingRad));
@@ -65,13 +73,13 @@ std::size_t naiveFloatAnimationBytes(std::size_t agents, std::size_t frames)
 std::string g_only;
 
 void run(const char* name, std::size_t agents, std::size_t frames, exporting::GltfMode mode, int jointStep,
-         const std::filesystem::path& dir, bool& first)
+         const std::filesystem::path& dir, bool& first, bool actions = false)
 {
     if (!g_only.empty() && g_only != name)
         return;
     sim::Scene scene;
     sim::FrameCache cache;
-    makeCrowd(agents, frames, scene, cache);
+    makeCrowd(agents, frames, scene, cache, actions);
     exporting::GltfOptions options;
     options.path = (dir / (std::string("throng-bench-") + name + ".glb")).string();
     options.mode = mode;
@@ -132,6 +140,7 @@ int main(int argc, char** argv)
         run("a1000_f600_exact_joints_every_2", 1000, 600, GltfMode::Exact, 2, dir, first);
         run("a1000_f600_compact", 1000, 600, GltfMode::Compact, 1, dir, first);
         run("a10000_f240_exact", 10000, 240, GltfMode::Exact, 1, dir, first);
+        run("a10000_f240_exact_actions", 10000, 240, GltfMode::Exact, 1, dir, first, true);
         run("a10000_f240_compact", 10000, 240, GltfMode::Compact, 1, dir, first);
     }
     std::printf("\n}}\n");
