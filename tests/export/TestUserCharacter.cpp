@@ -156,6 +156,20 @@ private slots:
         QVERIFY2(error.find("no clip named 'Chatter' for the action 'talk'") != std::string::npos, error.c_str());
         QVERIFY2(error.find("'Wave'") != std::string::npos, error.c_str());  // lists what there is
 
+        // Every action of Clip.h is a key the reader knows (no warning), in the file's order.
+        std::string all = yaml, keys;
+        Mapping every;
+        for (int k = int(sim::Clip::Wait); k < sim::kClipCount; ++k) {
+            const std::string action = sim::toString(sim::Clip(k));
+            keys += ", " + action + ": Wave";
+            every.emplace_back(action, "Wave");
+        }
+        all.replace(all.find(", wave: Wave, cheer: Wave"), 25, keys);
+        const sim::LoadResult allLoaded = sim::parseScene(all, "scene.yaml", dir.path().toStdString());
+        QVERIFY2(allLoaded.ok() && allLoaded.diagnostics.empty(),
+                 allLoaded.diagnostics.empty() ? "" : allLoaded.diagnostics[0].format().c_str());
+        QVERIFY(allLoaded.scene.agentTypes.at(0).clips.actions == every);
+
         std::string bad = yaml;
         bad.replace(bad.find("cheer: Wave"), 11, "dance: Wave");
         const sim::LoadResult warned = sim::parseScene(bad, "scene.yaml", dir.path().toStdString());
