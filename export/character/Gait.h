@@ -31,8 +31,9 @@ struct GaitFrame {
     ActionLayer action;      // the recorded action, blending in
 };
 
-// The recorded clips and their phases (sim::AgentFrame's clip and phase), one per frame,
-// and the frame rate; empty spans: no actions.
+// The recorded clips (sim::AgentFrame::clip) and each frame's action phase
+// (sim::actionPhase: the frame's time and the agent's id), one per frame, and the frame
+// rate; empty spans: no actions.
 struct RecordedClips {
     std::span<const sim::Clip> clips;
     std::span<const float> phases;
