@@ -1,5 +1,8 @@
 #include "GltfReadBack.h"
 
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -100,6 +103,24 @@ int nodeNamed(const tinygltf::Model& model, const std::string& name)
         if (model.nodes[i].name == name)
             return static_cast<int>(i);
     return -1;
+}
+
+glm::mat4 nodeLocalAt(const tinygltf::Model& model, int node, float t)
+{
+    const tinygltf::Node& n = model.nodes.at(static_cast<std::size_t>(node));
+    glm::vec3 tr(0.0f), sc(1.0f);
+    glm::quat r(1.0f, 0.0f, 0.0f, 0.0f);
+    if (n.translation.size() == 3)
+        tr = {n.translation[0], n.translation[1], n.translation[2]};
+    if (n.rotation.size() == 4)
+        r = glm::quat(float(n.rotation[3]), float(n.rotation[0]), float(n.rotation[1]), float(n.rotation[2]));
+    if (n.scale.size() == 3)
+        sc = {n.scale[0], n.scale[1], n.scale[2]};
+    if (const std::vector<float> v = evaluateChannel(model, node, "translation", t); v.size() == 3)
+        tr = {v[0], v[1], v[2]};
+    if (const std::vector<float> v = evaluateChannel(model, node, "rotation", t); v.size() == 4)
+        r = glm::quat(v[3], v[0], v[1], v[2]);
+    return glm::translate(glm::mat4(1.0f), tr) * glm::mat4_cast(r) * glm::scale(glm::mat4(1.0f), sc);
 }
 
 }  // namespace throng::test

@@ -3,6 +3,7 @@
 // importer would: accessor floats, and the sampler animating one node's property.
 // Test-only.
 
+#include <glm/mat4x4.hpp>
 #include <tiny_gltf.h>
 
 #include <string>
@@ -19,6 +20,9 @@ const tinygltf::AnimationSampler* samplerFor(const tinygltf::Model& model, int n
 // The value of `node`'s `path` channel at time t (s), interpolated linearly (rotations:
 // normalised, the short way), as a reader would; empty when there is no such channel.
 std::vector<float> evaluateChannel(const tinygltf::Model& model, int node, const std::string& path, float t);
+// The node's local transform at time t: its animated channels where it has them, else
+// its static translation, rotation and scale.
+glm::mat4 nodeLocalAt(const tinygltf::Model& model, int node, float t);
 // Index of the node named `name`, or -1.
 int nodeNamed(const tinygltf::Model& model, const std::string& name);
 

@@ -18,25 +18,11 @@ using throng::test::CrowdFixture;
 
 namespace {
 
-// The node's local transform at time t: its animated channels, else its static TRS.
-glm::mat4 localAt(const tinygltf::Model& model, int node, float t)
-{
-    const tinygltf::Node& n = model.nodes.at(node);
-    glm::vec3 tr(0.0f), sc(1.0f);
-    glm::quat r(1.0f, 0.0f, 0.0f, 0.0f);
-    if (n.translation.size() == 3) tr = {n.translation[0], n.translation[1], n.translation[2]};
-    if (n.rotation.size() == 4) r = glm::quat(float(n.rotation[3]), float(n.rotation[0]), float(n.rotation[1]), float(n.rotation[2]));
-    if (n.scale.size() == 3) sc = {n.scale[0], n.scale[1], n.scale[2]};
-    if (const std::vector<float> v = test::evaluateChannel(model, node, "translation", t); v.size() == 3) tr = {v[0], v[1], v[2]};
-    if (const std::vector<float> v = test::evaluateChannel(model, node, "rotation", t); v.size() == 4) r = glm::quat(v[3], v[0], v[1], v[2]);
-    return glm::translate(glm::mat4(1.0f), tr) * glm::mat4_cast(r) * glm::scale(glm::mat4(1.0f), sc);
-}
-
 glm::vec3 worldAt(const tinygltf::Model& model, const std::vector<int>& chain, float t)
 {
     glm::mat4 m(1.0f);
     for (int node : chain)
-        m = m * localAt(model, node, t);
+        m = m * test::nodeLocalAt(model, node, t);
     return glm::vec3(m[3]);
 }
 

@@ -63,35 +63,17 @@ brains:
 
 constexpr std::size_t kFrames = 16 * 24;
 
-// The node's local transform at time t: its animated channels, else its static TRS.
-glm::mat4 localAt(const tinygltf::Model& model, int node, float t)
+// World position of the last joint of `joints` (names under agent_<id>_<type>), at time t.
+glm::vec3 jointAt(const tinygltf::Model& model, int agent, const std::vector<std::string>& joints, float t,
+                  const std::string& type = "walker")
 {
-    const tinygltf::Node& n = model.nodes.at(std::size_t(node));
-    glm::vec3 tr(0.0f), sc(1.0f);
-    glm::quat r(1.0f, 0.0f, 0.0f, 0.0f);
-    if (n.translation.size() == 3)
-        tr = {n.translation[0], n.translation[1], n.translation[2]};
-    if (n.rotation.size() == 4)
-        r = glm::quat(float(n.rotation[3]), float(n.rotation[0]), float(n.rotation[1]), float(n.rotation[2]));
-    if (n.scale.size() == 3)
-        sc = {n.scale[0], n.scale[1], n.scale[2]};
-    if (const std::vector<float> v = test::evaluateChannel(model, node, "translation", t); v.size() == 3)
-        tr = {v[0], v[1], v[2]};
-    if (const std::vector<float> v = test::evaluateChannel(model, node, "rotation", t); v.size() == 4)
-        r = glm::quat(v[3], v[0], v[1], v[2]);
-    return glm::translate(glm::mat4(1.0f), tr) * glm::mat4_cast(r) * glm::scale(glm::mat4(1.0f), sc);
-}
-
-// World position of the last joint of `joints` (names under agent_<id>_walker), at time t.
-glm::vec3 jointAt(const tinygltf::Model& model, int agent, const std::vector<std::string>& joints, float t)
-{
-    const std::string root = "agent_" + std::to_string(agent) + "_walker";
-    glm::mat4 m = localAt(model, test::nodeNamed(model, root), t);
+    const std::string root = "agent_" + std::to_string(agent) + "_" + type;
+    glm::mat4 m = test::nodeLocalAt(model, test::nodeNamed(model, root), t);
     for (const std::string& j : joints) {
         const int node = test::nodeNamed(model, root + "__" + j);
         if (node < 0)
             return glm::vec3(NAN);
-        m = m * localAt(model, node, t);
+        m = m * test::nodeLocalAt(model, node, t);
     }
     return glm::vec3(m[3]);
 }
@@ -278,12 +260,8 @@ private slots:
         for (std::size_t i = 0; i < cache.agentCount(); ++i) {
             const int id = int(cache.agents()[i].id);
             const std::string type = r.scene.agentTypes[cache.agents()[i].typeIndex].name;
-            const std::string root = "agent_" + std::to_string(id) + "_" + type;
             auto joint = [&](const std::vector<std::string>& chain, float t) {
-                glm::mat4 m = localAt(model, test::nodeNamed(model, root), t);
-                for (const std::string& j : chain)
-                    m = m * localAt(model, test::nodeNamed(model, root + "__" + j), t);
-                return glm::vec3(m[3]);
+                return jointAt(model, id, chain, t, type);
             };
             const glm::vec3 foot0 = joint(kLeftFoot, 0.0f);
             float moved = 0.0f;
