@@ -55,16 +55,18 @@ void layerActions(const Character& c, const RecordedClips& recorded, std::vector
             if (fading.weight <= 0.0f)
                 fading = {};
         }
+        // The weights count time from the frame of the switch: the new action is at 0 there
+        // and the old at its last weight, so the two sum to what was playing, and each
+        // frame after moves both by dt / blend.
         if (action != current.action) {
             if (current.action >= 0)
                 fading = current;
             current = {action, 0.0, f == 0 ? 1.0f : 0.0f};
+        } else if (current.action >= 0) {
+            current.weight = std::min(1.0f, current.weight + rate(current.action));
         }
-        if (current.action >= 0) {
-            if (f > 0)
-                current.weight = std::min(1.0f, current.weight + rate(current.action));
+        if (current.action >= 0)
             current.phase = static_cast<double>(recorded.phases[f]);
-        }
         out[f].action = current;
         out[f].fading = fading;
     }

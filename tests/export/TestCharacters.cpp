@@ -198,6 +198,50 @@ private slots:
         QVERIFY(blend > 0.1f && blend < 0.9f);
     }
 
+    // An action blends in and out over 0.3 s at any frame rate (the weight counts time,
+    // not frames); a switch from one action to another fades the first out from where it
+    // was while the second fades in; an action on the first frame plays in full.
+    void actionsBlendOverTheSameTimeAtAnyFrameRate()
+    {
+        const Character man = *makeBuiltinCharacter("man");
+        const int wave = man.actionIndex("wave"), cheer = man.actionIndex("cheer");
+        QVERIFY(wave >= 0 && cheer >= 0);
+        for (const float fps : {12.0f, 24.0f, 60.0f}) {
+            // 1 s idle, 1 s wave, 1 s cheer, 1 s idle, standing still.
+            const auto n = std::size_t(4.0f * fps);
+            std::vector<glm::vec3> still(n, glm::vec3(0.0f));
+            std::vector<float> zero(n, 0.0f), phases(n, 0.25f);
+            std::vector<sim::Clip> clips(n, sim::Clip::Idle);
+            for (std::size_t f = 0; f < n; ++f)
+                clips[f] = f < std::size_t(fps)       ? sim::Clip::Idle
+                           : f < std::size_t(2 * fps) ? sim::Clip::Wave
+                           : f < std::size_t(3 * fps) ? sim::Clip::Cheer
+                                                      : sim::Clip::Idle;
+            const std::vector<GaitFrame> g = computeGait(man, still, zero, AgentVariation{}, {clips, phases, fps});
+            auto at = [&](float s) { return g[std::size_t(std::lround(s * fps))]; };
+            const QString where = QString("at %1 fps").arg(fps);
+            QCOMPARE(at(0.5f).action.action, -1);
+            QCOMPARE(at(1.0f).action.action, wave);
+            QCOMPARE(at(1.0f).action.weight, 0.0f);
+            QVERIFY2(std::abs(at(1.15f).action.weight - 0.5f) < 0.06f, qPrintable(where));
+            QVERIFY2(at(1.35f).action.weight > 0.99f, qPrintable(where));
+            // Wave to cheer: the wave fades out as the cheer fades in, in 0.3 s.
+            QCOMPARE(at(2.15f).action.action, cheer);
+            QCOMPARE(at(2.15f).fading.action, wave);
+            QVERIFY2(std::abs(at(2.15f).action.weight + at(2.15f).fading.weight - 1.0f) < 0.1f, qPrintable(where));
+            QCOMPARE(at(2.4f).fading.action, -1);
+            // Cheer ends: it fades out and is gone after 0.3 s.
+            QCOMPARE(at(3.15f).fading.action, cheer);
+            QCOMPARE(at(3.5f).fading.action, -1);
+            QCOMPARE(at(3.5f).action.action, -1);
+        }
+        // On the first frame an action already playing is in full.
+        std::vector<sim::Clip> waving(3, sim::Clip::Wave);
+        std::vector<float> phases(3, 0.0f), zero(3, 0.0f);
+        std::vector<glm::vec3> still(3, glm::vec3(0.0f));
+        QCOMPARE(computeGait(man, still, zero, AgentVariation{}, {waving, phases, 24.0f})[0].action.weight, 1.0f);
+    }
+
     // One wheel turn per 2 pi r of road, forward: after a quarter of it the point that was
     // on top of the wheel is at its front.
     void carWheelsRoll()
