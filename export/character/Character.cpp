@@ -27,6 +27,71 @@ glm::mat4 localTransform(const Joint& joint, const glm::vec3& translation, const
 
 }  // namespace
 
+const char* toString(MaterialSlot slot)
+{
+    switch (slot) {
+    case MaterialSlot::Body: return "body";
+    case MaterialSlot::Skin: return "skin";
+    case MaterialSlot::Top: return "top";
+    case MaterialSlot::Bottom: return "bottom";
+    case MaterialSlot::Hair: return "hair";
+    case MaterialSlot::GreyHair: return "grey_hair";
+    case MaterialSlot::Shoes: return "shoes";
+    case MaterialSlot::Hat: return "hat";
+    case MaterialSlot::Bag: return "bag";
+    }
+    return "body";
+}
+
+const char* toString(Lod lod)
+{
+    switch (lod) {
+    case Lod::Near: return "near";
+    case Lod::Mid: return "mid";
+    case Lod::Far: return "far";
+    }
+    return "near";
+}
+
+bool lodFromName(std::string_view name, Lod& lod)
+{
+    for (Lod l : {Lod::Near, Lod::Mid, Lod::Far})
+        if (name == toString(l)) {
+            lod = l;
+            return true;
+        }
+    return false;
+}
+
+std::vector<MeshPart> partsOf(const CharacterMesh& mesh)
+{
+    if (!mesh.parts.empty())
+        return mesh.parts;
+    return {MeshPart{MaterialSlot::Body, 0, static_cast<std::uint32_t>(mesh.indices.size()), 1.0f}};
+}
+
+void normaliseInfluences(std::array<std::uint16_t, 4>& j, glm::vec4& w)
+{
+    int order[4] = {0, 1, 2, 3};
+    std::sort(order, order + 4, [&](int a, int b) { return w[a] > w[b]; });
+    std::array<std::uint16_t, 4> js{};
+    glm::vec4 ws(0.0f);
+    for (int k = 0; k < 4; ++k) {
+        ws[k] = std::max(0.0f, w[order[k]]);
+        js[k] = ws[k] > 0.0f ? j[order[k]] : 0;
+    }
+    const float sum = ws.x + ws.y + ws.z + ws.w;
+    ws = sum > 0.0f ? ws / sum : glm::vec4(1.0f, 0.0f, 0.0f, 0.0f);
+    for (int tries = 0; tries < 16; ++tries) {
+        const float s = ws.x + ws.y + ws.z + ws.w;
+        if (s == 1.0f)
+            break;
+        ws.x = std::nextafter(ws.x, s < 1.0f ? 2.0f : 0.0f);
+    }
+    j = js;
+    w = ws;
+}
+
 Pose sampleClip(const CycleClip& clip, double phase)
 {
     const std::size_t n = clip.samples.size();
@@ -133,12 +198,27 @@ std::string checkCharacter(const Character& c)
     for (std::uint32_t index : m.indices)
         if (index >= v)
             return where + "an index points past the vertices";
+    std::uint32_t next = 0;
+    for (const MeshPart& part : m.parts) {
+        if (part.firstIndex != next || part.indexCount == 0 || part.indexCount % 3 != 0 ||
+            !(part.wornShare > 0.0f && part.wornShare <= 1.0f))
+            return where + "mesh part '" + toString(part.slot) + "' does not follow the one before or is empty";
+        next += part.indexCount;
+    }
+    if (!m.parts.empty() && next != m.indices.size())
+        return where + "the mesh's parts do not cover its triangles";
     for (const CycleClip* clip : {&c.idle, &c.walk, &c.run}) {
         if (clip->samples.empty() || !(clip->strideM > 0.0f))
             return where + "clip '" + clip->name + "' has no samples or no stride";
         for (const Pose& p : clip->samples)
             if (p.rotations.size() != c.joints.size())
                 return where + "clip '" + clip->name + "' poses a different number of joints";
+    }
+    for (const Leg& leg : c.legs) {
+        const auto joints = static_cast<int>(c.joints.size());
+        if (leg.upper < 1 || leg.foot >= joints || leg.lower >= joints || c.joints[leg.upper].parent < 0 ||
+            c.joints[leg.lower].parent != leg.upper || c.joints[leg.foot].parent != leg.lower)
+            return where + "a leg's joints are not a chain of hip, knee and ankle";
     }
     for (const ActionClip& a : c.actions) {
         if (a.clip.samples.empty() || a.layered.size() != c.joints.size() || !(a.blendS >= 0.0f))

@@ -23,6 +23,26 @@ struct Joint {
     glm::vec3 restScale{1.0f};
 };
 
+// What a part of the mesh is made of. The export gives each its own material: the type's
+// tint on the top, a per-agent colour from a palette on skin, hair, bottom and shoes.
+enum class MaterialSlot : std::uint8_t { Body, Skin, Top, Bottom, Hair, GreyHair, Shoes, Hat, Bag };
+inline constexpr int kMaterialSlotCount = 9;
+const char* toString(MaterialSlot slot);
+
+// A run of CharacterMesh::indices drawn with one slot's material. Its vertices belong to
+// it alone (a vertex on a sleeve's edge is written once for each side).
+struct MeshPart {
+    MaterialSlot slot = MaterialSlot::Body;
+    std::uint32_t firstIndex = 0, indexCount = 0;
+    float wornShare = 1.0f;  // < 1: an accessory that this share of agents wear (AgentVariation)
+};
+
+// How fine a built-in character's mesh is: near for close-ups and renders, mid for the
+// middle distance and the viewport, far for the back of a crowd.
+enum class Lod : std::uint8_t { Near, Mid, Far };
+const char* toString(Lod lod);
+bool lodFromName(std::string_view name, Lod& lod);
+
 // Indexed triangles in bind space (the agent root's space: feet at y = 0, facing +X, up +Y).
 struct CharacterMesh {
     std::vector<glm::vec3> positions;                 // m
@@ -31,7 +51,14 @@ struct CharacterMesh {
     std::vector<glm::vec4> weights;                   // sum to 1 in float32; unused slots are 0
     std::vector<std::uint32_t> indices;               // counter-clockwise seen from outside
     std::vector<glm::mat4> inverseBindMatrices;       // one per joint
+    std::vector<MeshPart> parts;                      // in index order; empty: one Body part of all
 };
+
+// The mesh's parts; a mesh without any gets one Body part over all its indices.
+std::vector<MeshPart> partsOf(const CharacterMesh& mesh);
+// Sorts a vertex's influences by weight, zeroes the joints of unused slots and makes the
+// weights sum to exactly 1 in float32 (what the Khronos validator demands).
+void normaliseInfluences(std::array<std::uint16_t, 4>& joints, glm::vec4& weights);
 
 // One pose: every joint's local rotation (absolute, not relative to rest) and the local
 // translation of joint 0 (the hips bob; other joints keep their rest translation).
@@ -56,6 +83,13 @@ struct ActionClip {
     float blendS = 0.3f;                // s to blend in, and out again
 };
 
+// A leg whose ankle IK can place (LegIk.h): hip, knee and ankle joints, each the child
+// of the one before, and where the idle pose plants the ankle (the character's space).
+struct Leg {
+    int upper = -1, lower = -1, foot = -1;
+    glm::vec3 plantedAnkle{0.0f};
+};
+
 struct Character {
     std::string name;
     std::vector<Joint> joints;  // joint 0 is the root of the skeleton
@@ -66,6 +100,7 @@ struct Character {
     // walkSpeed, walk turning into run between runStartSpeed and runSpeed.
     float idleSpeed = 0.05f, walkSpeed = 0.4f, runStartSpeed = 2.2f, runSpeed = 3.0f;
     std::vector<ActionClip> actions;  // none: every action plays the locomotion its speed gives
+    std::vector<Leg> legs;            // none: actions over a standing agent keep their own legs
 
     // The index in `actions` of the action of that name, or -1.
     int actionIndex(std::string_view name) const;

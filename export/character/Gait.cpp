@@ -1,5 +1,7 @@
 #include "export/character/Gait.h"
 
+#include "export/character/LegIk.h"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -114,6 +116,9 @@ Pose gaitPose(const Character& c, const GaitFrame& g)
         pose = blendPosesLayered(pose, sampleClip(a.clip, layer->phase), a.layered, layer->weight,
                                  layer->weight * (1.0f - g.moveWeight));
     }
+    // Standing, the feet stay where the idle pose plants them through any blend.
+    if (g.moveWeight < 1.0f && (g.action.weight > 0.0f || g.fading.weight > 0.0f))
+        plantFeet(c, pose, 1.0f - g.moveWeight);
     return pose;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // Appends low-poly solids (boxes, tapered boxes, prisms), each bound rigidly to one joint,
-// to a CharacterMesh: flat-shaded, wound counter-clockwise from outside. Geometry only.
+// to a CharacterMesh: flat-shaded, wound counter-clockwise from outside (the car and the
+// bird; humanoids are smooth surfaces, SurfaceBuilder). Geometry only.
 
 #include "export/character/Character.h"
 
@@ -11,7 +12,7 @@ public:
     explicit MeshBuilder(CharacterMesh& mesh) : m_mesh(mesh) {}
 
     // Axis-aligned box [lo, hi] (m); the top face (y = hi.y) is scaled by `topScale` in x
-    // and z about the box's centre line, for tapered limbs and skirts.
+    // and z about the box's centre line, for tapered shapes.
     void box(int joint, glm::vec3 lo, glm::vec3 hi, glm::vec2 topScale = glm::vec2(1.0f));
     // Prism with `sides` sides around `axis` (0 = x, 1 = y, 2 = z) through `centre`,
     // `halfLength` along it, circumradius `radius`: wheels, hats, necks.

@@ -45,29 +45,6 @@ void setFromMatrix(Joint& joint, const glm::mat4& m)
     joint.restRotation = glm::normalize(joint.restRotation);
 }
 
-// Weights with their zero slots on joint 0 and a float32 sum of exactly 1.
-void normaliseInfluences(std::array<std::uint16_t, 4>& j, glm::vec4& w)
-{
-    int order[4] = {0, 1, 2, 3};
-    std::sort(order, order + 4, [&](int a, int b) { return w[a] > w[b]; });
-    std::array<std::uint16_t, 4> js{};
-    glm::vec4 ws(0.0f);
-    for (int k = 0; k < 4; ++k) {
-        ws[k] = std::max(0.0f, w[order[k]]);
-        js[k] = ws[k] > 0.0f ? j[order[k]] : 0;
-    }
-    const float sum = ws.x + ws.y + ws.z + ws.w;
-    ws = sum > 0.0f ? ws / sum : glm::vec4(1.0f, 0.0f, 0.0f, 0.0f);
-    for (int tries = 0; tries < 16; ++tries) {
-        const float s = ws.x + ws.y + ws.z + ws.w;
-        if (s == 1.0f)
-            break;
-        ws.x = std::nextafter(ws.x, s < 1.0f ? 2.0f : 0.0f);
-    }
-    j = js;
-    w = ws;
-}
-
 }  // namespace
 
 std::optional<Character> loadCharacterFile(const std::string& path, const ClipNames& clipNames, std::string& error)
