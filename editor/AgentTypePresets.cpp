@@ -32,7 +32,7 @@ QString tr(const char* text)
 sim::Variation walkerVariation()
 {
     sim::Variation v;
-    v.looks = {"man", "woman", "tall_man", "child"};
+    v.looks = {"man", "woman", "tall_man", "child", "elderly"};
     v.tints = {{0.8f, 0.25f, 0.2f}, {0.2f, 0.45f, 0.8f}, {0.9f, 0.75f, 0.3f}, {0.3f, 0.65f, 0.35f}, {0.6f, 0.6f, 0.65f}};
     v.heightScale = {0.92f, 1.08f};
     return v;

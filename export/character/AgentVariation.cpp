@@ -12,6 +12,18 @@ namespace {
 constexpr std::uint64_t kSimSpeedFactorStream = 4, kSimPhaseOffsetStream = 5;
 // Streams of our own, far from the simulation's small integers.
 constexpr std::uint64_t kLookStream = 0x4c4f4f4b, kTintStream = 0x54494e54, kHeightStream = 0x48454947;
+constexpr std::uint64_t kColourStream = 0x434f4c00, kWornStream = 0x574f524e00;  // + the slot
+
+constexpr glm::vec3 kSkin[] = {{0.95f, 0.79f, 0.68f}, {0.89f, 0.69f, 0.54f}, {0.78f, 0.57f, 0.42f},
+                               {0.62f, 0.43f, 0.3f},  {0.45f, 0.3f, 0.2f},   {0.32f, 0.21f, 0.14f}};
+constexpr glm::vec3 kHair[] = {{0.07f, 0.06f, 0.05f}, {0.2f, 0.13f, 0.08f}, {0.38f, 0.25f, 0.13f},
+                               {0.74f, 0.6f, 0.36f},  {0.48f, 0.19f, 0.09f}};
+constexpr glm::vec3 kGreyHair[] = {{0.76f, 0.76f, 0.75f}, {0.6f, 0.6f, 0.6f}, {0.88f, 0.87f, 0.85f}};
+constexpr glm::vec3 kBottom[] = {{0.16f, 0.24f, 0.4f},  {0.08f, 0.08f, 0.09f}, {0.55f, 0.48f, 0.35f},
+                                 {0.35f, 0.36f, 0.38f}, {0.1f, 0.12f, 0.22f},  {0.3f, 0.2f, 0.13f}};
+constexpr glm::vec3 kShoes[] = {{0.05f, 0.05f, 0.05f}, {0.3f, 0.18f, 0.1f}, {0.85f, 0.85f, 0.85f}, {0.2f, 0.2f, 0.22f}};
+constexpr glm::vec3 kHat[] = {{0.15f, 0.15f, 0.16f}, {0.55f, 0.45f, 0.3f}, {0.6f, 0.1f, 0.1f}, {0.2f, 0.3f, 0.5f}};
+constexpr glm::vec3 kBag[] = {{0.1f, 0.25f, 0.2f}, {0.5f, 0.12f, 0.1f}, {0.15f, 0.15f, 0.15f}, {0.85f, 0.6f, 0.1f}};
 
 std::size_t pick(std::uint64_t seed, std::uint32_t id, std::uint64_t stream, std::size_t count)
 {
@@ -29,7 +41,35 @@ AgentVariation drawVariation(const sim::Variation& v, std::uint64_t seed, std::u
     out.heightScale = sim::rngRange(seed, agentId, 0, kHeightStream, v.heightScale.x, v.heightScale.y);
     out.speedFactor = sim::rngRange(seed, agentId, 0, kSimSpeedFactorStream, v.speedFactor.x, v.speedFactor.y);
     out.phaseOffset = sim::rngRange(seed, agentId, 0, kSimPhaseOffsetStream, v.phaseOffset.x, v.phaseOffset.y);
+    for (int slot = 0; slot < kMaterialSlotCount; ++slot) {
+        const std::size_t colours = slotPalette(static_cast<MaterialSlot>(slot)).size();
+        if (colours > 1)
+            out.colour[static_cast<std::size_t>(slot)] =
+                static_cast<std::uint8_t>(pick(seed, agentId, kColourStream + static_cast<std::uint64_t>(slot), colours));
+    }
     return out;
+}
+
+std::span<const glm::vec3> slotPalette(MaterialSlot slot)
+{
+    switch (slot) {
+    case MaterialSlot::Skin: return kSkin;
+    case MaterialSlot::Hair: return kHair;
+    case MaterialSlot::GreyHair: return kGreyHair;
+    case MaterialSlot::Bottom: return kBottom;
+    case MaterialSlot::Shoes: return kShoes;
+    case MaterialSlot::Hat: return kHat;
+    case MaterialSlot::Bag: return kBag;
+    case MaterialSlot::Body:
+    case MaterialSlot::Top: break;
+    }
+    return {};
+}
+
+bool wearsPart(const MeshPart& part, std::uint64_t seed, std::uint32_t agentId)
+{
+    return part.wornShare >= 1.0f ||
+           sim::rngUniform(seed, agentId, 0, kWornStream + static_cast<std::uint64_t>(part.slot)) < part.wornShare;
 }
 
 void applyHandSetVariation(AgentVariation& variation, const sim::Agent& agent, std::size_t lookCount,

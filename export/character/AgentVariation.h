@@ -1,12 +1,19 @@
 #pragma once
-// How one agent differs from the others of its type: look, tint, height, speed, gait phase.
+// How one agent differs from the others of its type: look, tint, colours of skin, hair,
+// clothes and accessories, which accessories it wears, height, speed, gait phase.
 // Drawn from a counter-based hash of (seed, agent id), so it is the same on every run and
 // thread count and independent of the order agents are visited. Never stores state.
 
+#include "export/character/Character.h"
 #include "simcore/scene/Scene.h"
+
+#include <glm/vec3.hpp>
+
+#include <array>
 
 #include <cstddef>
 #include <cstdint>
+#include <span>
 
 namespace throng::exporting {
 
@@ -16,7 +23,16 @@ struct AgentVariation {
     float heightScale = 1.0f;  // uniform scale of the whole character, > 0
     float speedFactor = 1.0f;  // the simulation's per-agent speed factor, > 0
     float phaseOffset = 0.0f;  // gait cycles added at frame 0, in [0, 1]
+    // Per material slot, an index into slotPalette(slot) (the top wears the tint instead).
+    std::array<std::uint8_t, kMaterialSlotCount> colour{};
 };
+
+// The colours a material slot's parts come in (skin tones, hair, trousers, shoes, hats,
+// bags), at least one each; the top's and the body's are the type's tints (empty here).
+std::span<const glm::vec3> slotPalette(MaterialSlot slot);
+// Whether the agent wears the mesh part: always for a part with wornShare 1, else drawn
+// from the agent's own stream per slot (the same on every run, thread count and reader).
+bool wearsPart(const MeshPart& part, std::uint64_t seed, std::uint32_t agentId);
 
 // speedFactor and phaseOffset use the simulation's own draws (World), so the exported gait
 // agrees with the recorded run; look, tint and height come from export streams.

@@ -36,7 +36,7 @@ std::string CharacterLibrary::resolve(const sim::Scene& scene, const std::string
     auto builtin = [&](const std::string& name) -> std::ptrdiff_t {
         if (const std::ptrdiff_t i = find(name); i >= 0)
             return i;
-        std::optional<Character> c = makeBuiltinCharacter(name);
+        std::optional<Character> c = makeBuiltinCharacter(name, m_lod);
         return c ? static_cast<std::ptrdiff_t>(add(std::move(*c), name)) : -1;
     };
     for (std::size_t t = 0; t < scene.agentTypes.size(); ++t) {
@@ -66,7 +66,7 @@ std::string CharacterLibrary::resolve(const sim::Scene& scene, const std::string
         const bool humanoidBase = m_characters[baseIndex].joints.size() == kHumanoidJointCount &&
                                   m_keys[baseIndex].rfind("file:", 0) != 0;
         for (const std::string& look : type.variation.looks) {
-            const bool humanoidLook = look == "man" || look == "woman" || look == "tall_man" || look == "child";
+            const bool humanoidLook = humanoidBuild(look).has_value();
             const std::ptrdiff_t i = humanoidBase && humanoidLook ? builtin(look) : -1;
             if (i >= 0 && std::find(m_looks[t].begin(), m_looks[t].end(), std::size_t(i)) == m_looks[t].end())
                 m_looks[t].push_back(static_cast<std::size_t>(i));

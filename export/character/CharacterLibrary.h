@@ -14,6 +14,9 @@ namespace throng::exporting {
 
 class CharacterLibrary {
 public:
+    // The level of detail built-in characters are made at (before resolve).
+    void setLod(Lod lod) { m_lod = lod; }
+
     // typeUsed[t]: whether some agent has type t (unused types are not loaded). Returns an
     // error naming the type and the file when a character cannot be built or loaded.
     std::string resolve(const sim::Scene& scene, const std::string& sceneDirectory, const std::vector<bool>& typeUsed);
@@ -28,6 +31,7 @@ private:
     std::vector<Character> m_characters;
     std::vector<std::string> m_keys;
     std::vector<std::vector<std::size_t>> m_looks;
+    Lod m_lod = Lod::Near;
 };
 
 // The character a type wears when it names none: man, car or bird by its kind.

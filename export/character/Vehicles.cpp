@@ -1,7 +1,8 @@
 // The built-in car (wheels are joints that roll by distance) and bird (wing joints that
-// flap, or hold still to glide).
+// flap, or hold still to glide; a smooth body and wings).
 #include "export/character/BuiltinCharacters.h"
 #include "export/character/MeshBuilder.h"
+#include "export/character/SurfaceBuilder.h"
 
 #include <glm/gtc/quaternion.hpp>
 
@@ -74,7 +75,7 @@ Character makeCar()
     return c;
 }
 
-Character makeBird()
+Character makeBird(Lod lod)
 {
     Character c;
     c.name = "bird";
@@ -85,15 +86,41 @@ Character makeBird()
     addJoint(c, "wingtip_l", 3, {0.0f, 0.0f, -0.15f});
     addJoint(c, "wing_r", 0, {0.02f, 0.03f, 0.05f});
     addJoint(c, "wingtip_r", 5, {0.0f, 0.0f, 0.15f});
-    MeshBuilder mb(c.mesh);
-    mb.box(0, {-0.1f, -0.045f, -0.05f}, {0.1f, 0.05f, 0.05f}, {0.8f, 0.8f});
-    mb.box(1, {0.11f - 0.035f, 0.01f, -0.03f}, {0.11f + 0.04f, 0.08f, 0.03f});
-    mb.box(1, {0.15f, 0.035f, -0.01f}, {0.19f, 0.05f, 0.01f});  // beak
-    mb.box(2, {-0.2f, -0.005f, -0.04f}, {-0.1f, 0.01f, 0.04f});
-    mb.box(3, {-0.04f, 0.025f, -0.2f}, {0.06f, 0.04f, -0.05f});
-    mb.box(4, {-0.05f, 0.025f, -0.36f}, {0.03f, 0.035f, -0.2f});
-    mb.box(5, {-0.04f, 0.025f, 0.05f}, {0.06f, 0.04f, 0.2f});
-    mb.box(6, {-0.05f, 0.025f, 0.2f}, {0.03f, 0.035f, 0.36f});
+    // Tail to beak one smooth tube (tail, body and head joints), and each wing a thin one
+    // from the shoulder to the tip (wing and wingtip joints): chord along x, thin in y.
+    SurfaceBuilder sb(c.mesh, lod);
+    const glm::vec3 up(0.0f, 1.0f, 0.0f), ahead(1.0f, 0.0f, 0.0f);
+    Tube body;
+    body.sections = {{{-0.2f, 0.0f, 0.0f}, 0.003f, 0.045f, MaterialSlot::Body},
+                     {{-0.13f, 0.0f, 0.0f}, 0.008f, 0.028f, MaterialSlot::Body},
+                     {{-0.07f, 0.0f, 0.0f}, 0.04f, 0.042f, MaterialSlot::Body},
+                     {{0.02f, 0.003f, 0.0f}, 0.05f, 0.05f, MaterialSlot::Body},
+                     {{0.09f, 0.03f, 0.0f}, 0.03f, 0.028f, MaterialSlot::Body},
+                     {{0.12f, 0.045f, 0.0f}, 0.034f, 0.03f, MaterialSlot::Body},
+                     {{0.155f, 0.045f, 0.0f}, 0.016f, 0.014f, MaterialSlot::Body},
+                     {{0.19f, 0.042f, 0.0f}, 0.004f, 0.004f, MaterialSlot::Body}};
+    body.forward = up;
+    body.bones = {{2, 0.0f}, {0, 1.6f}, {1, 4.3f}};
+    body.blendM = 0.02f;
+    body.startCapM = 0.0f;
+    body.endCapM = 0.004f;
+    sb.tube(body);
+    for (int side = 0; side < 2; ++side) {
+        const float s = side == 0 ? -1.0f : 1.0f;
+        const int wing = side == 0 ? 3 : 5;
+        Tube t;
+        t.sections = {{{0.02f, 0.03f, s * 0.03f}, 0.06f, 0.014f, MaterialSlot::Body},
+                      {{0.01f, 0.032f, s * 0.12f}, 0.06f, 0.01f, MaterialSlot::Body},
+                      {{-0.005f, 0.032f, s * 0.24f}, 0.045f, 0.006f, MaterialSlot::Body},
+                      {{-0.015f, 0.03f, s * 0.34f}, 0.02f, 0.004f, MaterialSlot::Body}};
+        t.forward = ahead;
+        t.bones = {{wing, 0.0f}, {wing + 1, 1.67f}};
+        t.blendM = 0.03f;
+        t.startCapM = 0.02f;
+        t.endCapM = 0.02f;
+        sb.tube(t);
+    }
+    sb.finish();
     c.mesh.inverseBindMatrices = restInverseBindMatrices(c.joints);
 
     // Positive turns about +X lift the left wing (along -Z) and lower the right one.
