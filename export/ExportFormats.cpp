@@ -21,6 +21,7 @@ ExportResult writeGltf(const sim::Scene& scene, const sim::FrameCache& cache, co
     options.sceneDirectory = request.sceneDirectory;
     options.seed = request.seed;
     options.jointFrameStep = request.jointFrameStep;
+    options.lod = request.lod;
     options.prettyJson = request.indentedText;
     options.threads = request.threads;
     return exportGltf(scene, cache, options, progress);

@@ -4,6 +4,7 @@
 // Adding a format is one row here; the table never simulates and holds no state.
 
 #include "export/ExportResult.h"
+#include "export/character/Character.h"
 #include "simcore/scene/Scene.h"
 #include "simcore/world/FrameCache.h"
 
@@ -27,6 +28,7 @@ struct ExportRequest {
     int threads = 0;                    // worker threads; 0 = one per core
     JointBake jointBake = JointBake::Exact;  // skinned characters: how joints are baked
     int jointFrameStep = 1;             // skinned characters, exact bake: joints every N-th frame, >= 1
+    Lod lod = Lod::Near;                // built-in characters: how fine their meshes are
     bool indentedText = false;          // structured text (glTF JSON): indented for reading
 };
 

@@ -66,7 +66,7 @@ tinygltf::Value runExtras(const sim::FrameCache& cache, const GltfOptions& optio
 }
 
 tinygltf::Value agentExtras(const sim::AgentInfo& info, const std::string& type, const Character& look,
-                            const AgentVariation& v)
+                            const AgentVariation& v, std::uint64_t seed)
 {
     tinygltf::Value::Object extras;
     extras["agentId"] = tinygltf::Value(static_cast<int>(info.id));
@@ -77,6 +77,12 @@ tinygltf::Value agentExtras(const sim::AgentInfo& info, const std::string& type,
     extras["heightScale"] = r4(v.heightScale);  // the node's scale carries the exact value
     extras["speedFactor"] = r4(v.speedFactor);
     extras["phaseOffset"] = r4(v.phaseOffset);
+    tinygltf::Value::Array worn;
+    for (const MeshPart& part : look.mesh.parts)
+        if (part.slot >= MaterialSlot::Hat && wearsPart(part, seed, info.id))
+            worn.emplace_back(std::string(toString(part.slot)));
+    if (!worn.empty())
+        extras["wears"] = tinygltf::Value(std::move(worn));
     return tinygltf::Value(std::move(extras));
 }
 
@@ -134,6 +140,22 @@ int materialFor(tinygltf::Model& model, std::map<std::pair<std::size_t, int>, in
     return made[key] = static_cast<int>(model.materials.size()) - 1;
 }
 
+// One material per (slot, palette colour) that some agent's part wears.
+int slotMaterial(tinygltf::Model& model, std::map<std::pair<int, int>, int>& made, MaterialSlot slot, int colour)
+{
+    const auto key = std::make_pair(static_cast<int>(slot), colour);
+    if (auto it = made.find(key); it != made.end())
+        return it->second;
+    const glm::vec3 rgb = slotPalette(slot)[static_cast<std::size_t>(colour)];
+    tinygltf::Material material;
+    material.name = std::string(toString(slot)) + "_" + std::to_string(colour);
+    material.pbrMetallicRoughness.baseColorFactor = {rgb.r, rgb.g, rgb.b, 1.0};
+    material.pbrMetallicRoughness.metallicFactor = 0.0;
+    material.pbrMetallicRoughness.roughnessFactor = slot == MaterialSlot::Skin ? 0.55 : 0.8;
+    model.materials.push_back(std::move(material));
+    return made[key] = static_cast<int>(model.materials.size()) - 1;
+}
+
 // A far scene's frames are relative to its origin (sim::FrameCache::origin): one node at
 // the origin (glTF's numbers are doubles) carries every agent's root, so the file is in
 // the scene's coordinates without rounding each key to the floats of 1e6 m. Skinned
@@ -167,6 +189,7 @@ ExportResult exportGltf(const sim::Scene& scene, const sim::FrameCache& cache, c
     for (const sim::AgentInfo& agent : cache.agents())
         typeUsed[agent.typeIndex] = true;
     CharacterLibrary library;
+    library.setLod(options.lod);
     if (std::string error = library.resolve(scene, options.sceneDirectory, typeUsed); !error.empty())
         return failedExport("cannot export '" + options.path + "': " + error);
 
@@ -188,6 +211,7 @@ ExportResult exportGltf(const sim::Scene& scene, const sim::FrameCache& cache, c
 
     std::map<std::size_t, detail::CharacterAccessors> assets;
     std::map<std::pair<std::size_t, int>, int> materials;
+    std::map<std::pair<int, int>, int> slotMaterials;
 
     builder.beginAnimationData();
     builder.setUse(detail::GltfBuilder::Use::Clocks);
@@ -336,11 +360,17 @@ ExportResult exportGltf(const sim::Scene& scene, const sim::FrameCache& cache, c
             }
             detail::AgentRigSpec spec;
             spec.name = "agent_" + std::to_string(info.id) + "_" + type.name;
-            spec.material = materialFor(model, materials, type, info.typeIndex, w.variation.tint);
+            for (const MeshPart& part : partsOf(character.mesh)) {
+                const auto colour = static_cast<int>(w.variation.colour[static_cast<std::size_t>(part.slot)]);
+                spec.partMaterials.push_back(
+                    !wearsPart(part, seed, info.id)        ? -1
+                    : slotPalette(part.slot).empty() ? materialFor(model, materials, type, info.typeIndex, w.variation.tint)
+                                                     : slotMaterial(model, slotMaterials, part.slot, colour));
+            }
             spec.heightScale = w.variation.heightScale;
             spec.translation = w.positions[0];
             spec.rotation = w.yaw[0];
-            spec.extras = agentExtras(info, type.name, character, w.variation);
+            spec.extras = agentExtras(info, type.name, character, w.variation, seed);
             const detail::AgentRig rig = detail::addAgentRig(model, character, assets[w.character], spec, w.firstPose);
 
             channels.nextAgent();

@@ -5,6 +5,7 @@
 // FrameCache only; never simulates, never leaves partial files.
 
 #include "export/ExportResult.h"
+#include "export/character/Character.h"
 #include "simcore/scene/Scene.h"
 #include "simcore/world/FrameCache.h"
 
@@ -22,6 +23,7 @@ enum class GltfMode {
 struct GltfOptions {
     std::string path;                    // ends in .glb: one binary file; else .gltf + .bin beside it
     GltfMode mode = GltfMode::Exact;
+    Lod lod = Lod::Near;                 // how fine the built-in characters' meshes are
     std::string sceneDirectory;          // where relative character file paths are resolved; empty = cwd
     std::optional<std::uint64_t> seed;   // variation seed; default: the scene's settings.seed
     int jointFrameStep = 1;              // exact: bake joints every N-th frame (and the last), >= 1
@@ -47,7 +49,9 @@ struct GltfExportStats {
 // f at f / fps, static scale = the agent's height scale (an agent that leaves through an
 // exit, AgentFrame::out, gets a STEP scale channel: that scale, then 0 from the frame it
 // left); children `<agent>__<joint>`; a
-// scene-root node `<agent>_body` with the agent's own mesh entry and skin. One animation,
+// scene-root node `<agent>_body` with the agent's own mesh entry (a primitive per mesh part
+// it wears, each with its slot's material: the tint on the top, palette colours on skin,
+// hair, clothes and accessories) and skin. One animation,
 // "crowd". Rotations are normalised int16. Asset and scene extras carry generator
 // "Throng", fps, frameCount, agentCount, mode, seed; each root's extras its variation.
 // writtenPaths: {path} for .glb, {path, <stem>.bin} for .gltf (the .bin name keeps only

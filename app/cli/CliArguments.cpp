@@ -55,6 +55,8 @@ std::string usageText()
            "      --export-mode exact|compact  glTF: bake every agent's joints (default), or share one\n"
            "                              cycle per look (joint data ~13x smaller; docs/export.md)\n"
            "      --export-joint-step N   glTF, exact: bake joints every N-th frame (default 1)\n"
+           "      --export-lod near|mid|far  glTF: the built-in characters' detail (default near,\n"
+           "                              about 6,000 triangles a body; mid 2,400; far 1,000)\n"
            "  bench [--agents N] [--steps S] [--scenario flock|cross|cross-brain|army|corridor] [--threads T]\n"
            "                              run a built-in scenario and print figures as JSON\n"
            "\n"
@@ -136,6 +138,10 @@ ParseOutcome parseArguments(const std::vector<std::string>& argv)
         else if (arg == "--export-mode") {
             if (value(a.exportMode) && a.exportMode != "exact" && a.exportMode != "compact")
                 out.error = "--export-mode is exact or compact, got '" + a.exportMode + "'";
+        } else if (arg == "--export-lod") {
+            exporting::Lod lod{};
+            if (value(a.exportLod) && !exporting::lodFromName(a.exportLod, lod))
+                out.error = "--export-lod is near, mid or far, got '" + a.exportLod + "'";
         } else if (arg == "--export-joint-step") {
             count(a.exportJointStep, false);
             if (a.exportJointStep && *a.exportJointStep > 1000)
@@ -168,7 +174,7 @@ ParseOutcome parseArguments(const std::vector<std::string>& argv)
     }
     if (out.error.empty() && a.command != "run" &&
         (!a.statsPath.empty() || !a.exports.empty() || a.frames ||
-         !a.exportMode.empty() || a.exportJointStep))
+         !a.exportMode.empty() || a.exportJointStep || !a.exportLod.empty()))
         out.error = "--frames, --stats, --trajectories and --export options belong to 'run'";
     return out;
 }

@@ -27,6 +27,7 @@ struct CliArguments {
     std::vector<ExportOutput> exports;             // in the order given; the run records frames for them
     std::string exportMode;                        // exact | compact; empty = exact
     std::optional<std::uint64_t> exportJointStep;  // >= 1
+    std::string exportLod;                         // near | mid | far; empty = near
     bool quiet = false;
     bool json = false;  // check: diagnostics as JSON lines
 };

@@ -28,6 +28,8 @@ bool writeRunOutputs(const CliArguments& args, const sim::Scene& scene, const si
     request.jointBake = args.exportMode == "compact" ? exporting::JointBake::Compact : exporting::JointBake::Exact;
     if (args.exportJointStep)
         request.jointFrameStep = static_cast<int>(*args.exportJointStep);
+    if (!args.exportLod.empty())
+        exporting::lodFromName(args.exportLod, request.lod);
     for (const ExportOutput& output : args.exports) {
         request.path = output.path;
         const exporting::ExportResult r = output.format->write(scene, cache, request, {});

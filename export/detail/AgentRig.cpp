@@ -50,14 +50,19 @@ AgentRig addAgentRig(tinygltf::Model& model, const Character& c, const Character
             model.nodes[rig.firstJoint + joint.parent].children.push_back(rig.firstJoint + static_cast<int>(j));
     }
 
-    tinygltf::Primitive primitive;
-    primitive.attributes = assets.attributes;
-    primitive.indices = assets.indices;
-    primitive.material = spec.material;
-    primitive.mode = TINYGLTF_MODE_TRIANGLES;
     tinygltf::Mesh mesh;
     mesh.name = spec.name;
-    mesh.primitives.push_back(std::move(primitive));
+    for (std::size_t p = 0; p < assets.partIndices.size(); ++p) {
+        const int material = p < spec.partMaterials.size() ? spec.partMaterials[p] : -1;
+        if (material < 0)
+            continue;
+        tinygltf::Primitive primitive;
+        primitive.attributes = assets.attributes;
+        primitive.indices = assets.partIndices[p];
+        primitive.material = material;
+        primitive.mode = TINYGLTF_MODE_TRIANGLES;
+        mesh.primitives.push_back(std::move(primitive));
+    }
     model.meshes.push_back(std::move(mesh));
 
     tinygltf::Skin skin;

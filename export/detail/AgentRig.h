@@ -22,7 +22,7 @@ struct AgentRig {
 
 struct AgentRigSpec {
     std::string name;          // agent_<id>_<type>
-    int material = -1;
+    std::vector<int> partMaterials;  // per part of partsOf(mesh): its material, or -1 = not worn
     float heightScale = 1.0f;
     glm::vec3 translation{0.0f};
     glm::quat rotation{1.0f, 0.0f, 0.0f, 0.0f};

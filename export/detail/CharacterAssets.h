@@ -11,12 +11,13 @@
 
 #include <map>
 #include <string>
+#include <vector>
 
 namespace throng::exporting::detail {
 
 struct CharacterAccessors {
     std::map<std::string, int> attributes;  // POSITION, NORMAL, WEIGHTS_0, JOINTS_0
-    int indices = -1;
+    std::vector<int> partIndices;  // per part of partsOf(mesh): its run of the indices
     int inverseBindMatrices = -1;
 };
 

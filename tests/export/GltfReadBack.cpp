@@ -51,6 +51,28 @@ std::vector<float> accessorFloats(const tinygltf::Model& model, int accessorInde
     return values;
 }
 
+std::vector<std::uint32_t> accessorIndices(const tinygltf::Model& model, int accessorIndex)
+{
+    const tinygltf::Accessor& accessor = model.accessors.at(accessorIndex);
+    const int type = accessor.componentType;
+    const std::size_t size = type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE    ? 1
+                             : type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ? 2
+                             : type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT   ? 4
+                                                                              : 0;
+    if (size == 0 || accessor.type != TINYGLTF_TYPE_SCALAR)
+        return {};
+    const tinygltf::BufferView& view = model.bufferViews.at(accessor.bufferView);
+    const unsigned char* base = model.buffers.at(view.buffer).data.data() + view.byteOffset + accessor.byteOffset;
+    const std::size_t stride = view.byteStride ? view.byteStride : size;
+    std::vector<std::uint32_t> values(accessor.count);
+    for (std::size_t i = 0; i < accessor.count; ++i) {
+        std::uint32_t v = 0;
+        std::memcpy(&v, base + i * stride, size);  // little-endian: the low bytes
+        values[i] = v;
+    }
+    return values;
+}
+
 std::vector<float> evaluateChannel(const tinygltf::Model& model, int node, const std::string& path, float t)
 {
     const tinygltf::AnimationSampler* sampler = samplerFor(model, node, path);

@@ -6,6 +6,7 @@
 #include <glm/mat4x4.hpp>
 #include <tiny_gltf.h>
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,8 @@ namespace throng::test {
 bool loadGltf(const std::string& path, tinygltf::Model& model, std::string& error);
 // Every value of a FLOAT or normalised SHORT accessor as float, tightly packed (count x components).
 std::vector<float> accessorFloats(const tinygltf::Model& model, int accessor);
+// Every value of an UNSIGNED_BYTE, _SHORT or _INT scalar accessor (indices), in order.
+std::vector<std::uint32_t> accessorIndices(const tinygltf::Model& model, int accessor);
 // The sampler of the first animation's channel targeting `node`'s `path`, or nullptr.
 const tinygltf::AnimationSampler* samplerFor(const tinygltf::Model& model, int node, const std::string& path);
 // The value of `node`'s `path` channel at time t (s), interpolated linearly (rotations:

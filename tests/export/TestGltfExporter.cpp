@@ -19,6 +19,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include <cmath>
+#include <map>
 #include <set>
 
 using namespace throng;
@@ -197,17 +198,84 @@ private slots:
         exportAndLoad(dir, "crowd.glb", model);
         if (QTest::currentTestFailed())
             return;
-        const tinygltf::Primitive& body =
-            model.meshes.at(model.nodes.at(test::nodeNamed(model, "agent_7_walker_body")).mesh).primitives.at(0);
+        const tinygltf::Mesh& walker = model.meshes.at(model.nodes.at(test::nodeNamed(model, "agent_7_walker_body")).mesh);
+        const tinygltf::Primitive& body = walker.primitives.at(0);
         QVERIFY(body.attributes.count("NORMAL") && body.attributes.count("JOINTS_0") && body.attributes.count("WEIGHTS_0"));
         const tinygltf::Accessor& position = model.accessors.at(body.attributes.at("POSITION"));
         QVERIFY(std::abs(position.minValues[1]) < 0.02);
-        QVERIFY2(position.maxValues[1] > 1.65 && position.maxValues[1] < 1.85, qPrintable(QString::number(position.maxValues[1])));
         QVERIFY(model.bufferViews.at(position.bufferView).byteStride > 0);  // interleaved
-        const tinygltf::Primitive& runner =
-            model.meshes.at(model.nodes.at(test::nodeNamed(model, "agent_42_runner_body")).mesh).primitives.at(0);
-        const std::vector<double> colour = model.materials.at(runner.material).pbrMetallicRoughness.baseColorFactor;
-        QVERIFY(std::abs(colour[2] - 0.9) < 1e-6);
+        // The body's height: the top of the parts every agent wears (a hat is an accessory).
+        const std::vector<float> xyz = test::accessorFloats(model, body.attributes.at("POSITION"));
+        float top = 0.0f;
+        for (const tinygltf::Primitive& p : walker.primitives) {
+            const std::string& material = model.materials.at(p.material).name;
+            if (material.rfind("hat", 0) == 0 || material.rfind("bag", 0) == 0)
+                continue;
+            for (std::uint32_t index : test::accessorIndices(model, p.indices))
+                top = std::max(top, xyz.at(3 * std::size_t(index) + 1));
+        }
+        QVERIFY2(top > 1.65f && top < 1.85f, qPrintable(QString::number(top)));
+        // The runner's type is tinted blue: its top wears the tint.
+        bool tinted = false;
+        for (const tinygltf::Primitive& p :
+             model.meshes.at(model.nodes.at(test::nodeNamed(model, "agent_42_runner_body")).mesh).primitives) {
+            const std::vector<double> colour = model.materials.at(p.material).pbrMetallicRoughness.baseColorFactor;
+            tinted = tinted || (model.materials.at(p.material).name.rfind("runner_tint", 0) == 0 &&
+                                std::abs(colour[2] - 0.9) < 1e-6);
+        }
+        QVERIFY(tinted);
+    }
+
+    // Every body has skin, a top in its tint, a bottom, hair and shoes, each in its own
+    // material; hats and backpacks are worn by about the share each build gives them
+    // (the child always wears its hat), and a body's hat or bag primitive is there
+    // exactly when its extras say it wears one. Skin tones vary over the crowd.
+    void bodiesWearSkinClothesAndAccessoriesByShare()
+    {
+        QTemporaryDir dir;
+        const CrowdFixture fx = CrowdFixture::makeCrowd(800, 2);
+        const QString path = dir.filePath("crowd.glb");
+        const exporting::ExportResult result = exportTo(fx, path);
+        QVERIFY2(result.ok(), result.error.c_str());
+        tinygltf::Model model;
+        std::string error;
+        QVERIFY2(test::loadGltf(path.toStdString(), model, error), error.c_str());
+        std::map<std::string, int> agents, hats, bags;
+        std::set<std::string> skins;
+        for (const sim::AgentInfo& info : fx.cache.agents()) {
+            const std::string root = "agent_" + std::to_string(info.id) + "_walker";
+            const tinygltf::Value& extras = model.nodes.at(test::nodeNamed(model, root)).extras;
+            const std::string character = extras.Get("character").Get<std::string>();
+            std::set<std::string> wears;
+            if (extras.Has("wears"))
+                for (const tinygltf::Value& w : extras.Get("wears").Get<tinygltf::Value::Array>())
+                    wears.insert(w.Get<std::string>());
+            std::map<std::string, int> parts;
+            for (const tinygltf::Primitive& p : model.meshes.at(model.nodes.at(test::nodeNamed(model, root + "_body")).mesh).primitives) {
+                const std::string material = model.materials.at(p.material).name;
+                const std::string part = material.rfind("walker_tint", 0) == 0 ? "top" : material.substr(0, material.rfind('_'));
+                ++parts[part];
+                if (part == "skin")
+                    skins.insert(material);
+            }
+            const QString what = QString::fromStdString(root + " (" + character + ")");
+            for (const char* always : {"skin", "top", "bottom", "shoes"})
+                QVERIFY2(parts[always] == 1, qPrintable(what + " lacks " + always));
+            QVERIFY2(parts["hair"] + parts["grey_hair"] == 1, qPrintable(what));
+            QCOMPARE(parts["hat"], int(wears.count("hat")));
+            QCOMPARE(parts["bag"], int(wears.count("bag")));
+            ++agents[character];
+            hats[character] += parts["hat"];
+            bags[character] += parts["bag"];
+        }
+        for (const char* look : {"man", "woman", "tall_man", "child"})
+            QVERIFY2(agents[look] > 120, look);
+        QCOMPARE(hats["child"], agents["child"]);
+        auto share = [](int n, int of) { return double(n) / double(of); };
+        QVERIFY2(std::abs(share(hats["man"], agents["man"]) - 0.15) < 0.08, qPrintable(QString::number(hats["man"])));
+        QVERIFY2(std::abs(share(bags["woman"], agents["woman"]) - 0.3) < 0.1, qPrintable(QString::number(bags["woman"])));
+        QVERIFY2(std::abs(share(bags["child"], agents["child"]) - 0.5) < 0.12, qPrintable(QString::number(bags["child"])));
+        QVERIFY(skins.size() >= 5);
     }
 
     void extrasDescribeTheRun()
