@@ -64,13 +64,22 @@ bool AgentCharacters::setScene(const sim::Scene& scene, const std::string& scene
         if (!error.empty())
             m_problems += (m_problems.empty() ? "" : "\n") + error;
     }
-    exporting::CharacterLibrary library;
+    // Near agents wear the middle level of detail, far ones the lightest: a software
+    // renderer pays for every triangle.
+    exporting::CharacterLibrary library, farLibrary;
+    library.setLod(exporting::Lod::Mid);
+    farLibrary.setLod(exporting::Lod::Far);
     if (const std::string error = library.resolve(scene, sceneDirectory, resolvable); !error.empty()) {
         m_problems += (m_problems.empty() ? "" : "\n") + error;
         return true;
     }
-    for (std::size_t c = 0; c < library.characterCount(); ++c)
+    farLibrary.resolve(scene, sceneDirectory, resolvable);  // the same characters, in the same order
+    m_parts.clear();
+    for (std::size_t c = 0; c < library.characterCount(); ++c) {
         m_tables.push_back(buildPoseTable(library.character(c)));
+        m_tables.push_back(buildPoseTable(farLibrary.character(c)));
+        m_parts.push_back(exporting::partsOf(library.character(c).mesh));
+    }
     for (std::size_t t = 0; t < types; ++t)
         if (resolvable[t])
             for (std::size_t c : library.looksOf(t))
@@ -99,7 +108,14 @@ const std::vector<AgentCharacters::Look>& AgentCharacters::looksFor(std::span<co
         exporting::AgentVariation v = exporting::drawVariation(m_variations[type], m_seed, agents[i].id, looks.size());
         if (const auto it = m_handSet.find(agents[i].id); it != m_handSet.end())
             exporting::applyHandSetVariation(v, it->second, looks.size(), m_variations[type].tints.size());
-        m_looks[i] = {looks[std::min(v.look, looks.size() - 1)], v.heightScale};
+        const int character = looks[std::min(v.look, looks.size() - 1)];
+        std::uint32_t bits = 0;
+        for (int slot = 1; slot < exporting::kMaterialSlotCount; ++slot)
+            bits |= std::uint32_t(v.colour[std::size_t(slot)] & 7u) << (3 * (slot - 1));
+        for (const exporting::MeshPart& part : m_parts[std::size_t(character)])
+            if (int(part.slot) >= int(exporting::MaterialSlot::Hat) && exporting::wearsPart(part, m_seed, agents[i].id))
+                bits |= 1u << (24 + int(part.slot) - int(exporting::MaterialSlot::Hat));
+        m_looks[i] = {character, v.heightScale, bits};
     }
     return m_looks;
 }
@@ -111,9 +127,9 @@ void AgentCharacters::posesFor(std::span<const sim::AgentFrame> frames, std::spa
     poses.resize(frames.size());
     for (std::size_t i = 0; i < frames.size(); ++i) {
         const Look& look = looks[i];
-        poses[i] = {look.character, 0, look.heightScale};
+        poses[i] = {look.character, 0, look.heightScale, look.lookBits};
         if (look.character >= 0)
-            poses[i].pose = m_tables[std::size_t(look.character)].poseFor(
+            poses[i].pose = m_tables[std::size_t(look.character) * kLevels].poseFor(
                 frames[i].clip, frames[i].phase, sim::actionPhase(frames[i].clip, timeS, agents[i].id),
                 frames[i].speed >= kMovingMps);
     }

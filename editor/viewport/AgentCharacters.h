@@ -23,6 +23,9 @@ public:
     // true when the pose tables changed (the renderer must upload them again).
     bool setScene(const sim::Scene& scene, const std::string& sceneDirectory);
 
+    // Pose tables by character and level: character c's near table (Lod::Mid) at
+    // kLevels * c, its far one (Lod::Far) after it.
+    static constexpr int kLevels = 2;
     const std::vector<PoseTable>& poseTables() const { return m_tables; }
     // Why some types keep the glyph; empty when every type has its character.
     const std::string& problems() const { return m_problems; }
@@ -36,11 +39,13 @@ private:
     struct Look {
         int character = -1;
         float heightScale = 1.0f;
+        std::uint32_t lookBits = 0;
     };
     const std::vector<Look>& looksFor(std::span<const sim::AgentInfo> agents);
 
     std::string m_signature;                        // what the tables were built from
-    std::vector<PoseTable> m_tables;                // by character of the library
+    std::vector<PoseTable> m_tables;                // by character of the library and level
+    std::vector<std::vector<exporting::MeshPart>> m_parts;  // by character: its mesh's parts
     std::vector<std::vector<int>> m_looksOfType;    // type -> characters; empty = unresolved
     std::vector<sim::Variation> m_variations;       // by type index
     std::unordered_map<std::uint32_t, sim::Agent> m_handSet;  // placed agents with a hand-set look or height

@@ -187,7 +187,7 @@ void AgentRenderer::takeCharacters(const Instances& set)
             for (; k < r.first + r.count && m_characterBudget > 0; ++k) {
                 const AgentPose& pose = set.poses[std::size_t(order[std::size_t(k)])];
                 if (m_characters.hasCharacter(pose.character)) {
-                    m_characters.add(sorted[std::size_t(k)], pose);
+                    m_characters.add(sorted[std::size_t(k)], pose, level);
                     --m_characterBudget;
                 } else {
                     m_fallback.push_back(sorted[std::size_t(k)]);

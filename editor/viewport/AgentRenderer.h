@@ -62,10 +62,10 @@ public:
     void destroy(QOpenGLFunctions_3_3_Core& gl);
     // `bodies` are walkers, `cars` vehicles and `birds` fliers.
     void upload(QOpenGLFunctions_3_3_Core& gl, AgentBatch bodies, AgentBatch cars, AgentBatch birds = {});
-    // The characters AgentPose::character indexes.
-    void setCharacters(QOpenGLFunctions_3_3_Core& gl, std::span<const PoseTable> tables)
+    // The characters AgentPose::character indexes, `levels` tables each (near first).
+    void setCharacters(QOpenGLFunctions_3_3_Core& gl, std::span<const PoseTable> tables, int levels)
     {
-        m_characters.setCharacters(gl, tables);
+        m_characters.setCharacters(gl, tables, levels);
     }
     // On: near agents as characters in perspective; off (the default): glyphs only.
     void setAgentsAsCharacters(bool on) { m_agentsAsCharacters = on; }

@@ -64,6 +64,10 @@ PoseTable buildPoseTable(const exporting::Character& character)
     PoseTable table;
     table.vertexCount = character.mesh.positions.size();
     table.indices = character.mesh.indices;
+    table.materialSlots.assign(table.vertexCount, 0);
+    for (const exporting::MeshPart& part : exporting::partsOf(character.mesh))
+        for (std::uint32_t i = part.firstIndex; i < part.firstIndex + part.indexCount; ++i)
+            table.materialSlots[character.mesh.indices[i]] = std::uint8_t(part.slot);
     table.hasIdle = character.hasIdle;
     table.positions.reserve(table.vertexCount * PoseTable::kPoseCount);
     table.normals.reserve(table.vertexCount * PoseTable::kPoseCount);

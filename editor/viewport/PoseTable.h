@@ -26,6 +26,7 @@ struct PoseTable {
     std::vector<glm::vec3> positions;          // pose-major: pose p's vertex v at p * vertexCount + v, m
     std::vector<glm::vec3> normals;            // unit length, same layout
     std::vector<std::uint32_t> indices;        // the mesh's triangles, into one pose's vertices
+    std::vector<std::uint8_t> materialSlots;   // per vertex of a pose: its part's MaterialSlot
     bool hasIdle = true;                       // false: a stopped agent holds the walk (wheels, wings)
     std::vector<std::uint8_t> hasAction;       // per action (kActions): the character plays it
 

@@ -515,7 +515,7 @@ void Viewport::uploadChanged()
         m_lampRenderer.upload(*this, m_lampMesh);
     }
     if (m_charactersChanged)
-        m_agentRenderer.setCharacters(*this, m_agentCharacters.poseTables());
+        m_agentRenderer.setCharacters(*this, m_agentCharacters.poseTables(), AgentCharacters::kLevels);
     if (m_agentsChanged)
         m_agentRenderer.upload(*this, {m_glyphs, m_glyphPoses}, {m_carGlyphs, m_carPoses}, {m_birdGlyphs, m_birdPoses});
     if (m_highlightChanged)

@@ -1,5 +1,5 @@
 // Agents as characters in the 3D view, as a user sees them: a walker stands as a figure
-// of its character's height in its tint, differs from its glyph, moves its legs from one
+// of its character's height, its top in its tint, differs from its glyph, moves its legs from one
 // recorded phase to another, raises a hand when its brain waves; a type without a
 // character keeps its glyph; a crowd seen close up shows every agent, near ones as
 // characters.
@@ -8,6 +8,7 @@
 #include "TestRegistry.h"
 
 #include "editor/viewport/PoseTable.h"
+#include "export/character/AgentVariation.h"
 #include "export/character/BuiltinCharacters.h"
 #include "simcore/world/FrameCache.h"
 
@@ -48,10 +49,27 @@ QByteArray walkerYaml(const char* character = "man")
         .toUtf8();
 }
 
-// The walker's pixels: orange, lit or in shade (ground, grid, walls and background are grey).
-bool isWalker(QRgb p)
+// A pixel in the walker's tint, lit or in shade (ground, grid, walls and background are
+// grey): its glyph, or its character's top.
+bool isTinted(QRgb p)
 {
     return qRed(p) - qBlue(p) > 60 && qRed(p) > qGreen(p) + 25;
+}
+
+// A pixel of the walker, whatever part of it (skin, clothes, hair): one that differs from
+// the view without it.
+bool isWalker(QRgb p, QRgb background)
+{
+    return std::abs(qRed(p) - qRed(background)) + std::abs(qGreen(p) - qGreen(background)) +
+               std::abs(qBlue(p) - qBlue(background)) > 24;
+}
+
+// The view without the agents (a run that recorded nobody), from the same camera.
+QImage backgroundOf(Viewport& viewport)
+{
+    static const sim::FrameCache nobody;
+    viewport.showFrame(nobody, 0);
+    return viewport.grabFramebuffer();
 }
 
 struct Silhouette {
@@ -61,21 +79,21 @@ struct Silhouette {
     int legsWidth = 0;  // width of the lowest quarter of the box, px
 };
 
-Silhouette silhouetteOf(const QImage& image)
+Silhouette silhouetteOf(const QImage& image, const QImage& background)
 {
     Silhouette s;
     int left = image.width(), right = -1, top = image.height(), bottom = -1, best = -1;
     for (int y = 0; y < image.height(); ++y)
         for (int x = 0; x < image.width(); ++x) {
             const QRgb p = image.pixel(x, y);
-            if (!isWalker(p))
+            if (!isWalker(p, background.pixel(x, y)))
                 continue;
             ++s.pixels;
             left = std::min(left, x);
             right = std::max(right, x);
             top = std::min(top, y);
             bottom = std::max(bottom, y);
-            if (qRed(p) > best) {
+            if (isTinted(p) && qRed(p) > best) {
                 best = qRed(p);
                 s.brightest = p;
             }
@@ -86,7 +104,7 @@ Silhouette silhouetteOf(const QImage& image)
     int legsLeft = right, legsRight = left;
     for (int y = bottom - s.box.height() / 4; y <= bottom; ++y)
         for (int x = left; x <= right; ++x)
-            if (isWalker(image.pixel(x, y))) {
+            if (isWalker(image.pixel(x, y), background.pixel(x, y))) {
                 legsLeft = std::min(legsLeft, x);
                 legsRight = std::max(legsRight, x);
             }
@@ -95,25 +113,45 @@ Silhouette silhouetteOf(const QImage& image)
 }
 
 // Share of pixels covered by the walker in one image and not the other, of those in either.
-double difference(const QImage& a, const QImage& b)
+double difference(const QImage& a, const QImage& b, const QImage& background)
 {
     int either = 0, one = 0;
     for (int y = 0; y < a.height(); ++y)
         for (int x = 0; x < a.width(); ++x) {
-            const bool inA = isWalker(a.pixel(x, y)), inB = isWalker(b.pixel(x, y));
+            const QRgb under = background.pixel(x, y);
+            const bool inA = isWalker(a.pixel(x, y), under), inB = isWalker(b.pixel(x, y), under);
             either += inA || inB;
             one += inA != inB;
         }
     return either ? double(one) / double(either) : 0.0;
 }
 
-// The man's height standing in his idle pose, m.
-float manHeightM()
+// The man as the view draws agent 1 near the camera: the middle level of detail, and per
+// vertex whether the agent wears it (a hat or a backpack only some agents wear).
+struct ShownMan {
+    PoseTable table;
+    std::vector<bool> worn;
+};
+
+ShownMan shownMan(std::uint64_t seed)
 {
-    const PoseTable table = buildPoseTable(*exporting::makeBuiltinCharacter("man"));
+    const exporting::Character man = *exporting::makeBuiltinCharacter("man", exporting::Lod::Mid);
+    ShownMan shown{buildPoseTable(man), std::vector<bool>(man.mesh.positions.size(), false)};
+    for (const exporting::MeshPart& part : exporting::partsOf(man.mesh))
+        if (exporting::wearsPart(part, seed, 1))
+            for (std::uint32_t i = part.firstIndex; i < part.firstIndex + part.indexCount; ++i)
+                shown.worn[man.mesh.indices[i]] = true;
+    return shown;
+}
+
+// The man's height standing in his idle pose as agent 1 wears him, m.
+float manHeightM(std::uint64_t seed)
+{
+    const ShownMan man = shownMan(seed);
     float top = 0.0f;
-    for (std::size_t v = 0; v < table.vertexCount; ++v)
-        top = std::max(top, table.positions[v].y);
+    for (std::size_t v = 0; v < man.table.vertexCount; ++v)
+        if (man.worn[v])
+            top = std::max(top, man.table.positions[v].y);
     return top;
 }
 
@@ -201,17 +239,18 @@ private slots:
         Viewport viewport;
         viewport.setAgentsAsCharacters(true);
         viewport.setViewMode(ViewMode::Orbit);
-        showInitialState(viewport, loadTestScene(m_dir, walkerYaml()));
+        const sim::Scene scene = loadTestScene(m_dir, walkerYaml());
+        showInitialState(viewport, scene);
         const QImage image = renderOffscreen(viewport, kSize);
         QVERIFY2(viewport.isGlReady(), qPrintable(viewport.glProblem()));
         saveForInspection(image, "character");
         QCOMPARE(viewport.charactersDrawn(), 1);
-        const Silhouette s = silhouetteOf(image);
+        const Silhouette s = silhouetteOf(image, backgroundOf(viewport));
         QVERIFY2(s.pixels > 200, qPrintable(describe(s)));
 
         // As tall on screen as the man's height where he stands, feet on the ground.
         const QPointF feet = viewport.worldToPixel({0.0f, 0.0f, 0.0f});
-        const QPointF head = viewport.worldToPixel({0.0f, manHeightM(), 0.0f});
+        const QPointF head = viewport.worldToPixel({0.0f, manHeightM(scene.settings.seed), 0.0f});
         const double expected = feet.y() - head.y();
         QVERIFY2(std::abs(s.box.height() - expected) < 0.15 * expected,
                  qPrintable(describe(s) + QString(", expected %1 px tall").arg(expected)));
@@ -220,7 +259,8 @@ private slots:
         // A standing figure: taller than wide.
         QVERIFY2(s.box.height() > 1.5 * s.box.width(), qPrintable(describe(s)));
 
-        // Its lit side in the tint, shaded: the channels keep the tint's proportions.
+        // Its top's lit side in the tint, shaded: the channels keep the tint's proportions.
+        QVERIFY(s.brightest != 0);
         const double r = qRed(s.brightest);
         QVERIFY2(r > 0.8 * 255 * kTint.r, qPrintable(editor::test::describe(s.brightest)));
         QVERIFY2(std::abs(qGreen(s.brightest) / r - kTint.g / kTint.r) < 0.06 &&
@@ -233,15 +273,17 @@ private slots:
         Viewport viewport;
         viewport.setViewMode(ViewMode::Orbit);
         viewport.setAgentsAsCharacters(true);
-        showInitialState(viewport, loadTestScene(m_dir, walkerYaml()));
+        const sim::Scene scene = loadTestScene(m_dir, walkerYaml());
+        showInitialState(viewport, scene);
         const QImage character = renderOffscreen(viewport, kSize);
         viewport.setAgentsAsCharacters(false);
         const QImage glyph = viewport.grabFramebuffer();
         saveForInspection(glyph, "glyph");
         QCOMPARE(viewport.charactersDrawn(), 0);
-        const Silhouette g = silhouetteOf(glyph);
-        QVERIFY2(g.pixels > 100, qPrintable(describe(g)));  // the glyph is there, in the tint too
-        const double d = difference(character, glyph);
+        const QImage background = backgroundOf(viewport);
+        const Silhouette g = silhouetteOf(glyph, background);
+        QVERIFY2(g.pixels > 100 && g.brightest != 0, qPrintable(describe(g)));  // the glyph is there, in the tint too
+        const double d = difference(character, glyph, background);
         QVERIFY2(d > 0.3, qPrintable(QString("the character and the glyph differ in %1 of their pixels").arg(d)));
     }
 
@@ -250,8 +292,10 @@ private slots:
         Viewport viewport;
         viewport.setViewMode(ViewMode::Orbit);
         viewport.setAgentsAsCharacters(true);
-        showInitialState(viewport, loadTestScene(m_dir, walkerYaml()));
+        const sim::Scene scene = loadTestScene(m_dir, walkerYaml());
+        showInitialState(viewport, scene);
         renderOffscreen(viewport, kSize);
+        const QImage background = backgroundOf(viewport);
         const sim::FrameCache cache = walkingFrames({0.0f, 0.25f});
         viewport.showFrame(cache, 0);
         const QImage stride = viewport.grabFramebuffer();
@@ -259,12 +303,13 @@ private slots:
         const QImage passing = viewport.grabFramebuffer();
         saveForInspection(stride, "phase0");
         saveForInspection(passing, "phase25");
-        const Silhouette a = silhouetteOf(stride), b = silhouetteOf(passing);
+        const Silhouette a = silhouetteOf(stride, background), b = silhouetteOf(passing, background);
         QVERIFY2(a.pixels > 200 && b.pixels > 200, qPrintable(describe(a) + " / " + describe(b)));
         // A quarter cycle apart the feet are apart and then together (or the reverse).
         const double wider = std::max(a.legsWidth, b.legsWidth), narrower = std::min(a.legsWidth, b.legsWidth);
         QVERIFY2(wider > 1.3 * narrower, qPrintable(describe(a) + " / " + describe(b)));
-        QVERIFY2(difference(stride, passing) > 0.1, qPrintable(QString::number(difference(stride, passing))));
+        const double d = difference(stride, passing, background);
+        QVERIFY2(d > 0.1, qPrintable(QString::number(d)));
     }
 
     // A brain's action plays in the view: a bystander turned so its right side faces
@@ -276,8 +321,10 @@ private slots:
         Viewport viewport;
         viewport.setViewMode(ViewMode::Orbit);
         viewport.setAgentsAsCharacters(true);
-        showInitialState(viewport, loadTestScene(m_dir, walkerYaml()));
+        const sim::Scene scene = loadTestScene(m_dir, walkerYaml());
+        showInitialState(viewport, scene);
         renderOffscreen(viewport, kSize);
+        const QImage background = backgroundOf(viewport);
         const float heading = 1.5707963f;  // the nose to -z (north), the right side to +x (east)
         sim::FrameCache cache;
         cache.reset({sim::AgentInfo{1, 0}}, 24.0f);
@@ -288,10 +335,13 @@ private slots:
             cache.append({&f, 1});
         }
         // Where pose p of the man's table lies on screen: its top and right edge, px.
-        const PoseTable table = buildPoseTable(*exporting::makeBuiltinCharacter("man"));
+        const ShownMan man = shownMan(scene.settings.seed);
+        const PoseTable& table = man.table;
         auto projected = [&](int pose) {
             double top = 1e9, right = -1e9;
             for (std::size_t v = 0; v < table.vertexCount; ++v) {
+                if (!man.worn[v])
+                    continue;
                 const glm::vec3 p = table.positions[std::size_t(pose) * table.vertexCount + v];
                 const glm::vec3 world(p.x * std::cos(heading) + p.z * std::sin(heading), p.y,
                                       -p.x * std::sin(heading) + p.z * std::cos(heading));
@@ -309,7 +359,7 @@ private slots:
             viewport.showFrame(cache, frame);
             const QImage image = viewport.grabFramebuffer();
             saveForInspection(image, QString("wave%1").arg(frame));
-            seen.push_back(silhouetteOf(image));
+            seen.push_back(silhouetteOf(image, background));
             QVERIFY2(seen.back().pixels > 200, qPrintable(describe(seen.back())));
             const sim::AgentFrame& f = cache.at(frame, 0);
             const float actionPhase = sim::actionPhase(f.clip, double(frame) / 24.0, 1);
@@ -339,7 +389,7 @@ private slots:
         const QImage image = renderOffscreen(viewport, kSize);
         QCOMPARE(viewport.charactersDrawn(), 0);
         const QRgb body = pixelAt(image, viewport, viewport.worldToPixel({0.0f, 0.8f, 0.0f}));
-        QVERIFY2(isWalker(body), qPrintable(editor::test::describe(body) + " where the walker's glyph should stand"));
+        QVERIFY2(isTinted(body), qPrintable(editor::test::describe(body) + " where the walker's glyph should stand"));
     }
 
     void crowdCloseUpShowsEveryAgentNearOnesAsCharacters()
@@ -363,7 +413,8 @@ private slots:
         Viewport viewport;
         viewport.setViewMode(ViewMode::Orbit);
         viewport.setAgentsAsCharacters(true);
-        showInitialState(viewport, loadTestScene(m_dir, yaml));
+        const sim::Scene scene = loadTestScene(m_dir, yaml);
+        showInitialState(viewport, scene);
         renderOffscreen(viewport, kSize);
         viewport.frameAll();
         zoomIn(viewport, 1000);
@@ -373,6 +424,7 @@ private slots:
         QVERIFY2(viewport.charactersDrawn() >= 10, qPrintable(QString::number(viewport.charactersDrawn())));
         QVERIFY2(drawn[2] > 0, "no agent far enough for an impostor: the view does not test both");
         QCOMPARE(viewport.charactersDrawn(), drawn[0] + drawn[1]);  // every near agent as its character
+        const QImage background = backgroundOf(viewport);
 
         // Every agent whose waist projects inside the image shows there.
         int inside = 0;
@@ -384,7 +436,8 @@ private slots:
             bool found = false;
             for (int dy = -2; dy <= 2 && !found; ++dy)
                 for (int dx = -2; dx <= 2 && !found; ++dx)
-                    found = isWalker(pixelAt(image, viewport, pos + QPointF(dx, dy)));
+                    found = isWalker(pixelAt(image, viewport, pos + QPointF(dx, dy)),
+                                     pixelAt(background, viewport, pos + QPointF(dx, dy)));
             QVERIFY2(found, qPrintable(QString("no agent at (%1, %2)").arg(pos.x()).arg(pos.y())));
         }
         QVERIFY2(inside > 80, qPrintable(QString::number(inside)));
