@@ -42,6 +42,8 @@ bool writeAgentFile(const sim::FrameCache& cache, std::size_t agent, const std::
         detail::appendFloat(text, detail::headingDegrees(a.headingRad));
         text += ' ';
         detail::appendFloat(text, a.speed);
+        text += ' ';
+        text += sim::toString(a.clip);
         text += '\n';
     }
     out.write(text.data(), static_cast<std::streamsize>(text.size()));

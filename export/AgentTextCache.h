@@ -11,8 +11,9 @@
 namespace throng::exporting {
 
 // Writes `<directory>/agent_<id>.txt` for every agent (AgentId, not dense index), one line
-// `x y z rotYdeg speed` per recorded frame: metres, degrees about +Y (0 = +x,
-// counter-clockwise seen from above, as AgentFrame::headingRad), m/s; floats as the shortest
+// `x y z rotYdeg speed clip` per recorded frame: metres, degrees about +Y (0 = +x,
+// counter-clockwise seen from above, as AgentFrame::headingRad), m/s, the clip the agent
+// plays (idle, walk, run or its brain's action, as the CSV's clip); floats as the shortest
 // text that reads back exactly. An agent that leaves through an exit (AgentFrame::out)
 // has lines only for the frames before it left, so its file may be shorter; one an edit
 // added at frame k (AgentFrame::present) starts with the line `# first_frame k`, then

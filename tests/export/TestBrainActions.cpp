@@ -7,6 +7,7 @@
 #include "GltfReadBack.h"
 #include "TestRegistry.h"
 
+#include "export/AgentTextCache.h"
 #include "export/GltfExporter.h"
 #include "export/TrajectoryCsv.h"
 #include "simcore/io/SceneIO.h"
@@ -142,6 +143,33 @@ private slots:
             if (m_heroNear[1][f])
                 slowest = std::min(slowest, m_cache.at(f, 0).speed);
         QVERIFY2(slowest > 1.0f, qPrintable(QString::number(slowest)));
+    }
+
+    // The text cache's clip column says what the CSV's does, line by line.
+    void theTextCacheSaysWhatTheCsvSays()
+    {
+        QTemporaryDir dir;
+        QVERIFY(exporting::writeTrajectoryCsv(m_cache, dir.filePath("shot.csv").toStdString()).ok());
+        QVERIFY(exporting::writeAgentTextCache(m_cache, dir.filePath("cache").toStdString()).ok());
+        auto lines = [](const QString& path) {
+            QFile file(path);
+            return file.open(QIODevice::ReadOnly) ? QString::fromUtf8(file.readAll()).split('\n', Qt::SkipEmptyParts)
+                                                  : QStringList();
+        };
+        const QStringList csv = lines(dir.filePath("shot.csv"));
+        std::map<int, QStringList> clips;  // by agent, in frame order
+        for (qsizetype l = 1; l < csv.size(); ++l)
+            clips[csv[l].split(',')[1].toInt()].push_back(csv[l].split(',')[7]);
+        int waves = 0;
+        for (const auto& [agent, expected] : clips) {
+            const QStringList text = lines(dir.filePath(QString("cache/agent_%1.txt").arg(agent)));
+            QCOMPARE(text.size(), expected.size());
+            for (qsizetype f = 0; f < text.size(); ++f) {
+                QCOMPARE(text[f].split(' ').value(5), expected[f]);
+                waves += expected[f] == "wave" ? 1 : 0;
+            }
+        }
+        QVERIFY(waves > 10);
     }
 
     void theCsvSaysWave()

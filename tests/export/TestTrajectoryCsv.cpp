@@ -171,12 +171,13 @@ private slots:
             QCOMPARE(readLines(QDir(cacheDir).filePath(f)).size(), int(CrowdFixture::kFrames));
 
         const QStringList values = readLines(QDir(cacheDir).filePath("agent_42.txt")).at(24).split(' ');
-        QCOMPARE(values.size(), 5);
+        QCOMPARE(values.size(), 6);
         QCOMPARE(values[0].toFloat(), 5.0f);
         QCOMPARE(values[1].toFloat(), 0.5f);
         QVERIFY(std::abs(values[2].toFloat() - -1.0f) < 1e-5f);
         QVERIFY(std::abs(values[3].toFloat() - 90.0f) < 1e-4f);
         QCOMPARE(values[4].toFloat(), 3.0f);
+        QCOMPARE(values[5], QString("run"));  // the runner runs, as the CSV says
         const QStringList last = readLines(QDir(cacheDir).filePath("agent_7.txt")).last().split(' ');
         QCOMPARE(last[0].toFloat(), fx.cache.at(CrowdFixture::kFrames - 1, 0).position.x);
         QVERIFY(std::abs(last[0].toFloat() - 2.4f) < 1e-5f);  // 1.2 m/s for 2 s
