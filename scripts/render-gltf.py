@@ -10,7 +10,7 @@
 # Example (docs/images/export-actions.jpg, from tests/data/scenes/actions.yaml):
 #   build/app/cli/throng-cli run tests/data/scenes/actions.yaml --frames 60 --export /tmp/actions.glb
 #   blender -b -P scripts/render-gltf.py -- /tmp/actions.glb docs/images/export-actions.jpg 41 \
-#       0 0 1.0  0 -9 1.7  40
+#       0 0 0.9  6 -9 1.6  30
 import math
 import sys
 

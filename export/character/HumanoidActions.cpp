@@ -1,7 +1,8 @@
-// Humanoid actions (sim::Clip's wait, look_around, wave, talk, phone, cheer): each a loop
-// over the idle pose's legs, with the arms, chest, neck and head posed by hand. The feet
-// stay where the idle pose puts them (wait's weight shift turns the legs about the
-// planted feet), so an action over a standing agent slides no foot.
+// Humanoid actions (sim::Clip's wait, look_around, wave, talk, phone, cheer, sit,
+// shift_weight, point): each a loop over the idle pose's legs, with the arms, chest, neck
+// and head posed by hand. Standing, the feet stay where the idle pose puts them (a weight
+// shift turns the legs about the planted feet), so an action over a standing agent slides
+// no foot; sitting lowers the hips onto a seat behind the agent, shins upright.
 #include "export/character/BuiltinCharacters.h"
 
 #include "simcore/scene/Clip.h"
@@ -34,12 +35,14 @@ std::vector<std::uint8_t> upperBody()
 }
 
 // Poses over one cycle: the idle pose, changed by `pose(phase in radians, pose)`.
-ActionClip makeAction(const Character& c, sim::Clip clip, const std::function<void(float, Pose&)>& pose)
+ActionClip makeAction(const Character& c, sim::Clip clip, const std::function<void(float, Pose&)>& pose,
+                      float blendS = 0.3f, bool overWalking = true)
 {
     ActionClip a;
     a.clip.name = sim::toString(clip);
     a.clip.strideM = 1.0f;  // unused: an action's phase runs by time
-    a.layered = upperBody();
+    a.layered = overWalking ? upperBody() : std::vector<std::uint8_t>(kHumanoidJointCount, 0);
+    a.blendS = blendS;
     for (int k = 0; k < kSamplesPerAction; ++k) {
         Pose p = c.idle.samples.front();
         pose(kTwoPi * static_cast<float>(k) / static_cast<float>(kSamplesPerAction), p);
@@ -59,21 +62,24 @@ void addHumanoidActions(Character& c, float scale)
     // Hip joint to ankle in the idle pose: the leg that turns about the planted foot.
     const std::vector<glm::mat4> at = jointGlobalTransforms(c, idle);
     const float legM = at[kUpperLegL][3].y - at[kFootL][3].y;
-    c.actions.push_back(makeAction(c, sim::Clip::Wait, [&](float t, Pose& p) {
-        // Weight from foot to foot: the hips sway 3 cm while the feet stay put, the hands
-        // rest together in front, the head turns a little now and then.
-        const float sway = 0.03f * scale * std::sin(t);
+    // The hips `sway` m sideways (+Z) over planted feet: each whole leg turns about X at
+    // the hip, the hips drop as the legs lean, and each foot turns back so the sole stays
+    // level (its new local rotation undoes the turn in the leg's frame).
+    auto swayOverFeet = [&](float sway, Pose& p) {
         const float lean = std::asin(sway / legM);
         p.rootTranslation.z += sway;
         p.rootTranslation.y -= legM * (1.0f - std::cos(lean));
         for (int side = 0; side < 2; ++side) {
-            // The whole leg turns about X at the hip; the foot turns back, so the sole
-            // stays level: its new local rotation undoes the turn in the leg's frame.
             const int upper = side == 0 ? kUpperLegL : kUpperLegR;
             const glm::quat leg = idle.rotations[upper] * idle.rotations[upper + 1];
             p.rotations[upper] = aboutX(lean) * idle.rotations[upper];
             p.rotations[upper + 2] = glm::inverse(leg) * aboutX(-lean) * leg * idle.rotations[upper + 2];
         }
+    };
+    c.actions.push_back(makeAction(c, sim::Clip::Wait, [&](float t, Pose& p) {
+        // Weight from foot to foot: the hips sway 3 cm while the feet stay put, the hands
+        // rest together in front, the head turns a little now and then.
+        swayOverFeet(0.03f * scale * std::sin(t), p);
         p.rotations[kUpperArmL] = aboutZ(0.25f) * aboutX(-0.15f);
         p.rotations[kUpperArmR] = aboutZ(0.25f) * aboutX(0.15f);
         p.rotations[kLowerArmL] = aboutZ(1.1f) * aboutY(-0.5f);
@@ -118,6 +124,55 @@ void addHumanoidActions(Character& c, float scale)
         p.rotations[kLowerArmL] = aboutZ(0.2f + 0.5f * pump);
         p.rotations[kLowerArmR] = aboutZ(0.2f + 0.5f * pump);
         p.rotations[kHead] = aboutZ(-0.1f * pump);
+    }));
+    // Seated on a seat 42 cm high behind the agent: the thighs level, the shins upright
+    // with the ankles where standing put them, the hands on the thighs; a slow breath and
+    // a glance aside. Slow to sit down and get up (0.8 s), and not over walking.
+    const float hipJointM = at[kUpperLegL][3].y - at[kHips][3].y;  // hip joints under the hips joint
+    const float ankleM = at[kFootL][3].y, ankleX = at[kFootL][3].x;
+    c.actions.push_back(makeAction(
+        c, sim::Clip::Sit,
+        [&](float t, Pose& p) {
+            const float thigh = HumanoidLegs::kThighM * scale, shin = HumanoidLegs::kShinM * scale;
+            p.rootTranslation = glm::vec3(ankleX - thigh, ankleM + shin - hipJointM, 0.0f);
+            for (int side = 0; side < 2; ++side) {
+                const int upper = side == 0 ? kUpperLegL : kUpperLegR;
+                // The knees a little apart: the level thigh turns about Y, the toes with it.
+                p.rotations[upper] = aboutY(side == 0 ? 0.1f : -0.1f) * aboutZ(1.5708f);
+                p.rotations[upper + 1] = aboutZ(-1.5708f);
+                p.rotations[upper + 2] = glm::quat(1.0f, 0.0f, 0.0f, 0.0f);
+            }
+            const float breath = 0.5f + 0.5f * std::sin(t);
+            p.rotations[kSpine] = aboutZ(-0.05f);
+            p.rotations[kChest] = aboutZ(-0.03f - 0.02f * breath);
+            p.rotations[kUpperArmL] = aboutZ(0.55f) * aboutX(-0.12f);
+            p.rotations[kUpperArmR] = aboutZ(0.55f) * aboutX(0.12f);
+            p.rotations[kLowerArmL] = aboutZ(0.75f);
+            p.rotations[kLowerArmR] = aboutZ(0.75f);
+            p.rotations[kNeck] = aboutY(0.35f * std::sin(t) * std::max(0.0f, std::sin(2.0f * t)));
+        },
+        0.8f, false));
+    c.actions.push_back(makeAction(
+        c, sim::Clip::ShiftWeight,
+        [&](float t, Pose& p) {
+            // Onto the left leg, held, then onto the right: the hips 5 cm out over the
+            // loaded leg, the shoulders leaning back a little the other way.
+            const float side = std::tanh(3.0f * std::sin(t));
+            swayOverFeet(-0.05f * scale * side, p);
+            p.rotations[kChest] = aboutX(0.06f * side);
+            p.rotations[kNeck] = aboutX(-0.03f * side);
+            p.rotations[kUpperArmL] = aboutX(-0.06f) * aboutZ(0.05f * side);
+            p.rotations[kUpperArmR] = aboutX(0.06f) * aboutZ(-0.05f * side);
+        },
+        0.5f, false));
+    c.actions.push_back(makeAction(c, sim::Clip::Point, [&](float t, Pose& p) {
+        // The right arm straight out ahead and a little up, the hand bobbing; the head
+        // looks where it points.
+        p.rotations[kUpperArmR] = aboutZ(1.75f + 0.05f * std::sin(t)) * aboutX(0.1f);
+        p.rotations[kLowerArmR] = aboutZ(0.05f);
+        p.rotations[kHandR] = aboutZ(0.15f * std::sin(t));
+        p.rotations[kChest] = aboutY(-0.1f);
+        p.rotations[kNeck] = aboutY(-0.1f) * aboutZ(0.05f);
     }));
 }
 

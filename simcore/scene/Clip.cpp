@@ -23,6 +23,9 @@ constexpr std::array<ClipSpec, kClipCount> kClips{{
     {"talk", 2.0f},         // a gesture of both hands
     {"phone", 4.0f},        // a nod while listening
     {"cheer", 0.8f},        // one pump of the arms
+    {"sit", 6.0f},          // a breath and a glance while seated
+    {"shift_weight", 8.0f}, // the weight onto one leg, held, then onto the other
+    {"point", 2.0f},        // an arm pointing ahead, the hand bobbing once
 }};
 
 }  // namespace

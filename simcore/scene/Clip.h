@@ -14,9 +14,9 @@ namespace throng::sim {
 
 enum class Clip : std::uint8_t {
     Idle = 0, Walk = 1, Run = 2,  // locomotion
-    Wait, LookAround, Wave, Talk, Phone, Cheer,  // actions
+    Wait, LookAround, Wave, Talk, Phone, Cheer, Sit, ShiftWeight, Point,  // actions
 };
-inline constexpr int kClipCount = int(Clip::Cheer) + 1;
+inline constexpr int kClipCount = int(Clip::Point) + 1;
 
 // The clip's name in brains (output.action), the CSV and exports: "idle", "look_around".
 const char* toString(Clip clip);

@@ -126,7 +126,8 @@ private slots:
         const int wave = int(sim::Clip::Wave) - int(sim::Clip::Wait);
         QCOMPARE(man.poseFor(sim::Clip::Wave, 0.3f, 0.26f, false), PoseTable::actionPose(wave, 2));
         QCOMPARE(man.poseFor(sim::Clip::Wave, 0.5f, 0.9f, true), PoseTable::walkingActionPose(wave, 4));
-        QCOMPARE(man.poseFor(sim::Clip::Cheer, 0.0f, 0.0f, false), PoseTable::actionPose(PoseTable::kActions - 1, 0));
+        const int cheer = int(sim::Clip::Cheer) - int(sim::Clip::Wait);
+        QCOMPARE(man.poseFor(sim::Clip::Cheer, 0.0f, 0.0f, false), PoseTable::actionPose(cheer, 0));
         QCOMPARE(car.poseFor(sim::Clip::Wave, 0.5f, 0.0f, false), PoseTable::walkPose(4));
     }
 

@@ -397,6 +397,64 @@ private slots:
         QCOMPARE(computeGait(man, still, zero, AgentVariation{}, {waving, phases, 24.0f})[0].action.weight, 1.0f);
     }
 
+    // Sitting down is slower than a wave: the clip's own 0.8 s blend, at any frame rate.
+    // Seated, the hips are 40 cm lower, the thighs level and the ankles where standing put
+    // them; getting up takes the same time. A weight shift holds the feet too.
+    void sittingTakesItsOwnBlendAndKeepsTheFeetDown()
+    {
+        const Character man = *makeBuiltinCharacter("man");
+        const int sit = man.actionIndex("sit");
+        QVERIFY(sit >= 0 && man.actionIndex("shift_weight") >= 0 && man.actionIndex("point") >= 0);
+        QCOMPARE(man.actions[std::size_t(sit)].blendS, 0.8f);
+        QVERIFY(std::count(man.actions[std::size_t(sit)].layered.begin(), man.actions[std::size_t(sit)].layered.end(), 1) == 0);
+        const Pose idle = sampleClip(man.idle, 0.0);
+        const std::vector<glm::mat4> standing = jointGlobalTransforms(man, idle);
+        for (const float fps : {12.0f, 24.0f, 60.0f}) {
+            // 1 s standing, 2 s seated, 1 s standing again, in place.
+            const auto n = std::size_t(4.0f * fps);
+            std::vector<glm::vec3> still(n, glm::vec3(0.0f));
+            std::vector<float> zero(n, 0.0f), phases(n, 0.0f);
+            std::vector<sim::Clip> clips(n, sim::Clip::Idle);
+            for (std::size_t f = std::size_t(fps); f < std::size_t(3 * fps); ++f)
+                clips[f] = sim::Clip::Sit;
+            const std::vector<GaitFrame> g = computeGait(man, still, zero, AgentVariation{}, {clips, phases, fps});
+            auto at = [&](float s) { return g[std::size_t(std::lround(s * fps))]; };
+            const QString where = QString("at %1 fps").arg(fps);
+            QVERIFY2(std::abs(at(1.4f).action.weight - 0.5f) < 0.06f, qPrintable(where));
+            QVERIFY2(at(1.7f).action.weight < 0.9f && at(1.85f).action.weight > 0.99f, qPrintable(where));
+            QCOMPARE(at(3.4f).fading.action, sit);
+            QVERIFY2(std::abs(at(3.4f).fading.weight - 0.5f) < 0.06f, qPrintable(where));
+            // Sitting down and getting up, the ankles stay where they stood (leg IK).
+            for (std::size_t f = 0; f < n; ++f) {
+                const std::vector<glm::mat4> m = jointGlobalTransforms(man, gaitPose(man, g[f]));
+                for (int foot : {int(kFootL), int(kFootR)})
+                    QVERIFY2(glm::distance(glm::vec3(m[foot][3]), glm::vec3(standing[foot][3])) < 0.005f,
+                             qPrintable(where + QString(", frame %1").arg(f)));
+            }
+            const std::vector<glm::mat4> seated = jointGlobalTransforms(man, gaitPose(man, at(2.5f)));
+            QVERIFY2(standing[kHips][3].y - seated[kHips][3].y > 0.35f, qPrintable(where));
+            for (int upper : {int(kUpperLegL), int(kUpperLegR)}) {
+                QVERIFY2(std::abs(seated[upper + 1][3].y - seated[upper][3].y) < 0.05f, qPrintable(where));  // thigh level
+                QVERIFY2(std::abs(seated[upper + 2][3].y - standing[upper + 2][3].y) < 0.01f, qPrintable(where));
+                QVERIFY2(seated[upper + 1][3].x > seated[upper][3].x + 0.35f, qPrintable(where));  // knees ahead
+            }
+        }
+        // A weight shift: the hips move 4 cm or more sideways while both feet stay within 5 mm.
+        const int shift = man.actionIndex("shift_weight");
+        float hipsLo = 1e9f, hipsHi = -1e9f, footMoved = 0.0f;
+        for (int k = 0; k < 32; ++k) {
+            GaitFrame frame;
+            frame.moveWeight = 0.0f;
+            frame.action = {shift, k / 32.0, 1.0f};
+            const std::vector<glm::mat4> m = jointGlobalTransforms(man, gaitPose(man, frame));
+            hipsLo = std::min(hipsLo, m[kHips][3].z);
+            hipsHi = std::max(hipsHi, m[kHips][3].z);
+            for (int foot : {int(kFootL), int(kFootR)})
+                footMoved = std::max(footMoved, glm::distance(glm::vec3(m[foot][3]), glm::vec3(standing[foot][3])));
+        }
+        QVERIFY2(hipsHi - hipsLo > 0.08f && footMoved < 0.005f, qPrintable(QString("%1 %2").arg(hipsHi - hipsLo).arg(footMoved)));
+    }
+
     // Leg IK puts the ankle on a target the leg reaches (within 1 mm), bends the knee
     // forward as it bent, keeps the foot's orientation and moves no other joint; a
     // target out of reach gets the leg pointing at it.

@@ -270,7 +270,7 @@ void SceneReader::readAgentTypes(const YAML::Node& node, Scene& scene)
             const bool isFile = t.character.ends_with(".glb") || t.character.ends_with(".gltf");
             if (!builtin && !isFile)
                 m_f.error(item["character"].Mark(), key + ".character",
-                          "'" + t.character + "' is neither a built-in character (man, woman, tall_man, child, "
+                          "'" + t.character + "' is neither a built-in character (man, woman, tall_man, child, elderly, "
                           "car, bird) nor a .glb/.gltf file");
             else if (isFile && !std::filesystem::exists(resolvePath(m_baseDir, t.character)))
                 m_f.error(item["character"].Mark(), key + ".character",
@@ -278,7 +278,8 @@ void SceneReader::readAgentTypes(const YAML::Node& node, Scene& scene)
         }
         if (YAML::Node c = item["clips"]; c.IsDefined() && m_f.expectMap(c, key + ".clips")) {
             m_f.checkKeys(c, key + ".clips",
-                          {"idle", "walk", "run", "wait", "look_around", "wave", "talk", "phone", "cheer"});
+                          {"idle", "walk", "run", "wait", "look_around", "wave", "talk", "phone", "cheer", "sit",
+                           "shift_weight", "point"});
             m_f.readString(c, "idle", key + ".clips", t.clips.idle, false);
             m_f.readString(c, "walk", key + ".clips", t.clips.walk, false);
             m_f.readString(c, "run", key + ".clips", t.clips.run, false);
