@@ -362,10 +362,12 @@ ExportResult exportGltf(const sim::Scene& scene, const sim::FrameCache& cache, c
             spec.name = "agent_" + std::to_string(info.id) + "_" + type.name;
             for (const MeshPart& part : partsOf(character.mesh)) {
                 const auto colour = static_cast<int>(w.variation.colour[static_cast<std::size_t>(part.slot)]);
-                spec.partMaterials.push_back(
-                    !wearsPart(part, seed, info.id)        ? -1
-                    : slotPalette(part.slot).empty() ? materialFor(model, materials, type, info.typeIndex, w.variation.tint)
-                                                     : slotMaterial(model, slotMaterials, part.slot, colour));
+                if (!wearsPart(part, seed, info.id))
+                    spec.partMaterials.push_back(-1);
+                else if (slotPalette(part.slot).empty())  // the top and a whole body wear the tint
+                    spec.partMaterials.push_back(materialFor(model, materials, type, info.typeIndex, w.variation.tint));
+                else
+                    spec.partMaterials.push_back(slotMaterial(model, slotMaterials, part.slot, colour));
             }
             spec.heightScale = w.variation.heightScale;
             spec.translation = w.positions[0];

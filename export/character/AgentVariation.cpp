@@ -43,9 +43,10 @@ AgentVariation drawVariation(const sim::Variation& v, std::uint64_t seed, std::u
     out.phaseOffset = sim::rngRange(seed, agentId, 0, kSimPhaseOffsetStream, v.phaseOffset.x, v.phaseOffset.y);
     for (int slot = 0; slot < kMaterialSlotCount; ++slot) {
         const std::size_t colours = slotPalette(static_cast<MaterialSlot>(slot)).size();
+        const std::uint64_t stream = kColourStream + static_cast<std::uint64_t>(slot);
         if (colours > 1)
             out.colour[static_cast<std::size_t>(slot)] =
-                static_cast<std::uint8_t>(pick(seed, agentId, kColourStream + static_cast<std::uint64_t>(slot), colours));
+                static_cast<std::uint8_t>(pick(seed, agentId, stream, colours));
     }
     return out;
 }

@@ -218,11 +218,11 @@ Character makeHumanoid(const std::string& name, const HumanoidBody& body, Lod lo
         pack.endCapM = scaled(0.03f);
         sb.tube(pack);
         for (float side : {-1.0f, 1.0f}) {
-            const float z = side * 0.1f * g;
+            const float z = side * 0.1f * g, top = -0.02f + 0.5f * body.stoopM, front = 0.115f * g + body.stoopM;
             Tube strap;
             strap.sections = {section(kChest, {back + 0.05f, 0.2f, z}, 0.02f, 0.007f, MaterialSlot::Bag),
-                              section(kChest, {-0.02f + 0.5f * body.stoopM, 0.24f, z}, 0.02f, 0.007f, MaterialSlot::Bag),
-                              section(kChest, {0.115f * g + body.stoopM, 0.15f, z}, 0.02f, 0.007f, MaterialSlot::Bag),
+                              section(kChest, {top, 0.24f, z}, 0.02f, 0.007f, MaterialSlot::Bag),
+                              section(kChest, {front, 0.15f, z}, 0.02f, 0.007f, MaterialSlot::Bag),
                               section(kChest, {0.125f * g, -0.02f, z}, 0.02f, 0.007f, MaterialSlot::Bag)};
             strap.forward = glm::vec3(0.0f, 0.0f, 1.0f);
             strap.bones = {{kChest, 0.0f}};

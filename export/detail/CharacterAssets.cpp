@@ -59,11 +59,10 @@ CharacterAccessors writeCharacterAssets(GltfBuilder& b, const Character& c)
     }
     const std::size_t indexOffset = b.append(indices.data(), indices.size());
     const int indexView = b.addView(indexOffset, indices.size(), 0, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
+    const int indexType = shortIndices ? TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT : TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
     for (const MeshPart& part : partsOf(m))
-        out.partIndices.push_back(b.addAccessor(
-            indexView, part.firstIndex * (shortIndices ? 2u : 4u),
-            shortIndices ? TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT : TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, part.indexCount,
-            TINYGLTF_TYPE_SCALAR));
+        out.partIndices.push_back(b.addAccessor(indexView, part.firstIndex * (shortIndices ? 2u : 4u), indexType,
+                                                part.indexCount, TINYGLTF_TYPE_SCALAR));
 
     std::vector<float> ibm;
     for (const glm::mat4& mat : m.inverseBindMatrices)

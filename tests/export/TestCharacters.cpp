@@ -117,8 +117,8 @@ private slots:
     // child always wears its hat, the man only sometimes, and the elderly stoop, grey-haired.
     void humanoidLooks()
     {
-        const Character man = builtin("man"), woman = builtin("woman"), tall = builtin("tall_man"), child = builtin("child");
-        const Character elderly = builtin("elderly");
+        const Character man = builtin("man"), woman = builtin("woman"), tall = builtin("tall_man");
+        const Character child = builtin("child"), elderly = builtin("elderly");
         for (const char* j : {"hips", "spine", "chest", "neck", "head", "upper_arm_l", "lower_arm_l", "hand_l",
                               "upper_arm_r", "lower_arm_r", "hand_r", "upper_leg_l", "lower_leg_l", "foot_l",
                               "upper_leg_r", "lower_leg_r", "foot_r"})
@@ -165,7 +165,8 @@ private slots:
             if (lod == Lod::Near)
                 QVERIFY2(count >= 3000 && count <= 9000, qPrintable(what + ": " + QString::number(count)));
             else
-                QVERIFY2(count * 2 <= previous + previous / 5 && count >= 400, qPrintable(what + ": " + QString::number(count)));
+                QVERIFY2(count * 2 <= previous + previous / 5 && count >= 400,
+                         qPrintable(what + ": " + QString::number(count)));
             previous = count;
 
             const std::vector<std::uint32_t> welded = weldedIndices(m);
@@ -173,7 +174,8 @@ private slots:
             std::vector<glm::vec3> faceNormalSum(m.positions.size(), glm::vec3(0.0f));
             for (std::size_t t = 0; t < m.indices.size(); t += 3) {
                 const std::uint32_t v[3] = {m.indices[t], m.indices[t + 1], m.indices[t + 2]};
-                const glm::vec3 n = glm::cross(m.positions[v[1]] - m.positions[v[0]], m.positions[v[2]] - m.positions[v[0]]);
+                const glm::vec3 n =
+                    glm::cross(m.positions[v[1]] - m.positions[v[0]], m.positions[v[2]] - m.positions[v[0]]);
                 for (int k = 0; k < 3; ++k) {
                     ++directed[{welded[v[k]], welded[v[(k + 1) % 3]]}];
                     faceNormalSum[welded[v[k]]] += n;
@@ -193,7 +195,8 @@ private slots:
                 if (welded[v] == v && glm::length(faceNormalSum[v]) > 0.0f)
                     inward += glm::dot(glm::normalize(faceNormalSum[v]), m.normals[v]) < 0.5f ? 1 : 0;
             }
-            QVERIFY2(open == 0 && twisted == 0, qPrintable(what + QString(": %1 open, %2 twisted edges").arg(open).arg(twisted)));
+            QVERIFY2(open == 0 && twisted == 0,
+                     qPrintable(what + QString(": %1 open, %2 twisted edges").arg(open).arg(twisted)));
             QVERIFY2(split == 0, qPrintable(what + QString(": %1 points with two normals").arg(split)));
             if (lod == Lod::Near)
                 QVERIFY2(turning * 10 < int(directed.size()) && folded == 0,
@@ -406,7 +409,8 @@ private slots:
         const int sit = man.actionIndex("sit");
         QVERIFY(sit >= 0 && man.actionIndex("shift_weight") >= 0 && man.actionIndex("point") >= 0);
         QCOMPARE(man.actions[std::size_t(sit)].blendS, 0.8f);
-        QVERIFY(std::count(man.actions[std::size_t(sit)].layered.begin(), man.actions[std::size_t(sit)].layered.end(), 1) == 0);
+        const std::vector<std::uint8_t>& sitMask = man.actions[std::size_t(sit)].layered;
+        QVERIFY(std::count(sitMask.begin(), sitMask.end(), 1) == 0);
         const Pose idle = sampleClip(man.idle, 0.0);
         const std::vector<glm::mat4> standing = jointGlobalTransforms(man, idle);
         for (const float fps : {12.0f, 24.0f, 60.0f}) {
@@ -434,7 +438,7 @@ private slots:
             const std::vector<glm::mat4> seated = jointGlobalTransforms(man, gaitPose(man, at(2.5f)));
             QVERIFY2(standing[kHips][3].y - seated[kHips][3].y > 0.35f, qPrintable(where));
             for (int upper : {int(kUpperLegL), int(kUpperLegR)}) {
-                QVERIFY2(std::abs(seated[upper + 1][3].y - seated[upper][3].y) < 0.05f, qPrintable(where));  // thigh level
+                QVERIFY2(std::abs(seated[upper + 1][3].y - seated[upper][3].y) < 0.05f, qPrintable(where));  // level
                 QVERIFY2(std::abs(seated[upper + 2][3].y - standing[upper + 2][3].y) < 0.01f, qPrintable(where));
                 QVERIFY2(seated[upper + 1][3].x > seated[upper][3].x + 0.35f, qPrintable(where));  // knees ahead
             }
@@ -452,7 +456,8 @@ private slots:
             for (int foot : {int(kFootL), int(kFootR)})
                 footMoved = std::max(footMoved, glm::distance(glm::vec3(m[foot][3]), glm::vec3(standing[foot][3])));
         }
-        QVERIFY2(hipsHi - hipsLo > 0.08f && footMoved < 0.005f, qPrintable(QString("%1 %2").arg(hipsHi - hipsLo).arg(footMoved)));
+        QVERIFY2(hipsHi - hipsLo > 0.08f && footMoved < 0.005f,
+                 qPrintable(QString("%1 %2").arg(hipsHi - hipsLo).arg(footMoved)));
     }
 
     // Leg IK puts the ankle on a target the leg reaches (within 1 mm), bends the knee
@@ -466,7 +471,8 @@ private slots:
         const std::vector<glm::mat4> before = jointGlobalTransforms(man, idle);
         const Leg& leg = man.legs[0];
         QVERIFY(glm::distance(leg.plantedAnkle, glm::vec3(before[leg.foot][3])) < 1e-5f);
-        for (const glm::vec3 shift : {glm::vec3(0.1f, 0.15f, 0.0f), glm::vec3(-0.05f, 0.3f, 0.05f), glm::vec3(0.2f, 0.05f, -0.05f)}) {
+        for (const glm::vec3 shift :
+             {glm::vec3(0.1f, 0.15f, 0.0f), glm::vec3(-0.05f, 0.3f, 0.05f), glm::vec3(0.2f, 0.05f, -0.05f)}) {
             Pose pose = idle;
             const glm::vec3 target = leg.plantedAnkle + shift;
             reachWithLeg(man, leg, target, pose);
@@ -531,7 +537,8 @@ private slots:
             if (bird.mesh.positions[v].z < bird.mesh.positions[outermost].z)
                 outermost = v;
         }
-        QVERIFY2(bird.mesh.positions[outermost].z < -0.33f, qPrintable(QString::number(bird.mesh.positions[outermost].z)));
+        const float tipZ = bird.mesh.positions[outermost].z;
+        QVERIFY2(tipZ < -0.33f, qPrintable(QString::number(tipZ)));
         QCOMPARE(int(bird.mesh.joints[outermost][0]), tip);
         QCOMPARE(bird.mesh.weights[outermost][0], 1.0f);
     }

@@ -198,7 +198,10 @@ private slots:
         exportAndLoad(dir, "crowd.glb", model);
         if (QTest::currentTestFailed())
             return;
-        const tinygltf::Mesh& walker = model.meshes.at(model.nodes.at(test::nodeNamed(model, "agent_7_walker_body")).mesh);
+        auto meshOf = [&](const std::string& body) -> const tinygltf::Mesh& {
+            return model.meshes.at(model.nodes.at(test::nodeNamed(model, body)).mesh);
+        };
+        const tinygltf::Mesh& walker = meshOf("agent_7_walker_body");
         const tinygltf::Primitive& body = walker.primitives.at(0);
         QVERIFY(body.attributes.count("NORMAL") && body.attributes.count("JOINTS_0") && body.attributes.count("WEIGHTS_0"));
         const tinygltf::Accessor& position = model.accessors.at(body.attributes.at("POSITION"));
@@ -217,8 +220,7 @@ private slots:
         QVERIFY2(top > 1.65f && top < 1.85f, qPrintable(QString::number(top)));
         // The runner's type is tinted blue: its top wears the tint.
         bool tinted = false;
-        for (const tinygltf::Primitive& p :
-             model.meshes.at(model.nodes.at(test::nodeNamed(model, "agent_42_runner_body")).mesh).primitives) {
+        for (const tinygltf::Primitive& p : meshOf("agent_42_runner_body").primitives) {
             const std::vector<double> colour = model.materials.at(p.material).pbrMetallicRoughness.baseColorFactor;
             tinted = tinted || (model.materials.at(p.material).name.rfind("runner_tint", 0) == 0 &&
                                 std::abs(colour[2] - 0.9) < 1e-6);
@@ -251,9 +253,11 @@ private slots:
                 for (const tinygltf::Value& w : extras.Get("wears").Get<tinygltf::Value::Array>())
                     wears.insert(w.Get<std::string>());
             std::map<std::string, int> parts;
-            for (const tinygltf::Primitive& p : model.meshes.at(model.nodes.at(test::nodeNamed(model, root + "_body")).mesh).primitives) {
+            const tinygltf::Mesh& body = model.meshes.at(model.nodes.at(test::nodeNamed(model, root + "_body")).mesh);
+            for (const tinygltf::Primitive& p : body.primitives) {
                 const std::string material = model.materials.at(p.material).name;
-                const std::string part = material.rfind("walker_tint", 0) == 0 ? "top" : material.substr(0, material.rfind('_'));
+                const std::string part =
+                    material.rfind("walker_tint", 0) == 0 ? "top" : material.substr(0, material.rfind('_'));
                 ++parts[part];
                 if (part == "skin")
                     skins.insert(material);
@@ -273,8 +277,10 @@ private slots:
         QCOMPARE(hats["child"], agents["child"]);
         auto share = [](int n, int of) { return double(n) / double(of); };
         QVERIFY2(std::abs(share(hats["man"], agents["man"]) - 0.15) < 0.08, qPrintable(QString::number(hats["man"])));
-        QVERIFY2(std::abs(share(bags["woman"], agents["woman"]) - 0.3) < 0.1, qPrintable(QString::number(bags["woman"])));
-        QVERIFY2(std::abs(share(bags["child"], agents["child"]) - 0.5) < 0.12, qPrintable(QString::number(bags["child"])));
+        QVERIFY2(std::abs(share(bags["woman"], agents["woman"]) - 0.3) < 0.1,
+                 qPrintable(QString::number(bags["woman"])));
+        QVERIFY2(std::abs(share(bags["child"], agents["child"]) - 0.5) < 0.12,
+                 qPrintable(QString::number(bags["child"])));
         QVERIFY(skins.size() >= 5);
     }
 

@@ -61,7 +61,8 @@ private slots:
             highY = std::max(highY, p.y);
         }
         QVERIFY(highY - lowY > 1.7f);
-        QVERIFY2(std::abs(loaded->walk.strideM - 0.8f * (highY - lowY)) < 0.02f, qPrintable(QString::number(loaded->walk.strideM)));
+        QVERIFY2(std::abs(loaded->walk.strideM - 0.8f * (highY - lowY)) < 0.02f,
+                 qPrintable(QString::number(loaded->walk.strideM)));
         // Feet and hands where the built-in puts them, facing +X again, through the cycle.
         for (int k = 0; k < 30; k += 7) {
             const double phase = k / 30.0;

@@ -270,8 +270,8 @@ void SceneReader::readAgentTypes(const YAML::Node& node, Scene& scene)
             const bool isFile = t.character.ends_with(".glb") || t.character.ends_with(".gltf");
             if (!builtin && !isFile)
                 m_f.error(item["character"].Mark(), key + ".character",
-                          "'" + t.character + "' is neither a built-in character (man, woman, tall_man, child, elderly, "
-                          "car, bird) nor a .glb/.gltf file");
+                          "'" + t.character + "' is neither a built-in character (man, woman, tall_man, child, "
+                          "elderly, car, bird) nor a .glb/.gltf file");
             else if (isFile && !std::filesystem::exists(resolvePath(m_baseDir, t.character)))
                 m_f.error(item["character"].Mark(), key + ".character",
                           "character file '" + resolvePath(m_baseDir, t.character) + "' does not exist");
