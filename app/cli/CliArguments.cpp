@@ -56,7 +56,7 @@ std::string usageText()
            "                              cycle per look (joint data ~13x smaller; docs/export.md)\n"
            "      --export-joint-step N   glTF, exact: bake joints every N-th frame (default 1)\n"
            "      --export-lod near|mid|far  glTF: the built-in characters' detail (default near,\n"
-           "                              about 6,000 triangles a body; mid 2,400; far 1,000)\n"
+           "                              about 6,600 triangles a body; mid 2,300; far 1,000)\n"
            "  bench [--agents N] [--steps S] [--scenario flock|cross|cross-brain|army|corridor] [--threads T]\n"
            "                              run a built-in scenario and print figures as JSON\n"
            "\n"
