@@ -1,12 +1,11 @@
 #include "editor/viewport/CharacterRenderer.h"
 
 #include "editor/viewport/ShaderProgram.h"
+#include "export/character/AgentVariation.h"
 
 #include <glm/gtc/type_ptr.hpp>
 
 #include <QOpenGLFunctions_3_3_Core>
-
-#include "export/character/AgentVariation.h"
 
 #include <algorithm>
 #include <cstddef>
@@ -16,10 +15,10 @@ namespace throng::editor {
 namespace {
 
 // Heading h turns the character's +x nose to (cos h, 0, -sin h), as the glyph and the
-// glTF export turn it; its feet stay on the agent's position.
-// Slots as exporting::MaterialSlot numbers them: body 0 and top 2 wear the agent's colour,
-// skin 1 to bag 8 their palette colour u_palette[8 * slot + index]; hat 7 and bag 8 only
-// where worn (else the vertex leaves the clip volume and its triangles are not drawn).
+// glTF export turn it; its feet stay on the agent's position. Slots are numbered as
+// exporting::MaterialSlot numbers them: body 0 and top 2 wear the agent's colour, skin 1
+// to bag 8 their palette colour u_palette[8 * slot + index]; hat 7 and bag 8 only where
+// worn (else the vertex leaves the clip volume and its triangles are not drawn).
 const char* const kCharacterVertex = R"(#version 330 core
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;

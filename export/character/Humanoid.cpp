@@ -70,7 +70,7 @@ Character makeHumanoid(const std::string& name, const HumanoidBody& body, Lod lo
     {
         Tube t;
         const float lean = body.stoopM;
-        auto lean_at = [&](float dy) { return dy > 0.2f ? lean * (dy - 0.2f) / 0.3f : 0.0f; };
+        auto leanAt = [&](float dy) { return dy > 0.2f ? lean * (dy - 0.2f) / 0.3f : 0.0f; };
         const struct { float dy, depth, width; MaterialSlot slot; } rings[] = {
             {-0.14f, 0.06f, 0.08f, MaterialSlot::Bottom},
             {-0.06f, 0.105f, hw + 0.07f, MaterialSlot::Bottom},
@@ -82,7 +82,7 @@ Character makeHumanoid(const std::string& name, const HumanoidBody& body, Lod lo
             {0.52f, 0.075f, sw - 0.07f, MaterialSlot::Top},
         };
         for (const auto& r : rings)
-            t.sections.push_back(section(kHips, {lean_at(r.dy), r.dy, 0.0f}, r.depth * g, r.width * g, r.slot));
+            t.sections.push_back(section(kHips, {leanAt(r.dy), r.dy, 0.0f}, r.depth * g, r.width * g, r.slot));
         t.bones = {{kHips, 0.0f}, {kSpine, 3.17f}, {kChest, 4.71f}};
         t.blendM = scaled(0.06f);
         t.endCapM = scaled(0.03f);
