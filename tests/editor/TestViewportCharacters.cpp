@@ -377,6 +377,51 @@ private slots:
         QCOMPARE(seen[2].box, seen[0].box);
     }
 
+    // A hat shows on the agents that wear one and on no other: with a seed that gives
+    // agent 1 a hat the figure's top is the hat's, above the hair; with one that does not,
+    // the hair is the top.
+    void hatsShowOnlyOnTheAgentsThatWearThem()
+    {
+        const exporting::Character man = *exporting::makeBuiltinCharacter("man", exporting::Lod::Mid);
+        const exporting::MeshPart* hat = nullptr;
+        for (const exporting::MeshPart& part : man.mesh.parts)
+            if (part.slot == exporting::MaterialSlot::Hat)
+                hat = &part;
+        QVERIFY(hat && hat->wornShare < 1.0f);
+        std::uint64_t seeds[2] = {0, 0};  // [0]: agent 1 wears no hat, [1]: it does
+        for (std::uint64_t seed = 1; seed < 500 && (seeds[0] == 0 || seeds[1] == 0); ++seed)
+            if (seeds[exporting::wearsPart(*hat, seed, 1) ? 1 : 0] == 0)
+                seeds[exporting::wearsPart(*hat, seed, 1) ? 1 : 0] = seed;
+        QVERIFY(seeds[0] != 0 && seeds[1] != 0);
+        for (const bool wearing : {false, true}) {
+            const std::uint64_t seed = seeds[wearing ? 1 : 0];
+            QByteArray yaml = walkerYaml();
+            yaml.replace("settings: {", "settings: {seed: " + QByteArray::number(qulonglong(seed)) + ", ");
+            Viewport viewport;
+            viewport.setViewMode(ViewMode::Orbit);
+            viewport.setAgentsAsCharacters(true);
+            const sim::Scene scene = loadTestScene(m_dir, yaml);
+            QCOMPARE(scene.settings.seed, seed);
+            showInitialState(viewport, scene);
+            const QImage image = renderOffscreen(viewport, kSize);
+            saveForInspection(image, wearing ? "hat" : "nohat");
+            const Silhouette s = silhouetteOf(image, backgroundOf(viewport));
+            const ShownMan shown = shownMan(seed);
+            float hair = 0.0f;
+            for (std::size_t v = 0; v < shown.table.vertexCount; ++v)
+                if (shown.worn[v] && shown.table.materialSlots[v] != std::uint8_t(exporting::MaterialSlot::Hat))
+                    hair = std::max(hair, shown.table.positions[v].y);
+            const double hairPx = viewport.worldToPixel({0.0f, hair, 0.0f}).y();
+            const double tenCm =
+                viewport.worldToPixel({0.0f, 1.6f, 0.0f}).y() - viewport.worldToPixel({0.0f, 1.7f, 0.0f}).y();
+            const QString what = describe(s) + QString(", hair top at %1 px, 10 cm = %2 px").arg(hairPx).arg(tenCm);
+            if (wearing)
+                QVERIFY2(hairPx - s.box.top() > 0.3 * tenCm, qPrintable("with a hat: " + what));
+            else
+                QVERIFY2(std::abs(s.box.top() - hairPx) < 4.0, qPrintable("without: " + what));
+        }
+    }
+
     void typeWithoutItsCharacterKeepsTheGlyph()
     {
         // Built in code: a scene file naming a missing character would not load at all.
