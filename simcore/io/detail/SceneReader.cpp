@@ -140,6 +140,8 @@ void SceneReader::readSettings(const YAML::Node& node, Settings& s)
     m_f.readUInt(node, "seed", key, s.seed, false, UINT64_MAX);
     if (s.fps > 1000.0f)
         m_f.error(node["fps"].Mark(), key + ".fps", "must be at most 1000");
+    else if (s.fps > 0.0f && s.fps < 1.0f)  // below a frame a second the sub-steps run away
+        m_f.error(node["fps"].Mark(), key + ".fps", "must be at least 1");
     if (YAML::Node b = node["bounds"]; b.IsDefined()) {
         const std::string bk = key + ".bounds";
         if (m_f.expectMap(b, bk)) {
