@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstdlib>
 
 namespace throng::sim {
 
@@ -96,8 +97,12 @@ void NavGrid::build(const NavShapes& shapes, glm::vec2 boundsMin, glm::vec2 boun
 
 NavCell NavGrid::cellOf(glm::vec2 p) const
 {
+    // Far or non-finite points are clamped well outside the grid but inside int, so callers can
+    // add a grid's width to a cell index without overflow.
+    static constexpr float kFar = float(1 << 29);
     const glm::vec2 q = (p - m_origin) / m_cellM;
-    return {int(std::floor(q.x)), int(std::floor(q.y))};
+    const auto toCell = [](float v) { return v == v ? int(std::floor(std::clamp(v, -kFar, kFar))) : -(1 << 29); };
+    return {toCell(q.x), toCell(q.y)};
 }
 
 glm::vec2 NavGrid::cellMin(NavCell c) const { return m_origin + glm::vec2(float(c.x), float(c.z)) * m_cellM; }
@@ -112,30 +117,45 @@ NavCell NavGrid::nearestWalkable(NavCell c) const
     // can no longer beat the best squared distance the search is over. Only the part of a
     // ring inside the grid is visited, and rings wholly outside it are skipped.
     NavCell best{-1, -1};
-    long bestD2 = -1;
+    // |dx| and |dz| are at most 2^31 plus the grid's size, so each square is about 2^62 and
+    // their sum fits in 64 unsigned bits (for grids under 8e8 cells a side): exact, ties
+    // included, from any int cell.
+    using U = unsigned long long;
+    bool found = false;
+    U bestD2 = 0;
     const auto consider = [&](int x, int z) {
         if (!walkable({x, z}))
             return;
-        const long d2 = long(x - c.x) * (x - c.x) + long(z - c.z) * (z - c.z);
-        if (bestD2 < 0 || d2 < bestD2 || (d2 == bestD2 && (z < best.z || (z == best.z && x < best.x)))) {
+        const U dx = U(std::llabs((long long)x - c.x)), dz = U(std::llabs((long long)z - c.z));
+        const U d2 = dx * dx + dz * dz;
+        if (!found || d2 < bestD2 || (d2 == bestD2 && (z < best.z || (z == best.z && x < best.x)))) {
             best = {x, z};
             bestD2 = d2;
+            found = true;
         }
     };
-    const int first = std::max({1, -c.x, c.x - (m_cols - 1), -c.z, c.z - (m_rows - 1)});
-    const int last = first + std::max(m_cols, m_rows);
-    for (int r = first; r <= last; ++r) {
-        if (bestD2 >= 0 && long(r) * r > bestD2)
+    // Ring bounds are worked in 64 bits: c may lie far outside the grid (any int), and a row or
+    // column of the ring outside the grid is skipped before it is narrowed back to int.
+    const long long cx = c.x, cz = c.z, cols = m_cols, rows = m_rows;
+    const long long first = std::max({1LL, -cx, cx - (cols - 1), -cz, cz - (rows - 1)});
+    const long long last = first + std::max(cols, rows);
+    const auto onGrid = [](long long v, long long n) { return v >= 0 && v < n; };
+    for (long long r = first; r <= last; ++r) {
+        if (found && U(r) * U(r) > bestD2)
             break;
-        const int x0 = std::max(c.x - r, 0), x1 = std::min(c.x + r, m_cols - 1);
-        const int z0 = std::max(c.z - r + 1, 0), z1 = std::min(c.z + r - 1, m_rows - 1);
-        for (int x = x0; x <= x1; ++x) {  // the top and bottom rows of the ring
-            consider(x, c.z - r);
-            consider(x, c.z + r);
+        const long long x0 = std::max(cx - r, 0LL), x1 = std::min(cx + r, cols - 1);
+        const long long z0 = std::max(cz - r + 1, 0LL), z1 = std::min(cz + r - 1, rows - 1);
+        for (long long x = x0; x <= x1; ++x) {  // the top and bottom rows of the ring
+            if (onGrid(cz - r, rows))
+                consider(int(x), int(cz - r));
+            if (onGrid(cz + r, rows))
+                consider(int(x), int(cz + r));
         }
-        for (int z = z0; z <= z1; ++z) {  // its left and right columns, corners excluded
-            consider(c.x - r, z);
-            consider(c.x + r, z);
+        for (long long z = z0; z <= z1; ++z) {  // its left and right columns, corners excluded
+            if (onGrid(cx - r, cols))
+                consider(int(cx - r), int(z));
+            if (onGrid(cx + r, cols))
+                consider(int(cx + r), int(z));
         }
     }
     return best;

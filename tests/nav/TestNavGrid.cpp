@@ -10,6 +10,7 @@
 #include <QTest>
 
 #include <cmath>
+#include <limits>
 #include <random>
 
 using namespace throng::sim;
@@ -138,6 +139,43 @@ private slots:
                 QCOMPARE(g.nearestWalkable(from), want);
             }
         }
+    }
+
+    // A goal or agent a mutated file puts a billion metres away (or at NaN) still finds the
+    // nearest walkable cell, without integer overflow (the sanitizer build checks that).
+    void farAndNonFiniteQueriesStayInRange()
+    {
+        std::mt19937 gen(3);
+        const NavGrid g = randomGrid(gen, 11, 8, 0.6f);
+        const auto bruteNearest = [&](NavCell from) {
+            long double best = -1;
+            NavCell want{-1, -1};
+            for (int z = 0; z < g.rows(); ++z)
+                for (int x = 0; x < g.cols(); ++x) {
+                    const long double dx = (long double)x - from.x, dz = (long double)z - from.z;
+                    if (g.walkable({x, z}) && (best < 0 || dx * dx + dz * dz < best)) {
+                        best = dx * dx + dz * dz;
+                        want = {x, z};
+                    }
+                }
+            return want;
+        };
+        const int big = std::numeric_limits<int>::max(), small = std::numeric_limits<int>::min();
+        for (const NavCell from : {NavCell{big, 3}, NavCell{small, 3}, NavCell{4, big}, NavCell{4, small},
+                                   NavCell{big, big}, NavCell{small, big}, NavCell{big - 5, small + 7}}) {
+            const NavCell got = g.nearestWalkable(from);
+            QVERIFY2(g.walkable(got), qPrintable(QString("from %1 %2").arg(from.x).arg(from.z)));
+            QCOMPARE(got, bruteNearest(from));
+        }
+        const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
+        for (const glm::vec2 p : {glm::vec2(3.4e38f, 1.0f), glm::vec2(-3.4e38f, 1e9f), glm::vec2(inf, -inf),
+                                  glm::vec2(nan, 2.0f), glm::vec2(1.0f, nan)}) {
+            const NavCell c = g.cellOf(p);
+            QVERIFY(!g.inside(c));
+            QVERIFY(g.walkable(g.nearestWalkable(c)));
+        }
+        QVERIFY(g.cellOf({3.4e38f, 1.0f}).x >= g.cols());
+        QVERIFY(g.cellOf({-3.4e38f, 1.0f}).x < 0);
     }
 
     void editsBumpTheGeneration()
