@@ -311,14 +311,16 @@ ExportResult exportGltf(const sim::Scene& scene, const sim::FrameCache& cache, c
         w.character = library.looksOf(cache.agents()[i].typeIndex)[w.variation.look];
         const Character& character = library.character(w.character);
         w.gait = computeGait(character, w.positions, speeds, w.variation, {clips, phases, cache.fps()});
-        w.firstPose = gaitPose(character, w.gait[0]);
+        const RootMotion motion{w.positions, w.yaw, w.variation.heightScale, cache.fps()};
+        w.firstPose =
+            compact ? gaitPose(character, w.gait[0]) : FootPlanter(character, w.gait, motion, scene.terrain).next();
         if (!bakeJoints)
             return;
         w.positionKept = detail::keepVec3Keys(frameClock.times, w.positions, options.positionToleranceM);
         w.yawKept = detail::keepRotationKeys(frameClock.times, w.yaw, options.rootRotationToleranceDeg * kDegToRad);
         if (!compact)
-            w.joints = detail::bakeJoints(jointClock, character, w.gait, options.positionToleranceM,
-                                          options.rotationToleranceDeg * kDegToRad);
+            w.joints = detail::bakeJoints(jointClock, character, w.gait, motion, scene.terrain,
+                                          options.positionToleranceM, options.rotationToleranceDeg * kDegToRad);
     };
     const sim::ThreadTeam team(options.threads);
     auto forBlock = [&](std::size_t begin, std::size_t count, std::vector<AgentWork>& work, bool bakeJoints) {

@@ -10,9 +10,6 @@
 
 namespace throng::exporting {
 
-namespace {
-
-// The shortest turn taking direction `from` to direction `to` (both non-zero).
 glm::quat turnBetween(const glm::vec3& from, const glm::vec3& to)
 {
     const glm::vec3 u = glm::normalize(from), v = glm::normalize(to);
@@ -28,6 +25,8 @@ glm::quat turnBetween(const glm::vec3& from, const glm::vec3& to)
     return glm::normalize(glm::quat(1.0f + c, axis.x, axis.y, axis.z));
 }
 
+namespace {
+
 glm::quat rotationOf(const glm::mat4& m) { return glm::normalize(glm::quat_cast(glm::mat3(m))); }
 
 }  // namespace
@@ -35,11 +34,18 @@ glm::quat rotationOf(const glm::mat4& m) { return glm::normalize(glm::quat_cast(
 void reachWithLeg(const Character& c, const Leg& leg, const glm::vec3& target, Pose& pose)
 {
     const std::vector<glm::mat4> g = jointGlobalTransforms(c, pose);
+    reachWithLeg(c, leg, g, target, glm::quat(1.0f, 0.0f, 0.0f, 0.0f), pose);
+}
+
+void reachWithLeg(const Character& c, const Leg& leg, std::span<const glm::mat4> g, const glm::vec3& target,
+                  const glm::quat& footTurn, Pose& pose)
+{
     const auto upper = static_cast<std::size_t>(leg.upper), lower = static_cast<std::size_t>(leg.lower),
                foot = static_cast<std::size_t>(leg.foot);
     const glm::vec3 hip(g[upper][3]), knee(g[lower][3]), ankle(g[foot][3]);
     const float a = glm::length(knee - hip), b = glm::length(ankle - knee);
-    if (a <= 0.0f || b <= 0.0f || glm::length(target - ankle) < 1e-6f)
+    const bool turnsFoot = std::abs(footTurn.w) < 1.0f - 1e-7f;
+    if (a <= 0.0f || b <= 0.0f || (glm::length(target - ankle) < 1e-6f && !turnsFoot))
         return;
     // Hip to target, as far as the leg reaches; the knee in the plane of its bend now.
     glm::vec3 toTarget = target - hip;
@@ -69,17 +75,19 @@ void reachWithLeg(const Character& c, const Leg& leg, const glm::vec3& target, P
     const glm::quat newUpper = turnThigh * upperRot, newLower = turnShin * turnThigh * lowerRot;
     pose.rotations[upper] = glm::normalize(glm::inverse(parentRot) * newUpper);
     pose.rotations[lower] = glm::normalize(glm::inverse(newUpper) * newLower);
-    pose.rotations[foot] = glm::normalize(glm::inverse(newLower) * footRot);
+    pose.rotations[foot] = glm::normalize(glm::inverse(newLower) * (footTurn * footRot));
 }
 
 void plantFeet(const Character& c, Pose& pose, float share)
 {
     if (c.legs.empty() || share <= 0.0f)
         return;
+    // One leg's reach leaves the other's joint transforms as they were.
     const std::vector<glm::mat4> g = jointGlobalTransforms(c, pose);
+    const glm::quat keep(1.0f, 0.0f, 0.0f, 0.0f);
     for (const Leg& leg : c.legs) {
         const glm::vec3 ankle(g[static_cast<std::size_t>(leg.foot)][3]);
-        reachWithLeg(c, leg, ankle + std::min(share, 1.0f) * (leg.plantedAnkle - ankle), pose);
+        reachWithLeg(c, leg, g, ankle + std::min(share, 1.0f) * (leg.plantedAnkle - ankle), keep, pose);
     }
 }
 

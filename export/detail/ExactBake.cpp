@@ -4,15 +4,18 @@
 
 namespace throng::exporting::detail {
 
-BakedJoints bakeJoints(const JointClock& jc, const Character& c, const std::vector<GaitFrame>& gait, float toleranceM,
-                       float toleranceRad)
+BakedJoints bakeJoints(const JointClock& jc, const Character& c, const std::vector<GaitFrame>& gait,
+                       const RootMotion& motion, const sim::Terrain& terrain, float toleranceM, float toleranceRad)
 {
+    FootPlanter planter(c, gait, motion, terrain);
     const std::size_t keys = jc.frames.size(), joints = c.joints.size();
     BakedJoints b;
     b.rootTranslation.resize(keys);
     b.rotations.resize(joints * keys);
     for (std::size_t k = 0; k < keys; ++k) {
-        const Pose pose = gaitPose(c, gait[jc.frames[k]]);
+        Pose pose = planter.next();
+        while (planter.frame() <= jc.frames[k])
+            pose = planter.next();
         b.rootTranslation[k] = pose.rootTranslation;
         for (std::size_t j = 0; j < joints; ++j) {
             glm::quat q = pose.rotations[j];

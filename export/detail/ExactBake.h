@@ -1,11 +1,12 @@
 #pragma once
-// The exact bake of one agent's joints: its own gait evaluated at every joint frame, each
+// The exact bake of one agent's joints: its own gait, feet planted, at every joint frame, each
 // joint's rotations (and the skeleton root's translation) reduced and written as its own
 // channel. Baking is pure and may run on any thread; writing appends to the model.
 #ifndef THRONG_EXPORT_BUILD
 #error "a detail/ header, private to throng::export: include the module's public headers instead"
 #endif
 
+#include "export/character/FootPlanter.h"
 #include "export/character/Gait.h"
 #include "export/detail/AgentRig.h"
 #include "export/detail/AnimationChannels.h"
@@ -25,8 +26,10 @@ struct BakedJoints {
     std::vector<std::vector<std::uint32_t>> kept;    // per joint
 };
 
+// The poses are the gait's with the feet planted on the terrain (FootPlanter), every
+// recorded frame walked through so a foot's lock carries between joint frames.
 BakedJoints bakeJoints(const JointClock& jointClock, const Character& character, const std::vector<GaitFrame>& gait,
-                       float toleranceM, float toleranceRad);
+                       const RootMotion& motion, const sim::Terrain& terrain, float toleranceM, float toleranceRad);
 void writeJoints(AnimationChannels& channels, const JointClock& jointClock, const BakedJoints& baked, const AgentRig& rig);
 
 }  // namespace throng::exporting::detail
