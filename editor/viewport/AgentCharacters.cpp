@@ -52,32 +52,25 @@ bool AgentCharacters::setScene(const sim::Scene& scene, const std::string& scene
     m_tables.clear();
     m_problems.clear();
     m_looksOfType.assign(scene.agentTypes.size(), {});
-    // Each type alone first: one type's missing file must not take the others' characters.
+    // Every type on its own: one type's missing file must not take the others' characters.
+    // Near agents wear the middle level of detail, far ones the lightest (a software
+    // renderer pays for every triangle); a character file, loaded once, serves both.
     const std::size_t types = scene.agentTypes.size();
+    exporting::CharacterLibrary library;
+    library.setLod(exporting::Lod::Mid);
+    const std::vector<std::string> errors = library.resolveEach(scene, sceneDirectory, std::vector<bool>(types, true));
     std::vector<bool> resolvable(types, false);
     for (std::size_t t = 0; t < types; ++t) {
-        std::vector<bool> only(types, false);
-        only[t] = true;
-        exporting::CharacterLibrary probe;
-        const std::string error = probe.resolve(scene, sceneDirectory, only);
-        resolvable[t] = error.empty();
-        if (!error.empty())
-            m_problems += (m_problems.empty() ? "" : "\n") + error;
+        resolvable[t] = errors[t].empty();
+        if (!errors[t].empty())
+            m_problems += (m_problems.empty() ? "" : "\n") + errors[t];
     }
-    // Near agents wear the middle level of detail, far ones the lightest: a software
-    // renderer pays for every triangle.
-    exporting::CharacterLibrary library, farLibrary;
-    library.setLod(exporting::Lod::Mid);
-    farLibrary.setLod(exporting::Lod::Far);
-    if (const std::string error = library.resolve(scene, sceneDirectory, resolvable); !error.empty()) {
-        m_problems += (m_problems.empty() ? "" : "\n") + error;
-        return true;
-    }
-    farLibrary.resolve(scene, sceneDirectory, resolvable);  // the same characters, in the same order
+    const exporting::CharacterLibrary farLibrary = library.atLod(exporting::Lod::Far);
     m_parts.clear();
     for (std::size_t c = 0; c < library.characterCount(); ++c) {
         m_tables.push_back(buildPoseTable(library.character(c)));
-        m_tables.push_back(buildPoseTable(farLibrary.character(c)));
+        // A character from a file has one level: its far table is its near one.
+        m_tables.push_back(library.fromFile(c) ? m_tables.back() : buildPoseTable(farLibrary.character(c)));
         m_parts.push_back(exporting::partsOf(library.character(c).mesh));
     }
     for (std::size_t t = 0; t < types; ++t)
