@@ -4,7 +4,8 @@
 // From each ankle's world position in the file (node transforms and channels, reduced
 // keys and 16-bit rotations included) and the scene's terrain:
 // - a foot on the ground (its sole within 5 mm of the terrain under it) slides less than
-//   1 cm until it lifts, and each foot is on the ground a fair share of the run;
+//   1 cm until it lifts, lies on the slope (its up within 3 degrees of the terrain's
+//   normal), and each foot is on the ground a fair share of the run;
 // - no sole is ever more than 2 cm below the terrain, and while an agent walks or stands
 //   (one foot always down in those gaits) its lower sole is within 2 cm of the terrain.
 #include "GltfReadBack.h"
@@ -22,6 +23,7 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <map>
@@ -34,6 +36,9 @@ namespace {
 constexpr float kFps = 30.0f;
 constexpr float kSeconds = 20.0f;
 constexpr float kTwoPi = 6.2831853f;
+// How far a planted sole may lie off the terrain's slope, degrees (the sloped ground is
+// 7.4 degrees steep: a level sole would fail).
+constexpr float kTiltDeg = 3.0f;
 
 // A 60 x 40 m terrain at 0.5 m samples, as scene YAML.
 std::string terrainYaml(const std::function<float(float, float)>& height)
@@ -91,7 +96,17 @@ paths:
 struct FootTrack {
     std::vector<glm::vec3> ankle;  // world, per frame
     std::vector<float> sole;       // sole height above the terrain under the ankle, m
+    std::vector<glm::vec3> up;     // the foot's up (its joint's +Y), world, unit length
 };
+
+// The terrain's unit normal under (x, z), by central differences 10 cm apart.
+glm::vec3 terrainNormal(const sim::Terrain& terrain, float x, float z)
+{
+    constexpr float h = 0.1f;
+    const float dx = sim::terrainHeight(terrain, x + h, z) - sim::terrainHeight(terrain, x - h, z);
+    const float dz = sim::terrainHeight(terrain, x, z + h) - sim::terrainHeight(terrain, x, z - h);
+    return glm::normalize(glm::vec3(-dx / (2.0f * h), 1.0f, -dz / (2.0f * h)));
+}
 
 }  // namespace
 
@@ -194,13 +209,14 @@ private slots:
                     const glm::vec3 a(m[3]);
                     feet[side].ankle.push_back(a);
                     feet[side].sole.push_back(a.y - ankleHeight - sim::terrainHeight(scene.terrain, a.x, a.z));
+                    feet[side].up.push_back(glm::normalize(glm::vec3(m[1])));
                 }
             }
             const QString who = QString("agent %1 (%2)").arg(id).arg(QString::fromStdString(type.name));
             for (int side = 0; side < 2; ++side) {
                 const FootTrack& foot = feet[side];
                 std::size_t down = 0;
-                float worstSlide = 0.0f, lowest = 1e9f;
+                float worstSlide = 0.0f, lowest = 1e9f, worstTiltDeg = 0.0f;
                 glm::vec3 touchdown(0.0f);
                 for (std::size_t f = 0; f < frames; ++f) {
                     lowest = std::min(lowest, foot.sole[f]);
@@ -210,16 +226,22 @@ private slots:
                     if (f == 0 || std::abs(foot.sole[f - 1]) >= 0.005f)
                         touchdown = foot.ankle[f];
                     ++down;
+                    // A planted sole lies on the slope: its up is the terrain's normal.
+                    const glm::vec3 normal = terrainNormal(scene.terrain, foot.ankle[f].x, foot.ankle[f].z);
+                    const float cosine = std::clamp(glm::dot(foot.up[f], normal), -1.0f, 1.0f);
+                    worstTiltDeg = std::max(worstTiltDeg, std::acos(cosine) * 180.0f / 3.14159265f);
                     worstSlide = std::max(worstSlide, glm::length(glm::vec2(foot.ankle[f].x - touchdown.x,
                                                                             foot.ankle[f].z - touchdown.z)));
                 }
-                const QString what = QString("%1 %2 foot: down %3 of %4 frames, slid %5 m, lowest sole %6 m")
-                                         .arg(who).arg(side == 0 ? "left" : "right").arg(down).arg(frames)
-                                         .arg(worstSlide).arg(lowest);
+                const QString what =
+                    QString("%1 %2 foot: down %3 of %4 frames, slid %5 m, lowest sole %6 m, sole off the slope %7 deg")
+                        .arg(who).arg(side == 0 ? "left" : "right").arg(down).arg(frames).arg(worstSlide).arg(lowest)
+                        .arg(worstTiltDeg);
                 qInfo("%s", qPrintable(what));
                 QVERIFY2(down > frames / 4, qPrintable(what));
                 QVERIFY2(worstSlide < 0.01f, qPrintable(what));
                 QVERIFY2(lowest > -0.02f, qPrintable(what));
+                QVERIFY2(worstTiltDeg < kTiltDeg, qPrintable(what));
             }
             // Walking or standing, one foot is always down: the lower sole is on the terrain.
             float worstAbove = 0.0f;
