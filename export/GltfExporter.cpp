@@ -310,7 +310,8 @@ ExportResult exportGltf(const sim::Scene& scene, const sim::FrameCache& cache, c
         w.variation = variationOf(i);
         w.character = library.looksOf(cache.agents()[i].typeIndex)[w.variation.look];
         const Character& character = library.character(w.character);
-        w.gait = computeGait(character, w.positions, speeds, w.variation, {clips, phases, cache.fps()});
+        const float blendS = scene.agentTypes[cache.agents()[i].typeIndex].actionBlendS;
+        w.gait = computeGait(character, w.positions, speeds, w.variation, {clips, phases, cache.fps(), blendS});
         const RootMotion motion{w.positions, w.yaw, w.variation.heightScale, cache.fps()};
         w.firstPose =
             compact ? gaitPose(character, w.gait[0]) : FootPlanter(character, w.gait, motion, scene.terrain).next();

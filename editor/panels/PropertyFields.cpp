@@ -99,6 +99,8 @@ std::vector<PropertyField> make(ItemKind kind)
                  }, true), isFlier},
                 {"banking", tr("Banking (s^2/m)"), 0, 10, 0.01, 3, THRONG_FIELD(agentTypes, banking), {}, isFlier},
                 {"priority", tr("Priority"), -1e6, 1e6, 1, 1, THRONG_FIELD(agentTypes, priority)},
+                {"actionBlend", tr("Action blend (s; -1 = each action's own)"), -1, 10, 0.05, 2,
+                 THRONG_FIELD(agentTypes, actionBlendS)},
                 {"heightMin", tr("Height scale min"), 0.01, 10, 0.05, 2, THRONG_FIELD(agentTypes, variation.heightScale.x),
                  variationEnd(&sim::Variation::heightScale, true)},
                 {"heightMax", tr("Height scale max"), 0.01, 10, 0.05, 2, THRONG_FIELD(agentTypes, variation.heightScale.y),

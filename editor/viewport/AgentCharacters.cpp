@@ -6,6 +6,7 @@
 #include <QDebug>
 
 #include <algorithm>
+#include <cmath>
 
 namespace throng::editor {
 
@@ -114,17 +115,39 @@ const std::vector<AgentCharacters::Look>& AgentCharacters::looksFor(std::span<co
 }
 
 void AgentCharacters::posesFor(std::span<const sim::AgentFrame> frames, std::span<const sim::AgentInfo> agents,
-                               double timeS, std::vector<AgentPose>& poses)
+                               double timeS, std::vector<AgentPose>& poses, std::span<const float> clipSinceS)
 {
     const std::vector<Look>& looks = looksFor(agents);
     poses.resize(frames.size());
     for (std::size_t i = 0; i < frames.size(); ++i) {
         const Look& look = looks[i];
         poses[i] = {look.character, 0, look.heightScale, look.lookBits};
-        if (look.character >= 0)
-            poses[i].pose = m_tables[std::size_t(look.character) * kLevels].poseFor(
-                frames[i].clip, frames[i].phase, sim::actionPhase(frames[i].clip, timeS, agents[i].id),
-                frames[i].speed >= kMovingMps);
+        if (look.character < 0)
+            continue;
+        const sim::Clip clip = frames[i].clip;
+        const float actionPhase = !sim::isOneShot(clip) ? sim::actionPhase(clip, timeS, agents[i].id)
+                                  : i < clipSinceS.size() ? sim::oneShotProgress(clip, double(clipSinceS[i]))
+                                                          : 1.0f;
+        poses[i].pose = m_tables[std::size_t(look.character) * kLevels].poseFor(clip, frames[i].phase, actionPhase,
+                                                                                frames[i].speed >= kMovingMps);
+    }
+}
+
+void clipSinceS(const sim::FrameCache& cache, std::size_t frame, std::vector<float>& sinceS)
+{
+    sinceS.assign(cache.agentCount(), 0.0f);
+    if (frame >= cache.frameCount() || !(cache.fps() > 0.0f))
+        return;
+    for (std::size_t i = 0; i < cache.agentCount(); ++i) {
+        const sim::Clip clip = cache.at(frame, i).clip;
+        if (!sim::isOneShot(clip))
+            continue;
+        // Past the clip's length it holds its end: no need to look further back.
+        const auto reach = std::size_t(std::ceil(double(sim::clipCycleS(clip)) * double(cache.fps()))) + 1;
+        std::size_t back = 0;
+        while (back < reach && back < frame && cache.at(frame - back - 1, i).clip == clip)
+            ++back;
+        sinceS[i] = float(double(back) / double(cache.fps()));
     }
 }
 

@@ -31,9 +31,11 @@ public:
     const std::string& problems() const { return m_problems; }
 
     // One pose per agent of `frames`/`agents` (same length), in order; timeS: the frame's
-    // time (frame / fps), which an action's phase runs by.
+    // time (frame / fps), which an action's phase runs by; clipSinceS: per agent, seconds
+    // since it switched to its clip, which a one-shot (fall, get_up) runs by (empty or
+    // shorter: played to its end).
     void posesFor(std::span<const sim::AgentFrame> frames, std::span<const sim::AgentInfo> agents, double timeS,
-                  std::vector<AgentPose>& poses);
+                  std::vector<AgentPose>& poses, std::span<const float> clipSinceS = {});
 
 private:
     struct Look {
@@ -54,5 +56,10 @@ private:
     std::vector<sim::AgentInfo> m_cachedFor;
     std::vector<Look> m_looks;
 };
+
+// Per agent of the cache, seconds since it switched to the clip it plays on `frame`, counted
+// back through the recorded frames for the agents playing a one-shot (fall, get_up) and only
+// as far as the clip lasts (AgentCharacters::posesFor's clipSinceS); 0 for the others.
+void clipSinceS(const sim::FrameCache& cache, std::size_t frame, std::vector<float>& sinceS);
 
 }  // namespace throng::editor

@@ -6,6 +6,7 @@
 #include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace throng::editor {
@@ -24,6 +25,10 @@ int PoseTable::poseFor(sim::Clip clip, float phase, float actionPhase, bool movi
 {
     if (sim::isAction(clip)) {
         const int a = int(clip) - int(sim::Clip::Wait);
+        if (a < kActions && std::size_t(a) < oneShot.size() && hasAction[std::size_t(a)] && oneShot[std::size_t(a)]) {
+            const float progress = std::clamp(actionPhase, 0.0f, 1.0f);
+            return actionPose(a, int(std::lround(double(progress) * (kActionPoses - 1))));
+        }
         if (a < kActions && std::size_t(a) < hasAction.size() && hasAction[std::size_t(a)])
             return moving ? walkingActionPose(a, sampleOf(phase, kWalkPoses))
                           : actionPose(a, sampleOf(actionPhase, kActionPoses));
@@ -88,13 +93,20 @@ PoseTable buildPoseTable(const exporting::Character& character)
     for (int a = 0; a < PoseTable::kActions; ++a) {
         actionOf[std::size_t(a)] = character.actionIndex(sim::toString(sim::Clip(int(sim::Clip::Wait) + a)));
         table.hasAction.push_back(actionOf[std::size_t(a)] >= 0 ? 1 : 0);
+        table.oneShot.push_back(
+            actionOf[std::size_t(a)] >= 0 && character.actions[std::size_t(actionOf[std::size_t(a)])].oneShot ? 1 : 0);
     }
     const exporting::Pose idle = exporting::sampleClip(character.idle, 0.0);
     for (int a = 0; a < PoseTable::kActions; ++a)
         for (int k = 0; k < PoseTable::kActionPoses; ++k) {
             exporting::GaitFrame g;
             g.moveWeight = 0.0f;
-            g.action = {actionOf[std::size_t(a)], double(k) / PoseTable::kActionPoses, 1.0f};
+            double phase = double(k) / PoseTable::kActionPoses;
+            if (table.oneShot[std::size_t(a)]) {  // from the first sample to the held last
+                const auto& samples = character.actions[std::size_t(actionOf[std::size_t(a)])].clip.samples;
+                phase = double(k) / (PoseTable::kActionPoses - 1) * double(samples.size() - 1) / double(samples.size());
+            }
+            g.action = {actionOf[std::size_t(a)], phase, 1.0f};
             add(g.action.action >= 0 ? exporting::gaitPose(character, g) : idle);
         }
     for (int a = 0; a < PoseTable::kActions; ++a)

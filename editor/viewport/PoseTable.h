@@ -29,11 +29,13 @@ struct PoseTable {
     std::vector<std::uint8_t> materialSlots;   // per vertex of a pose: its part's MaterialSlot
     bool hasIdle = true;                       // false: a stopped agent holds the walk (wheels, wings)
     std::vector<std::uint8_t> hasAction;       // per action (kActions): the character plays it
+    std::vector<std::uint8_t> oneShot;         // per action: played once and held (fall, get_up)
 
     // The pose an agent shows for its recorded clip and gait phase (cycles; wraps). For an
     // action the character plays: its pose at actionPhase (sim::actionPhase) where the
-    // agent stands, its walking pose at the gait phase where it moves; for one it lacks,
-    // the pose its speed gives.
+    // agent stands, its walking pose at the gait phase where it moves; for a one-shot
+    // (fall, get_up), actionPhase is its progress (sim::oneShotProgress) and it plays in
+    // full, moving or not; for an action it lacks, the pose its speed gives.
     int poseFor(sim::Clip clip, float phase, float actionPhase = 0.0f, bool moving = false) const;
     // Pose index of walk sample k (0..kWalkPoses-1) and run sample k.
     static int walkPose(int k) { return 1 + k; }
@@ -51,7 +53,8 @@ struct PoseTable {
 void skinMesh(const exporting::Character& character, const exporting::Pose& pose, std::vector<glm::vec3>& positions,
               std::vector<glm::vec3>& normals);
 // The idle pose, then walk pose k = sampleClip(walk, k / kWalkPoses), then run likewise,
-// then the actions (gaitPose with the action in full; a character without it repeats idle).
+// then the actions (gaitPose with the action in full; a character without it repeats idle;
+// a one-shot's poses run from its start, k / (kActionPoses - 1) of the way, to its end).
 PoseTable buildPoseTable(const exporting::Character& character);
 
 }  // namespace throng::editor

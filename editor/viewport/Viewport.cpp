@@ -215,7 +215,11 @@ void Viewport::setAgents(std::span<const sim::AgentFrame> frames, std::span<cons
     m_layers.rebuildDensity(frames.first(n), m_agentColours.colourBy() == ColourBy::Density);
     const std::vector<glm::vec3>& colours =
         m_agentColours.coloursFor(frames.first(n), agents.first(n), m_layers.density());
-    m_agentCharacters.posesFor(frames.first(n), agents.first(n), timeS.value_or(0.0), m_shownPoses);
+    // A one-shot (a fall) runs from the frame its agent switched to it: the cache says which.
+    m_clipSinceS.clear();
+    if (m_cache && frameIndex < m_cache->frameCount() && m_cache->agentCount() == n)
+        clipSinceS(*m_cache, frameIndex, m_clipSinceS);
+    m_agentCharacters.posesFor(frames.first(n), agents.first(n), timeS.value_or(0.0), m_shownPoses, m_clipSinceS);
     m_glyphs.clear();
     m_carGlyphs.clear();
     m_birdGlyphs.clear();

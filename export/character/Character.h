@@ -81,6 +81,9 @@ struct ActionClip {
     CycleClip clip;                     // clip.name: the action's name, as sim::toString gives it
     std::vector<std::uint8_t> layered;  // per joint: 1 = played over locomotion too
     float blendS = 0.3f;                // s to blend in, and out again
+    // Plays once from the frame it starts and holds its last sample (fall, get_up:
+    // sim::isOneShot), in full over locomotion too, instead of looping.
+    bool oneShot = false;
 };
 
 // A leg whose ankle IK can place (LegIk.h): hip, knee and ankle joints, each the child

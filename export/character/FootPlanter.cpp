@@ -76,6 +76,12 @@ Pose FootPlanter::next()
     const std::size_t legs = c.legs.size();
     std::vector<glm::vec3> target(legs);
     std::vector<float> stance(legs);
+    // A one-shot (fall, get_up) moves the feet as its clip does: the planting gives way to
+    // it as it blends in, and no foot locks until it has blended out.
+    float oneShot = 0.0f;
+    for (const ActionLayer* layer : {&m_gait[f].fading, &m_gait[f].action})
+        if (layer->action >= 0 && c.actions[static_cast<std::size_t>(layer->action)].oneShot)
+            oneShot = std::max(oneShot, std::clamp(layer->weight, 0.0f, 1.0f));
     bool anyStepping = false;
     for (const Foot& foot : m_feet)
         anyStepping = anyStepping || (foot.stepping && foot.sinceReleaseS < kReleaseS);
@@ -96,7 +102,9 @@ Pose FootPlanter::next()
         bool othersLocked = true;
         for (std::size_t k = 0; k < legs; ++k)
             othersLocked = othersLocked && (k == i || m_feet[k].locked);
-        if (foot.locked) {
+        if (foot.locked && oneShot > 0.0f) {
+            release(false);
+        } else if (foot.locked) {
             const bool drifted = glm::length(foot.lock - ground(ankle)) > kMaxDriftM * s ||
                                  angleBetween(heading, foot.lockHeadingRad) > kMaxTwistRad;
             if (!down && !anyStepping)
@@ -112,7 +120,7 @@ Pose FootPlanter::next()
         glm::vec2 at = foot.locked ? foot.lock : ground(ankle) + foot.offset * (1.0f - eased);
         // A foot the clip puts down locks where it is now; a re-stepping one once it has
         // landed where the clip wants it.
-        if (!foot.locked && down && (!foot.stepping || foot.sinceReleaseS >= kReleaseS)) {
+        if (!foot.locked && down && oneShot == 0.0f && (!foot.stepping || foot.sinceReleaseS >= kReleaseS)) {
             foot.locked = true;
             foot.stepping = false;
             foot.lock = at;
@@ -140,7 +148,7 @@ Pose FootPlanter::next()
         const float need = across < reach ? below - std::sqrt(reach * reach - across * across) : below;
         drop = std::max(drop, need);
     }
-    drop = std::min(drop, kMaxDropM * s);
+    drop = std::min(drop, kMaxDropM * s) * (1.0f - oneShot);
     if (drop > kKeepM * s) {
         pose.rootTranslation.y -= drop / s;
         for (glm::mat4& m : g)
@@ -151,11 +159,12 @@ Pose FootPlanter::next()
         // A planted sole lies on the slope; a lifted one eases back to the clip's.
         const glm::vec3 normal = unyaw * groundNormalAt(ground(target[i]));
         const glm::quat tilt = glm::slerp(glm::quat(1.0f, 0.0f, 0.0f, 0.0f),
-                                          turnBetween(glm::vec3(0.0f, 1.0f, 0.0f), normal), stance[i]);
+                                          turnBetween(glm::vec3(0.0f, 1.0f, 0.0f), normal),
+                                          stance[i] * (1.0f - oneShot));
         // A foot already where it should be, level, keeps the clip's own joints (the
         // export's key reduction then keeps as few keys as without planting).
-        const glm::vec3 want = toCharacter(target[i]);
         const glm::vec3 now(g[static_cast<std::size_t>(c.legs[i].foot)][3]);
+        const glm::vec3 want = now + (toCharacter(target[i]) - now) * (1.0f - oneShot);
         if (glm::length(want - now) < kKeepM && std::abs(tilt.w) > 1.0f - 5e-7f)
             continue;
         reachWithLeg(c, c.legs[i], g, want, tilt, pose);

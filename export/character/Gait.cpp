@@ -31,7 +31,8 @@ namespace {
 
 // The action each frame plays, blended: a new action fades in over its blend time while
 // the one before fades out from where it was; one that ends fades out. An action already
-// playing on the first frame plays in full from it.
+// playing on the first frame plays in full from it. A one-shot's phase runs from the frame
+// it started (sim::oneShotProgress) to its last sample, where it stays.
 void layerActions(const Character& c, const RecordedClips& recorded, std::vector<GaitFrame>& out)
 {
     if (c.actions.empty() || recorded.clips.size() != out.size() || recorded.phases.size() != out.size())
@@ -39,7 +40,7 @@ void layerActions(const Character& c, const RecordedClips& recorded, std::vector
     const float dt = recorded.fps > 0.0f ? 1.0f / recorded.fps : 0.0f;
     // Weight gained or lost per frame, and cycles played per frame, of action a.
     auto rate = [&](int a) {
-        const float blend = c.actions[static_cast<std::size_t>(a)].blendS;
+        const float blend = recorded.blendS >= 0.0f ? recorded.blendS : c.actions[static_cast<std::size_t>(a)].blendS;
         return blend > 0.0f ? dt / blend : 1.0f;
     };
     auto cyclesPerFrame = [&](int a) {
@@ -47,12 +48,21 @@ void layerActions(const Character& c, const RecordedClips& recorded, std::vector
         const float cycle = clip ? sim::clipCycleS(*clip) : 0.0f;
         return cycle > 0.0f ? static_cast<double>(dt / cycle) : 0.0;
     };
+    // A one-shot's last sample, in cycles: where it stops and stays.
+    auto lastPhase = [&](int a) {
+        const std::size_t n = c.actions[static_cast<std::size_t>(a)].clip.samples.size();
+        return n > 1 ? static_cast<double>(n - 1) / static_cast<double>(n) : 0.0;
+    };
+    auto oneShot = [&](int a) { return a >= 0 && c.actions[static_cast<std::size_t>(a)].oneShot; };
     ActionLayer current, fading;
+    std::size_t started = 0;  // the frame the current action started on
     for (std::size_t f = 0; f < out.size(); ++f) {
         const sim::Clip clip = recorded.clips[f];
         const int action = sim::isAction(clip) ? c.actionIndex(sim::toString(clip)) : -1;
         if (fading.action >= 0) {
-            fading.phase += cyclesPerFrame(fading.action);
+            fading.phase += cyclesPerFrame(fading.action) * (oneShot(fading.action) ? lastPhase(fading.action) : 1.0);
+            if (oneShot(fading.action))
+                fading.phase = std::min(fading.phase, lastPhase(fading.action));
             fading.weight -= rate(fading.action);
             if (fading.weight <= 0.0f)
                 fading = {};
@@ -64,10 +74,14 @@ void layerActions(const Character& c, const RecordedClips& recorded, std::vector
             if (current.action >= 0)
                 fading = current;
             current = {action, 0.0, f == 0 ? 1.0f : 0.0f};
+            started = f;
         } else if (current.action >= 0) {
             current.weight = std::min(1.0f, current.weight + rate(current.action));
         }
-        if (current.action >= 0)
+        if (oneShot(current.action))
+            current.phase = lastPhase(current.action) *
+                            static_cast<double>(sim::oneShotProgress(clip, static_cast<double>(f - started) * dt));
+        else if (current.action >= 0)
             current.phase = static_cast<double>(recorded.phases[f]);
         out[f].action = current;
         out[f].fading = fading;
@@ -100,6 +114,14 @@ std::vector<GaitFrame> computeGait(const Character& c, std::span<const glm::vec3
     return out;
 }
 
+bool playsOneShot(const Character& c, const GaitFrame& g)
+{
+    for (const ActionLayer* layer : {&g.fading, &g.action})
+        if (layer->action >= 0 && layer->weight > 0.0f && c.actions[static_cast<std::size_t>(layer->action)].oneShot)
+            return true;
+    return false;
+}
+
 Pose gaitPose(const Character& c, const GaitFrame& g)
 {
     Pose moving = sampleClip(c.walk, g.phase);
@@ -113,11 +135,15 @@ Pose gaitPose(const Character& c, const GaitFrame& g)
         if (layer->action < 0 || layer->weight <= 0.0f)
             continue;
         const ActionClip& a = c.actions[static_cast<std::size_t>(layer->action)];
-        pose = blendPosesLayered(pose, sampleClip(a.clip, layer->phase), a.layered, layer->weight,
-                                 layer->weight * (1.0f - g.moveWeight));
+        if (a.oneShot)  // the whole body, the hips' height included, whether it moves or not
+            pose = blendPoses(pose, sampleClip(a.clip, layer->phase), layer->weight);
+        else
+            pose = blendPosesLayered(pose, sampleClip(a.clip, layer->phase), a.layered, layer->weight,
+                                     layer->weight * (1.0f - g.moveWeight));
     }
-    // Standing, the feet stay where the idle pose plants them through any blend.
-    if (g.moveWeight < 1.0f && (g.action.weight > 0.0f || g.fading.weight > 0.0f))
+    // Standing, the feet stay where the idle pose plants them through any blend (a fall
+    // or getting up moves them as its clip does).
+    if (g.moveWeight < 1.0f && (g.action.weight > 0.0f || g.fading.weight > 0.0f) && !playsOneShot(c, g))
         plantFeet(c, pose, 1.0f - g.moveWeight);
     return pose;
 }

@@ -3,7 +3,8 @@
 // phase advances by distance travelled divided by stride (so planted feet stay planted),
 // walk blends into run by speed, a stopped agent idles. An action its brain picked plays
 // over that (in full while it stands, on the upper body while it walks), blended in and
-// out over the action's blend time. Pure maths over the inputs.
+// out over the action's blend time; a one-shot (fall, get_up) plays once from the frame it
+// starts, in full, and holds its last pose. Pure maths over the inputs.
 
 #include "export/character/AgentVariation.h"
 #include "export/character/Character.h"
@@ -38,6 +39,7 @@ struct RecordedClips {
     std::span<const sim::Clip> clips;
     std::span<const float> phases;
     float fps = 24.0f;
+    float blendS = -1.0f;  // the type's action_blend: every action blends over it; < 0 = each its own
 };
 
 // positions (m) and speeds (m/s) of one agent, one entry per frame; all the same length.
@@ -46,6 +48,8 @@ std::vector<GaitFrame> computeGait(const Character& character, std::span<const g
                                    const RecordedClips& recorded = {});
 // The character's pose for one gait frame.
 Pose gaitPose(const Character& character, const GaitFrame& frame);
+// Whether the frame plays a one-shot action (fall, get_up) at any weight.
+bool playsOneShot(const Character& character, const GaitFrame& frame);
 // Stride of one cycle at this blend, for a character scaled by heightScale, m.
 double strideAt(const Character& character, float runWeight, float heightScale);
 

@@ -2,7 +2,8 @@
 // shift_weight, point): each a loop over the idle pose's legs, with the arms, chest, neck
 // and head posed by hand. Standing, the feet stay where the idle pose puts them (a weight
 // shift turns the legs about the planted feet), so an action over a standing agent slides
-// no foot; sitting lowers the hips onto a seat behind the agent, shins upright.
+// no foot; sitting lowers the hips onto a seat behind the agent, shins upright. Fall and
+// get_up play once, through key poses, the ankles put until the legs stretch out.
 #include "export/character/BuiltinCharacters.h"
 
 #include "simcore/scene/Clip.h"
@@ -49,6 +50,61 @@ ActionClip makeAction(const Character& c, sim::Clip clip, const std::function<vo
         a.clip.samples.push_back(std::move(p));
     }
     return a;
+}
+
+// A one-shot over progress u in [0, 1]: sample k at u = k / (n - 1), the last the pose it
+// holds; in full over locomotion too (ActionClip::oneShot).
+ActionClip makeOneShot(const Character& c, sim::Clip clip, const std::function<void(float, Pose&)>& pose,
+                       float blendS)
+{
+    ActionClip a;
+    a.clip.name = sim::toString(clip);
+    a.clip.strideM = 1.0f;
+    a.layered.assign(kHumanoidJointCount, 1);
+    a.blendS = blendS;
+    a.oneShot = true;
+    for (int k = 0; k < kSamplesPerAction; ++k) {
+        Pose p = c.idle.samples.front();
+        pose(static_cast<float>(k) / static_cast<float>(kSamplesPerAction - 1), p);
+        a.clip.samples.push_back(std::move(p));
+    }
+    return a;
+}
+
+// One moment of falling to the ground (or getting up): the trunk's lean back from upright
+// and each leg's hip and knee bends, all about Z (+ = the thigh forward, the trunk back),
+// with the ankles at `ankleForward` m ahead of where standing put them.
+struct FallKey {
+    float u;                  // progress at this key
+    float trunk, hip, knee;   // rad
+    float spine, neck;        // rad, about Z
+    float armForward, armOut; // upper arms: about Z (forward), about X (out to the side)
+    float elbow;              // lower arms, about Z
+    float ankleForward;       // m at scale 1
+};
+
+// Standing, crouched with the knees giving way, sitting on the ground leaning back on the
+// hands, lying on the back.
+constexpr FallKey kStand{0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f};
+constexpr FallKey kCrouch{0.0f, -0.15f, 1.4f, -1.9f, -0.1f, 0.1f, 0.8f, 0.15f, 0.6f, 0.0f};
+constexpr FallKey kSitDown{0.0f, 0.3f, 1.9f, -1.6f, 0.0f, -0.1f, -0.6f, 0.25f, 0.2f, 0.0f};
+constexpr FallKey kLying{0.0f, 1.45f, 0.05f, -0.1f, 0.0f, -0.3f, 0.05f, 0.3f, 0.1f, 0.25f};
+
+FallKey fallKeyAt(float u, FallKey a, float ua, FallKey b, float ub)
+{
+    float t = std::clamp((u - ua) / (ub - ua), 0.0f, 1.0f);
+    t = t * t * (3.0f - 2.0f * t);
+    const auto mix = [t](float x, float y) { return x + (y - x) * t; };
+    return {u,
+            mix(a.trunk, b.trunk),
+            mix(a.hip, b.hip),
+            mix(a.knee, b.knee),
+            mix(a.spine, b.spine),
+            mix(a.neck, b.neck),
+            mix(a.armForward, b.armForward),
+            mix(a.armOut, b.armOut),
+            mix(a.elbow, b.elbow),
+            mix(a.ankleForward, b.ankleForward)};
 }
 
 }  // namespace
@@ -174,6 +230,52 @@ void addHumanoidActions(Character& c, float scale)
         p.rotations[kChest] = aboutY(-0.1f);
         p.rotations[kNeck] = aboutY(-0.1f) * aboutZ(0.05f);
     }));
+    // Falling and getting up: the legs' angles and the trunk's lean come from the keys,
+    // and the hips go where the ankles stay put (ahead by ankleForward), so the feet do
+    // not slide until the legs stretch out along the ground.
+    const glm::vec3 hipOffset = glm::vec3(at[kUpperLegL][3]) - glm::vec3(at[kHips][3]);
+    const float thigh = HumanoidLegs::kThighM * scale, shin = HumanoidLegs::kShinM * scale;
+    auto posed = [&, thigh, shin](const FallKey& k, Pose& p) {
+        const auto along = [](float angle, float length) {  // a limb hanging along -Y turned by angle
+            return glm::vec3(length * std::sin(angle), -length * std::cos(angle), 0.0f);
+        };
+        const glm::vec3 ankle(ankleX + k.ankleForward * scale, ankleM, 0.0f);
+        const glm::vec3 hipJoint = ankle - along(k.trunk + k.hip, thigh) - along(k.trunk + k.hip + k.knee, shin);
+        const glm::vec3 turned = aboutZ(k.trunk) * glm::vec3(hipOffset.x, hipOffset.y, 0.0f);
+        p.rootTranslation = glm::vec3(hipJoint.x - turned.x, hipJoint.y - turned.y, 0.0f);
+        p.rotations[kHips] = aboutZ(k.trunk);
+        for (int upper : {int(kUpperLegL), int(kUpperLegR)}) {
+            p.rotations[std::size_t(upper)] = aboutZ(k.hip);
+            p.rotations[std::size_t(upper + 1)] = aboutZ(k.knee);
+            // The sole level while the foot is down; lying, the toes up as the leg lies.
+            const float level = 1.0f - k.ankleForward / kLying.ankleForward;
+            p.rotations[std::size_t(upper + 2)] = aboutZ(-(k.trunk + k.hip + k.knee) * level);
+        }
+        p.rotations[kSpine] = aboutZ(k.spine);
+        p.rotations[kNeck] = aboutZ(k.neck);
+        p.rotations[kUpperArmL] = aboutZ(k.armForward) * aboutX(-k.armOut);
+        p.rotations[kUpperArmR] = aboutZ(k.armForward) * aboutX(k.armOut);
+        p.rotations[kLowerArmL] = aboutZ(k.elbow);
+        p.rotations[kLowerArmR] = aboutZ(k.elbow);
+    };
+    c.actions.push_back(makeOneShot(
+        c, sim::Clip::Fall,
+        [&](float u, Pose& p) {
+            const FallKey k = u < 0.3f   ? fallKeyAt(u, kStand, 0.0f, kCrouch, 0.3f)
+                              : u < 0.6f ? fallKeyAt(u, kCrouch, 0.3f, kSitDown, 0.6f)
+                                         : fallKeyAt(u, kSitDown, 0.6f, kLying, 1.0f);
+            posed(k, p);
+        },
+        0.15f));
+    c.actions.push_back(makeOneShot(
+        c, sim::Clip::GetUp,
+        [&](float u, Pose& p) {
+            const FallKey k = u < 0.35f  ? fallKeyAt(u, kLying, 0.0f, kSitDown, 0.35f)
+                              : u < 0.7f ? fallKeyAt(u, kSitDown, 0.35f, kCrouch, 0.7f)
+                                         : fallKeyAt(u, kCrouch, 0.7f, kStand, 1.0f);
+            posed(k, p);
+        },
+        0.15f));
 }
 
 }  // namespace throng::exporting

@@ -1,6 +1,8 @@
 #define GLM_ENABLE_EXPERIMENTAL  // glm::decompose lives in gtx
 #include "export/character/UserClipSampler.h"
 
+#include "simcore/scene/Clip.h"
+
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/gtx/matrix_decompose.hpp>
@@ -9,6 +11,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstring>
+#include <optional>
 
 namespace throng::exporting {
 
@@ -300,6 +303,8 @@ bool sampleUserClips(const tinygltf::Model& model, Character& c, const std::map<
         ActionClip a;
         a.clip = sample(anim, action.c_str(), 0.8f);
         a.layered = upperBodyByName(c);
+        const std::optional<sim::Clip> clip = sim::clipFromName(action);
+        a.oneShot = clip && sim::isOneShot(*clip);
         c.actions.push_back(std::move(a));
     }
     const float k = height / 1.75f;

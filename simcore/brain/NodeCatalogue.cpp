@@ -186,7 +186,7 @@ std::vector<NodeSpec> makeCatalogue()
                       {in("desire", S)}, {out("action", S)},
                       {text("actions", true,
                             "action names, space-separated: idle walk run, a clip (wait look_around wave talk "
-                            "phone cheer sit shift_weight point) or your own"),
+                            "phone cheer sit shift_weight point fall get_up) or your own"),
                        nums("durations", 0, false, "clip length per action in seconds; 0 = may change every step")}),
                  1));
     c.push_back(

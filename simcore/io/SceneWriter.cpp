@@ -153,6 +153,8 @@ void writeAgentTypes(Writer& w, const Scene& s)
             w.kvf("min_speed", t.minSpeed);
         if (t.banking != 0.0f)
             w.kvf("banking", t.banking);
+        if (t.actionBlendS >= 0.0f)
+            w.kvf("action_blend", t.actionBlendS);
         detail::writeEmission(w, t.emits);
         if (t.priority != 0.0f)
             w.kvf("priority", t.priority);

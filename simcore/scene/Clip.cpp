@@ -1,5 +1,6 @@
 #include "simcore/scene/Clip.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -26,6 +27,8 @@ constexpr std::array<ClipSpec, kClipCount> kClips{{
     {"sit", 6.0f},          // a breath and a glance while seated
     {"shift_weight", 8.0f}, // the weight onto one leg, held, then onto the other
     {"point", 2.0f},        // an arm pointing ahead, the hand bobbing once
+    {"fall", 1.2f},         // knees give, onto the ground and back: played once, then lying
+    {"get_up", 2.0f},       // from lying back onto the feet: played once, then standing
 }};
 
 }  // namespace
@@ -48,6 +51,14 @@ float clipCycleS(Clip clip)
 {
     const auto c = std::size_t(clip);
     return c < kClips.size() ? kClips[c].cycleS : 0.0f;
+}
+
+float oneShotProgress(Clip clip, double sinceS)
+{
+    const float cycle = clipCycleS(clip);
+    if (!(cycle > 0.0f) || !(sinceS > 0.0))
+        return 0.0f;
+    return float(std::min(1.0, sinceS / double(cycle)));
 }
 
 float actionPhase(Clip clip, double timeS, std::uint32_t agentId)

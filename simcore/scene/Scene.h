@@ -44,7 +44,7 @@ struct Variation {
 // Names of a character file's clips to use; empty = found by name (idle/stand, walk, run).
 struct CharacterClips {
     std::string idle, walk, run;
-    // Action (one of Clip.h's: wait, look_around, wave, talk, phone, cheer) -> the file's
+    // Action (one of Clip.h's actions: wait, look_around, wave, …, fall, get_up) -> the file's
     // clip that plays it; an action without one plays the locomotion its speed gives.
     std::vector<std::pair<std::string, std::string>> actions;
     bool operator==(const CharacterClips&) const = default;
@@ -90,6 +90,9 @@ struct AgentType {
     std::uint32_t layer = 0;                  // collision layer, 0..31
     std::uint32_t collidesWith = 0xffffffffu; // bit k set = avoids agents on layer k
     Navigation navigation = Navigation::Direct;  // walkers with a goal only
+    // Seconds every action blends in and out over on this type's agents; < 0 = each
+    // action's own (Clip.h's clips: a few tenths of a second, sit 0.8 s).
+    float actionBlendS = -1.0f;
     bool operator==(const AgentType&) const = default;
 };
 

@@ -4,6 +4,7 @@
 // and phase pick the nearest pose.
 #include "TestRegistry.h"
 
+#include "editor/viewport/AgentCharacters.h"
 #include "editor/viewport/PoseTable.h"
 #include "export/character/BuiltinCharacters.h"
 #include "export/character/Gait.h"
@@ -52,6 +53,16 @@ std::vector<glm::vec3> skinnedAt(const exporting::Character& c, const exporting:
     for (std::size_t v = 0; v < out.size(); ++v)
         out[v] = skinnedVertex(c, globals, v);
     return out;
+}
+
+constexpr int kOneShotSamples = 16;  // the humanoid's fall and get_up
+
+float topOf(const PoseTable& table, int pose)
+{
+    float y = -1e9f;
+    for (std::size_t v = 0; v < table.vertexCount; ++v)
+        y = std::max(y, table.positions[std::size_t(pose) * table.vertexCount + v].y);
+    return y;
 }
 
 }  // namespace
@@ -151,8 +162,14 @@ private slots:
             for (int k = 0; k < PoseTable::kActionPoses; ++k) {
                 exporting::GaitFrame standing;
                 standing.moveWeight = 0.0f;
-                standing.action = {index, double(k) / PoseTable::kActionPoses, 1.0f};
+                // A one-shot's poses run from its first sample to its held last one.
+                const double last = double(kOneShotSamples - 1) / kOneShotSamples;
+                const double phase = table.oneShot[std::size_t(a)] ? last * k / (PoseTable::kActionPoses - 1)
+                                                                   : double(k) / PoseTable::kActionPoses;
+                standing.action = {index, phase, 1.0f};
                 QVERIFY(maxDistance(table, PoseTable::actionPose(a, k), skinned(standing)) < 1e-4f);
+                if (table.oneShot[std::size_t(a)])
+                    continue;  // played in full, moving or not: no walking poses shown
                 exporting::GaitFrame walking;
                 walking.phase = double(k) / PoseTable::kWalkPoses;
                 walking.action = {index, 0.5, 1.0f};
@@ -172,6 +189,67 @@ private slots:
         // place, as in walk pose 2), and the hand is up.
         QVERIFY(top(PoseTable::walkingActionPose(wave, 2)) > top(0) + 0.15f);
         QVERIFY(maxDistance(table, PoseTable::walkingActionPose(wave, 2), skinnedAt(man, man.idle, 0.0)) > 0.15f);
+    }
+
+    // Fall and get_up play once: the viewport shows the pose for how far the agent is into
+    // it (from its start, held at its end), moving or not; a fall's first pose stands, its
+    // last lies on the ground, and getting up is the way back.
+    void oneShotsPlayFromTheirStartAndHoldTheirEnd()
+    {
+        const exporting::Character man = *exporting::makeBuiltinCharacter("man", exporting::Lod::Mid);
+        const PoseTable table = buildPoseTable(man);
+        const int fall = int(sim::Clip::Fall) - int(sim::Clip::Wait);
+        const int getUp = int(sim::Clip::GetUp) - int(sim::Clip::Wait);
+        const int wave = int(sim::Clip::Wave) - int(sim::Clip::Wait);
+        const int end = PoseTable::kActionPoses - 1;
+        QVERIFY(table.oneShot[std::size_t(fall)] && table.oneShot[std::size_t(getUp)]);
+        QVERIFY(!table.oneShot[std::size_t(wave)]);
+        QCOMPARE(table.poseFor(sim::Clip::Fall, 0.3f, 0.0f, false), PoseTable::actionPose(fall, 0));
+        QCOMPARE(table.poseFor(sim::Clip::Fall, 0.3f, 1.0f, true), PoseTable::actionPose(fall, end));
+        QCOMPARE(table.poseFor(sim::Clip::Fall, 0.3f, 0.5f, true), PoseTable::actionPose(fall, 4));
+        QCOMPARE(table.poseFor(sim::Clip::GetUp, 0.0f, 7.0f, false), PoseTable::actionPose(getUp, end));
+        const QString tops = QString("fall %1 .. %2, get_up %3 .. %4 m")
+                                 .arg(topOf(table, PoseTable::actionPose(fall, 0)))
+                                 .arg(topOf(table, PoseTable::actionPose(fall, PoseTable::kActionPoses - 1)))
+                                 .arg(topOf(table, PoseTable::actionPose(getUp, 0)))
+                                 .arg(topOf(table, PoseTable::actionPose(getUp, PoseTable::kActionPoses - 1)));
+        QVERIFY2(topOf(table, PoseTable::actionPose(fall, 0)) > 1.6f, qPrintable(tops));
+        QVERIFY2(topOf(table, PoseTable::actionPose(fall, PoseTable::kActionPoses - 1)) < 0.5f, qPrintable(tops));
+        QVERIFY2(topOf(table, PoseTable::actionPose(getUp, 0)) < 0.5f, qPrintable(tops));
+        QVERIFY2(topOf(table, PoseTable::actionPose(getUp, PoseTable::kActionPoses - 1)) > 1.6f, qPrintable(tops));
+        // Down on the way: every pose of the fall is no higher than the one before.
+        for (int k = 1; k < PoseTable::kActionPoses; ++k)
+            QVERIFY(topOf(table, PoseTable::actionPose(fall, k)) <=
+                    topOf(table, PoseTable::actionPose(fall, k - 1)) + 0.02f);
+    }
+
+    // How long an agent has played its one-shot, counted back through the recorded frames:
+    // 0 on the frame it switched, a frame's time per frame after, and no further back than
+    // the clip lasts (it holds its end after that); 0 for agents playing anything else.
+    void clipSinceCountsBackToTheSwitch()
+    {
+        sim::FrameCache cache;
+        cache.reset({{1, 0}, {2, 0}}, 24.0f);
+        for (int f = 0; f < 105; ++f) {
+            sim::AgentFrame a, b;
+            a.clip = f < 5 ? sim::Clip::Idle : sim::Clip::Fall;
+            b.clip = f < 50 ? sim::Clip::Wave : sim::Clip::GetUp;
+            cache.append(std::vector<sim::AgentFrame>{a, b});
+        }
+        std::vector<float> since;
+        clipSinceS(cache, 5, since);
+        QCOMPARE(since, (std::vector<float>{0.0f, 0.0f}));
+        clipSinceS(cache, 8, since);
+        QCOMPARE(since[0], 3.0f / 24.0f);
+        QCOMPARE(since[1], 0.0f);  // a wave loops by time, not from its start
+        clipSinceS(cache, 104, since);
+        QVERIFY(since[0] >= sim::clipCycleS(sim::Clip::Fall));
+        QCOMPARE(sim::oneShotProgress(sim::Clip::Fall, since[0]), 1.0f);
+        QVERIFY(since[1] >= sim::clipCycleS(sim::Clip::GetUp) && since[1] < 54.0f / 24.0f);  // only as far as needed
+        QCOMPARE(sim::oneShotProgress(sim::Clip::GetUp, since[1]), 1.0f);
+        clipSinceS(cache, 60, since);
+        QCOMPARE(since[1], 10.0f / 24.0f);
+        QCOMPARE(sim::oneShotProgress(sim::Clip::GetUp, since[1]), float((10.0 / 24.0) / 2.0));
     }
 };
 

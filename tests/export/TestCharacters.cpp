@@ -400,6 +400,53 @@ private slots:
         QCOMPARE(computeGait(man, still, zero, AgentVariation{}, {waving, phases, 24.0f})[0].action.weight, 1.0f);
     }
 
+    // Fall and get_up play once from the frame they start: the phase runs from the first
+    // sample to the last over the clip's length and then holds it, so the hips go down and
+    // stay down until get_up brings them back. A type's action_blend replaces the clip's
+    // own blend time (here a second instead of 0.15 s).
+    void oneShotsPlayOnceAndHoldWithTheTypesBlend()
+    {
+        const Character man = builtin("man");
+        const int fall = man.actionIndex("fall"), getUp = man.actionIndex("get_up");
+        QVERIFY(fall >= 0 && getUp >= 0 && man.actions[std::size_t(fall)].oneShot &&
+                man.actions[std::size_t(getUp)].oneShot && !man.actions[std::size_t(man.actionIndex("wave"))].oneShot);
+        constexpr float kFps = 24.0f;
+        const std::size_t frames = 24 * 9, fallAt = 24, getUpAt = 24 + 72;  // idle for 2 s after
+        std::vector<glm::vec3> positions(frames, glm::vec3(0.0f));
+        std::vector<float> speeds(frames, 0.0f), phases(frames, 0.0f);
+        std::vector<sim::Clip> clips(frames, sim::Clip::Idle);
+        for (std::size_t f = fallAt; f < getUpAt; ++f)
+            clips[f] = sim::Clip::Fall;
+        for (std::size_t f = getUpAt; f < getUpAt + 72; ++f)
+            clips[f] = sim::Clip::GetUp;
+        const double last = 15.0 / 16.0;  // the last of 16 samples
+        for (const float blendS : {-1.0f, 1.0f}) {
+            const std::vector<GaitFrame> gait = computeGait(man, positions, speeds, AgentVariation{},
+                                                            {clips, phases, kFps, blendS});
+            QCOMPARE(gait[fallAt].action.action, fall);
+            QCOMPARE(gait[fallAt].action.phase, 0.0);
+            QCOMPARE(gait[fallAt].action.weight, 0.0f);
+            QVERIFY(std::abs(gait[fallAt + 12].action.phase - last * 0.5 / 1.2) < 1e-6);
+            QCOMPARE(gait[fallAt + 40].action.phase, last);  // 1.67 s in: held at the end
+            QCOMPARE(gait[getUpAt - 1].action.phase, last);
+            // The blend: 0.15 s of the clip's own, or the type's second.
+            const float halfSecond = gait[fallAt + 12].action.weight;
+            QVERIFY2(blendS < 0.0f ? halfSecond == 1.0f : std::abs(halfSecond - 0.5f) < 1e-4f,
+                     qPrintable(QString::number(halfSecond)));
+            const auto hipsY = [&](std::size_t f) {
+                return jointGlobalTransforms(man, gaitPose(man, gait[f]))[0][3].y;
+            };
+            const float standing = hipsY(fallAt - 1);
+            QVERIFY2(standing > 0.85f, qPrintable(QString::number(standing)));
+            for (std::size_t f = fallAt + 48; f < getUpAt; ++f)  // 2 s in: lying, and held
+                QVERIFY2(hipsY(f) < 0.3f && std::abs(hipsY(f) - hipsY(getUpAt - 1)) < 1e-5f,
+                         qPrintable(QString("frame %1: hips %2 m").arg(f).arg(hipsY(f))));
+            QVERIFY(hipsY(getUpAt + 24) > 0.3f);               // getting up, half-way
+            QVERIFY(std::abs(hipsY(getUpAt + 60) - standing) < 0.02f);  // up after its 2 s and the blend
+            QVERIFY(std::abs(hipsY(frames - 1) - standing) < 1e-4f);   // and idle again, blended back
+        }
+    }
+
     // Sitting down is slower than a wave: the clip's own 0.8 s blend, at any frame rate.
     // Seated, the hips are 40 cm lower, the thighs level and the ankles where standing put
     // them; getting up takes the same time. A weight shift holds the feet too.

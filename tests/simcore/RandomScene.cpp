@@ -67,6 +67,7 @@ sim::Scene makeRandomScene(std::uint32_t seed, std::uint32_t agentCount)
         type.priorityCombination = t == 1;
         type.minSpeed = t == 2 ? f(0, type.maxSpeed) : 0.0f;
         type.banking = t == 2 ? f(0, 0.2f) : 0.0f;
+        type.actionBlendS = t == 0 ? f(0, 1.5f) : -1.0f;  // set on one type, each action's own on the others
         s.agentTypes.push_back(type);
     }
     s.goals = {{"exit", pt(), f(0.5f, 3)}, {"door", pt(), 1.0f}};

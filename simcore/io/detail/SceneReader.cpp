@@ -7,6 +7,7 @@
 #include "simcore/world/TypeSteering.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <optional>
@@ -237,7 +238,7 @@ void SceneReader::readAgentTypes(const YAML::Node& node, Scene& scene)
         m_f.checkKeys(item, key, {"name", "kind", "radius", "max_speed", "max_force", "mass", "perception",
                                   "view_angle", "brain", "character", "clips", "variation", "behaviours", "combination",
                                   "min_speed", "banking", "emits", "priority", "layer", "collides_with",
-                                  "navigation"});
+                                  "navigation", "action_blend"});
         AgentType t;
         if (!m_f.readName(item, "name", key, t.name, true))
             continue;
@@ -279,9 +280,10 @@ void SceneReader::readAgentTypes(const YAML::Node& node, Scene& scene)
                           "character file '" + resolvePath(m_baseDir, t.character) + "' does not exist");
         }
         if (YAML::Node c = item["clips"]; c.IsDefined() && m_f.expectMap(c, key + ".clips")) {
-            m_f.checkKeys(c, key + ".clips",
-                          {"idle", "walk", "run", "wait", "look_around", "wave", "talk", "phone", "cheer", "sit",
-                           "shift_weight", "point"});
+            std::array<const char*, kClipCount> clipKeys{};  // every clip's name (Clip.h)
+            for (int k = 0; k < kClipCount; ++k)
+                clipKeys[std::size_t(k)] = toString(Clip(k));
+            m_f.checkKeys(c, key + ".clips", clipKeys);
             m_f.readString(c, "idle", key + ".clips", t.clips.idle, false);
             m_f.readString(c, "walk", key + ".clips", t.clips.walk, false);
             m_f.readString(c, "run", key + ".clips", t.clips.run, false);
@@ -307,6 +309,7 @@ void SceneReader::readAgentTypes(const YAML::Node& node, Scene& scene)
         if (m_f.readFloat(item, "min_speed", key, t.minSpeed, false, Range::NonNegative) && t.minSpeed > t.maxSpeed)
             m_f.error(item["min_speed"].Mark(), key + ".min_speed", "is above max_speed");
         m_f.readFloat(item, "banking", key, t.banking, false, Range::NonNegative);
+        m_f.readFloat(item, "action_blend", key, t.actionBlendS, false, Range::NonNegative);
         if (YAML::Node e = item["emits"]; e.IsDefined())
             readEmission(e, key + ".emits", t.emits);
         std::string navigation = "direct";

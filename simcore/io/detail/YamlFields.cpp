@@ -121,6 +121,11 @@ bool YamlFields::expectSequence(const YAML::Node& node, const std::string& key)
 
 void YamlFields::checkKeys(const YAML::Node& map, const std::string& key, std::initializer_list<const char*> allowed)
 {
+    checkKeysImpl(map, key, std::span<const char* const>(allowed.begin(), allowed.size()), true);
+}
+
+void YamlFields::checkKeys(const YAML::Node& map, const std::string& key, std::span<const char* const> allowed)
+{
     checkKeysImpl(map, key, allowed, true);
 }
 
@@ -130,7 +135,7 @@ void YamlFields::checkDuplicateKeys(const YAML::Node& map, const std::string& ke
 }
 
 void YamlFields::checkKeysImpl(const YAML::Node& map, const std::string& key,
-                               std::initializer_list<const char*> allowed, bool warnUnknown)
+                               std::span<const char* const> allowed, bool warnUnknown)
 {
     std::map<std::string, int> seen;
     for (auto it = map.begin(); it != map.end(); ++it) {

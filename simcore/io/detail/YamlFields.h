@@ -13,6 +13,7 @@
 
 #include <cstdint>
 #include <initializer_list>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -35,6 +36,7 @@ public:
     bool expectSequence(const YAML::Node& node, const std::string& key);
     // Warns about keys not in `allowed`; reports duplicate keys as errors.
     void checkKeys(const YAML::Node& map, const std::string& key, std::initializer_list<const char*> allowed);
+    void checkKeys(const YAML::Node& map, const std::string& key, std::span<const char* const> allowed);
     // Reports duplicate keys only, for maps whose keys are data (behaviours, params).
     void checkDuplicateKeys(const YAML::Node& map, const std::string& key);
 
@@ -70,7 +72,7 @@ public:
 
 private:
     YAML::Node find(const YAML::Node& map, const char* name, const std::string& key, bool required);
-    void checkKeysImpl(const YAML::Node& map, const std::string& key, std::initializer_list<const char*> allowed,
+    void checkKeysImpl(const YAML::Node& map, const std::string& key, std::span<const char* const> allowed,
                        bool warnUnknown);
     bool inRange(float v, Range range, const YAML::Mark& at, const std::string& key);
     // Coordinates past SceneLimits' kMaxCoordinateM are errors (their squares overflow).
