@@ -76,8 +76,12 @@ PoseTable buildPoseTable(const exporting::Character& character)
     table.hasIdle = character.hasIdle;
     table.positions.reserve(table.vertexCount * PoseTable::kPoseCount);
     table.normals.reserve(table.vertexCount * PoseTable::kPoseCount);
+    table.jointCount = character.joints.size();
+    table.joints.reserve(table.jointCount * PoseTable::kPoseCount);
     std::vector<glm::vec3> p, n;
     auto add = [&](const exporting::Pose& pose) {
+        const std::vector<glm::mat4> globals = exporting::jointGlobalTransforms(character, pose);
+        table.joints.insert(table.joints.end(), globals.begin(), globals.end());
         skinMesh(character, pose, p, n);
         table.positions.insert(table.positions.end(), p.begin(), p.end());
         table.normals.insert(table.normals.end(), n.begin(), n.end());

@@ -6,6 +6,7 @@
 #include "export/character/Character.h"
 #include "simcore/world/FrameCache.h"
 
+#include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
 #include <cstdint>
@@ -27,6 +28,9 @@ struct PoseTable {
     std::vector<glm::vec3> normals;            // unit length, same layout
     std::vector<std::uint32_t> indices;        // the mesh's triangles, into one pose's vertices
     std::vector<std::uint8_t> materialSlots;   // per vertex of a pose: its part's MaterialSlot
+    std::size_t jointCount = 0;                // joints of the character
+    std::vector<glm::mat4> joints;             // pose-major: pose p's joint j's transform at p * jointCount + j,
+                                               // in the character's space (where the pose puts each joint)
     bool hasIdle = true;                       // false: a stopped agent holds the walk (wheels, wings)
     std::vector<std::uint8_t> hasAction;       // per action (kActions): the character plays it
     std::vector<std::uint8_t> oneShot;         // per action: played once and held (fall, get_up)
