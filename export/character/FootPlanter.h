@@ -4,9 +4,10 @@
 // ankle is pinned where it touched down — through walk/run blends, stops, starts and turns
 // — and when the clip lifts it, it eases back to the clip over a short release. A standing
 // agent's foot that the body has turned or moved away from steps to where the clip wants
-// it (a walker's feet lift soon enough by themselves). Each
-// ankle stands on the terrain under it, the hips drop as far as the lower leg needs, and a
-// planted sole tilts with the slope. Pure: the same inputs give the same poses.
+// it (a walker's feet lift soon enough by themselves). Each ankle stands on the terrain
+// under it, the hips drop as far as the lower leg needs, and a planted sole tilts with the
+// slope. A one-shot action (a fall) moves the feet as its clip does. Pure: the same inputs
+// give the same poses.
 
 #include "export/character/Gait.h"
 
@@ -43,8 +44,7 @@ public:
     Pose next();
     std::size_t frame() const { return m_frame; }
 
-    // Ankle height above a sole on the ground under it, in the character's space (m at
-    // scale 1): where the idle pose plants the ankle.
+    // Lengths in m at scale 1 (times the agent's height scale), times in s.
     static constexpr float kDownM = 0.015f;       // a clip's ankle this near its planted height is down
     static constexpr float kReleaseS = 0.2f;      // a lifted foot eases back to the clip over this
     static constexpr float kStepLiftM = 0.05f;    // a standing foot's re-step lifts it this high
