@@ -144,14 +144,23 @@ int Character::actionIndex(std::string_view name) const
 
 std::vector<glm::mat4> jointGlobalTransforms(const Character& character, const Pose& pose)
 {
-    std::vector<glm::mat4> global(character.joints.size());
+    std::vector<glm::mat4> global;
+    jointGlobalTransforms(character, pose, std::vector<std::uint8_t>(character.joints.size(), 1), global);
+    return global;
+}
+
+void jointGlobalTransforms(const Character& character, const Pose& pose, const std::vector<std::uint8_t>& wanted,
+                           std::vector<glm::mat4>& out)
+{
+    out.resize(character.joints.size());
     for (std::size_t j = 0; j < character.joints.size(); ++j) {
+        if (j >= wanted.size() || !wanted[j])
+            continue;
         const Joint& joint = character.joints[j];
         const glm::vec3 t = j == 0 ? pose.rootTranslation : joint.restTranslation;
         const glm::mat4 local = localTransform(joint, t, pose.rotations[j]);
-        global[j] = joint.parent < 0 ? local : global[static_cast<std::size_t>(joint.parent)] * local;
+        out[j] = joint.parent < 0 ? local : out[static_cast<std::size_t>(joint.parent)] * local;
     }
-    return global;
 }
 
 Pose restPose(const Character& character)

@@ -118,6 +118,10 @@ Pose blendPoses(const Pose& a, const Pose& b, float t);
 Pose blendPosesLayered(const Pose& a, const Pose& b, const std::vector<std::uint8_t>& layered, float t, float rest);
 // Each joint's transform in the character's space for `pose` (rest translation, pose rotation).
 std::vector<glm::mat4> jointGlobalTransforms(const Character& character, const Pose& pose);
+// The same into `out` (resized to the joint count) for only the joints `wanted` marks, which
+// must mark each one's parent too (a leg's chain without the arms); the others are left.
+void jointGlobalTransforms(const Character& character, const Pose& pose, const std::vector<std::uint8_t>& wanted,
+                           std::vector<glm::mat4>& out);
 // The rest pose: rest rotations and the rest translation of joint 0.
 Pose restPose(const Character& character);
 // Inverse bind matrices of the rest pose, in the character's space.

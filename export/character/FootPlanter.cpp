@@ -36,8 +36,12 @@ float angleBetween(float a, float b)
 
 FootPlanter::FootPlanter(const Character& c, std::span<const GaitFrame> gait, const RootMotion& motion,
                          const sim::Terrain& terrain)
-    : m_character(c), m_gait(gait), m_motion(motion), m_terrain(terrain), m_feet(c.legs.size())
+    : m_character(c), m_gait(gait), m_motion(motion), m_terrain(terrain), m_feet(c.legs.size()),
+      m_legJoints(c.joints.size(), 0), m_targets(c.legs.size()), m_stance(c.legs.size())
 {
+    for (const Leg& leg : c.legs)
+        for (int j = leg.foot; j >= 0; j = c.joints[static_cast<std::size_t>(j)].parent)
+            m_legJoints[static_cast<std::size_t>(j)] = 1;
 }
 
 float FootPlanter::groundAt(glm::vec2 p, const glm::vec3& root) const
@@ -72,10 +76,12 @@ Pose FootPlanter::next()
     const auto toWorld = [&](const glm::vec3& p) { return root + yaw * (s * p); };
     const auto toCharacter = [&](const glm::vec3& w) { return unyaw * (w - root) / s; };
 
-    std::vector<glm::mat4> g = jointGlobalTransforms(c, pose);
+    // Only the legs' chains: the arms and head are the clip's and never read here.
+    jointGlobalTransforms(c, pose, m_legJoints, m_globals);
+    std::vector<glm::mat4>& g = m_globals;
     const std::size_t legs = c.legs.size();
-    std::vector<glm::vec3> target(legs);
-    std::vector<float> stance(legs);
+    std::vector<glm::vec3>& target = m_targets;
+    std::vector<float>& stance = m_stance;
     // A one-shot (fall, get_up) moves the feet as its clip does: the planting gives way to
     // it as it blends in, and no foot locks until it has blended out.
     float oneShot = 0.0f;
@@ -151,8 +157,9 @@ Pose FootPlanter::next()
     drop = std::min(drop, kMaxDropM * s) * (1.0f - oneShot);
     if (drop > kKeepM * s) {
         pose.rootTranslation.y -= drop / s;
-        for (glm::mat4& m : g)
-            m[3].y -= drop / s;
+        for (std::size_t j = 0; j < g.size(); ++j)
+            if (m_legJoints[j])
+                g[j][3].y -= drop / s;
     }
 
     for (std::size_t i = 0; i < legs; ++i) {

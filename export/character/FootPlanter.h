@@ -12,10 +12,12 @@
 #include "export/character/Gait.h"
 
 #include <glm/gtc/quaternion.hpp>
+#include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include <cstddef>
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -72,6 +74,10 @@ private:
     const sim::Terrain& m_terrain;
     std::vector<Foot> m_feet;
     std::size_t m_frame = 0;
+    std::vector<std::uint8_t> m_legJoints;  // the legs' joints and their ancestors
+    std::vector<glm::mat4> m_globals;       // scratch: the legs' joint transforms this frame
+    std::vector<glm::vec3> m_targets;       // scratch: per leg, where its ankle goes
+    std::vector<float> m_stance;            // scratch: per leg, how far it stands
 };
 
 }  // namespace throng::exporting
