@@ -142,25 +142,37 @@ int Character::actionIndex(std::string_view name) const
     return -1;
 }
 
-std::vector<glm::mat4> jointGlobalTransforms(const Character& character, const Pose& pose)
-{
-    std::vector<glm::mat4> global;
-    jointGlobalTransforms(character, pose, std::vector<std::uint8_t>(character.joints.size(), 1), global);
-    return global;
-}
+namespace {
 
-void jointGlobalTransforms(const Character& character, const Pose& pose, const std::vector<std::uint8_t>& wanted,
-                           std::vector<glm::mat4>& out)
+// Each joint's transform in the character's space into `out`, for the joints `wanted` marks
+// (nullptr: all of them); parents come before their children.
+void fillGlobals(const Character& character, const Pose& pose, const std::vector<std::uint8_t>* wanted,
+                 std::vector<glm::mat4>& out)
 {
     out.resize(character.joints.size());
     for (std::size_t j = 0; j < character.joints.size(); ++j) {
-        if (j >= wanted.size() || !wanted[j])
+        if (wanted && (j >= wanted->size() || !(*wanted)[j]))
             continue;
         const Joint& joint = character.joints[j];
         const glm::vec3 t = j == 0 ? pose.rootTranslation : joint.restTranslation;
         const glm::mat4 local = localTransform(joint, t, pose.rotations[j]);
         out[j] = joint.parent < 0 ? local : out[static_cast<std::size_t>(joint.parent)] * local;
     }
+}
+
+}  // namespace
+
+std::vector<glm::mat4> jointGlobalTransforms(const Character& character, const Pose& pose)
+{
+    std::vector<glm::mat4> global;
+    fillGlobals(character, pose, nullptr, global);
+    return global;
+}
+
+void jointGlobalTransforms(const Character& character, const Pose& pose, const std::vector<std::uint8_t>& wanted,
+                           std::vector<glm::mat4>& out)
+{
+    fillGlobals(character, pose, &wanted, out);
 }
 
 Pose restPose(const Character& character)
