@@ -12,6 +12,7 @@
 #include <glm/mat4x4.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 
@@ -75,7 +76,6 @@ ActionClip makeOneShot(const Character& c, sim::Clip clip, const std::function<v
 // and each leg's hip and knee bends, all about Z (+ = the thigh forward, the trunk back),
 // with the ankles at `ankleForward` m ahead of where standing put them.
 struct FallKey {
-    float u;                  // progress at this key
     float trunk, hip, knee;   // rad
     float spine, neck;        // rad, about Z
     float armForward, armOut; // upper arms: about Z (forward), about X (out to the side)
@@ -85,18 +85,29 @@ struct FallKey {
 
 // Standing, crouched with the knees giving way, sitting on the ground leaning back on the
 // hands, lying on the back.
-constexpr FallKey kStand{0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f};
-constexpr FallKey kCrouch{0.0f, -0.15f, 1.4f, -1.9f, -0.1f, 0.1f, 0.8f, 0.15f, 0.6f, 0.0f};
-constexpr FallKey kSitDown{0.0f, 0.3f, 1.9f, -1.6f, 0.0f, -0.1f, -0.6f, 0.25f, 0.2f, 0.0f};
-constexpr FallKey kLying{0.0f, 1.45f, 0.05f, -0.1f, 0.0f, -0.3f, 0.05f, 0.3f, 0.1f, 0.25f};
+constexpr FallKey kStand{0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f};
+constexpr FallKey kCrouch{-0.15f, 1.4f, -1.9f, -0.1f, 0.1f, 0.8f, 0.15f, 0.6f, 0.0f};
+constexpr FallKey kSitDown{0.3f, 1.9f, -1.6f, 0.0f, -0.1f, -0.6f, 0.25f, 0.2f, 0.0f};
+constexpr FallKey kLying{1.45f, 0.05f, -0.1f, 0.0f, -0.3f, 0.05f, 0.3f, 0.1f, 0.25f};
 
-FallKey fallKeyAt(float u, FallKey a, float ua, FallKey b, float ub)
+// Four keys at progress 0, `at[0]`, `at[1]` and 1, eased in and out between neighbours.
+struct FallPath {
+    std::array<FallKey, 4> keys;
+    std::array<float, 2> at;
+};
+constexpr FallPath kFalling{{kStand, kCrouch, kSitDown, kLying}, {0.3f, 0.6f}};
+constexpr FallPath kGettingUp{{kLying, kSitDown, kCrouch, kStand}, {0.35f, 0.7f}};
+
+FallKey fallKeyAt(float u, const FallPath& path)
 {
-    float t = std::clamp((u - ua) / (ub - ua), 0.0f, 1.0f);
+    const float times[4] = {0.0f, path.at[0], path.at[1], 1.0f};
+    const int k = u < times[1] ? 0 : (u < times[2] ? 1 : 2);
+    const FallKey& a = path.keys[std::size_t(k)];
+    const FallKey& b = path.keys[std::size_t(k + 1)];
+    float t = std::clamp((u - times[k]) / (times[k + 1] - times[k]), 0.0f, 1.0f);
     t = t * t * (3.0f - 2.0f * t);
     const auto mix = [t](float x, float y) { return x + (y - x) * t; };
-    return {u,
-            mix(a.trunk, b.trunk),
+    return {mix(a.trunk, b.trunk),
             mix(a.hip, b.hip),
             mix(a.knee, b.knee),
             mix(a.spine, b.spine),
@@ -258,24 +269,8 @@ void addHumanoidActions(Character& c, float scale)
         p.rotations[kLowerArmL] = aboutZ(k.elbow);
         p.rotations[kLowerArmR] = aboutZ(k.elbow);
     };
-    c.actions.push_back(makeOneShot(
-        c, sim::Clip::Fall,
-        [&](float u, Pose& p) {
-            const FallKey k = u < 0.3f   ? fallKeyAt(u, kStand, 0.0f, kCrouch, 0.3f)
-                              : u < 0.6f ? fallKeyAt(u, kCrouch, 0.3f, kSitDown, 0.6f)
-                                         : fallKeyAt(u, kSitDown, 0.6f, kLying, 1.0f);
-            posed(k, p);
-        },
-        0.15f));
-    c.actions.push_back(makeOneShot(
-        c, sim::Clip::GetUp,
-        [&](float u, Pose& p) {
-            const FallKey k = u < 0.35f  ? fallKeyAt(u, kLying, 0.0f, kSitDown, 0.35f)
-                              : u < 0.7f ? fallKeyAt(u, kSitDown, 0.35f, kCrouch, 0.7f)
-                                         : fallKeyAt(u, kCrouch, 0.7f, kStand, 1.0f);
-            posed(k, p);
-        },
-        0.15f));
+    for (const auto& [clip, path] : {std::pair{sim::Clip::Fall, kFalling}, std::pair{sim::Clip::GetUp, kGettingUp}})
+        c.actions.push_back(makeOneShot(c, clip, [&](float u, Pose& p) { posed(fallKeyAt(u, path), p); }, 0.15f));
 }
 
 }  // namespace throng::exporting
