@@ -66,16 +66,6 @@ brains:
 constexpr float kFps = 24.0f;
 constexpr std::size_t kFrames = 9 * 24;
 
-// Joint `joint` (by the humanoid's names) of agent `root` in the file at time t.
-glm::vec3 fileJoint(const tinygltf::Model& model, const std::string& root, const std::vector<std::string>& chain,
-                    float t)
-{
-    glm::mat4 m = test::nodeLocalAt(model, test::nodeNamed(model, root), t);
-    for (const std::string& j : chain)
-        m = m * test::nodeLocalAt(model, test::nodeNamed(model, root + "__" + j), t);
-    return glm::vec3(m[3]);
-}
-
 const std::vector<std::string> kHead{"hips", "spine", "chest", "neck", "head"};
 const std::vector<std::string> kRightHand{"hips", "spine", "chest", "upper_arm_r", "lower_arm_r", "hand_r"};
 constexpr int kHeadJoint = 4, kRightHandJoint = 10;  // the humanoid skeleton's order (BuiltinCharacters.h)
@@ -160,10 +150,10 @@ private slots:
         for (const auto& [joint, chain] : {std::pair{kHeadJoint, kHead}, std::pair{kRightHandJoint, kRightHand}}) {
             const glm::vec3 shown = viewportJoint(characters, f, i, joint);
             const float t = float(f) / kFps;
-            const glm::vec3 written = fileJoint(m_model, root, chain, t);
+            const glm::vec3 written = test::jointWorldAt(m_model, root, chain, t);
             float toleranceM = 0.01f;
             for (const float side : {-0.5f, 0.5f}) {
-                const glm::vec3 near = fileJoint(m_model, root, chain, t + side * poseStepS);
+                const glm::vec3 near = test::jointWorldAt(m_model, root, chain, t + side * poseStepS);
                 toleranceM = std::max(toleranceM, 0.01f + glm::distance(written, near));
             }
             const QString what = QString("joint %1: viewport (%2, %3, %4), file (%5, %6, %7), within %8 m")

@@ -145,4 +145,20 @@ glm::mat4 nodeLocalAt(const tinygltf::Model& model, int node, float t)
     return glm::translate(glm::mat4(1.0f), tr) * glm::mat4_cast(r) * glm::scale(glm::mat4(1.0f), sc);
 }
 
+glm::vec3 jointWorldAt(const tinygltf::Model& model, const std::string& root, const std::vector<std::string>& joints,
+                       float t)
+{
+    const int rootNode = nodeNamed(model, root);
+    if (rootNode < 0)
+        return glm::vec3(NAN);
+    glm::mat4 m = nodeLocalAt(model, rootNode, t);
+    for (const std::string& j : joints) {
+        const int node = nodeNamed(model, root + "__" + j);
+        if (node < 0)
+            return glm::vec3(NAN);
+        m = m * nodeLocalAt(model, node, t);
+    }
+    return glm::vec3(m[3]);
+}
+
 }  // namespace throng::test

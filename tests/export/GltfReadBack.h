@@ -4,6 +4,7 @@
 // Test-only.
 
 #include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
 #include <tiny_gltf.h>
 
 #include <cstdint>
@@ -28,5 +29,9 @@ std::vector<float> evaluateChannel(const tinygltf::Model& model, int node, const
 glm::mat4 nodeLocalAt(const tinygltf::Model& model, int node, float t);
 // Index of the node named `name`, or -1.
 int nodeNamed(const tinygltf::Model& model, const std::string& name);
+// World position at time t of the last of `joints`, the chain of nodes under the agent
+// node `root` named `<root>__<joint>` (the exporter's names); NaN when a node is missing.
+glm::vec3 jointWorldAt(const tinygltf::Model& model, const std::string& root, const std::vector<std::string>& joints,
+                       float t);
 
 }  // namespace throng::test

@@ -68,15 +68,7 @@ constexpr std::size_t kFrames = 16 * 24;
 glm::vec3 jointAt(const tinygltf::Model& model, int agent, const std::vector<std::string>& joints, float t,
                   const std::string& type = "walker")
 {
-    const std::string root = "agent_" + std::to_string(agent) + "_" + type;
-    glm::mat4 m = test::nodeLocalAt(model, test::nodeNamed(model, root), t);
-    for (const std::string& j : joints) {
-        const int node = test::nodeNamed(model, root + "__" + j);
-        if (node < 0)
-            return glm::vec3(NAN);
-        m = m * test::nodeLocalAt(model, node, t);
-    }
-    return glm::vec3(m[3]);
+    return test::jointWorldAt(model, "agent_" + std::to_string(agent) + "_" + type, joints, t);
 }
 
 const std::vector<std::string> kRightHand{"hips", "spine", "chest", "upper_arm_r", "lower_arm_r", "hand_r"};

@@ -51,14 +51,7 @@ brains:
 constexpr float kFps = 24.0f;
 constexpr std::size_t kFrames = 9 * 24;
 
-glm::vec3 jointAt(const tinygltf::Model& model, const std::string& root, const std::vector<std::string>& joints,
-                  float t)
-{
-    glm::mat4 m = test::nodeLocalAt(model, test::nodeNamed(model, root), t);
-    for (const std::string& j : joints)
-        m = m * test::nodeLocalAt(model, test::nodeNamed(model, root + "__" + j), t);
-    return glm::vec3(m[3]);
-}
+using test::jointWorldAt;
 
 const std::vector<std::string> kHead{"hips", "spine", "chest", "neck", "head"};
 const std::vector<std::string> kLeftFoot{"hips", "upper_leg_l", "lower_leg_l", "foot_l"};
@@ -130,7 +123,7 @@ private slots:
         float standing = 0.0f, lowest = 1e9f, highestLying = 0.0f, lowestAfter = 1e9f;
         for (std::size_t f = 0; f < kFrames; ++f) {
             const float t = float(f) / kFps;
-            const float head = jointAt(m_model, root, kHead, t).y;
+            const float head = jointWorldAt(m_model, root, kHead, t).y;
             if (t < 1.0f)
                 standing = std::max(standing, head);
             if (t > 2.5f && t < 4.0f)  // the fall (1.2 s) and its blend (0.15 s) are over
@@ -145,9 +138,9 @@ private slots:
         QVERIFY2(highestLying < 0.45f, qPrintable(what));
         QVERIFY2(lowestAfter > 1.5f && std::abs(lowestAfter - standing) < 0.05f, qPrintable(what));
         // Not before the brain says so: still standing a frame after 1 s.
-        QVERIFY(jointAt(m_model, root, kHead, 1.0f + 1.0f / kFps).y > 1.45f);
+        QVERIFY(jointWorldAt(m_model, root, kHead, 1.0f + 1.0f / kFps).y > 1.45f);
         // Half-way through the fall it is on its way down, neither up nor down.
-        const float halfWay = jointAt(m_model, root, kHead, 1.6f).y;
+        const float halfWay = jointWorldAt(m_model, root, kHead, 1.6f).y;
         QVERIFY2(halfWay < standing - 0.2f && halfWay > highestLying + 0.2f, qPrintable(QString::number(halfWay)));
     }
 
@@ -156,10 +149,10 @@ private slots:
     void theFeetStayPutWhileTheKneesGive()
     {
         const std::string root = "agent_1_faller";
-        const glm::vec3 before = jointAt(m_model, root, kLeftFoot, 0.9f);
+        const glm::vec3 before = jointWorldAt(m_model, root, kLeftFoot, 0.9f);
         float worst = 0.0f;
         for (float t = 1.0f; t < 1.0f + 0.6f * 1.2f; t += 1.0f / kFps) {
-            const glm::vec3 p = jointAt(m_model, root, kLeftFoot, t);
+            const glm::vec3 p = jointWorldAt(m_model, root, kLeftFoot, t);
             worst = std::max(worst, glm::length(glm::vec2(p.x - before.x, p.z - before.z)));
         }
         QVERIFY2(worst < 0.03f, qPrintable(QString("the foot moved %1 m").arg(worst)));
@@ -170,11 +163,11 @@ private slots:
     void theTypesBlendTimeIsUsed()
     {
         const float t = 1.0f + 0.5f;
-        const float quick = jointAt(m_model, "agent_1_faller", kHead, t).y;
-        const float slow = jointAt(m_model, "agent_2_slow_faller", kHead, t).y;
+        const float quick = jointWorldAt(m_model, "agent_1_faller", kHead, t).y;
+        const float slow = jointWorldAt(m_model, "agent_2_slow_faller", kHead, t).y;
         QVERIFY2(slow > quick + 0.1f, qPrintable(QString("head %1 (blend 1 s) vs %2 m").arg(slow).arg(quick)));
         // Both lie in the end.
-        QVERIFY(jointAt(m_model, "agent_2_slow_faller", kHead, 3.8f).y < 0.45f);
+        QVERIFY(jointWorldAt(m_model, "agent_2_slow_faller", kHead, 3.8f).y < 0.45f);
     }
 };
 
