@@ -17,6 +17,7 @@ void writeSceneSet(YamlWriter& w, const Scene& s);
 void writeSceneTraffic(YamlWriter& w, const Scene& s);
 void writeSceneSound(YamlWriter& w, const Scene& s);
 void writeEmission(YamlWriter& w, const SoundEmission& e);
+void writeSceneActionPoints(YamlWriter& w, const Scene& s);
 }  // namespace detail
 
 namespace {
@@ -298,6 +299,7 @@ std::string sceneToYaml(const Scene& s)
     detail::writeSceneSet(w, s);
     detail::writeSceneTraffic(w, s);
     detail::writeSceneSound(w, s);
+    detail::writeSceneActionPoints(w, s);
     writeAgents(w, s);
     o << YAML::EndMap;
     return std::string(o.c_str()) + "\n";

@@ -253,6 +253,25 @@ struct SoundSource {
     bool operator==(const SoundSource&) const = default;
 };
 
+// A place where walkers stop and act (Musse's action points: a shop window, a ticket
+// machine, a bench). A walker of one of `types` (every walker when empty) whose centre
+// enters the disk stops there with the probability `chance`, turns to face `facingDeg`
+// (when `faces`; else it keeps the heading it came with), plays `action` for `durationS`
+// and goes on to its goal or along its path. It stops once per visit: again only after
+// it has left the disk.
+struct ActionPoint {
+    std::string name;
+    glm::vec2 position{0.0f};            // (x, z)
+    float radiusM = 1.0f;                // > 0
+    std::string action = "look_around";  // an action's name (Clip.h): not idle, walk or run
+    float durationS = 4.0f;              // > 0
+    bool faces = false;
+    float facingDeg = 0.0f;              // degrees, 0 = +x, counter-clockwise seen from above
+    float chance = 1.0f;                 // in [0, 1]
+    std::vector<std::string> types;      // agent type names; empty = every walker
+    bool operator==(const ActionPoint&) const = default;
+};
+
 struct Scene {
     static constexpr int kFormatVersion = 1;
     Settings settings;
@@ -271,6 +290,7 @@ struct Scene {
     std::vector<Vehicle> vehicles;
     std::vector<Hero> heroes;
     std::vector<SoundSource> soundSources;
+    std::vector<ActionPoint> actionPoints;
     std::vector<BrainGraph> brains;
     bool operator==(const Scene&) const = default;
 

@@ -43,6 +43,7 @@ void forEachGroundPoint(Scn& s, F&& f, G&& g)
     for (auto& h : s.heroes)
         for (auto& k : h.keyframes) g(k.position);
     for (auto& so : s.soundSources) f(so.position);
+    for (auto& ap : s.actionPoints) f(ap.position);
 }
 
 float shifted(float v, double by) { return float(double(v) - by); }

@@ -1,13 +1,14 @@
 #pragma once
 // The set a World's agents move in, static during a run, in the World's coordinates:
 // walls, obstacles, goals, paths, traffic lights, crosswalks, the sketched flow, the
-// terrain and the walkable bounds. Built once with the World (World.cpp); the step's
+// terrain, the walkable bounds and the action points. Built once with the World (World.cpp); the step's
 // phases read it and never change it.
 
 #include "simcore/base/SegmentGrid.h"
 #include "simcore/scene/Scene.h"
 #include "simcore/scene/TerrainHeight.h"
 #include "simcore/steering/Steering.h"
+#include "simcore/world/ActionPoints.h"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -42,6 +43,7 @@ struct StaticSet {
     std::vector<FlowSegment> flow;
     Terrain terrain;
     WalkableBox bounds;
+    std::vector<ActionPlace> actionPoints;
 
     // Anything to hold walkers out of: walls, box sides or circles (not in an open field).
     bool hasStatics() const { return !walls.segments().empty() || !circles.empty(); }

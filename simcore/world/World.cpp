@@ -214,6 +214,7 @@ void World::buildStatics(const Scene& scene)
         for (std::size_t k = 0; k + 1 < s.points.size(); ++k)
             m_set.flow.push_back({s.points[k], s.points[k + 1], s.widthM * 0.5f});
     m_set.terrain = scene.terrain;
+    m_set.actionPoints = actionPlaces(scene);
     const glm::vec2 lo = scene.settings.boundsMin, hi = scene.settings.boundsMax;
     // Containment keeps fliers above the ground plane too (terrain is enforced per step).
     m_set.bounds = {glm::vec3(lo.x, 0.0f, lo.y), glm::vec3(hi.x, 1e4f, hi.y)};
@@ -438,6 +439,9 @@ void World::addAgent(const Scene& scene, AgentId id, std::uint16_t type, glm::ve
     m_agents.nearCount.push_back(0);
     m_move.addAgent();
     m_agents.resolvedPos.push_back(pos);
+    m_agents.pointAt.push_back(-1);
+    m_agents.pointLast.push_back(-1);
+    m_agents.pointLeftS.push_back(0.0f);
 }
 
 // Agents that start inside a wall or obstacle walk out of it first (Constraints.h).
@@ -486,7 +490,8 @@ void World::snapshot(std::vector<AgentFrame>& out) const
         f.speed = speed;
         f.phase = m_agents.phase[i];
         // Clip thresholds relative to a walker: below 0.1 m/s stand, above 2.5 m/s run.
-        f.clip = m_brains.clip(i, speed < 0.1f ? Clip::Idle : (speed < 2.5f ? Clip::Walk : Clip::Run));
+        f.clip = actionPointClip(m_set.actionPoints, m_agents, i,
+                                 m_brains.clip(i, speed < 0.1f ? Clip::Idle : (speed < 2.5f ? Clip::Walk : Clip::Run)));
         f.out = m_agents.out[i] != 0;
         f.arrived = m_agents.arrived[i] != 0;
     }
@@ -504,7 +509,7 @@ std::size_t World::memoryBytes() const
 {
     const std::size_t n = m_agents.pos.capacity();
     return n * (sizeof(AgentInfo) + 11 * sizeof(glm::vec3) + 2 * sizeof(WanderState) + 6 * sizeof(float) +
-                3 * sizeof(std::int32_t) + 2 * sizeof(glm::vec2) + 5 + kMaxNeighbours * sizeof(std::uint32_t)) +
+                5 * sizeof(std::int32_t) + 2 * sizeof(glm::vec2) + 5 + kMaxNeighbours * sizeof(std::uint32_t)) +
            m_grid.memoryBytes();
 }
 

@@ -36,6 +36,8 @@ std::optional<SensorFill> sensorFillFor(const BrainSensorUse& use)
         {"sound_source_bearing", SensorFill::SoundSourceBearing},
         {"sound_source_distance", SensorFill::SoundSourceDistance},
         {"sound_source_strength", SensorFill::SoundSourceStrength},
+        {"action_point_distance", SensorFill::ActionPointDistance},
+        {"action_point_bearing", SensorFill::ActionPointBearing}, {"action_point_time", SensorFill::ActionPointTime},
     };
     static const std::map<std::string, SensorFill> attributes{
         {"max_speed", SensorFill::AttrMaxSpeed}, {"radius", SensorFill::AttrRadius},

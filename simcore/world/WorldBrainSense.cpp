@@ -250,6 +250,22 @@ void BrainPhase::sense(const StepView& view, AgentColumns& agents, TypeBrain& tb
                 v = tb.fills[s] == SensorFill::HeroDistance ? best : bearing;
                 break;
             }
+            case SensorFill::ActionPointDistance:
+            case SensorFill::ActionPointBearing: {
+                // The nearest action point the agent's type stops at, by the distance to its edge.
+                float best = kNoneM, bearing = 0.0f;
+                for (const ActionPlace& place : view.set.actionPoints) {
+                    const glm::vec2 d = place.position - p;
+                    const float centre = glm::length(d), edge = std::max(0.0f, centre - place.radiusM);
+                    if (place.forType[view.agents.info[i].typeIndex] && edge < best) {
+                        best = edge;
+                        bearing = centre > 0.0f ? bearingDeg(f, d) : 0.0f;
+                    }
+                }
+                v = tb.fills[s] == SensorFill::ActionPointDistance ? best : bearing;
+                break;
+            }
+            case SensorFill::ActionPointTime: v = view.agents.pointAt[i] >= 0 ? view.agents.pointLeftS[i] : 0.0f; break;
             case SensorFill::TerrainSlope: {
                 const float h0 = view.set.groundHeight(p.x, p.y),
                             h1 = view.set.groundHeight(p.x + 0.5f * f.x, p.y + 0.5f * f.y);

@@ -350,6 +350,16 @@ bool World::adoptMatched(const WorldState& s, const Scene& stateScene, const Sce
             m_agents.arrivalTime[i] = arrivalTime[i];
             m_agents.arrived[i] = m_agents.stopped[i] = m_agents.stoppedBefore[i] = 0;
         }
+        // Action points by name: one at a point that the edit removed, or whose leg changed,
+        // goes on at once; one at a kept point plays out the time it had left.
+        const std::int32_t at =
+            legKept ? remapByName(s.pointAt[i], stateScene.actionPoints, thisScene.actionPoints) : -1;
+        if (m_agents.pointAt[i] >= 0 && at < 0) {
+            m_agents.stopped[i] = m_agents.stoppedBefore[i] = 0;
+            m_agents.pointLeftS[i] = 0.0f;
+        }
+        m_agents.pointAt[i] = at;
+        m_agents.pointLast[i] = remapByName(s.pointLast[i], stateScene.actionPoints, thisScene.actionPoints);
         if (i >= mode.size() || i >= m_nav.mode.size() || i >= m_nav.plan.size())
             continue;  // no navigation in this scene (its arrays are empty)
         const bool replans = !legKept || mode[i] != m_nav.mode[i] || !(stateScene.goals == thisScene.goals);

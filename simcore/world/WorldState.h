@@ -40,6 +40,9 @@
 //    navigation mode) come from the edited scene;
 //  - an agent whose declared goal or path changed takes the edited one and starts that
 //    leg afresh (not arrived, no plan); others keep the goal their brain may have chosen;
+//  - an agent playing at an action point plays out the time it had left there while a
+//    point of that name stays (with the edited point's action and facing); one whose
+//    point the edit removed, or whose leg changed, goes on at once;
 //  - when the navigation grid changed (walls, obstacles, a walker's radius), every A*
 //    walker plans again from where it stands; walls, obstacles, lights, paths and fields
 //    always come from the edited scene.
@@ -90,6 +93,8 @@ struct WorldState {
     std::vector<std::uint8_t> arrived, stopped, stoppedBefore, onCrosswalk, nearCount, out;
     std::vector<std::uint32_t> nearIndex;  // World::kMaxNeighbours per agent
     std::vector<glm::vec3> heldForce;
+    std::vector<std::int32_t> pointAt, pointLast;
+    std::vector<float> pointLeftS;
 
     // Traffic.
     std::optional<TrafficSystem> trafficSystem;

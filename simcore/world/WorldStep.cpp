@@ -53,6 +53,8 @@ void World::stepOnce()
     // Commit: animate and note arrivals, then swap in the new state (Commit.h).
     const CommitCounts committed = commit(view(), m_agents);
     m_count.addWallCrossings(committed.wallCrossings);
+    // Act: walkers that entered an action point stop and play its action; those done go on.
+    playActionPoints(view(), m_agents);
     ++m_clock.step;
 
     // Grid: index the new positions, for the count and the next step's senses.

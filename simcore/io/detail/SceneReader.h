@@ -51,6 +51,7 @@ private:
     void readHeroes(const YAML::Node& node, Scene& scene);
     void readSoundSources(const YAML::Node& node, Scene& scene);
     void readEmission(const YAML::Node& node, const std::string& key, SoundEmission& e);
+    void readActionPoints(const YAML::Node& node, Scene& scene);
     void readHeroKeyframesFile(const YAML::Node& at, const std::string& key, float fps, Hero& hero);
 
     // Reference checks: report "no X named 'y'" at the value's location.

@@ -26,6 +26,7 @@ enum class SensorFill : std::uint8_t {
     FeelerRight, WallDistance, LightState, StopLineDistance, HeroDistance, HeroBearing, TerrainSlope, Time,
     AttrMaxSpeed, AttrRadius, AttrMass, AttrMaxForce, AttrPerception, AttrSpeedFactor,
     SoundBearing, SoundDistance, SoundStrength,
+    ActionPointDistance, ActionPointBearing, ActionPointTime,
     NeighbourDistance, NeighbourBearing, NeighbourSpeed, NeighbourHeading, NeighbourTag,  // per neighbour: last
     SoundSourceBearing, SoundSourceDistance, SoundSourceStrength,                         // per source
 };
