@@ -1,5 +1,6 @@
 #include "editor/panels/PropertyForm.h"
 
+#include "editor/ComboTypeAhead.h"
 #include "editor/commands/NameReferences.h"
 
 #include <QCheckBox>
@@ -44,21 +45,6 @@ void showNumber(Spin* spin, std::optional<Value> value, double min)
 PropertyForm::PropertyForm(SceneDocument& document, QFormLayout* layout, QWidget* owner)
     : QObject(owner), m_document(document), m_layout(layout), m_owner(owner)
 {
-}
-
-bool PropertyForm::eventFilter(QObject* watched, QEvent* event)
-{
-    // A letter typed on a combo box picks its item (keyboard search) instead of firing the
-    // tool shortcut of that letter (G for the goal tool) while the combo box has focus.
-    if (event->type() == QEvent::ShortcutOverride) {
-        const auto* key = static_cast<QKeyEvent*>(event);
-        if (!key->text().isEmpty() && key->text().front().isPrint() &&
-            !(key->modifiers() & (Qt::ControlModifier | Qt::AltModifier | Qt::MetaModifier))) {
-            event->accept();
-            return true;
-        }
-    }
-    return QObject::eventFilter(watched, event);
 }
 
 ItemKind PropertyForm::kind() const
@@ -183,7 +169,7 @@ void PropertyForm::addIndexChoice(const QString& key, const QString& label, std:
 {
     auto* combo = new QComboBox(m_owner);
     combo->setObjectName(key);
-    combo->installEventFilter(this);
+    keepTypedLetters(combo);
     connect(combo, &QComboBox::activated, this, [combo, apply](int index) {
         const QVariant data = combo->itemData(index);
         if (data.isValid())
@@ -207,7 +193,7 @@ void PropertyForm::addChoice(const QString& key, const QString& label, Options o
 {
     auto* combo = new QComboBox(m_owner);
     combo->setObjectName(key);
-    combo->installEventFilter(this);
+    keepTypedLetters(combo);
     combo->setEditable(editable);
     if (editable)
         combo->setInsertPolicy(QComboBox::NoInsert);

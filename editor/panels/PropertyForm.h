@@ -122,9 +122,6 @@ public:
     // and the fields show the scene's values again.
     void refuse(QWidget* widget, const QString& why);
 
-protected:
-    bool eventFilter(QObject* watched, QEvent* event) override;
-
 signals:
     // An edit was refused; the text says why and what stayed.
     void problem(const QString& text);

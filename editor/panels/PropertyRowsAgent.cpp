@@ -3,6 +3,7 @@
 // set by hand; "(drawn)" leaves them to the type's variation).
 #include "editor/panels/PropertyRows.h"
 
+#include "editor/ComboTypeAhead.h"
 #include "editor/panels/PropertyForm.h"
 
 #include <QColor>
@@ -110,7 +111,7 @@ void addLeaderRow(PropertyForm& form, PropertyForm::Locate<std::uint32_t> locate
 {
     auto* combo = new QComboBox(form.owner());
     combo->setObjectName("leader");
-    combo->installEventFilter(&form);
+    keepTypedLetters(combo);
     QObject::connect(combo, &QComboBox::activated, &form, [&form, combo, locate, agents](int index) {
         const QVariant data = combo->itemData(index);
         if (!data.isValid())

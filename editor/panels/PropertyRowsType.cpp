@@ -3,6 +3,7 @@
 // .glb/.gltf file), the collision layer and the layers it avoids.
 #include "editor/panels/PropertyRows.h"
 
+#include "editor/ComboTypeAhead.h"
 #include "editor/panels/PropertyForm.h"
 #include "editor/panels/TintTable.h"
 
@@ -96,7 +97,7 @@ void addAgentTypeLookRows(PropertyForm& form)
     character->setObjectName("character");
     character->setEditable(true);
     character->setInsertPolicy(QComboBox::NoInsert);
-    character->installEventFilter(&form);
+    keepTypedLetters(character);
     const PropertyForm::Locate<std::string> locate = typeField(&sim::AgentType::character);
     auto apply = [&form, character, locate](const QString& typed) {
         const QString text = typed.trimmed();

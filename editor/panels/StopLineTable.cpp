@@ -1,5 +1,7 @@
 #include "editor/panels/StopLineTable.h"
 
+#include "editor/ComboTypeAhead.h"
+
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QHBoxLayout>
@@ -122,11 +124,11 @@ void StopLineTable::buildRow(int row, const sim::StopLine& line)
     auto* kind = new QComboBox;
     kind->setObjectName(QStringLiteral("stopKind%1").arg(row));
     kind->addItems({tr("Lane"), tr("Crosswalk")});
-    kind->installEventFilter(&m_form);
+    keepTypedLetters(kind);
     connect(kind, &QComboBox::activated, this, [this, row](int index) { setKind(row, index); });
     auto* target = new QComboBox;
     target->setObjectName(QStringLiteral("stopTarget%1").arg(row));
-    target->installEventFilter(&m_form);
+    keepTypedLetters(target);
     connect(target, &QComboBox::activated, this, [this, row, target](int index) { setTarget(row, target->itemText(index)); });
     m_table->setCellWidget(row, 0, kind);
     m_table->setCellWidget(row, 1, target);
