@@ -39,6 +39,7 @@ std::size_t itemCount(const sim::Scene& s, ItemKind kind)
     case ItemKind::Brain: return s.brains.size();
     case ItemKind::Crosswalk: return s.crosswalks.size();
     case ItemKind::Vehicle: return s.vehicles.size();
+    case ItemKind::ActionPoint: return s.actionPoints.size();
     }
     return 0;
 }
@@ -61,6 +62,7 @@ QString kindTitle(ItemKind kind)
     case ItemKind::Brain: return tr("Brains");
     case ItemKind::Crosswalk: return tr("Crosswalks");
     case ItemKind::Vehicle: return tr("Vehicles");
+    case ItemKind::ActionPoint: return tr("Action Points");
     }
     return {};
 }
@@ -94,6 +96,7 @@ QString itemLabel(const sim::Scene& s, SceneItem item)
         return tr("Vehicle %1 (%2 on %3)")
             .arg(i + 1)
             .arg(QString::fromStdString(s.vehicles[i].type), QString::fromStdString(s.vehicles[i].lane));
+    case ItemKind::ActionPoint: return named(s.actionPoints, i, tr("Action point"));
     }
     return {};
 }
@@ -106,7 +109,7 @@ std::optional<SceneItem> itemForKey(const std::string& key)
         {"goals", ItemKind::Goal},             {"traffic_lights", ItemKind::TrafficLight},
         {"lanes", ItemKind::Lane},             {"heroes", ItemKind::Hero},    {"brains", ItemKind::Brain},
         {"flow_strokes", ItemKind::FlowStroke}, {"crosswalks", ItemKind::Crosswalk},
-        {"vehicles", ItemKind::Vehicle}};
+        {"vehicles", ItemKind::Vehicle},       {"action_points", ItemKind::ActionPoint}};
     if (key.rfind("settings", 0) == 0)
         return SceneItem{ItemKind::Settings, 0};
     const std::size_t open = key.find('['), close = key.find(']');

@@ -31,6 +31,7 @@ constexpr ItemKind listKind()
     else if constexpr (std::is_same_v<Item, sim::Hero>) return ItemKind::Hero;
     else if constexpr (std::is_same_v<Item, sim::BrainGraph>) return ItemKind::Brain;
     else if constexpr (std::is_same_v<Item, sim::Crosswalk>) return ItemKind::Crosswalk;
+    else if constexpr (std::is_same_v<Item, sim::ActionPoint>) return ItemKind::ActionPoint;
     else {
         static_assert(std::is_same_v<Item, sim::Vehicle>, "not an item of a scene list");
         return ItemKind::Vehicle;

@@ -64,6 +64,7 @@ void DeleteItemsCommand::forEachList(Scene& s, F f)
     f(s.crosswalks, m_crosswalks, ItemKind::Crosswalk);
     f(s.vehicles, m_vehicles, ItemKind::Vehicle);
     f(s.brains, m_brains, ItemKind::Brain);
+    f(s.actionPoints, m_actionPoints, ItemKind::ActionPoint);
 }
 
 DeleteItemsCommand::DeleteItemsCommand(SceneDocument& document, const Selection& items) : m_document(document)

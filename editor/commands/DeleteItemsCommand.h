@@ -60,6 +60,7 @@ private:
     Removed<sim::FlowStroke> m_strokes;
     Removed<sim::Hero> m_heroes;
     Removed<sim::Crosswalk> m_crosswalks;
+    Removed<sim::ActionPoint> m_actionPoints;
     Removed<sim::Vehicle> m_vehicles;
     Removed<sim::BrainGraph> m_brains;
     // Leaders cleared because the agent, vehicle or hero they name is deleted, with the old id.

@@ -28,6 +28,7 @@ void forEachPoint(Scene& s, SceneItem item, Visit visit)
     }
     case ItemKind::Obstacle: visit(s.obstacles[i].center); return;
     case ItemKind::Goal: visit(s.goals[i].position); return;
+    case ItemKind::ActionPoint: visit(s.actionPoints[i].position); return;
     case ItemKind::TrafficLight: visit(s.trafficLights[i].position); return;
     case ItemKind::Path: for (auto& p : s.paths[i].points) visit(p); return;
     case ItemKind::Wall: for (auto& p : s.walls[i].points) visit(p); return;
@@ -59,6 +60,7 @@ bool MoveItemsCommand::movable(ItemKind kind)
     case ItemKind::Agent:
     case ItemKind::Obstacle:
     case ItemKind::Goal:
+    case ItemKind::ActionPoint:
     case ItemKind::TrafficLight:
     case ItemKind::Path:
     case ItemKind::Wall:

@@ -60,6 +60,17 @@ void collectVehicles(std::vector<NameUse>& out, const sim::Scene& scene, const s
                            SceneItem{ItemKind::Vehicle, i}, tr("vehicle %1").arg(i + 1)});
 }
 
+// The action points whose `types` list holds `name`.
+void collectActionPointTypes(std::vector<NameUse>& out, const sim::Scene& scene, const std::string& name)
+{
+    for (std::size_t p = 0; p < scene.actionPoints.size(); ++p)
+        for (std::size_t k = 0; k < scene.actionPoints[p].types.size(); ++k)
+            if (scene.actionPoints[p].types[k] == name)
+                out.push_back({[p, k](sim::Scene& s) -> std::string& { return s.actionPoints[p].types[k]; },
+                               SceneItem{ItemKind::ActionPoint, p},
+                               tr("action point %1").arg(itemLabel(scene, {ItemKind::ActionPoint, p}))});
+}
+
 }  // namespace
 
 bool hasName(ItemKind kind)
@@ -83,6 +94,7 @@ std::function<std::string&(sim::Scene&)> nameLocate(SceneItem item)
     case ItemKind::Hero: return [i](sim::Scene& s) -> std::string& { return s.heroes[i].name; };
     case ItemKind::Brain: return [i](sim::Scene& s) -> std::string& { return s.brains[i].name; };
     case ItemKind::Crosswalk: return [i](sim::Scene& s) -> std::string& { return s.crosswalks[i].name; };
+    case ItemKind::ActionPoint: return [i](sim::Scene& s) -> std::string& { return s.actionPoints[i].name; };
     default: return {};
     }
 }
@@ -117,6 +129,7 @@ std::vector<NameUse> nameUses(const sim::Scene& scene, ItemKind kind, const std:
         collect(out, scene, scene.heroes.size(), name, ItemKind::Hero,
                 [](sim::Scene& s, std::size_t i) -> std::string& { return s.heroes[i].type; });
         collectVehicles(out, scene, name, [](sim::Scene& s, std::size_t i) -> std::string& { return s.vehicles[i].type; });
+        collectActionPointTypes(out, scene, name);
         break;
     case ItemKind::Brain:
         collect(out, scene, scene.agentTypes.size(), name, ItemKind::AgentType,

@@ -53,7 +53,8 @@ SceneField propertyField(ItemKind kind, const QString& key)
         // Their other numbers and switches are sizes: radius, clearance, closed, width, ...
         return SceneField::Shape;
     case ItemKind::Goal:
-        if (name == "radius")
+    case ItemKind::ActionPoint:
+        if (oneOf(name, {"radius", "faces", "facing"}))
             return SceneField::Shape;
         break;
     case ItemKind::Lane:

@@ -134,6 +134,15 @@ std::vector<PropertyField> make(ItemKind kind)
         return {{"x", tr("X (m)"), -1e5, 1e5, 0.1, 2, THRONG_FIELD(goals, position.x)},
                 {"z", tr("Z (m)"), -1e5, 1e5, 0.1, 2, THRONG_FIELD(goals, position.y)},
                 {"radius", tr("Radius (m)"), 0.05, 100, 0.1, 2, THRONG_FIELD(goals, radiusM)}};
+    case ItemKind::ActionPoint: {
+        const auto faces = [](const sim::Scene& s, std::size_t i) { return s.actionPoints[i].faces; };
+        return {{"x", tr("X (m)"), -1e5, 1e5, 0.1, 2, THRONG_FIELD(actionPoints, position.x)},
+                {"z", tr("Z (m)"), -1e5, 1e5, 0.1, 2, THRONG_FIELD(actionPoints, position.y)},
+                {"radius", tr("Radius (m)"), 0.05, 100, 0.1, 2, THRONG_FIELD(actionPoints, radiusM)},
+                {"duration", tr("Duration (s)"), 0.05, 36000, 0.5, 2, THRONG_FIELD(actionPoints, durationS)},
+                {"facing", tr("Facing (deg)"), -360, 360, 5, 1, THRONG_FIELD(actionPoints, facingDeg), {}, faces},
+                {"chance", tr("Chance (0 to 1)"), 0, 1, 0.05, 2, THRONG_FIELD(actionPoints, chance)}};
+    }
     case ItemKind::TrafficLight:
         return {{"green", tr("Green (s)"), 0, 600, 1, 1, THRONG_FIELD(trafficLights, greenS)},
                 {"yellow", tr("Yellow (s)"), 0, 600, 1, 1, THRONG_FIELD(trafficLights, yellowS)},

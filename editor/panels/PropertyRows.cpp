@@ -6,6 +6,7 @@
 #include "editor/panels/StopLineTable.h"
 #include "editor/panels/PropertyForm.h"
 #include "editor/SpawnPolygonCheck.h"
+#include "simcore/scene/Clip.h"
 #include "simcore/scene/SpawnArea.h"
 
 #include <algorithm>
@@ -41,6 +42,15 @@ QStringList agentGroups(const sim::Scene& s)
     QStringList out;
     for (const std::string& name : names)
         out << QString::fromStdString(name);
+    return out;
+}
+
+// The actions an action point may play: every clip but idle, walk and run.
+QStringList actionPointActions()
+{
+    QStringList out;
+    for (int c = int(sim::Clip::Wait); c < sim::kClipCount; ++c)
+        out << QString::fromUtf8(sim::toString(sim::Clip(c)));
     return out;
 }
 
@@ -179,6 +189,18 @@ void addSetRows(PropertyForm& form)
         addPoints(form, THRONG_AT(paths, points));
         break;
     case ItemKind::Goal: form.addCheck("exit", tr("Exit"), THRONG_AT(goals, exit)); break;
+    case ItemKind::ActionPoint:
+        form.addChoice("action", tr("Action"), [](const sim::Scene&) { return actionPointActions(); },
+                       THRONG_AT(actionPoints, action), false);
+        form.addCheck("faces", tr("Turns to facing"), THRONG_AT(actionPoints, faces));
+        form.addInfo("types", tr("Types"), [](const sim::Scene& s, std::size_t i) {
+            const std::vector<std::string>& types = s.actionPoints[i].types;
+            QStringList names;
+            for (const std::string& t : types)
+                names << QString::fromStdString(t);
+            return types.empty() ? tr("every walker") : names.join(", ");
+        });
+        break;
     case ItemKind::Lane:
         form.addCheck("loop", tr("Loop"), THRONG_AT(lanes, loop));
         addPoints(form, THRONG_AT(lanes, points));

@@ -3,6 +3,9 @@
 #include "editor/tools/BrushOverlay.h"
 
 #include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+#include <cmath>
 
 namespace throng::editor {
 
@@ -37,6 +40,12 @@ void CircleDragTool::mouseReleased(const ToolMouse& mouse)
     if (state() != State::Dragging)
         return;
     m_radiusM = radiusTo(mouse);
+    m_headingDeg.reset();
+    if (mouse.ground) {
+        const glm::vec2 d(mouse.ground->x - m_centre.x, mouse.ground->z - m_centre.z);
+        if (glm::length(d) >= clickRadiusM())
+            m_headingDeg = glm::degrees(std::atan2(-d.y, d.x));
+    }
     setState(State::Idle);
     place({m_centre.x, m_centre.z}, m_radiusM);
     emit overlayChanged();

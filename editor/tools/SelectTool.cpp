@@ -19,7 +19,8 @@ namespace throng::editor {
 
 namespace {
 
-constexpr ItemKind kPointKinds[] = {ItemKind::Obstacle, ItemKind::Goal, ItemKind::TrafficLight, ItemKind::Crosswalk};
+constexpr ItemKind kPointKinds[] = {ItemKind::Obstacle, ItemKind::Goal, ItemKind::ActionPoint, ItemKind::TrafficLight,
+                                    ItemKind::Crosswalk};
 // Drawn where the shown frame has them; at their scene place only while the frame lacks them.
 constexpr ItemKind kMovingKinds[] = {ItemKind::Agent, ItemKind::Vehicle};
 constexpr ItemKind kLineKinds[] = {ItemKind::Path, ItemKind::Wall, ItemKind::Lane, ItemKind::FlowStroke};

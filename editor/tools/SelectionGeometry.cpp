@@ -31,6 +31,7 @@ std::optional<glm::vec2> itemAnchor(const sim::Scene& s, SceneItem item)
     case ItemKind::Agent: return glm::vec2(s.agents[item.index].position.x, s.agents[item.index].position.z);
     case ItemKind::Obstacle: return s.obstacles[item.index].center;
     case ItemKind::Goal: return s.goals[item.index].position;
+    case ItemKind::ActionPoint: return s.actionPoints[item.index].position;
     case ItemKind::TrafficLight: return s.trafficLights[item.index].position;
     case ItemKind::Crosswalk: return 0.5f * (s.crosswalks[item.index].from + s.crosswalks[item.index].to);
     case ItemKind::Vehicle: return vehicleStart(s, s.vehicles[item.index]);

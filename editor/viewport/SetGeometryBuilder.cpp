@@ -77,6 +77,7 @@ void SetGeometryBuilder::addSet(const sim::Scene& scene, ShapeMesh& mesh)
     addHeroes(scene.heroes, mesh);
     addSpawnAreas(scene.groups, mesh);
     addGoals(scene.goals, mesh);
+    addActionPoints(scene.actionPoints, mesh);
     addObstacles(scene.obstacles, mesh);
     addWalls(scene.walls, mesh);
 }
@@ -211,6 +212,23 @@ void SetGeometryBuilder::addGoals(std::span<const sim::Goal> goals, ShapeMesh& m
                      palette::kGoal);
         mesh.addLine(g.position - glm::vec2(0.0f, arm), g.position + glm::vec2(0.0f, arm), kThinHalfWidthM,
                      palette::kGoal);
+    }
+}
+
+void SetGeometryBuilder::addActionPoints(std::span<const sim::ActionPoint> points, ShapeMesh& mesh)
+{
+    for (const sim::ActionPoint& p : points) {
+        mesh.addRing(p.position, p.radiusM, kThinHalfWidthM, palette::kActionPoint);
+        mesh.addRing(p.position, std::min(0.12f, 0.3f * p.radiusM), kThinHalfWidthM, palette::kActionPoint);
+        if (!p.faces)
+            continue;
+        const float a = p.facingDeg * std::numbers::pi_v<float> / 180.0f;
+        const glm::vec2 dir(std::cos(a), -std::sin(a)), side(-dir.y, dir.x);
+        const glm::vec2 tip = p.position + 0.9f * p.radiusM * dir;
+        const float head = std::min(0.4f, 0.35f * p.radiusM);
+        mesh.addLine(p.position, tip, kThinHalfWidthM, palette::kActionPoint);
+        mesh.addLine(tip - head * (dir - side), tip, kThinHalfWidthM, palette::kActionPoint);
+        mesh.addLine(tip - head * (dir + side), tip, kThinHalfWidthM, palette::kActionPoint);
     }
 }
 

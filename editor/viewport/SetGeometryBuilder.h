@@ -31,6 +31,8 @@ private:
     static void addHeroes(std::span<const sim::Hero> heroes, ShapeMesh& mesh);
     static void addPaths(std::span<const sim::Path> paths, ShapeMesh& mesh);
     static void addGoals(std::span<const sim::Goal> goals, ShapeMesh& mesh);
+    // A ring, a dot at the centre, and an arrow to the facing where the point sets one.
+    static void addActionPoints(std::span<const sim::ActionPoint> points, ShapeMesh& mesh);
     static void addObstacles(std::span<const sim::Obstacle> obstacles, ShapeMesh& mesh);
     static void addWalls(std::span<const sim::Wall> walls, ShapeMesh& mesh);
     static void addChevrons(std::span<const glm::vec2> points, bool closed, float sizeM, glm::vec4 colour,
