@@ -128,8 +128,8 @@ void AgentCharacters::posesFor(std::span<const sim::AgentFrame> frames, std::spa
         const float actionPhase = !sim::isOneShot(clip) ? sim::actionPhase(clip, timeS, agents[i].id)
                                   : i < clipSinceS.size() ? sim::oneShotProgress(clip, double(clipSinceS[i]))
                                                           : 1.0f;
-        poses[i].pose = m_tables[std::size_t(look.character) * kLevels].poseFor(clip, frames[i].phase, actionPhase,
-                                                                                frames[i].speed >= kMovingMps);
+        poses[i].pose = m_tables[std::size_t(look.character) * kLevels].poseFor(
+            clip, frames[i].phase, actionPhase, frames[i].speed >= kMovingMps, frames[i].speed);
     }
 }
 

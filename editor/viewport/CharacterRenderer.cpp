@@ -132,6 +132,9 @@ void CharacterRenderer::setCharacters(QOpenGLFunctions_3_3_Core& gl, std::span<c
     if (!m_program)
         return;
     m_levels = std::max(1, levels);
+    m_posesPerMesh = PoseTable::kPoseCount;
+    for (const PoseTable& t : tables)
+        m_posesPerMesh = std::max(m_posesPerMesh, t.poseCount());
     std::vector<PoseVertex> vertices;
     std::vector<std::uint32_t> indices;
     m_meshes.clear();
@@ -165,7 +168,7 @@ void CharacterRenderer::add(const AgentGlyph& glyph, const AgentPose& pose, int 
 {
     m_added.push_back({glyph.position, glyph.headingRad, pose.heightScale, glyph.colour, pose.lookBits});
     const int mesh = pose.character * m_levels + std::clamp(level, 0, m_levels - 1);
-    m_bucketOfAdded.push_back(mesh * PoseTable::kPoseCount + pose.pose);
+    m_bucketOfAdded.push_back(mesh * m_posesPerMesh + pose.pose);
 }
 
 void CharacterRenderer::draw(QOpenGLFunctions_3_3_Core& gl, const RenderView& view)
@@ -174,7 +177,7 @@ void CharacterRenderer::draw(QOpenGLFunctions_3_3_Core& gl, const RenderView& vi
     if (!m_program || m_added.empty())
         return;
     // Counting sort by bucket: stable, so the same agents give the same upload.
-    const std::size_t buckets = m_meshes.size() * PoseTable::kPoseCount;
+    const std::size_t buckets = m_meshes.size() * std::size_t(m_posesPerMesh);
     m_bucketStart.assign(buckets + 1, 0);
     for (int b : m_bucketOfAdded)
         ++m_bucketStart[std::size_t(b) + 1];
@@ -200,8 +203,8 @@ void CharacterRenderer::draw(QOpenGLFunctions_3_3_Core& gl, const RenderView& vi
         const int first = m_bucketStart[b], count = m_bucketStart[b + 1] - first;
         if (count == 0)
             continue;
-        const Mesh& mesh = m_meshes[b / PoseTable::kPoseCount];
-        const int pose = int(b % PoseTable::kPoseCount);
+        const Mesh& mesh = m_meshes[b / std::size_t(m_posesPerMesh)];
+        const int pose = int(b % std::size_t(m_posesPerMesh));
         // GL 3.3 has no base instance: the bucket's instances start where the pointers do.
         const std::size_t at = std::size_t(first) * sizeof(Instance);
         gl.glVertexAttribPointer(3, 4, GL_FLOAT, GL_FALSE, sizeof(Instance),

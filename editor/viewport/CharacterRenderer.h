@@ -56,9 +56,10 @@ private:
     unsigned m_vao = 0, m_vertices = 0, m_indices = 0, m_instanceBuffer = 0;
     std::vector<Mesh> m_meshes;          // by character and level
     int m_levels = 1;
+    int m_posesPerMesh = PoseTable::kPoseCount;  // the most poses a table has (a gait ladder adds some)
     std::vector<Instance> m_added;       // this frame's agents, in add() order
     std::vector<int> m_bucketOfAdded;    // (character, level, pose) bucket of each
-    std::vector<int> m_bucketStart;      // counting sort scratch, kPoseCount per character + 1
+    std::vector<int> m_bucketStart;      // counting sort scratch, m_posesPerMesh per mesh + 1
     std::vector<Instance> m_sorted;      // by bucket: what is uploaded
     int m_lastDrawn = 0;
 };

@@ -21,7 +21,7 @@ int sampleOf(float phase, int samples)
 
 }  // namespace
 
-int PoseTable::poseFor(sim::Clip clip, float phase, float actionPhase, bool moving) const
+int PoseTable::poseFor(sim::Clip clip, float phase, float actionPhase, bool moving, float speed) const
 {
     if (sim::isAction(clip)) {
         const int a = int(clip) - int(sim::Clip::Wait);
@@ -33,6 +33,14 @@ int PoseTable::poseFor(sim::Clip clip, float phase, float actionPhase, bool movi
             return moving ? walkingActionPose(a, sampleOf(phase, kWalkPoses))
                           : actionPose(a, sampleOf(actionPhase, kActionPoses));
         clip = moving ? sim::Clip::Walk : sim::Clip::Idle;
+    }
+    if (!ladderSpeeds.empty() && speed >= 0.0f && (clip == sim::Clip::Walk || clip == sim::Clip::Run || !hasIdle)) {
+        // The rung nearest the speed: past the middle between two rungs' speeds, the upper.
+        int rung = 0;
+        for (std::size_t r = 1; r < ladderSpeeds.size(); ++r)
+            if (speed >= 0.5f * (ladderSpeeds[r - 1] + ladderSpeeds[r]))
+                rung = int(r);
+        return ladderPose(rung, sampleOf(phase, kWalkPoses));
     }
     if (clip == sim::Clip::Run)
         return runPose(sampleOf(phase, kRunPoses));
@@ -120,6 +128,10 @@ PoseTable buildPoseTable(const exporting::Character& character)
             g.action = {actionOf[std::size_t(a)], 0.5, 1.0f};
             add(exporting::gaitPose(character, g));
         }
+    table.ladderSpeeds = character.ladderSpeeds;
+    for (const exporting::CycleClip& rung : character.ladder)
+        for (int k = 0; k < PoseTable::kWalkPoses; ++k)
+            add(exporting::sampleClip(rung, double(k) / PoseTable::kWalkPoses));
     return table;
 }
 

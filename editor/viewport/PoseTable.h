@@ -32,6 +32,9 @@ struct PoseTable {
     std::vector<glm::mat4> joints;             // pose-major: pose p's joint j's transform at p * jointCount + j,
                                                // in the character's space (where the pose puts each joint)
     bool hasIdle = true;                       // false: a stopped agent holds the walk (wheels, wings)
+    // A character with a gait ladder (a horse's walk, trot, canter, gallop): its rungs'
+    // speeds (m/s); their poses follow every other pose (ladderPose). Empty: none.
+    std::vector<float> ladderSpeeds;
     std::vector<std::uint8_t> hasAction;       // per action (kActions): the character plays it
     std::vector<std::uint8_t> oneShot;         // per action: played once and held (fall, get_up)
 
@@ -40,7 +43,9 @@ struct PoseTable {
     // agent stands, its walking pose at the gait phase where it moves; for a one-shot
     // (fall, get_up), actionPhase is its progress (sim::oneShotProgress) and it plays in
     // full, moving or not; for an action it lacks, the pose its speed gives.
-    int poseFor(sim::Clip clip, float phase, float actionPhase = 0.0f, bool moving = false) const;
+    // A character with a gait ladder moves in the rung nearest its speed (m/s; < 0: unknown,
+    // walk and run as for others).
+    int poseFor(sim::Clip clip, float phase, float actionPhase = 0.0f, bool moving = false, float speed = -1.0f) const;
     // Pose index of walk sample k (0..kWalkPoses-1) and run sample k.
     static int walkPose(int k) { return 1 + k; }
     static int runPose(int k) { return 1 + kWalkPoses + k; }
@@ -51,6 +56,10 @@ struct PoseTable {
     {
         return 1 + kWalkPoses + kRunPoses + kActions * kActionPoses + a * kWalkPoses + k;
     }
+    // Pose index of rung r's sample k (0..kWalkPoses-1) of a gait ladder.
+    static int ladderPose(int r, int k) { return kPoseCount + r * kWalkPoses + k; }
+    // How many poses the table holds: kPoseCount, and kWalkPoses per rung of a ladder.
+    int poseCount() const { return kPoseCount + int(ladderSpeeds.size()) * kWalkPoses; }
 };
 
 // Linear blend skinning of `character`'s mesh in `pose`, in the character's space.

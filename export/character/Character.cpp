@@ -228,7 +228,15 @@ std::string checkCharacter(const Character& c)
     }
     if (!m.parts.empty() && next != m.indices.size())
         return where + "the mesh's parts do not cover its triangles";
-    for (const CycleClip* clip : {&c.idle, &c.walk, &c.run}) {
+    if (c.ladder.size() != c.ladderSpeeds.size() || c.ladder.size() == 1)
+        return where + "the gait ladder needs a speed per gait and at least two gaits";
+    for (std::size_t k = 1; k < c.ladderSpeeds.size(); ++k)
+        if (!(c.ladderSpeeds[k] > c.ladderSpeeds[k - 1]))
+            return where + "the gait ladder's speeds do not rise";
+    std::vector<const CycleClip*> clips{&c.idle, &c.walk, &c.run};
+    for (const CycleClip& rung : c.ladder)
+        clips.push_back(&rung);
+    for (const CycleClip* clip : clips) {
         if (clip->samples.empty() || !(clip->strideM > 0.0f))
             return where + "clip '" + clip->name + "' has no samples or no stride";
         for (const Pose& p : clip->samples)

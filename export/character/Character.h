@@ -102,6 +102,16 @@ struct Character {
     // Speeds (m/s at scale 1) the gait blends between: idle below idleSpeed, all walk from
     // walkSpeed, walk turning into run between runStartSpeed and runSpeed.
     float idleSpeed = 0.05f, walkSpeed = 0.4f, runStartSpeed = 2.2f, runSpeed = 3.0f;
+    // More gaits than walk and run (a horse's walk, trot, canter and gallop): the ladder
+    // from the slowest to the fastest, each the whole gait at its speed in ladderSpeeds
+    // (m/s at scale 1, rising) and blending into the next one up to that one's speed.
+    // walk and run are then its first and last, for readers that blend those two only.
+    // Empty: walk and run by walkSpeed, runStartSpeed and runSpeed.
+    std::vector<CycleClip> ladder;
+    std::vector<float> ladderSpeeds;
+    // The share of the export's joint rotation tolerance (GltfOptions) this character's
+    // keys keep to: a horse's long legs carry a rotation's error 1.3 m to the hoof.
+    float keyToleranceScale = 1.0f;
     std::vector<ActionClip> actions;  // none: every action plays the locomotion its speed gives
     std::vector<Leg> legs;            // none: actions over a standing agent keep their own legs
 

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <optional>
+#include <utility>
 
 namespace throng::exporting {
 
@@ -19,10 +20,38 @@ float smoothstep(float lo, float hi, float x)
     return t * t * (3.0f - 2.0f * t);
 }
 
+// Where runWeight puts a character with a gait ladder: the rung below and the share of
+// the one above (runWeight runs over the whole ladder, 0 the first rung, 1 the last).
+std::pair<std::size_t, float> rungAt(const Character& c, float runWeight)
+{
+    const float r = std::clamp(runWeight, 0.0f, 1.0f) * static_cast<float>(c.ladder.size() - 1);
+    const std::size_t k = std::min(static_cast<std::size_t>(r), c.ladder.size() - 2);
+    return {k, r - static_cast<float>(k)};
+}
+
+// runWeight for `speed`: along the ladder by its speeds (each rung blending into the next
+// up to its speed), else from walk to run between runStartSpeed and runSpeed.
+float runWeightAt(const Character& c, float speed, float k)
+{
+    if (c.ladder.empty())
+        return smoothstep(c.runStartSpeed * k, c.runSpeed * k, speed);
+    const std::size_t n = c.ladder.size();
+    for (std::size_t r = 0; r + 1 < n; ++r)
+        if (speed < c.ladderSpeeds[r + 1] * k)
+            return (static_cast<float>(r) + smoothstep(c.ladderSpeeds[r] * k, c.ladderSpeeds[r + 1] * k, speed)) /
+                   static_cast<float>(n - 1);
+    return 1.0f;
+}
+
 }  // namespace
 
 double strideAt(const Character& c, float runWeight, float heightScale)
 {
+    if (!c.ladder.empty()) {
+        const auto [k, t] = rungAt(c, runWeight);
+        const double lo = c.ladder[k].strideM, hi = c.ladder[k + 1].strideM;
+        return (lo + (hi - lo) * static_cast<double>(t)) * static_cast<double>(heightScale);
+    }
     const double walk = c.walk.strideM, run = c.run.strideM;
     return (walk + (run - walk) * static_cast<double>(runWeight)) * static_cast<double>(heightScale);
 }
@@ -102,7 +131,7 @@ std::vector<GaitFrame> computeGait(const Character& c, std::span<const glm::vec3
         GaitFrame& g = out[f];
         const float speed = speeds[f];
         g.moveWeight = c.hasIdle ? smoothstep(c.idleSpeed * k, c.walkSpeed * k, speed) : 1.0f;
-        g.runWeight = smoothstep(c.runStartSpeed * k, c.runSpeed * k, speed);
+        g.runWeight = runWeightAt(c, speed, k);
         if (f > 0) {
             const double distance = glm::length(glm::dvec3(positions[f]) - glm::dvec3(positions[f - 1]));
             const float w = 0.5f * (g.runWeight + out[f - 1].runWeight);
@@ -124,9 +153,17 @@ bool playsOneShot(const Character& c, const GaitFrame& g)
 
 Pose gaitPose(const Character& c, const GaitFrame& g)
 {
-    Pose moving = sampleClip(c.walk, g.phase);
-    if (g.runWeight > 0.0f)
-        moving = blendPoses(moving, sampleClip(c.run, g.phase), g.runWeight);
+    Pose moving;
+    if (!c.ladder.empty()) {
+        const auto [k, t] = rungAt(c, g.runWeight);
+        moving = sampleClip(c.ladder[k], g.phase);
+        if (t > 0.0f)
+            moving = blendPoses(moving, sampleClip(c.ladder[k + 1], g.phase), t);
+    } else {
+        moving = sampleClip(c.walk, g.phase);
+        if (g.runWeight > 0.0f)
+            moving = blendPoses(moving, sampleClip(c.run, g.phase), g.runWeight);
+    }
     Pose pose =
         g.moveWeight >= 1.0f ? std::move(moving) : blendPoses(sampleClip(c.idle, g.phase), moving, g.moveWeight);
     // Actions over the gait: the upper body in full, the legs and hips only as far as the

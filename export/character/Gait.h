@@ -1,7 +1,8 @@
 #pragma once
 // Turns an agent's recorded motion into its character's clip state, frame by frame: the
 // phase advances by distance travelled divided by stride (so planted feet stay planted),
-// walk blends into run by speed, a stopped agent idles. An action its brain picked plays
+// walk blends into run by speed (or up a character's gait ladder: walk, trot, canter,
+// gallop), a stopped agent idles. An action its brain picked plays
 // over that (in full while it stands, on the upper body while it walks), blended in and
 // out over the action's blend time; a one-shot (fall, get_up) plays once from the frame it
 // starts, in full, and holds its last pose. Pure maths over the inputs.
@@ -27,7 +28,7 @@ struct ActionLayer {
 struct GaitFrame {
     double phase = 0.0;      // cycles since the clip's start, including the agent's offset
     float moveWeight = 1.0f; // 0 = idle pose, 1 = walk/run
-    float runWeight = 0.0f;  // 0 = walk, 1 = run
+    float runWeight = 0.0f;  // 0 = walk, 1 = run; with a gait ladder, the place along it (0 first, 1 last)
     ActionLayer fading;      // the action before, blending out
     ActionLayer action;      // the recorded action, blending in
 };

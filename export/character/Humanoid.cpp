@@ -267,6 +267,8 @@ std::optional<Character> makeBuiltinCharacter(const std::string& name, Lod lod)
         return makeCar();
     if (name == "bird")
         return makeBird(lod);
+    if (name == "horse")
+        return makeHorse(lod);
     return std::nullopt;
 }
 

@@ -2,6 +2,7 @@
 // the stance foot still on the ground while the body covers one stride per cycle, so a
 // gait that advances the phase by distance / stride keeps planted feet where they are.
 #include "export/character/BuiltinCharacters.h"
+#include "export/character/StrideMaths.h"
 
 #include <glm/gtc/quaternion.hpp>
 
@@ -27,27 +28,9 @@ struct GaitShape {
 glm::quat aboutZ(float a) { return glm::angleAxis(a, glm::vec3(0.0f, 0.0f, 1.0f)); }
 glm::quat aboutY(float a) { return glm::angleAxis(a, glm::vec3(0.0f, 1.0f, 0.0f)); }
 
-// Ankle target at leg phase s in [0, 1): x forward of the hip joint, y above the ground.
-glm::vec2 footTarget(const GaitShape& g, float s, float ankleM)
+FootPath pathOf(const GaitShape& g)
 {
-    const float d = g.duty, stride = g.strideM;
-    if (s < d)
-        return {stride * (0.5f * d - s), ankleM};
-    const float u = (s - d) / (1.0f - d);
-    const float ease = u - std::sin(2.0f * kPi * u) / (2.0f * kPi);
-    return {stride * (-0.5f * d + d * ease), ankleM + g.liftM * std::sin(kPi * u)};
-}
-
-// Two-bone IK in the leg's sagittal plane: hip and knee angles about +Z (positive swings
-// the foot forward; the knee bends backward) reaching `toAnkle` (x forward, y up).
-std::pair<float, float> legAngles(glm::vec2 toAnkle, float thigh, float shin)
-{
-    const float d = std::clamp(std::hypot(toAnkle.x, toAnkle.y), std::abs(thigh - shin) + 1e-4f, (thigh + shin) * 0.9999f);
-    const float cosKnee = std::clamp((d * d - thigh * thigh - shin * shin) / (2.0f * thigh * shin), -1.0f, 1.0f);
-    const float knee = -std::acos(cosKnee);
-    const float towardAnkle = std::atan2(toAnkle.x, -toAnkle.y);
-    const float offset = std::atan2(shin * std::sin(knee), thigh + shin * std::cos(knee));
-    return {towardAnkle - offset, knee};
+    return {g.strideM, g.duty, g.liftM};
 }
 
 // Height of the hip joints above the ground at body phase p: over the stance foot's
@@ -58,7 +41,7 @@ float legRootHeight(const GaitShape& g, float p, float ankleM)
     float best = -1.0f;
     for (float s : {p, std::fmod(p + 0.5f, 1.0f)}) {
         if (s < g.duty) {
-            const float x = footTarget(g, s, ankleM).x;
+            const float x = footTarget(pathOf(g), s, ankleM).x;
             const float h = std::sqrt(std::max(0.0f, g.reachM * g.reachM - x * x));
             best = best < 0.0f ? h : std::min(best, h);
         }
@@ -82,7 +65,7 @@ Pose posedAt(const Character& c, const GaitShape& g, float p, float scale)
     pose.rootTranslation = {0.0f, legRoot + hipToLegRoot, 0.0f};
     for (int side = 0; side < 2; ++side) {
         const float s = std::fmod(p + 0.5f * static_cast<float>(side), 1.0f);
-        const glm::vec2 foot = footTarget(g, s, ankle);
+        const glm::vec2 foot = footTarget(pathOf(g), s, ankle);
         const auto [hip, knee] = legAngles({foot.x, foot.y - legRoot}, thigh, shin);
         const int upper = side == 0 ? kUpperLegL : kUpperLegR;
         pose.rotations[upper] = aboutZ(hip);

@@ -10,6 +10,8 @@ namespace throng::exporting::detail {
 const CycleClip& CompactCycles::clipOf(std::size_t character, int clip) const
 {
     const Character& c = m_library.character(character);
+    if (!c.ladder.empty())
+        return c.ladder[static_cast<std::size_t>(clip)];
     return clip == 1 ? c.run : c.walk;
 }
 
@@ -27,7 +29,12 @@ CompactPlan CompactCycles::plan(std::size_t character, std::span<const glm::vec3
         }
     if (moving == 0)
         return p;
-    const int clip = running > 0.5 * static_cast<double>(moving) ? 1 : 0;
+    // Walk or run, whichever it moves at most; with a gait ladder, the rung nearest its
+    // mean place along it.
+    const std::size_t rungs = m_library.character(character).ladder.size();
+    const int clip = rungs > 0 ? static_cast<int>(std::lround(running / static_cast<double>(moving) *
+                                                              static_cast<double>(rungs - 1)))
+                               : (running > 0.5 * static_cast<double>(moving) ? 1 : 0);
     const CycleClip& cycle = clipOf(character, clip);
     const double samples = static_cast<double>(cycle.samples.size());
     // The phase as this one clip's stride measures it, in samples of the cycle.

@@ -1,8 +1,9 @@
 #pragma once
-// Compact mode: each look's walk and run cycles are stored once, repeated as long as the
-// longest agent needs, and every agent reads a window of them that starts at its own
-// phase through its own time accessor, which maps its distance walked onto the cycle.
-// Exact while an agent stays in one clip; approximates stops and walk/run changes.
+// Compact mode: each look's walk and run cycles (or the rungs of its gait ladder) are
+// stored once, repeated as long as the longest agent needs, and every agent reads a
+// window of one that starts at its own phase through its own time accessor, which maps
+// its distance walked onto the cycle. Exact while an agent stays in one clip;
+// approximates stops and changes of gait (an agent plays the gait it moves at most).
 #ifndef THRONG_EXPORT_BUILD
 #error "a detail/ header, private to throng::export: include the module's public headers instead"
 #endif
@@ -22,7 +23,7 @@ namespace throng::exporting::detail {
 
 struct CompactPlan {
     std::size_t character = 0;
-    int clip = -1;           // -1: holds the still pose; 0: walk; 1: run
+    int clip = -1;           // -1: holds the still pose; 0: walk; 1: run; with a gait ladder, its rung
     std::size_t first = 0;   // window start in the cycle bank, samples
     std::vector<float> times;  // one per window sample, s, strictly increasing
 };

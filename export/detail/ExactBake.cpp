@@ -29,7 +29,7 @@ BakedJoints bakeJoints(const JointClock& jc, const Character& c, const std::vect
     b.kept.resize(joints);
     for (std::size_t j = 0; j < joints; ++j)
         b.kept[j] = keepRotationKeys(jc.clock.times, std::span<const glm::quat>(b.rotations.data() + j * keys, keys),
-                                     toleranceRad);
+                                     toleranceRad * c.keyToleranceScale);
     return b;
 }
 

@@ -42,7 +42,7 @@ const std::vector<std::string>& behaviourNames()
 
 const std::vector<std::string>& builtinCharacters()
 {
-    static const std::vector<std::string> names{"man", "woman", "tall_man", "child", "elderly", "car", "bird"};
+    static const std::vector<std::string> names{"man", "woman", "tall_man", "child", "elderly", "horse", "car", "bird"};
     return names;
 }
 

@@ -142,6 +142,38 @@ private slots:
         QCOMPARE(car.poseFor(sim::Clip::Wave, 0.5f, 0.0f, false), PoseTable::walkPose(4));
     }
 
+    // A horse's gait ladder: each rung's poses follow the others, are that gait skinned at
+    // its phase, and a moving horse shows the rung nearest its speed (walk, trot, canter,
+    // gallop at 1, 3, 5.5 and 9.5 m/s: past the middle between two, the faster).
+    void aHorseShowsTheGaitOfItsSpeed()
+    {
+        const exporting::Character horse = exporting::makeHorse(exporting::Lod::Far);
+        const PoseTable table = buildPoseTable(horse);
+        QCOMPARE(table.ladderSpeeds, horse.ladderSpeeds);
+        QCOMPARE(table.poseCount(), PoseTable::kPoseCount + 4 * PoseTable::kWalkPoses);
+        QCOMPARE(table.positions.size(), table.vertexCount * std::size_t(table.poseCount()));
+        QCOMPARE(table.joints.size(), table.jointCount * std::size_t(table.poseCount()));
+        for (int r = 0; r < 4; ++r)
+            for (int k = 0; k < PoseTable::kWalkPoses; k += 3) {
+                const double phase = double(k) / PoseTable::kWalkPoses;
+                const std::vector<glm::vec3> want = skinnedAt(horse, horse.ladder[std::size_t(r)], phase);
+                const float off = maxDistance(table, PoseTable::ladderPose(r, k), want);
+                QVERIFY2(off < 1e-4f, qPrintable(QString("rung %1 pose %2 is off by %3 m").arg(r).arg(k).arg(off)));
+            }
+        // The trot's pose at phase 0 differs from the walk's and the gallop's: the gaits differ.
+        QVERIFY(maxDistance(table, PoseTable::ladderPose(1, 0), skinnedAt(horse, horse.ladder[0], 0.0)) > 0.1f);
+        QVERIFY(maxDistance(table, PoseTable::ladderPose(1, 0), skinnedAt(horse, horse.ladder[3], 0.0)) > 0.1f);
+        const struct { float speed; int rung; } picks[] = {{0.5f, 0}, {1.9f, 0}, {2.1f, 1}, {4.0f, 1}, {4.5f, 2},
+                                                           {7.0f, 2}, {7.5f, 3}, {12.0f, 3}};
+        for (const auto& p : picks) {
+            QCOMPARE(table.poseFor(sim::Clip::Walk, 0.26f, 0.0f, true, p.speed), PoseTable::ladderPose(p.rung, 2));
+            QCOMPARE(table.poseFor(sim::Clip::Run, 0.26f, 0.0f, true, p.speed), PoseTable::ladderPose(p.rung, 2));
+        }
+        // Standing, it stands; without a speed, walk and run as for any character.
+        QCOMPARE(table.poseFor(sim::Clip::Idle, 0.26f, 0.0f, false, 0.0f), 0);
+        QCOMPARE(table.poseFor(sim::Clip::Run, 0.26f), PoseTable::runPose(2));
+    }
+
     // Each action pose is the export's pose for it (gaitPose), skinned; the wave lifts a
     // hand above the head, and the walking wave keeps the walk's legs.
     void actionPosesAreTheExportsPoses()
