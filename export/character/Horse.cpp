@@ -10,6 +10,7 @@
 #include "export/character/SurfaceBuilder.h"
 
 #include <glm/gtc/quaternion.hpp>
+#include <glm/mat4x4.hpp>
 
 #include <algorithm>
 #include <array>
@@ -286,6 +287,7 @@ Character makeHorse(Lod lod)
     HorseGait stand = kWalk;
     stand.name = "idle";
     stand.path.strideM = 0.0f;
+    stand.path.liftM = 0.0f;
     stand.nod = 0.0f;
     stand.riderLean = 0.0f;
     c.idle = makeCycle(c, stand, 1);
@@ -293,6 +295,11 @@ Character makeHorse(Lod lod)
     for (const HorseGait* g : {&kWalk, &kTrot, &kCanter, &kGallop})
         c.ladder.push_back(makeCycle(c, *g, kSamplesPerCycle));
     c.ladderSpeeds.assign(kLadderSpeeds.begin(), kLadderSpeeds.end());
+    // Legs for the foot planter (FootPlanter.h): hooves locked where they land through
+    // changes of gait and stops, and stood on the terrain.
+    const std::vector<glm::mat4> standing = jointGlobalTransforms(c, sampleClip(c.idle, 0.0));
+    for (const int upper : kUpper)
+        c.legs.push_back({upper, upper + 1, upper + 2, glm::vec3(standing[std::size_t(upper + 2)][3])});
     c.walk = c.ladder.front();
     c.run = c.ladder.back();
     c.hasIdle = true;

@@ -5,13 +5,14 @@
 // the gait's order (the walk's four beats, the trot's diagonal pairs, the canter's three
 // beats, the gallop's four), the rider sits above the horse's back, and the mesh is a
 // smooth surface of a few thousand triangles near, fewer far. Compact mode plays each
-// rider's gait too.
+// rider's gait too, and up a bumpy hillside the hooves stand on the ground.
 #include "GltfReadBack.h"
 #include "TestRegistry.h"
 
 #include "export/GltfExporter.h"
 #include "export/character/BuiltinCharacters.h"
 #include "simcore/io/SceneIO.h"
+#include "simcore/scene/TerrainHeight.h"
 #include "simcore/world/World.h"
 
 #include <QTemporaryDir>
@@ -54,6 +55,37 @@ std::string scene()
         yaml += "  - {id: " + std::to_string(k + 1) + ", type: " + kGaits[k].type + ", position: [0, 0, " +
                 std::to_string(-12.0f + 8.0f * k) + "], heading: 0, goal: far_" + std::to_string(k) + "}\n";
     return yaml;
+}
+
+// Riders at a walk, a trot and a canter up a hillside: an 8 % grade along x with bumps of
+// +-15 cm on it, as a 70 x 20 m terrain at 0.5 m samples.
+float hillAt(float x, float z)
+{
+    return 0.08f * x + 0.15f * std::sin(0.6f * x) * std::cos(0.4f * z);
+}
+
+std::string hillScene()
+{
+    std::string yaml = "throng: 1\nsettings: {fps: 30, seed: 5, duration: 10, bounds: {min: [-5, -10], max: [65, "
+                       "10]}}\nagent_types:\n";
+    const float speeds[3] = {1.0f, 3.0f, 5.5f};
+    for (int k = 0; k < 3; ++k)
+        yaml += "  - {name: rider_" + std::to_string(k) + ", character: horse, radius: 0.8, max_speed: " +
+                std::to_string(speeds[k]) + ", max_force: 30, variation: {speed: [1, 1], height: [1, 1]}, " +
+                "behaviours: {seek: 1}}\n";
+    yaml += "goals:\n";
+    for (int k = 0; k < 3; ++k)
+        yaml += "  - {name: top_" + std::to_string(k) + ", position: [64, " + std::to_string(-6 + 6 * k) +
+                "], radius: 1}\n";
+    yaml += "agents:\n";
+    for (int k = 0; k < 3; ++k)
+        yaml += "  - {id: " + std::to_string(k + 1) + ", type: rider_" + std::to_string(k) + ", position: [0, 0, " +
+                std::to_string(-6 + 6 * k) + "], heading: 0, goal: top_" + std::to_string(k) + "}\n";
+    yaml += "terrain:\n  origin: [-5, -10]\n  cell: 0.5\n  cols: 141\n  rows: 41\n  heights: [";
+    for (int z = 0; z < 41; ++z)
+        for (int x = 0; x < 141; ++x)
+            yaml += (x + z > 0 ? ", " : "") + std::to_string(hillAt(-5.0f + 0.5f * float(x), -10.0f + 0.5f * float(z)));
+    return yaml + "]\n";
 }
 
 const char* kHoofNames[4] = {"fore_l", "fore_r", "hind_l", "hind_r"};
@@ -237,6 +269,73 @@ private slots:
                                                                .arg(s.worstSlideM)));
             }
         checkOrder(compact);
+    }
+
+    // Up a bumpy hillside the hooves stand on the terrain: while a hoof is down (within
+    // 5 mm of where it stands on the ground under it) it slides less than 1 cm; no hoof
+    // is ever more than 2 cm under the ground; and walking, at every frame the lower hoof
+    // of each end is within 2 cm of the ground (a walk always has one down there).
+    void hoovesStandOnTheHillside()
+    {
+        const sim::LoadResult r = sim::parseScene(hillScene(), "hill.yaml", "");
+        QVERIFY2(r.ok(), r.ok() ? "" : r.diagnostics[0].format().c_str());
+        sim::World world(r.scene, sim::WorldOptions{0, false, 1});
+        sim::FrameCache cache;
+        world.startRecording(cache);
+        std::vector<sim::AgentFrame> frame;
+        const std::size_t frames = 10 * 30;
+        for (std::size_t f = 1; f < frames; ++f) {
+            world.step();
+            world.snapshot(frame);
+            cache.append(frame);
+        }
+        exporting::GltfOptions options;
+        options.path = m_dir.filePath("hill.glb").toStdString();
+        QVERIFY(exporting::exportGltf(r.scene, cache, options).ok());
+        tinygltf::Model model;
+        std::string error;
+        QVERIFY2(test::loadGltf(options.path, model, error), error.c_str());
+        const sim::Terrain& terrain = r.scene.terrain;
+        for (int a = 0; a < 3; ++a) {
+            const std::string root = "agent_" + std::to_string(a + 1) + "_rider_" + std::to_string(a);
+            float worstSlide = 0.0f, deepest = 0.0f, worstLowest = 0.0f;
+            std::array<std::vector<glm::vec3>, 4> hooves;
+            for (int leg = 0; leg < 4; ++leg)
+                for (std::size_t f = 30; f < frames; ++f)  // from 1 s: every rider on its way
+                    hooves[std::size_t(leg)].push_back(
+                        test::jointWorldAt(model, root, hoofChain(leg), float(f) / 30.0f));
+            auto above = [&](const glm::vec3& p) { return p.y - kStandM - sim::terrainHeight(terrain, p.x, p.z); };
+            for (int leg = 0; leg < 4; ++leg) {
+                const std::vector<glm::vec3>& at = hooves[std::size_t(leg)];
+                std::size_t start = 0;
+                bool down = false;
+                for (std::size_t k = 0; k < at.size(); ++k) {
+                    const float h = above(at[k]);
+                    deepest = std::min(deepest, h);
+                    if (!down && h < kDownM) {
+                        down = true;
+                        start = k;
+                    } else if (down && h > kUpM) {
+                        down = false;
+                    }
+                    if (down && h < kDownM)
+                        worstSlide = std::max(worstSlide, glm::length(glm::vec2(at[k].x - at[start].x,
+                                                                                at[k].z - at[start].z)));
+                }
+            }
+            // At a walk each end always has a hoof down: the lower of its two on the ground.
+            for (std::size_t k = 0; a == 0 && k < hooves[0].size(); ++k)
+                for (int end = 0; end < 2; ++end)
+                    worstLowest =
+                        std::max(worstLowest, std::min(std::fabs(above(hooves[std::size_t(2 * end)][k])),
+                                                       std::fabs(above(hooves[std::size_t(2 * end + 1)][k]))));
+            qInfo("rider %d up the hill: worst slide while down %.1f mm, deepest hoof %.1f mm under the ground",
+                  a, 1000.0 * double(worstSlide), -1000.0 * double(deepest));
+            QVERIFY2(worstSlide < 0.01f, qPrintable(QString("rider %1 slides %2 m").arg(a).arg(worstSlide)));
+            QVERIFY2(deepest > -0.02f,
+                     qPrintable(QString("rider %1: a hoof %2 m under the ground").arg(a).arg(deepest)));
+            QVERIFY2(worstLowest < 0.02f, qPrintable(QString("walking, an end %1 m off the ground").arg(worstLowest)));
+        }
     }
 
     // The rider's hips stay in the saddle on the horse's back, however it moves.
