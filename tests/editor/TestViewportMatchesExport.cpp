@@ -6,6 +6,7 @@
 // of how far the file's joint moves in half the time between two of the viewport's poses
 // (8 a cycle; a one-shot's 8 span it from start to end), the most the nearest pose can miss.
 #include "GltfReadBack.h"
+#include "RecordRun.h"
 #include "TestRegistry.h"
 
 #include "editor/viewport/AgentCharacters.h"
@@ -104,13 +105,7 @@ private slots:
         m_scene = r.scene;
         sim::World world(m_scene, sim::WorldOptions{0, false, 1});
         QVERIFY(world.brainErrors().empty());
-        world.startRecording(m_cache);
-        std::vector<sim::AgentFrame> frame;
-        for (std::size_t f = 1; f < kFrames; ++f) {
-            world.step();
-            world.snapshot(frame);
-            m_cache.append(frame);
-        }
+        test::recordRun(world, kFrames, m_cache);
         exporting::GltfOptions options;
         options.path = m_dir.filePath("viewport-export.glb").toStdString();
         QVERIFY(exporting::exportGltf(m_scene, m_cache, options).ok());

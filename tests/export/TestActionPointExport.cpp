@@ -5,6 +5,7 @@
 // face west; the CSV says `sit` on exactly those frames; the Khronos-independent read
 // back (tinygltf) sees every frame.
 #include "GltfReadBack.h"
+#include "RecordRun.h"
 #include "TestRegistry.h"
 
 #include "export/GltfExporter.h"
@@ -58,13 +59,7 @@ private slots:
         const sim::LoadResult r = sim::parseScene(kBench, "bench.yaml", "");
         QVERIFY2(r.ok(), r.ok() ? "" : r.diagnostics[0].format().c_str());
         sim::World world(r.scene, sim::WorldOptions{0, false, 1});
-        world.startRecording(m_cache);
-        std::vector<sim::AgentFrame> frame;
-        for (std::size_t f = 1; f < kFrames; ++f) {
-            world.step();
-            world.snapshot(frame);
-            m_cache.append(frame);
-        }
+        test::recordRun(world, kFrames, m_cache);
         exporting::GltfOptions options;
         options.path = m_dir.filePath("bench.glb").toStdString();
         QVERIFY(exporting::exportGltf(r.scene, m_cache, options).ok());

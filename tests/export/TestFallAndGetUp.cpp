@@ -6,6 +6,7 @@
 // give; the CSV says `fall` and `get_up` on those frames. A second type with
 // `action_blend: 1` blends the same fall in over a whole second: half-way into it at 0.5 s.
 #include "GltfReadBack.h"
+#include "RecordRun.h"
 #include "TestRegistry.h"
 
 #include "export/GltfExporter.h"
@@ -76,13 +77,7 @@ private slots:
         QVERIFY(m_scene.agentTypes[0].actionBlendS < 0.0f);
         sim::World world(m_scene, sim::WorldOptions{0, false, 1});
         QVERIFY(world.brainErrors().empty());
-        world.startRecording(m_cache);
-        std::vector<sim::AgentFrame> frame;
-        for (std::size_t f = 1; f < kFrames; ++f) {
-            world.step();
-            world.snapshot(frame);
-            m_cache.append(frame);
-        }
+        test::recordRun(world, kFrames, m_cache);
         exporting::GltfOptions options;
         options.path = m_dir.filePath("fallers.glb").toStdString();
         QVERIFY(exporting::exportGltf(m_scene, m_cache, options).ok());

@@ -7,6 +7,7 @@
 // smooth surface of a few thousand triangles near, fewer far. Compact mode plays each
 // rider's gait too, and up a bumpy hillside the hooves stand on the ground.
 #include "GltfReadBack.h"
+#include "RecordRun.h"
 #include "TestRegistry.h"
 
 #include "export/GltfExporter.h"
@@ -183,13 +184,7 @@ private slots:
         const sim::LoadResult r = sim::parseScene(scene(), "horses.yaml", "");
         QVERIFY2(r.ok(), r.ok() ? "" : r.diagnostics[0].format().c_str());
         sim::World world(r.scene, sim::WorldOptions{0, false, 1});
-        world.startRecording(m_cache);
-        std::vector<sim::AgentFrame> frame;
-        for (std::size_t f = 1; f < kFrames; ++f) {
-            world.step();
-            world.snapshot(frame);
-            m_cache.append(frame);
-        }
+        test::recordRun(world, kFrames, m_cache);
         for (std::size_t a = 0; a < kGaits.size(); ++a)
             for (std::size_t f = std::size_t(kFromS * kFps); f < kFrames; f += 60)
                 QVERIFY2(std::fabs(m_cache.frame(f)[a].speed - kGaits[a].speed) < 0.02f * kGaits[a].speed,
@@ -281,14 +276,8 @@ private slots:
         QVERIFY2(r.ok(), r.ok() ? "" : r.diagnostics[0].format().c_str());
         sim::World world(r.scene, sim::WorldOptions{0, false, 1});
         sim::FrameCache cache;
-        world.startRecording(cache);
-        std::vector<sim::AgentFrame> frame;
         const std::size_t frames = 10 * 30;
-        for (std::size_t f = 1; f < frames; ++f) {
-            world.step();
-            world.snapshot(frame);
-            cache.append(frame);
-        }
+        test::recordRun(world, frames, cache);
         exporting::GltfOptions options;
         options.path = m_dir.filePath("hill.glb").toStdString();
         QVERIFY(exporting::exportGltf(r.scene, cache, options).ok());
