@@ -90,6 +90,12 @@ void PropertyForm::setRowShown(QWidget* widget, bool shown)
     m_layout->setRowVisible(widget, shown);
 }
 
+void PropertyForm::addNumberFields()
+{
+    for (const PropertyField& field : propertyFields(kind()))
+        addNumber(field);
+}
+
 void PropertyForm::addNumber(const PropertyField& field)
 {
     auto* spin = new QDoubleSpinBox(m_owner);

@@ -44,6 +44,8 @@ public:
     QWidget* owner() const { return m_owner; }
 
     void addNumber(const PropertyField& field);
+    // A number row for each of the kind's fields (propertyFields), in their order.
+    void addNumberFields();
     // A combo box of names; `none` adds "(none)" for an empty value; `editable` lets the
     // user type a new name (an agent's group).
     void addChoice(const QString& key, const QString& label, Options options, Locate<std::string> locate,

@@ -60,12 +60,6 @@ void addPoints(PropertyForm& form, PropertyForm::Locate<PointTable::Points> loca
     form.addRow(tr("Points"), table, [table] { table->refresh(); });
 }
 
-void addNumbers(PropertyForm& form)
-{
-    for (const PropertyField& field : propertyFields(form.kind()))
-        form.addNumber(field);
-}
-
 sim::SpawnGroup withAreaShape(const sim::SpawnGroup& now, sim::AreaShape shape)
 {
     sim::SpawnGroup next = now;
@@ -118,7 +112,7 @@ void addAgentRows(PropertyForm& form)
     form.addChoice("goal", tr("Goal"), namesOfKind(ItemKind::Goal), THRONG_AT(agents, goal), true);
     form.addChoice("path", tr("Path"), namesOfKind(ItemKind::Path), THRONG_AT(agents, path), true);
     addLeaderRow(form, THRONG_AT(agents, leader), true);
-    addNumbers(form);
+    form.addNumberFields();
     addAgentVariationRows(form);
 }
 
@@ -131,7 +125,7 @@ void addAgentTypeRows(PropertyForm& form)
     form.addEnum<sim::Navigation>("navigation", tr("Navigation"), {tr("Direct"), tr("A* plan"), tr("Flow field")},
                                   THRONG_AT(agentTypes, navigation));
     form.addCheck("priorityCombination", tr("Prioritised behaviours"), THRONG_AT(agentTypes, priorityCombination));
-    addNumbers(form);
+    form.addNumberFields();
     addAgentTypeLookRows(form);
     addAgentTypeCollisionRows(form);
     auto* table = new BehaviourTable(form, form.owner());
@@ -158,7 +152,7 @@ void addGroupRows(PropertyForm& form)
             return withAreaShape(now, sim::AreaShape(index));
         });
     });
-    addNumbers(form);
+    form.addNumberFields();
     // A polygon's corners, kept a valid spawn area: an edit that would make it cross
     // itself is refused.
     auto* corners = new PointTable(form, THRONG_AT(groups, points), form.owner());
@@ -231,7 +225,7 @@ void addSetRows(PropertyForm& form)
         break;
     default: break;
     }
-    addNumbers(form);
+    form.addNumberFields();
 }
 
 #undef THRONG_AT

@@ -12,12 +12,6 @@ QString tr(const char* text)
     return PropertyForm::tr(text);
 }
 
-void addNumbers(PropertyForm& form)
-{
-    for (const PropertyField& field : propertyFields(form.kind()))
-        form.addNumber(field);
-}
-
 // The agent types a vehicle may be: those of kind vehicle (the scene check refuses others).
 QStringList vehicleTypes(const sim::Scene& s)
 {
@@ -41,7 +35,7 @@ QStringList laneNames(const sim::Scene& s)
 void addCrosswalkRows(PropertyForm& form)
 {
     form.addName();
-    addNumbers(form);  // from x/z, to x/z, width
+    form.addNumberFields();  // from x/z, to x/z, width
 }
 
 void addVehicleRows(PropertyForm& form)
@@ -53,7 +47,7 @@ void addVehicleRows(PropertyForm& form)
                    [](sim::Scene& s, std::size_t i) -> auto& { return s.vehicles[i].type; }, false);
     form.addChoice("lane", tr("Lane"), laneNames,
                    [](sim::Scene& s, std::size_t i) -> auto& { return s.vehicles[i].lane; }, false);
-    addNumbers(form);  // start distance, initial speed
+    form.addNumberFields();  // start distance, initial speed
 }
 
 }  // namespace throng::editor

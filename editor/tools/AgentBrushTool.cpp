@@ -11,13 +11,13 @@ namespace throng::editor {
 
 namespace {
 // A new dab every fifth of the radius: a comb follows the stroke's bends closely.
-constexpr float kDabSpacingRadii = 0.2f;
-constexpr float kDefaultRadiusM = 3.0f;
+constexpr float kAgentDabSpacingRadii = 0.2f;
+constexpr float kAgentBrushRadiusM = 3.0f;
 int g_nextAgentStrokeId = 1;
 }  // namespace
 
 AgentBrushTool::AgentBrushTool(SceneDocument& document, Viewport& viewport, QObject* parent)
-    : BrushTool(document, viewport, kDefaultRadiusM, parent)
+    : BrushTool(document, viewport, kAgentBrushRadiusM, parent)
 {
 }
 
@@ -32,7 +32,7 @@ void AgentBrushTool::strokeBegan(glm::vec2 point)
 void AgentBrushTool::strokeMoved(glm::vec2 point)
 {
     m_lastPoint = point;
-    const float step = std::max(0.05f, radiusM() * kDabSpacingRadii);
+    const float step = std::max(0.05f, radiusM() * kAgentDabSpacingRadii);
     while (glm::length(point - m_lastDab) >= step)
         dabAt(m_lastDab + glm::normalize(point - m_lastDab) * step);
 }

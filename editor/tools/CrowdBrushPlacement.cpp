@@ -1,4 +1,5 @@
 #include "editor/tools/CrowdBrushPlacement.h"
+#include "editor/SegmentDistance.h"
 
 #include "editor/tools/TerrainHeight.h"
 
@@ -15,14 +16,6 @@ namespace throng::editor {
 namespace {
 
 constexpr int kTriesPerAgent = 30;  // Bridson's k for Poisson-disc sampling
-
-float segmentDistance(glm::vec2 p, glm::vec2 a, glm::vec2 b)
-{
-    const glm::vec2 ab = b - a;
-    const float len2 = glm::dot(ab, ab);
-    const float t = len2 > 0.0f ? std::clamp(glm::dot(p - a, ab) / len2, 0.0f, 1.0f) : 0.0f;
-    return glm::length(p - (a + t * ab));
-}
 
 std::string chooseType(const sim::Scene& scene, const std::vector<TypeShare>& mix, float u)
 {

@@ -15,7 +15,7 @@ namespace throng::editor {
 
 namespace {
 // A new dab every quarter radius keeps the density even along fast strokes.
-constexpr float kDabSpacingRadii = 0.25f;
+constexpr float kCrowdDabSpacingRadii = 0.25f;
 int g_nextStrokeId = 1;
 }  // namespace
 
@@ -49,7 +49,7 @@ void CrowdBrushTool::strokeBegan(glm::vec2 point)
 
 void CrowdBrushTool::strokeMoved(glm::vec2 point)
 {
-    const float step = std::max(0.05f, radiusM() * kDabSpacingRadii);
+    const float step = std::max(0.05f, radiusM() * kCrowdDabSpacingRadii);
     // Dabs at even spacing along the segment, so a fast move leaves no gaps.
     while (glm::length(point - m_lastDab) >= step) {
         const glm::vec2 dir = glm::normalize(point - m_lastDab);

@@ -11,11 +11,11 @@ namespace throng::editor {
 
 namespace {
 int g_nextEraseStrokeId = 1;
-constexpr float kDefaultRadiusM = 2.0f;
+constexpr float kEraseBrushRadiusM = 2.0f;
 }  // namespace
 
 EraseBrushTool::EraseBrushTool(SceneDocument& document, Viewport& viewport, QObject* parent)
-    : BrushTool(document, viewport, kDefaultRadiusM, parent)
+    : BrushTool(document, viewport, kEraseBrushRadiusM, parent)
 {
 }
 

@@ -1,4 +1,5 @@
 #include "editor/tools/SelectTool.h"
+#include "editor/SegmentDistance.h"
 
 #include "editor/SceneDocument.h"
 #include "editor/commands/ChangeValueCommand.h"
@@ -29,15 +30,6 @@ constexpr double kClickPx = 3.0;  // a box smaller than this is a click
 double distancePx(QPointF a, QPointF b)
 {
     return std::hypot(a.x() - b.x(), a.y() - b.y());
-}
-
-// Distance in pixels from `p` to the segment ab.
-double segmentDistancePx(QPointF p, QPointF a, QPointF b)
-{
-    const QPointF ab = b - a;
-    const double len2 = QPointF::dotProduct(ab, ab);
-    const double t = len2 > 0.0 ? std::clamp(QPointF::dotProduct(p - a, ab) / len2, 0.0, 1.0) : 0.0;
-    return distancePx(p, a + t * ab);
 }
 
 }  // namespace

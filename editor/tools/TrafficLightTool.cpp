@@ -1,4 +1,5 @@
 #include "editor/tools/TrafficLightTool.h"
+#include "editor/SegmentDistance.h"
 
 #include "editor/SceneDocument.h"
 #include "editor/commands/AddSceneItemCommand.h"
@@ -31,14 +32,6 @@ std::pair<float, float> projectOnLane(const sim::Lane& lane, glm::vec2 p)
         along += len;
     }
     return {bestAlong, bestDist};
-}
-
-float segmentDistance(glm::vec2 p, glm::vec2 a, glm::vec2 b)
-{
-    const glm::vec2 ab = b - a;
-    const float len2 = glm::dot(ab, ab);
-    const float t = len2 > 0.0f ? std::clamp(glm::dot(p - a, ab) / len2, 0.0f, 1.0f) : 0.0f;
-    return glm::length(p - (a + t * ab));
 }
 
 // A lane or crosswalk obeys one signal only.

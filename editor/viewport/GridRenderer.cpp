@@ -15,7 +15,7 @@ namespace throng::editor {
 
 namespace {
 
-const char* const kVertexShader = R"(#version 330 core
+const char* const kGridVertexShader = R"(#version 330 core
 layout(location = 0) in vec2 a_ground;
 uniform mat4 u_viewProjection;
 out vec2 v_ground;
@@ -28,7 +28,7 @@ void main()
 
 // Lines are one pixel wide whatever the zoom: distances are measured in pixels through
 // fwidth. The finer grid fades out before its lines crowd closer than kMinCellPx.
-const char* const kFragmentShader = R"(#version 330 core
+const char* const kGridFragmentShader = R"(#version 330 core
 in vec2 v_ground;
 uniform vec2 u_boundsMin;
 uniform vec2 u_boundsMax;
@@ -67,7 +67,7 @@ void setColour(QOpenGLShaderProgram& p, const char* name, glm::vec4 c)
 
 bool GridRenderer::initialize(QOpenGLFunctions_3_3_Core& gl)
 {
-    m_program = buildShaderProgram("grid", kVertexShader, kFragmentShader);
+    m_program = buildShaderProgram("grid", kGridVertexShader, kGridFragmentShader);
     if (!m_program)
         return false;
     gl.glGenVertexArrays(1, &m_vao);

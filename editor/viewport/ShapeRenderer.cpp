@@ -12,7 +12,7 @@ namespace throng::editor {
 
 namespace {
 
-const char* const kVertexShader = R"(#version 330 core
+const char* const kShapeVertexShader = R"(#version 330 core
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec2 a_normal;
 layout(location = 2) in float a_halfWidth;
@@ -30,7 +30,7 @@ void main()
 }
 )";
 
-const char* const kFragmentShader = R"(#version 330 core
+const char* const kShapeFragmentShader = R"(#version 330 core
 in vec4 v_colour;
 out vec4 o_colour;
 void main()
@@ -43,7 +43,7 @@ void main()
 
 bool ShapeRenderer::initialize(QOpenGLFunctions_3_3_Core& gl)
 {
-    m_program = buildShaderProgram("shape", kVertexShader, kFragmentShader);
+    m_program = buildShaderProgram("shape", kShapeVertexShader, kShapeFragmentShader);
     if (!m_program)
         return false;
     gl.glGenVertexArrays(1, &m_vao);

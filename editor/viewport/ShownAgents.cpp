@@ -1,4 +1,5 @@
 #include "editor/viewport/ShownAgents.h"
+#include "editor/SegmentDistance.h"
 
 #include <glm/common.hpp>
 #include <glm/vec4.hpp>
@@ -25,15 +26,6 @@ std::optional<Projected> project(const RenderView& view, glm::vec3 p)
     const glm::vec2 ndc = glm::vec2(clip) / clip.w;
     return Projected{{(0.5 + 0.5 * double(ndc.x)) * double(view.sizePx.x), (0.5 - 0.5 * double(ndc.y)) * double(view.sizePx.y)},
                      clip.w};
-}
-
-double segmentDistancePx(QPointF p, QPointF a, QPointF b)
-{
-    const QPointF ab = b - a;
-    const double len2 = QPointF::dotProduct(ab, ab);
-    const double t = len2 > 0.0 ? std::clamp(QPointF::dotProduct(p - a, ab) / len2, 0.0, 1.0) : 0.0;
-    const QPointF d = p - (a + t * ab);
-    return std::hypot(d.x(), d.y());
 }
 
 }  // namespace

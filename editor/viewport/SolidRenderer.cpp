@@ -12,7 +12,7 @@ namespace throng::editor {
 
 namespace {
 
-const char* const kVertexShader = R"(#version 330 core
+const char* const kSolidVertexShader = R"(#version 330 core
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;
 layout(location = 2) in vec4 a_colour;
@@ -31,7 +31,7 @@ void main()
 )";
 
 // The light and the shading of AgentShaders' glyphs, so the set and the crowd match.
-const char* const kFragmentShader = R"(#version 330 core
+const char* const kSolidFragmentShader = R"(#version 330 core
 in vec4 v_colour;
 in vec3 v_normal;
 in float v_glow;
@@ -48,7 +48,7 @@ void main()
 
 bool SolidRenderer::initialize(QOpenGLFunctions_3_3_Core& gl)
 {
-    m_program = buildShaderProgram("solid", kVertexShader, kFragmentShader);
+    m_program = buildShaderProgram("solid", kSolidVertexShader, kSolidFragmentShader);
     if (!m_program)
         return false;
     gl.glGenVertexArrays(1, &m_vao);

@@ -12,7 +12,7 @@
 namespace throng::editor {
 
 namespace {
-constexpr float kLineM = 0.035f;
+constexpr float kArrowLineM = 0.035f;
 constexpr float kArrowM = 0.05f;
 constexpr float kTinyForceN = 1e-3f;
 constexpr float kFieldArrowM = 0.35f;  // the length of a field sample's arrow
@@ -71,21 +71,21 @@ void SteeringOverlay::add(std::span<const sim::AgentDebug> agents, ShapeMesh& me
         const glm::vec2 p = xz(a.position);
         addViewCone(mesh, a);
         for (const sim::AgentDebug::Seen& n : a.neighbours) {
-            mesh.addLine(p, xz(n.position), kLineM * 0.7f, palette::kNeighbourLink);
+            mesh.addLine(p, xz(n.position), kArrowLineM * 0.7f, palette::kNeighbourLink);
             mesh.addRing(xz(n.position), 0.35f, 0.025f, palette::kNeighbourLink);
         }
         if (a.path.size() >= 2) {
             std::vector<glm::vec2> way;
             for (const glm::vec3& q : a.path)
                 way.push_back(xz(q));
-            mesh.addDashedPolyline(way, kLineM, 0.4f, 0.25f, palette::kPlannedPath);
+            mesh.addDashedPolyline(way, kArrowLineM, 0.4f, 0.25f, palette::kPlannedPath);
         }
         if (a.hasTarget) {
             mesh.addRing(xz(a.target), 0.3f, 0.04f, palette::kSteerTarget);
             mesh.addLine(p, xz(a.target), 0.015f, glm::vec4(glm::vec3(palette::kSteerTarget), 0.5f));
         }
         for (const sim::AgentDebug::Feeler& feeler : a.feelers)
-            mesh.addLine(xz(feeler.from), xz(feeler.to), kLineM, palette::kFeeler);
+            mesh.addLine(xz(feeler.from), xz(feeler.to), kArrowLineM, palette::kFeeler);
         // The field it follows: a short arrow from each sample along its direction (none
         // where it has none).
         for (const sim::AgentDebug::FieldSample& f : a.field)

@@ -1,4 +1,5 @@
 #include "export/character/FootPlanter.h"
+#include "export/character/PoseMaths.h"
 
 #include "export/character/LegIk.h"
 #include "simcore/scene/TerrainHeight.h"
@@ -12,8 +13,6 @@
 namespace throng::exporting {
 
 namespace {
-
-constexpr float kPi = 3.14159265f;
 
 float smoothstep01(float t)
 {

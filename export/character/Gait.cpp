@@ -1,6 +1,7 @@
 #include "export/character/Gait.h"
 
 #include "export/character/LegIk.h"
+#include "export/character/PoseMaths.h"
 
 #include <glm/geometric.hpp>
 
@@ -11,14 +12,6 @@
 namespace throng::exporting {
 
 namespace {
-
-float smoothstep(float lo, float hi, float x)
-{
-    if (!(hi > lo))
-        return x >= hi ? 1.0f : 0.0f;
-    const float t = std::clamp((x - lo) / (hi - lo), 0.0f, 1.0f);
-    return t * t * (3.0f - 2.0f * t);
-}
 
 // Where runWeight puts a character with a gait ladder: the rung below and the share of
 // the one above (runWeight runs over the whole ladder, 0 the first rung, 1 the last).

@@ -6,6 +6,7 @@
 // hoof that touches down stays where it landed until it lifts. The body rises and falls
 // and pitches over the hooves that carry it; the head nods; the rider sits the motion.
 #include "export/character/BuiltinCharacters.h"
+#include "export/character/PoseMaths.h"
 #include "export/character/StrideMaths.h"
 #include "export/character/SurfaceBuilder.h"
 
@@ -20,14 +21,7 @@ namespace throng::exporting {
 
 namespace {
 
-constexpr float kPi = 3.14159265358979f;
-constexpr int kSamplesPerCycle = 128;
-
-struct JointSpec {
-    const char* name;
-    int parent;
-    glm::vec3 offset;  // from the parent, m
-};
+constexpr int kHorseSamplesPerCycle = 128;
 
 // Leg order in the tables below: left fore, right fore, left hind, right hind.
 constexpr int kLegs = 4;
@@ -83,9 +77,6 @@ const HorseGait kCanter{"canter", {3.4f, 0.3f, 0.24f, kLanding}, {0.3f, 0.55f, 0
 const HorseGait kGallop{"gallop", {5.0f, 0.21f, 0.3f, kLanding}, {0.45f, 0.57f, 0.0f, 0.12f}, 0.16f, 1, 0.35f};
 // The speeds (m/s) at which each is the whole gait; between two, the one blends into the next.
 constexpr std::array<float, 4> kLadderSpeeds{1.0f, 3.0f, 5.5f, 9.0f};
-
-glm::quat aboutZ(float a) { return glm::angleAxis(a, glm::vec3(0.0f, 0.0f, 1.0f)); }
-glm::quat aboutY(float a) { return glm::angleAxis(a, glm::vec3(0.0f, 1.0f, 0.0f)); }
 
 bool isFore(int leg) { return leg < 2; }
 float upperM(int leg) { return isFore(leg) ? kForeUpperM : kHindUpperM; }
@@ -293,7 +284,7 @@ Character makeHorse(Lod lod)
     c.idle = makeCycle(c, stand, 1);
     c.idle.strideM = kWalk.path.strideM;
     for (const HorseGait* g : {&kWalk, &kTrot, &kCanter, &kGallop})
-        c.ladder.push_back(makeCycle(c, *g, kSamplesPerCycle));
+        c.ladder.push_back(makeCycle(c, *g, kHorseSamplesPerCycle));
     c.ladderSpeeds.assign(kLadderSpeeds.begin(), kLadderSpeeds.end());
     // Legs for the foot planter (FootPlanter.h): hooves locked where they land through
     // changes of gait and stops, and stood on the terrain.

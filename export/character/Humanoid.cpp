@@ -1,4 +1,5 @@
 #include "export/character/BuiltinCharacters.h"
+#include "export/character/PoseMaths.h"
 #include "export/character/SurfaceBuilder.h"
 
 #include <glm/mat4x4.hpp>
@@ -6,16 +7,6 @@
 #include <vector>
 
 namespace throng::exporting {
-
-namespace {
-
-struct JointSpec {
-    const char* name;
-    int parent;
-    glm::vec3 offset;  // from the parent, m at scale 1
-};
-
-}  // namespace
 
 Character makeHumanoid(const std::string& name, const HumanoidBody& body, Lod lod)
 {

@@ -5,6 +5,7 @@
 // no foot; sitting lowers the hips onto a seat behind the agent, shins upright. Fall and
 // get_up play once, through key poses, the ankles put until the legs stretch out.
 #include "export/character/BuiltinCharacters.h"
+#include "export/character/PoseMaths.h"
 
 #include "simcore/scene/Clip.h"
 
@@ -20,12 +21,7 @@ namespace throng::exporting {
 
 namespace {
 
-constexpr float kTwoPi = 6.28318530717959f;
 constexpr int kSamplesPerAction = 16;
-
-glm::quat aboutX(float a) { return glm::angleAxis(a, glm::vec3(1.0f, 0.0f, 0.0f)); }
-glm::quat aboutY(float a) { return glm::angleAxis(a, glm::vec3(0.0f, 1.0f, 0.0f)); }
-glm::quat aboutZ(float a) { return glm::angleAxis(a, glm::vec3(0.0f, 0.0f, 1.0f)); }
 
 // The joints an action plays over walking: the chest and everything above it.
 std::vector<std::uint8_t> upperBody()
@@ -47,7 +43,7 @@ ActionClip makeAction(const Character& c, sim::Clip clip, const std::function<vo
     a.blendS = blendS;
     for (int k = 0; k < kSamplesPerAction; ++k) {
         Pose p = c.idle.samples.front();
-        pose(kTwoPi * static_cast<float>(k) / static_cast<float>(kSamplesPerAction), p);
+        pose(2.0f * kPi * static_cast<float>(k) / static_cast<float>(kSamplesPerAction), p);
         a.clip.samples.push_back(std::move(p));
     }
     return a;

@@ -2,6 +2,7 @@
 // the stance foot still on the ground while the body covers one stride per cycle, so a
 // gait that advances the phase by distance / stride keeps planted feet where they are.
 #include "export/character/BuiltinCharacters.h"
+#include "export/character/PoseMaths.h"
 #include "export/character/StrideMaths.h"
 
 #include <glm/gtc/quaternion.hpp>
@@ -13,8 +14,7 @@ namespace throng::exporting {
 
 namespace {
 
-constexpr float kPi = 3.14159265358979f;
-constexpr int kSamplesPerCycle = 24;
+constexpr int kWalkSamplesPerCycle = 24;
 
 struct GaitShape {
     float strideM;       // per cycle
@@ -24,9 +24,6 @@ struct GaitShape {
     float flightRiseM;   // hips rise while both feet are off the ground
     float armSwing, elbow, lean, chestTwist;  // rad
 };
-
-glm::quat aboutZ(float a) { return glm::angleAxis(a, glm::vec3(0.0f, 0.0f, 1.0f)); }
-glm::quat aboutY(float a) { return glm::angleAxis(a, glm::vec3(0.0f, 1.0f, 0.0f)); }
 
 FootPath pathOf(const GaitShape& g)
 {
@@ -111,8 +108,8 @@ void addHumanoidClips(Character& c, float scale)
     stand.lean = 0.0f;
     c.idle = makeCycle(c, "idle", stand, scale, 1);
     c.idle.strideM = walk.strideM;
-    c.walk = makeCycle(c, "walk", walk, scale, kSamplesPerCycle);
-    c.run = makeCycle(c, "run", run, scale, kSamplesPerCycle);
+    c.walk = makeCycle(c, "walk", walk, scale, kWalkSamplesPerCycle);
+    c.run = makeCycle(c, "run", run, scale, kWalkSamplesPerCycle);
     c.hasIdle = true;
     c.idleSpeed = 0.05f * scale;
     c.walkSpeed = 0.4f * scale;

@@ -1,16 +1,11 @@
 #include "export/character/MeshBuilder.h"
+#include "export/character/PoseMaths.h"
 
 #include <glm/geometric.hpp>
 
 #include <cmath>
 
 namespace throng::exporting {
-
-namespace {
-
-constexpr float kPi = 3.14159265358979f;
-
-}  // namespace
 
 void MeshBuilder::polygon(int joint, const std::vector<glm::vec3>& ring)
 {

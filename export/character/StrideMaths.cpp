@@ -1,13 +1,10 @@
 #include "export/character/StrideMaths.h"
+#include "export/character/PoseMaths.h"
 
 #include <algorithm>
 #include <cmath>
 
 namespace throng::exporting {
-
-namespace {
-constexpr float kPi = 3.14159265358979f;
-}
 
 glm::vec2 footTarget(const FootPath& g, float s, float groundM)
 {

@@ -1,4 +1,5 @@
 #include "export/character/SurfaceBuilder.h"
+#include "export/character/PoseMaths.h"
 
 #include <glm/geometric.hpp>
 
@@ -32,12 +33,6 @@ T catmullRom(const T& p0, const T& p1, const T& p2, const T& p3, float t)
     const float t2 = t * t, t3 = t2 * t;
     return 0.5f * ((2.0f * p1) + (p2 - p0) * t + (2.0f * p0 - 5.0f * p1 + 4.0f * p2 - p3) * t2 +
                    (3.0f * p1 - p0 - 3.0f * p2 + p3) * t3);
-}
-
-float smoothstep(float lo, float hi, float x)
-{
-    const float t = std::clamp((x - lo) / (hi - lo), 0.0f, 1.0f);
-    return t * t * (3.0f - 2.0f * t);
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // The built-in car (wheels are joints that roll by distance) and bird (wing joints that
 // flap, or hold still to glide; a smooth body and wings).
 #include "export/character/BuiltinCharacters.h"
+#include "export/character/PoseMaths.h"
 #include "export/character/MeshBuilder.h"
 #include "export/character/SurfaceBuilder.h"
 
@@ -11,8 +12,6 @@
 namespace throng::exporting {
 
 namespace {
-
-constexpr float kPi = 3.14159265358979f;
 
 glm::quat about(float a, glm::vec3 axis) { return glm::angleAxis(a, axis); }
 

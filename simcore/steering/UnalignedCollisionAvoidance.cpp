@@ -16,7 +16,7 @@ using namespace detail;
 
 namespace {
 
-struct Threat {
+struct Approach {
     float timeS = -1.0f;  // < 0: none
     std::uint32_t id = 0;
     glm::vec3 offsetAtApproach{0.0f};  // threat minus agent at the time of nearest approach
@@ -32,7 +32,7 @@ glm::vec3 avoidUnalignedCollisions(const SteeringAgent& agent, std::span<const N
     if (!(horizon > kTiny))
         return glm::vec3(0.0f);
     const glm::vec3 p = finiteOrZero(agent.position), v = finiteOrZero(agent.velocity);
-    Threat threat;
+    Approach threat;
     const float margin = nonNegative(params.marginM);
     for (const Neighbour& n : neighbours) {
         const float clear = nonNegative(agent.radius) + nonNegative(n.radius) + margin;

@@ -1,6 +1,7 @@
 // The kerbs of the lane network as wall segments (LaneNetwork::pedestrianBarriers):
 // carriageway edges with openings at crosswalks, and crosswalk sides over the road.
 #include "simcore/traffic/LaneNetwork.h"
+#include "simcore/traffic/detail/LaneMaths.h"
 #include "simcore/traffic/detail/StripClip.h"
 
 #include <glm/geometric.hpp>
@@ -10,10 +11,10 @@
 
 namespace throng::sim {
 
+using detail::leftOf;
+
 namespace {
 constexpr float kEdgeEps = 1e-3f;  // m: a shared edge between two lanes counts as inside both
-
-glm::vec2 leftOf(glm::vec2 t) { return {t.y, -t.x}; }
 
 // An oriented strip: from o along unit u for len metres, halfWidth either side.
 struct Box {

@@ -1,4 +1,5 @@
 #include "simcore/traffic/LaneNetwork.h"
+#include "simcore/traffic/detail/LaneMaths.h"
 #include "simcore/traffic/detail/StripClip.h"
 
 #include <glm/geometric.hpp>
@@ -9,10 +10,8 @@
 
 namespace throng::sim {
 
-namespace {
 // Left of the direction of travel seen from above (x east, z south): east -> north (-z).
-glm::vec2 leftOf(glm::vec2 t) { return {t.y, -t.x}; }
-}  // namespace
+using detail::leftOf;
 
 LaneNetwork::LaneNetwork(const Scene& scene)
 {

@@ -1,6 +1,7 @@
 // The pedestrian side of traffic: who is near a crosswalk or inside a lane (for the
 // vehicles' step), the stop answer a walker asks for, and the counts of what walkers did.
 #include "simcore/traffic/TrafficSystem.h"
+#include "simcore/traffic/detail/LaneMaths.h"
 
 #include "simcore/base/Rng.h"
 
@@ -12,15 +13,16 @@
 namespace throng::sim {
 
 namespace {
-bool inRange(float x, float lo, float hi) { return x >= lo && x <= hi; }
 constexpr float kApproachM = 3.0f;     // m before a crosswalk end where a walker counts as approaching
 constexpr float kStopBackM = 0.1f;     // m between a waiting walker's body and the end line
 constexpr float kClearSideM = 0.2f;    // m: a clearing walker's aim, inside the strip's side walls
 constexpr float kAlongCos = 0.5f;      // heading within 60 degrees of a crosswalk's axis: walking along it
 constexpr float kBusyMarginM = 0.5f;   // m around a crosswalk strip where a vehicle still blocks it
 constexpr std::uint64_t kStreamPedGo = 0x706564676full;
-glm::vec2 leftOf(glm::vec2 t) { return {t.y, -t.x}; }
 }  // namespace
+
+using detail::inRange;
+using detail::leftOf;
 
 void TrafficSystem::collectPedestrians(std::span<const PedestrianView> peds)
 {

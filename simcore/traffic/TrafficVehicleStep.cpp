@@ -1,6 +1,7 @@
 // One vehicle's step: the smallest of the accelerations its leader, the next stop line
 // and the pedestrians ahead allow, then a reaction delay before a standing car moves off.
 #include "simcore/traffic/TrafficSystem.h"
+#include "simcore/traffic/detail/LaneMaths.h"
 
 #include <glm/geometric.hpp>
 
@@ -10,13 +11,14 @@
 namespace throng::sim {
 
 namespace {
-bool inRange(float x, float lo, float hi) { return x >= lo && x <= hi; }
 constexpr float kStandingSpeed = 0.1f;  // m/s: below this a vehicle counts as standing
 constexpr float kGoAccel = 0.2f;        // m/s^2: a standing driver moves off only for more than this
 constexpr float kYieldBeforeM = 1.0f;   // m: where a yielding vehicle waits before a crosswalk strip
 constexpr float kPedBufferM = 0.5f;     // m: kept clear around a pedestrian, beyond both radii
 constexpr float kLineSlackM = 0.05f;    // m: short of the stop line where a late stop must end
 }  // namespace
+
+using detail::inRange;
 
 TrafficSystem::NextState TrafficSystem::advanceVehicle(std::size_t i, std::span<const PedestrianView> peds) const
 {

@@ -35,7 +35,7 @@ using namespace simd;
 
 namespace {
 
-bool fusable(const TypeSteering& s)
+bool fitsBoidKernel(const TypeSteering& s)
 {
     using B = Behaviour;
     if (!s.vehicle.flying || !s.wander.flying || s.priority)
@@ -69,7 +69,7 @@ void BoidKernel::build(const AgentTypes& types, float dt, std::size_t agents, bo
     m_boidTypes.assign(types.steering.size(), BoidType{});
     for (std::size_t t = 0; t < types.steering.size(); ++t) {
         const TypeSteering& s = types.steering[t];
-        m_runs[t] = plain && fusable(s) ? 1 : 0;
+        m_runs[t] = plain && fitsBoidKernel(s) ? 1 : 0;
         anyKernel = anyKernel || m_runs[t];
         accelMax = std::max(accelMax, nonNegative(types.params[t].maxForce) / effectiveMass(types.params[t].mass));
         // As steerTowards, separate and integrateVehicle make each parameter usable.

@@ -9,9 +9,10 @@
 namespace throng::sim {
 
 namespace {
-std::string number(double v, bool nullWhenNegative = true)
+// A JSON number; null for a figure that is unknown (negative) or not finite.
+std::string numberOrNull(double v)
 {
-    if (!std::isfinite(v) || (nullWhenNegative && v < 0.0))
+    if (!std::isfinite(v) || v < 0.0)
         return "null";
     char buf[32];
     auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v);
@@ -92,8 +93,8 @@ std::string NavStats::jsonFields() const
     };
     field("agents_out", std::to_string(agentsOut));
     field("exit_agents", std::to_string(exitAgents));
-    field("fraction_out", exitAgents > 0 ? number(double(agentsOut) / double(exitAgents)) : "null");
-    field("time_to_99_percent_out", number(timeTo99PercentOutS));
+    field("fraction_out", exitAgents > 0 ? numberOrNull(double(agentsOut) / double(exitAgents)) : "null");
+    field("time_to_99_percent_out", numberOrNull(timeTo99PercentOutS));
     std::string list = "[";
     for (std::size_t k = 0; k < exits.size(); ++k) {
         const ExitFlow& f = exits[k];
@@ -102,13 +103,13 @@ std::string NavStats::jsonFields() const
             if (c != '"' && c != '\\' && static_cast<unsigned char>(c) >= 0x20)
                 name += c;
         list += std::string(k ? "," : "") + "\n    {\"goal\": \"" + name + "\", \"door_width_m\": " +
-                number(f.doorWidthM) + ", \"agents_out\": " + std::to_string(f.agentsOut) +
-                ", \"flow_per_metre_per_second\": " + number(f.flowPerMetrePerSecond) + "}";
+                numberOrNull(f.doorWidthM) + ", \"agents_out\": " + std::to_string(f.agentsOut) +
+                ", \"flow_per_metre_per_second\": " + numberOrNull(f.flowPerMetrePerSecond) + "}";
     }
     field("exits", list + (exits.empty() ? "]" : "\n  ]"));
     field("shortest_path_agents", std::to_string(shortestPathAgents));
     field("shortest_path_arrived", std::to_string(shortestPathArrived));
-    field("shortest_path_last_arrival_s", number(shortestPathLastArrivalS));
+    field("shortest_path_last_arrival_s", numberOrNull(shortestPathLastArrivalS));
     field("plan_cache_hits", std::to_string(planCacheHits));
     field("plan_cache_misses", std::to_string(planCacheMisses));
     field("nav_replans", std::to_string(replans));

@@ -46,7 +46,7 @@ namespace {
 
 // Behaviours the kernel computes. Path following only for agents without a path (then
 // steer (Steer.h) asks nothing of it either; the move phase sends the others the general way).
-bool fusable(const TypeSteering& s)
+bool fitsWalkKernel(const TypeSteering& s)
 {
     using B = Behaviour;
     if (s.vehicle.flying || s.wander.flying || s.priority)
@@ -78,7 +78,7 @@ void WalkKernel::build(const AgentTypes& types, const StaticSet& set, float dt, 
     m_walkTypes.assign(types.steering.size(), WalkType{});
     for (std::size_t t = 0; t < types.steering.size(); ++t) {
         const TypeSteering& s = types.steering[t];
-        m_runs[t] = plain && types.params[t].kind != AgentKind::Flier && fusable(s) ? 1 : 0;
+        m_runs[t] = plain && types.params[t].kind != AgentKind::Flier && fitsWalkKernel(s) ? 1 : 0;
         // Each constant as the behaviour's function computes it from the parameters.
         const float mass = effectiveMass(types.params[t].mass);
         WalkType& w = m_walkTypes[t];

@@ -41,7 +41,7 @@ agents:
 constexpr float kFps = 24.0f;
 constexpr std::size_t kFrames = 14 * 24;
 
-const std::vector<std::string> kHips{"hips"};
+const std::vector<std::string> kHipsChain{"hips"};
 
 }  // namespace
 
@@ -98,7 +98,7 @@ private slots:
         auto at = [&](std::size_t f) { return float(f) / kFps; };
         float walking = 1e9f;
         for (std::size_t f = 24; f + 12 < m_first; ++f)
-            walking = std::min(walking, test::jointWorldAt(m_model, root, kHips, at(f)).y);
+            walking = std::min(walking, test::jointWorldAt(m_model, root, kHipsChain, at(f)).y);
         // Seated from when the blend (0.8 s) is over to the end of the run: the hips where
         // the woman's sit clip puts them on its 42 cm seat, well below walking height.
         const std::optional<exporting::Character> woman = exporting::makeBuiltinCharacter("woman");
@@ -106,7 +106,7 @@ private slots:
         const float sitting = woman->actions[std::size_t(woman->actionIndex("sit"))].clip.samples[0].rootTranslation.y;
         float lowest = 1e9f, highest = 0.0f;
         for (std::size_t f = m_first + 20; f <= m_last; ++f) {
-            const float y = test::jointWorldAt(m_model, root, kHips, at(f)).y;
+            const float y = test::jointWorldAt(m_model, root, kHipsChain, at(f)).y;
             lowest = std::min(lowest, y);
             highest = std::max(highest, y);
         }
@@ -116,7 +116,7 @@ private slots:
         // Back up a second after it got up.
         float after = 1e9f;
         for (std::size_t f = m_last + 24; f < m_last + 48; ++f)
-            after = std::min(after, test::jointWorldAt(m_model, root, kHips, at(f)).y);
+            after = std::min(after, test::jointWorldAt(m_model, root, kHipsChain, at(f)).y);
         QVERIFY2(std::fabs(after - walking) < 0.05f, qPrintable(QString("%1 vs %2").arg(after).arg(walking)));
         // The root stands still while it sits, and ends facing west (heading 180).
         const glm::vec3 from = glm::vec3(test::nodeLocalAt(m_model, node, at(m_first))[3]);

@@ -76,14 +76,6 @@ float raySegment(glm::vec2 p, glm::vec2 dir, float length, glm::vec2 a, glm::vec
     return t >= 0.0f && t <= length && u >= 0.0f && u <= 1.0f ? t : -1.0f;
 }
 
-glm::vec2 closestOnSegment(glm::vec2 p, glm::vec2 a, glm::vec2 b)
-{
-    const glm::vec2 ab = b - a;
-    const float len2 = glm::dot(ab, ab);
-    const float t = len2 > kTiny * kTiny ? std::clamp(glm::dot(p - a, ab) / len2, 0.0f, 1.0f) : 0.0f;
-    return a + ab * t;
-}
-
 SurfaceDistance boxSurfaceDistance(glm::vec2 p, const PlanarBox& box)
 {
     const glm::vec2 rel = p - box.centre;

@@ -6,6 +6,7 @@
 #error "a detail/ header, private to throng::simcore: include the module's public headers instead"
 #endif
 
+#include "simcore/base/detail/PlanarSegments.h"
 #include "simcore/steering/SteeringGeometry.h"
 
 #include <glm/vec2.hpp>
@@ -32,8 +33,6 @@ float sweepBox(glm::vec2 p, glm::vec2 dir, float length, const PlanarBox& box, f
 // Where the ray p + dir * t (t in [0, length]) meets segment a-b; -1 when it does not or when they
 // are parallel.
 float raySegment(glm::vec2 p, glm::vec2 dir, float length, glm::vec2 a, glm::vec2 b);
-
-glm::vec2 closestOnSegment(glm::vec2 p, glm::vec2 a, glm::vec2 b);
 
 // Signed distance from p to the box's surface (negative inside) and the outward normal there.
 struct SurfaceDistance {

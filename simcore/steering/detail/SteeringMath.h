@@ -6,6 +6,7 @@
 #error "a detail/ header, private to throng::simcore: include the module's public headers instead"
 #endif
 
+#include "simcore/base/detail/PlanarSegments.h"
 #include "simcore/steering/SteeringAgent.h"
 
 #include <glm/geometric.hpp>
@@ -64,7 +65,6 @@ inline glm::vec3 truncate(glm::vec3 v, float maxLength)
     return l2 > maxLength * maxLength ? v * (maxLength / std::sqrt(l2)) : v;
 }
 
-inline glm::vec2 xz(glm::vec3 v) { return {v.x, v.z}; }
 inline glm::vec3 fromXz(glm::vec2 v) { return {v.x, 0.0f, v.y}; }
 
 // The right-hand horizontal perpendicular of a planar direction (x, z): for heading +z it is -x,

@@ -1,7 +1,7 @@
 #pragma once
 // Tuning constants and random streams of the step's phases, in one place for the general
 // path (WorldStep.cpp, Steer.cpp) and the kernels (WalkKernel.cpp, BoidKernel.cpp). Only
-// constants: includable beside steering/detail/SteeringMath.h, unlike StepGeometry.h.
+// constants, so a kernel can take them without the step's geometry (StepGeometry.h).
 #ifndef THRONG_SIMCORE_BUILD
 #error "a detail/ header, private to throng::simcore: include the module's public headers instead"
 #endif

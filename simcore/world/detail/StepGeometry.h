@@ -1,12 +1,13 @@
 #pragma once
 // Small geometry shared by the step's phases (MovePhase.cpp, Steer.cpp, ...), with the
-// planar segment tests of base/detail/PlanarSegments.h and the step's constants
-// (StepConstants.h). Internal to simcore/world; inline, no state.
+// planar segment tests of base/detail/PlanarSegments.h, the vector helpers of
+// steering/detail/SteeringMath.h and the step's constants (StepConstants.h). Internal to simcore/world; inline, no state.
 #ifndef THRONG_SIMCORE_BUILD
 #error "a detail/ header, private to throng::simcore: include the module's public headers instead"
 #endif
 
 #include "simcore/base/detail/PlanarSegments.h"
+#include "simcore/steering/detail/SteeringMath.h"
 #include "simcore/world/detail/StepConstants.h"
 
 #include <glm/geometric.hpp>
@@ -33,7 +34,5 @@ inline glm::vec2 goalSpot(glm::vec2 centre, float radiusM, bool exit, float body
     const float a = 6.28318531f * v;
     return centre + r * glm::vec2(std::cos(a), std::sin(a));
 }
-
-inline bool isFinite(glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 }  // namespace throng::sim::detail
