@@ -45,6 +45,9 @@ bool AgentCharacters::setScene(const sim::Scene& scene, const std::string& scene
     m_seed = scene.settings.seed;
     m_cachedFor.clear();
     m_looks.clear();
+    m_walkersFor.clear();
+    m_walkers.clear();
+    m_gait.forget();
 
     const std::string signature = signatureOf(scene, sceneDirectory);
     if (signature == m_signature && m_looksOfType.size() == scene.agentTypes.size())
@@ -68,7 +71,10 @@ bool AgentCharacters::setScene(const sim::Scene& scene, const std::string& scene
     }
     const exporting::CharacterLibrary farLibrary = library.atLod(exporting::Lod::Far);
     m_parts.clear();
+    m_gaitCharacters.clear();
     for (std::size_t c = 0; c < library.characterCount(); ++c) {
+        m_gaitCharacters.push_back(library.character(c));
+        m_gaitCharacters.back().mesh = {};
         m_tables.push_back(buildPoseTable(library.character(c)));
         // A character from a file has one level: its far table is its near one.
         m_tables.push_back(library.fromFile(c) ? m_tables.back() : buildPoseTable(farLibrary.character(c)));
@@ -83,39 +89,67 @@ bool AgentCharacters::setScene(const sim::Scene& scene, const std::string& scene
     return true;
 }
 
+namespace {
+
+bool sameAgents(std::span<const sim::AgentInfo> a, const std::vector<sim::AgentInfo>& b)
+{
+    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](const auto& x, const auto& y) {
+               return x.id == y.id && x.typeIndex == y.typeIndex;
+           });
+}
+
+}  // namespace
+
+AgentCharacters::Look AgentCharacters::lookOf(const sim::AgentInfo& agent) const
+{
+    const std::size_t type = agent.typeIndex;
+    if (type >= m_looksOfType.size() || m_looksOfType[type].empty())
+        return {};
+    const std::vector<int>& looks = m_looksOfType[type];
+    // As GltfExporter draws and overrides each agent's variation.
+    exporting::AgentVariation v = exporting::drawVariation(m_variations[type], m_seed, agent.id, looks.size());
+    if (const auto it = m_handSet.find(agent.id); it != m_handSet.end())
+        exporting::applyHandSetVariation(v, it->second, looks.size(), m_variations[type].tints.size());
+    const int character = looks[std::min(v.look, looks.size() - 1)];
+    std::uint32_t bits = 0;
+    for (int slot = 1; slot < exporting::kMaterialSlotCount; ++slot)
+        bits |= std::uint32_t(v.colour[std::size_t(slot)] & 7u) << (3 * (slot - 1));
+    for (const exporting::MeshPart& part : m_parts[std::size_t(character)])
+        if (int(part.slot) >= int(exporting::MaterialSlot::Hat) && exporting::wearsPart(part, m_seed, agent.id))
+            bits |= 1u << (24 + int(part.slot) - int(exporting::MaterialSlot::Hat));
+    return {character, v.heightScale, bits, v};
+}
+
 const std::vector<AgentCharacters::Look>& AgentCharacters::looksFor(std::span<const sim::AgentInfo> agents)
 {
-    const bool same = agents.size() == m_cachedFor.size() &&
-                      std::equal(agents.begin(), agents.end(), m_cachedFor.begin(), [](const auto& a, const auto& b) {
-                          return a.id == b.id && a.typeIndex == b.typeIndex;
-                      });
-    if (same)
+    if (sameAgents(agents, m_cachedFor))
         return m_looks;
     m_cachedFor.assign(agents.begin(), agents.end());
-    m_looks.assign(agents.size(), Look{});
-    for (std::size_t i = 0; i < agents.size(); ++i) {
-        const std::size_t type = agents[i].typeIndex;
-        if (type >= m_looksOfType.size() || m_looksOfType[type].empty())
-            continue;
-        const std::vector<int>& looks = m_looksOfType[type];
-        // As GltfExporter draws and overrides each agent's variation.
-        exporting::AgentVariation v = exporting::drawVariation(m_variations[type], m_seed, agents[i].id, looks.size());
-        if (const auto it = m_handSet.find(agents[i].id); it != m_handSet.end())
-            exporting::applyHandSetVariation(v, it->second, looks.size(), m_variations[type].tints.size());
-        const int character = looks[std::min(v.look, looks.size() - 1)];
-        std::uint32_t bits = 0;
-        for (int slot = 1; slot < exporting::kMaterialSlotCount; ++slot)
-            bits |= std::uint32_t(v.colour[std::size_t(slot)] & 7u) << (3 * (slot - 1));
-        for (const exporting::MeshPart& part : m_parts[std::size_t(character)])
-            if (int(part.slot) >= int(exporting::MaterialSlot::Hat) && exporting::wearsPart(part, m_seed, agents[i].id))
-                bits |= 1u << (24 + int(part.slot) - int(exporting::MaterialSlot::Hat));
-        m_looks[i] = {character, v.heightScale, bits};
-    }
+    m_looks.resize(agents.size());
+    for (std::size_t i = 0; i < agents.size(); ++i)
+        m_looks[i] = lookOf(agents[i]);
     return m_looks;
 }
 
+void AgentCharacters::gaitAt(const sim::FrameCache& cache, std::size_t frame, std::vector<exporting::GaitFrame>& gait)
+{
+    // The export walks every agent of the cache in its latest type (FrameCache::agents).
+    if (!sameAgents(cache.agents(), m_walkersFor)) {
+        m_walkersFor = cache.agents();
+        m_walkers.assign(m_walkersFor.size(), GaitPhases::Walker{});
+        for (std::size_t i = 0; i < m_walkersFor.size(); ++i) {
+            const Look look = lookOf(m_walkersFor[i]);
+            if (look.character >= 0)
+                m_walkers[i] = {&m_gaitCharacters[std::size_t(look.character)], look.variation};
+        }
+        m_gait.forget();
+    }
+    m_gait.gaitAt(cache, frame, m_walkers, gait);
+}
+
 void AgentCharacters::posesFor(std::span<const sim::AgentFrame> frames, std::span<const sim::AgentInfo> agents,
-                               double timeS, std::vector<AgentPose>& poses, std::span<const float> clipSinceS)
+                               double timeS, std::vector<AgentPose>& poses, std::span<const float> clipSinceS,
+                               std::span<const exporting::GaitFrame> gait)
 {
     const std::vector<Look>& looks = looksFor(agents);
     poses.resize(frames.size());
@@ -128,8 +162,10 @@ void AgentCharacters::posesFor(std::span<const sim::AgentFrame> frames, std::spa
         const float actionPhase = !sim::isOneShot(clip) ? sim::actionPhase(clip, timeS, agents[i].id)
                                   : i < clipSinceS.size() ? sim::oneShotProgress(clip, double(clipSinceS[i]))
                                                           : 1.0f;
+        const bool exported = i < gait.size();
         poses[i].pose = m_tables[std::size_t(look.character) * kLevels].poseFor(
-            clip, frames[i].phase, actionPhase, frames[i].speed >= kMovingMps, frames[i].speed);
+            clip, exported ? float(gait[i].phase - std::floor(gait[i].phase)) : frames[i].phase, actionPhase,
+            frames[i].speed >= kMovingMps, frames[i].speed, exported ? gait[i].runWeight : -1.0f);
     }
 }
 

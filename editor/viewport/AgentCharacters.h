@@ -5,6 +5,7 @@
 // resolved keep the glyph. CPU data only, no GL; rebuilt only when the types change.
 
 #include "editor/viewport/AgentPose.h"
+#include "editor/viewport/GaitPhases.h"
 #include "editor/viewport/PoseTable.h"
 #include "simcore/scene/Scene.h"
 #include "simcore/world/FrameCache.h"
@@ -34,15 +35,24 @@ public:
     // time (frame / fps), which an action's phase runs by; clipSinceS: per agent, seconds
     // since it switched to its clip, which a one-shot (fall, get_up) runs by (empty or
     // shorter: played to its end).
+    // gait: per agent, its gait as the export computes it (gaitAt), which sets the phase of
+    // its walk and the walk, run or ladder rung it shows; empty or shorter: the recorded
+    // phase and clip.
     void posesFor(std::span<const sim::AgentFrame> frames, std::span<const sim::AgentInfo> agents, double timeS,
-                  std::vector<AgentPose>& poses, std::span<const float> clipSinceS = {});
+                  std::vector<AgentPose>& poses, std::span<const float> clipSinceS = {},
+                  std::span<const exporting::GaitFrame> gait = {});
+    // Per agent of the cache, its gait on `frame` as the export computes it from the
+    // recording (GaitPhases).
+    void gaitAt(const sim::FrameCache& cache, std::size_t frame, std::vector<exporting::GaitFrame>& gait);
 
 private:
     struct Look {
         int character = -1;
         float heightScale = 1.0f;
         std::uint32_t lookBits = 0;
+        exporting::AgentVariation variation;
     };
+    Look lookOf(const sim::AgentInfo& agent) const;
     const std::vector<Look>& looksFor(std::span<const sim::AgentInfo> agents);
 
     std::string m_signature;                        // what the tables were built from
@@ -55,6 +65,11 @@ private:
     std::string m_problems;
     std::vector<sim::AgentInfo> m_cachedFor;
     std::vector<Look> m_looks;
+    // By character of the library: what its gait needs (its clips; no mesh).
+    std::vector<exporting::Character> m_gaitCharacters;
+    std::vector<sim::AgentInfo> m_walkersFor;   // the cache's agents m_walkers were made for
+    std::vector<GaitPhases::Walker> m_walkers;  // per agent of m_walkersFor
+    GaitPhases m_gait;
 };
 
 // Per agent of the cache, seconds since it switched to the clip it plays on `frame`, counted

@@ -21,7 +21,7 @@ int sampleOf(float phase, int samples)
 
 }  // namespace
 
-int PoseTable::poseFor(sim::Clip clip, float phase, float actionPhase, bool moving, float speed) const
+int PoseTable::poseFor(sim::Clip clip, float phase, float actionPhase, bool moving, float speed, float runWeight) const
 {
     if (sim::isAction(clip)) {
         const int a = int(clip) - int(sim::Clip::Wait);
@@ -29,12 +29,19 @@ int PoseTable::poseFor(sim::Clip clip, float phase, float actionPhase, bool movi
             const float progress = std::clamp(actionPhase, 0.0f, 1.0f);
             return actionPose(a, int(std::lround(double(progress) * (kActionPoses - 1))));
         }
-        if (a < kActions && std::size_t(a) < hasAction.size() && hasAction[std::size_t(a)])
+        // A horse past its walk shows its gait: the walking poses hold the walk's legs.
+        const bool pastWalk = !ladderSpeeds.empty() && runWeight * float(ladderSpeeds.size() - 1) >= 0.5f;
+        if (a < kActions && std::size_t(a) < hasAction.size() && hasAction[std::size_t(a)] && !(moving && pastWalk))
             return moving ? walkingActionPose(a, sampleOf(phase, kWalkPoses))
                           : actionPose(a, sampleOf(actionPhase, kActionPoses));
         clip = moving ? sim::Clip::Walk : sim::Clip::Idle;
     }
-    if (!ladderSpeeds.empty() && speed >= 0.0f && (clip == sim::Clip::Walk || clip == sim::Clip::Run || !hasIdle)) {
+    const bool walks = clip == sim::Clip::Walk || clip == sim::Clip::Run || !hasIdle;
+    if (!ladderSpeeds.empty() && walks && runWeight >= 0.0f) {
+        const float place = std::min(runWeight, 1.0f) * float(ladderSpeeds.size() - 1);
+        return ladderPose(int(std::lround(place)), sampleOf(phase, kWalkPoses));
+    }
+    if (!ladderSpeeds.empty() && walks && speed >= 0.0f) {
         // The rung nearest the speed: past the middle between two rungs' speeds, the upper.
         int rung = 0;
         for (std::size_t r = 1; r < ladderSpeeds.size(); ++r)
@@ -42,6 +49,8 @@ int PoseTable::poseFor(sim::Clip clip, float phase, float actionPhase, bool movi
                 rung = int(r);
         return ladderPose(rung, sampleOf(phase, kWalkPoses));
     }
+    if (walks && runWeight >= 0.0f && hasIdle)
+        clip = runWeight >= 0.5f ? sim::Clip::Run : sim::Clip::Walk;
     if (clip == sim::Clip::Run)
         return runPose(sampleOf(phase, kRunPoses));
     if (clip == sim::Clip::Walk || !hasIdle)

@@ -42,10 +42,13 @@ struct PoseTable {
     // action the character plays: its pose at actionPhase (sim::actionPhase) where the
     // agent stands, its walking pose at the gait phase where it moves; for a one-shot
     // (fall, get_up), actionPhase is its progress (sim::oneShotProgress) and it plays in
-    // full, moving or not; for an action it lacks, the pose its speed gives.
-    // A character with a gait ladder moves in the rung nearest its speed (m/s; < 0: unknown,
-    // walk and run as for others).
-    int poseFor(sim::Clip clip, float phase, float actionPhase = 0.0f, bool moving = false, float speed = -1.0f) const;
+    // full, moving or not; for an action it lacks, the pose its speed gives. A horse past
+    // its walk (a gait ladder's first rung) shows its gait without the action.
+    // Moving, the walk or the run, or a gait ladder's rung (a horse's walk, trot, canter,
+    // gallop), that runWeight (exporting::GaitFrame's, 0..1) is nearest; without it (< 0),
+    // the recorded clip's walk or run, or the rung nearest the speed (m/s; < 0: unknown).
+    int poseFor(sim::Clip clip, float phase, float actionPhase = 0.0f, bool moving = false, float speed = -1.0f,
+                float runWeight = -1.0f) const;
     // Pose index of walk sample k (0..kWalkPoses-1) and run sample k.
     static int walkPose(int k) { return 1 + k; }
     static int runPose(int k) { return 1 + kWalkPoses + k; }

@@ -216,10 +216,15 @@ void Viewport::setAgents(std::span<const sim::AgentFrame> frames, std::span<cons
     const std::vector<glm::vec3>& colours =
         m_agentColours.coloursFor(frames.first(n), agents.first(n), m_layers.density());
     // A one-shot (a fall) runs from the frame its agent switched to it: the cache says which.
+    // And the legs cycle, and a horse changes gait, as the export's do (from the recording).
     m_clipSinceS.clear();
-    if (m_cache && frameIndex < m_cache->frameCount() && m_cache->agentCount() == n)
+    m_shownGait.clear();
+    if (m_cache && frameIndex < m_cache->frameCount() && m_cache->agentCount() == n) {
         clipSinceS(*m_cache, frameIndex, m_clipSinceS);
-    m_agentCharacters.posesFor(frames.first(n), agents.first(n), timeS.value_or(0.0), m_shownPoses, m_clipSinceS);
+        m_agentCharacters.gaitAt(*m_cache, frameIndex, m_shownGait);
+    }
+    m_agentCharacters.posesFor(frames.first(n), agents.first(n), timeS.value_or(0.0), m_shownPoses, m_clipSinceS,
+                               m_shownGait);
     m_glyphs.clear();
     m_carGlyphs.clear();
     m_birdGlyphs.clear();

@@ -210,6 +210,7 @@ private:
     std::vector<AgentPose> m_glyphPoses, m_carPoses, m_birdPoses;  // the characters they wear, one per glyph
     std::vector<AgentPose> m_shownPoses;              // scratch: one per shown agent
     std::vector<float> m_clipSinceS;                  // scratch: per agent, s since its clip began
+    std::vector<exporting::GaitFrame> m_shownGait;    // scratch: per agent, its gait as exported
     bool m_charactersChanged = true;
     bool m_setChanged = true, m_lightsChanged = true, m_agentsChanged = true, m_highlightChanged = true;
 

@@ -112,26 +112,40 @@ void layerActions(const Character& c, const RecordedClips& recorded, std::vector
 
 }  // namespace
 
+GaitClock startGait(const AgentVariation& v)
+{
+    GaitClock clock;
+    clock.phase = v.phaseOffset;
+    return clock;
+}
+
+GaitFrame advanceGait(const Character& c, const AgentVariation& v, GaitClock& clock, glm::vec3 position, float speed)
+{
+    // Thresholds grow with the body (longer legs walk faster) and with the agent's pace.
+    const float k = v.heightScale * v.speedFactor;
+    GaitFrame g;
+    g.moveWeight = c.hasIdle ? smoothstep(c.idleSpeed * k, c.walkSpeed * k, speed) : 1.0f;
+    g.runWeight = runWeightAt(c, speed, k);
+    if (clock.started) {
+        const double distance = glm::length(glm::dvec3(position) - glm::dvec3(clock.position));
+        const float w = 0.5f * (g.runWeight + clock.runWeight);
+        clock.phase += distance / strideAt(c, w, v.heightScale);
+    }
+    g.phase = clock.phase;
+    clock.runWeight = g.runWeight;
+    clock.position = position;
+    clock.started = true;
+    return g;
+}
+
 std::vector<GaitFrame> computeGait(const Character& c, std::span<const glm::vec3> positions,
                                    std::span<const float> speeds, const AgentVariation& v,
                                    const RecordedClips& recorded)
 {
-    // Thresholds grow with the body (longer legs walk faster) and with the agent's pace.
-    const float k = v.heightScale * v.speedFactor;
     std::vector<GaitFrame> out(positions.size());
-    double phase = v.phaseOffset;
-    for (std::size_t f = 0; f < positions.size(); ++f) {
-        GaitFrame& g = out[f];
-        const float speed = speeds[f];
-        g.moveWeight = c.hasIdle ? smoothstep(c.idleSpeed * k, c.walkSpeed * k, speed) : 1.0f;
-        g.runWeight = runWeightAt(c, speed, k);
-        if (f > 0) {
-            const double distance = glm::length(glm::dvec3(positions[f]) - glm::dvec3(positions[f - 1]));
-            const float w = 0.5f * (g.runWeight + out[f - 1].runWeight);
-            phase += distance / strideAt(c, w, v.heightScale);
-        }
-        g.phase = phase;
-    }
+    GaitClock clock = startGait(v);
+    for (std::size_t f = 0; f < positions.size(); ++f)
+        out[f] = advanceGait(c, v, clock, positions[f], speeds[f]);
     layerActions(c, recorded, out);
     return out;
 }

@@ -43,6 +43,22 @@ struct RecordedClips {
     float blendS = -1.0f;  // the type's action_blend: every action blends over it; < 0 = each its own
 };
 
+// The locomotion of computeGait one frame at a time, for a reader that steps through the
+// frames itself (the viewport, from checkpoints): the phase so far and the frame before's
+// place on the walk-run blend or gait ladder and position.
+struct GaitClock {
+    double phase = 0.0;        // cycles, from the variation's phase offset
+    float runWeight = 0.0f;    // the frame before's
+    glm::vec3 position{0.0f};  // the frame before's, m
+    bool started = false;      // false before the first frame
+};
+GaitClock startGait(const AgentVariation& variation);
+// The gait (no actions) of the frame at `position` (m) and `speed` (m/s) after the clock's,
+// which moves to it: the phase advances by the distance from the frame before over the
+// stride the two frames' blends average to. computeGait calls it for every frame.
+GaitFrame advanceGait(const Character& character, const AgentVariation& variation, GaitClock& clock,
+                      glm::vec3 position, float speed);
+
 // positions (m) and speeds (m/s) of one agent, one entry per frame; all the same length.
 std::vector<GaitFrame> computeGait(const Character& character, std::span<const glm::vec3> positions,
                                    std::span<const float> speeds, const AgentVariation& variation,

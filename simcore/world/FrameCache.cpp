@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cstring>
+#include <limits>
 
 namespace throng::sim {
 
@@ -30,6 +31,7 @@ void FrameCache::reset(std::vector<AgentInfo> agents, float fps, glm::dvec3 orig
     m_epochs.assign(1, std::move(e));
     m_frames.clear();
     m_fps = fps;
+    m_rewrites.assign(1, {++m_revision, 0});
 }
 
 // Re-lays the recorded frames out for `width` cache agents: new columns absent, dropped
@@ -96,10 +98,23 @@ void FrameCache::append(std::span<const AgentFrame> frame)
         m_frames[begin + e.slot[i]] = frame[i];
 }
 
+std::size_t FrameCache::framesKeptSince(std::uint64_t revision) const
+{
+    std::size_t kept = std::numeric_limits<std::size_t>::max();
+    if (!m_rewrites.empty() && revision < m_rewrites.front().first)
+        return 0;  // from before the last reset
+    for (const auto& [made, frames] : m_rewrites)
+        if (made > revision)
+            kept = std::min(kept, frames);
+    return std::min(kept, frameCount());
+}
+
 void FrameCache::truncate(std::size_t firstFrameToDrop)
 {
-    if (firstFrameToDrop < frameCount())
+    if (firstFrameToDrop < frameCount()) {
         m_frames.resize(firstFrameToDrop * m_count);
+        m_rewrites.emplace_back(++m_revision, firstFrameToDrop);
+    }
     // Sets that began at a dropped frame go (the first one always stays).
     while (m_epochs.size() > 1 && m_epochs.back().firstFrame >= firstFrameToDrop)
         m_epochs.pop_back();

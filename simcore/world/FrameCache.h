@@ -18,6 +18,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 namespace throng::sim {
@@ -80,6 +81,11 @@ public:
     std::ptrdiff_t worldIndexOf(std::size_t agent) const;
     // Frames where the agent set or a type changed (frame 0 first).
     std::vector<std::size_t> agentSetChanges() const;
+    // Counts the changes that record frames again (reset, truncate). A reader that keeps
+    // something made from the frames notes the revision, and later keeps what it made from
+    // the first framesKeptSince(revision) frames: those are the same as they were then.
+    std::uint64_t revision() const { return m_revision; }
+    std::size_t framesKeptSince(std::uint64_t revision) const;
     // FNV-1a over every recorded byte that matters and the agent sets: equal hashes =
     // identical recordings.
     std::uint64_t hash() const;
@@ -101,6 +107,9 @@ private:
     std::size_t m_count = 0;
     float m_fps = 24.0f;
     glm::dvec3 m_origin{0.0};
+    std::uint64_t m_revision = 0;
+    // Since the last reset: per change, the revision it made and the frames it kept.
+    std::vector<std::pair<std::uint64_t, std::size_t>> m_rewrites;
 };
 
 // Adds `origin` to each frame's position, in floats: for the viewport, which draws the

@@ -5,11 +5,14 @@
 // (standing, lying, getting up done) agree to a centimetre; moving ones within a centimetre
 // of how far the file's joint moves in half the time between two of the viewport's poses
 // (8 a cycle; a one-shot's 8 span it from start to end), the most the nearest pose can miss.
+// Riders at each of the horse's four gaits put every hoof where the file does: the same
+// gait, at the same phase of it.
 #include "GltfReadBack.h"
 #include "RecordRun.h"
 #include "TestRegistry.h"
 
 #include "editor/viewport/AgentCharacters.h"
+#include "export/character/BuiltinCharacters.h"
 #include "export/GltfExporter.h"
 #include "simcore/io/SceneIO.h"
 #include "simcore/world/World.h"
@@ -64,6 +67,40 @@ brains:
       - {from: [1, 0], to: [2, 0]}
 )";
 
+// Four riders held at the horse's walk, trot, canter and gallop, side by side.
+struct Rider {
+    const char* type;
+    float speed;   // m/s
+    float strideM; // of its gait's cycle (Horse.cpp)
+};
+constexpr Rider kRiders[4] = {{"walker", 1.0f, 1.6f}, {"trotter", 3.0f, 2.5f}, {"canterer", 5.5f, 3.4f},
+                              {"galloper", 9.5f, 5.0f}};
+
+std::string ridersScene()
+{
+    std::string yaml = "throng: 1\nsettings: {fps: 24, seed: 4, duration: 8, bounds: {min: [-10, -20], max: "
+                       "[120, 20]}}\nagent_types:\n";
+    for (const Rider& r : kRiders)
+        yaml += std::string("  - {name: ") + r.type + ", character: horse, radius: 0.8, max_speed: " +
+                std::to_string(r.speed) + ", max_force: 30, variation: {speed: [1, 1], height: [1, 1]}, " +
+                "behaviours: {seek: 1}}\n";
+    yaml += "goals:\n";
+    for (int k = 0; k < 4; ++k)
+        yaml += "  - {name: far_" + std::to_string(k) + ", position: [115, " + std::to_string(-12 + 8 * k) +
+                "], radius: 1}\n";
+    yaml += "agents:\n";
+    for (int k = 0; k < 4; ++k)
+        yaml += "  - {id: " + std::to_string(11 + k) + ", type: " + kRiders[k].type + ", position: [0, 0, " +
+                std::to_string(-12 + 8 * k) + "], heading: 0, goal: far_" + std::to_string(k) + "}\n";
+    return yaml;
+}
+
+std::vector<std::string> hoofChain(const std::string& leg)
+{
+    const std::string part = leg.substr(0, leg.find('_')), end = leg.substr(leg.find('_') + 1);
+    return {"body", part + "_upper_" + end, part + "_lower_" + end, part + "_hoof_" + end};
+}
+
 constexpr float kFps = 24.0f;
 constexpr std::size_t kFrames = 9 * 24;
 
@@ -81,17 +118,25 @@ class TestViewportMatchesExport : public QObject {
     QTemporaryDir m_dir;
     tinygltf::Model m_model;
 
-    // Where the viewport's pose for agent i at frame f puts joint j, in the world.
-    glm::vec3 viewportJoint(AgentCharacters& characters, std::size_t f, std::size_t i, int joint)
+    sim::Scene m_ridersScene;
+    sim::FrameCache m_ridersCache;
+    tinygltf::Model m_ridersModel;
+
+    // Where the viewport's pose for agent i at frame f puts joint j, in the world: as
+    // Viewport::setAgents poses it, from the recording.
+    static glm::vec3 viewportJoint(AgentCharacters& characters, const sim::FrameCache& cache, std::size_t f,
+                                   std::size_t i, int joint)
     {
         std::vector<float> since;
-        clipSinceS(m_cache, f, since);
+        clipSinceS(cache, f, since);
+        std::vector<exporting::GaitFrame> gait;
+        characters.gaitAt(cache, f, gait);
         std::vector<AgentPose> poses;
-        characters.posesFor(m_cache.frame(f), m_cache.agentsAt(f), double(f) / kFps, poses, since);
+        characters.posesFor(cache.frame(f), cache.agentsAt(f), double(f) / kFps, poses, since, gait);
         const AgentPose& pose = poses[i];
         const PoseTable& table = characters.poseTables()[std::size_t(pose.character) * AgentCharacters::kLevels];
         const glm::vec3 local(table.joints[std::size_t(pose.pose) * table.jointCount + std::size_t(joint)][3]);
-        const sim::AgentFrame& a = m_cache.at(f, i);
+        const sim::AgentFrame& a = cache.at(f, i);
         // Heading: the character's +X nose turns to (cos h, 0, -sin h), about +Y.
         const glm::quat yaw = glm::angleAxis(a.headingRad, glm::vec3(0.0f, 1.0f, 0.0f));
         return a.position + yaw * (pose.heightScale * local);
@@ -111,6 +156,15 @@ private slots:
         QVERIFY(exporting::exportGltf(m_scene, m_cache, options).ok());
         std::string error;
         QVERIFY2(test::loadGltf(options.path, m_model, error), error.c_str());
+
+        const sim::LoadResult riders = sim::parseScene(ridersScene(), "riders.yaml", "");
+        QVERIFY2(riders.ok(), riders.ok() ? "" : riders.diagnostics[0].format().c_str());
+        m_ridersScene = riders.scene;
+        sim::World ridersWorld(m_ridersScene, sim::WorldOptions{0, false, 1});
+        test::recordRun(ridersWorld, 8 * 24, m_ridersCache);
+        options.path = m_dir.filePath("riders.glb").toStdString();
+        QVERIFY(exporting::exportGltf(m_ridersScene, m_ridersCache, options).ok());
+        QVERIFY2(test::loadGltf(options.path, m_ridersModel, error), error.c_str());
     }
 
     void jointsAgree_data()
@@ -143,7 +197,7 @@ private slots:
         const std::string root =
             "agent_" + std::to_string(agent) + "_" + m_scene.agentTypes[m_cache.agents()[i].typeIndex].name;
         for (const auto& [joint, chain] : {std::pair{kHeadJoint, kHead}, std::pair{kRightHandJoint, kRightHand}}) {
-            const glm::vec3 shown = viewportJoint(characters, f, i, joint);
+            const glm::vec3 shown = viewportJoint(characters, m_cache, f, i, joint);
             const float t = float(f) / kFps;
             const glm::vec3 written = test::jointWorldAt(m_model, root, chain, t);
             float toleranceM = 0.01f;
@@ -158,14 +212,77 @@ private slots:
         }
     }
 
+    // Each hoof of a rider at each of the horse's gaits, viewport against file, on every
+    // frame of two seconds at its speed where the file has it down: the viewport's rung is
+    // the file's and its legs are at the file's phase (within how far the file's hoof moves
+    // against the body in half of an eighth of the gait's cycle, the most the nearest of the
+    // viewport's 8 poses can miss, and 1 cm).
+    void hoovesAgree_data()
+    {
+        QTest::addColumn<int>("rider");
+        for (int k = 0; k < 4; ++k)
+            QTest::newRow(kRiders[k].type) << k;
+    }
+
+    void hoovesAgree()
+    {
+        QFETCH(int, rider);
+        AgentCharacters characters;
+        QVERIFY(characters.setScene(m_ridersScene, ""));
+        QVERIFY2(characters.problems().empty(), characters.problems().c_str());
+        const std::size_t i = std::size_t(rider);
+        QCOMPARE(m_ridersCache.agents()[i].id, sim::AgentId(11 + rider));
+        const std::string root = std::string("agent_") + std::to_string(11 + rider) + "_" + kRiders[rider].type;
+        const float poseStepS = kRiders[rider].strideM / kRiders[rider].speed / 8.0f;
+        const int hooves[4] = {exporting::kHorseForeHoofL, exporting::kHorseForeHoofR, exporting::kHorseHindHoofL,
+                               exporting::kHorseHindHoofR};
+        const char* legs[4] = {"fore_l", "fore_r", "hind_l", "hind_r"};
+        float worst = 0.0f;
+        int compared = 0;
+        for (std::size_t f = 5 * 24; f < 7 * 24; ++f) {
+            const float t = float(f) / kFps;
+            QVERIFY2(std::abs(m_ridersCache.at(f, i).speed - kRiders[rider].speed) < 0.05f * kRiders[rider].speed,
+                     qPrintable(QString("not at its speed: %1 m/s").arg(m_ridersCache.at(f, i).speed)));
+            for (int leg = 0; leg < 4; ++leg) {
+                const glm::vec3 written = test::jointWorldAt(m_ridersModel, root, hoofChain(legs[leg]), t);
+                // Where the file's hoof is down: there the export's foot planter holds it where
+                // the clip put it, while in the air it eases the hoof from where it stood back to
+                // the clip's path, which the viewport (no planter) shows at once.
+                if (written.y > 0.085f)
+                    continue;
+                ++compared;
+                const glm::vec3 shown = viewportJoint(characters, m_ridersCache, f, i, hooves[leg]);
+                // The viewport's pose is the nearest of 8 while the body moves on: the miss is
+                // how far the hoof moves against the body (a planted hoof stands still in the
+                // world while the body passes over it).
+                const auto againstBody = [&](float at) {
+                    return test::jointWorldAt(m_ridersModel, root, hoofChain(legs[leg]), at) -
+                           test::jointWorldAt(m_ridersModel, root, {"body"}, at);
+                };
+                float toleranceM = 0.01f;
+                for (const float side : {-0.5f, 0.5f})
+                    toleranceM =
+                        std::max(toleranceM, 0.01f + glm::distance(againstBody(t), againstBody(t + side * poseStepS)));
+                worst = std::max(worst, glm::distance(shown, written) / toleranceM);
+                QVERIFY2(glm::distance(shown, written) < toleranceM,
+                         qPrintable(QString("%1 at %2 s: viewport (%3, %4, %5), file (%6, %7, %8), within %9 m")
+                                        .arg(legs[leg]).arg(t).arg(shown.x).arg(shown.y).arg(shown.z)
+                                        .arg(written.x).arg(written.y).arg(written.z).arg(toleranceM)));
+            }
+        }
+        QVERIFY2(compared > 30, qPrintable(QString("%1 hooves down").arg(compared)));
+        qInfo("%s: %d hooves down, the worst %.0f %% of its tolerance from the file's", kRiders[rider].type, compared,
+              100.0 * worst);
+    }
+
     // The comparison can fail: the lying pose is far from the standing one, so a viewport
     // that ignored the fall (or a file that did) would be a metre off.
     void lyingIsFarFromStanding()
     {
         AgentCharacters characters;
         QVERIFY(characters.setScene(m_scene, ""));
-        const float standing = viewportJoint(characters, std::size_t(0.5f * kFps), 0, kHeadJoint).y;
-        const float lying = viewportJoint(characters, std::size_t(3.5f * kFps), 0, kHeadJoint).y;
+        const float standing = viewportJoint(characters, m_cache, std::size_t(0.5f * kFps), 0, kHeadJoint).y;
+        const float lying = viewportJoint(characters, m_cache, std::size_t(3.5f * kFps), 0, kHeadJoint).y;
         QVERIFY2(standing - lying > 1.0f, qPrintable(QString("%1 %2").arg(standing).arg(lying)));
     }
 };
