@@ -37,6 +37,8 @@ enum HorseJoint : int {
     kHorseForeUpperL, kHorseForeLowerL, kHorseForeHoofL, kHorseForeUpperR, kHorseForeLowerR, kHorseForeHoofR,
     kHorseHindUpperL, kHorseHindLowerL, kHorseHindHoofL, kHorseHindUpperR, kHorseHindLowerR, kHorseHindHoofR,
     kHorseRiderHips, kHorseRiderChest, kHorseRiderHead,
+    kHorseRiderUpperArmL, kHorseRiderLowerArmL, kHorseRiderHandL, kHorseRiderUpperArmR, kHorseRiderLowerArmR,
+    kHorseRiderHandR,
     kHorseJointCount
 };
 
@@ -56,6 +58,8 @@ Character makeCar();
 Character makeBird(Lod lod = Lod::Near);
 // A horse with its rider, on a ladder of four gaits: walk, trot, canter, gallop (Horse.cpp).
 Character makeHorse(Lod lod = Lod::Near);
+// Adds the horse's and its rider's actions to a horse makeHorse built (HorseActions.cpp).
+void addHorseActions(Character& horse);
 // Adds idle, walk and run to a humanoid whose skeleton makeHumanoid built.
 void addHumanoidClips(Character& character, float scale);
 // Adds the actions (sim::Clip's wait, look_around, wave, talk, phone, cheer) to a humanoid

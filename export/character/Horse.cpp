@@ -54,6 +54,13 @@ const JointSpec kSpecs[kHorseJointCount] = {
     {"rider_hips", kHorseBody, {0.12f, 0.4f, 0.0f}},
     {"rider_chest", kHorseRiderHips, {0.0f, 0.3f, 0.0f}},
     {"rider_head", kHorseRiderChest, {0.02f, 0.3f, 0.0f}},
+    // The rider's arms reach forward and down to the reins: shoulder, elbow, hand.
+    {"rider_upper_arm_l", kHorseRiderChest, {0.02f, 0.15f, -0.19f}},
+    {"rider_lower_arm_l", kHorseRiderUpperArmL, {0.05f, -0.26f, -0.02f}},
+    {"rider_hand_l", kHorseRiderLowerArmL, {0.37f, -0.09f, 0.11f}},
+    {"rider_upper_arm_r", kHorseRiderChest, {0.02f, 0.15f, 0.19f}},
+    {"rider_lower_arm_r", kHorseRiderUpperArmR, {0.05f, -0.26f, 0.02f}},
+    {"rider_hand_r", kHorseRiderLowerArmR, {0.37f, -0.09f, -0.11f}},
 };
 
 // One gait: the hooves' path, when each touches down (the cycle phase; leg order above),
@@ -257,12 +264,15 @@ Character makeHorse(Lod lod)
           {head + glm::vec3(-0.01f, 0.2f, 0.0f), 0.09f, 0.08f, MaterialSlot::Hat}},
          {{kHorseRiderHead, 0.0f}}, ahead, 0.0f, 0.04f);
     for (float side : {-1.0f, 1.0f}) {
-        const glm::vec3 shoulder = seat + glm::vec3(0.02f, 0.45f, side * 0.19f);
+        const int upperArm = side < 0.0f ? kHorseRiderUpperArmL : kHorseRiderUpperArmR;
+        const glm::vec3 shoulder = at[std::size_t(upperArm)], elbow = at[std::size_t(upperArm + 1)];
+        const glm::vec3 hand = at[std::size_t(upperArm + 2)];
         tube({{shoulder, 0.05f, 0.05f, MaterialSlot::Top},
-              {shoulder + glm::vec3(0.05f, -0.26f, side * 0.02f), 0.04f, 0.04f, MaterialSlot::Top},
-              {seat + glm::vec3(0.38f, 0.1f, side * 0.12f), 0.035f, 0.035f, MaterialSlot::Top},
-              {seat + glm::vec3(0.44f, 0.1f, side * 0.1f), 0.03f, 0.025f, MaterialSlot::Skin}},
-             {{kHorseRiderChest, 0.0f}}, up, 0.04f, 0.02f);
+              {elbow, 0.04f, 0.04f, MaterialSlot::Top},
+              {hand + glm::vec3(-0.06f, 0.0f, side * 0.02f), 0.035f, 0.035f, MaterialSlot::Top},
+              {hand, 0.03f, 0.025f, MaterialSlot::Skin}},
+             {{kHorseRiderChest, 0.0f}, {upperArm, 0.2f}, {upperArm + 1, 1.0f}, {upperArm + 2, 2.6f}}, up, 0.04f,
+             0.02f);
         tube({{seat + glm::vec3(0.0f, -0.02f, side * 0.12f), 0.08f, 0.08f, MaterialSlot::Bottom},
               {seat + glm::vec3(0.2f, -0.12f, side * 0.3f), 0.065f, 0.06f, MaterialSlot::Bottom},
               {seat + glm::vec3(0.26f, -0.2f, side * 0.33f), 0.055f, 0.055f, MaterialSlot::Bottom},
@@ -299,6 +309,7 @@ Character makeHorse(Lod lod)
     c.keyToleranceScale = 0.3f;  // 0.06 degrees by default: a hoof within 1.5 mm of its key
     c.runStartSpeed = kLadderSpeeds[2];
     c.runSpeed = kLadderSpeeds[3];
+    addHorseActions(c);
     return c;
 }
 
