@@ -1,6 +1,6 @@
 // Agents as characters in the 3D view, as a user sees them: a walker stands as a figure
-// of its character's height, its top in its tint, differs from its glyph, moves its legs from one
-// recorded phase to another, raises a hand when its brain waves; a type without a
+// of its character's height, its top in its tint, differs from its glyph, moves its legs as
+// it walks a quarter stride on, raises a hand when its brain waves; a type without a
 // character keeps its glyph; a crowd seen close up shows every agent, near ones as
 // characters.
 #include "EditorTestSupport.h"
@@ -156,14 +156,18 @@ float manHeightM(std::uint64_t seed)
 }
 
 // A recording of the walker: one frame per phase, walking east on the spot.
-sim::FrameCache walkingFrames(std::initializer_list<float> phases)
+// One walker heading +x at 1.3 m/s, recorded `walked` m along (one frame each): its legs
+// cycle by the distance, as the export's do (the man's walk: 1.29 m a cycle).
+constexpr float kManStrideM = 1.29f;
+sim::FrameCache walkingFrames(std::initializer_list<float> walked)
 {
     sim::FrameCache cache;
     cache.reset({sim::AgentInfo{1, 0}}, 24.0f);
-    for (float phase : phases) {
+    for (float x : walked) {
         sim::AgentFrame f;
+        f.position = glm::vec3(x, 0.0f, 0.0f);
         f.speed = 1.3f;
-        f.phase = phase;
+        f.phase = x / kManStrideM;
         f.clip = sim::Clip::Walk;
         cache.append({&f, 1});
     }
@@ -287,7 +291,7 @@ private slots:
         QVERIFY2(d > 0.3, qPrintable(QString("the character and the glyph differ in %1 of their pixels").arg(d)));
     }
 
-    void legsMoveWithTheRecordedPhase()
+    void legsMoveWithTheDistanceWalked()
     {
         Viewport viewport;
         viewport.setViewMode(ViewMode::Orbit);
@@ -296,7 +300,7 @@ private slots:
         showInitialState(viewport, scene);
         renderOffscreen(viewport, kSize);
         const QImage background = backgroundOf(viewport);
-        const sim::FrameCache cache = walkingFrames({0.0f, 0.25f});
+        const sim::FrameCache cache = walkingFrames({0.0f, 0.25f * kManStrideM});  // a quarter cycle on
         viewport.showFrame(cache, 0);
         const QImage stride = viewport.grabFramebuffer();
         viewport.showFrame(cache, 1);
