@@ -21,7 +21,7 @@ namespace throng::exporting {
 
 namespace {
 
-constexpr int kSamplesPerAction = 16;
+constexpr int kHorseSamplesPerAction = 16;
 
 // The joints an action plays over a gait: `joints`; the rest only as far as the horse stands.
 std::vector<std::uint8_t> maskOf(std::initializer_list<int> joints)
@@ -33,7 +33,7 @@ std::vector<std::uint8_t> maskOf(std::initializer_list<int> joints)
 }
 
 // One loop: the standing pose changed by `pose(phase in radians, pose)`.
-ActionClip makeAction(const Character& c, sim::Clip clip, std::vector<std::uint8_t> layered,
+ActionClip makeHorseAction(const Character& c, sim::Clip clip, std::vector<std::uint8_t> layered,
                       const std::function<void(float, Pose&)>& pose)
 {
     ActionClip a;
@@ -41,9 +41,9 @@ ActionClip makeAction(const Character& c, sim::Clip clip, std::vector<std::uint8
     a.clip.strideM = 1.0f;  // unused: an action's phase runs by time
     a.layered = std::move(layered);
     a.blendS = 0.3f;
-    for (int k = 0; k < kSamplesPerAction; ++k) {
+    for (int k = 0; k < kHorseSamplesPerAction; ++k) {
         Pose p = c.idle.samples.front();
-        pose(2.0f * kPi * static_cast<float>(k) / static_cast<float>(kSamplesPerAction), p);
+        pose(2.0f * kPi * static_cast<float>(k) / static_cast<float>(kHorseSamplesPerAction), p);
         a.clip.samples.push_back(std::move(p));
     }
     return a;
@@ -66,19 +66,19 @@ void addHorseActions(Character& c)
     const std::vector<std::uint8_t> rider =
         maskOf({kHorseRiderChest, kHorseRiderHead, kHorseRiderUpperArmL, kHorseRiderLowerArmL, kHorseRiderHandL,
                 kHorseRiderUpperArmR, kHorseRiderLowerArmR, kHorseRiderHandR});
-    c.actions.push_back(makeAction(c, sim::Clip::Wait, maskOf({}), [](float t, Pose& p) {
+    c.actions.push_back(makeHorseAction(c, sim::Clip::Wait, maskOf({}), [](float t, Pose& p) {
         p.rotations[kHorseNeck] = aboutZ(-0.3f + 0.03f * std::sin(t));
         p.rotations[kHorseHead] = aboutZ(-0.15f);
         p.rotations[kHorseTail] = aboutZ(-0.25f) * aboutY(0.3f * std::sin(2.0f * t));
         p.rotations[kHorseRiderChest] = aboutZ(0.05f);
     }));
-    c.actions.push_back(makeAction(c, sim::Clip::LookAround, maskOf({kHorseRiderHead}), [](float t, Pose& p) {
+    c.actions.push_back(makeHorseAction(c, sim::Clip::LookAround, maskOf({kHorseRiderHead}), [](float t, Pose& p) {
         p.rotations[kHorseNeck] = aboutY(0.35f * std::sin(t)) * aboutZ(0.05f);
         p.rotations[kHorseHead] = aboutY(0.25f * std::sin(t)) * aboutZ(0.05f * std::sin(2.0f * t));
         p.rotations[kHorseRiderHead] = aboutY(0.8f * std::sin(t + 0.5f));
         p.rotations[kHorseRiderChest] = aboutY(0.15f * std::sin(t + 0.5f));
     }));
-    c.actions.push_back(makeAction(c, sim::Clip::ShiftWeight, maskOf({}), [](float t, Pose& p) {
+    c.actions.push_back(makeHorseAction(c, sim::Clip::ShiftWeight, maskOf({}), [](float t, Pose& p) {
         p.rotations[kHorseRiderHips] = aboutX(0.08f * std::sin(t));
         p.rotations[kHorseRiderChest] = aboutX(-0.06f * std::sin(t));
         p.rotations[kHorseNeck] = aboutZ(-0.1f) * aboutY(0.1f * std::sin(t));
@@ -95,22 +95,22 @@ void addHorseActions(Character& c)
         p.rotations[std::size_t(arm)] = u;
         p.rotations[std::size_t(arm + 1)] = glm::inverse(u) * turning(restFore, fore * mirror);
     };
-    c.actions.push_back(makeAction(c, sim::Clip::Wave, rider, [&](float t, Pose& p) {
+    c.actions.push_back(makeHorseAction(c, sim::Clip::Wave, rider, [&](float t, Pose& p) {
         aim(p, 1.0f, {0.15f, 0.8f, 0.6f}, {0.05f, 1.0f, 0.2f + 0.5f * std::sin(2.0f * t)});
         p.rotations[kHorseRiderHead] = aboutY(-0.2f);
     }));
-    c.actions.push_back(makeAction(c, sim::Clip::Point, rider, [&](float t, Pose& p) {
+    c.actions.push_back(makeHorseAction(c, sim::Clip::Point, rider, [&](float t, Pose& p) {
         const glm::vec3 ahead(1.0f, 0.05f + 0.03f * std::sin(t), 0.25f);
         aim(p, 1.0f, ahead, ahead);
         p.rotations[kHorseRiderHead] = aboutZ(0.05f);
     }));
-    c.actions.push_back(makeAction(c, sim::Clip::Cheer, rider, [&](float t, Pose& p) {
+    c.actions.push_back(makeHorseAction(c, sim::Clip::Cheer, rider, [&](float t, Pose& p) {
         const float pump = 0.5f + 0.5f * std::sin(2.0f * t);
         for (const float side : {-1.0f, 1.0f})
             aim(p, side, {0.1f, 0.9f, 0.35f}, {0.1f + 0.3f * pump, 1.0f, 0.1f});
         p.rotations[kHorseRiderHead] = aboutZ(0.25f);
     }));
-    c.actions.push_back(makeAction(c, sim::Clip::Talk, rider, [&](float t, Pose& p) {
+    c.actions.push_back(makeHorseAction(c, sim::Clip::Talk, rider, [&](float t, Pose& p) {
         aim(p, 1.0f, {0.3f, -0.85f, 0.35f}, {0.9f, 0.35f + 0.3f * std::sin(2.0f * t), 0.2f});
         p.rotations[kHorseRiderHead] = aboutZ(0.08f * std::sin(3.0f * t)) * aboutY(-0.3f);
     }));
