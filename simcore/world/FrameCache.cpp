@@ -1,6 +1,7 @@
 #include "simcore/world/FrameCache.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cassert>
 #include <cstring>
 #include <limits>
@@ -8,6 +9,14 @@
 namespace throng::sim {
 
 namespace {
+
+// Revisions are counted over every cache of the process, so a reader that kept one cache's
+// revision never takes another cache (one made where the first was) for it.
+std::uint64_t nextRevision()
+{
+    static std::atomic<std::uint64_t> last{0};
+    return ++last;
+}
 
 AgentFrame absentFrame()
 {
@@ -31,7 +40,8 @@ void FrameCache::reset(std::vector<AgentInfo> agents, float fps, glm::dvec3 orig
     m_epochs.assign(1, std::move(e));
     m_frames.clear();
     m_fps = fps;
-    m_rewrites.assign(1, {++m_revision, 0});
+    m_revision = nextRevision();
+    m_rewrites.assign(1, {m_revision, 0});
 }
 
 // Re-lays the recorded frames out for `width` cache agents: new columns absent, dropped
@@ -113,7 +123,8 @@ void FrameCache::truncate(std::size_t firstFrameToDrop)
 {
     if (firstFrameToDrop < frameCount()) {
         m_frames.resize(firstFrameToDrop * m_count);
-        m_rewrites.emplace_back(++m_revision, firstFrameToDrop);
+        m_revision = nextRevision();
+        m_rewrites.emplace_back(m_revision, firstFrameToDrop);
     }
     // Sets that began at a dropped frame go (the first one always stays).
     while (m_epochs.size() > 1 && m_epochs.back().firstFrame >= firstFrameToDrop)

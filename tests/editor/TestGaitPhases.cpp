@@ -1,9 +1,9 @@
 // The viewport's gait clocks (GaitPhases) give every agent, at every frame, the phase and
 // the walk-run or gait-ladder place the glTF export computes for it (exporting::computeGait
 // over the whole recording), to the bit, whatever order the frames are asked in: playing
-// forward, jumping back and forth past checkpoints, after the recording grew, and after it
-// was cut and recorded again differently (an edit). Agents that appear late and leave for
-// a while are read as the export reads them.
+// forward, jumping back and forth past checkpoints, after the recording grew, after it was
+// cut and recorded again differently (an edit), and after it started over. Agents that
+// appear late and leave for a while are read as the export reads them.
 #include "TestRegistry.h"
 
 #include "editor/viewport/GaitPhases.h"
@@ -187,6 +187,25 @@ private slots:
         QVERIFY2(std::abs(after[0][270].phase - before[0][270].phase) > 0.05,
                  "the second take must walk differently after the cut");
         for (std::size_t f : {std::size_t(270), std::size_t(150), std::size_t(210), std::size_t(279), std::size_t(5)})
+            compare(phases, cache, f, after, upper);
+    }
+
+    // The same cache started over (File > Revert, a settings edit): nothing kept is used.
+    void resetAndRecordedAgain()
+    {
+        sim::FrameCache cache;
+        cache.reset({{1, 0}, {2, 1}, {3, 2}}, kRecordFps);
+        record(cache, 0, 250, 0);
+        GaitPhases phases;
+        int upper = 0;
+        compare(phases, cache, 240, reference(cache), upper);
+        const double before = reference(cache)[0][240].phase;
+        cache.reset({{1, 0}, {2, 1}, {3, 2}}, kRecordFps);
+        record(cache, 0, 250, 3);
+        const auto after = reference(cache);
+        QVERIFY2(std::abs(after[0][240].phase - before) > 0.05,
+                 qPrintable(QString("the new take must walk differently: %1 / %2").arg(after[0][240].phase).arg(before)));
+        for (std::size_t f : {std::size_t(240), std::size_t(239), std::size_t(60)})
             compare(phases, cache, f, after, upper);
     }
 };
