@@ -1,16 +1,18 @@
 #!/usr/bin/env bash
 # Installs what is missing, builds everything and runs every test: the GUI suites under
 # xvfb-run, then the simcore, nav, traffic, brain and export suites again under
-# AddressSanitizer and UndefinedBehaviorSanitizer. Exits non-zero on any failure.
+# AddressSanitizer and UndefinedBehaviorSanitizer (built while the first tests run). Exits
+# non-zero on any failure.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$root/scripts/deps.sh" test
 "$root/scripts/build.sh"
 jobs="$(nproc)"
-echo "== all tests (Release)"
-xvfb-run -a -s "-screen 0 1920x1080x24" ctest --test-dir "$root/build" --output-on-failure -j"$jobs"
 
-echo "== simcore, nav, traffic, brain and export under ASan + UBSan"
+# The sanitizer build runs at the lowest priority while the Release tests run: the GUI
+# tests take turns on one display and often wait for events, so the tests leave about a
+# third of the machine idle, which the build takes without slowing them (a niced process
+# gets a core only when no test wants it).
 san="$root/build-sanitize"
 source "$root/scripts/ccache.sh"
 if [ ! -f "$san/build.ninja" ]; then
@@ -19,7 +21,27 @@ if [ ! -f "$san/build.ninja" ]; then
   cmake -S "$root" -B "$san" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTHRONG_SANITIZE=ON \
     -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DTHRONG_BUILD_EDITOR=OFF "${ccache_args[@]}" >/dev/null
 fi
-cmake --build "$san" --target test_simcore test_worldbrain test_worldstate test_demos test_worldnav test_nav test_traffic test_brain test_export -- -j"$jobs"
+san_log="$san/background-build.log"
+setsid nice -n 19 cmake --build "$san" --target test_simcore test_worldbrain test_worldstate test_demos test_worldnav \
+  test_nav test_traffic test_brain test_export -- -j"$jobs" >"$san_log" 2>&1 &
+san_build=$!
+# Whatever happens to the Release tests, the background build (its own process group) does
+# not outlive this script.
+trap 'kill -- -"$san_build" 2>/dev/null || true' EXIT
+
+echo "== all tests (Release; the sanitizer build runs beside them at low priority)"
+xvfb-run -a -s "-screen 0 1920x1080x24" ctest --test-dir "$root/build" --output-on-failure -j"$jobs"
+
+echo "== simcore, nav, traffic, brain and export under ASan + UBSan"
+san_status=0
+wait "$san_build" || san_status=$?
+trap - EXIT
+tail -n 3 "$san_log"
+if [ "$san_status" -ne 0 ]; then
+  cat "$san_log"
+  echo "the sanitizer build failed (exit $san_status)" >&2
+  exit "$san_status"
+fi
 # TestExternalReaders is left out here: it runs third-party readers (Blender, three.js,
 # assimp) on our files in their own processes, which the sanitizers do not watch; the
 # export suite's other classes write the same files under them.
