@@ -4,25 +4,37 @@
 #include <signal.h>
 #include <sys/mman.h>
 #include <sys/wait.h>
+#include <time.h>
 #include <unistd.h>
 
 #include <atomic>
 #include <chrono>
+#include <cstdio>
 #include <cstring>
 
 namespace throng::test {
 
 namespace {
 
-struct Progress {  // shared with the child: which job it is on, since when
+struct Progress {  // shared with the child: which job it is on, since when (wall and processor time)
     std::atomic<std::uint64_t> job;
     std::atomic<std::int64_t> startedNs;
+    std::atomic<std::int64_t> startedCpuNs;
 };
 
 std::int64_t nowNs()
 {
     return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch())
         .count();
+}
+
+// Processor time of process `clock` (CLOCK_PROCESS_CPUTIME_ID for this one); -1 when unknown.
+std::int64_t cpuNs(clockid_t clock)
+{
+    timespec t{};
+    if (clock_gettime(clock, &t) != 0)
+        return -1;
+    return std::int64_t(t.tv_sec) * 1'000'000'000 + t.tv_nsec;
 }
 
 void writeAll(int fd, const std::string& s)
@@ -66,11 +78,13 @@ std::vector<IsolatedFailure> runIsolated(std::size_t jobs, const std::function<s
             return {{next, "cannot open a pipe to the child"}};
         progress->job = next;
         progress->startedNs = nowNs();
+        progress->startedCpuNs = 0;
         const pid_t child = fork();
         if (child == 0) {
             ::close(fds[0]);
             for (std::size_t i = next; i < jobs; ++i) {
                 progress->job = i;
+                progress->startedCpuNs = cpuNs(CLOCK_PROCESS_CPUTIME_ID);
                 progress->startedNs = nowNs();
                 std::string what = job(i);
                 if (!what.empty()) {
@@ -84,9 +98,12 @@ std::vector<IsolatedFailure> runIsolated(std::size_t jobs, const std::function<s
             _exit(0);
         }
         ::close(fds[1]);
+        clockid_t childClock{};
+        const bool cpuKnown = clock_getcpuclockid(child, &childClock) == 0;
         std::string buffer;
         int status = 0;
         bool killed = false, exited = false;
+        const char* hungFor = "";
         while (!exited) {
             pollfd p{fds[0], POLLIN, 0};
             if (poll(&p, 1, 100) > 0) {
@@ -100,7 +117,11 @@ std::vector<IsolatedFailure> runIsolated(std::size_t jobs, const std::function<s
                 exited = true;
                 break;
             }
-            if (!killed && double(nowNs() - progress->startedNs.load()) * 1e-9 > limitS) {
+            const double waitedS = double(nowNs() - progress->startedNs.load()) * 1e-9;
+            const std::int64_t cpu = cpuKnown ? cpuNs(childClock) : -1;
+            const double usedS = cpu >= 0 ? double(cpu - progress->startedCpuNs.load()) * 1e-9 : waitedS;
+            if (!killed && (usedS > limitS || waitedS > 5.0 * limitS)) {
+                hungFor = usedS > limitS ? "processor time" : "waiting";
                 kill(child, SIGKILL);
                 killed = true;
             }
@@ -113,7 +134,10 @@ std::vector<IsolatedFailure> runIsolated(std::size_t jobs, const std::function<s
         ::close(fds[0]);
         const std::size_t at = std::size_t(progress->job.load());
         if (killed) {
-            failures.push_back({at, "hung: still running after " + std::to_string(int(limitS)) + " s"});
+            char what[96];
+            std::snprintf(what, sizeof what, "hung: still running after %g s of %s",
+                          hungFor[0] == 'w' ? 5.0 * limitS : limitS, hungFor);
+            failures.push_back({at, what});
             next = at + 1;
         } else if (WIFSIGNALED(status)) {
             failures.push_back({at, std::string("crashed: ") + strsignal(WTERMSIG(status))});

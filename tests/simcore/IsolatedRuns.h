@@ -16,8 +16,10 @@ struct IsolatedFailure {
     std::string what;
 };
 
-// job(i) returns an empty string when job i is fine, else what went wrong. A job still
-// running after limitS seconds is killed and reported as hung.
+// job(i) returns an empty string when job i is fine, else what went wrong. A job that has
+// used limitS seconds of processor time, or waited 5 * limitS seconds, is killed and
+// reported as hung: processor time, because on a machine busy with other work a job that
+// needs 9 s of it took over 20 s; waiting too, for a job that hangs without computing.
 std::vector<IsolatedFailure> runIsolated(std::size_t jobs, const std::function<std::string(std::size_t)>& job,
                                          double limitS);
 

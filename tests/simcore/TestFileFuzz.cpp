@@ -19,6 +19,9 @@
 #include <QDir>
 #include <QTest>
 
+#include <chrono>
+#include <thread>
+
 #include <unistd.h>
 
 #include <cmath>
@@ -162,6 +165,32 @@ std::string runMutant(const Source& src, const Mutant& m, const std::string& scr
 class TestFileFuzz : public QObject {
     Q_OBJECT
 private slots:
+    // The harness tells each way a job can go wrong, and goes on with the next job.
+    void isolatedRunsTellHangsCrashesAndFailures()
+    {
+        const std::vector<IsolatedFailure> failures = runIsolated(6, [](std::size_t i) -> std::string {
+            if (i == 1) {  // computes for ever
+                volatile std::uint64_t x = 0;
+                for (;;)
+                    x = x + 1;
+            }
+            if (i == 2)  // waits for ever without computing
+                std::this_thread::sleep_for(std::chrono::hours(1));
+            if (i == 3)
+                std::abort();
+            return i == 4 ? "bad" : "";
+        }, 0.5);
+        QCOMPARE(failures.size(), std::size_t(4));
+        QCOMPARE(failures[0].job, std::size_t(1));
+        QCOMPARE(QString::fromStdString(failures[0].what), QString("hung: still running after 0.5 s of processor time"));
+        QCOMPARE(failures[1].job, std::size_t(2));
+        QCOMPARE(QString::fromStdString(failures[1].what), QString("hung: still running after 2.5 s of waiting"));
+        QCOMPARE(failures[2].job, std::size_t(3));
+        QVERIFY(failures[2].what.starts_with("crashed: "));
+        QCOMPARE(failures[3].job, std::size_t(4));
+        QCOMPARE(QString::fromStdString(failures[3].what), QString("bad"));
+    }
+
     void mutantsNeverCrashHangOrPoisonARun()
     {
         const std::vector<Source> files = sources();

@@ -100,6 +100,32 @@ private slots:
             QVERIFY(net.crosswalk(int(c)).light >= 0);
     }
 
+    // The road part of a crosswalk is found where it crosses the lanes, whatever the
+    // strip's length: the kerb lines of a 1,000 km crosswalk over a two-lane street are
+    // those of a 12 m one (sampling the whole strip every 2 cm took 9 s), and a strip far
+    // from every lane lies over none.
+    void roadPartOfALongCrosswalk()
+    {
+        Scene scene;
+        scene.lanes.push_back({"n", {{1.75f, -50}, {1.75f, 50}}, 3.5f, 10.0f, false});
+        scene.lanes.push_back({"s", {{-1.75f, 50}, {-1.75f, -50}}, 3.5f, 10.0f, false});
+        scene.crosswalks.push_back({"short", {-6, 0}, {6, 0}, 3.0f});
+        scene.crosswalks.push_back({"long", {-1e6f, 20}, {6, 20}, 3.0f});
+        scene.crosswalks.push_back({"away", {100, 0}, {1e6f, 0}, 3.0f});
+        const LaneNetwork net(scene);
+        const CrosswalkStrip& a = net.crosswalk(0);
+        const CrosswalkStrip& b = net.crosswalk(1);
+        QVERIFY(a.overLane && b.overLane);
+        // Kerb lines as x: -3.5 and 3.5, each widened by a 2 cm sample (float steps are
+        // 6 cm at 1,000 km).
+        QVERIFY(std::abs(a.a.x + a.roadU0 - -3.52f) < 0.011f && std::abs(a.a.x + a.roadU1 - 3.52f) < 0.011f);
+        QVERIFY2(std::abs(b.a.x + b.roadU0 - -3.52f) < 0.1f && std::abs(b.a.x + b.roadU1 - 3.52f) < 0.1f,
+                 qPrintable(QString("%1 %2").arg(double(b.a.x + b.roadU0)).arg(double(b.a.x + b.roadU1))));
+        QVERIFY(!net.crosswalk(2).overLane);
+        QCOMPARE(net.crosswalk(2).roadU0, 0.0f);
+        QCOMPARE(net.crosswalk(2).roadU1, net.crosswalk(2).lengthM);
+    }
+
     void obliqueCrosswalkStretch()
     {
         Scene scene;
