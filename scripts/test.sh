@@ -22,12 +22,14 @@ if [ ! -f "$san/build.ninja" ]; then
     -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DTHRONG_BUILD_EDITOR=OFF "${ccache_args[@]}" >/dev/null
 fi
 san_log="$san/background-build.log"
-setsid nice -n 19 cmake --build "$san" --target test_simcore test_worldbrain test_worldstate test_demos test_worldnav \
-  test_nav test_traffic test_brain test_export -- -j"$jobs" >"$san_log" 2>&1 &
+# Ninja itself, not through cmake --build: on SIGTERM ninja stops the compilers it runs.
+# In this script's session, so that nice ranks it below the tests (the kernel's autogroups
+# share the processor equally between sessions, whatever their processes' nice values).
+nice -n 19 ninja -C "$san" -j"$jobs" test_simcore test_worldbrain test_worldstate test_demos test_worldnav \
+  test_nav test_traffic test_brain test_export >"$san_log" 2>&1 &
 san_build=$!
-# Whatever happens to the Release tests, the background build (its own process group) does
-# not outlive this script.
-trap 'kill -- -"$san_build" 2>/dev/null || true' EXIT
+# Whatever happens to the Release tests, the background build does not outlive this script.
+trap 'kill "$san_build" 2>/dev/null || true' EXIT
 
 echo "== all tests (Release; the sanitizer build runs beside them at low priority)"
 xvfb-run -a -s "-screen 0 1920x1080x24" ctest --test-dir "$root/build" --output-on-failure -j"$jobs"
