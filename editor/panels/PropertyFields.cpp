@@ -63,11 +63,17 @@ Refusal variationEnd(glm::vec2 sim::Variation::*range, bool lower)
     }, lower);
 }
 
+Refusal trafficRangeEnd(glm::vec2 sim::TrafficSettings::*range, bool lower)
+{
+    return rangeEnd(ItemKind::Settings, [range](const sim::Scene& s, std::size_t) { return s.traffic.*range; }, lower);
+}
+
 bool isFlier(const sim::Scene& s, std::size_t i)
 {
     return s.agentTypes[i].kind == sim::AgentKind::Flier;
 }
 
+#define THRONG_TRAFFIC(member) [](sim::Scene& s, std::size_t) -> float& { return s.traffic.member; }
 #define THRONG_SETTING(member) [](sim::Scene& s, std::size_t) -> float& { return s.settings.member; }
 #define THRONG_FIELD(list, member) [](sim::Scene& s, std::size_t i) -> float& { return s.list[i].member; }
 
@@ -82,7 +88,20 @@ std::vector<PropertyField> make(ItemKind kind)
                 {"boundsMinZ", tr("Bounds min Z (m)"), -1e5, 1e5, 1, 1, THRONG_SETTING(boundsMin.y)},
                 {"boundsMaxX", tr("Bounds max X (m)"), -1e5, 1e5, 1, 1, THRONG_SETTING(boundsMax.x)},
                 {"boundsMaxZ", tr("Bounds max Z (m)"), -1e5, 1e5, 1, 1, THRONG_SETTING(boundsMax.y)},
-                {"navCell", tr("Navigation cell (m)"), 0.05, 10, 0.05, 2, THRONG_SETTING(navCellM)}};
+                {"navCell", tr("Navigation cell (m)"), 0.05, 10, 0.05, 2, THRONG_SETTING(navCellM)},
+                // The crossroads' knobs (sim::TrafficSettings).
+                {"walkerDelayMin", tr("Walker delay min (s)"), 0, 60, 0.1, 2, THRONG_TRAFFIC(walkerStartDelayS.x),
+                 trafficRangeEnd(&sim::TrafficSettings::walkerStartDelayS, true)},
+                {"walkerDelayMax", tr("Walker delay max (s)"), 0, 60, 0.1, 2, THRONG_TRAFFIC(walkerStartDelayS.y),
+                 trafficRangeEnd(&sim::TrafficSettings::walkerStartDelayS, false)},
+                {"driverDelayMin", tr("Driver delay min (s)"), 0, 60, 0.1, 2, THRONG_TRAFFIC(driverStartDelayS.x),
+                 trafficRangeEnd(&sim::TrafficSettings::driverStartDelayS, true)},
+                {"driverDelayMax", tr("Driver delay max (s)"), 0, 60, 0.1, 2, THRONG_TRAFFIC(driverStartDelayS.y),
+                 trafficRangeEnd(&sim::TrafficSettings::driverStartDelayS, false)},
+                {"crossingMargin", tr("Crossing margin (m)"), 0, 50, 0.1, 2, THRONG_TRAFFIC(crossingMarginM)},
+                {"walkerClearance", tr("Walker clearance (m)"), 0, 20, 0.1, 2, THRONG_TRAFFIC(walkerClearanceM)},
+                {"waitingSpeed", tr("Waiting speed (m/s)"), 0, 5, 0.01, 3, THRONG_TRAFFIC(waitingSpeed)},
+                {"yieldHorizon", tr("Yield horizon (s)"), 0.1, 60, 0.5, 1, THRONG_TRAFFIC(yieldHorizonS)}};
     case ItemKind::AgentType:
         return {{"radius", tr("Radius (m)"), 0.05, 20, 0.05, 2, THRONG_FIELD(agentTypes, radiusM)},
                 {"maxSpeed", tr("Max speed (m/s)"), 0, 100, 0.1, 2, THRONG_FIELD(agentTypes, maxSpeed),
@@ -190,6 +209,7 @@ std::vector<PropertyField> make(ItemKind kind)
 
 #undef THRONG_FIELD
 #undef THRONG_SETTING
+#undef THRONG_TRAFFIC
 
 }  // namespace
 

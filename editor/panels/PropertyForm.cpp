@@ -171,7 +171,8 @@ void PropertyForm::addCheck(const QString& key, const QString& label, Locate<boo
 }
 
 void PropertyForm::addIndexChoice(const QString& key, const QString& label, std::function<QStringList()> names,
-                                  std::function<std::optional<int>()> value, std::function<void(int)> apply)
+                                  std::function<std::optional<int>()> value, std::function<void(int)> apply,
+                                  Shown shown)
 {
     auto* combo = new QComboBox(m_owner);
     combo->setObjectName(key);
@@ -181,7 +182,14 @@ void PropertyForm::addIndexChoice(const QString& key, const QString& label, std:
         if (data.isValid())
             apply(data.toInt());
     });
-    addRow(label, combo, [combo, names, value] {
+    addRow(label, combo, [this, combo, names, value, shown] {
+        if (shown) {
+            const std::vector<std::size_t> items = indices();
+            const bool any = std::any_of(items.begin(), items.end(), [&](std::size_t i) { return shown(scene(), i); });
+            setRowShown(combo, any);
+            if (!any)
+                return;
+        }
         const QSignalBlocker block(combo);
         combo->clear();
         const QStringList list = names();

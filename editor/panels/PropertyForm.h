@@ -34,6 +34,8 @@ public:
     using Locate = std::function<T&(sim::Scene&, std::size_t)>;
     // The names a combo box offers, in the scene's order.
     using Options = std::function<QStringList(const sim::Scene&)>;
+    // Whether a row applies to item `index` (a vehicle type's car following, a flier's banking).
+    using Shown = std::function<bool(const sim::Scene&, std::size_t index)>;
 
     PropertyForm(SceneDocument& document, QFormLayout* layout, QWidget* owner);
 
@@ -50,20 +52,22 @@ public:
     // user type a new name (an agent's group).
     void addChoice(const QString& key, const QString& label, Options options, Locate<std::string> locate,
                    bool none, bool editable = false);
-    // A combo box of an enum's values, `names` in the enum's order.
+    // A combo box of an enum's values, `names` in the enum's order; with `shown`, the row
+    // shows only while that holds for one of the selected items.
     template <class Enum>
-    void addEnum(const QString& key, const QString& label, const QStringList& names, Locate<Enum> locate)
+    void addEnum(const QString& key, const QString& label, const QStringList& names, Locate<Enum> locate,
+                 Shown shown = {})
     {
         addIndexChoice(key, label, [names] { return names; }, [this, locate]() -> std::optional<int> {
             const auto value = common(locate);
             return value ? std::optional<int>(int(*value)) : std::nullopt;
-        }, [this, key, label, locate](int index) { apply(key, label, locate, Enum(index)); });
+        }, [this, key, label, locate](int index) { apply(key, label, locate, Enum(index)); }, std::move(shown));
     }
     void addCheck(const QString& key, const QString& label, Locate<bool> locate);
     // A combo box of `names()` (read again on every refresh): `value` is the selection's
     // common index (empty = "(mixed)"), `apply` takes the picked one.
     void addIndexChoice(const QString& key, const QString& label, std::function<QStringList()> names,
-                        std::function<std::optional<int>()> value, std::function<void(int)> apply);
+                        std::function<std::optional<int>()> value, std::function<void(int)> apply, Shown shown = {});
     template <class Int>
     void addInteger(const QString& key, const QString& label, int min, int max, Locate<Int> locate)
     {

@@ -45,6 +45,12 @@ QStringList agentGroups(const sim::Scene& s)
     return out;
 }
 
+// sim::CarFollowing's values, in its order.
+QStringList carFollowingNames()
+{
+    return {tr("Inherit"), tr("IDM"), tr("Gap time"), tr("Fuzzy rules")};
+}
+
 // The actions an action point may play: every clip but idle, walk and run.
 QStringList actionPointActions()
 {
@@ -125,6 +131,10 @@ void addAgentTypeRows(PropertyForm& form)
     form.addEnum<sim::Navigation>("navigation", tr("Navigation"), {tr("Direct"), tr("A* plan"), tr("Flow field")},
                                   THRONG_AT(agentTypes, navigation));
     form.addCheck("priorityCombination", tr("Prioritised behaviours"), THRONG_AT(agentTypes, priorityCombination));
+    form.addEnum<sim::CarFollowing>("carFollowing", tr("Car following"), carFollowingNames(),
+                                    THRONG_AT(agentTypes, carFollowing), [](const sim::Scene& s, std::size_t i) {
+                                        return s.agentTypes[i].kind == sim::AgentKind::Vehicle;
+                                    });
     form.addNumberFields();
     addAgentTypeLookRows(form);
     addAgentTypeCollisionRows(form);
@@ -176,6 +186,15 @@ void addSetRows(PropertyForm& form)
     case ItemKind::Settings:
         form.addInteger<std::uint64_t>("seed", tr("Seed"), 0, 2147483647,
                                        [](sim::Scene& s, std::size_t) -> auto& { return s.settings.seed; });
+        // The scene's default; "Inherit" is not one (a lane or a vehicle type inherits it).
+        form.addIndexChoice("carFollowing", tr("Car following"), [] { return carFollowingNames().mid(1); }, [&form] {
+            const sim::CarFollowing m = form.scene().traffic.carFollowing;
+            return std::optional<int>(m == sim::CarFollowing::Inherit ? 0 : int(m) - 1);
+        }, [&form](int index) {
+            form.apply<sim::CarFollowing>("carFollowing", tr("Car following"),
+                                          [](sim::Scene& s, std::size_t) -> auto& { return s.traffic.carFollowing; },
+                                          sim::CarFollowing(index + 1));
+        });
         break;
     case ItemKind::Path:
         form.addCheck("closed", tr("Closed loop"), THRONG_AT(paths, closed));
@@ -197,6 +216,8 @@ void addSetRows(PropertyForm& form)
         break;
     case ItemKind::Lane:
         form.addCheck("loop", tr("Loop"), THRONG_AT(lanes, loop));
+        form.addEnum<sim::CarFollowing>("carFollowing", tr("Car following"), carFollowingNames(),
+                                        THRONG_AT(lanes, carFollowing));
         addPoints(form, THRONG_AT(lanes, points));
         break;
     case ItemKind::Obstacle:

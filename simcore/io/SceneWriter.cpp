@@ -171,6 +171,8 @@ void writeAgentTypes(Writer& w, const Scene& s)
         }
         if (t.navigation != Navigation::Direct)
             w.kv("navigation", toString(t.navigation));
+        if (t.carFollowing != CarFollowing::Inherit)
+            w.kv("car_following", toString(t.carFollowing));
         o << YAML::EndMap;
     }
     o << YAML::EndSeq;

@@ -146,6 +146,31 @@ void writeSceneSet(YamlWriter& w, const Scene& s)
 void writeSceneTraffic(YamlWriter& w, const Scene& s)
 {
     YAML::Emitter& o = w.out;
+    const TrafficSettings& t = s.traffic;
+    const TrafficSettings defaults{};
+    if (t != defaults) {  // only the keys a user changed
+        w.key("traffic");
+        o << YAML::BeginMap;
+        if (t.carFollowing != defaults.carFollowing)
+            w.kv("car_following", toString(t.carFollowing));
+        if (t.driverStartDelayS != defaults.driverStartDelayS) {
+            w.key("driver_start_delay");
+            w.vec2(t.driverStartDelayS);
+        }
+        if (t.walkerStartDelayS != defaults.walkerStartDelayS) {
+            w.key("walker_start_delay");
+            w.vec2(t.walkerStartDelayS);
+        }
+        if (t.crossingMarginM != defaults.crossingMarginM)
+            w.kvf("crossing_margin", t.crossingMarginM);
+        if (t.walkerClearanceM != defaults.walkerClearanceM)
+            w.kvf("walker_clearance", t.walkerClearanceM);
+        if (t.waitingSpeed != defaults.waitingSpeed)
+            w.kvf("waiting_speed", t.waitingSpeed);
+        if (t.yieldHorizonS != defaults.yieldHorizonS)
+            w.kvf("yield_horizon", t.yieldHorizonS);
+        o << YAML::EndMap;
+    }
     if (!s.lanes.empty()) {
         w.key("lanes");
         o << YAML::BeginSeq;
@@ -155,6 +180,8 @@ void writeSceneTraffic(YamlWriter& w, const Scene& s)
             w.kvf("width", l.widthM);
             w.kvf("speed_limit", l.speedLimit);
             w.kv("loop", l.loop ? "true" : "false");
+            if (l.carFollowing != CarFollowing::Inherit)
+                w.kv("car_following", toString(l.carFollowing));
             w.key("points");
             w.polyline(l.points);
             o << YAML::EndMap;

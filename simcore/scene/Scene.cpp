@@ -89,4 +89,24 @@ const char* toString(AreaShape shape)
 }
 const char* toString(ObstacleShape shape) { return shape == ObstacleShape::Box ? "box" : "circle"; }
 
+const char* toString(CarFollowing model)
+{
+    switch (model) {
+    case CarFollowing::Inherit: return "inherit";
+    case CarFollowing::Idm: return "idm";
+    case CarFollowing::GapTime: return "gap_time";
+    case CarFollowing::Fuzzy: return "fuzzy";
+    }
+    return "inherit";
+}
+
+CarFollowing carFollowingOf(const Scene& scene, const Lane* lane, const AgentType* type)
+{
+    if (lane && lane->carFollowing != CarFollowing::Inherit)
+        return lane->carFollowing;
+    if (type && type->carFollowing != CarFollowing::Inherit)
+        return type->carFollowing;
+    return scene.traffic.carFollowing == CarFollowing::Inherit ? CarFollowing::Idm : scene.traffic.carFollowing;
+}
+
 }  // namespace throng::sim

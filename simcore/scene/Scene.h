@@ -28,6 +28,30 @@ struct Settings {
 
 enum class AgentKind { Pedestrian, Vehicle, Flier };
 
+// How a vehicle picks its acceleration (simcore/traffic/CarFollowing.h): the Intelligent
+// Driver Model, a gap-time rule or fuzzy rules. On a lane or a vehicle type, Inherit takes
+// the next one's: the lane's model, else the vehicle type's, else the scene's default.
+enum class CarFollowing { Inherit, Idm, GapTime, Fuzzy };
+
+// The crossroads' knobs: how drivers and walkers at crosswalks react (TrafficSystem.h).
+// The defaults are the values Throng has always used.
+struct TrafficSettings {
+    CarFollowing carFollowing = CarFollowing::Idm;  // the default model, never Inherit
+    // s, [min, max]: a standing driver moves off this long after it is free to go, drawn
+    // anew for each queue it waits in.
+    glm::vec2 driverStartDelayS{0.3f, 1.5f};
+    // s, [min, max]: a walker waiting at a crosswalk steps off this long after the green
+    // begins, drawn anew for each light cycle.
+    glm::vec2 walkerStartDelayS{0.0f, 2.0f};
+    float crossingMarginM = 0.5f;   // m, >= 0: a vehicle this near a crosswalk's strip holds its walkers at the kerb
+    float walkerClearanceM = 0.5f;  // m, >= 0: what a vehicle keeps clear round a walker in its way, beyond both bodies
+    // m/s, >= 0: a walker moving into a vehicle's path slower than this is waiting, and the
+    // vehicle does not yield to it.
+    float waitingSpeed = 0.05f;
+    float yieldHorizonS = 3.0f;     // s, > 0: a vehicle yields to a walker reaching its path within this
+    bool operator==(const TrafficSettings&) const = default;
+};
+
 // How an agent type finds its way to its goal: straight at it, along a shared A* plan
 // round walls and obstacles, or down the goal's flow field.
 enum class Navigation { Direct, AStar, FlowField };
@@ -93,6 +117,7 @@ struct AgentType {
     // Seconds every action blends in and out over on this type's agents; < 0 = each
     // action's own (Clip.h's clips: a few tenths of a second, sit 0.8 s).
     float actionBlendS = -1.0f;
+    CarFollowing carFollowing = CarFollowing::Inherit;  // vehicles: their model where the lane sets none
     bool operator==(const AgentType&) const = default;
 };
 
@@ -192,6 +217,7 @@ struct Lane {
     float widthM = 3.5f;            // > 0
     float speedLimit = 13.9f;       // m/s, > 0
     bool loop = true;               // vehicles reaching the end restart at the start
+    CarFollowing carFollowing = CarFollowing::Inherit;  // the model of every vehicle on the lane
     bool operator==(const Lane&) const = default;
 };
 
@@ -275,6 +301,7 @@ struct ActionPoint {
 struct Scene {
     static constexpr int kFormatVersion = 1;
     Settings settings;
+    TrafficSettings traffic;
     std::vector<AgentType> agentTypes;
     std::vector<Agent> agents;
     std::vector<SpawnGroup> groups;
@@ -317,5 +344,9 @@ const char* toString(AgentKind kind);
 const char* toString(Navigation navigation);
 const char* toString(AreaShape shape);
 const char* toString(ObstacleShape shape);
+const char* toString(CarFollowing model);  // "inherit", "idm", "gap_time", "fuzzy"
+// The model a vehicle of `type` on `lane` follows (either may be null): the lane's, the
+// type's, else the scene's default.
+CarFollowing carFollowingOf(const Scene& scene, const Lane* lane, const AgentType* type);
 
 }  // namespace throng::sim

@@ -17,7 +17,6 @@ constexpr float kApproachM = 3.0f;     // m before a crosswalk end where a walke
 constexpr float kStopBackM = 0.1f;     // m between a waiting walker's body and the end line
 constexpr float kClearSideM = 0.2f;    // m: a clearing walker's aim, inside the strip's side walls
 constexpr float kAlongCos = 0.5f;      // heading within 60 degrees of a crosswalk's axis: walking along it
-constexpr float kBusyMarginM = 0.5f;   // m around a crosswalk strip where a vehicle still blocks it
 constexpr std::uint64_t kStreamPedGo = 0x706564676full;
 }  // namespace
 
@@ -45,7 +44,7 @@ void TrafficSystem::collectPedestrians(std::span<const PedestrianView> peds)
         int onCarriageway = -1;  // unknown until a lane's corridor holds it
         for (std::size_t l = 0; l < m_net.laneCount(); ++l) {
             const LaneProjection pr = m_net.project(int(l), p.position);
-            if (pr.distanceM > m_maxRadius + p.radiusM + 0.5f)
+            if (pr.distanceM > m_maxRadius + p.radiusM + m_knobs.walkerClearanceM)
                 continue;
             if (onCarriageway < 0)
                 onCarriageway = m_net.carriagewayAt(p.position).lane >= 0 ? 1 : 0;
@@ -134,7 +133,7 @@ PedestrianSignal TrafficSystem::pedestrianSignal(glm::vec2 p, glm::vec2 heading,
         const double cycleIndex = std::floor(shifted / cycle);
         const double sinceGreen = shifted - cycleIndex * cycle;
         const float delay = rngRange(m_seed, pedId, std::uint64_t(std::int64_t(cycleIndex)), kStreamPedGo,
-                                     m_opt.pedGoDelayMinS, m_opt.pedGoDelayMaxS);
+                                     m_knobs.walkerStartDelayS.x, m_knobs.walkerStartDelayS.y);
         best.mustStop = sinceGreen < double(delay);
         break;
     }
@@ -176,8 +175,8 @@ void TrafficSystem::markBusyCrosswalks()
         const float r = m_radius[i], front = m_s[i] + r, v = m_speed[i];
         const FollowingParams& q = m_params[m_paramIndex[i]];
         for (const LaneStretch& st : m_net.stretchesOn(lane)) {
-            const float past = aheadM(lane, st.s0 - kBusyMarginM, front);  // front beyond the strip's start
-            const bool on = past >= 0.0f && past <= st.s1 - st.s0 + 2.0f * (r + kBusyMarginM);
+            const float past = aheadM(lane, st.s0 - m_knobs.crossingMarginM, front);  // front beyond the strip's start
+            const bool on = past >= 0.0f && past <= st.s1 - st.s0 + 2.0f * (r + m_knobs.crossingMarginM);
             // In the junction box (past the stop line guarding the strip): it will cross, so
             // walkers let it clear instead of stranding it in the junction.
             const bool inBox = st.boxEntryS < st.s0 &&

@@ -6,7 +6,6 @@
 
 #include <glm/geometric.hpp>
 
-
 #include <algorithm>
 #include <cmath>
 
@@ -14,35 +13,49 @@ namespace throng::sim {
 
 namespace {
 constexpr std::uint64_t kStreamRespawn = 0x7265737061776eull;
+
+FollowingModel followingModel(CarFollowing model)
+{
+    switch (model) {
+    case CarFollowing::GapTime: return FollowingModel::GapTime;
+    case CarFollowing::Fuzzy: return FollowingModel::Fuzzy;
+    case CarFollowing::Inherit:
+    case CarFollowing::Idm: break;
+    }
+    return FollowingModel::Idm;
+}
 }  // namespace
 
 TrafficSystem::TrafficSystem(const Scene& scene, const TrafficOptions& options)
-    : m_opt(options), m_net(scene), m_lights(scene.trafficLights)
+    : m_opt(options), m_knobs(scene.traffic), m_net(scene), m_lights(scene.trafficLights)
 {
     m_seed = options.overrideSeed ? options.seed : scene.settings.seed;
     m_dt = physicsStepS(scene.settings.fps);  // the World's step (StepRate.h)
     m_threads = ThreadTeam::resolve(options.threads);
 
-    std::vector<std::string> paramType;
+    // One parameter set per (type, model): the model is the lane's, the type's or the scene's.
+    std::vector<std::pair<std::string, FollowingModel>> paramKey;
     for (const Vehicle& v : scene.vehicles) {
         const int lane = m_net.findLane(v.lane);
         const AgentType* type = scene.findAgentType(v.type);
         if (lane < 0 || !type)
             continue;
-        auto known = std::find(paramType.begin(), paramType.end(), v.type);
-        if (known == paramType.end()) {
+        const FollowingModel model = followingModel(carFollowingOf(scene, scene.findLane(v.lane), type));
+        auto known = std::find(paramKey.begin(), paramKey.end(), std::pair{v.type, model});
+        if (known == paramKey.end()) {
             FollowingParams p;
+            p.model = model;
             p.desiredSpeed = type->maxSpeed;
             for (const auto& [name, params] : options.modelByType)
                 if (name == v.type)
                     p = params;
-            paramType.push_back(v.type);
+            paramKey.emplace_back(v.type, model);
             m_params.push_back(p);
-            known = paramType.end() - 1;
+            known = paramKey.end() - 1;
         }
         m_id.push_back(v.id);
         m_lane.push_back(lane);
-        m_paramIndex.push_back(std::uint16_t(known - paramType.begin()));
+        m_paramIndex.push_back(std::uint16_t(known - paramKey.begin()));
         m_s.push_back(m_net.wrap(lane, v.atM));
         m_speed.push_back(std::max(0.0f, v.speed));
         m_radius.push_back(type->radiusM);
@@ -163,7 +176,7 @@ float TrafficSystem::aheadM(int lane, float from, float to) const
 
 float TrafficSystem::goDelayS(std::size_t i, std::uint32_t stops) const
 {
-    return rngRange(m_seed, m_id[i], stops, 0x676fu, m_opt.goDelayMinS, m_opt.goDelayMaxS);
+    return rngRange(m_seed, m_id[i], stops, 0x676fu, m_knobs.driverStartDelayS.x, m_knobs.driverStartDelayS.y);
 }
 
 void TrafficSystem::commit(double t0)

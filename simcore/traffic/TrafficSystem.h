@@ -41,16 +41,13 @@ struct TrafficOptions {
     std::uint64_t seed = 0;     // used when overrideSeed; else the scene's seed
     bool overrideSeed = false;
     int threads = 0;            // 0 = one per core this process may run on
-    // Car-following model and parameters per vehicle agent type name; a type not listed
-    // gets the IDM defaults with desiredSpeed = the type's max speed.
+    // Car-following parameters per vehicle agent type name, over the scene's choice of
+    // model (tests); a type not listed gets the defaults of the model its lane, its type
+    // or the scene sets (carFollowingOf), with desiredSpeed = the type's max speed.
     std::vector<std::pair<std::string, FollowingParams>> modelByType;
-    // s: a standing driver's reaction once free to go; drawn from rng(seed, vehicle id,
-    // its count of stops so far), so each queue it waits in gives it a new delay.
-    float goDelayMinS = 0.3f, goDelayMaxS = 1.5f;
-    float pedGoDelayMinS = 0.0f, pedGoDelayMaxS = 2.0f; // s: a pedestrian's reaction after green, per (id, light cycle)
+    // The reaction delays, crosswalk margins and yield rules are the scene's (Scene::traffic).
     float respawnDelayMinS = 0.5f, respawnDelayMaxS = 6.0f;  // s: off-stage time at an open lane's end
     float stopMarginM = 0.5f;    // m: a vehicle waits with its front this far before a stop line
-    float yieldHorizonS = 3.0f;  // s: yield to a pedestrian reaching the lane within this time
     float pedestrianDecel = 1.5f;// m/s^2: what a pedestrian brakes with (yellow decision)
     float lookaheadM = 120.0f;   // m: farthest stop line, crosswalk or pedestrian a vehicle reacts to
 };
@@ -218,6 +215,7 @@ private:
     void markBusyCrosswalks();
 
     TrafficOptions m_opt;
+    TrafficSettings m_knobs;  // the scene's
     LaneNetwork m_net;
     std::vector<TrafficLight> m_lights;
     std::vector<FollowingParams> m_params;

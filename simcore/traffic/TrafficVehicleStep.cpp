@@ -14,7 +14,6 @@ namespace {
 constexpr float kStandingSpeed = 0.1f;  // m/s: below this a vehicle counts as standing
 constexpr float kGoAccel = 0.2f;        // m/s^2: a standing driver moves off only for more than this
 constexpr float kYieldBeforeM = 1.0f;   // m: where a yielding vehicle waits before a crosswalk strip
-constexpr float kPedBufferM = 0.5f;     // m: kept clear around a pedestrian, beyond both radii
 constexpr float kLineSlackM = 0.05f;    // m: short of the stop line where a late stop must end
 }  // namespace
 
@@ -159,7 +158,7 @@ float TrafficSystem::yieldLimit(std::size_t i, const FollowingParams& q, std::sp
             continue;
         const CrosswalkStrip& strip = m_net.crosswalk(st.crosswalk);
         const float uLane = glm::dot(m_net.positionAt(lane, 0.5f * (st.s0 + st.s1)) - strip.a, strip.dir);
-        const float corridor = r + kPedBufferM;  // the body's half width and a buffer around the centre line
+        const float corridor = r + m_knobs.walkerClearanceM;  // the body's half width and a buffer around the centre line
         // Past the stop line guarding the crosswalk, walkers wait for this vehicle (see
         // markBusyCrosswalks): it yields only to those already on the strip.
         const bool inBox =
@@ -173,12 +172,12 @@ float TrafficSystem::yieldLimit(std::size_t i, const FollowingParams& q, std::sp
         // The buffer only on the carriageway: a walker waiting at the kerb, its body clear
         // of the vehicle's, is passed (with the buffer, a car in a junction waited for a
         // walker at the kerb who waited for the car).
-        if (std::abs(lp.lateralM) > r + p.radiusM + (lp.onCarriageway ? kPedBufferM : 0.0f))
+        if (std::abs(lp.lateralM) > r + p.radiusM + (lp.onCarriageway ? m_knobs.walkerClearanceM : 0.0f))
             continue;
         const float d = aheadM(lane, s, lp.s);
         if (d < 0.0f || d > m_opt.lookaheadM)
             continue;
-        a = std::min(a, followingAcceleration(q, v, d - r - p.radiusM - kPedBufferM, 0.0f));
+        a = std::min(a, followingAcceleration(q, v, d - r - p.radiusM - m_knobs.walkerClearanceM, 0.0f));
     }
     return a;
 }
@@ -200,7 +199,7 @@ bool TrafficSystem::crosswalkConflict(int crosswalk, float uLane, float corridor
         if (apart <= 0.0f)
             return true;
         const float toward = glm::dot(p.velocity, strip.dir) * (uLane > u ? 1.0f : -1.0f);
-        if (toward > 0.05f && apart < toward * m_opt.yieldHorizonS)
+        if (toward > m_knobs.waitingSpeed && apart < toward * m_knobs.yieldHorizonS)
             return true;
     }
     return false;

@@ -2,7 +2,8 @@
 // outliner, edit them in the properties panel (a crosswalk's ends and width, a vehicle's
 // type, lane, start distance and speed), see the outliner and the simulation follow, undo
 // back to the same saved bytes; a rename carries the stop lines; Delete refuses a
-// crosswalk a light still stops at; a message about "vehicles[1].lane" selects the car.
+// crosswalk a light still stops at; a message about "vehicles[1].lane" selects the car; the
+// crossroads' knobs (car following per lane, type and scene, delays, margins) are set there.
 #include "EditorTestSupport.h"
 #include "EditorUiDriver.h"
 #include "PanelTestScene.h"
@@ -17,6 +18,7 @@
 #include <glm/geometric.hpp>
 
 #include <QComboBox>
+#include <QCoreApplication>
 #include <QDoubleSpinBox>
 #include <QLabel>
 #include <QLineEdit>
@@ -248,6 +250,65 @@ private slots:
             QVERIFY2(window.document().selection() == (Selection{item}), key);
             QVERIFY(window.outliner().kindRow(item.kind)->child(int(item.index))->isSelected());
         }
+    }
+
+    // The crossroads' knobs: a lane's and a vehicle type's car following from their
+    // combo boxes (a walker type has none), the scene's default model and delays in the
+    // settings; a minimum above its maximum is refused; all of it undoes to the same bytes.
+    void carFollowingAndCrossingKnobsFromThePanel()
+    {
+        MainWindow window;
+        QVERIFY(showWithYaml(window, m_dir, "knobs.yaml", trafficScene()));
+        const QByteArray before = sceneYaml(window);
+        const sim::Scene& scene = window.document().scene();
+
+        selectInOutliner(window, {{ItemKind::Lane, 0}});
+        QCOMPARE(comboItems(field<QComboBox>(window, "carFollowing")),
+                 (QStringList{"Inherit", "IDM", "Gap time", "Fuzzy rules"}));
+        QCOMPARE(field<QComboBox>(window, "carFollowing")->currentText(), QString("Inherit"));
+        pick(window, "carFollowing", "Gap time", Scroll::ToWidget);
+        QVERIFY(scene.lanes[0].carFollowing == sim::CarFollowing::GapTime);
+        QVERIFY(scene.lanes[1].carFollowing == sim::CarFollowing::Inherit);
+
+        selectInOutliner(window, {{ItemKind::AgentType, 3}});  // bus
+        QCOMPARE(QString::fromStdString(scene.agentTypes[3].name), QString("bus"));
+        pick(window, "carFollowing", "Fuzzy rules", Scroll::ToWidget);
+        QVERIFY(scene.agentTypes[3].carFollowing == sim::CarFollowing::Fuzzy);
+        selectInOutliner(window, {{ItemKind::AgentType, 0}});  // walker: no car following
+        QCoreApplication::processEvents();
+        QVERIFY(!field<QComboBox>(window, "carFollowing")->isVisible());
+
+        QTreeWidgetItem* settings = window.outliner().kindRow(ItemKind::Settings);
+        QTest::mouseClick(window.outliner().viewport(), Qt::LeftButton, Qt::NoModifier,
+                          window.outliner().visualItemRect(settings).center());
+        QCOMPARE(window.document().selection(), (Selection{{ItemKind::Settings, 0}}));
+        QCOMPARE(comboItems(field<QComboBox>(window, "carFollowing")), (QStringList{"IDM", "Gap time", "Fuzzy rules"}));
+        pick(window, "carFollowing", "Fuzzy rules", Scroll::ToWidget);
+        QVERIFY(scene.traffic.carFollowing == sim::CarFollowing::Fuzzy);
+        const int steps = window.document().undoStack()->count();
+        typeInto(window, field<QDoubleSpinBox>(window, "walkerDelayMin"), "3");  // above the maximum, 2
+        QCOMPARE(scene.traffic.walkerStartDelayS, glm::vec2(0.0f, 2.0f));
+        QCOMPARE(window.document().undoStack()->count(), steps);
+        QVERIFY2(lastMessage(window).contains("minimum cannot exceed its maximum"), qPrintable(lastMessage(window)));
+        typeInto(window, field<QDoubleSpinBox>(window, "walkerDelayMax"), "4");
+        typeInto(window, field<QDoubleSpinBox>(window, "walkerDelayMin"), "3");
+        typeInto(window, field<QDoubleSpinBox>(window, "crossingMargin"), "1.5");
+        QCOMPARE(scene.traffic.walkerStartDelayS, glm::vec2(3.0f, 4.0f));
+        QCOMPARE(scene.traffic.crossingMarginM, 1.5f);
+        QCOMPARE(window.document().undoStack()->count(), steps + 3);
+        const std::string saved = sim::sceneToYaml(scene);
+        for (const char* key : {"car_following: gap_time", "car_following: fuzzy", "walker_start_delay: [3, 4]",
+                                "crossing_margin: 1.5"})
+            QVERIFY2(saved.find(key) != std::string::npos, key);
+
+        // Back in the viewport (the spin box keeps Ctrl+Z for its own text while it has the
+        // focus): a click on empty ground, then an undo for each edit.
+        QVERIFY(clickToolButton(window, "select"));
+        clickOnGround(window, {20, 10});
+        QCOMPARE(window.document().undoStack()->count(), steps + 3);
+        for (int k = 0; k < steps + 3; ++k)
+            undo(window);
+        QCOMPARE(sceneYaml(window), before);
     }
 };
 

@@ -31,7 +31,7 @@ void SceneReader::read(const YAML::Node& root, Scene& scene)
 {
     m_f.checkKeys(root, "", {"throng", "settings", "brains", "agent_types", "agents", "groups", "paths",
                              "walls", "obstacles", "goals", "terrain", "flow_strokes", "lanes", "crosswalks",
-                             "traffic_lights", "vehicles", "heroes", "sound_sources", "action_points"});
+                             "traffic_lights", "vehicles", "heroes", "sound_sources", "action_points", "traffic"});
     std::uint64_t version = 0;
     if (m_f.readUInt(root, "throng", "", version, true, 1'000'000) && version != Scene::kFormatVersion)
         m_f.error(root["throng"].Mark(), "throng",
@@ -43,6 +43,8 @@ void SceneReader::read(const YAML::Node& root, Scene& scene)
     auto section = [&](const char* name) { return root[name]; };
     if (auto n = section("settings"); n.IsDefined())
         readSettings(n, scene.settings);
+    if (auto n = section("traffic"); n.IsDefined())
+        readTraffic(n, scene.traffic);
     if (auto n = section("brains"); n.IsDefined())
         readBrains(n, scene);
     if (auto n = section("agent_types"); n.IsDefined())
@@ -240,7 +242,7 @@ void SceneReader::readAgentTypes(const YAML::Node& node, Scene& scene)
         m_f.checkKeys(item, key, {"name", "kind", "radius", "max_speed", "max_force", "mass", "perception",
                                   "view_angle", "brain", "character", "clips", "variation", "behaviours", "combination",
                                   "min_speed", "banking", "emits", "priority", "layer", "collides_with",
-                                  "navigation", "action_blend"});
+                                  "navigation", "action_blend", "car_following"});
         AgentType t;
         if (!m_f.readName(item, "name", key, t.name, true))
             continue;
@@ -324,6 +326,10 @@ void SceneReader::readAgentTypes(const YAML::Node& node, Scene& scene)
             if (t.kind != AgentKind::Pedestrian && t.navigation != Navigation::Direct)
                 m_f.warning(item["navigation"].Mark(), key + ".navigation", "only walkers navigate; ignored here");
         }
+        readCarFollowing(item, key, t.carFollowing, true);
+        if (t.kind != AgentKind::Vehicle && item["car_following"].IsDefined())
+            m_f.warning(item["car_following"].Mark(), key + ".car_following",
+                        "only vehicle types follow cars; ignored here");
         for (const char* flierOnly : {"min_speed", "banking"})
             if (t.kind != AgentKind::Flier && item[flierOnly].IsDefined())
                 m_f.warning(item[flierOnly].Mark(), key + "." + flierOnly,

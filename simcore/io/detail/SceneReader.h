@@ -44,6 +44,9 @@ private:
     void readGoals(const YAML::Node& node, Scene& scene);
     void readTerrain(const YAML::Node& node, Terrain& t);
     void readFlowStrokes(const YAML::Node& node, Scene& scene);
+    void readTraffic(const YAML::Node& node, TrafficSettings& t);
+    // `name` of map `item` into `out` when present; `inherit` allows "inherit".
+    void readCarFollowing(const YAML::Node& item, const std::string& key, CarFollowing& out, bool inherit);
     void readLanes(const YAML::Node& node, Scene& scene);
     void readCrosswalks(const YAML::Node& node, Scene& scene);
     void readTrafficLights(const YAML::Node& node, Scene& scene);

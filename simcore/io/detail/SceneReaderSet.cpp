@@ -145,6 +145,38 @@ void SceneReader::readFlowStrokes(const YAML::Node& node, Scene& scene)
     }
 }
 
+void SceneReader::readCarFollowing(const YAML::Node& item, const std::string& key, CarFollowing& out, bool inherit)
+{
+    std::string name;
+    if (!m_f.readString(item, "car_following", key, name, false) || !item["car_following"].IsDefined())
+        return;
+    for (const CarFollowing m : {CarFollowing::Inherit, CarFollowing::Idm, CarFollowing::GapTime, CarFollowing::Fuzzy})
+        if (name == toString(m) && (inherit || m != CarFollowing::Inherit)) {
+            out = m;
+            return;
+        }
+    m_f.error(item["car_following"].Mark(), key + ".car_following",
+              std::string("must be ") + (inherit ? "inherit, " : "") + "idm, gap_time or fuzzy, got '" + name + "'");
+}
+
+void SceneReader::readTraffic(const YAML::Node& node, TrafficSettings& t)
+{
+    const std::string key = "traffic";
+    if (!m_f.expectMap(node, key))
+        return;
+    m_f.checkKeys(node, key, {"car_following", "driver_start_delay", "walker_start_delay", "crossing_margin",
+                              "walker_clearance", "waiting_speed", "yield_horizon"});
+    readCarFollowing(node, key, t.carFollowing, false);
+    for (auto [name, range] : {std::pair{"driver_start_delay", &t.driverStartDelayS},
+                               std::pair{"walker_start_delay", &t.walkerStartDelayS}})
+        if (m_f.readVec2(node, name, key, *range, false, Range::NonNegative) && range->x > range->y)
+            m_f.error(node[name].Mark(), key + "." + name, "the minimum (first) must not exceed the maximum");
+    m_f.readFloat(node, "crossing_margin", key, t.crossingMarginM, false, Range::NonNegative);
+    m_f.readFloat(node, "walker_clearance", key, t.walkerClearanceM, false, Range::NonNegative);
+    m_f.readFloat(node, "waiting_speed", key, t.waitingSpeed, false, Range::NonNegative);
+    m_f.readFloat(node, "yield_horizon", key, t.yieldHorizonS, false, Range::Positive);
+}
+
 void SceneReader::readLanes(const YAML::Node& node, Scene& scene)
 {
     if (!m_f.expectSequence(node, "lanes"))
@@ -154,7 +186,7 @@ void SceneReader::readLanes(const YAML::Node& node, Scene& scene)
         const YAML::Node item = node[i];
         if (!m_f.expectMap(item, key))
             continue;
-        m_f.checkKeys(item, key, {"name", "points", "width", "speed_limit", "loop"});
+        m_f.checkKeys(item, key, {"name", "points", "width", "speed_limit", "loop", "car_following"});
         Lane l;
         if (m_f.readName(item, "name", key, l.name, true))
             claimName(item, key, l.name, "lane");
@@ -162,6 +194,7 @@ void SceneReader::readLanes(const YAML::Node& node, Scene& scene)
         m_f.readFloat(item, "width", key, l.widthM, false, Range::Positive);
         m_f.readFloat(item, "speed_limit", key, l.speedLimit, false, Range::Positive);
         m_f.readBool(item, "loop", key, l.loop, false);
+        readCarFollowing(item, key, l.carFollowing, true);
         scene.lanes.push_back(std::move(l));
     }
 }
