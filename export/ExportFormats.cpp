@@ -2,6 +2,7 @@
 
 #include "export/AgentTextCache.h"
 #include "export/GltfExporter.h"
+#include "export/PedPyExport.h"
 #include "export/TrajectoryCsv.h"
 
 #include <algorithm>
@@ -33,6 +34,12 @@ ExportResult writeCsv(const sim::Scene&, const sim::FrameCache& cache, const Exp
     return writeTrajectoryCsv(cache, request.path, progress);
 }
 
+ExportResult writePedPy(const sim::Scene& scene, const sim::FrameCache& cache, const ExportRequest& request,
+                        const ProgressFn& progress)
+{
+    return writePedPyTrajectories(scene, cache, request.path, progress);
+}
+
 ExportResult writeTextCache(const sim::Scene&, const sim::FrameCache& cache, const ExportRequest& request,
                             const ProgressFn& progress)
 {
@@ -60,6 +67,10 @@ const std::vector<ExportFormat>& exportFormats()
          .readsIndentedText = true,
          .write = writeGltf},
         {.key = "csv", .label = "Trajectories CSV (.csv)", .suffixes = {".csv"}, .write = writeCsv},
+        {.key = "pedpy",
+         .label = "PedPy trajectories of the walkers (.txt, the set beside it as .wkt)",
+         .suffixes = {".txt"},
+         .write = writePedPy},
         {.key = "text-cache",
          .label = "Per-agent text cache (a directory)",
          .suffixes = {},

@@ -16,6 +16,8 @@ if [ "${1:-build}" = test ]; then
   # missing: a machine may have them from elsewhere (NodeSource's nodejs bundles npm and
   # conflicts with Debian's).
   packages+=(assimp-utils blender python3-numpy)
+  # The PedPy export's test reads the set's WKT with Shapely, the geometry library PedPy uses.
+  packages+=(python3-shapely)
   command -v node >/dev/null || packages+=(nodejs)
   command -v npm >/dev/null || packages+=(npm)
 fi

@@ -9,6 +9,7 @@
 
 #include <QDir>
 #include <QFile>
+#include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -81,7 +82,8 @@ private slots:
         QCOMPARE(exporting::formatForPath("out"), nullptr);
         QCOMPARE(exporting::formatForPath(""), nullptr);
         QCOMPARE(exporting::formatByKey("fbx"), nullptr);
-        QCOMPARE(exporting::knownPathForms(), std::string(".glb, .gltf, .csv, DIR/"));
+        QCOMPARE(exporting::formatForPath("walkers.TXT"), exporting::formatByKey("pedpy"));
+        QCOMPARE(exporting::knownPathForms(), std::string(".glb, .gltf, .csv, .txt, DIR/"));
     }
 
     // Each row writes the fixture's 3 agents x 49 frames; a row without a check here fails,
@@ -109,6 +111,23 @@ private slots:
                 const QStringList lines = readLines(QString::fromStdString(request.path));
                 QCOMPARE(lines.size(), 1 + 3 * int(CrowdFixture::kFrames));
                 QCOMPARE(lines.first(), QStringLiteral("frame,agent,x,y,z,heading,speed,clip,phase"));
+            } else if (f.key == "pedpy") {
+                // Three walkers, no vehicle: a row per walker per frame after the comments,
+                // "id frame x y z" with y = -z; the set beside it.
+                const QStringList lines = readLines(QString::fromStdString(request.path));
+                QVERIFY(lines.contains("# framerate: 24"));
+                const QStringList rows = lines.filter(QRegularExpression("^[0-9]"));
+                QCOMPARE(rows.size(), 3 * int(CrowdFixture::kFrames));
+                const QStringList first = rows.first().split(' ');
+                QCOMPARE(first.size(), 5);
+                const sim::AgentFrame& a = fx.cache.at(0, 0);
+                QCOMPARE(first[0].toUInt(), fx.cache.agents()[0].id);
+                QCOMPARE(first[1], QString("0"));
+                QCOMPARE(first[2].toFloat(), a.position.x);
+                QCOMPARE(first[3].toFloat(), -a.position.z);
+                QCOMPARE(first[4].toFloat(), a.position.y);
+                QCOMPARE(result.writtenPaths.size(), std::size_t(2));
+                QVERIFY(readLines(dir.filePath("out.wkt")).first().startsWith("GEOMETRYCOLLECTION (POLYGON (("));
             } else if (f.key == "text-cache") {
                 const QString out = dir.filePath("out");
                 QCOMPARE(entries(out), (QStringList{"agent_1000.txt", "agent_42.txt", "agent_7.txt"}));
