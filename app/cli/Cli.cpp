@@ -27,6 +27,8 @@ int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
         return checkCommand(a, out, err);
     if (a.command == "run")
         return runCommand(a, out, err);
+    if (a.command == "validate")
+        return validateCommand(a, out, err);
     return benchCommand(a, out, err);
 }
 

@@ -59,6 +59,9 @@ std::string usageText()
            "                              about 6,600 triangles a body; mid 2,300; far 1,000)\n"
            "  bench [--agents N] [--steps S] [--scenario flock|cross|cross-brain|army|corridor] [--threads T]\n"
            "                              run a built-in scenario and print figures as JSON\n"
+           "  validate [DIR] [--json]     run the RiMEA tests (docs/validation.md) on the scenes in DIR\n"
+           "                              (default: the source tree's resources/validation); exit 1\n"
+           "                              when one fails\n"
            "\n"
            "options for every command:\n"
            "  --quiet                     no progress on stderr\n"
@@ -169,6 +172,11 @@ ParseOutcome parseArguments(const std::vector<std::string>& argv)
     } else if (a.command == "bench") {
         if (positional.size() != 1)
             out.error = "bench takes no file";
+    } else if (a.command == "validate") {
+        if (positional.size() > 2)
+            out.error = "validate takes at most one folder of validation scenes";
+        else if (positional.size() == 2)
+            a.scene = positional[1];
     } else {
         out.error = "unknown command '" + a.command + "'";
     }

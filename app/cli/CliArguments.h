@@ -19,8 +19,8 @@ struct ExportOutput {
 };
 
 struct CliArguments {
-    std::string command;  // check | run | bench | help | version
-    std::string scene;
+    std::string command;  // check | run | bench | validate | help | version
+    std::string scene;    // check, run: the scene; validate: the folder of validation scenes
     std::optional<std::uint64_t> frames, seed, agents, steps;
     int threads = 0;
     std::string statsPath, scenario;
@@ -29,7 +29,7 @@ struct CliArguments {
     std::optional<std::uint64_t> exportJointStep;  // >= 1
     std::string exportLod;                         // near | mid | far; empty = near
     bool quiet = false;
-    bool json = false;  // check: diagnostics as JSON lines
+    bool json = false;  // check: diagnostics as JSON lines; validate: a JSON line per test
 };
 
 struct ParseOutcome {

@@ -10,5 +10,6 @@ namespace throng::cli {
 int checkCommand(const CliArguments& args, std::ostream& out, std::ostream& err);
 int runCommand(const CliArguments& args, std::ostream& out, std::ostream& err);
 int benchCommand(const CliArguments& args, std::ostream& out, std::ostream& err);
+int validateCommand(const CliArguments& args, std::ostream& out, std::ostream& err);
 
 }  // namespace throng::cli

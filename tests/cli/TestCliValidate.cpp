@@ -1,0 +1,115 @@
+// `throng-cli validate` (issue 26): the RiMEA tests that apply to one level run on their
+// scenes in resources/validation and pass, each line saying its criterion and what was
+// measured; the others say why they do not run; a scene that breaks a criterion fails
+// the command, and one that does not load names its file and line.
+#include "CliRunner.h"
+#include "TestRegistry.h"
+
+#include <QDir>
+#include <QFile>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QRegularExpression>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <map>
+
+using throng::test::runCli;
+
+namespace validate_test {
+
+const QString kDir = QStringLiteral(THRONG_SOURCE_DIR "/resources/validation");
+
+// The JSON lines of a run, by test number.
+std::map<int, QJsonObject> byTest(const std::string& out)
+{
+    std::map<int, QJsonObject> tests;
+    for (const QString& line : QString::fromStdString(out).split('\n', Qt::SkipEmptyParts)) {
+        const QJsonObject o = QJsonDocument::fromJson(line.toUtf8()).object();
+        tests[o["test"].toInt()] = o;
+    }
+    return tests;
+}
+
+// The first number in `text` after `after`.
+double numberAfter(const QString& text, const QString& after)
+{
+    const QRegularExpression number(QRegularExpression::escape(after) + R"(\s*([0-9]+(\.[0-9]+)?))");
+    const auto m = number.match(text);
+    return m.hasMatch() ? m.captured(1).toDouble() : -1.0;
+}
+
+}  // namespace validate_test
+
+using namespace validate_test;
+
+class TestCliValidate : public QObject {
+    Q_OBJECT
+private slots:
+    void theScenesAreValid()
+    {
+        const QStringList files = QDir(kDir).entryList({"*.yaml"}, QDir::Files);
+        QVERIFY(files.size() >= 4);
+        for (const QString& f : files) {
+            const auto r = runCli({"check", QDir(kDir).filePath(f).toStdString()});
+            QVERIFY2(r.status == 0 && r.err.empty(), qPrintable(f + ": " + QString::fromStdString(r.err)));
+        }
+    }
+
+    void theTestsThatApplyPass()
+    {
+        const auto r = runCli({"validate", "--json", "--quiet"});
+        QVERIFY2(r.status == 0, r.out.c_str());
+        const std::map<int, QJsonObject> tests = byTest(r.out);
+        QCOMPARE(int(tests.size()), 16);  // the guideline's pack, 1 to 16
+        for (const auto& [number, o] : tests) {
+            qInfo("RiMEA %d: %s: %s", number, qPrintable(o["result"].toString()), qPrintable(o["measured"].toString()));
+            if (number == 1 || number == 6 || number == 9) {
+                QCOMPARE(o["result"].toString(), QString("pass"));
+                QVERIFY(!o["criterion"].toString().isEmpty());
+            } else {
+                QCOMPARE(o["result"].toString(), QString("not run"));
+                QVERIFY2(!o["reason"].toString().isEmpty(), qPrintable(QString::number(number)));
+            }
+        }
+        for (const int stairs : {2, 3, 13})
+            QVERIFY(tests.at(stairs)["reason"].toString().contains("levels"));
+        // 40 m at 1.33 m/s is 30.08 s, and a walker keeps its speed.
+        const double corridor = numberAfter(tests.at(1)["measured"].toString(), "");
+        QVERIFY2(corridor > 29.5 && corridor < 31.0, qPrintable(QString::number(corridor)));
+        QVERIFY(tests.at(6)["measured"].toString().startsWith("20 of 20 round the corner"));
+        QVERIFY(tests.at(6)["measured"].toString().contains(", 0 steps through a wall (the World counts 0)"));
+        const double ratio = numberAfter(tests.at(9)["measured"].toString(), "with two:");
+        QVERIFY2(ratio >= 1.6 && ratio <= 2.4, qPrintable(tests.at(9)["measured"].toString()));
+    }
+
+    // The same corridor with a walker at 1 m/s takes 40 s: test 1 fails, and so does the
+    // command; a corner scene with a mistake names its file and line.
+    void aSceneThatBreaksItsCriterionFails()
+    {
+        QTemporaryDir dir;
+        QFile corridor(kDir + "/rimea-01-corridor.yaml");
+        QVERIFY(corridor.open(QIODevice::ReadOnly));
+        QByteArray text = corridor.readAll();
+        QVERIFY(text.contains("max_speed: 1.33"));
+        text.replace("max_speed: 1.33", "max_speed: 1.0");
+        QFile slow(dir.filePath("rimea-01-corridor.yaml"));
+        QVERIFY(slow.open(QIODevice::WriteOnly));
+        slow.write(text);
+        slow.close();
+        throng::test::writeText(dir.filePath("rimea-06-corner.yaml"), "throng: 1\nagent_types:\n  - {name: w, radius: -1}\n");
+        const auto r = runCli({"validate", dir.path().toStdString(), "--quiet"});
+        QCOMPARE(r.status, 1);
+        const QString out = QString::fromStdString(r.out);
+        QVERIFY2(out.contains("RiMEA 1: Corridor: walking speed kept: FAIL\n"), qPrintable(out));
+        const double seconds = numberAfter(out, "measured:");
+        QVERIFY2(seconds > 39.0 && seconds < 41.0, qPrintable(out));
+        QVERIFY2(out.contains("RiMEA 6: Corner: FAIL (" + dir.filePath("rimea-06-corner.yaml") + ":3:"), qPrintable(out));
+        QVERIFY(out.contains("RiMEA 9: Four against two exits: FAIL (" + dir.filePath("rimea-09-four-exits.yaml")));
+        QVERIFY(out.contains("0 passed, 3 failed, 13 not run\n"));
+    }
+};
+
+THRONG_REGISTER_TEST(TestCliValidate)
+#include "TestCliValidate.moc"
