@@ -14,7 +14,6 @@ namespace throng::exporting {
 
 namespace {
 
-constexpr std::size_t kFlushBytes = 1 << 16;
 constexpr int kCircleCorners = 32;
 
 // -v, with +0 for 0 (never "-0").
@@ -125,7 +124,7 @@ ExportResult writePedPyTrajectories(const sim::Scene& scene, const sim::FrameCac
                        "# unit: x/m y/m z/m; x east, y north (Throng's -z), z up\n"
                        "# the set: " + std::filesystem::path(geometryPath).filename().string() + " (WKT)\n"
                        "# id frame x y z\n";
-    text.reserve(kFlushBytes + 256);
+    text.reserve(detail::kFlushBytes + 256);
     const auto& agents = cache.agents();
     std::vector<char> walker(agents.size(), 0);
     for (std::size_t i = 0; i < agents.size(); ++i)
@@ -153,7 +152,7 @@ ExportResult writePedPyTrajectories(const sim::Scene& scene, const sim::FrameCac
             text += ' ';
             detail::appendCoordinate(text, a.position.y, origin.y);
             text += '\n';
-            if (text.size() >= kFlushBytes) {
+            if (text.size() >= detail::kFlushBytes) {
                 trajectories.stream().write(text.data(), static_cast<std::streamsize>(text.size()));
                 text.clear();
             }

@@ -7,8 +7,6 @@ namespace throng::exporting {
 
 namespace {
 
-constexpr std::size_t kFlushBytes = 1 << 16;
-
 void appendRow(std::string& out, std::size_t frame, sim::AgentId id, const sim::AgentFrame& a,
                glm::dvec3 origin)
 {
@@ -43,7 +41,7 @@ ExportResult writeTrajectoryCsv(const sim::FrameCache& cache, const std::string&
         return result;
     }
     std::string text = "frame,agent,x,y,z,heading,speed,clip,phase\n";
-    text.reserve(kFlushBytes + 256);
+    text.reserve(detail::kFlushBytes + 256);
     const std::size_t frames = cache.frameCount();
     const auto& agents = cache.agents();
     for (std::size_t f = 0; f < frames; ++f) {
@@ -56,7 +54,7 @@ ExportResult writeTrajectoryCsv(const sim::FrameCache& cache, const std::string&
             if (cache.at(f, i).out || !cache.at(f, i).present)
                 continue;  // left, or not there on this frame (an edit added or removed it)
             appendRow(text, f, agents[i].id, cache.at(f, i), cache.origin());
-            if (text.size() >= kFlushBytes) {
+            if (text.size() >= detail::kFlushBytes) {
                 file.stream().write(text.data(), static_cast<std::streamsize>(text.size()));
                 text.clear();
             }

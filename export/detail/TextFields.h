@@ -6,10 +6,14 @@
 #endif
 
 #include <charconv>
+#include <cstddef>
 #include <numbers>
 #include <string>
 
 namespace throng::exporting::detail {
+
+// How much text a writer gathers before it writes it to its file.
+inline constexpr std::size_t kFlushBytes = 1 << 16;
 
 // Appends `value` as the shortest text that parses back to the same float.
 inline void appendFloat(std::string& out, float value)

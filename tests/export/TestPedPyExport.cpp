@@ -57,7 +57,7 @@ vehicles:
 
 using Row = std::tuple<std::string, std::string, std::string, std::string>;  // x y z as written
 
-QStringList lines(const QString& path)
+QStringList fileLines(const QString& path)
 {
     QFile f(path);
     if (!f.open(QIODevice::ReadOnly))
@@ -93,7 +93,7 @@ private slots:
         // Every walker row of the CSV, in PedPy's axes; none of the car's.
         std::map<std::pair<QString, QString>, QStringList> expected;  // (id, frame) -> x y z
         int carRows = 0;
-        for (const QString& line : lines(csv).mid(1)) {
+        for (const QString& line : fileLines(csv).mid(1)) {
             const QStringList f = line.split(',');
             if (f[1] == "900") {
                 ++carRows;
@@ -104,7 +104,7 @@ private slots:
         }
         QVERIFY(carRows > 0);
         int rows = 0;
-        for (const QString& line : lines(txt)) {
+        for (const QString& line : fileLines(txt)) {
             if (line.startsWith('#'))
                 continue;
             const QStringList f = line.split(' ');
