@@ -4,6 +4,7 @@
 #include "simcore/nav/NavShapes.h"
 #include "simcore/traffic/LaneNetwork.h"
 #include "simcore/traffic/WalkerBarriers.h"
+#include "export/detail/ExportCancel.h"
 #include "export/detail/TextFields.h"
 
 #include <cmath>
@@ -133,11 +134,8 @@ ExportResult writePedPyTrajectories(const sim::Scene& scene, const sim::FrameCac
     const glm::dvec3 origin = cache.origin();
     const std::size_t frames = cache.frameCount();
     for (std::size_t f = 0; f < frames; ++f) {
-        if (progress && !progress(static_cast<float>(f) / static_cast<float>(frames))) {
-            result.cancelled = true;
-            result.error = "export to '" + path + "' cancelled";
-            return result;
-        }
+        if (detail::cancelledAt(progress, static_cast<float>(f) / static_cast<float>(frames)))
+            return detail::cancelledExport(path);
         for (std::size_t i = 0; i < agents.size(); ++i) {
             const sim::AgentFrame& a = cache.at(f, i);
             if (!walker[i] || a.out || !a.present)

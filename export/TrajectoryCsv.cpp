@@ -1,6 +1,7 @@
 #include "export/TrajectoryCsv.h"
 
 #include "simcore/base/AtomicFile.h"
+#include "export/detail/ExportCancel.h"
 #include "export/detail/TextFields.h"
 
 namespace throng::exporting {
@@ -45,11 +46,8 @@ ExportResult writeTrajectoryCsv(const sim::FrameCache& cache, const std::string&
     const std::size_t frames = cache.frameCount();
     const auto& agents = cache.agents();
     for (std::size_t f = 0; f < frames; ++f) {
-        if (progress && !progress(static_cast<float>(f) / static_cast<float>(frames))) {
-            result.cancelled = true;
-            result.error = "export to '" + path + "' cancelled";
-            return result;
-        }
+        if (detail::cancelledAt(progress, static_cast<float>(f) / static_cast<float>(frames)))
+            return detail::cancelledExport(path);
         for (std::size_t i = 0; i < agents.size(); ++i) {
             if (cache.at(f, i).out || !cache.at(f, i).present)
                 continue;  // left, or not there on this frame (an edit added or removed it)

@@ -81,16 +81,6 @@ ExportResult writeGltfAndBin(tinygltf::Model& model, const std::string& path, bo
 
 }  // namespace
 
-bool cancelledAt(const ProgressFn& progress, float fraction) { return progress && !progress(fraction); }
-
-ExportResult cancelledExport(const std::string& path)
-{
-    ExportResult result;
-    result.cancelled = true;
-    result.error = "export to '" + path + "' cancelled";
-    return result;
-}
-
 ExportResult failedExport(std::string error)
 {
     ExportResult result;

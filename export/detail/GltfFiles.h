@@ -6,6 +6,7 @@
 #endif
 
 #include "export/ExportResult.h"
+#include "export/detail/ExportCancel.h"
 
 #include <tiny_gltf.h>
 
@@ -13,8 +14,6 @@
 
 namespace throng::exporting::detail {
 
-bool cancelledAt(const ProgressFn& progress, float fraction);
-ExportResult cancelledExport(const std::string& path);
 ExportResult failedExport(std::string error);
 bool endsWithGlb(const std::string& path);
 // The .bin's name beside a .gltf; also its URI, so only [A-Za-z0-9._~-] survive.
