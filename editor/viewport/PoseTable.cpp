@@ -21,34 +21,46 @@ int sampleOf(float phase, int samples)
 
 }  // namespace
 
+int PoseTable::rungFor(float speed, float runWeight) const
+{
+    if (ladderSpeeds.empty())
+        return -1;
+    if (runWeight >= 0.0f)
+        return int(std::lround(std::min(runWeight, 1.0f) * float(ladderSpeeds.size() - 1)));
+    if (speed < 0.0f)
+        return -1;
+    // The rung nearest the speed: past the middle between two rungs' speeds, the upper.
+    int rung = 0;
+    for (std::size_t r = 1; r < ladderSpeeds.size(); ++r)
+        if (speed >= 0.5f * (ladderSpeeds[r - 1] + ladderSpeeds[r]))
+            rung = int(r);
+    return rung;
+}
+
 int PoseTable::poseFor(sim::Clip clip, float phase, float actionPhase, bool moving, float speed, float runWeight) const
 {
     if (sim::isAction(clip)) {
         const int a = int(clip) - int(sim::Clip::Wait);
-        if (a < kActions && std::size_t(a) < oneShot.size() && hasAction[std::size_t(a)] && oneShot[std::size_t(a)]) {
+        const bool plays = a < kActions && std::size_t(a) < hasAction.size() && hasAction[std::size_t(a)];
+        if (plays && oneShot[std::size_t(a)]) {
             const float progress = std::clamp(actionPhase, 0.0f, 1.0f);
             return actionPose(a, int(std::lround(double(progress) * (kActionPoses - 1))));
         }
-        // A horse past its walk shows its gait: the walking poses hold the walk's legs.
-        const bool pastWalk = !ladderSpeeds.empty() && runWeight * float(ladderSpeeds.size() - 1) >= 0.5f;
-        if (a < kActions && std::size_t(a) < hasAction.size() && hasAction[std::size_t(a)] && !(moving && pastWalk))
-            return moving ? walkingActionPose(a, sampleOf(phase, kWalkPoses))
-                          : actionPose(a, sampleOf(actionPhase, kActionPoses));
+        if (plays && !moving)
+            return actionPose(a, sampleOf(actionPhase, kActionPoses));
+        if (plays) {
+            // A horse past its walk: its rung, with the rider's action over it.
+            const int rung = rungFor(speed, runWeight);
+            if (rung > 0 && std::size_t(a) < ladderActionSlot.size() && ladderActionSlot[std::size_t(a)] >= 0)
+                return ladderActionPose(rung, a, sampleOf(phase, kWalkPoses));
+            return walkingActionPose(a, sampleOf(phase, kWalkPoses));
+        }
         clip = moving ? sim::Clip::Walk : sim::Clip::Idle;
     }
     const bool walks = clip == sim::Clip::Walk || clip == sim::Clip::Run || !hasIdle;
-    if (!ladderSpeeds.empty() && walks && runWeight >= 0.0f) {
-        const float place = std::min(runWeight, 1.0f) * float(ladderSpeeds.size() - 1);
-        return ladderPose(int(std::lround(place)), sampleOf(phase, kWalkPoses));
-    }
-    if (!ladderSpeeds.empty() && walks && speed >= 0.0f) {
-        // The rung nearest the speed: past the middle between two rungs' speeds, the upper.
-        int rung = 0;
-        for (std::size_t r = 1; r < ladderSpeeds.size(); ++r)
-            if (speed >= 0.5f * (ladderSpeeds[r - 1] + ladderSpeeds[r]))
-                rung = int(r);
+    const int rung = walks ? rungFor(speed, runWeight) : -1;
+    if (rung >= 0)
         return ladderPose(rung, sampleOf(phase, kWalkPoses));
-    }
     if (walks && runWeight >= 0.0f && hasIdle)
         clip = runWeight >= 0.5f ? sim::Clip::Run : sim::Clip::Walk;
     if (clip == sim::Clip::Run)
@@ -141,6 +153,26 @@ PoseTable buildPoseTable(const exporting::Character& character)
     for (const exporting::CycleClip& rung : character.ladder)
         for (int k = 0; k < PoseTable::kWalkPoses; ++k)
             add(exporting::sampleClip(rung, double(k) / PoseTable::kWalkPoses));
+    // Each rung past the first with each looping action over it, as gaitPose layers it.
+    table.ladderActionSlot.assign(PoseTable::kActions, -1);
+    if (character.ladder.empty())
+        return table;
+    for (int a = 0; a < PoseTable::kActions; ++a)
+        if (table.hasAction[std::size_t(a)] && !table.oneShot[std::size_t(a)])
+            table.ladderActionSlot[std::size_t(a)] = std::int8_t(table.ladderActions++);
+    const std::size_t rungs = character.ladder.size();
+    for (std::size_t r = 1; r < rungs; ++r)
+        for (int a = 0; a < PoseTable::kActions; ++a) {
+            if (table.ladderActionSlot[std::size_t(a)] < 0)
+                continue;
+            for (int k = 0; k < PoseTable::kWalkPoses; ++k) {
+                exporting::GaitFrame g;
+                g.phase = double(k) / PoseTable::kWalkPoses;
+                g.runWeight = float(r) / float(rungs - 1);
+                g.action = {actionOf[std::size_t(a)], 0.5, 1.0f};
+                add(exporting::gaitPose(character, g));
+            }
+        }
     return table;
 }
 

@@ -9,6 +9,7 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -37,13 +38,18 @@ struct PoseTable {
     std::vector<float> ladderSpeeds;
     std::vector<std::uint8_t> hasAction;       // per action (kActions): the character plays it
     std::vector<std::uint8_t> oneShot;         // per action: played once and held (fall, get_up)
+    // With a gait ladder, per action (kActions): its place among the looping actions the
+    // character plays (-1: none), whose poses over each rung past the first follow the
+    // rungs' (ladderActionPose).
+    std::vector<std::int8_t> ladderActionSlot;
+    int ladderActions = 0;                     // how many actions have a slot
 
     // The pose an agent shows for its recorded clip and gait phase (cycles; wraps). For an
     // action the character plays: its pose at actionPhase (sim::actionPhase) where the
     // agent stands, its walking pose at the gait phase where it moves; for a one-shot
     // (fall, get_up), actionPhase is its progress (sim::oneShotProgress) and it plays in
     // full, moving or not; for an action it lacks, the pose its speed gives. A horse past
-    // its walk (a gait ladder's first rung) shows its gait without the action.
+    // its walk (a gait ladder's first rung) shows its rung with the action's upper body.
     // Moving, the walk or the run, or a gait ladder's rung (a horse's walk, trot, canter,
     // gallop), that runWeight (exporting::GaitFrame's, 0..1) is nearest; without it (< 0),
     // the recorded clip's walk or run, or the rung nearest the speed (m/s; < 0: unknown).
@@ -61,8 +67,23 @@ struct PoseTable {
     }
     // Pose index of rung r's sample k (0..kWalkPoses-1) of a gait ladder.
     static int ladderPose(int r, int k) { return kPoseCount + r * kWalkPoses + k; }
-    // How many poses the table holds: kPoseCount, and kWalkPoses per rung of a ladder.
-    int poseCount() const { return kPoseCount + int(ladderSpeeds.size()) * kWalkPoses; }
+    // Pose index of rung r's (1..rungs-1) sample k with action a's (0..kActions-1, one with
+    // a ladderActionSlot) upper body at mid-cycle; rung 0's is walkingActionPose(a, k).
+    int ladderActionPose(int r, int a, int k) const
+    {
+        return ladderPose(int(ladderSpeeds.size()), 0) +
+               ((r - 1) * ladderActions + ladderActionSlot[std::size_t(a)]) * kWalkPoses + k;
+    }
+    // How many poses the table holds: kPoseCount, kWalkPoses per rung of a ladder, and as
+    // many per looping action and rung past the first.
+    int poseCount() const
+    {
+        const int rungs = int(ladderSpeeds.size());
+        return kPoseCount + rungs * kWalkPoses + std::max(0, rungs - 1) * ladderActions * kWalkPoses;
+    }
+    // The rung of a gait ladder a moving agent shows: the nearest to runWeight's place along
+    // it, or without one (< 0) to the speed (m/s); -1 without a ladder or either.
+    int rungFor(float speed, float runWeight) const;
 };
 
 // Linear blend skinning of `character`'s mesh in `pose`, in the character's space.
@@ -70,7 +91,8 @@ void skinMesh(const exporting::Character& character, const exporting::Pose& pose
               std::vector<glm::vec3>& normals);
 // The idle pose, then walk pose k = sampleClip(walk, k / kWalkPoses), then run likewise,
 // then the actions (gaitPose with the action in full; a character without it repeats idle;
-// a one-shot's poses run from its start, k / (kActionPoses - 1) of the way, to its end).
+// a one-shot's poses run from its start, k / (kActionPoses - 1) of the way, to its end),
+// then a gait ladder's rungs, then its rungs past the first with each looping action.
 PoseTable buildPoseTable(const exporting::Character& character);
 
 }  // namespace throng::editor

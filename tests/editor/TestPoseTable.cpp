@@ -150,7 +150,7 @@ private slots:
         const exporting::Character horse = exporting::makeHorse(exporting::Lod::Far);
         const PoseTable table = buildPoseTable(horse);
         QCOMPARE(table.ladderSpeeds, horse.ladderSpeeds);
-        QCOMPARE(table.poseCount(), PoseTable::kPoseCount + 4 * PoseTable::kWalkPoses);
+        QCOMPARE(table.poseCount(), PoseTable::kPoseCount + 4 * PoseTable::kWalkPoses + 3 * table.ladderActions * PoseTable::kWalkPoses);
         QCOMPARE(table.positions.size(), table.vertexCount * std::size_t(table.poseCount()));
         QCOMPARE(table.joints.size(), table.jointCount * std::size_t(table.poseCount()));
         for (int r = 0; r < 4; ++r)
@@ -172,6 +172,65 @@ private slots:
         // Standing, it stands; without a speed, walk and run as for any character.
         QCOMPARE(table.poseFor(sim::Clip::Idle, 0.26f, 0.0f, false, 0.0f), 0);
         QCOMPARE(table.poseFor(sim::Clip::Run, 0.26f), PoseTable::runPose(2));
+    }
+
+    // A rider acts at every gait: past the walk, each rung has a pose per looping action
+    // (wait, look_around, shift_weight, wave, point, cheer, talk), the export's pose for
+    // that rung with the action at mid-cycle; a moving horse whose rider waves shows its
+    // rung with the hand up, and one whose brain picks an action the horse lacks (fall)
+    // shows its gait.
+    void aRiderActsAtEveryGait()
+    {
+        const exporting::Character horse = exporting::makeHorse(exporting::Lod::Far);
+        const PoseTable table = buildPoseTable(horse);
+        QCOMPARE(table.ladderActions, 7);
+        QCOMPARE(table.poseCount(), PoseTable::kPoseCount + 4 * PoseTable::kWalkPoses + 3 * 7 * PoseTable::kWalkPoses);
+        QCOMPARE(table.positions.size(), table.vertexCount * std::size_t(table.poseCount()));
+        QCOMPARE(table.joints.size(), table.jointCount * std::size_t(table.poseCount()));
+        const int wave = int(sim::Clip::Wave) - int(sim::Clip::Wait);
+        const int talk = int(sim::Clip::Talk) - int(sim::Clip::Wait);
+        const int fall = int(sim::Clip::Fall) - int(sim::Clip::Wait);
+        QCOMPARE(int(table.ladderActionSlot[std::size_t(fall)]), -1);
+        for (const int a : {wave, talk})
+            for (int r = 1; r < 4; ++r)
+                for (int k = 0; k < PoseTable::kWalkPoses; k += 3) {
+                    exporting::GaitFrame g;
+                    g.phase = double(k) / PoseTable::kWalkPoses;
+                    g.runWeight = float(r) / 3.0f;
+                    g.action = {horse.actionIndex(sim::toString(sim::Clip(int(sim::Clip::Wait) + a))), 0.5, 1.0f};
+                    QVERIFY(g.action.action >= 0);
+                    const std::vector<glm::mat4> globals =
+                        exporting::jointGlobalTransforms(horse, exporting::gaitPose(horse, g));
+                    std::vector<glm::vec3> want(horse.mesh.positions.size());
+                    for (std::size_t v = 0; v < want.size(); ++v)
+                        want[v] = skinnedVertex(horse, globals, v);
+                    const float off = maxDistance(table, table.ladderActionPose(r, a, k), want);
+                    QVERIFY2(off < 1e-4f, qPrintable(QString("action %1 rung %2 pose %3 is off by %4 m")
+                                                         .arg(a).arg(r).arg(k).arg(off)));
+                }
+        // Which pose a moving rider shows: walk (1 m/s, or runWeight 0), trot (3), canter
+        // (5.5), gallop (9.5, or runWeight 1); standing, the action's own.
+        QCOMPARE(table.poseFor(sim::Clip::Wave, 0.26f, 0.0f, true, 1.0f), PoseTable::walkingActionPose(wave, 2));
+        QCOMPARE(table.poseFor(sim::Clip::Wave, 0.26f, 0.0f, true, 3.0f), table.ladderActionPose(1, wave, 2));
+        QCOMPARE(table.poseFor(sim::Clip::Wave, 0.26f, 0.0f, true, 5.5f), table.ladderActionPose(2, wave, 2));
+        QCOMPARE(table.poseFor(sim::Clip::Wave, 0.26f, 0.0f, true, 9.5f), table.ladderActionPose(3, wave, 2));
+        QCOMPARE(table.poseFor(sim::Clip::Wave, 0.26f, 0.0f, true, 1.0f, 0.0f), PoseTable::walkingActionPose(wave, 2));
+        QCOMPARE(table.poseFor(sim::Clip::Wave, 0.26f, 0.0f, true, 1.0f, 1.0f), table.ladderActionPose(3, wave, 2));
+        QCOMPARE(table.poseFor(sim::Clip::Talk, 0.5f, 0.0f, true, 3.0f, 0.35f), table.ladderActionPose(1, talk, 4));
+        QCOMPARE(table.poseFor(sim::Clip::Wave, 0.26f, 0.26f, false, 0.0f), PoseTable::actionPose(wave, 2));
+        QCOMPARE(table.poseFor(sim::Clip::Fall, 0.26f, 0.5f, true, 5.5f), PoseTable::ladderPose(2, 2));
+        // At a gallop the waving rider's right hand is over its head; the plain gallop's is not.
+        const auto jointY = [&](int pose, int joint) {
+            return table.joints[std::size_t(pose) * table.jointCount + std::size_t(joint)][3].y;
+        };
+        for (int k = 0; k < PoseTable::kWalkPoses; ++k) {
+            const int waving = table.ladderActionPose(3, wave, k), riding = PoseTable::ladderPose(3, k);
+            QVERIFY2(jointY(waving, exporting::kHorseRiderHandR) > jointY(waving, exporting::kHorseRiderHead),
+                     qPrintable(QString("pose %1: hand %2, head %3").arg(k)
+                                    .arg(jointY(waving, exporting::kHorseRiderHandR))
+                                    .arg(jointY(waving, exporting::kHorseRiderHead))));
+            QVERIFY(jointY(riding, exporting::kHorseRiderHandR) < jointY(riding, exporting::kHorseRiderHead));
+        }
     }
 
     // Each action pose is the export's pose for it (gaitPose), skinned; the wave lifts a

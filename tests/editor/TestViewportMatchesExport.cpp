@@ -6,7 +6,8 @@
 // of how far the file's joint moves in half the time between two of the viewport's poses
 // (8 a cycle; a one-shot's 8 span it from start to end), the most the nearest pose can miss.
 // Riders at each of the horse's four gaits put every hoof where the file does: the same
-// gait, at the same phase of it.
+// gait, at the same phase of it; riders that wave at each gait hold the hand up where the
+// file does, within the wave's own swing (the viewport shows it at mid-cycle).
 #include "GltfReadBack.h"
 #include "RecordRun.h"
 #include "TestRegistry.h"
@@ -76,14 +77,18 @@ struct Rider {
 constexpr Rider kRiders[4] = {{"walker", 1.0f, 1.6f}, {"trotter", 3.0f, 2.5f}, {"canterer", 5.5f, 3.4f},
                               {"galloper", 9.5f, 5.0f}};
 
-std::string ridersScene()
+std::string ridersScene(bool waving = false)
 {
     std::string yaml = "throng: 1\nsettings: {fps: 24, seed: 4, duration: 8, bounds: {min: [-10, -20], max: "
                        "[120, 20]}}\nagent_types:\n";
     for (const Rider& r : kRiders)
         yaml += std::string("  - {name: ") + r.type + ", character: horse, radius: 0.8, max_speed: " +
                 std::to_string(r.speed) + ", max_force: 30, variation: {speed: [1, 1], height: [1, 1]}, " +
-                "behaviours: {seek: 1}}\n";
+                "behaviours: {seek: 1}" + (waving ? ", brain: waver" : "") + "}\n";
+    if (waving)
+        yaml += "brains:\n  - name: waver\n    nodes:\n      - {id: 1, type: input.constant, params: {value: 1}}\n"
+                "      - {id: 2, type: output.action, params: {actions: \"wave\"}}\n"
+                "    links:\n      - {from: [1, 0], to: [2, 0]}\n";
     yaml += "goals:\n";
     for (int k = 0; k < 4; ++k)
         yaml += "  - {name: far_" + std::to_string(k) + ", position: [115, " + std::to_string(-12 + 8 * k) +
@@ -121,6 +126,10 @@ class TestViewportMatchesExport : public QObject {
     sim::Scene m_ridersScene;
     sim::FrameCache m_ridersCache;
     tinygltf::Model m_ridersModel;
+
+    sim::Scene m_wavingScene;
+    sim::FrameCache m_wavingCache;
+    tinygltf::Model m_wavingModel;
 
     // Where the viewport's pose for agent i at frame f puts joint j, in the world: as
     // Viewport::setAgents poses it, from the recording.
@@ -165,6 +174,16 @@ private slots:
         options.path = m_dir.filePath("riders.glb").toStdString();
         QVERIFY(exporting::exportGltf(m_ridersScene, m_ridersCache, options).ok());
         QVERIFY2(test::loadGltf(options.path, m_ridersModel, error), error.c_str());
+
+        const sim::LoadResult waving = sim::parseScene(ridersScene(true), "waving-riders.yaml", "");
+        QVERIFY2(waving.ok(), waving.ok() ? "" : waving.diagnostics[0].format().c_str());
+        m_wavingScene = waving.scene;
+        sim::World wavingWorld(m_wavingScene, sim::WorldOptions{0, false, 1});
+        QVERIFY(wavingWorld.brainErrors().empty());
+        test::recordRun(wavingWorld, 8 * 24, m_wavingCache);
+        options.path = m_dir.filePath("waving-riders.glb").toStdString();
+        QVERIFY(exporting::exportGltf(m_wavingScene, m_wavingCache, options).ok());
+        QVERIFY2(test::loadGltf(options.path, m_wavingModel, error), error.c_str());
     }
 
     void jointsAgree_data()
@@ -273,6 +292,71 @@ private slots:
         QVERIFY2(compared > 30, qPrintable(QString("%1 hooves down").arg(compared)));
         qInfo("%s: %d hooves down, the worst %.0f %% of its tolerance from the file's", kRiders[rider].type, compared,
               100.0 * worst);
+    }
+
+    // A rider waving at each of the horse's gaits, viewport against file, on every frame of
+    // two seconds at its speed: the right hand is over the rider's head in both, and the
+    // viewport's is where the file's is, within the wave's swing about its mid-cycle (the
+    // viewport's pose; worked out from the horse's clip), plus what the hoof test allows.
+    void waveAtEveryGait_data() { hoovesAgree_data(); }
+
+    void waveAtEveryGait()
+    {
+        QFETCH(int, rider);
+        AgentCharacters characters;
+        QVERIFY(characters.setScene(m_wavingScene, ""));
+        QVERIFY2(characters.problems().empty(), characters.problems().c_str());
+        const std::size_t i = std::size_t(rider);
+        QCOMPARE(m_wavingCache.agents()[i].id, sim::AgentId(11 + rider));
+        const std::string root = std::string("agent_") + std::to_string(11 + rider) + "_" + kRiders[rider].type;
+        const std::vector<std::string> hand{"body", "rider_hips", "rider_chest", "rider_upper_arm_r",
+                                            "rider_lower_arm_r", "rider_hand_r"};
+        const std::vector<std::string> head{"body", "rider_hips", "rider_chest", "rider_head"};
+        // How far the hand swings from its mid-cycle place over the wave, in the rider's frame.
+        const exporting::Character horse = exporting::makeHorse(exporting::Lod::Near);
+        const int wave = horse.actionIndex("wave");
+        QVERIFY(wave >= 0);
+        const auto handAt = [&](double phase) {
+            exporting::GaitFrame g;
+            g.moveWeight = 0.0f;
+            g.action = {wave, phase, 1.0f};
+            const auto globals = exporting::jointGlobalTransforms(horse, exporting::gaitPose(horse, g));
+            return glm::vec3(globals[std::size_t(exporting::kHorseRiderHandR)][3]);
+        };
+        float swingM = 0.0f;
+        for (int k = 0; k < 32; ++k)
+            swingM = std::max(swingM, glm::distance(handAt(k / 32.0), handAt(0.5)));
+        QVERIFY2(swingM > 0.05f && swingM < 0.5f, qPrintable(QString("the wave swings %1 m").arg(swingM)));
+        const float poseStepS = kRiders[rider].strideM / kRiders[rider].speed / 8.0f;
+        float worst = 0.0f;
+        for (std::size_t f = 5 * 24; f < 7 * 24; ++f) {
+            const float t = float(f) / kFps;
+            QVERIFY2(std::abs(m_wavingCache.at(f, i).speed - kRiders[rider].speed) < 0.05f * kRiders[rider].speed,
+                     qPrintable(QString("not at its speed: %1 m/s").arg(m_wavingCache.at(f, i).speed)));
+            QCOMPARE(m_wavingCache.at(f, i).clip, sim::Clip::Wave);
+            const glm::vec3 written = test::jointWorldAt(m_wavingModel, root, hand, t);
+            const glm::vec3 shown = viewportJoint(characters, m_wavingCache, f, i, exporting::kHorseRiderHandR);
+            const float writtenHead = test::jointWorldAt(m_wavingModel, root, head, t).y;
+            const float shownHead = viewportJoint(characters, m_wavingCache, f, i, exporting::kHorseRiderHead).y;
+            QVERIFY2(written.y > writtenHead && shown.y > shownHead,
+                     qPrintable(QString("at %1 s the hand is at %2 m (file) and %3 m (viewport), the head at %4 and %5")
+                                    .arg(t).arg(written.y).arg(shown.y).arg(writtenHead).arg(shownHead)));
+            const auto againstBody = [&](float at) {
+                return test::jointWorldAt(m_wavingModel, root, hand, at) -
+                       test::jointWorldAt(m_wavingModel, root, {"body"}, at);
+            };
+            float toleranceM = 0.01f + swingM;
+            for (const float side : {-0.5f, 0.5f})
+                toleranceM = std::max(toleranceM,
+                                      0.01f + swingM + glm::distance(againstBody(t), againstBody(t + side * poseStepS)));
+            worst = std::max(worst, glm::distance(shown, written) / toleranceM);
+            QVERIFY2(glm::distance(shown, written) < toleranceM,
+                     qPrintable(QString("at %1 s: viewport (%2, %3, %4), file (%5, %6, %7), within %8 m")
+                                    .arg(t).arg(shown.x).arg(shown.y).arg(shown.z)
+                                    .arg(written.x).arg(written.y).arg(written.z).arg(toleranceM)));
+        }
+        qInfo("%s: the wave swings %.2f m; the worst hand %.0f %% of its tolerance from the file's",
+              kRiders[rider].type, double(swingM), 100.0 * worst);
     }
 
     // The comparison can fail: the lying pose is far from the standing one, so a viewport
