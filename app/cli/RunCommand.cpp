@@ -53,8 +53,11 @@ int runCommand(const CliArguments& args, std::ostream& out, std::ostream& err)
 
     Progress progress(err, "simulating", frames - 1, !args.quiet && world.agentCount() * frames > 2'000'000);
     const auto start = std::chrono::steady_clock::now();
+    std::vector<std::uint64_t> inScene;
+    sim::RunStats::sampleInScene(world, inScene);
     for (std::uint64_t f = 1; f < frames; ++f) {
         world.step();
+        sim::RunStats::sampleInScene(world, inScene);
         if (record) {
             world.snapshot(frame);
             cache.append(frame);
@@ -63,7 +66,8 @@ int runCommand(const CliArguments& args, std::ostream& out, std::ostream& err)
     }
     progress.finish();
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const sim::RunStats stats = sim::RunStats::from(world, frames, seconds);
+    sim::RunStats stats = sim::RunStats::from(world, frames, seconds);
+    stats.inSceneEachSecond = std::move(inScene);
 
     out << "simulated " << stats.agents << " agents for " << frames << " frames (" << world.timeS()
         << " s at " << scene.settings.fps << " fps) in " << seconds << " s: " << stats.agentStepsPerSecond

@@ -18,6 +18,7 @@ void writeSceneTraffic(YamlWriter& w, const Scene& s);
 void writeSceneSound(YamlWriter& w, const Scene& s);
 void writeEmission(YamlWriter& w, const SoundEmission& e);
 void writeSceneActionPoints(YamlWriter& w, const Scene& s);
+void writeSceneSources(YamlWriter& w, const Scene& s);
 }  // namespace detail
 
 namespace {
@@ -302,6 +303,7 @@ std::string sceneToYaml(const Scene& s)
     detail::writeSceneTraffic(w, s);
     detail::writeSceneSound(w, s);
     detail::writeSceneActionPoints(w, s);
+    detail::writeSceneSources(w, s);
     writeAgents(w, s);
     o << YAML::EndMap;
     return std::string(o.c_str()) + "\n";

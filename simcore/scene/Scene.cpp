@@ -78,6 +78,11 @@ std::uint32_t firstSpawnedId(const Scene& scene)
     return next;
 }
 
+const char* toString(Arrivals arrivals)
+{
+    return arrivals == Arrivals::Poisson ? "poisson" : "steady";
+}
+
 const char* toString(AreaShape shape)
 {
     switch (shape) {

@@ -298,6 +298,38 @@ struct ActionPoint {
     bool operator==(const ActionPoint&) const = default;
 };
 
+// Where a source lets its agents in: along a line, or over a rectangle.
+enum class SourceShape { Line, Rect };
+// How a source spaces its arrivals: evenly at its rate, or as a seeded Poisson process.
+enum class Arrivals { Steady, Poisson };
+
+struct SourceType {
+    std::string type;     // an agent type's name
+    float weight = 1.0f;  // > 0: its share of the arrivals, against the others' weights
+    bool operator==(const SourceType&) const = default;
+};
+
+// A stream of agents that enter the scene during the run (the World's SourcePhase): at
+// `rate` a second, evenly or as Poisson arrivals, within `windows` (or the whole run), up
+// to `cap`, each on a seeded place of the line or rectangle, of a type drawn by weight,
+// bound for `goal` or along `path`.
+struct Source {
+    std::string name;
+    std::vector<SourceType> types;   // >= 1
+    SourceShape shape = SourceShape::Line;
+    glm::vec2 from{0.0f}, to{0.0f};  // Line: its ends (x, z)
+    glm::vec2 min{0.0f}, max{0.0f};  // Rect: its corners (x, z)
+    float rate = 1.0f;               // agents a second, > 0
+    Arrivals arrivals = Arrivals::Steady;
+    std::vector<glm::vec2> windows;  // [start, end) in s, in order, not overlapping; empty: the whole run
+    std::string goal;
+    std::string path;
+    std::uint32_t cap = 0;           // most agents it lets in over the run; 0: as many as its rate gives
+    bool headed = false;             // heading given; else each faces its goal or its path's first point
+    float headingDeg = 0.0f;         // degrees, 0 = +x, counter-clockwise seen from above
+    bool operator==(const Source&) const = default;
+};
+
 struct Scene {
     static constexpr int kFormatVersion = 1;
     Settings settings;
@@ -318,6 +350,7 @@ struct Scene {
     std::vector<Hero> heroes;
     std::vector<SoundSource> soundSources;
     std::vector<ActionPoint> actionPoints;
+    std::vector<Source> sources;
     std::vector<BrainGraph> brains;
     bool operator==(const Scene&) const = default;
 
@@ -343,6 +376,7 @@ const std::vector<std::string>& builtinCharacters();
 const char* toString(AgentKind kind);
 const char* toString(Navigation navigation);
 const char* toString(AreaShape shape);
+const char* toString(Arrivals arrivals);
 const char* toString(ObstacleShape shape);
 const char* toString(CarFollowing model);  // "inherit", "idm", "gap_time", "fuzzy"
 // The model a vehicle of `type` on `lane` follows (either may be null): the lane's, the

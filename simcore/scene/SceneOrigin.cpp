@@ -44,6 +44,12 @@ void forEachGroundPoint(Scn& s, F&& f, G&& g)
         for (auto& k : h.keyframes) g(k.position);
     for (auto& so : s.soundSources) f(so.position);
     for (auto& ap : s.actionPoints) f(ap.position);
+    for (auto& so : s.sources) {
+        f(so.from);
+        f(so.to);
+        f(so.min);
+        f(so.max);
+    }
 }
 
 float shifted(float v, double by) { return float(double(v) - by); }

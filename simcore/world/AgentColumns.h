@@ -48,6 +48,9 @@ struct AgentColumns {
     std::vector<glm::vec3> resolvedPos;     // the collide pass's result
     std::vector<std::uint8_t> contactMoved;  // per step: moved by the contact rounds
     std::vector<std::uint8_t> out;           // left through an exit: never simulated or perceived again
+    // A source's agent whose time has not come (or whose place is taken): out and stopped
+    // as well until the source phase lets it in (Sources.h); not present in frames.
+    std::vector<std::uint8_t> offstage;
     // Action points (ActionPoints.h): the point it plays at now (-1 = none) and for how
     // many seconds more; the last point it entered, until it leaves that point's disk.
     std::vector<std::int32_t> pointAt, pointLast;

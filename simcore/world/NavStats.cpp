@@ -38,7 +38,7 @@ NavStats NavStats::from(const World& world)
     std::vector<float> allOut;
     for (std::size_t i = 0; i < world.agentCount(); ++i) {
         const std::int32_t g = world.goalIndex(i);
-        if (g >= 0 && goals[std::size_t(g)].exit) {
+        if (g >= 0 && goals[std::size_t(g)].exit && !world.isOffstage(i)) {  // off stage: never came in
             ++s.exitAgents;
             if (world.isOut(i)) {
                 outTimes[std::size_t(g)].push_back(world.arrivalTimeS(i));

@@ -48,6 +48,9 @@ RunStats RunStats::from(const World& world, std::uint64_t frames, double wallSec
         if (world.hasArrived(i))
             ++s.arrived;
     s.withGoal = world.agentsWithGoal();
+    s.sourceAgents = world.sourceAgents();
+    s.offstage = world.offstageAgents();
+    s.inScene = world.agentsInScene();
     s.heroes = world.heroTracks().size();
     const FlockFigures flock = FlockFigures::of(world);
     s.fliers = flock.fliers;
@@ -80,6 +83,14 @@ RunStats RunStats::from(const World& world, std::uint64_t frames, double wallSec
     return s;
 }
 
+void RunStats::sampleInScene(const World& world, std::vector<std::uint64_t>& series)
+{
+    // Whole seconds passed; the small slack keeps 24 steps of 1/24 s at 1 s.
+    const auto seconds = std::size_t(std::floor(world.timeS() + 1e-6));
+    while (series.size() <= seconds)
+        series.push_back(world.agentsInScene());
+}
+
 std::string RunStats::toJson() const
 {
     std::string j = "{\n";
@@ -102,6 +113,14 @@ std::string RunStats::toJson() const
     field("agent_steps_per_second", number(agentStepsPerSecond));
     field("arrived", std::to_string(arrived));
     field("agents_with_goal", std::to_string(withGoal));
+    field("agents_in_scene", std::to_string(inScene));
+    field("source_agents", std::to_string(sourceAgents));
+    field("source_agents_entered", std::to_string(sourceAgents - offstage));
+    field("source_agents_offstage", std::to_string(offstage));
+    std::string series;
+    for (const std::uint64_t n : inSceneEachSecond)
+        series += (series.empty() ? "" : ", ") + std::to_string(n);
+    field("agents_in_scene_each_second", "[" + series + "]");
     field("wall_penetrations", std::to_string(counters.wallPenetrations));
     field("obstacle_penetrations", std::to_string(counters.obstaclePenetrations));
     field("overlapping_pairs", std::to_string(counters.overlappingPairs));

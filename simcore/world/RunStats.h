@@ -47,6 +47,15 @@ struct RunStats {
     double flierSpreadM = 0.0;         // RMS distance from the fliers' centre, m
     double flierCentreToLeaderM = 0.0; // followers' centre to their leaders' mean position, m
     NavStats nav;  // exits, shortest-path walkers, plans
+    // Sources (Sources.h): the agents they let in over the run, those still off stage at
+    // its end; and the agents in the scene (neither off stage nor out) at the end.
+    std::uint64_t sourceAgents = 0, offstage = 0, inScene = 0;
+    // Agents in the scene at 0 s, 1 s, 2 s, ... of the run: filled by whoever steps the
+    // World (sampleInScene after each step); empty if nobody did.
+    std::vector<std::uint64_t> inSceneEachSecond;
+    // Adds the count of agents in the scene when the World has passed a whole second
+    // since the last sample (the first call samples 0 s... as the World stands).
+    static void sampleInScene(const World& world, std::vector<std::uint64_t>& series);
 
     static RunStats from(const World& world, std::uint64_t frames, double wallSeconds);
     std::string toJson() const;

@@ -138,6 +138,9 @@ void World::build(const Scene& scene, const WorldOptions& options)
     m_brains.build(scene, view());
     findEscapes();  // before the plans: one that starts inside an obstacle plans from outside it
     m_agents.out.assign(m_agents.size(), 0);  // nobody has left yet
+    // The sources' agents wait off stage until the source phase lets them in.
+    m_agents.offstage.assign(m_agents.size(), 0);
+    m_sources.sendOffstage(m_agents);
     m_nav.build(scene, view());
     for (const TypeParams& t : m_types.params) {
         m_hasFliers = m_hasFliers || t.kind == AgentKind::Flier;
@@ -237,6 +240,7 @@ void World::buildAgents(const Scene& scene)
         spawnGroup(scene, group, g, std::uint16_t(std::max(0, types(group.type))), goals(group.goal),
                    paths(group.path), next);
     }
+    addSourceAgents(scene, next);
 
     // Leaders were given as ids; the step reads dense indices.
     std::map<AgentId, std::int32_t> denseOf;
@@ -444,6 +448,33 @@ void World::addAgent(const Scene& scene, AgentId id, std::uint16_t type, glm::ve
     m_agents.pointLeftS.push_back(0.0f);
 }
 
+// The sources' arrivals (Sources.h): agents after the groups', off stage until due.
+void World::addSourceAgents(const Scene& scene, AgentId& nextId)
+{
+    const NameIndex goals(scene.goals), paths(scene.paths);
+    std::vector<std::uint32_t> agents, sources;
+    std::vector<double> times;
+    for (std::size_t s = 0; s < scene.sources.size(); ++s) {
+        const Source& source = scene.sources[s];
+        for (const SourceArrival& a : sourceArrivals(scene, s, m_seed)) {
+            agents.push_back(std::uint32_t(m_agents.info.size()));
+            times.push_back(a.timeS);
+            sources.push_back(a.source);
+            addAgent(scene, nextId++, a.type, glm::vec3(a.place.x, 0.0f, a.place.y), a.headingRad,
+                     goals(source.goal), paths(source.path), 0);
+        }
+    }
+    m_sources.build(std::move(agents), std::move(times), std::move(sources));
+}
+
+std::size_t World::agentsInScene() const
+{
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < m_agents.size(); ++i)
+        n += m_agents.out[i] ? 0 : 1;
+    return n;
+}
+
 // Agents that start inside a wall or obstacle walk out of it first (Constraints.h).
 void World::findEscapes()
 {
@@ -467,8 +498,8 @@ std::size_t World::agentsWithGoal() const
 {
     std::size_t count = 0;
     for (std::size_t i = 0; i < m_agents.pos.size(); ++i)
-        if ((m_agents.path[i] >= 0 && !m_set.paths[std::size_t(m_agents.path[i])].closed) ||
-            (m_agents.path[i] < 0 && m_agents.goal[i] >= 0))
+        if (!m_agents.offstage[i] && ((m_agents.path[i] >= 0 && !m_set.paths[std::size_t(m_agents.path[i])].closed) ||
+                                      (m_agents.path[i] < 0 && m_agents.goal[i] >= 0)))
             ++count;
     return count;
 }
@@ -492,7 +523,8 @@ void World::snapshot(std::vector<AgentFrame>& out) const
         // Clip thresholds relative to a walker: below 0.1 m/s stand, above 2.5 m/s run.
         f.clip = actionPointClip(m_set.actionPoints, m_agents, i,
                                  m_brains.clip(i, speed < 0.1f ? Clip::Idle : (speed < 2.5f ? Clip::Walk : Clip::Run)));
-        f.out = m_agents.out[i] != 0;
+        f.out = m_agents.out[i] != 0 && m_agents.offstage[i] == 0;
+        f.present = m_agents.offstage[i] == 0;
         f.arrived = m_agents.arrived[i] != 0;
     }
 }
@@ -509,7 +541,7 @@ std::size_t World::memoryBytes() const
 {
     const std::size_t n = m_agents.pos.capacity();
     return n * (sizeof(AgentInfo) + 11 * sizeof(glm::vec3) + 2 * sizeof(WanderState) + 6 * sizeof(float) +
-                5 * sizeof(std::int32_t) + 2 * sizeof(glm::vec2) + 5 + kMaxNeighbours * sizeof(std::uint32_t)) +
+                5 * sizeof(std::int32_t) + 2 * sizeof(glm::vec2) + 6 + kMaxNeighbours * sizeof(std::uint32_t)) +
            m_grid.memoryBytes();
 }
 

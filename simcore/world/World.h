@@ -15,6 +15,7 @@
 #include "simcore/world/MovePhase.h"
 #include "simcore/world/NearestList.h"
 #include "simcore/world/NeighbourGrid.h"
+#include "simcore/world/Sources.h"
 #include "simcore/world/StaticSet.h"
 #include "simcore/world/StepClock.h"
 #include "simcore/world/StepCounters.h"
@@ -97,7 +98,8 @@ public:
     bool hasArrived(std::size_t i) const { return m_agents.arrived[i] != 0; }
     // Seconds from the start until agent i arrived; negative while it has not.
     float arrivalTimeS(std::size_t i) const { return m_agents.arrivalTime[i]; }
-    // Agents with a goal or an open path to finish.
+    // Agents in the scene or gone from it with a goal or an open path to finish (not those
+    // still off stage).
     std::size_t agentsWithGoal() const;
     // The dense index of the agent that agent i pursues, evades or follows; -1 for none.
     std::int32_t leaderOf(std::size_t i) const { return m_agents.leader[i]; }
@@ -112,7 +114,14 @@ public:
     bool usesWalkKernel(std::size_t typeIndex) const { return m_move.walk().runs(typeIndex); }
     // Navigation (WorldNav.cpp): agent i left through an exit goal; it is no longer
     // simulated or perceived and stays where it left (arrivalTimeS says when).
-    bool isOut(std::size_t i) const { return m_agents.out[i] != 0; }
+    bool isOut(std::size_t i) const { return m_agents.out[i] != 0 && m_agents.offstage[i] == 0; }
+    // Sources (Sources.h): agent i is a source's, not yet let in (not in the scene).
+    bool isOffstage(std::size_t i) const { return m_agents.offstage[i] != 0; }
+    // Agents the scene's sources let in over the run, and how many of them are still off stage.
+    std::size_t sourceAgents() const { return m_sources.scheduled(); }
+    std::size_t offstageAgents() const { return m_sources.offstage(m_agents); }
+    // Agents in the scene now: neither off stage nor gone through an exit.
+    std::size_t agentsInScene() const;
     // Agent i started inside a wall or obstacle and is still walking out of it (its way
     // out: escapeTarget in Constraints.h, in this World's coordinates).
     bool isEscaping(std::size_t i) const { return m_agents.escaping[i] != 0; }
@@ -193,6 +202,8 @@ private:
                        std::vector<glm::vec2>& places, const std::vector<std::uint8_t>& clearOfStatics) const;
     void addAgent(const Scene& scene, AgentId id, std::uint16_t type, glm::vec3 pos, float headingRad, int goal,
                   int path, AgentId leader);
+    // Every source's arrivals as off-stage agents after the groups' (Sources.h).
+    void addSourceAgents(const Scene& scene, AgentId& nextId);
 
     // Agents inside a wall or obstacle at the start: where each walks out to (Constraints.h).
     void findEscapes();
@@ -229,6 +240,7 @@ private:
     WorldNav m_nav;
     glm::dvec2 m_origin{0.0};         // the scene's (x, z) of this World's (0, 0)
     BrainPhase m_brains;
+    SourcePhase m_sources;
 };
 
 }  // namespace throng::sim

@@ -135,6 +135,7 @@ void World::restoreDynamicState(const WorldState& s, const std::vector<std::uint
 #define THRONG_RESTORE(name) m_agents.name = s.name;
     THRONG_AGENT_COLUMNS(THRONG_RESTORE)
 #undef THRONG_RESTORE
+    m_sources.rewind();  // agents let in after the checkpoint are off stage again
     // Kept: the traffic system only into a World that has one (an edit that took every
     // lane and vehicle away leaves none).
     if (m_traffic.system && s.trafficSystem)
@@ -202,14 +203,18 @@ struct Declared {
 };
 
 // Each agent's goal and path as its scene declares them, in the World's dense order:
-// placed agents, then every group's members (vehicles and heroes, after them, have none).
-std::vector<Declared> declaredLegs(const Scene& scene)
+// placed agents, then every group's members, then every source's (vehicles and heroes,
+// after them, have none).
+std::vector<Declared> declaredLegs(const Scene& scene, std::uint64_t seed)
 {
     std::vector<Declared> out;
     for (const Agent& a : scene.agents)
         out.push_back({a.goal, a.path});
     for (const SpawnGroup& g : scene.groups)
         out.insert(out.end(), g.count, Declared{g.goal, g.path});
+    const std::vector<std::uint32_t> counts = sourceCounts(scene, seed);
+    for (std::size_t s = 0; s < scene.sources.size(); ++s)
+        out.insert(out.end(), counts[s], Declared{scene.sources[s].goal, scene.sources[s].path});
     return out;
 }
 
@@ -241,7 +246,8 @@ bool World::adoptState(const WorldState& stateIn, const Scene& stateScene, const
     if (stateIn.seed != m_seed || !(stateScene.settings == thisScene.settings))
         return false;
     // Agents by key, not by dense index: an added or removed agent moves the others.
-    const std::vector<std::int32_t> previous = matchAgents(stateIn.agents, stateScene, m_agents.info, thisScene);
+    const std::vector<std::int32_t> previous =
+        matchAgents(stateIn.agents, stateScene, m_agents.info, thisScene, m_seed);
     if (previousOut)
         *previousOut = previous;
     bool identity = previous.size() == stateIn.agents.size();
@@ -330,7 +336,8 @@ bool World::adoptMatched(const WorldState& s, const Scene& stateScene, const Sce
         }
     }
 
-    const std::vector<Declared> legsBefore = declaredLegs(stateScene), legsAfter = declaredLegs(thisScene);
+    const std::vector<Declared> legsBefore = declaredLegs(stateScene, m_seed);
+    const std::vector<Declared> legsAfter = declaredLegs(thisScene, m_seed);
     for (std::size_t i = 0; i < n; ++i) {
         const std::int32_t g = remapByName(s.goal[i], stateScene.goals, thisScene.goals);
         const std::int32_t p = remapByName(s.path[i], stateScene.paths, thisScene.paths);

@@ -13,6 +13,9 @@
 //    unchanged. An agent of the edited scene with no match (a crowd-brush stroke, a
 //    changed group) starts from its scene state as the edited World builds it; an agent
 //    with no match in the edited scene (the erase brush) is gone from the edit frame on.
+//    A source's agents match by (source, arrival) while the source is unchanged; those of
+//    an edited source start from their scene state (off stage until due: arrivals whose
+//    time has passed come in at once, one a step where each fits);
 //    A kept agent keeps its id (the key of its random draws) and, with an unchanged
 //    type, its max speed, stride and waypoint radius: adding placed agents moves the ids
 //    a World gives group members. The FrameCache keeps both sets (changeAgents);
@@ -91,6 +94,7 @@ struct WorldState {
     std::vector<std::uint8_t> escaping;
     std::vector<glm::vec2> escapeTo;
     std::vector<std::uint8_t> arrived, stopped, stoppedBefore, onCrosswalk, nearCount, out;
+    std::vector<std::uint8_t> offstage;  // a source's agent not yet let in (Sources.h)
     std::vector<std::uint32_t> nearIndex;  // World::kMaxNeighbours per agent
     std::vector<glm::vec3> heldForce;
     std::vector<std::int32_t> pointAt, pointLast;
@@ -132,9 +136,12 @@ struct WorldState {
 // Per agent of `after` (a World of afterScene, dense order), the index of the same agent
 // in `before` (a World of beforeScene), or -1 for an agent that is new. Placed agents,
 // vehicles and heroes match by id, group members by (group, member) while the group is
-// unchanged; members of a group that changed never match (the group spawns again).
+// unchanged; members of a group that changed never match (the group spawns again); a
+// source's agents by (source, arrival) while the source is unchanged (the arrivals as
+// `seed` gives them: sourceCounts), and never when it changed (its stream starts again).
 std::vector<std::int32_t> matchAgents(const std::vector<AgentInfo>& before, const Scene& beforeScene,
-                                      const std::vector<AgentInfo>& after, const Scene& afterScene);
+                                      const std::vector<AgentInfo>& after, const Scene& afterScene,
+                                      std::uint64_t seed);
 // `old` laid out for a World whose agents come from `previous` (matchAgents): kept agents
 // take their state from `old`, new ones from `fresh` (the new World as built); the global
 // state (step, counters, traffic, navigation, brain memory) is old's.

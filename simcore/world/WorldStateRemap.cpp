@@ -2,6 +2,7 @@
 // matched by key, and the checkpoint is laid out in the new World's dense order.
 #include "simcore/world/WorldState.h"
 
+#include "simcore/world/Sources.h"
 #include "simcore/world/World.h"
 #include "simcore/world/detail/WorldStateColumns.h"
 
@@ -14,10 +15,12 @@ namespace {
 
 // (kind, number, name): 0 = placed agent by id, 1 = member `number` (in spawn order) of
 // group `name`, 2 = vehicle or hero by id, 3 = a member of a group that changed (never
-// matches: the group spawns again).
+// matches: the group spawns again), 4 = arrival `number` of source `name`, 5 = one of a
+// source that changed (never matches: its stream starts again).
 using Key = std::tuple<int, std::uint32_t, std::string>;
 
-std::vector<Key> keysOf(const std::vector<AgentInfo>& agents, const Scene& scene, const Scene& other)
+std::vector<Key> keysOf(const std::vector<AgentInfo>& agents, const Scene& scene, const Scene& other,
+                        std::uint64_t seed)
 {
     std::vector<Key> keys;
     keys.reserve(agents.size());
@@ -31,6 +34,14 @@ std::vector<Key> keysOf(const std::vector<AgentInfo>& agents, const Scene& scene
         for (std::uint32_t k = 0; k < g.count && i < agents.size(); ++k, ++i)
             keys.emplace_back(same ? 1 : 3, k, g.name);
     }
+    const std::vector<std::uint32_t> counts = sourceCounts(scene, seed);
+    for (std::size_t s = 0; s < scene.sources.size(); ++s) {
+        bool same = false;
+        for (const Source& h : other.sources)
+            same = same || (h == scene.sources[s]);
+        for (std::uint32_t k = 0; k < counts[s] && i < agents.size(); ++k, ++i)
+            keys.emplace_back(same ? 4 : 5, k, scene.sources[s].name);
+    }
     for (; i < agents.size(); ++i)
         keys.emplace_back(2, agents[i].id, std::string());
     return keys;
@@ -39,15 +50,16 @@ std::vector<Key> keysOf(const std::vector<AgentInfo>& agents, const Scene& scene
 }  // namespace
 
 std::vector<std::int32_t> matchAgents(const std::vector<AgentInfo>& before, const Scene& beforeScene,
-                                      const std::vector<AgentInfo>& after, const Scene& afterScene)
+                                      const std::vector<AgentInfo>& after, const Scene& afterScene,
+                                      std::uint64_t seed)
 {
     std::map<Key, std::int32_t> index;
-    const std::vector<Key> old = keysOf(before, beforeScene, afterScene);
+    const std::vector<Key> old = keysOf(before, beforeScene, afterScene, seed);
     for (std::size_t i = 0; i < old.size(); ++i)
-        if (std::get<0>(old[i]) != 3)
+        if (std::get<0>(old[i]) != 3 && std::get<0>(old[i]) != 5)
             index.emplace(old[i], std::int32_t(i));
     std::vector<std::int32_t> previous(after.size(), -1);
-    const std::vector<Key> now = keysOf(after, afterScene, beforeScene);
+    const std::vector<Key> now = keysOf(after, afterScene, beforeScene, seed);
     for (std::size_t i = 0; i < now.size(); ++i)
         if (auto it = index.find(now[i]); it != index.end())
             previous[i] = it->second;

@@ -22,6 +22,9 @@ void World::stepOnce()
     // Anything to constrain walkers against? Not in an open field like `cross`.
     const bool hasStatics = m_set.hasStatics();
 
+    // Enter: the sources' agents whose time has come, where their bodies fit (Sources.h).
+    if (m_sources.scheduled() != 0 && m_sources.enter(m_clock.timeS(), m_agents) != 0)
+        m_gridCurrent = false;
     // Grid: index agents by cell for neighbour queries (the last step's grid phase, at
     // the end of this function, left it current for these positions).
     if (!m_gridCurrent)

@@ -55,6 +55,10 @@ private:
     void readSoundSources(const YAML::Node& node, Scene& scene);
     void readEmission(const YAML::Node& node, const std::string& key, SoundEmission& e);
     void readActionPoints(const YAML::Node& node, Scene& scene);
+    void readSources(const YAML::Node& node, Scene& scene);
+    void readSourceTypes(const YAML::Node& item, const std::string& key, Source& s);
+    void readSourcePlace(const YAML::Node& item, const std::string& key, Source& s);
+    void readSourceWindows(const YAML::Node& item, const std::string& key, Source& s);
     void readHeroKeyframesFile(const YAML::Node& at, const std::string& key, float fps, Hero& hero);
 
     // Reference checks: report "no X named 'y'" at the value's location.
