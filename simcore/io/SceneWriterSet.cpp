@@ -31,6 +31,8 @@ void writeSceneSet(YamlWriter& w, const Scene& s)
             w.kv("name", p.name);
             w.kvf("radius", p.radiusM);
             w.kv("closed", p.closed ? "true" : "false");
+            if (p.exit)
+                w.kv("exit", "true");
             if (p.planned) {
                 w.kv("plan", "astar");
                 w.kvf("clearance", p.clearanceM);

@@ -167,6 +167,9 @@ struct Path {
     // smoothed to its corners), keeping clearanceM from them.
     bool planned = false;
     float clearanceM = 1.0f;        // m, > 0; planned paths only
+    // An open path's end is an exit: a walker that reaches it (within radiusM of its last
+    // point) leaves the scene there, as through an exit goal.
+    bool exit = false;
     bool operator==(const Path&) const = default;
 };
 

@@ -76,16 +76,20 @@ void commitAgent(const StepView& v, AgentColumns& agents, std::size_t i, std::ui
         const bool crawling = toEnd < path.radiusM && glm::distance(to, from) < kSettleSpeedMps * v.clock.dt;
         stop = !path.closed && (toEnd < tolerance || crawling);
         // Arrived = reached the path's end within the path's own width there; the walker
-        // still walks on to the end point itself before it stops.
-        if (!path.closed && toEnd < path.radiusM)
+        // still walks on to the end point itself before it stops, unless the end is an
+        // exit: then it leaves there (stopped, never perceived again), at its pace.
+        if (!path.closed && toEnd < path.radiusM) {
             arrive();
+            stop = stop || path.exit;
+            agents.out[i] = path.exit ? 1 : 0;
+        }
         // Against the pile at the end: a stopped walker of the same path, nearer the end
         // than this one and within half a body of touching it, so a group finishing one
         // path queues up behind those already there instead of pressing on forever. (Only
         // "between this one and the end" left walkers that had slid past the end beside
         // the pile of a narrow path pressing on for good, issue 23.)
         const std::uint32_t* near = &agents.nearIndex[i * kMaxNeighbours];
-        for (std::size_t k = 0; !stop && !path.closed && k < agents.nearCount[i]; ++k) {
+        for (std::size_t k = 0; !stop && !path.closed && !path.exit && k < agents.nearCount[i]; ++k) {
             const std::uint32_t j = near[k];
             const float reach = agents.radius[i] * 1.5f + agents.radius[j] + kSettleGapM;
             const glm::vec2 q = xz(agents.nextPos[j]);

@@ -38,7 +38,14 @@ NavStats NavStats::from(const World& world)
     std::vector<float> allOut;
     for (std::size_t i = 0; i < world.agentCount(); ++i) {
         const std::int32_t g = world.goalIndex(i);
-        if (g >= 0 && goals[std::size_t(g)].exit && !world.isOffstage(i)) {  // off stage: never came in
+        if (world.isOffstage(i))  // never came in
+            continue;
+        const std::int32_t p = world.pathIndex(i);
+        if (p >= 0 && world.paths()[std::size_t(p)].exit) {  // leaves at its path's end
+            ++s.exitAgents;
+            if (world.isOut(i))
+                allOut.push_back(world.arrivalTimeS(i));
+        } else if (g >= 0 && goals[std::size_t(g)].exit) {
             ++s.exitAgents;
             if (world.isOut(i)) {
                 outTimes[std::size_t(g)].push_back(world.arrivalTimeS(i));

@@ -19,7 +19,7 @@ struct ExitFlow {
 };
 
 struct NavStats {
-    std::uint64_t exitAgents = 0;   // agents whose goal is an exit
+    std::uint64_t exitAgents = 0;   // agents whose goal is an exit, or whose path ends in one
     std::uint64_t agentsOut = 0;
     double timeTo99PercentOutS = -1;  // < 0: not reached
     std::vector<ExitFlow> exits;

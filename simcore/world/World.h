@@ -129,6 +129,9 @@ public:
     // Agent i's goal as an index into goals(), or -1.
     std::int32_t goalIndex(std::size_t i) const { return m_agents.goal[i]; }
     const std::vector<Goal>& goals() const { return m_set.goals; }
+    // Agent i's path as an index into paths(), or -1; the paths as the World follows them.
+    std::int32_t pathIndex(std::size_t i) const { return m_agents.path[i]; }
+    const std::vector<Path>& paths() const { return m_set.paths; }
     const WorldNav& navigation() const { return m_nav; }
 
     // The current state as one frame for the cache.

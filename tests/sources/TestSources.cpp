@@ -512,6 +512,44 @@ private slots:
         qInfo("%d entries on time, %d waited for room", onTime, waited);
     }
 
+    // A path whose end is an exit: walkers from a source at its start follow it round its
+    // corner and leave at its end (out in the frames, counted in agents_out), instead of
+    // piling up there; a closed path cannot be an exit.
+    void anOpenPathsEndCanBeAnExit()
+    {
+        const std::string scene =
+            "throng: 1\nsettings: {fps: 24, seed: 3, duration: 60, bounds: {min: [-30, -30], max: [30, 30]}}\n"
+            "agent_types:\n  - {name: walker, max_speed: 1.3, behaviours: {path_following: 1, separation: 1}}\n"
+            "paths:\n  - {name: round, radius: 0.8, exit: true, points: [[-20, -20], [-20, 0], [0, 0]]}\n"
+            "sources:\n  - {name: in, type: walker, line: [[-20.5, -19], [-19.5, -19]], rate: 0.5, windows: [[0, 10]], "
+            "path: round}\n";
+        const Run r = record(scene, 60.0);
+        QCOMPARE(r.scene.paths[0].exit, true);
+        QVERIFY(sceneToYaml(r.scene).find("exit: true") != std::string::npos);
+        const std::size_t n = r.cache.agents().size();
+        QCOMPARE(n, std::size_t(5));
+        for (std::size_t i = 0; i < n; ++i) {
+            std::size_t outFrame = 0;
+            while (outFrame < r.cache.frameCount() && !r.cache.at(outFrame, i).out)
+                ++outFrame;
+            QVERIFY2(outFrame < r.cache.frameCount(), qPrintable(QString("agent %1 never left").arg(i)));
+            // It left within the path's radius of the end, after walking the corner.
+            const glm::vec3 at = r.cache.at(outFrame, i).position;
+            QVERIFY2(glm::distance(glm::vec2(at.x, at.z), glm::vec2(0.0f, 0.0f)) < 0.8f + 0.1f,
+                     qPrintable(QString("agent %1 left at (%2, %3)").arg(i).arg(at.x).arg(at.z)));
+        }
+        QCOMPARE(r.stats.nav.exitAgents, std::uint64_t(5));
+        QCOMPARE(r.stats.nav.agentsOut, std::uint64_t(5));
+        QCOMPARE(r.stats.inScene, std::uint64_t(0));
+        const LoadResult closed = parseScene(
+            "throng: 1\npaths:\n  - {name: loop, closed: true, exit: true, points: [[0, 0], [5, 0], [5, 5]]}\n",
+            "closed.yaml", "");
+        QVERIFY(!closed.ok());
+        QVERIFY2(closed.diagnostics[0].format().find("closed.yaml:3:") == 0 &&
+                     closed.diagnostics[0].format().find("no end to leave by") != std::string::npos,
+                 closed.diagnostics[0].format().c_str());
+    }
+
     // The CSV has rows for an agent only from the frame it came in until it left.
     void theCsvHasThemFromTheirEntry()
     {

@@ -37,7 +37,7 @@ void SceneReader::readPaths(const YAML::Node& node, Scene& scene)
         const YAML::Node item = node[i];
         if (!m_f.expectMap(item, key))
             continue;
-        m_f.checkKeys(item, key, {"name", "points", "radius", "closed", "plan", "clearance"});
+        m_f.checkKeys(item, key, {"name", "points", "radius", "closed", "plan", "clearance", "exit"});
         Path p;
         if (m_f.readName(item, "name", key, p.name, true))
             claimName(item, key, p.name, "path");
@@ -52,6 +52,8 @@ void SceneReader::readPaths(const YAML::Node& node, Scene& scene)
                 m_f.error(item["plan"].Mark(), key + ".plan", "must be none or astar, got '" + plan + "'");
         }
         m_f.readFloat(item, "clearance", key, p.clearanceM, false, Range::Positive);
+        if (m_f.readBool(item, "exit", key, p.exit, false) && p.exit && p.closed)
+            m_f.error(item["exit"].Mark(), key + ".exit", "a closed path has no end to leave by");
         scene.paths.push_back(std::move(p));
     }
 }
