@@ -3,6 +3,7 @@
 // takes a typed rate (a rate of 0 is refused), a goal, the arrivals and a cap, undo goes
 // back to the scene's bytes and redo forward, and a saved file keeps it. Renaming what a
 // source names follows into it, deleting it is refused, and the source moves and deletes.
+// The viewport draws a source's line in its colour and outlines it when selected.
 #include "EditorTestSupport.h"
 #include "EditorUiDriver.h"
 #include "TestRegistry.h"
@@ -10,6 +11,7 @@
 #include "editor/panels/OutlinerPanel.h"
 #include "editor/tools/SourceTool.h"
 #include "editor/viewport/Viewport.h"
+#include "editor/viewport/ViewportPalette.h"
 #include "simcore/io/SceneIO.h"
 
 #include <glm/geometric.hpp>
@@ -17,6 +19,7 @@
 #include <QAction>
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QImage>
 #include <QLabel>
 #include <QLineEdit>
 #include <QSpinBox>
@@ -47,6 +50,18 @@ paths:
 QString describeEnds(const sim::Source& s)
 {
     return QString("from (%1, %2) to (%3, %4)").arg(s.from.x).arg(s.from.y).arg(s.to.x).arg(s.to.y);
+}
+
+// Of the points of the line x = -10 from z = -2.5 to 2.5 (its middle, where the arrow
+// starts, left out), how many the viewport shows in `colour`.
+int sourceLinePixelsIn(MainWindow& window, glm::vec4 colour)
+{
+    const QImage shown = window.viewport().grabFramebuffer();
+    int hits = 0;
+    for (float z : {-2.5f, -1.5f, -1.0f, 1.0f, 1.5f, 2.5f})
+        hits += sameColour(pixelAt(shown, window.viewport(), window.viewport().worldToPixel({-10.0f, 0.0f, z})),
+                           colour, 40);
+    return hits;
 }
 
 }  // namespace
@@ -180,6 +195,13 @@ sources:
         QVERIFY(showWithYaml(window, m_dir, "refs.yaml", yaml));
         const sim::Scene& scene = window.document().scene();
         QCOMPARE(scene.sources.size(), std::size_t(2));
+
+        // Drawn in its own colour, and in the selection's once selected.
+        QTest::qWait(50);
+        QVERIFY2(sourceLinePixelsIn(window, palette::kSource) >= 5, "the source's line is drawn");
+        selectInOutliner(window, {{ItemKind::Source, 0}});
+        QTest::qWait(50);
+        QVERIFY2(sourceLinePixelsIn(window, palette::kSelection) >= 5, "the selected source is outlined");
 
         // The mix shows read only, without the single-type combo box.
         selectInOutliner(window, {{ItemKind::Source, 1}});
