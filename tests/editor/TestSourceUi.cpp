@@ -16,18 +16,24 @@
 
 #include <glm/geometric.hpp>
 
+#include <QAbstractButton>
 #include <QAction>
+#include <QApplication>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QImage>
 #include <QLabel>
 #include <QLineEdit>
+#include <QMessageBox>
 #include <QSpinBox>
 #include <QTest>
+#include <QTimer>
 #include <QUndoStack>
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <memory>
 
 using namespace throng;
 using namespace throng::editor;
@@ -62,6 +68,25 @@ int sourceLinePixelsIn(MainWindow& window, glm::vec4 colour)
         hits += sameColour(pixelAt(shown, window.viewport(), window.viewport().worldToPixel({-10.0f, 0.0f, z})),
                            colour, 40);
     return hits;
+}
+
+// Clicks `which` on the main window's offer of an agent type once it shows; `answered`
+// turns true then. Gives up after about 5 s.
+void answerTypeOfferForSource(QMessageBox::StandardButton which, bool& answered)
+{
+    auto* timer = new QTimer;
+    timer->setInterval(20);
+    auto tries = std::make_shared<int>(0);
+    QObject::connect(timer, &QTimer::timeout, timer, [timer, which, &answered, tries] {
+        auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+        if (box && box->objectName() == "createTypePrompt") {
+            QTest::mouseClick(box->button(which), Qt::LeftButton);
+            answered = true;
+        }
+        if (answered || ++*tries > 250)
+            timer->deleteLater();
+    });
+    timer->start();
 }
 
 }  // namespace
@@ -172,6 +197,37 @@ private slots:
         clickOnGround(window, {4, 5});
         QCOMPARE(scene.sources.size(), std::size_t(2));
         QCOMPARE(scene.sources[1].name, std::string("source_2"));
+    }
+
+    // Without an agent type there is nothing to let in: the tool draws nothing and the
+    // main window offers a type, as for the brushes; once there is one, a drag draws.
+    void withoutAgentTypesTheToolOffersOne()
+    {
+        MainWindow window;
+        const QByteArray yaml = "throng: 1\nsettings: {bounds: {min: [-20, -12], max: [20, 12]}}\n";
+        QVERIFY(showWithYaml(window, m_dir, "typeless.yaml", yaml));
+        const sim::Scene& scene = window.document().scene();
+        QVERIFY(scene.agentTypes.empty());
+        const QByteArray before = sceneYaml(window);
+        QVERIFY(clickToolButton(window, "source"));
+        bool answered = false;
+        answerTypeOfferForSource(QMessageBox::No, answered);
+        dragOnGround(window, {{-5, 0}, {5, 0}});
+        QTRY_VERIFY(answered);
+        QCOMPARE(sceneYaml(window), before);
+        window.activateWindow();  // the prompt had the focus
+        QVERIFY(QTest::qWaitForWindowActive(&window));
+        answered = false;
+        answerTypeOfferForSource(QMessageBox::Yes, answered);
+        clickOnGround(window, {0, 0});
+        QTRY_VERIFY(answered);
+        QCOMPARE(scene.agentTypes.size(), std::size_t(1));
+        QVERIFY(scene.sources.empty());
+        window.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&window));
+        dragOnGround(window, {{-5, 0}, {5, 0}});
+        QCOMPARE(scene.sources.size(), std::size_t(1));
+        QCOMPARE(scene.sources[0].types[0].type, scene.agentTypes[0].name);
     }
 
     void namesFollowDeletesAreRefusedAndTheSourceMovesAndGoes()
