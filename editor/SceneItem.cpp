@@ -40,6 +40,7 @@ std::size_t itemCount(const sim::Scene& s, ItemKind kind)
     case ItemKind::Crosswalk: return s.crosswalks.size();
     case ItemKind::Vehicle: return s.vehicles.size();
     case ItemKind::ActionPoint: return s.actionPoints.size();
+    case ItemKind::Source: return s.sources.size();
     }
     return 0;
 }
@@ -63,6 +64,7 @@ QString kindTitle(ItemKind kind)
     case ItemKind::Crosswalk: return tr("Crosswalks");
     case ItemKind::Vehicle: return tr("Vehicles");
     case ItemKind::ActionPoint: return tr("Action Points");
+    case ItemKind::Source: return tr("Sources");
     }
     return {};
 }
@@ -97,6 +99,7 @@ QString itemLabel(const sim::Scene& s, SceneItem item)
             .arg(i + 1)
             .arg(QString::fromStdString(s.vehicles[i].type), QString::fromStdString(s.vehicles[i].lane));
     case ItemKind::ActionPoint: return named(s.actionPoints, i, tr("Action point"));
+    case ItemKind::Source: return named(s.sources, i, tr("Source"));
     }
     return {};
 }
@@ -109,7 +112,8 @@ std::optional<SceneItem> itemForKey(const std::string& key)
         {"goals", ItemKind::Goal},             {"traffic_lights", ItemKind::TrafficLight},
         {"lanes", ItemKind::Lane},             {"heroes", ItemKind::Hero},    {"brains", ItemKind::Brain},
         {"flow_strokes", ItemKind::FlowStroke}, {"crosswalks", ItemKind::Crosswalk},
-        {"vehicles", ItemKind::Vehicle},       {"action_points", ItemKind::ActionPoint}};
+        {"vehicles", ItemKind::Vehicle},       {"action_points", ItemKind::ActionPoint},
+        {"sources", ItemKind::Source}};
     if (key.rfind("settings", 0) == 0)
         return SceneItem{ItemKind::Settings, 0};
     const std::size_t open = key.find('['), close = key.find(']');

@@ -32,6 +32,7 @@ constexpr ItemKind listKind()
     else if constexpr (std::is_same_v<Item, sim::BrainGraph>) return ItemKind::Brain;
     else if constexpr (std::is_same_v<Item, sim::Crosswalk>) return ItemKind::Crosswalk;
     else if constexpr (std::is_same_v<Item, sim::ActionPoint>) return ItemKind::ActionPoint;
+    else if constexpr (std::is_same_v<Item, sim::Source>) return ItemKind::Source;
     else {
         static_assert(std::is_same_v<Item, sim::Vehicle>, "not an item of a scene list");
         return ItemKind::Vehicle;

@@ -65,6 +65,7 @@ void DeleteItemsCommand::forEachList(Scene& s, F f)
     f(s.vehicles, m_vehicles, ItemKind::Vehicle);
     f(s.brains, m_brains, ItemKind::Brain);
     f(s.actionPoints, m_actionPoints, ItemKind::ActionPoint);
+    f(s.sources, m_sources, ItemKind::Source);
 }
 
 DeleteItemsCommand::DeleteItemsCommand(SceneDocument& document, const Selection& items) : m_document(document)
@@ -84,8 +85,8 @@ DeleteItemsCommand::DeleteItemsCommand(SceneDocument& document, const Selection&
 
 // The rules, item by item, for what others refer to:
 // - A path, goal, lane, crosswalk, brain or agent type still named by an item that stays (a group following
-//   the path, agents walking to the goal, vehicles or a stop line on the lane, anything of
-//   the type) is refused, naming who uses it: clearing the reference would silently change
+//   the path, agents or a source sending walkers to the goal, vehicles or a stop line on the lane,
+//   anything of the type) is refused, naming who uses it: clearing the reference would silently change
 //   what a whole group does far from the selection, and a vehicle or hero cannot live
 //   without its lane or type. Deleting the users in the same selection is fine.
 // - A deleted placed agent or hero that others follow (`leader`) is deleted, and the

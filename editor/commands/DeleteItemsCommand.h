@@ -1,9 +1,8 @@
 #pragma once
 // Deletes the selected items: placed agents, agent types, groups, paths, walls,
-// obstacles, goals, traffic lights, lanes, crosswalks, vehicles, flow strokes, heroes and
-// brains. Records each removed
-// item with its index (and every reference it changed), so undo puts the scene back bit
-// for bit. An item others still refer to by name is not deleted: refusal() says who uses
+// obstacles, goals, action points, sources, traffic lights, lanes, crosswalks, vehicles,
+// flow strokes, heroes and brains. Records each removed item with its index (and every
+// reference it changed), so undo puts the scene back bit for bit. An item others still refer to by name is not deleted: refusal() says who uses
 // it. Never touches widgets or the selection.
 
 #include "editor/SceneDocument.h"
@@ -61,6 +60,7 @@ private:
     Removed<sim::Hero> m_heroes;
     Removed<sim::Crosswalk> m_crosswalks;
     Removed<sim::ActionPoint> m_actionPoints;
+    Removed<sim::Source> m_sources;
     Removed<sim::Vehicle> m_vehicles;
     Removed<sim::BrainGraph> m_brains;
     // Leaders cleared because the agent, vehicle or hero they name is deleted, with the old id.

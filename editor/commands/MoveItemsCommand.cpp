@@ -35,6 +35,18 @@ void forEachPoint(Scene& s, SceneItem item, Visit visit)
     case ItemKind::Lane: for (auto& p : s.lanes[i].points) visit(p); return;
     case ItemKind::FlowStroke: for (auto& p : s.flowStrokes[i].points) visit(p); return;
     case ItemKind::Crosswalk: visit(s.crosswalks[i].from); visit(s.crosswalks[i].to); return;
+    case ItemKind::Source: {
+        // Only the shape's own points, as for a group: the other pair is not written.
+        auto& src = s.sources[i];
+        if (src.shape == sim::SourceShape::Line) {
+            visit(src.from);
+            visit(src.to);
+        } else {
+            visit(src.min);
+            visit(src.max);
+        }
+        return;
+    }
     case ItemKind::Group: {
         // Only the shape's own points: the others are not written and must not drift.
         auto& g = s.groups[i];
@@ -67,6 +79,7 @@ bool MoveItemsCommand::movable(ItemKind kind)
     case ItemKind::Lane:
     case ItemKind::FlowStroke:
     case ItemKind::Crosswalk:
+    case ItemKind::Source:
     case ItemKind::Group: return true;
     default: return false;
     }

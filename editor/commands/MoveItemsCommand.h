@@ -1,6 +1,6 @@
 #pragma once
-// Moves selected items (agents, obstacles, goals, lights, and whole paths, walls and
-// lanes) by one ground offset. Holds each item's original place and the offset moved so
+// Moves selected items (agents, obstacles, goals, lights, sources, and whole paths, walls
+// and lanes) by one ground offset. Holds each item's original place and the offset moved so
 // far, so the moves of one drag merge into one step and undo restores exactly.
 
 #include "editor/SceneItem.h"

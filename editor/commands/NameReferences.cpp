@@ -21,6 +21,7 @@ QString userName(const sim::Scene& scene, SceneItem user)
     case ItemKind::Group: return tr("group %1").arg(label);
     case ItemKind::Hero: return tr("hero %1").arg(label);
     case ItemKind::AgentType: return tr("agent type %1").arg(label);
+    case ItemKind::Source: return tr("source %1").arg(label);
     default: return label;
     }
 }
@@ -71,6 +72,16 @@ void collectActionPointTypes(std::vector<NameUse>& out, const sim::Scene& scene,
                                tr("action point %1").arg(itemLabel(scene, {ItemKind::ActionPoint, p}))});
 }
 
+// The sources whose mix of types holds `name`.
+void collectSourceTypes(std::vector<NameUse>& out, const sim::Scene& scene, const std::string& name)
+{
+    for (std::size_t p = 0; p < scene.sources.size(); ++p)
+        for (std::size_t k = 0; k < scene.sources[p].types.size(); ++k)
+            if (scene.sources[p].types[k].type == name)
+                out.push_back({[p, k](sim::Scene& s) -> std::string& { return s.sources[p].types[k].type; },
+                               SceneItem{ItemKind::Source, p}, userName(scene, {ItemKind::Source, p})});
+}
+
 }  // namespace
 
 bool hasName(ItemKind kind)
@@ -95,6 +106,7 @@ std::function<std::string&(sim::Scene&)> nameLocate(SceneItem item)
     case ItemKind::Brain: return [i](sim::Scene& s) -> std::string& { return s.brains[i].name; };
     case ItemKind::Crosswalk: return [i](sim::Scene& s) -> std::string& { return s.crosswalks[i].name; };
     case ItemKind::ActionPoint: return [i](sim::Scene& s) -> std::string& { return s.actionPoints[i].name; };
+    case ItemKind::Source: return [i](sim::Scene& s) -> std::string& { return s.sources[i].name; };
     default: return {};
     }
 }
@@ -130,6 +142,7 @@ std::vector<NameUse> nameUses(const sim::Scene& scene, ItemKind kind, const std:
                 [](sim::Scene& s, std::size_t i) -> std::string& { return s.heroes[i].type; });
         collectVehicles(out, scene, name, [](sim::Scene& s, std::size_t i) -> std::string& { return s.vehicles[i].type; });
         collectActionPointTypes(out, scene, name);
+        collectSourceTypes(out, scene, name);
         break;
     case ItemKind::Brain:
         collect(out, scene, scene.agentTypes.size(), name, ItemKind::AgentType,
@@ -142,12 +155,16 @@ std::vector<NameUse> nameUses(const sim::Scene& scene, ItemKind kind, const std:
                 [](sim::Scene& s, std::size_t i) -> std::string& { return s.groups[i].path; });
         collect(out, scene, scene.agents.size(), name, ItemKind::Agent,
                 [](sim::Scene& s, std::size_t i) -> std::string& { return s.agents[i].path; });
+        collect(out, scene, scene.sources.size(), name, ItemKind::Source,
+                [](sim::Scene& s, std::size_t i) -> std::string& { return s.sources[i].path; });
         break;
     case ItemKind::Goal:
         collect(out, scene, scene.groups.size(), name, ItemKind::Group,
                 [](sim::Scene& s, std::size_t i) -> std::string& { return s.groups[i].goal; });
         collect(out, scene, scene.agents.size(), name, ItemKind::Agent,
                 [](sim::Scene& s, std::size_t i) -> std::string& { return s.agents[i].goal; });
+        collect(out, scene, scene.sources.size(), name, ItemKind::Source,
+                [](sim::Scene& s, std::size_t i) -> std::string& { return s.sources[i].goal; });
         break;
     case ItemKind::Lane:
         collectVehicles(out, scene, name, [](sim::Scene& s, std::size_t i) -> std::string& { return s.vehicles[i].lane; });

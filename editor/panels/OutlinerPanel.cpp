@@ -21,10 +21,11 @@ constexpr int kAgentGroups = -100;            // kKindRole of the agent-group he
 constexpr std::uint32_t kShownFields = fieldBit(SceneField::Items) | fieldBit(SceneField::Name) |
                                        fieldBit(SceneField::Type) | fieldBit(SceneField::Group) |
                                        fieldBit(SceneField::Route) | fieldBit(SceneField::Shape);
-constexpr ItemKind kListed[] = {ItemKind::Settings,    ItemKind::AgentType,    ItemKind::Group,    ItemKind::Agent,
-                                ItemKind::Path,        ItemKind::Wall,         ItemKind::Obstacle, ItemKind::Goal,
-                                ItemKind::ActionPoint, ItemKind::TrafficLight, ItemKind::Lane,     ItemKind::Crosswalk,
-                                ItemKind::Vehicle,     ItemKind::FlowStroke,   ItemKind::Hero,     ItemKind::Brain};
+constexpr ItemKind kListed[] = {ItemKind::Settings,    ItemKind::AgentType, ItemKind::Group,        ItemKind::Agent,
+                                ItemKind::Path,        ItemKind::Wall,      ItemKind::Obstacle,     ItemKind::Goal,
+                                ItemKind::ActionPoint, ItemKind::Source,    ItemKind::TrafficLight, ItemKind::Lane,
+                                ItemKind::Crosswalk,   ItemKind::Vehicle,   ItemKind::FlowStroke,   ItemKind::Hero,
+                                ItemKind::Brain};
 }  // namespace
 
 OutlinerPanel::OutlinerPanel(SceneDocument& document, QWidget* parent) : QTreeWidget(parent), m_document(document)

@@ -57,6 +57,10 @@ SceneField propertyField(ItemKind kind, const QString& key)
         if (oneOf(name, {"radius", "faces", "facing"}))
             return SceneField::Shape;
         break;
+    case ItemKind::Source:
+        if (name == "shape")
+            return SceneField::Shape;
+        break;
     case ItemKind::Lane:
         if (oneOf(name, {"width", "loop"}))
             return SceneField::Shape;

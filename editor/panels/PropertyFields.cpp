@@ -68,6 +68,29 @@ Refusal trafficRangeEnd(glm::vec2 sim::TrafficSettings::*range, bool lower)
     return rangeEnd(ItemKind::Settings, [range](const sim::Scene& s, std::size_t) { return s.traffic.*range; }, lower);
 }
 
+// A source's corners along one axis (0 = x, 1 = z).
+Refusal sourceCornerEnd(int axis, bool lower)
+{
+    return rangeEnd(ItemKind::Source, [axis](const sim::Scene& s, std::size_t i) {
+        return glm::vec2(s.sources[i].min[axis], s.sources[i].max[axis]);
+    }, lower);
+}
+
+// Refuses a source's rate of 0 or less, and one that lets in more than the scene check
+// allows over the run when the source has no cap.
+Refusal sourceRateRefusal()
+{
+    return [](const sim::Scene& s, std::size_t i, float value) {
+        const QString item = itemLabel(s, {ItemKind::Source, i});
+        if (!(value > 0.0f))
+            return tr("%1: the rate must be above 0 agents a second; it stays as it is.").arg(item);
+        if (s.sources[i].cap == 0 && double(value) * double(s.settings.durationS) > 1e7)
+            return tr("%1: that rate lets in more than 10,000,000 agents over the run; set a cap first. It stays "
+                      "as it is.").arg(item);
+        return QString();
+    };
+}
+
 bool isFlier(const sim::Scene& s, std::size_t i)
 {
     return s.agentTypes[i].kind == sim::AgentKind::Flier;
@@ -199,6 +222,26 @@ std::vector<PropertyField> make(ItemKind kind)
                 {"toX", tr("To X (m)"), -1e5, 1e5, 0.1, 2, THRONG_FIELD(crosswalks, to.x), crosswalkEnd(true, 0)},
                 {"toZ", tr("To Z (m)"), -1e5, 1e5, 0.1, 2, THRONG_FIELD(crosswalks, to.y), crosswalkEnd(true, 1)},
                 {"width", tr("Width (m)"), 0.1, 50, 0.1, 2, THRONG_FIELD(crosswalks, widthM)}};
+    case ItemKind::Source: {
+        using Shape = sim::SourceShape;
+        const auto line = [](const sim::Scene& s, std::size_t i) { return s.sources[i].shape == Shape::Line; };
+        const auto rect = [](const sim::Scene& s, std::size_t i) { return s.sources[i].shape == Shape::Rect; };
+        const auto headed = [](const sim::Scene& s, std::size_t i) { return s.sources[i].headed; };
+        return {{"fromX", tr("From X (m)"), -1e5, 1e5, 0.1, 2, THRONG_FIELD(sources, from.x), {}, line},
+                {"fromZ", tr("From Z (m)"), -1e5, 1e5, 0.1, 2, THRONG_FIELD(sources, from.y), {}, line},
+                {"toX", tr("To X (m)"), -1e5, 1e5, 0.1, 2, THRONG_FIELD(sources, to.x), {}, line},
+                {"toZ", tr("To Z (m)"), -1e5, 1e5, 0.1, 2, THRONG_FIELD(sources, to.y), {}, line},
+                {"minX", tr("Min X (m)"), -1e5, 1e5, 0.5, 2, THRONG_FIELD(sources, min.x),
+                 sourceCornerEnd(0, true), rect},
+                {"minZ", tr("Min Z (m)"), -1e5, 1e5, 0.5, 2, THRONG_FIELD(sources, min.y),
+                 sourceCornerEnd(1, true), rect},
+                {"maxX", tr("Max X (m)"), -1e5, 1e5, 0.5, 2, THRONG_FIELD(sources, max.x),
+                 sourceCornerEnd(0, false), rect},
+                {"maxZ", tr("Max Z (m)"), -1e5, 1e5, 0.5, 2, THRONG_FIELD(sources, max.y),
+                 sourceCornerEnd(1, false), rect},
+                {"rate", tr("Rate (agents/s)"), 0, 1e5, 0.1, 3, THRONG_FIELD(sources, rate), sourceRateRefusal()},
+                {"heading", tr("Heading (deg)"), -360, 360, 5, 1, THRONG_FIELD(sources, headingDeg), {}, headed}};
+    }
     case ItemKind::Vehicle:
         return {{"at", tr("Start distance (m)"), 0, 1e5, 0.5, 2, THRONG_FIELD(vehicles, atM)},
                 {"speed", tr("Initial speed (m/s)"), 0, 100, 0.5, 2, THRONG_FIELD(vehicles, speed)}};

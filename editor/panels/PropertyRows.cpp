@@ -104,6 +104,7 @@ void addPropertyRows(PropertyForm& form)
     case ItemKind::AgentType: addAgentTypeRows(form); break;
     case ItemKind::Group: addGroupRows(form); break;
     case ItemKind::Crosswalk: addCrosswalkRows(form); break;
+    case ItemKind::Source: addSourceRows(form); break;
     case ItemKind::Vehicle: addVehicleRows(form); break;
     default: addSetRows(form); break;
     }

@@ -22,6 +22,7 @@ void addAgentTypeRows(PropertyForm& form);
 void addGroupRows(PropertyForm& form);
 void addSetRows(PropertyForm& form);  // paths, walls, obstacles, goals, lanes, lights, heroes, settings
 void addCrosswalkRows(PropertyForm& form);  // PropertyRowsTraffic.cpp
+void addSourceRows(PropertyForm& form);     // PropertyRowsSource.cpp
 void addVehicleRows(PropertyForm& form);
 // PropertyRowsAgent.cpp: the leader (an agent id, "(none)" = 0; `agents`: the selection
 // is placed agents, which may not lead themselves), and an agent's look, tint and height.

@@ -99,6 +99,15 @@ std::optional<SelectTool::Hit> SelectTool::pick(QPointF pixel) const
                 bestPx = hit->distancePx;
                 best = Hit{{kind, i}};
             }
+    // A source is picked anywhere on its line or its rectangle's edge.
+    for (std::size_t i = 0; i < s.sources.size(); ++i) {
+        const std::vector<glm::vec2> outline = sourceOutline(s.sources[i]);
+        for (std::size_t k = 1; k < outline.size(); ++k)
+            if (const double d = segmentDistancePx(pixel, pixelOf(outline[k - 1]), pixelOf(outline[k])); d < bestPx) {
+                bestPx = d;
+                best = Hit{{ItemKind::Source, i}};
+            }
+    }
     return best;
 }
 
@@ -290,6 +299,11 @@ void SelectTool::finishBox(Qt::KeyboardModifiers modifiers)
                                                  [&](glm::vec2 p) { return box.contains(pixelOf(p)); }))
                     add({kind, i});
             }
+        for (std::size_t i = 0; i < s.sources.size(); ++i) {
+            const std::vector<glm::vec2> outline = sourceOutline(s.sources[i]);
+            if (std::all_of(outline.begin(), outline.end(), [&](glm::vec2 p) { return box.contains(pixelOf(p)); }))
+                add({ItemKind::Source, i});
+        }
     }
     document().setSelection(selection);
 }

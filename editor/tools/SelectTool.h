@@ -1,6 +1,6 @@
 #pragma once
 // Select and move: a click picks the agent, obstacle, goal, light, path (its closing
-// segment too), wall, lane or flow stroke under the mouse (Shift adds); a drag from empty
+// segment too), wall, lane, flow stroke or source under the mouse (Shift adds); a drag from empty
 // ground selects everything inside the box; dragging a selected item moves the whole
 // selection; a single selected line shows handles: drag a point to reshape it, a path's
 // radius handle to widen it, double-click a segment to insert a point. Agents and

@@ -34,6 +34,10 @@ std::optional<glm::vec2> itemAnchor(const sim::Scene& s, SceneItem item)
     case ItemKind::ActionPoint: return s.actionPoints[item.index].position;
     case ItemKind::TrafficLight: return s.trafficLights[item.index].position;
     case ItemKind::Crosswalk: return 0.5f * (s.crosswalks[item.index].from + s.crosswalks[item.index].to);
+    case ItemKind::Source: {
+        const sim::Source& src = s.sources[item.index];
+        return src.shape == sim::SourceShape::Line ? 0.5f * (src.from + src.to) : 0.5f * (src.min + src.max);
+    }
     case ItemKind::Vehicle: return vehicleStart(s, s.vehicles[item.index]);
     default: return std::nullopt;
     }
@@ -82,6 +86,14 @@ std::span<const glm::vec2> itemPolyline(const sim::Scene& s, SceneItem item)
     case ItemKind::FlowStroke: return s.flowStrokes[item.index].points;
     default: return {};
     }
+}
+
+std::vector<glm::vec2> sourceOutline(const sim::Source& source)
+{
+    if (source.shape == sim::SourceShape::Line)
+        return {source.from, source.to};
+    const glm::vec2 lo = source.min, hi = source.max;
+    return {lo, {hi.x, lo.y}, hi, {lo.x, hi.y}, lo};
 }
 
 std::vector<EditHandle> editHandles(const sim::Scene& scene, const Selection& selection)

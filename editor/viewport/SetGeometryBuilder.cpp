@@ -78,6 +78,7 @@ void SetGeometryBuilder::addSet(const sim::Scene& scene, ShapeMesh& mesh)
     addSpawnAreas(scene.groups, mesh);
     addGoals(scene.goals, mesh);
     addActionPoints(scene.actionPoints, mesh);
+    addSources(scene, mesh);
     addObstacles(scene.obstacles, mesh);
     addWalls(scene.walls, mesh);
 }
@@ -229,6 +230,44 @@ void SetGeometryBuilder::addActionPoints(std::span<const sim::ActionPoint> point
         mesh.addLine(p.position, tip, kThinHalfWidthM, palette::kActionPoint);
         mesh.addLine(tip - head * (dir - side), tip, kThinHalfWidthM, palette::kActionPoint);
         mesh.addLine(tip - head * (dir + side), tip, kThinHalfWidthM, palette::kActionPoint);
+    }
+}
+
+void SetGeometryBuilder::addSources(const sim::Scene& scene, ShapeMesh& mesh)
+{
+    constexpr float kLineHalfWidthM = 0.08f, kArrowM = 1.2f;
+    for (const sim::Source& src : scene.sources) {
+        glm::vec2 middle(0.0f), across(1.0f, 0.0f);
+        if (src.shape == sim::SourceShape::Line) {
+            mesh.addLine(src.from, src.to, kLineHalfWidthM, palette::kSource);
+            for (glm::vec2 end : {src.from, src.to})
+                mesh.addRing(end, 0.15f, kThinHalfWidthM, palette::kSource);
+            middle = 0.5f * (src.from + src.to);
+            const glm::vec2 d = src.to - src.from;
+            if (glm::length(d) > 0.0f)
+                across = glm::normalize(glm::vec2(d.y, -d.x));
+        } else {
+            const std::array<glm::vec2, 4> box{src.min, glm::vec2(src.max.x, src.min.y), src.max,
+                                               glm::vec2(src.min.x, src.max.y)};
+            mesh.addPolyline(box, true, kLineHalfWidthM, palette::kSource);
+            middle = 0.5f * (src.min + src.max);
+        }
+        // Which way the arrow points: where the arrivals face, or where they walk.
+        glm::vec2 dir = across;
+        const sim::Goal* goal = scene.findGoal(src.goal);
+        const sim::Path* path = scene.findPath(src.path);
+        if (src.headed) {
+            const float a = src.headingDeg * std::numbers::pi_v<float> / 180.0f;
+            dir = glm::vec2(std::cos(a), -std::sin(a));
+        } else if (goal && glm::length(goal->position - middle) > 0.0f) {
+            dir = glm::normalize(goal->position - middle);
+        } else if (path && !path->points.empty() && glm::length(path->points.front() - middle) > 0.0f) {
+            dir = glm::normalize(path->points.front() - middle);
+        }
+        const glm::vec2 side(-dir.y, dir.x), tip = middle + kArrowM * dir;
+        mesh.addLine(middle, tip, kThinHalfWidthM, palette::kSource);
+        mesh.addLine(tip - 0.4f * (dir - side), tip, kThinHalfWidthM, palette::kSource);
+        mesh.addLine(tip - 0.4f * (dir + side), tip, kThinHalfWidthM, palette::kSource);
     }
 }
 

@@ -1,6 +1,7 @@
 #pragma once
-// Turns the set of a scene (bounds, lanes, crosswalks, paths, goals, obstacles, walls,
-// spawn areas, flow strokes and their field, hero ways, traffic lights) into ShapeMesh triangles in draw order.
+// Turns the set of a scene (bounds, lanes, crosswalks, paths, goals, action points, sources,
+// obstacles, walls, spawn areas, flow strokes and their field, hero ways, traffic lights)
+// into ShapeMesh triangles in draw order.
 // Reads plain scene data only; never touches GL or the simulation.
 
 #include "editor/viewport/ShapeMesh.h"
@@ -33,6 +34,9 @@ private:
     static void addGoals(std::span<const sim::Goal> goals, ShapeMesh& mesh);
     // A ring, a dot at the centre, and an arrow to the facing where the point sets one.
     static void addActionPoints(std::span<const sim::ActionPoint> points, ShapeMesh& mesh);
+    // A source's line or rectangle, with an arrow from its middle the way its agents head
+    // off: its heading, else toward its goal or its path's first point, else square to the line.
+    static void addSources(const sim::Scene& scene, ShapeMesh& mesh);
     static void addObstacles(std::span<const sim::Obstacle> obstacles, ShapeMesh& mesh);
     static void addWalls(std::span<const sim::Wall> walls, ShapeMesh& mesh);
     static void addChevrons(std::span<const glm::vec2> points, bool closed, float sizeM, glm::vec4 colour,

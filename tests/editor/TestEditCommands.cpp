@@ -155,6 +155,43 @@ private slots:
         stack->redo();
         QVERIFY(doc.scene().groups[0].points == moved);
     }
+
+    // A source moves by its own points: a line by its ends, a rectangle by its corners
+    // (the unused pair stays put); the moves of one drag merge into one step.
+    void movingSourcesMovesTheirOwnPoints()
+    {
+        SceneDocument doc;
+        sim::Source line;
+        line.name = "gate";
+        line.types = {{"walker", 1.0f}};
+        line.from = {0, 0};
+        line.to = {0, 4};
+        sim::Source box = line;
+        box.name = "platform";
+        box.shape = sim::SourceShape::Rect;
+        box.min = {5, 5};
+        box.max = {8, 6};
+        QUndoStack* stack = doc.undoStack();
+        stack->push(new AddSceneItemCommand<sim::Source>(doc, &sim::Scene::sources, line, "Add source"));
+        stack->push(new AddSceneItemCommand<sim::Source>(doc, &sim::Scene::sources, box, "Add source"));
+        QVERIFY(MoveItemsCommand::movable(ItemKind::Source));
+        const Selection both{{ItemKind::Source, 0}, {ItemKind::Source, 1}};
+        stack->push(new MoveItemsCommand(doc, both, {1, 0}, 3));
+        stack->push(new MoveItemsCommand(doc, both, {1, 2}, 3));
+        QCOMPARE(stack->count(), 3);
+        const sim::Scene& s = doc.scene();
+        QCOMPARE(s.sources[0].from, glm::vec2(2, 2));
+        QCOMPARE(s.sources[0].to, glm::vec2(2, 6));
+        QCOMPARE(s.sources[0].min, glm::vec2(0.0f));
+        QCOMPARE(s.sources[1].min, glm::vec2(7, 7));
+        QCOMPARE(s.sources[1].max, glm::vec2(10, 8));
+        QCOMPARE(s.sources[1].from, glm::vec2(0, 0));
+        stack->undo();
+        QVERIFY(s.sources[0] == line);
+        QVERIFY(s.sources[1] == box);
+        stack->redo();
+        QCOMPARE(s.sources[1].max, glm::vec2(10, 8));
+    }
 };
 
 THRONG_REGISTER_TEST(TestEditCommands)
