@@ -56,16 +56,16 @@ std::string readText(const std::string& path)
     return s.str();
 }
 
-struct Source {
+struct FuzzFile {
     std::string path;     // the original, for the message
     std::string baseDir;  // where its relative references resolve
     std::string text;
     bool brain = false;   // a .brain.yaml, run inside hostScene()
 };
 
-std::vector<Source> sources()
+std::vector<FuzzFile> fuzzFiles()
 {
-    std::vector<Source> out;
+    std::vector<FuzzFile> out;
     const std::string root = THRONG_SOURCE_DIR;
     for (const char* dir : {"/resources/scenes", "/resources/brains", "/tests/data/scenes"})
         for (const auto& e : std::filesystem::directory_iterator(root + dir)) {
@@ -74,7 +74,7 @@ std::vector<Source> sources()
                 continue;
             out.push_back({p, e.path().parent_path().string(), readText(p), p.ends_with(".brain.yaml")});
         }
-    std::sort(out.begin(), out.end(), [](const Source& a, const Source& b) { return a.path < b.path; });
+    std::sort(out.begin(), out.end(), [](const FuzzFile& a, const FuzzFile& b) { return a.path < b.path; });
     return out;
 }
 
@@ -113,7 +113,7 @@ std::string nonFinite(const std::vector<sim::AgentFrame>& frame, int f)
 }
 
 // Loads, checks and (when accepted) steps one mutant; empty when all is well.
-std::string runMutant(const Source& src, const Mutant& m, const std::string& scratch, bool verbose)
+std::string runMutant(const FuzzFile& src, const Mutant& m, const std::string& scratch, bool verbose)
 {
     sim::LoadResult r;
     if (src.brain) {
@@ -199,7 +199,7 @@ private slots:
 
     void mutantsNeverCrashHangOrPoisonARun()
     {
-        const std::vector<Source> files = sources();
+        const std::vector<FuzzFile> files = fuzzFiles();
         QVERIFY(files.size() >= 8);
         const char* seedEnv = std::getenv("THRONG_FUZZ_SEED");
         const char* countEnv = std::getenv("THRONG_FUZZ_MUTANTS");
@@ -207,7 +207,7 @@ private slots:
         const std::uint64_t seed = seedEnv ? std::strtoull(seedEnv, nullptr, 10) : 1;
         const std::size_t count = countEnv ? std::strtoull(countEnv, nullptr, 10) : kDefaultMutants;
         const std::string scratch = QDir::tempPath().toStdString();
-        const auto source = [&](std::size_t i) -> const Source& { return files[i % files.size()]; };
+        const auto source = [&](std::size_t i) -> const FuzzFile& { return files[i % files.size()]; };
         if (onlyEnv) {
             const std::size_t i = std::strtoull(onlyEnv, nullptr, 10);
             const Mutant m = mutateText(source(i).text, seed, i);
