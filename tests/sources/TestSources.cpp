@@ -139,6 +139,9 @@ private slots:
         QTest::newRow("no place") << "  - {name: a, type: walker, rate: 1, goal: door}\n" << "where agents enter";
         QTest::newRow("three points") << "  - {name: a, type: walker, line: [[0, 0], [0, 1], [1, 1]], rate: 1}\n"
                                       << "two points";
+        QTest::newRow("rect backwards")
+            << "  - {name: a, type: walker, rect: {min: [5, 0], max: [0, 5]}, rate: 1, goal: door}\n"
+            << "min must not exceed max";
         QTest::newRow("no rate") << "  - {name: a, type: walker, line: [[0, 0], [0, 1]], goal: door}\n" << "rate";
         QTest::newRow("negative rate") << "  - {name: a, type: walker, line: [[0, 0], [0, 1]], rate: -1}\n"
                                        << "rate";

@@ -479,6 +479,14 @@ void SceneReader::readGroups(const YAML::Node& node, Scene& scene)
     }
 }
 
+void SceneReader::readRect(const YAML::Node& rect, const std::string& key, glm::vec2& min, glm::vec2& max)
+{
+    m_f.checkKeys(rect, key, {"min", "max"});
+    if (m_f.readVec2(rect, "min", key, min, true) && m_f.readVec2(rect, "max", key, max, true) &&
+        (min.x > max.x || min.y > max.y))
+        m_f.error(rect.Mark(), key, "min must not exceed max");
+}
+
 void SceneReader::readGroupArea(const YAML::Node& item, const std::string& key, SpawnGroup& g)
 {
     const YAML::Node rect = item["rect"], circle = item["circle"], shape = item["shape"], points = item["points"];
@@ -487,10 +495,7 @@ void SceneReader::readGroupArea(const YAML::Node& item, const std::string& key, 
         m_f.error(item.Mark(), key, "give exactly one spawn area: 'rect', 'circle' or 'shape: polygon' with 'points'");
     } else if (rect.IsDefined() && m_f.expectMap(rect, key + ".rect")) {
         g.shape = AreaShape::Rect;
-        m_f.checkKeys(rect, key + ".rect", {"min", "max"});
-        if (m_f.readVec2(rect, "min", key + ".rect", g.min, true) &&
-            m_f.readVec2(rect, "max", key + ".rect", g.max, true) && (g.min.x > g.max.x || g.min.y > g.max.y))
-            m_f.error(rect.Mark(), key + ".rect", "min must not exceed max");
+        readRect(rect, key + ".rect", g.min, g.max);
     } else if (circle.IsDefined() && m_f.expectMap(circle, key + ".circle")) {
         g.shape = AreaShape::Circle;
         m_f.checkKeys(circle, key + ".circle", {"center", "radius"});

@@ -36,6 +36,8 @@ private:
     void readAgentVariation(const YAML::Node& item, const std::string& key, const Scene& scene, Agent& a);
     void readGroups(const YAML::Node& node, Scene& scene);
     // The spawn area of group `item`: exactly one of rect, circle and shape: polygon.
+    // `{min: [x, z], max: [x, z]}` at `key` (a map already), min not above max.
+    void readRect(const YAML::Node& rect, const std::string& key, glm::vec2& min, glm::vec2& max);
     void readGroupArea(const YAML::Node& item, const std::string& key, SpawnGroup& g);
     void readGroupPolygon(const YAML::Node& item, const std::string& key, SpawnGroup& g);
     void readPaths(const YAML::Node& node, Scene& scene);

@@ -112,11 +112,7 @@ void SceneReader::readSourcePlace(const YAML::Node& item, const std::string& key
     if (!m_f.expectMap(rect, key + ".rect"))
         return;
     s.shape = SourceShape::Rect;
-    m_f.checkKeys(rect, key + ".rect", {"min", "max"});
-    const bool read = m_f.readVec2(rect, "min", key + ".rect", s.min, true) &&
-                      m_f.readVec2(rect, "max", key + ".rect", s.max, true);
-    if (read && (s.min.x > s.max.x || s.min.y > s.max.y))
-        m_f.error(rect.Mark(), key + ".rect", "min must not exceed max");
+    readRect(rect, key + ".rect", s.min, s.max);
 }
 
 // `windows: [[start, end], ...]` in seconds, in order, each start before its end.
