@@ -1,6 +1,7 @@
 #include "editor/viewport/FieldArrows.h"
 
 #include "simcore/nav/NavDefaults.h"
+#include "simcore/nav/NavPassages.h"
 #include "simcore/nav/NavShapes.h"
 #include "simcore/traffic/WalkerBarriers.h"
 
@@ -83,8 +84,10 @@ bool FieldArrows::setScene(const sim::Scene& scene)
     m_inflateM = inflate;
     m_built = true;
 
-    m_grid.build(walkerShapes(m_parts), m_parts.settings.boundsMin, m_parts.settings.boundsMax,
+    const sim::NavShapes shapes = walkerShapes(m_parts);
+    m_grid.build(shapes, m_parts.settings.boundsMin, m_parts.settings.boundsMax,
                  sim::NavGridParams{m_parts.settings.navCellM, m_inflateM});
+    sim::openNarrowPassages(m_grid, shapes, m_inflateM - sim::kNavClearanceM, m_inflateM);
     m_sketch.reset();
     m_sketchError.clear();
     if (!m_parts.flowStrokes.empty()) {

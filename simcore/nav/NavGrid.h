@@ -1,6 +1,7 @@
 #pragma once
-// A walkable/blocked grid over the scene bounds: walls and obstacles inflated by an agent
-// radius and rasterised conservatively (a cell that any inflated shape touches is blocked).
+// A walkable/blocked grid over the scene bounds: a cell is blocked when a wall or obstacle
+// comes within an agent radius of its centre, or within 0.75 of a cell (so every cell a
+// shape touches is blocked, and walls stay watertight however coarse the cells).
 // Answers cell queries in O(1); never plans and never moves agents.
 
 #include "simcore/nav/NavShapes.h"
@@ -28,8 +29,8 @@ public:
     // An all-walkable grid of cols x rows cells whose cell (0, 0) starts at origin.
     NavGrid(int cols, int rows, glm::vec2 origin, float cellM);
 
-    // Covers scene.settings bounds; blocks every cell whose closed square lies within
-    // agentRadiusM of a wall segment, circle or box (inside counts).
+    // Covers scene.settings bounds; blocks every cell whose centre lies within agentRadiusM
+    // (or 0.75 of a cell, whichever is more) of a wall segment, circle or box (inside counts).
     void build(const Scene& scene, const NavGridParams& params);
     void build(const NavShapes& shapes, glm::vec2 boundsMin, glm::vec2 boundsMax, const NavGridParams& params);
 

@@ -52,9 +52,12 @@ PlannedPath planOnGrid(const NavGrid& grid, const Path& path)
 
 NavGrid gridFor(const Scene& scene, const NavShapes& shapes, float clearanceM)
 {
+    // The grid blocks a cell by its centre; a planned path keeps its clearance from every
+    // point of the cells it crosses, so the shapes are inflated by half a cell's diagonal more.
     NavGrid grid;
+    const float cellM = scene.settings.navCellM;
     grid.build(shapes, scene.settings.boundsMin, scene.settings.boundsMax,
-               NavGridParams{scene.settings.navCellM, clearanceM});
+               NavGridParams{cellM, clearanceM + 0.70711f * cellM});
     return grid;
 }
 

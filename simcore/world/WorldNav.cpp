@@ -9,6 +9,7 @@
 #include "simcore/world/StepView.h"
 
 #include "simcore/nav/NavDefaults.h"
+#include "simcore/nav/NavPassages.h"
 #include "simcore/traffic/LightPhase.h"
 #include "simcore/base/Rng.h"
 #include "simcore/world/detail/StepGeometry.h"
@@ -81,8 +82,11 @@ void WorldNav::build(const Scene& scene, const StepView& v)
     // all three), so a plan never leads onto a lane except over a crosswalk.
     NavShapes shapes = navShapes(scene);
     shapes.walls = v.set.walls.segments();
+    const float inflateM = active ? inflate : kNavDefaultRadiusM + kNavClearanceM;
     grid.build(shapes, scene.settings.boundsMin, scene.settings.boundsMax,
-               NavGridParams{scene.settings.navCellM, active ? inflate : kNavDefaultRadiusM + kNavClearanceM});
+               NavGridParams{scene.settings.navCellM, inflateM});
+    // A passage the largest body fits through stays open, though narrower than the clearance asks.
+    openNarrowPassages(grid, shapes, inflateM - kNavClearanceM, inflateM);
     // Flow strokes become a sketched field (Jin et al. 2008) that flow_field_following
     // reads; should the solve fail, the World keeps the plain lookup along the strokes.
     if (!scene.flowStrokes.empty()) {

@@ -156,6 +156,9 @@ private slots:
     void partsBuildWhatTheWholeSceneBuilds()
     {
         sim::Scene scene = strokeScene();
+        // The wall 0.6 m from the centres of the cells north of it (z 2.5 to 3): within the
+        // wide walker's margin (0.5 + 0.15 m), beyond the default walker's (0.3 + 0.15 m).
+        scene.walls[0].points = {{-4.0f, 2.15f}, {4.0f, 2.15f}};
         sim::AgentType wide;
         wide.name = "wide";
         wide.radiusM = 0.5f;
@@ -202,11 +205,13 @@ private slots:
 
         const sim::NavCell inMargin = fields.grid().cellOf({0.0f, 2.0f});
         QVERIFY(!fields.grid().walkable(inMargin));
-        scene.walls[0].points = {{-4.0f, 6.0f}, {4.0f, 6.0f}};
+        scene.walls[0].points = {{-4.0f, 5.85f}, {4.0f, 5.85f}};
         QVERIFY(fields.setScene(scene));
         QVERIFY(fields.grid().walkable(inMargin));
 
-        // A walker that navigates by a flow field widens every wall's margin.
+        // A walker that navigates by a flow field widens every wall's margin: the cell whose
+        // centre lies 0.6 m from the wall is in the wide walker's (0.5 + 0.15 m), not in the
+        // default walker's (0.3 + 0.15 m).
         const sim::NavCell nextToMargin = fields.grid().cellOf({0.0f, 5.4f});
         QVERIFY(fields.grid().walkable(nextToMargin));
         scene.agentTypes.back().navigation = sim::Navigation::FlowField;

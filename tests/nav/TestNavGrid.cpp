@@ -1,14 +1,18 @@
-// The navigation grid blocks every cell an inflated wall or obstacle touches and no cell
-// far from one; cell queries agree with brute force; edits change the generation.
+// The navigation grid blocks every cell whose centre an inflated wall or obstacle reaches
+// and every cell a shape passes through, and no other; a door or passage the body fits
+// through stays open; cell queries agree with brute force; edits change the generation.
 #include "TestRegistry.h"
 #include "NavTestMaps.h"
 
+#include "simcore/nav/FlowField.h"
 #include "simcore/nav/NavGrid.h"
+#include "simcore/nav/NavPassages.h"
 
 #include <glm/geometric.hpp>
 
 #include <QTest>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -59,7 +63,7 @@ Scene randomShapes(std::mt19937& gen)
 class TestNavGrid : public QObject {
     Q_OBJECT
 private slots:
-    void rasterisationIsConservativeAndTight_data()
+    void rasterisationIsByCentreAndWatertight_data()
     {
         QTest::addColumn<float>("cellM");
         QTest::addColumn<float>("radiusM");
@@ -69,10 +73,14 @@ private slots:
         QTest::newRow("no inflation") << 0.5f << 0.0f;
     }
 
-    void rasterisationIsConservativeAndTight()
+    // A cell is blocked exactly when a shape comes within the radius of its centre, or
+    // within 0.75 of a cell; so no shape passes through a walkable cell (5 x 5 samples,
+    // edges included, all clear of every shape), however coarse the cells.
+    void rasterisationIsByCentreAndWatertight()
     {
         QFETCH(float, cellM);
         QFETCH(float, radiusM);
+        const float reach = std::max(radiusM, 0.75f * cellM);
         std::mt19937 gen(3);
         for (int map = 0; map < 4; ++map) {
             const Scene scene = randomShapes(gen);
@@ -84,24 +92,101 @@ private slots:
             for (int z = 0; z < grid.rows(); ++z)
                 for (int x = 0; x < grid.cols(); ++x) {
                     const glm::vec2 c = grid.centre({x, z});
+                    const float atCentre = clearance(shapes, c);
                     if (!grid.walkable({x, z})) {
                         ++blocked;
-                        // Tight: a blocked cell holds a point within the inflated shapes.
-                        QVERIFY2(clearance(shapes, c) <= radiusM + cellM * 0.7072f, "a cell far from every shape is blocked");
+                        QVERIFY2(atCentre <= reach + 1e-4f, "a cell whose centre is clear of every shape is blocked");
                         continue;
                     }
-                    // Conservative: no point of a walkable cell (5 x 5 samples, edges included)
-                    // comes within the agent radius of a shape.
+                    QVERIFY2(atCentre > reach - 1e-4f, "a walkable cell's centre is within reach of a shape");
                     for (int j = 0; j <= 4; ++j)
                         for (int i = 0; i <= 4; ++i) {
                             const glm::vec2 p = c + (glm::vec2(float(i), float(j)) / 4.0f - 0.5f) * cellM;
-                            if (clearance(shapes, p) <= radiusM)
-                                QFAIL(qPrintable(QString("walkable cell (%1, %2) has a point %3 m from a shape, radius %4")
-                                                     .arg(x).arg(z).arg(clearance(shapes, p)).arg(radiusM)));
+                            if (clearance(shapes, p) <= 0.0f)
+                                QFAIL(qPrintable(QString("a shape passes through walkable cell (%1, %2)").arg(x).arg(z)));
                         }
                 }
             QVERIFY2(blocked > 0 && blocked < grid.cellCount(), "the random map must block some cells and leave others");
         }
+    }
+
+    // A 1 m door in a wall, for walkers of 0.2 m and 0.15 m of clearance (0.35 m), on cells
+    // of 0.25 m: wherever the posts fall on the grid, a row of cells stays open through the
+    // doorway. (Measured from each cell's square instead, the door closed when its posts lay
+    // on cell edges, and the walkers in rooms behind such doors stood there for good.)
+    void aDoorStaysOpenWhereverItsPostsFall()
+    {
+        for (const float shift : {0.0f, 0.05f, 0.1f, 0.125f, 0.2f}) {
+            Scene scene;
+            scene.settings.boundsMin = {-5.0f, -5.0f};
+            scene.settings.boundsMax = {5.0f, 5.0f};
+            scene.walls.push_back({"west", {{-5.0f, 0.0f}, {shift, 0.0f}}});
+            scene.walls.push_back({"east", {{shift + 1.0f, 0.0f}, {5.0f, 0.0f}}});
+            NavGrid grid;
+            grid.build(scene, {0.25f, 0.35f});
+            int open = 0;
+            for (int x = 0; x < grid.cols(); ++x)
+                open += grid.walkable(grid.cellOf({grid.centre({x, 0}).x, 0.01f})) ? 1 : 0;
+            QVERIFY2(open >= 1, qPrintable(QString("the door is closed with its posts shifted %1 m").arg(shift)));
+        }
+    }
+
+    // A passage 0.78 m wide and 2 m long off a room, for walkers of 0.2 m and 0.15 m of
+    // clearance: the clearance closes it (every cell across it lies within 0.35 m of a
+    // side), though the body fits. openNarrowPassages opens the cells between its sides
+    // that the body alone fits in, so a field from beyond it reaches the room; a wall with
+    // nothing across it keeps its clearance, and a box obstacle's inside stays closed.
+    void aPassageTheBodyFitsStaysOpen_data()
+    {
+        QTest::addColumn<float>("cellM");
+        QTest::newRow("0.1 m cells") << 0.1f;
+        QTest::newRow("0.2 m cells") << 0.2f;
+        QTest::newRow("0.25 m cells") << 0.25f;
+    }
+
+    void aPassageTheBodyFitsStaysOpen()
+    {
+        QFETCH(float, cellM);
+        Scene scene;
+        scene.settings.boundsMin = {-2.0f, -8.0f};
+        scene.settings.boundsMax = {20.0f, 8.0f};
+        scene.walls.push_back({"room", {{12.0f, -0.39f}, {10.0f, -0.39f}, {10.0f, -5.0f}, {0.0f, -5.0f},
+                                        {0.0f, 5.0f}, {10.0f, 5.0f}, {10.0f, 0.39f}, {12.0f, 0.39f}}});
+        // A thin box in the open (0.6 m thick): its inside must not count as a passage.
+        scene.obstacles.push_back({"slab", ObstacleShape::Box, {16.0f, 4.0f}, 0.5f, {4.0f, 0.6f}, 0.0f});
+        const NavShapes shapes = navShapes(scene);
+        const float body = 0.2f, inflate = 0.35f;
+        NavGrid grid;
+        grid.build(shapes, scene.settings.boundsMin, scene.settings.boundsMax, {cellM, inflate});
+        const NavCell inRoom = grid.cellOf({5.0f, 0.0f}), inPassage = grid.cellOf({11.0f, 0.0f});
+        const FlowGoal beyond{{17.0f, 0.0f}, 1.0f};
+        FlowField closed;
+        closed.build(grid, std::span<const FlowGoal>(&beyond, 1));
+        QVERIFY2(!closed.reachable(inRoom), "the clearance did not close the passage: the test shows nothing");
+
+        const std::size_t opened = openNarrowPassages(grid, shapes, body, inflate);
+        QVERIFY(opened > 0);
+        FlowField field;
+        field.build(grid, std::span<const FlowGoal>(&beyond, 1));
+        QVERIFY2(field.reachable(inRoom), "the room does not reach beyond the passage");
+        QVERIFY(!grid.walkable(inPassage) || field.reachable(inPassage));
+        const float bodyReach = std::max(body, 0.75f * cellM);
+        for (int z = 0; z < grid.rows(); ++z)
+            for (int x = 0; x < grid.cols(); ++x) {
+                const glm::vec2 c = grid.centre({x, z});
+                if (!grid.walkable({x, z}))
+                    continue;
+                // Every walkable cell: the body fits at its centre.
+                QVERIFY2(clearance(shapes, c) > bodyReach - 1e-4f,
+                         qPrintable(QString("cell (%1, %2) opened within a body of a shape").arg(x).arg(z)));
+                // Away from the passage and its mouth (more than the inflation and a cell from
+                // its rectangle), the clearance is kept: along single walls, in the room's
+                // corners, round and inside the slab.
+                const glm::vec2 out = glm::max(glm::abs(c - glm::vec2(11.0f, 0.0f)) - glm::vec2(1.0f, 0.39f), 0.0f);
+                if (glm::length(out) > inflate + cellM)
+                    QVERIFY2(clearance(shapes, c) > inflate - 1e-4f,
+                             qPrintable(QString("cell (%1, %2) outside the passage lost its clearance").arg(x).arg(z)));
+            }
     }
 
     void cellQueriesMatchBruteForce()

@@ -67,8 +67,8 @@ private slots:
 
     void aWalkerInAPillarsMarginGoesOnNotBack()
     {
-        // A pillar's margin on the navigation grid (cells within the body's radius and
-        // 0.15 m of it) is wider than the pillar: a walker on the field's diagonal cuts a
+        // A pillar's margin on the navigation grid (cells whose centres lie within the body's
+        // radius and 0.15 m of it) is wider than the pillar: a walker on the field's diagonal cuts a
         // corner of it. It was sent back to the nearest walkable cell, behind it; there the
         // field sent it on across the same corner, and it stood on the cells' edge for good
         // (the last of 20,000 in the evacuation demo). Now it goes into the walkable cell
@@ -82,10 +82,13 @@ agent_types:
 walls:
   - {points: [[25, -5], [25, -9], [-9, -9], [-9, 9], [25, 9], [25, 5]]}
 obstacles:
-  - {shape: circle, center: [5, 1], radius: 0.6}
+  - {shape: circle, center: [5.48, 1.2], radius: 0.6}
 goals:
   - {name: exit, position: [27, 0], radius: 5, exit: true}
 )";
+        // The grid blocks a cell whose centre lies within 0.6 + 0.25 + 0.15 m of the pillar's;
+        // the pillar sits where five cells' centres fall between that and the body's reach.
+        const glm::vec2 pillar(5.48f, 1.2f);
         const World probe(parse(hall + "agents: [{type: walker, position: [0, 0], goal: exit}]\n"));
         const NavGrid& grid = probe.navigation().grid;
         const FlowField& field = probe.navigation().fields[0];
@@ -94,8 +97,8 @@ goals:
             for (int x = 0; x < grid.cols(); ++x) {
                 const NavCell c{x, z};
                 const glm::vec2 p = grid.centre(c);
-                if (grid.walkable(c) || glm::distance(p, glm::vec2(5, 1)) < 0.6f + 0.25f + 0.02f ||
-                    glm::distance(p, glm::vec2(5, 1)) > 2.0f)
+                if (grid.walkable(c) || glm::distance(p, pillar) < 0.6f + 0.25f + 0.02f ||
+                    glm::distance(p, pillar) > 2.0f)
                     continue;  // a margin cell round the pillar whose centre the body fits on
                 NavCell onward = c;
                 float onwardM = INFINITY;
