@@ -30,14 +30,18 @@ glm::vec2 wallNormalToward(glm::vec2 p, glm::vec2 a, glm::vec2 b, glm::vec2 h)
     return glm::dot(h, n) > 0.0f ? -n : n;
 }
 
-// Whether the end point e of a wall is shared by no other wall of the list (a door post),
-// rather than a joint of a polyline or a box's corner.
-bool freeEnd(std::span<const WallSegment> walls, glm::vec2 e)
+// Whether the end point e of a wall, nearest to p, is a corner that juts out towards p: a
+// door post (an end no other wall of the list shares), or a joint of walls that p lies past
+// every one of (the corner of a passage's mouth, where the room's wall meets the passage's).
+// A joint p lies in front of a wall of (a room's corner, seen from inside) is not.
+bool juttingEnd(std::span<const WallSegment> walls, glm::vec2 e, glm::vec2 p)
 {
-    int touching = 0;
-    for (const WallSegment& w : walls)
-        touching += (xz(finiteOrZero(w.a)) == e ? 1 : 0) + (xz(finiteOrZero(w.b)) == e ? 1 : 0);
-    return touching <= 1;
+    for (const WallSegment& w : walls) {
+        const glm::vec2 a = xz(finiteOrZero(w.a)), b = xz(finiteOrZero(w.b));
+        if ((a == e && glm::dot(p - e, b - e) > 0.0f) || (b == e && glm::dot(p - e, a - e) > 0.0f))
+            return false;
+    }
+    return true;
 }
 
 }  // namespace
@@ -75,7 +79,7 @@ glm::vec3 avoidWalls(const SteeringAgent& agent, std::span<const WallSegment> wa
         // a + 1 * (b - a) need not be b to the bit, and a door post is told by its end).
         const bool pastA = glm::dot(p - a, b - a) <= 0.0f, pastB = glm::dot(p - b, a - b) <= 0.0f;
         const glm::vec2 c = pastA ? a : pastB ? b : closestOnSegment(p, a, b);
-        const bool post = (pastA || pastB) && freeEnd(walls, c);
+        const bool post = (pastA || pastB) && juttingEnd(walls, c, p);
         const float dist = glm::length(p - c);
         const glm::vec2 n = dist > kTiny ? (p - c) / dist : wallNormalToward(p, a, b, h);
         const float gap = dist - r;
@@ -84,14 +88,16 @@ glm::vec3 avoidWalls(const SteeringAgent& agent, std::span<const WallSegment> wa
         if (gap < standoff) {
             const float depth = (standoff - gap) / standoff;
             glm::vec2 push = n * (standoffForce * depth - glm::dot(v, n) * mass / damping * std::min(depth, 1.0f));
-            // At a wall's free end (a door post: an end no other wall here shares) the
-            // standoff only pushes sideways to the agent's way, never back: the two posts of a
-            // narrow door pushed a walker back out of the doorway harder than its goal drew it
-            // in, and it stood in front of the door for good (issue 23). The way is toward the
-            // target where one is given: sideways to the heading of a walker that came at a
-            // 0.8 m door aslant still pushed it back into the room, round and round in front
-            // of the door. The feelers still brake an approach at contact; corners where
-            // walls join push as before.
+            // At a corner that juts out towards the agent (a door post, or the corner of a
+            // passage's mouth: juttingEnd) the standoff only pushes sideways to the agent's
+            // way, never back: the two posts of a narrow door pushed a walker back out of the
+            // doorway harder than its goal drew it in, and it stood in front of the door for
+            // good (issue 23); the two corners where a room's wall meets a passage 1 m wide
+            // did the same to walkers in front of the passage (RiMEA test 12). The way is
+            // toward the target where one is given: sideways to the heading of a walker that
+            // came at a 0.8 m door aslant still pushed it back into the room, round and round
+            // in front of the door. The feelers still brake an approach at contact; a room's
+            // corners push as before.
             if (post) {
                 const float back = glm::dot(push, way);
                 if (back < 0.0f)

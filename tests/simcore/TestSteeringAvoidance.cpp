@@ -289,6 +289,30 @@ private slots:
         QCOMPARE(avoidWalls(walker({0, 0, -5}, {1.4f, 0, 0}), walls), glm::vec3(0.0f));
     }
 
+    // The mouth of a passage: a room's wall (x = 10) meets the passage's walls at joints
+    // (10, -0.5) and (10, 0.5). A walker in front of it, heading in, is never pushed back
+    // out by the standoff of those two corners (with the room's corners treated so, 3 of 150
+    // walkers stood in front of an empty 1 m passage for good); sideways is still allowed.
+    // A room's own corner, seen from inside, still pushes back along the way.
+    void aPassagesMouthDoesNotPushBack()
+    {
+        const std::vector<WallSegment> walls{{{10, 0, -5}, {10, 0, -0.5f}}, {{10, 0, -0.5f}, {12, 0, -0.5f}},
+                                             {{10, 0, 5}, {10, 0, 0.5f}}, {{10, 0, 0.5f}, {12, 0, 0.5f}}};
+        const glm::vec3 target(20.0f, 0.0f, 0.0f);
+        for (const float z : {0.0f, 0.1f, -0.15f})
+            for (const float x : {9.6f, 9.72f, 9.85f}) {
+                const SteeringAgent a = walker({x, 0, z}, {0, 0, 0});
+                const glm::vec3 f = avoidWalls(a, walls, {}, &target);
+                const float back = -glm::dot(f, glm::normalize(target - a.position));
+                QVERIFY2(back <= 1e-4f, qPrintable(QString("pushed back with %1 N at (%2, %3)").arg(back).arg(x).arg(z)));
+            }
+        // A room's corner (the walls meet at (0, 0); the walker is inside, the way into it).
+        const std::vector<WallSegment> corner{{{0, 0, 0}, {5, 0, 0}}, {{0, 0, 0}, {0, 0, 5}}};
+        const glm::vec3 intoCorner(-5.0f, 0.0f, -5.0f);
+        const glm::vec3 f = avoidWalls(walker({0.4f, 0, 0.4f}, {0, 0, 0}), corner, {}, &intoCorner);
+        QVERIFY2(f.x > 0.0f && f.z > 0.0f, "a room's corner no longer holds a walker off");
+    }
+
     void containmentKeepsAWandererInside_data()
     {
         QTest::addColumn<bool>("polygon");
