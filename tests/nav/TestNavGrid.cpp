@@ -103,7 +103,8 @@ private slots:
                         for (int i = 0; i <= 4; ++i) {
                             const glm::vec2 p = c + (glm::vec2(float(i), float(j)) / 4.0f - 0.5f) * cellM;
                             if (clearance(shapes, p) <= 0.0f)
-                                QFAIL(qPrintable(QString("a shape passes through walkable cell (%1, %2)").arg(x).arg(z)));
+                                QFAIL(qPrintable(
+                                    QString("a shape passes through walkable cell (%1, %2)").arg(x).arg(z)));
                         }
                 }
             QVERIFY2(blocked > 0 && blocked < grid.cellCount(), "the random map must block some cells and leave others");
