@@ -135,6 +135,173 @@ Outcome fourAgainstTwoExits(const std::vector<sim::Scene>& scenes)
     return out;
 }
 
+// Test 10: every walker leaves by the exit assigned to it. Where a walker left is the exit
+// goal nearest its position on the step it went out, read from the positions alone.
+Outcome assignedExits(const std::vector<sim::Scene>& scenes)
+{
+    sim::World world(scenes[0]);
+    const std::size_t n = world.agentCount();
+    const std::vector<glm::vec3> start(world.positions().begin(), world.positions().end());
+    std::vector<std::int32_t> leftBy(n, -1);
+    std::size_t out = 0, far = 0;
+    while (out < n && world.timeS() < 200.0) {
+        world.step();
+        for (std::size_t i = 0; i < n; ++i) {
+            if (leftBy[i] >= 0 || !world.isOut(i))
+                continue;
+            const glm::vec2 p(world.positions()[i].x, world.positions()[i].z);
+            float nearest = INFINITY;
+            for (std::size_t g = 0; g < world.goals().size(); ++g) {
+                const sim::Goal& goal = world.goals()[g];
+                if (goal.exit && glm::distance(p, goal.position) < nearest) {
+                    nearest = glm::distance(p, goal.position);
+                    leftBy[i] = std::int32_t(g);
+                }
+            }
+            ++out;
+        }
+    }
+    std::size_t own = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        own += leftBy[i] >= 0 && leftBy[i] == world.goalIndex(i) ? 1 : 0;
+        // Assigned the exit farther from where it started: the one it would not take by itself.
+        const std::int32_t g = world.goalIndex(i);
+        if (g < 0)
+            continue;
+        const glm::vec2 home(start[i].x, start[i].z);
+        for (std::size_t k = 0; k < world.goals().size(); ++k)
+            if (world.goals()[k].exit && std::int32_t(k) != g &&
+                glm::distance(home, world.goals()[k].position) < glm::distance(home, world.goals()[g].position)) {
+                ++far;
+                break;
+            }
+    }
+    Outcome result;
+    result.measured = format("%.0f of %.0f left by their own exit", double(own), double(n)) +
+                      format(" (%.0f of them assigned the farther one); %.0f out after %.1f s", double(far),
+                             double(out), world.timeS());
+    result.pass = n == 24 && own == n && out == n && far == 16;
+    return result;
+}
+
+// One run of test 12's room with its passage `widthM` wide: the walls named neck_* and
+// front_* moved to the passage's new sides.
+struct BottleneckRun {
+    double flow = 0.0;          // persons/s across the passage's end, from the 20th to the 120th
+    double frontDensity = 0.0;  // P/m^2 in the 2 m x 4 m in front of the passage, over that time
+    double behindDensity = 0.0; // P/m^2 in the 2 m x 4 m behind it
+    std::size_t walkers = 0, crossed = 0;
+};
+
+BottleneckRun bottleneck(sim::Scene scene, float widthM)
+{
+    const float h = 0.5f * widthM;
+    for (sim::Wall& w : scene.walls) {
+        const float side = w.name.ends_with("north") ? -h : h;
+        if (w.name.starts_with("neck_"))
+            w.points = {{10.0f, side}, {12.0f, side}};
+        else if (w.name.starts_with("front_"))
+            w.points = {{10.0f, side < 0.0f ? -5.0f : 5.0f}, {10.0f, side}};
+    }
+    sim::World world(scene);
+    const std::size_t n = world.agentCount();
+    std::vector<float> x(n);
+    for (std::size_t i = 0; i < n; ++i)
+        x[i] = world.positions()[i].x;
+    std::vector<std::uint8_t> through(n, 0);  // crossed the passage's end: each walker counts once
+    std::vector<double> crossings;
+    struct Densities {
+        double timeS, front, behind;  // P/m^2
+    };
+    std::vector<Densities> density;  // per step
+    auto in = [](glm::vec3 p, float x0) { return p.x >= x0 && p.x < x0 + 2.0f && std::abs(p.z) < 2.0f; };
+    while (crossings.size() < n && world.timeS() < 600.0) {
+        world.step();
+        std::size_t front = 0, behind = 0;
+        for (std::size_t i = 0; i < n; ++i) {
+            const glm::vec3 p = world.positions()[i];
+            if (x[i] < 12.0f && p.x >= 12.0f && !through[i]) {
+                through[i] = 1;
+                crossings.push_back(world.timeS());
+            }
+            x[i] = p.x;
+            if (!world.isOut(i)) {
+                front += in(p, 8.0f) ? 1 : 0;
+                behind += in(p, 12.0f) ? 1 : 0;
+            }
+        }
+        density.push_back({world.timeS(), double(front) / 8.0, double(behind) / 8.0});
+    }
+    BottleneckRun run;
+    run.walkers = n;
+    run.crossed = crossings.size();
+    if (crossings.size() < 120)
+        return run;
+    const double t0 = crossings[19], t1 = crossings[119];
+    run.flow = 100.0 / (t1 - t0);
+    double front = 0.0, behind = 0.0, steps = 0.0;
+    for (const Densities& d : density)
+        if (d.timeS > t0 && d.timeS <= t1) {
+            front += d.front;
+            behind += d.behind;
+            steps += 1.0;
+        }
+    run.frontDensity = front / steps;
+    run.behindDensity = behind / steps;
+    return run;
+}
+
+// Test 12: the flow through a passage grows with its width; a queue forms in front of it and
+// none behind it (the density behind stays under half that in front).
+Outcome bottleneckWidths(const std::vector<sim::Scene>& scenes)
+{
+    Outcome out;
+    out.pass = true;
+    double lastFlow = 0.0;
+    for (const float w : {0.8f, 1.0f, 1.2f, 1.6f, 2.0f, 2.4f}) {
+        const BottleneckRun r = bottleneck(scenes[0], w);
+        out.measured += (out.measured.empty() ? "" : "; ") +
+                        format("%.1f m: %.2f /s (%.2f /m/s)", double(w), r.flow, r.flow / double(w)) +
+                        format(", %.1f /m2 in front and %.1f behind", r.frontDensity, r.behindDensity) +
+                        (r.crossed < r.walkers
+                             ? format(", only %.0f of %.0f through in 600 s", double(r.crossed), double(r.walkers))
+                             : "");
+        out.pass = out.pass && r.walkers == 150 && r.crossed == r.walkers && r.flow > lastFlow &&
+                   r.frontDensity >= 2.0 && r.behindDensity < 0.5 * r.frontDensity;
+        lastFlow = r.flow;
+    }
+    return out;
+}
+
+// Test 15: 500 walkers round a corner and leave by the corridor's far end, none through a
+// wall (counted from the positions, step by step, and by the World's own counter).
+Outcome largeCrowdCorner(const std::vector<sim::Scene>& scenes)
+{
+    sim::World world(scenes[0]);
+    std::vector<glm::vec3> before;
+    std::uint64_t crossings = 0, steps = 0;
+    auto out = [&] {
+        std::size_t k = 0;
+        for (std::size_t i = 0; i < world.agentCount(); ++i)
+            k += world.isOut(i) ? 1 : 0;
+        return k;
+    };
+    while (out() < world.agentCount() && world.timeS() < 300.0) {
+        before.assign(world.positions().begin(), world.positions().end());
+        world.step();
+        ++steps;
+        crossings += wallCrossings(scenes[0], before, world.positions());
+    }
+    const sim::RunStats stats = sim::RunStats::from(world, steps + 1, 0.0);
+    Outcome result;
+    result.measured = format("%.0f of %.0f out in %.1f s", double(out()), double(world.agentCount()), world.timeS()) +
+                      format(", %.0f steps through a wall (the World counts %.0f)", double(crossings),
+                             double(stats.counters.wallPenetrations));
+    result.pass = out() == world.agentCount() && world.agentCount() == 500 && crossings == 0 &&
+                  stats.counters.wallPenetrations == 0;
+    return result;
+}
+
 }  // namespace
 
 const std::vector<RimeaTest>& rimeaTests()
@@ -145,7 +312,7 @@ const std::vector<RimeaTest>& rimeaTests()
         {2, "Stairs up: walking speed kept", "", {}, nullptr, "needs levels and stairs (planned: multi-level scenes)"},
         {3, "Stairs down: walking speed kept", "", {}, nullptr, "needs levels and stairs (planned: multi-level scenes)"},
         {4, "Fundamental diagram", "speed against density along Weidmann's curve", {}, nullptr,
-         "planned: measurement areas and the speed-density report (issue 26, analysis)"},
+         "planned: walkers that follow a path do not yet slow with density (docs/validation.md)"},
         {5, "Reaction times", "each walker starts at its own reaction time", {}, nullptr,
          "planned: per-walker reaction times"},
         {6, "Corner", "20 walkers round a left corner, none through a wall", {"rimea-06-corner.yaml"}, corner, {}},
@@ -155,15 +322,21 @@ const std::vector<RimeaTest>& rimeaTests()
         {9, "Four against two exits", "1,000 walkers empty a room about twice as slowly (1.6 to 2.4 times) "
                                       "through two of its four doors",
          {"rimea-09-four-exits.yaml", "rimea-09-two-exits.yaml"}, fourAgainstTwoExits, {}},
-        {10, "Assigned exits", "walkers leave by the exits assigned to them", {}, nullptr, "planned"},
+        {10, "Assigned exits", "24 walkers in 12 rooms off a corridor each leave by the exit assigned to them, "
+                               "16 of them by the farther of the two",
+         {"rimea-10-assigned-exits.yaml"}, assignedExits, {}},
         {11, "Exit choice under congestion", "walkers also use a farther exit when the near one is congested", {},
          nullptr, "planned: exit choice"},
-        {12, "Bottleneck", "flow through a bottleneck grows with its width", {}, nullptr, "planned"},
+        {12, "Bottleneck", "150 walkers leave a room by a passage 2 m long and 0.8 to 2.4 m wide: the flow grows "
+                           "with the width, a queue forms in front (2 /m2 or more) and none behind (under half that)",
+         {"rimea-12-bottleneck.yaml"}, bottleneckWidths, {}},
         {13, "Stairs with congestion", "", {}, nullptr, "needs levels and stairs (planned: multi-level scenes)"},
         {14, "Route choice", "", {}, nullptr, "needs levels (planned: multi-level scenes)"},
-        {15, "500 round a corner", "a crowd rounds a corner without passing through its walls", {}, nullptr,
-         "planned"},
-        {16, "Single file", "speed against density in single file", {}, nullptr, "planned"},
+        {15, "500 round a corner", "500 walkers round a left corner of a corridor 6 m wide and all leave by its "
+                                   "end, none through a wall",
+         {"rimea-15-large-crowd-corner.yaml"}, largeCrowdCorner, {}},
+        {16, "Single file", "speed against density in single file", {}, nullptr,
+         "planned: walkers that follow a path do not yet slow with density (docs/validation.md)"},
     };
     return tests;
 }
