@@ -30,8 +30,24 @@ std::size_t openNarrowPassages(NavGrid& grid, const NavShapes& shapes, float bod
         boxSides(b, sides);
         segments.insert(segments.end(), sides, sides + 4);
     }
+    const float bucketM = std::max(1.0f, 4.0f * inflateM);
     SegmentGrid near;
-    near.build(segments, std::max(1.0f, 4.0f * inflateM));
+    near.build(segments, bucketM);
+    // Circles and boxes bucketed by their centres (as points), so that a cell looks only at
+    // those near it: a scene may hold thousands of pillars or cones.
+    std::vector<Segment> circleCentres, boxCentres;
+    float largestCircleM = 0.0f, largestBoxM = 0.0f;
+    for (const NavCircle& circle : shapes.circles) {
+        circleCentres.push_back({circle.centre, circle.centre});
+        largestCircleM = std::max(largestCircleM, circle.radiusM);
+    }
+    for (const NavBox& b : shapes.boxes) {
+        boxCentres.push_back({b.centre, b.centre});
+        largestBoxM = std::max(largestBoxM, glm::length(b.halfSize));
+    }
+    SegmentGrid circlesNear, boxesNear;
+    circlesNear.build(circleCentres, bucketM);
+    boxesNear.build(boxCentres, bucketM);
     // A shape's point nearest the cell's centre, with the distance to its surface.
     struct Touch {
         glm::vec2 point;
@@ -48,20 +64,22 @@ std::size_t openNarrowPassages(NavGrid& grid, const NavShapes& shapes, float bod
             return;
         seen[std::size_t(k)] = 1;
         const glm::vec2 c = grid.centre(cell);
-        for (const NavBox& b : shapes.boxes)
-            if (b.contains(c))
-                return;
+        bool inBox = false;
+        boxesNear.forEachNear(c, largestBoxM, [&](std::uint32_t b) { inBox = inBox || shapes.boxes[b].contains(c); });
+        if (inBox)
+            return;
         touches.clear();
         near.forEachNear(c, across, [&](std::uint32_t s) {
             const glm::vec2 q = closestOnSegment(c, near.segment(s));
             touches.push_back({q, glm::distance(q, c)});
         });
-        for (const NavCircle& circle : shapes.circles) {
+        circlesNear.forEachNear(c, across + largestCircleM, [&](std::uint32_t k) {
+            const NavCircle& circle = shapes.circles[k];
             const glm::vec2 d = circle.centre - c;
             const float len = glm::length(d);
             if (len - circle.radiusM <= across)
                 touches.push_back({len > 0.0f ? c + d * ((len - circle.radiusM) / len) : c, len - circle.radiusM});
-        }
+        });
         bool fits = true;
         for (const Touch& t : touches)
             fits = fits && t.distanceM > bodyReach;
