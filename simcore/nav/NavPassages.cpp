@@ -1,5 +1,7 @@
 #include "simcore/nav/NavPassages.h"
 
+#include "simcore/base/detail/PlanarSegments.h"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -7,18 +9,6 @@
 #include <vector>
 
 namespace throng::sim {
-
-namespace {
-
-glm::vec2 closestOnSegment(glm::vec2 p, const Segment& s)
-{
-    const glm::vec2 ab = s.b - s.a;
-    const float len2 = glm::dot(ab, ab);
-    const float t = len2 > 0.0f ? std::clamp(glm::dot(p - s.a, ab) / len2, 0.0f, 1.0f) : 0.0f;
-    return s.a + ab * t;
-}
-
-}  // namespace
 
 std::size_t openNarrowPassages(NavGrid& grid, const NavShapes& shapes, float bodyRadiusM, float inflateM)
 {
@@ -70,7 +60,7 @@ std::size_t openNarrowPassages(NavGrid& grid, const NavShapes& shapes, float bod
             return;
         touches.clear();
         near.forEachNear(c, across, [&](std::uint32_t s) {
-            const glm::vec2 q = closestOnSegment(c, near.segment(s));
+            const glm::vec2 q = detail::closestOnSegment(c, near.segment(s).a, near.segment(s).b);
             touches.push_back({q, glm::distance(q, c)});
         });
         circlesNear.forEachNear(c, across + largestCircleM, [&](std::uint32_t k) {
