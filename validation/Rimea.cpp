@@ -72,33 +72,52 @@ Outcome corridor(const std::vector<sim::Scene>& scenes)
     return out;
 }
 
-// Test 6: every walker reaches the corridor's end past the corner, and none crosses a wall
-// (counted from the positions, step by step, and by the World's own counter).
-Outcome corner(const std::vector<sim::Scene>& scenes)
+// A run of `scene` until every agent is done (arrived, or out) or limitS has passed, with
+// every step of every agent checked against every wall from the positions alone, besides
+// the World's own counter.
+struct WatchedRun {
+    std::size_t agents = 0, done = 0;
+    double timeS = 0.0;
+    std::uint64_t crossings = 0, worldCounts = 0;  // steps through a wall: recounted, and the World's
+    std::string throughWalls() const
+    {
+        return format(", %.0f steps through a wall (the World counts %.0f)", double(crossings), double(worldCounts));
+    }
+};
+
+WatchedRun runWatchingWalls(const sim::Scene& scene, double limitS, bool (sim::World::*isDone)(std::size_t) const)
 {
-    sim::World world(scenes[0]);
-    std::vector<glm::vec3> before;
-    std::uint64_t crossings = 0, steps = 0;
-    auto arrived = [&] {
+    sim::World world(scene);
+    WatchedRun run;
+    run.agents = world.agentCount();
+    auto done = [&] {
         std::size_t n = 0;
         for (std::size_t i = 0; i < world.agentCount(); ++i)
-            n += world.hasArrived(i) ? 1 : 0;
+            n += (world.*isDone)(i) ? 1 : 0;
         return n;
     };
-    while (arrived() < world.agentCount() && world.timeS() < 120.0) {
+    std::vector<glm::vec3> before;
+    std::uint64_t steps = 0;
+    while (done() < run.agents && world.timeS() < limitS) {
         before.assign(world.positions().begin(), world.positions().end());
         world.step();
         ++steps;
-        crossings += wallCrossings(scenes[0], before, world.positions());
+        run.crossings += wallCrossings(scene, before, world.positions());
     }
-    const sim::RunStats stats = sim::RunStats::from(world, steps + 1, 0.0);
+    run.done = done();
+    run.timeS = world.timeS();
+    run.worldCounts = sim::RunStats::from(world, steps + 1, 0.0).counters.wallPenetrations;
+    return run;
+}
+
+// Test 6: every walker reaches the corridor's end past the corner, and none crosses a wall.
+Outcome corner(const std::vector<sim::Scene>& scenes)
+{
+    const WatchedRun run = runWatchingWalls(scenes[0], 120.0, &sim::World::hasArrived);
     Outcome out;
-    out.measured = format("%.0f of %.0f round the corner in %.1f s", double(arrived()), double(world.agentCount()),
-                          world.timeS()) +
-                   format(", %.0f steps through a wall (the World counts %.0f)", double(crossings),
-                          double(stats.counters.wallPenetrations));
-    out.pass = arrived() == world.agentCount() && world.agentCount() == 20 && crossings == 0 &&
-               stats.counters.wallPenetrations == 0;
+    out.measured = format("%.0f of %.0f round the corner in %.1f s", double(run.done), double(run.agents), run.timeS) +
+                   run.throughWalls();
+    out.pass = run.done == run.agents && run.agents == 20 && run.crossings == 0 && run.worldCounts == 0;
     return out;
 }
 
@@ -273,33 +292,15 @@ Outcome bottleneckWidths(const std::vector<sim::Scene>& scenes)
     return out;
 }
 
-// Test 15: 500 walkers round a corner and leave by the corridor's far end, none through a
-// wall (counted from the positions, step by step, and by the World's own counter).
+// Test 15: 500 walkers round a corner and leave by the corridor's far end, none through a wall.
 Outcome largeCrowdCorner(const std::vector<sim::Scene>& scenes)
 {
-    sim::World world(scenes[0]);
-    std::vector<glm::vec3> before;
-    std::uint64_t crossings = 0, steps = 0;
-    auto out = [&] {
-        std::size_t k = 0;
-        for (std::size_t i = 0; i < world.agentCount(); ++i)
-            k += world.isOut(i) ? 1 : 0;
-        return k;
-    };
-    while (out() < world.agentCount() && world.timeS() < 300.0) {
-        before.assign(world.positions().begin(), world.positions().end());
-        world.step();
-        ++steps;
-        crossings += wallCrossings(scenes[0], before, world.positions());
-    }
-    const sim::RunStats stats = sim::RunStats::from(world, steps + 1, 0.0);
-    Outcome result;
-    result.measured = format("%.0f of %.0f out in %.1f s", double(out()), double(world.agentCount()), world.timeS()) +
-                      format(", %.0f steps through a wall (the World counts %.0f)", double(crossings),
-                             double(stats.counters.wallPenetrations));
-    result.pass = out() == world.agentCount() && world.agentCount() == 500 && crossings == 0 &&
-                  stats.counters.wallPenetrations == 0;
-    return result;
+    const WatchedRun run = runWatchingWalls(scenes[0], 300.0, &sim::World::isOut);
+    Outcome out;
+    out.measured = format("%.0f of %.0f out in %.1f s", double(run.done), double(run.agents), run.timeS) +
+                   run.throughWalls();
+    out.pass = run.done == run.agents && run.agents == 500 && run.crossings == 0 && run.worldCounts == 0;
+    return out;
 }
 
 }  // namespace

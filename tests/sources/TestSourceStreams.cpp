@@ -44,6 +44,30 @@ std::string street(const std::string& arrivals)
     return yaml;
 }
 
+// Steps the World for ten minutes; the agents in the scene at 0 s, 1 s, ..., 600 s.
+std::vector<std::uint64_t> tenMinutesInScene(World& world)
+{
+    std::vector<std::uint64_t> inScene;
+    RunStats::sampleInScene(world, inScene);
+    while (world.timeS() < 600.0 - 1e-9) {
+        world.step();
+        RunStats::sampleInScene(world, inScene);
+    }
+    return inScene;
+}
+
+// The mean of each whole window of `seconds` samples, from the first on.
+std::vector<double> windowMeans(const std::vector<std::uint64_t>& series, std::size_t seconds)
+{
+    std::vector<double> means;
+    for (std::size_t s = 0; s + seconds <= series.size(); s += seconds) {
+        const auto from = series.begin() + std::ptrdiff_t(s);
+        means.push_back(double(std::accumulate(from, from + std::ptrdiff_t(seconds), std::uint64_t(0))) /
+                        double(seconds));
+    }
+    return means;
+}
+
 }  // namespace
 
 class TestSourceStreams : public QObject {
@@ -65,22 +89,12 @@ private slots:
         const LoadResult r = parseScene(street(arrivals.toStdString()), "street.yaml", "");
         QVERIFY2(r.ok(), r.ok() ? "" : r.diagnostics[0].format().c_str());
         World world(r.scene);
-        std::vector<std::uint64_t> inScene;
-        RunStats::sampleInScene(world, inScene);
-        while (world.timeS() < 600.0 - 1e-9) {
-            world.step();
-            RunStats::sampleInScene(world, inScene);
-        }
+        const std::vector<std::uint64_t> inScene = tenMinutesInScene(world);
         QCOMPARE(inScene.size(), std::size_t(601));
         // Warm-up: 60 m at about 1.3 m/s is 46 s; count from 90 s on.
         const std::vector<std::uint64_t> steady(inScene.begin() + 90, inScene.end());
-        const double mean = double(std::accumulate(steady.begin(), steady.end(), std::uint64_t(0))) /
-                            double(steady.size());
-        std::vector<double> averages;
-        for (std::size_t s = 0; s + std::size_t(averageS) <= steady.size(); s += std::size_t(averageS)) {
-            const auto from = steady.begin() + std::ptrdiff_t(s);
-            averages.push_back(double(std::accumulate(from, from + averageS, std::uint64_t(0))) / averageS);
-        }
+        const double mean = windowMeans(steady, steady.size()).front();
+        const std::vector<double> averages = windowMeans(steady, std::size_t(averageS));
         QVERIFY(averages.size() >= 8);
         const auto [lo, hi] = std::minmax_element(averages.begin(), averages.end());
         // Arrivals at 1 a second that each take about 46 s to cross: about 46 in the street.
@@ -112,21 +126,11 @@ private slots:
         QVERIFY2(r.ok(), r.ok() ? "" : r.diagnostics[0].format().c_str());
         QCOMPARE(r.scene.sources.size(), std::size_t(8));
         World world(r.scene);
-        std::vector<std::uint64_t> inScene;
-        RunStats::sampleInScene(world, inScene);
-        while (world.timeS() < 600.0 - 1e-9) {
-            world.step();
-            RunStats::sampleInScene(world, inScene);
-        }
+        const std::vector<std::uint64_t> inScene = tenMinutesInScene(world);
         QCOMPARE(inScene.size(), std::size_t(601));
         const std::vector<std::uint64_t> steady(inScene.begin() + 120, inScene.end() - 1);
-        const double mean = double(std::accumulate(steady.begin(), steady.end(), std::uint64_t(0))) /
-                            double(steady.size());
-        std::vector<double> tens;
-        for (std::size_t s = 0; s + 10 <= steady.size(); s += 10)
-            tens.push_back(double(std::accumulate(steady.begin() + std::ptrdiff_t(s),
-                                                  steady.begin() + std::ptrdiff_t(s + 10), std::uint64_t(0))) /
-                           10.0);
+        const double mean = windowMeans(steady, steady.size()).front();
+        const std::vector<double> tens = windowMeans(steady, 10);
         QCOMPARE(tens.size(), std::size_t(48));
         const auto [lo, hi] = std::minmax_element(tens.begin(), tens.end());
         const auto [lo1, hi1] = std::minmax_element(steady.begin(), steady.end());
