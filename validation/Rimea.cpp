@@ -1,10 +1,12 @@
 #include "validation/Rimea.h"
 
 #include "simcore/io/SceneIO.h"
+#include "simcore/scene/WalkingAge.h"
 #include "simcore/world/RunStats.h"
 #include "simcore/world/World.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -110,6 +112,44 @@ WatchedRun runWatchingWalls(const sim::Scene& scene, double limitS, bool (sim::W
     return run;
 }
 
+// Test 5: every walker stands until its reaction time, drawn between 10 and 100 s, and sets
+// off then. When each one first moves (its position first changes: one that waits stands
+// exactly still) is read from the positions; its reaction time is the one the World drew.
+Outcome reactionTimes(const std::vector<sim::Scene>& scenes)
+{
+    sim::World world(scenes[0]);
+    const std::size_t n = world.agentCount();
+    const std::vector<glm::vec3> start(world.positions().begin(), world.positions().end());
+    std::vector<double> movedAt(n, -1.0);
+    std::size_t out = 0;
+    while (out < n && world.timeS() < 180.0) {
+        world.step();
+        out = 0;
+        for (std::size_t i = 0; i < n; ++i) {
+            out += world.isOut(i) ? 1 : 0;
+            if (movedAt[i] < 0.0 && world.positions()[i] != start[i])
+                movedAt[i] = world.timeS();
+        }
+    }
+    std::size_t onTime = 0;
+    double first = INFINITY, last = 0.0, worst = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const double due = world.startTimeS(i);
+        first = std::min(first, due);
+        last = std::max(last, due);
+        const double late = movedAt[i] - due;  // < 0: moved before its time (or never)
+        worst = std::max(worst, std::abs(late));
+        onTime += due >= 10.0 && due <= 100.0 && late >= 0.0 && late <= 0.25 ? 1 : 0;
+    }
+    Outcome result;
+    result.measured = format("%.0f of %.0f set off within 0.25 s after their reaction time", double(onTime),
+                             double(n)) +
+                      format(" (times %.1f to %.1f s; latest start %.2f s after its time)", first, last, worst) +
+                      format("; %.0f out", double(out));
+    result.pass = n == 10 && onTime == n && out == n;
+    return result;
+}
+
 // Test 6: every walker reaches the corridor's end past the corner, and none crosses a wall.
 Outcome corner(const std::vector<sim::Scene>& scenes)
 {
@@ -135,6 +175,49 @@ double timeToEmpty(const sim::Scene& scene, double limitS, std::size_t& left)
         world.step();
     left = out();
     return left == world.agentCount() ? world.timeS() : -1.0;
+}
+
+// Test 7: 50 adults, each of an age drawn between 20 and 80 years, walk at Weidmann's speed
+// for their age. Each one's speed is measured from its positions at 5 s and 25 s (after it
+// has come up to speed, on a straight way to an exit 1 km off) and set against Weidmann's
+// speed for its age; by decade of age (20s, ..., 70s), the mean measured speeds fall.
+Outcome walkingSpeedByAge(const std::vector<sim::Scene>& scenes)
+{
+    sim::World world(scenes[0]);
+    const std::size_t n = world.agentCount();
+    while (world.timeS() < 5.0 - 1e-9)
+        world.step();
+    const std::vector<glm::vec3> at5(world.positions().begin(), world.positions().end());
+    while (world.timeS() < 25.0 - 1e-9)
+        world.step();
+    std::size_t within = 0, aged = 0;
+    double worst = 0.0;
+    std::array<double, 6> sum{}, count{};
+    for (std::size_t i = 0; i < n; ++i) {
+        const float age = world.ageYears(i);
+        const double speed = double(glm::distance(world.positions()[i], at5[i])) / 20.0;
+        const double off = std::abs(speed - double(sim::weidmannSpeedAtAge(age)));
+        worst = std::max(worst, off);
+        within += off <= 0.03 ? 1 : 0;
+        aged += age >= 20.0f && age <= 80.0f ? 1 : 0;
+        const std::size_t decade = std::min(std::size_t((age - 20.0f) / 10.0f), std::size_t(5));
+        sum[decade] += speed;
+        count[decade] += 1.0;
+    }
+    Outcome out;
+    out.measured = format("%.0f of %.0f within 0.03 m/s of Weidmann's speed for their age", double(within),
+                          double(n)) +
+                   format(" (at most %.3f m/s off); mean by decade from the 20s:", worst);
+    bool falling = true;
+    double last = INFINITY;
+    for (std::size_t d = 0; d < sum.size(); ++d) {
+        const double mean = count[d] > 0.0 ? sum[d] / count[d] : 0.0;
+        out.measured += format(" %.2f", mean) + format(d + 1 < sum.size() ? " (%.0f)," : " (%.0f) m/s", count[d]);
+        falling = falling && count[d] > 0.0 && mean < last;
+        last = mean;
+    }
+    out.pass = n == 50 && within == n && aged == n && falling;
+    return out;
 }
 
 // Test 9: 1,000 walkers leave a room by four doors, then by two: the second takes about
@@ -314,11 +397,13 @@ const std::vector<RimeaTest>& rimeaTests()
         {3, "Stairs down: walking speed kept", "", {}, nullptr, "needs levels and stairs (planned: multi-level scenes)"},
         {4, "Fundamental diagram", "speed against density along Weidmann's curve", {}, nullptr,
          "planned: walkers that follow a path do not yet slow with density (docs/validation.md)"},
-        {5, "Reaction times", "each walker starts at its own reaction time", {}, nullptr,
-         "planned: per-walker reaction times"},
+        {5, "Reaction times", "10 walkers in a room each stand for a reaction time drawn between 10 and 100 s, "
+                              "set off within 0.25 s after it, and leave by the door",
+         {"rimea-05-reaction-times.yaml"}, reactionTimes, {}},
         {6, "Corner", "20 walkers round a left corner, none through a wall", {"rimea-06-corner.yaml"}, corner, {}},
-        {7, "Walking speed by age", "speeds by age group as the guideline's population", {}, nullptr,
-         "planned: age groups as a variation"},
+        {7, "Walking speed by age", "50 adults aged 20 to 80 each walk within 0.03 m/s of Weidmann's speed for "
+                                    "their age, and the mean speed of each decade of age is below the last's",
+         {"rimea-07-walking-speed-by-age.yaml"}, walkingSpeedByAge, {}},
         {8, "Parameter analysis", "", {}, nullptr, "a study of a building's parameters, not a test of the simulator"},
         {9, "Four against two exits", "1,000 walkers empty a room about twice as slowly (1.6 to 2.4 times) "
                                       "through two of its four doors",

@@ -96,6 +96,11 @@ bool isFlier(const sim::Scene& s, std::size_t i)
     return s.agentTypes[i].kind == sim::AgentKind::Flier;
 }
 
+bool isWalker(const sim::Scene& s, std::size_t i)
+{
+    return s.agentTypes[i].kind == sim::AgentKind::Pedestrian;
+}
+
 #define THRONG_TRAFFIC(member) [](sim::Scene& s, std::size_t) -> float& { return s.traffic.member; }
 #define THRONG_SETTING(member) [](sim::Scene& s, std::size_t) -> float& { return s.settings.member; }
 #define THRONG_FIELD(list, member) [](sim::Scene& s, std::size_t i) -> float& { return s.list[i].member; }
@@ -154,7 +159,11 @@ std::vector<PropertyField> make(ItemKind kind)
                 {"phaseMin", tr("Phase offset min"), 0, 1, 0.05, 2, THRONG_FIELD(agentTypes, variation.phaseOffset.x),
                  variationEnd(&sim::Variation::phaseOffset, true)},
                 {"phaseMax", tr("Phase offset max"), 0, 1, 0.05, 2, THRONG_FIELD(agentTypes, variation.phaseOffset.y),
-                 variationEnd(&sim::Variation::phaseOffset, false)}};
+                 variationEnd(&sim::Variation::phaseOffset, false)},
+                {"reactionMin", tr("Reaction time min (s)"), 0, 1e5, 1, 1, THRONG_FIELD(agentTypes, variation.reactionS.x),
+                 variationEnd(&sim::Variation::reactionS, true), isWalker},
+                {"reactionMax", tr("Reaction time max (s)"), 0, 1e5, 1, 1, THRONG_FIELD(agentTypes, variation.reactionS.y),
+                 variationEnd(&sim::Variation::reactionS, false), isWalker}};
     case ItemKind::Agent:
         return {{"x", tr("X (m)"), -1e5, 1e5, 0.1, 2, THRONG_FIELD(agents, position.x)},
                 {"z", tr("Z (m)"), -1e5, 1e5, 0.1, 2, THRONG_FIELD(agents, position.z)},

@@ -1,6 +1,7 @@
 #include "export/character/AgentVariation.h"
 
 #include "simcore/base/Rng.h"
+#include "simcore/scene/WalkingAge.h"
 
 #include <algorithm>
 
@@ -39,7 +40,8 @@ AgentVariation drawVariation(const sim::Variation& v, std::uint64_t seed, std::u
     out.look = lookCount > 1 ? pick(seed, agentId, kLookStream, lookCount) : 0;
     out.tint = v.tints.empty() ? -1 : static_cast<int>(pick(seed, agentId, kTintStream, v.tints.size()));
     out.heightScale = sim::rngRange(seed, agentId, 0, kHeightStream, v.heightScale.x, v.heightScale.y);
-    out.speedFactor = sim::rngRange(seed, agentId, 0, kSimSpeedFactorStream, v.speedFactor.x, v.speedFactor.y);
+    out.speedFactor = sim::rngRange(seed, agentId, 0, kSimSpeedFactorStream, v.speedFactor.x, v.speedFactor.y) *
+                      sim::ageSpeedFactor(v.ageYears, seed, agentId);
     out.phaseOffset = sim::rngRange(seed, agentId, 0, kSimPhaseOffsetStream, v.phaseOffset.x, v.phaseOffset.y);
     for (int slot = 0; slot < kMaterialSlotCount; ++slot) {
         const std::size_t colours = slotPalette(static_cast<MaterialSlot>(slot)).size();

@@ -21,7 +21,7 @@ struct AgentVariation {
     std::size_t look = 0;      // index into the type's looks (0 when it has one)
     int tint = -1;             // index into Variation::tints, -1 = untinted
     float heightScale = 1.0f;  // uniform scale of the whole character, > 0
-    float speedFactor = 1.0f;  // the simulation's per-agent speed factor, > 0
+    float speedFactor = 1.0f;  // the simulation's per-agent speed factor (with its age's), > 0
     float phaseOffset = 0.0f;  // gait cycles added at frame 0, in [0, 1]
     // Per material slot, an index into slotPalette(slot) (the top wears the tint instead).
     std::array<std::uint8_t, kMaterialSlotCount> colour{};

@@ -3,6 +3,7 @@
 #include "simcore/base/AtomicFile.h"
 #include "simcore/io/detail/SceneReader.h"
 #include "simcore/io/detail/YamlWriter.h"
+#include "simcore/scene/WalkingAge.h"
 
 #include <yaml-cpp/yaml.h>
 
@@ -131,6 +132,14 @@ void writeAgentTypes(Writer& w, const Scene& s)
         w.vec2(t.variation.speedFactor);
         w.key("phase");
         w.vec2(t.variation.phaseOffset);
+        if (t.variation.reactionS != glm::vec2(0.0f)) {
+            w.key("reaction");
+            w.vec2(t.variation.reactionS);
+        }
+        if (hasAge(t.variation.ageYears)) {
+            w.key("age");
+            w.vec2(t.variation.ageYears);
+        }
         o << YAML::EndMap;
         if (!t.behaviours.empty()) {
             w.key("behaviours");

@@ -62,6 +62,12 @@ struct Variation {
     glm::vec2 heightScale{1.0f};      // uniform range [min, max], > 0
     glm::vec2 speedFactor{0.8f, 1.2f};// uniform range [min, max], > 0
     glm::vec2 phaseOffset{0.0f, 1.0f};// gait phase offset range in cycles, [0, 1]
+    // Walkers' reaction (pre-movement) time, s, >= 0: each stands where it starts for a time
+    // drawn uniformly from [min, max] before it sets off (StartPhase.h). [0, 0] = at once.
+    glm::vec2 reactionS{0.0f};
+    // Age range, years, within 10 to 80; [0, 0] = no age. Each agent's age is drawn from it
+    // and scales its speed by Weidmann's curve (WalkingAge.h).
+    glm::vec2 ageYears{0.0f};
     bool operator==(const Variation&) const = default;
 };
 

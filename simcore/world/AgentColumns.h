@@ -51,6 +51,9 @@ struct AgentColumns {
     // A source's agent whose time has not come (or whose place is taken): out and stopped
     // as well until the source phase lets it in (Sources.h); not present in frames.
     std::vector<std::uint8_t> offstage;
+    // A walker still standing out its reaction time: stopped as well until the start phase
+    // lets it go (StartPhase.h); not the pile of an arrived crowd.
+    std::vector<std::uint8_t> unstarted;
     // Action points (ActionPoints.h): the point it plays at now (-1 = none) and for how
     // many seconds more; the last point it entered, until it leaves that point's disk.
     std::vector<std::int32_t> pointAt, pointLast;

@@ -25,6 +25,7 @@ struct AgentTypes {
     // no further ahead (neither unaligned nor reciprocal avoidance) steps right with, an
     // oncoming walker in its way (KeepRight.h); 0 for every other type.
     std::vector<float> keepRight;
+    std::vector<glm::vec2> ageYears;  // the variation's age range ([0, 0] = no age; WalkingAge.h)
     bool makingWay = false;  // some types differ in layers or priority (else all collide as equals)
 };
 

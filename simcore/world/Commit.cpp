@@ -93,8 +93,8 @@ void commitAgent(const StepView& v, AgentColumns& agents, std::size_t i, std::ui
             const std::uint32_t j = near[k];
             const float reach = agents.radius[i] * 1.5f + agents.radius[j] + kSettleGapM;
             const glm::vec2 q = xz(agents.nextPos[j]);
-            stop = agents.stoppedBefore[j] && agents.pointAt[j] < 0 && agents.path[j] == agents.path[i] &&
-                   glm::distance(to, q) < reach &&
+            stop = agents.stoppedBefore[j] && agents.pointAt[j] < 0 && !agents.unstarted[j] &&
+                   agents.path[j] == agents.path[i] && glm::distance(to, q) < reach &&
                    glm::distance(q, path.points.back()) < toEnd;
         }
         if (stop)
@@ -125,8 +125,9 @@ void commitAgent(const StepView& v, AgentColumns& agents, std::size_t i, std::ui
             const std::uint32_t j = near[k];
             const float contact = agents.radius[i] + agents.radius[j] + gap;
             const glm::vec2 q = xz(agents.nextPos[j]);
-            stop = agents.stoppedBefore[j] && agents.pointAt[j] < 0 && agents.goal[j] == agents.goal[i] &&
-                   glm::distance(to, q) < contact && glm::dot(q - to, agents.goalSpot[i] - to) > 0.0f;
+            stop = agents.stoppedBefore[j] && agents.pointAt[j] < 0 && !agents.unstarted[j] &&
+                   agents.goal[j] == agents.goal[i] && glm::distance(to, q) < contact &&
+                   glm::dot(q - to, agents.goalSpot[i] - to) > 0.0f;
         }
         if (stop)
             arrive();

@@ -11,6 +11,7 @@
 #include "simcore/scene/SpawnArea.h"
 #include "simcore/scene/StepRate.h"
 #include "simcore/scene/TerrainHeight.h"
+#include "simcore/scene/WalkingAge.h"
 #include "simcore/world/PolygonSampler.h"
 #include "simcore/world/RepeatedStatics.h"
 #include "simcore/world/SpawnSpread.h"
@@ -31,8 +32,9 @@ namespace {
 // Random streams: each use of randomness has its own, so adding one never shifts another.
 enum Stream : std::uint64_t {
     kSpawnX = 1, kSpawnZ, kSpawnHeading, kSpeedFactor, kPhaseOffset, kStride, kWanderStart, kSpotR, kSpotA, kSpawnY,
-    kSpawnPick
+    kSpawnPick, kReaction, kAge
 };
+static_assert(kAge == kAgeStream, "the age's stream is WalkingAge.h's");
 
 constexpr std::uint64_t kSpawnTries = 16;  // draws of a spawned walker's place before it is walked out
 // A spawned group's walkers part until no pair overlaps by more than this, or the rounds
@@ -119,6 +121,7 @@ void World::build(const Scene& scene, const WorldOptions& options)
         m_types.collision.push_back(TypeCollision::of(t));
         const TypeSteering& steering = m_types.steering.back();
         m_types.keepRight.push_back(keepRightShare(t.kind, steering));
+        m_types.ageYears.push_back(t.kind == AgentKind::Pedestrian ? t.variation.ageYears : glm::vec2(0.0f));
         // Reciprocal avoidance needs both sides of a pair to see each other: such a type
         // perceives all round, whatever its view angle.
         const bool allRound = t.viewAngleDeg >= 360.0f || m_types.steering.back().on(Behaviour::ReciprocalAvoidance);
@@ -141,6 +144,8 @@ void World::build(const Scene& scene, const WorldOptions& options)
     // The sources' agents wait off stage until the source phase lets them in.
     m_agents.offstage.assign(m_agents.size(), 0);
     m_sources.sendOffstage(m_agents);
+    m_agents.unstarted.assign(m_agents.size(), 0);
+    scheduleReactions(scene, true);
     m_nav.build(scene, view());
     for (const TypeParams& t : m_types.params) {
         m_hasFliers = m_hasFliers || t.kind == AgentKind::Flier;
@@ -395,7 +400,7 @@ void World::addAgent(const Scene& scene, AgentId id, std::uint16_t type, glm::ve
     m_agents.info.push_back({id, type});
     m_agents.pos.push_back(pos);
     // Fliers start at their stall speed so they never fall out of the sky on frame 1.
-    const float maxSpeed = t.maxSpeed * speedFactor;
+    const float maxSpeed = t.maxSpeed * speedFactor * ageSpeedFactor(m_types.ageYears[type], m_seed, id);
     m_agents.vel.push_back(flier ? fwd * std::min(maxSpeed, std::max(t.minSpeed, 0.5f * maxSpeed)) : glm::vec3(0.0f));
     m_agents.fwd.push_back(fwd);
     m_agents.side.push_back(glm::normalize(glm::cross(fwd, glm::vec3(0.0f, 1.0f, 0.0f))));
@@ -465,6 +470,40 @@ void World::addSourceAgents(const Scene& scene, AgentId& nextId)
         }
     }
     m_sources.build(std::move(agents), std::move(times), std::move(sources));
+}
+
+float World::ageYears(std::size_t i) const
+{
+    return agentAgeYears(m_types.ageYears[m_agents.info[i].typeIndex], m_seed, m_agents.info[i].id);
+}
+
+void World::scheduleReactions(const Scene& scene, bool hold)
+{
+    std::vector<std::uint32_t> agents;
+    std::vector<double> times;
+    for (std::size_t i = 0; i < m_agents.size(); ++i) {
+        const AgentType& t = scene.agentTypes[m_agents.info[i].typeIndex];
+        // Walkers only; a driven vehicle or hero and a source's agent are already stopped.
+        if (t.kind != AgentKind::Pedestrian || (hold && m_agents.stopped[i]) || t.variation.reactionS.y <= 0.0f)
+            continue;
+        const float r = rngRange(m_seed, m_agents.info[i].id, 0, kReaction, t.variation.reactionS.x,
+                                 t.variation.reactionS.y);
+        if (r <= 0.0f)
+            continue;
+        agents.push_back(std::uint32_t(i));
+        times.push_back(double(r));
+    }
+    // Adopting a checkpoint: one that still waits but whose type no longer sets a reaction
+    // time goes now.
+    for (std::size_t i = 0, k = 0; !hold && i < m_agents.size(); ++i) {
+        const bool scheduled = k < agents.size() && agents[k] == i;
+        k += scheduled ? 1 : 0;
+        if (!scheduled && m_agents.unstarted[i])
+            m_agents.unstarted[i] = m_agents.stopped[i] = m_agents.stoppedBefore[i] = 0;
+    }
+    m_starts.build(std::move(agents), std::move(times));
+    if (hold)
+        m_starts.holdAll(m_agents);
 }
 
 std::size_t World::agentsInScene() const

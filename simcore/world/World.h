@@ -16,6 +16,7 @@
 #include "simcore/world/NearestList.h"
 #include "simcore/world/NeighbourGrid.h"
 #include "simcore/world/Sources.h"
+#include "simcore/world/StartPhase.h"
 #include "simcore/world/StaticSet.h"
 #include "simcore/world/StepClock.h"
 #include "simcore/world/StepCounters.h"
@@ -120,6 +121,12 @@ public:
     // Agents the scene's sources let in over the run, and how many of them are still off stage.
     std::size_t sourceAgents() const { return m_sources.scheduled(); }
     std::size_t offstageAgents() const { return m_sources.offstage(m_agents); }
+    // Reaction times (StartPhase.h): when walker i sets off, s from the start (0: at once;
+    // looked up in the schedule, not a column), and whether it still stands waiting.
+    double startTimeS(std::size_t i) const { return m_starts.startS(i); }
+    bool isUnstarted(std::size_t i) const { return m_agents.unstarted[i] != 0; }
+    // Agent i's age, years, when its type sets an age range (WalkingAge.h); else 0.
+    float ageYears(std::size_t i) const;
     // Agents in the scene now: neither off stage nor gone through an exit.
     std::size_t agentsInScene() const;
     // Agent i started inside a wall or obstacle and is still walking out of it (its way
@@ -207,6 +214,10 @@ private:
                   int path, AgentId leader);
     // Every source's arrivals as off-stage agents after the groups' (Sources.h).
     void addSourceAgents(const Scene& scene, AgentId& nextId);
+    // The walkers whose type sets a reaction time, and when each sets off (StartPhase.h);
+    // `hold` stands them where they are, as at the start (not the driven agents or those
+    // off stage). Drawn by id, so adoptState schedules again once kept agents have theirs.
+    void scheduleReactions(const Scene& scene, bool hold);
 
     // Agents inside a wall or obstacle at the start: where each walks out to (Constraints.h).
     void findEscapes();
@@ -244,6 +255,7 @@ private:
     glm::dvec2 m_origin{0.0};         // the scene's (x, z) of this World's (0, 0)
     BrainPhase m_brains;
     SourcePhase m_sources;
+    StartPhase m_starts;  // walkers standing out their reaction times
 };
 
 }  // namespace throng::sim

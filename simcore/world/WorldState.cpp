@@ -136,6 +136,7 @@ void World::restoreDynamicState(const WorldState& s, const std::vector<std::uint
     THRONG_AGENT_COLUMNS(THRONG_RESTORE)
 #undef THRONG_RESTORE
     m_sources.rewind();  // agents let in after the checkpoint are off stage again
+    m_starts.rewind();   // walkers let go after the checkpoint stand again
     // Kept: the traffic system only into a World that has one (an edit that took every
     // lane and vehicle away leaves none).
     if (m_traffic.system && s.trafficSystem)
@@ -336,6 +337,8 @@ bool World::adoptMatched(const WorldState& s, const Scene& stateScene, const Sce
         }
     }
 
+    scheduleReactions(thisScene, false);  // by the kept ids; who still stands is the checkpoint's
+
     const std::vector<Declared> legsBefore = declaredLegs(stateScene, m_seed);
     const std::vector<Declared> legsAfter = declaredLegs(thisScene, m_seed);
     for (std::size_t i = 0; i < n; ++i) {
@@ -366,6 +369,9 @@ bool World::adoptMatched(const WorldState& s, const Scene& stateScene, const Sce
             m_agents.pointLeftS[i] = 0.0f;
         }
         m_agents.pointAt[i] = at;
+        // One still standing out its reaction time goes on standing, whatever its leg.
+        if (m_agents.unstarted[i])
+            m_agents.stopped[i] = m_agents.stoppedBefore[i] = 1;
         m_agents.pointLast[i] = remapByName(s.pointLast[i], stateScene.actionPoints, thisScene.actionPoints);
         if (i >= mode.size() || i >= m_nav.mode.size() || i >= m_nav.plan.size())
             continue;  // no navigation in this scene (its arrays are empty)

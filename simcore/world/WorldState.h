@@ -95,6 +95,7 @@ struct WorldState {
     std::vector<glm::vec2> escapeTo;
     std::vector<std::uint8_t> arrived, stopped, stoppedBefore, onCrosswalk, nearCount, out;
     std::vector<std::uint8_t> offstage;  // a source's agent not yet let in (Sources.h)
+    std::vector<std::uint8_t> unstarted;  // a walker still standing out its reaction time (StartPhase.h)
     std::vector<std::uint32_t> nearIndex;  // World::kMaxNeighbours per agent
     std::vector<glm::vec3> heldForce;
     std::vector<std::int32_t> pointAt, pointLast;

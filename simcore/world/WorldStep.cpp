@@ -25,6 +25,9 @@ void World::stepOnce()
     // Enter: the sources' agents whose time has come, where their bodies fit (Sources.h).
     if (m_sources.scheduled() != 0 && m_sources.enter(m_clock.timeS(), m_agents) != 0)
         m_gridCurrent = false;
+    // Start: walkers whose reaction time has passed set off (StartPhase.h).
+    if (m_starts.pending())
+        m_starts.release(m_clock.timeS(), m_agents);
     // Grid: index agents by cell for neighbour queries (the last step's grid phase, at
     // the end of this function, left it current for these positions).
     if (!m_gridCurrent)

@@ -404,6 +404,7 @@ private slots:
         row("type kind", K::AgentType, "kind", F::Parameters, true);
         row("type behaviours", K::AgentType, "behaviours", F::Parameters, true);
         row("type phase offset", K::AgentType, "phaseMin", F::Parameters, true);
+        row("type reaction time", K::AgentType, "reactionMax", F::Parameters, true);
         row("type looks", K::AgentType, "looks", F::Look, false);
         row("type height range", K::AgentType, "heightMin", F::Look, false);
         row("group count", K::Group, "count", F::Parameters, true);

@@ -153,6 +153,38 @@ private slots:
         QCOMPARE(sceneYaml(window), before);
     }
 
+    // A walker type's reaction time range (RiMEA test 5): typed in, an inverted range refused,
+    // written to the file; a flier type shows no such rows. Each edit one undo step.
+    void walkersSetTheirReactionTimes()
+    {
+        QByteArray yaml = tablesScene();
+        yaml.replace("  - {name: runner, max_speed: 3, max_force: 6}\n",
+                     "  - {name: runner, max_speed: 3, max_force: 6}\n"
+                     "  - {name: gull, kind: flier, max_speed: 8, max_force: 20}\n");
+        MainWindow window;
+        QVERIFY(showWithYaml(window, m_dir, "reactions.yaml", yaml));
+        const QByteArray before = sceneYaml(window);
+        const sim::Scene& scene = window.document().scene();
+        QWidget* panel = window.findChild<QWidget*>("properties");
+        selectInOutliner(window, {{ItemKind::AgentType, 2}});  // gull: no reaction rows
+        QVERIFY(!field<QDoubleSpinBox>(window, "reactionMax")->isVisibleTo(panel));
+
+        selectInOutliner(window, {{ItemKind::AgentType, 0}});  // walker
+        QVERIFY(field<QDoubleSpinBox>(window, "reactionMax")->isVisibleTo(panel));
+        QCOMPARE(field<QDoubleSpinBox>(window, "reactionMin")->value(), 0.0);
+        typeInto(window, field<QDoubleSpinBox>(window, "reactionMin"), "5");  // above its maximum, 0
+        QCOMPARE(scene.agentTypes[0].variation.reactionS, glm::vec2(0.0f));
+        QVERIFY2(lastMessage(window).contains("cannot exceed"), qPrintable(lastMessage(window)));
+        typeInto(window, field<QDoubleSpinBox>(window, "reactionMax"), "30");
+        typeInto(window, field<QDoubleSpinBox>(window, "reactionMin"), "5");
+        QCOMPARE(scene.agentTypes[0].variation.reactionS, glm::vec2(5.0f, 30.0f));
+        QCOMPARE(window.document().undoStack()->count(), 2);
+        QVERIFY2(sceneYaml(window).contains("reaction: [5, 30]"), sceneYaml(window).constData());
+        for (int k = 0; k < 2; ++k)
+            undo(window);
+        QCOMPARE(sceneYaml(window), before);
+    }
+
     void aLightsStopLinesAreEditedInTheirTable()
     {
         MainWindow window;

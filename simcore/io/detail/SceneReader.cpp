@@ -4,6 +4,7 @@
 #include "simcore/io/detail/YamlDocument.h"
 #include "simcore/scene/Clip.h"
 #include "simcore/scene/GroundPolygon.h"
+#include "simcore/scene/WalkingAge.h"
 #include "simcore/world/TypeSteering.h"
 
 #include <algorithm>
@@ -207,7 +208,7 @@ void SceneReader::readVariation(const YAML::Node& node, const std::string& key, 
 {
     if (!m_f.expectMap(node, key))
         return;
-    m_f.checkKeys(node, key, {"looks", "tints", "height", "speed", "phase"});
+    m_f.checkKeys(node, key, {"looks", "tints", "height", "speed", "phase", "reaction", "age"});
     m_f.readStringList(node, "looks", key, v.looks, false);
     if (YAML::Node tints = node["tints"]; tints.IsDefined() && m_f.expectSequence(tints, key + ".tints")) {
         v.tints.clear();
@@ -231,6 +232,14 @@ void SceneReader::readVariation(const YAML::Node& node, const std::string& key, 
     range("height", v.heightScale, Range::Positive);
     range("speed", v.speedFactor, Range::Positive);
     range("phase", v.phaseOffset, Range::Unit);
+    range("reaction", v.reactionS, Range::NonNegative);
+    if (node["age"].IsDefined() && m_f.readVec2(node, "age", key, v.ageYears, false, Range::NonNegative)) {
+        if (v.ageYears.x > v.ageYears.y)
+            m_f.error(node["age"].Mark(), childKey(key, "age"), "range [min, max] has min greater than max");
+        else if (v.ageYears.x < kWalkingAgeMinYears || v.ageYears.y > kWalkingAgeMaxYears)
+            m_f.error(node["age"].Mark(), childKey(key, "age"),
+                      "ages must lie within 10 to 80 years, where Weidmann's walking speeds are known");
+    }
 }
 
 void SceneReader::readAgentTypes(const YAML::Node& node, Scene& scene)
@@ -333,6 +342,11 @@ void SceneReader::readAgentTypes(const YAML::Node& node, Scene& scene)
         if (t.kind != AgentKind::Vehicle && item["car_following"].IsDefined())
             m_f.warning(item["car_following"].Mark(), key + ".car_following",
                         "only vehicle types follow cars; ignored here");
+        for (const char* walkerOnly : {"reaction", "age"})
+            if (const YAML::Node v = item["variation"];
+                t.kind != AgentKind::Pedestrian && v.IsDefined() && v.IsMap() && v[walkerOnly].IsDefined())
+                m_f.warning(v[walkerOnly].Mark(), key + ".variation." + walkerOnly,
+                            std::string("'") + walkerOnly + "' only affects walkers and is ignored here");
         for (const char* flierOnly : {"min_speed", "banking"})
             if (t.kind != AgentKind::Flier && item[flierOnly].IsDefined())
                 m_f.warning(item[flierOnly].Mark(), key + "." + flierOnly,

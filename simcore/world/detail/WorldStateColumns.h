@@ -12,7 +12,7 @@
     X(vel) X(fwd) X(side) X(up) X(nextPos) X(nextVel) X(nextFwd) X(nextSide) X(nextUp) X(resolvedPos) X(wander)        \
         X(nextWander) X(radius) X(maxSpeed) X(phase) X(stride) X(arrivalTime) X(goal) X(path) X(leader) X(goalSpot)    \
             X(pathAlong) X(escaping) X(escapeTo) X(arrived) X(stopped) X(stoppedBefore) X(onCrosswalk) X(nearCount)    \
-                X(out) X(offstage) X(nearIndex) X(heldForce) X(pointAt) X(pointLast) X(pointLeftS)
+                X(out) X(offstage) X(unstarted) X(nearIndex) X(heldForce) X(pointAt) X(pointLast) X(pointLeftS)
 
 // Per-agent navigation arrays (m_nav.NAME in the World).
 #define THRONG_NAV_COLUMNS(X)                                                                                          \
