@@ -449,10 +449,11 @@ private slots:
     // One thread or two (each with chunks to run), the same frames.
     void threadCountsAgree()
     {
-        const std::string yaml = corridor("  - {name: west, type: walker, line: [[-20, -8], [-20, 8]], rate: 30, "
+        // Enough agents that a loaded machine still hands the second thread some chunks.
+        const std::string yaml = corridor("  - {name: west, type: walker, line: [[-20, -8], [-20, 8]], rate: 120, "
                                           "arrivals: poisson, goal: door}\n"
                                           "  - {name: yard, type: runner, rect: {min: [-28, -8], max: [-24, 8]}, "
-                                          "rate: 10, goal: door}\n",
+                                          "rate: 60, goal: door}\n",
                                           24.0f, 12.0f);
         const Run one = record(yaml, 12.0, 1);
         const Scene s = parseSources(yaml);
@@ -466,7 +467,7 @@ private slots:
             world.snapshot(frame);
             cache.append(frame);
         }
-        QVERIFY(world.agentCount() > 400);
+        QVERIFY(world.agentCount() > 2000);
         for (const std::uint64_t chunks : world.team().chunksRun())
             QVERIFY2(chunks > 0, "a thread ran no chunk");
         QCOMPARE(cache.hash(), one.cache.hash());
