@@ -286,6 +286,79 @@ Outcome assignedExits(const std::vector<sim::Scene>& scenes)
     return result;
 }
 
+// Where each walker of `world` left: the exit goal nearest its position on the step it went
+// out, read from the positions alone (-1: still in). Steps until all are out or limitS.
+std::vector<std::int32_t> exitsTaken(sim::World& world, double limitS)
+{
+    const std::size_t n = world.agentCount();
+    std::vector<std::int32_t> leftBy(n, -1);
+    std::size_t out = 0;
+    while (out < n && world.timeS() < limitS) {
+        world.step();
+        for (std::size_t i = 0; i < n; ++i) {
+            if (leftBy[i] >= 0 || !world.isOut(i))
+                continue;
+            const glm::vec2 p(world.positions()[i].x, world.positions()[i].z);
+            float nearest = INFINITY;
+            for (std::size_t g = 0; g < world.goals().size(); ++g) {
+                const sim::Goal& goal = world.goals()[g];
+                if (goal.exit && glm::distance(p, goal.position) < nearest) {
+                    nearest = glm::distance(p, goal.position);
+                    leftBy[i] = std::int32_t(g);
+                }
+            }
+            ++out;
+        }
+    }
+    return leftBy;
+}
+
+// Test 11: 1,000 walkers choose between a near exit and a far one in the same wall. Those
+// for whom the far one is farthest (the quarter nearest the west wall) leave by the near
+// one (90 % or more), the congestion there sends others to the far one (100 or more), and
+// the room empties sooner than when every walker takes the near one.
+Outcome exitChoice(const std::vector<sim::Scene>& scenes)
+{
+    sim::World choosing(scenes[0]);
+    // The quarter of the crowd for whom the far exit is the farthest: nearest the west wall.
+    std::vector<float> startX;
+    for (const glm::vec3& p : choosing.positions())
+        startX.push_back(p.x);
+    std::vector<float> sorted = startX;
+    std::sort(sorted.begin(), sorted.end());
+    const float westQuarter = sorted.empty() ? 0.0f : sorted[sorted.size() / 4];
+    const std::vector<std::int32_t> leftBy = exitsTaken(choosing, 900.0);
+    const double choiceS = choosing.timeS();
+    sim::Scene nearest = scenes[0];
+    for (sim::SpawnGroup& g : nearest.groups)
+        if (!g.exits.empty()) {
+            g.goal = g.exits.front();
+            g.exits.clear();
+        }
+    sim::World allNear(nearest);
+    const std::vector<std::int32_t> nearOnly = exitsTaken(allNear, 900.0);
+    std::size_t near = 0, far = 0, out = 0, outNear = 0, west = 0, westNear = 0;
+    for (std::size_t i = 0; i < leftBy.size(); ++i) {
+        near += leftBy[i] == 0 ? 1 : 0;
+        far += leftBy[i] == 1 ? 1 : 0;
+        if (startX[i] < westQuarter) {
+            ++west;
+            westNear += leftBy[i] == 0 ? 1 : 0;
+        }
+    }
+    for (const std::int32_t g : nearOnly)
+        outNear += g >= 0 ? 1 : 0;
+    out = near + far;
+    Outcome result;
+    result.measured = format("%.0f by the near exit, %.0f by the far one", double(near), double(far)) +
+                      format("; of the western quarter, %.0f of %.0f by the near one", double(westNear), double(west)) +
+                      format("; all %.0f out after %.1f s (%.1f s when every walker takes the near exit)",
+                             double(out), choiceS, allNear.timeS());
+    result.pass = leftBy.size() == 1000 && out == leftBy.size() && outNear == nearOnly.size() &&
+                  10 * westNear >= 9 * west && far >= 100 && choiceS < allNear.timeS();
+    return result;
+}
+
 // One run of test 12's room with its passage `widthM` wide: the walls named neck_* and
 // front_* moved to the passage's new sides.
 struct BottleneckRun {
@@ -411,8 +484,11 @@ const std::vector<RimeaTest>& rimeaTests()
         {10, "Assigned exits", "24 walkers in 12 rooms off a corridor each leave by the exit assigned to them, "
                                "16 of them by the farther of the two",
          {"rimea-10-assigned-exits.yaml"}, assignedExits, {}},
-        {11, "Exit choice under congestion", "walkers also use a farther exit when the near one is congested", {},
-         nullptr, "planned: exit choice"},
+        {11, "Exit choice under congestion", "1,000 walkers choose between two exits in one wall: of the quarter "
+                                             "farthest from the far exit 90 % or more leave by the near one, at "
+                                             "least 100 walkers by the far one, and the room empties sooner than "
+                                             "when all take the near one",
+         {"rimea-11-exit-choice.yaml"}, exitChoice, {}},
         {12, "Bottleneck", "150 walkers leave a room by a passage 2 m long and 0.8 to 2.4 m wide: the flow grows "
                            "with the width, a queue forms in front (2 /m2 or more) and none behind (under half that)",
          {"rimea-12-bottleneck.yaml"}, bottleneckWidths, {}},

@@ -133,6 +133,10 @@ void writeSceneSet(YamlWriter& w, const Scene& s)
             }
             w.kvOpt("goal", g.goal);
             w.kvOpt("path", g.path);
+            if (!g.exits.empty()) {
+                w.key("exits");
+                o << YAML::Flow << g.exits;
+            }
             if (g.leader != 0)
                 w.kv("leader", std::to_string(g.leader));
             if (g.altitudeM != glm::vec2(0.0f)) {

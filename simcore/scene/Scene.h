@@ -160,6 +160,9 @@ struct SpawnGroup {
     std::uint32_t leader = 0;        // AgentId the members pursue, evade or follow; 0 = none
     glm::vec2 altitudeM{0.0f};       // fliers: spawn height range [min, max] in m; ground agents ignore it
     std::vector<glm::vec2> points{}; // Polygon: corners (x, z) in order, >= 3, not crossing itself
+    // Exit goals the members choose among, each the one it expects to leave by soonest
+    // (ExitChoice.h); instead of goal, path and leader. Empty = none.
+    std::vector<std::string> exits{};
     bool operator==(const SpawnGroup&) const = default;
 };
 

@@ -147,6 +147,11 @@ void World::build(const Scene& scene, const WorldOptions& options)
     m_agents.unstarted.assign(m_agents.size(), 0);
     scheduleReactions(scene, true);
     m_nav.build(scene, view());
+    if (m_exits.active()) {
+        for (const std::int32_t g : m_exits.goals())
+            m_nav.ensureField(view(), std::size_t(g));
+        takeExits(m_exits.first(view()));
+    }
     for (const TypeParams& t : m_types.params) {
         m_hasFliers = m_hasFliers || t.kind == AgentKind::Flier;
         m_allFliers = m_allFliers && t.kind == AgentKind::Flier;
@@ -240,12 +245,26 @@ void World::buildAgents(const Scene& scene)
         addAgent(scene, a.id, std::uint16_t(std::max(0, types(a.type))), a.position, glm::radians(a.headingDeg),
                  goals(a.goal), paths(a.path), a.leader);
     AgentId next = firstSpawnedId(scene);
+    // A group that chooses among exits (ExitChoice.h) starts bound for the first; the choice
+    // is made once the World's flow fields exist.
+    std::vector<std::int32_t> choosesFrom(scene.agents.size(), -1);
+    std::vector<std::vector<std::int32_t>> exitSets;
     for (std::size_t g = 0; g < scene.groups.size(); ++g) {
         const SpawnGroup& group = scene.groups[g];
-        spawnGroup(scene, group, g, std::uint16_t(std::max(0, types(group.type))), goals(group.goal),
-                   paths(group.path), next);
+        spawnGroup(scene, group, g, std::uint16_t(std::max(0, types(group.type))),
+                   group.exits.empty() ? goals(group.goal) : goals(group.exits[0]), paths(group.path), next);
+        std::int32_t set = -1;
+        if (!group.exits.empty()) {
+            set = std::int32_t(exitSets.size());
+            exitSets.emplace_back();
+            for (const std::string& e : group.exits)
+                exitSets.back().push_back(goals(e));
+        }
+        choosesFrom.resize(m_agents.info.size(), set);
     }
     addSourceAgents(scene, next);
+    choosesFrom.resize(m_agents.info.size(), -1);
+    m_exits.build(std::move(choosesFrom), std::move(exitSets));
 
     // Leaders were given as ids; the step reads dense indices.
     std::map<AgentId, std::int32_t> denseOf;
@@ -470,6 +489,17 @@ void World::addSourceAgents(const Scene& scene, AgentId& nextId)
         }
     }
     m_sources.build(std::move(agents), std::move(times), std::move(sources));
+}
+
+void World::takeExits(const std::vector<ExitChoice::Switch>& choices)
+{
+    for (const ExitChoice::Switch& c : choices) {
+        const Goal& g = m_set.goals[std::size_t(c.goal)];
+        const AgentId id = m_agents.info[c.agent].id;
+        m_agents.goal[c.agent] = c.goal;
+        const float u = rngUniform(m_seed, id, 0, kSpotR), v = rngUniform(m_seed, id, 0, kSpotA);
+        m_agents.goalSpot[c.agent] = detail::goalSpot(g.position, g.radiusM, g.exit, m_agents.radius[c.agent], u, v);
+    }
 }
 
 float World::ageYears(std::size_t i) const

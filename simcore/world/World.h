@@ -15,6 +15,7 @@
 #include "simcore/world/MovePhase.h"
 #include "simcore/world/NearestList.h"
 #include "simcore/world/NeighbourGrid.h"
+#include "simcore/world/ExitChoice.h"
 #include "simcore/world/Sources.h"
 #include "simcore/world/StartPhase.h"
 #include "simcore/world/StaticSet.h"
@@ -218,6 +219,8 @@ private:
     // `hold` stands them where they are, as at the start (not the driven agents or those
     // off stage). Drawn by id, so adoptState schedules again once kept agents have theirs.
     void scheduleReactions(const Scene& scene, bool hold);
+    // Sends each walker of `choices` to its exit, aiming at its own spot there (ExitChoice.h).
+    void takeExits(const std::vector<ExitChoice::Switch>& choices);
 
     // Agents inside a wall or obstacle at the start: where each walks out to (Constraints.h).
     void findEscapes();
@@ -256,6 +259,7 @@ private:
     BrainPhase m_brains;
     SourcePhase m_sources;
     StartPhase m_starts;  // walkers standing out their reaction times
+    ExitChoice m_exits;   // walkers choosing among exits
 };
 
 }  // namespace throng::sim

@@ -142,6 +142,15 @@ void WorldNav::build(const Scene& scene, const StepView& v)
         }
 }
 
+void WorldNav::ensureField(const StepView& v, std::size_t g)
+{
+    if (!active || g >= hasField.size() || hasField[g])
+        return;
+    const FlowGoal goal{v.set.goals[g].position, v.set.goals[g].radiusM};
+    fields[g].build(grid, std::span<const FlowGoal>(&goal, 1));
+    hasField[g] = 1;
+}
+
 glm::vec2 WorldNav::startOf(const StepView& v, std::size_t i) const
 {
     // One that started inside a wall or obstacle walks out first (Constraints.h).

@@ -86,6 +86,9 @@ struct WorldNav {
     // World only through the view and write only this state.
     void build(const Scene& scene, const StepView& v);
     void beforeStep(const StepView& v);
+    // Builds goal g's flow field where walkers navigate and it has none yet (for an exit
+    // that walkers may choose, ExitChoice.h).
+    void ensureField(const StepView& v, std::size_t g);
 
 private:
     glm::vec2 startOf(const StepView& v,

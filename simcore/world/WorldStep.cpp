@@ -28,6 +28,9 @@ void World::stepOnce()
     // Start: walkers whose reaction time has passed set off (StartPhase.h).
     if (m_starts.pending())
         m_starts.release(m_clock.timeS(), m_agents);
+    // Choose: walkers whose turn it is choose their exit again (ExitChoice.h).
+    if (m_exits.active() && ExitChoice::roundAt(m_clock.timeS(), double(m_clock.dt)))
+        takeExits(m_exits.choose(view(), m_clock.timeS()));
     // Grid: index agents by cell for neighbour queries (the last step's grid phase, at
     // the end of this function, left it current for these positions).
     if (!m_gridCurrent)

@@ -67,7 +67,7 @@ private slots:
         for (const auto& [number, o] : tests) {
             qInfo("RiMEA %d: %s: %s", number, qPrintable(o["result"].toString()), qPrintable(o["measured"].toString()));
             if (number == 1 || number == 5 || number == 6 || number == 7 || number == 9 || number == 10 ||
-                number == 12 || number == 15) {
+                number == 11 || number == 12 || number == 15) {
                 QCOMPARE(o["result"].toString(), QString("pass"));
                 QVERIFY(!o["criterion"].toString().isEmpty());
             } else {
@@ -93,6 +93,9 @@ private slots:
         QVERIFY2(ratio >= 1.6 && ratio <= 2.4, qPrintable(tests.at(9)["measured"].toString()));
         QVERIFY(tests.at(10)["measured"].toString().startsWith(
             "24 of 24 left by their own exit (16 of them assigned the farther one); 24 out after"));
+        QVERIFY2(tests.at(11)["measured"].toString().contains("; all 1000 out after"),
+                 qPrintable(tests.at(11)["measured"].toString()));
+        QVERIFY(numberAfter(tests.at(11)["measured"].toString(), "near exit,") >= 100.0);
         // Test 12: six widths, each flow above the last, a queue in front and none behind.
         const QString neck = tests.at(12)["measured"].toString();
         const QStringList widths = neck.split("; ");
@@ -133,11 +136,12 @@ private slots:
         QVERIFY(out.contains("RiMEA 9: Four against two exits: FAIL (" + dir.filePath("rimea-09-four-exits.yaml")));
         // Tests 10, 12 and 15 have no scenes in the folder: each names its missing file.
         QVERIFY(out.contains("RiMEA 10: Assigned exits: FAIL (" + dir.filePath("rimea-10-assigned-exits.yaml")));
-        QVERIFY2(out.contains("0 passed, 8 failed, 8 not run\n"), qPrintable(out));
+        QVERIFY2(out.contains("0 passed, 9 failed, 7 not run\n"), qPrintable(out));
     }
 
     // Each newer test fails on a scene that breaks it: walkers who all set off at once (5); a
-    // crowd whose speeds do not follow its ages (7); a corridor whose east end is walled
+    // crowd whose speeds do not follow its ages (7); a crowd all sent to the near exit (11);
+    // a corridor whose east end is walled
     // off keeps the walkers assigned to it in (10); a room with no passage makes no queue
     // and the same flow at every width (12); a corridor walled off past the corner lets
     // nobody out (15).
@@ -164,6 +168,9 @@ private slots:
         copy("rimea-07-walking-speed-by-age.yaml", [](QByteArray text) {
             return text.replace("variation: {speed: [1, 1], age: [20, 80]}", "variation: {speed: [0.8, 1.2]}");
         });
+        copy("rimea-11-exit-choice.yaml", [](QByteArray text) {
+            return text.replace("exits: [west_exit, east_exit]", "goal: west_exit");
+        });
         copy("rimea-10-assigned-exits.yaml", addWall("{points: [[38, -1], [38, 1]]}"));
         copy("rimea-15-large-crowd-corner.yaml", addWall("{points: [[36, -20], [42, -20]]}"));
         copy("rimea-12-bottleneck.yaml", [](const QByteArray& text) {
@@ -180,6 +187,8 @@ private slots:
         QVERIFY2(out.contains(QRegularExpression("measured: +0 of 10 set off within 0.25 s")), qPrintable(out));
         QVERIFY2(out.contains("RiMEA 7: Walking speed by age: FAIL\n"), qPrintable(out));
         QVERIFY2(out.contains("RiMEA 10: Assigned exits: FAIL\n"), qPrintable(out));
+        QVERIFY2(out.contains("RiMEA 11: Exit choice under congestion: FAIL\n"), qPrintable(out));
+        QVERIFY2(out.contains(QRegularExpression("measured: +1000 by the near exit, 0 by the far one")), qPrintable(out));
         QVERIFY2(out.contains(QRegularExpression("measured: +1[0-9] of 24 left by their own exit")), qPrintable(out));
         QVERIFY2(out.contains("RiMEA 12: Bottleneck: FAIL\n"), qPrintable(out));
         QVERIFY2(out.contains("RiMEA 15: 500 round a corner: FAIL\n"), qPrintable(out));

@@ -465,7 +465,8 @@ void SceneReader::readGroups(const YAML::Node& node, Scene& scene)
             continue;
         m_f.checkKeys(
             item, key,
-            {"name", "type", "count", "rect", "circle", "shape", "points", "goal", "path", "leader", "altitude"});
+            {"name", "type", "count", "rect", "circle", "shape", "points", "goal", "path", "leader", "altitude",
+             "exits"});
         SpawnGroup g;
         if (m_f.readName(item, "name", key, g.name, true))
             claimName(item, key, g.name, "group");
@@ -480,6 +481,7 @@ void SceneReader::readGroups(const YAML::Node& node, Scene& scene)
             checkRef(item, "path", key, g.path, known("path", g.path), "path");
         if (m_f.readU32(item, "leader", key, g.leader, false) && item["leader"].IsDefined())
             m_leaderRefs.push_back({item["leader"].Mark(), key + ".leader", g.leader});
+        readGroupExits(item, key, g, scene);
         if (item["altitude"].IsDefined() &&
             m_f.readVec2(item, "altitude", key, g.altitudeM, false, Range::NonNegative)) {
             const AgentType* type = scene.findAgentType(g.type);
@@ -490,6 +492,28 @@ void SceneReader::readGroups(const YAML::Node& node, Scene& scene)
                             "'altitude' only affects fliers and is ignored here");
         }
         scene.groups.push_back(std::move(g));
+    }
+}
+
+void SceneReader::readGroupExits(const YAML::Node& item, const std::string& key, SpawnGroup& g, const Scene& scene)
+{
+    if (!item["exits"].IsDefined() || !m_f.readStringList(item, "exits", key, g.exits, false))
+        return;
+    const YAML::Node exits = item["exits"];
+    if (g.exits.size() < 2)
+        m_f.error(exits.Mark(), key + ".exits", "list at least two exits to choose among");
+    if (!g.goal.empty() || !g.path.empty() || g.leader != 0)
+        m_f.error(exits.Mark(), key + ".exits", "the members choose their exit: give no goal, path or leader too");
+    for (std::size_t k = 0; k < g.exits.size(); ++k) {
+        const std::string ek = indexKey(key + ".exits", k);
+        const Goal* goal = scene.findGoal(g.exits[k]);
+        if (!goal)
+            m_f.error(exits[k].Mark(), ek, "no goal named '" + g.exits[k] + "'");
+        else if (!goal->exit)
+            m_f.error(exits[k].Mark(), ek, "goal '" + g.exits[k] + "' is not an exit (exit: true)");
+        for (std::size_t j = 0; j < k; ++j)
+            if (g.exits[j] == g.exits[k])
+                m_f.error(exits[k].Mark(), ek, "'" + g.exits[k] + "' is listed twice");
     }
 }
 
