@@ -23,7 +23,7 @@ SceneField propertyField(ItemKind kind, const QString& key)
         return SceneField::Type;
     if (name == "brain")
         return SceneField::Brain;
-    if (oneOf(name, {"goal", "path", "leader", "lane", "stopLines"}))
+    if (oneOf(name, {"goal", "path", "leader", "exits", "lane", "stopLines"}))
         return SceneField::Route;
     if (oneOf(name, {"x", "z", "points", "minX", "minZ", "maxX", "maxZ", "centreX", "centreZ", "fromX", "fromZ", "toX",
                      "toZ", "at"}))

@@ -408,6 +408,7 @@ private slots:
         row("type looks", K::AgentType, "looks", F::Look, false);
         row("type height range", K::AgentType, "heightMin", F::Look, false);
         row("group count", K::Group, "count", F::Parameters, true);
+        row("group exits", K::Group, "exits", F::Route, true);
         row("group corner", K::Group, "minX", F::Position, true);
         row("group corners", K::Group, "points/7", F::Position, true);
         row("group shape", K::Group, "shape", F::Shape, true);

@@ -11,6 +11,7 @@
 
 #include "editor/panels/OutlinerPanel.h"
 #include "editor/viewport/Viewport.h"
+#include "simcore/io/SceneIO.h"
 
 #include <QColorDialog>
 #include <QComboBox>
@@ -183,6 +184,57 @@ private slots:
         for (int k = 0; k < 2; ++k)
             undo(window);
         QCOMPARE(sceneYaml(window), before);
+    }
+
+    // A group's exits (RiMEA test 11), typed as a list: one exit, a goal that is not an exit,
+    // an unknown name and a name twice are refused; two exits take the place of the group's
+    // path in one undo step, the goal, path and leader rows hide while it chooses, and an
+    // empty list shows them again; undo gives back the path.
+    void aGroupChoosesAmongExits()
+    {
+        QByteArray yaml = tablesScene();
+        yaml.replace("goals:\n", "goals:\n  - {name: north_door, position: [0, -30], radius: 1, exit: true}\n"
+                                 "  - {name: south_door, position: [0, 30], radius: 1, exit: true}\n");
+        MainWindow window;
+        QVERIFY(showWithYaml(window, m_dir, "exits.yaml", yaml));
+        const QByteArray before = sceneYaml(window);
+        const sim::Scene& scene = window.document().scene();
+        QWidget* panel = window.findChild<QWidget*>("properties");
+        selectInOutliner(window, {{ItemKind::Group, 0}});  // loopers, on path loop
+        auto* exits = field<QLineEdit>(window, "exits");
+        showInPanel(window, exits);
+        QCOMPARE(exits->text(), QString());
+        QVERIFY(field<QComboBox>(window, "path")->isVisibleTo(panel));
+        const struct {
+            const char* typed;
+            const char* message;
+        } refused[] = {{"north_door", "at least two"}, {"north_door, east", "not an exit"},
+                       {"north_door, back_door", "no goal named"}, {"north_door, north_door", "listed twice"}};
+        for (const auto& r : refused) {
+            typeInto(window, exits, r.typed);
+            QVERIFY(scene.groups[0].exits.empty());
+            QVERIFY2(lastMessage(window).contains(r.message), qPrintable(lastMessage(window)));
+        }
+        QCOMPARE(window.document().undoStack()->count(), 0);
+
+        typeInto(window, exits, "north_door, south_door");
+        QCOMPARE(scene.groups[0].exits, (std::vector<std::string>{"north_door", "south_door"}));
+        QCOMPARE(scene.groups[0].path, std::string());
+        QCOMPARE(window.document().undoStack()->count(), 1);
+        QVERIFY(!field<QComboBox>(window, "path")->isVisibleTo(panel));
+        QVERIFY(!field<QComboBox>(window, "goal")->isVisibleTo(panel));
+        QVERIFY(!field<QComboBox>(window, "leader")->isVisibleTo(panel));
+        QVERIFY2(sceneYaml(window).contains("exits: [north_door, south_door]"), sceneYaml(window).constData());
+        QVERIFY(sim::parseScene(sceneYaml(window).toStdString(), "exits.yaml", "").ok());
+
+        // A second edit of the same row merges into the first: one undo step gives back the path.
+        typeInto(window, exits, "");
+        QVERIFY(scene.groups[0].exits.empty());
+        QVERIFY(field<QComboBox>(window, "goal")->isVisibleTo(panel));
+        QCOMPARE(window.document().undoStack()->count(), 1);
+        undo(window);
+        QCOMPARE(sceneYaml(window), before);
+        QCOMPARE(scene.groups[0].path, std::string("loop"));
     }
 
     void aLightsStopLinesAreEditedInTheirTable()
