@@ -141,6 +141,7 @@ void addAgentTypeRows(PropertyForm& form)
                                     });
     form.addNumberFields();
     addAgentTypeLookRows(form);
+    addAgentTypeAgeRow(form);
     addAgentTypeCollisionRows(form);
     auto* table = new BehaviourTable(form, form.owner());
     form.addRow(tr("Behaviours"), table, [table] { table->refresh(); });

@@ -28,8 +28,11 @@ void addVehicleRows(PropertyForm& form);
 // is placed agents, which may not lead themselves), and an agent's look, tint and height.
 void addLeaderRow(PropertyForm& form, std::function<std::uint32_t&(sim::Scene&, std::size_t)> locate, bool agents);
 void addAgentVariationRows(PropertyForm& form);
-// PropertyRowsType.cpp: a type's looks, tints and character; its collision layers.
+// PropertyRowsType.cpp: a type's looks, tints and character; its walkers' ages; its
+// collision layers.
 void addAgentTypeLookRows(PropertyForm& form);
+// The walkers' age range, typed as two numbers ("20 to 80"; empty for none).
+void addAgentTypeAgeRow(PropertyForm& form);
 void addAgentTypeCollisionRows(PropertyForm& form);
 
 }  // namespace throng::editor

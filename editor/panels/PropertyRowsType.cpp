@@ -1,14 +1,18 @@
-// The properties panel's rows for an agent type's look and collisions: the variation's
+// The properties panel's rows for an agent type's look, ages and collisions: the variation's
 // looks (a comma list) and tints (a colour table), the character (a built-in name or a
-// .glb/.gltf file), the collision layer and the layers it avoids.
+// .glb/.gltf file), the walkers' age range (two numbers), the collision layer and the
+// layers it avoids.
 #include "editor/panels/PropertyRows.h"
 
 #include "editor/ComboTypeAhead.h"
 #include "editor/panels/PropertyForm.h"
 #include "editor/panels/TintTable.h"
 
+#include "simcore/scene/WalkingAge.h"
+
 #include <QComboBox>
 #include <QLineEdit>
+#include <QRegularExpression>
 #include <QSignalBlocker>
 
 #include <algorithm>
@@ -129,6 +133,30 @@ void addAgentTypeLookRows(PropertyForm& form)
             character->addItem(QString::fromStdString(name));
         const std::optional<std::string> value = form.common(locate);
         character->setCurrentText(!value ? tr("(mixed)") : value->empty() ? tr("(none)") : QString::fromStdString(*value));
+    });
+}
+
+void addAgentTypeAgeRow(PropertyForm& form)
+{
+    addTextRow<glm::vec2>(form, "ages", tr("Ages (years)"), [](sim::Scene& s, std::size_t i) -> glm::vec2& {
+        return s.agentTypes[i].variation.ageYears;
+    }, [](const glm::vec2& ages) {
+        return sim::hasAge(ages) ? tr("%1 to %2").arg(double(ages.x)).arg(double(ages.y)) : QString();
+    }, [](const QString& text, glm::vec2& out) {
+        static const QRegularExpression number(R"([0-9]+(\.[0-9]+)?)");
+        std::vector<float> years;
+        for (auto it = number.globalMatch(text); it.hasNext();)
+            years.push_back(it.next().captured(0).toFloat());
+        const QString rest = QString(text).remove(number).remove(QRegularExpression(R"([\s,\-]|to)"));
+        if (years.size() > 2 || !rest.isEmpty())
+            return tr("Type two ages, such as \"20 to 80\", or nothing for none; the ages stay as they were.");
+        out = years.empty() ? glm::vec2(0.0f) : glm::vec2(years.front(), years.back());
+        if (!years.empty() && (out.x < sim::kWalkingAgeMinYears || out.y > sim::kWalkingAgeMaxYears))
+            return tr("Ages lie within 10 to 80 years, where Weidmann's walking speeds are known; the ages stay as "
+                      "they were.");
+        if (out.x > out.y)
+            return tr("The first age is above the second; the ages stay as they were.");
+        return QString();
     });
 }
 

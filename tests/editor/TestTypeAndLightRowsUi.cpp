@@ -155,8 +155,10 @@ private slots:
     }
 
     // A walker type's reaction time range (RiMEA test 5): typed in, an inverted range refused,
-    // written to the file; a flier type shows no such rows. Each edit one undo step.
-    void walkersSetTheirReactionTimes()
+    // written to the file; a flier type shows no such rows. Its age range (RiMEA test 7): ages
+    // off Weidmann's curve, an inverted range and words refused, "20 to 80" taken, nothing
+    // for none. Each row's edits one undo step.
+    void walkersSetTheirReactionTimesAndAges()
     {
         QByteArray yaml = tablesScene();
         yaml.replace("  - {name: runner, max_speed: 3, max_force: 6}\n",
@@ -181,6 +183,30 @@ private slots:
         QCOMPARE(scene.agentTypes[0].variation.reactionS, glm::vec2(5.0f, 30.0f));
         QCOMPARE(window.document().undoStack()->count(), 2);
         QVERIFY2(sceneYaml(window).contains("reaction: [5, 30]"), sceneYaml(window).constData());
+
+        auto* ages = field<QLineEdit>(window, "ages");
+        QCOMPARE(ages->text(), QString());
+        const struct {
+            const char* typed;
+            const char* message;
+        } refused[] = {{"5 to 30", "within 10 to 80"}, {"30 to 90", "within 10 to 80"},
+                       {"60 to 20", "above the second"}, {"old", "Type two ages"}, {"20 to 40 to 60", "Type two ages"}};
+        for (const auto& r : refused) {
+            typeInto(window, ages, r.typed);
+            QCOMPARE(scene.agentTypes[0].variation.ageYears, glm::vec2(0.0f));
+            QVERIFY2(lastMessage(window).contains(r.message), qPrintable(lastMessage(window)));
+        }
+        typeInto(window, ages, "20 to 80");
+        QCOMPARE(scene.agentTypes[0].variation.ageYears, glm::vec2(20.0f, 80.0f));
+        QCOMPARE(ages->text(), QString("20 to 80"));
+        QVERIFY2(sceneYaml(window).contains("age: [20, 80]"), sceneYaml(window).constData());
+        QVERIFY(sim::parseScene(sceneYaml(window).toStdString(), "ages.yaml", "").ok());
+        QCOMPARE(window.document().undoStack()->count(), 3);
+        // Cleared again in the same row: the edit merges with the last, which then undoes nothing.
+        typeInto(window, ages, "");
+        QCOMPARE(scene.agentTypes[0].variation.ageYears, glm::vec2(0.0f));
+        QVERIFY(!sceneYaml(window).contains("age:"));
+        QCOMPARE(window.document().undoStack()->count(), 2);
         for (int k = 0; k < 2; ++k)
             undo(window);
         QCOMPARE(sceneYaml(window), before);
