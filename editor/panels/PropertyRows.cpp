@@ -9,9 +9,6 @@
 #include "simcore/scene/Clip.h"
 #include "simcore/scene/SpawnArea.h"
 
-#include <QComboBox>
-#include <QLineEdit>
-
 #include <algorithm>
 #include <cmath>
 #include <set>
@@ -147,63 +144,19 @@ void addAgentTypeRows(PropertyForm& form)
     form.addRow(tr("Behaviours"), table, [table] { table->refresh(); });
 }
 
-namespace {
-
-// Why `names` cannot be a group's exits, or empty: at least two, each an exit goal, none twice.
-QString exitsProblem(const sim::Scene& scene, const std::vector<std::string>& names)
+void addGroupRows(PropertyForm& form)
 {
-    if (names.size() == 1)
-        return tr("List at least two exits to choose among, or none; the exits stay as they were.");
-    for (std::size_t k = 0; k < names.size(); ++k) {
-        const sim::Goal* goal = scene.findGoal(names[k]);
-        const QString name = QString::fromStdString(names[k]);
-        if (!goal)
-            return tr("There is no goal named \"%1\"; the exits stay as they were.").arg(name);
-        if (!goal->exit)
-            return tr("Goal \"%1\" is not an exit; the exits stay as they were.").arg(name);
-        if (std::find(names.begin(), names.begin() + std::ptrdiff_t(k), names[k]) != names.begin() + std::ptrdiff_t(k))
-            return tr("\"%1\" is listed twice; the exits stay as they were.").arg(name);
-    }
-    return QString();
-}
-
-// The exits a group's walkers choose among (ExitChoice.h), typed as a list of goal names. A
-// group chooses its exit or has a goal, path or leader: setting exits clears those in the
-// same undo step, and their rows hide while the group chooses.
-void addGroupExitsRow(PropertyForm& form)
-{
-    QWidget* goal = form.owner()->findChildren<QComboBox*>("goal").last();
-    QWidget* path = form.owner()->findChildren<QComboBox*>("path").last();
-    QWidget* leader = form.owner()->findChildren<QComboBox*>("leader").last();
-    auto* edit = new QLineEdit(form.owner());
-    edit->setObjectName("exits");
-    edit->setPlaceholderText(tr("none: the group has a goal or path"));
-    edit->setToolTip(tr("Exit goals the members choose among, separated by commas: each takes the one it expects to "
-                        "leave by soonest (its walk, or the queue ahead of it)"));
-    using Names = std::vector<std::string>;
-    const PropertyForm::Locate<sim::SpawnGroup> group = [](sim::Scene& s, std::size_t i) -> auto& {
-        return s.groups[i];
-    };
-    auto show = [](const Names& names) {
-        QStringList out;
-        for (const std::string& n : names)
-            out << QString::fromStdString(n);
-        return out.join(", ");
-    };
-    QObject::connect(edit, &QLineEdit::editingFinished, &form, [&form, edit, group, show] {
-        const std::optional<Names> now = form.common<Names>(THRONG_AT(groups, exits));
-        if ((!now && edit->text() == tr("(mixed)")) || (now && edit->text() == show(*now)))
-            return;
-        Names names;
-        for (const QString& part : edit->text().split(',', Qt::SkipEmptyParts))
-            if (!part.trimmed().isEmpty())
-                names.push_back(part.trimmed().toStdString());
-        if (const QString why = exitsProblem(form.scene(), names); !why.isEmpty()) {
-            form.refuse(edit, why);
-            return;
-        }
-        edit->setToolTip(QString());
-        form.applyEach<sim::SpawnGroup>("exits", tr("Exits"), group, [names](const sim::SpawnGroup& now) {
+    form.addName();
+    form.addChoice("type", tr("Type"), namesOfKind(ItemKind::AgentType), THRONG_AT(groups, type), false);
+    form.addInteger<std::uint32_t>("count", tr("Count"), 0, 1000000, THRONG_AT(groups, count));
+    form.addChoice("goal", tr("Goal"), namesOfKind(ItemKind::Goal), THRONG_AT(groups, goal), true);
+    form.addChoice("path", tr("Path"), namesOfKind(ItemKind::Path), THRONG_AT(groups, path), true);
+    addLeaderRow(form, THRONG_AT(groups, leader), false);
+    // A group chooses its exit or has a goal, path or leader: exits clear those.
+    addExitsRow(form, THRONG_AT(groups, exits), [&form](const std::vector<std::string>& names) {
+        form.applyEach<sim::SpawnGroup>("exits", tr("Exits"), [](sim::Scene& s, std::size_t i) -> auto& {
+            return s.groups[i];
+        }, [names](const sim::SpawnGroup& now) {
             sim::SpawnGroup out = now;
             out.exits = names;
             if (!names.empty()) {
@@ -213,31 +166,7 @@ void addGroupExitsRow(PropertyForm& form)
             }
             return out;
         });
-    });
-    form.addRow(tr("Exits"), edit, [&form, edit, show, goal, path, leader] {
-        const QSignalBlocker block(edit);
-        const std::optional<Names> value = form.common<Names>(THRONG_AT(groups, exits));
-        edit->setText(value ? show(*value) : tr("(mixed)"));
-        const std::vector<std::size_t> items = form.indices();
-        const bool choosing = std::any_of(items.begin(), items.end(), [&](std::size_t i) {
-            return !form.scene().groups[i].exits.empty();
-        });
-        for (QWidget* row : {goal, path, leader})
-            form.setRowShown(row, !choosing);
-    });
-}
-
-}  // namespace
-
-void addGroupRows(PropertyForm& form)
-{
-    form.addName();
-    form.addChoice("type", tr("Type"), namesOfKind(ItemKind::AgentType), THRONG_AT(groups, type), false);
-    form.addInteger<std::uint32_t>("count", tr("Count"), 0, 1000000, THRONG_AT(groups, count));
-    form.addChoice("goal", tr("Goal"), namesOfKind(ItemKind::Goal), THRONG_AT(groups, goal), true);
-    form.addChoice("path", tr("Path"), namesOfKind(ItemKind::Path), THRONG_AT(groups, path), true);
-    addLeaderRow(form, THRONG_AT(groups, leader), false);
-    addGroupExitsRow(form);
+    }, {"goal", "path", "leader"});
     // The area's shape; a switch carries the area over (the circle round the rectangle's
     // middle, the rectangle round the circle, the polygon on the rectangle's corners or
     // round the circle) so that the group stays valid and in place.

@@ -5,9 +5,13 @@
 
 #include "simcore/scene/Scene.h"
 
+#include <QStringList>
+
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <string>
+#include <vector>
 
 namespace throng::editor {
 
@@ -33,6 +37,11 @@ void addAgentVariationRows(PropertyForm& form);
 void addAgentTypeLookRows(PropertyForm& form);
 // The walkers' age range, typed as two numbers ("20 to 80"; empty for none).
 void addAgentTypeAgeRow(PropertyForm& form);
+// PropertyRowsExits.cpp: the exits a group's or source's agents choose among (ExitChoice.h),
+// typed as a list; `apply` sets the checked names (and clears the item's other route), and
+// the rows named in routeRows (its goal, path, leader) hide while the item chooses.
+void addExitsRow(PropertyForm& form, std::function<std::vector<std::string>&(sim::Scene&, std::size_t)> exits,
+                 std::function<void(const std::vector<std::string>&)> apply, const QStringList& routeRows);
 void addAgentTypeCollisionRows(PropertyForm& form);
 
 }  // namespace throng::editor

@@ -156,6 +156,20 @@ void addSourceRows(PropertyForm& form)
                                 [](sim::Scene& s, std::size_t i) -> auto& { return s.sources[i].arrivals; });
     addSourceRoute(form, "goal", tr("Goal"), ItemKind::Goal, &sim::Source::goal, &sim::Source::path);
     addSourceRoute(form, "path", tr("Path"), ItemKind::Path, &sim::Source::path, &sim::Source::goal);
+    // A source's agents choose their exit or have a goal or a path: exits clear those.
+    addExitsRow(form, [](sim::Scene& s, std::size_t i) -> auto& { return s.sources[i].exits; },
+                [&form, source](const std::vector<std::string>& names) {
+                    form.applyEach<sim::Source>("exits", tr("Exits"), source, [names](const sim::Source& now) {
+                        sim::Source out = now;
+                        out.exits = names;
+                        if (!names.empty()) {
+                            out.goal.clear();
+                            out.path.clear();
+                        }
+                        return out;
+                    });
+                },
+                {"goal", "path"});
     form.addInteger<std::uint32_t>("cap", tr("Cap (0 = none)"), 0, 10000000,
                                    [](sim::Scene& s, std::size_t i) -> auto& { return s.sources[i].cap; });
     form.addCheck("headed", tr("Sets heading"),

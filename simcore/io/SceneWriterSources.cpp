@@ -47,6 +47,10 @@ void writeSceneSources(YamlWriter& w, const Scene& s)
         }
         w.kvOpt("goal", src.goal);
         w.kvOpt("path", src.path);
+        if (!src.exits.empty()) {
+            w.key("exits");
+            o << YAML::Flow << src.exits;
+        }
         if (src.cap != 0)
             o << YAML::Key << "cap" << YAML::Value << src.cap;
         if (src.headed)

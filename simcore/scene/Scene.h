@@ -324,7 +324,7 @@ struct SourceType {
 // A stream of agents that enter the scene during the run (the World's SourcePhase): at
 // `rate` a second, evenly or as Poisson arrivals, within `windows` (or the whole run), up
 // to `cap`, each on a seeded place of the line or rectangle, of a type drawn by weight,
-// bound for `goal` or along `path`.
+// bound for `goal`, along `path`, or for the one of `exits` it chooses.
 struct Source {
     std::string name;
     std::vector<SourceType> types;   // >= 1
@@ -339,6 +339,8 @@ struct Source {
     std::uint32_t cap = 0;           // most agents it lets in over the run; 0: as many as its rate gives
     bool headed = false;             // heading given; else each faces its goal or its path's first point
     float headingDeg = 0.0f;         // degrees, 0 = +x, counter-clockwise seen from above
+    // Exit goals its agents choose among as they enter (ExitChoice.h); instead of goal and path.
+    std::vector<std::string> exits{};
     bool operator==(const Source&) const = default;
 };
 

@@ -114,45 +114,69 @@ bool ExitChoice::roundAt(double timeS, double dtS)
     return timeS > 0.0 && round(timeS) > round(timeS - dtS);
 }
 
-std::vector<ExitChoice::Switch> ExitChoice::choose(const StepView& v, double timeS) const
+std::vector<std::vector<float>> ExitChoice::boundFor(const StepView& v) const
 {
-    const std::size_t n = v.agents.pos.size();
-    const std::uint64_t round = std::uint64_t(std::floor(timeS / kChoiceRoundS + 1e-6));
     const std::vector<std::int32_t> exits = goals();
-    // Everyone still bound for each exit: their distances to it.
     std::vector<std::vector<float>> bound(v.set.goals.size());
-    for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t i = 0; i < v.agents.pos.size(); ++i)
         if (onItsWay(v.agents, i) && v.agents.goal[i] >= 0 &&
             std::binary_search(exits.begin(), exits.end(), v.agents.goal[i]))
             bound[std::size_t(v.agents.goal[i])].push_back(distanceM(v, i, v.agents.goal[i]));
     for (std::vector<float>& d : bound)
         std::sort(d.begin(), d.end());
+    return bound;
+}
+
+ExitChoice::Options ExitChoice::options(const StepView& v, std::size_t i,
+                                        const std::vector<std::vector<float>>& bound) const
+{
+    Options o;
+    o.bestS = o.currentS = std::numeric_limits<float>::infinity();
+    for (std::int32_t g : m_sets[std::size_t(setOf(i))]) {
+        const float d = distanceM(v, i, g);
+        const std::vector<float>& b = bound[std::size_t(g)];
+        // Those nearer than this one; on its own exit, that leaves itself out.
+        const std::size_t ahead = std::size_t(std::lower_bound(b.begin(), b.end(), d) - b.begin());
+        const float s = expectedS(v, i, g, d, ahead);
+        if (g == v.agents.goal[i])
+            o.currentS = s;
+        if (o.best < 0 || s < o.bestS) {
+            o.best = g;
+            o.bestS = s;
+        }
+    }
+    return o;
+}
+
+std::vector<ExitChoice::Switch> ExitChoice::choose(const StepView& v, double timeS) const
+{
+    const std::uint64_t round = std::uint64_t(std::floor(timeS / kChoiceRoundS + 1e-6));
+    const std::vector<std::vector<float>> bound = boundFor(v);
     std::vector<Switch> out;
-    for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t i = 0; i < v.agents.pos.size(); ++i) {
         if (setOf(i) < 0 || !onItsWay(v.agents, i) || (v.agents.info[i].id + round) % kChoiceRounds != 0)
             continue;
         const std::vector<std::int32_t>& set = m_sets[std::size_t(setOf(i))];
         const std::int32_t current = v.agents.goal[i];
-        std::int32_t best = -1;
-        float bestS = std::numeric_limits<float>::infinity(), currentS = std::numeric_limits<float>::infinity();
-        for (std::int32_t g : set) {
-            const float d = distanceM(v, i, g);
-            const std::vector<float>& b = bound[std::size_t(g)];
-            // Those nearer than this one; on its own exit, that leaves itself out.
-            const std::size_t ahead = std::size_t(std::lower_bound(b.begin(), b.end(), d) - b.begin());
-            const float s = expectedS(v, i, g, d, ahead);
-            if (g == current)
-                currentS = s;
-            if (best < 0 || s < bestS) {
-                best = g;
-                bestS = s;
-            }
-        }
+        const Options o = options(v, i, bound);
         const bool inSet = std::find(set.begin(), set.end(), current) != set.end();
-        if (best >= 0 && best != current &&
-            (!inSet || (bestS < kSwitchShare * currentS && currentS - bestS > kSwitchS)))
-            out.push_back({std::uint32_t(i), best});
+        if (o.best >= 0 && o.best != current &&
+            (!inSet || (o.bestS < kSwitchShare * o.currentS && o.currentS - o.bestS > kSwitchS)))
+            out.push_back({std::uint32_t(i), o.best});
     }
+    return out;
+}
+
+std::vector<ExitChoice::Switch> ExitChoice::onEntry(const StepView& v, const std::vector<std::uint32_t>& agents) const
+{
+    std::vector<Switch> out;
+    if (std::none_of(agents.begin(), agents.end(), [&](std::uint32_t i) { return setOf(i) >= 0; }))
+        return out;
+    const std::vector<std::vector<float>> bound = boundFor(v);
+    for (const std::uint32_t i : agents)
+        if (setOf(i) >= 0)
+            if (const Options o = options(v, i, bound); o.best >= 0)
+                out.push_back({i, o.best});
     return out;
 }
 

@@ -11,8 +11,8 @@
 // diameter). So a walker takes the nearest exit while its queue would clear before it
 // arrives, and a farther one when the near one's queue would hold it longer than the walk.
 // When the World is built the walkers choose in order of nearness to an exit, each counting
-// those who chose before it; then every kChoiceRoundS of simulated time a quarter of them
-// (by id) choose again, each switching only when another exit is clearly sooner
+// those who chose before it (a source's agents choose as they enter); then every
+// kChoiceRoundS of simulated time a quarter of them (by id) choose again, each switching only when another exit is clearly sooner
 // (kSwitchShare and kSwitchS), so a crowd does not swing between exits. Serial and by id:
 // the same for any thread count.
 
@@ -49,8 +49,18 @@ public:
     static bool roundAt(double timeS, double dtS);
     // The round's changes of exit: the choosers whose turn it is, still in the scene.
     std::vector<Switch> choose(const StepView& v, double timeS) const;
+    // The choices of `agents` (dense indices) that have just entered the scene.
+    std::vector<Switch> onEntry(const StepView& v, const std::vector<std::uint32_t>& agents) const;
 
 private:
+    // How soon agent i expects to leave by the best exit of its set, and by its current one.
+    struct Options {
+        std::int32_t best = -1;
+        float bestS = 0.0f, currentS = 0.0f;
+    };
+    // Per goal, the sorted walking distances of the walkers still bound for it.
+    std::vector<std::vector<float>> boundFor(const StepView& v) const;
+    Options options(const StepView& v, std::size_t i, const std::vector<std::vector<float>>& bound) const;
     std::int32_t setOf(std::size_t i) const { return i < m_setOf.size() ? m_setOf[i] : -1; }
     // Walking distance from agent i to goal g, m.
     float distanceM(const StepView& v, std::size_t i, std::int32_t g) const;

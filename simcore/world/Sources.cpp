@@ -42,13 +42,15 @@ std::uint16_t sourceTypeOf(const Scene& scene, const Source& s, float u)
     return 0;
 }
 
-// Where an arrival faces: the source's heading, else its goal or its path's first point.
+// Where an arrival faces: the source's heading, else its goal (its first exit) or its path's
+// first point.
 float sourceHeadingOf(const Scene& scene, const Source& s, glm::vec2 place)
 {
     if (s.headed)
         return glm::radians(s.headingDeg);
     glm::vec2 to = place;
-    if (const Goal* g = s.goal.empty() ? nullptr : scene.findGoal(s.goal))
+    const std::string& goal = s.goal.empty() && !s.exits.empty() ? s.exits.front() : s.goal;
+    if (const Goal* g = goal.empty() ? nullptr : scene.findGoal(goal))
         to = g->position;
     else if (const Path* p = s.path.empty() ? nullptr : scene.findPath(s.path); p && !p->points.empty())
         to = p->points.front();
@@ -164,12 +166,14 @@ bool SourcePhase::fits(std::size_t i, const AgentColumns& agents) const
     return true;
 }
 
-std::size_t SourcePhase::enter(double timeS, AgentColumns& agents)
+std::size_t SourcePhase::enter(double timeS, AgentColumns& agents, std::vector<std::uint32_t>* entered)
 {
+    if (entered)
+        entered->clear();
     // Small slack: a due time that is a whole number of steps enters on that step.
     const double now = timeS + 1e-9;
     std::fill(m_blocked.begin(), m_blocked.end(), std::uint8_t(0));
-    std::size_t entered = 0;
+    std::size_t count = 0;
     while (m_done < m_agent.size() && !agents.offstage[m_agent[m_done]])
         ++m_done;
     for (std::size_t k = m_done; k < m_agent.size() && m_timeS[k] <= now; ++k) {
@@ -186,9 +190,11 @@ std::size_t SourcePhase::enter(double timeS, AgentColumns& agents)
         agents.stoppedBefore[i] = 0;
         agents.nextPos[i] = agents.pos[i];
         agents.resolvedPos[i] = agents.pos[i];
-        ++entered;
+        if (entered)
+            entered->push_back(i);
+        ++count;
     }
-    return entered;
+    return count;
 }
 
 std::size_t SourcePhase::offstage(const AgentColumns& agents) const

@@ -43,7 +43,8 @@ public:
     void sendOffstage(AgentColumns& agents) const;
     // Lets in the agents due by timeS (the step's start) whose body fits where they enter,
     // each at rest facing its heading; returns how many entered.
-    std::size_t enter(double timeS, AgentColumns& agents);
+    // `entered`, when given, gets their dense indices.
+    std::size_t enter(double timeS, AgentColumns& agents, std::vector<std::uint32_t>* entered = nullptr);
     // Agents the sources will let in over the run, and how many are still off stage.
     std::size_t scheduled() const { return m_agent.size(); }
     std::size_t offstage(const AgentColumns& agents) const;

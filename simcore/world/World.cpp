@@ -245,8 +245,8 @@ void World::buildAgents(const Scene& scene)
         addAgent(scene, a.id, std::uint16_t(std::max(0, types(a.type))), a.position, glm::radians(a.headingDeg),
                  goals(a.goal), paths(a.path), a.leader);
     AgentId next = firstSpawnedId(scene);
-    // A group that chooses among exits (ExitChoice.h) starts bound for the first; the choice
-    // is made once the World's flow fields exist.
+    // A group or source that chooses among exits (ExitChoice.h) starts bound for the first;
+    // the choice is made once the World's flow fields exist (a source's agents: as they enter).
     std::vector<std::int32_t> choosesFrom(scene.agents.size(), -1);
     std::vector<std::vector<std::int32_t>> exitSets;
     for (std::size_t g = 0; g < scene.groups.size(); ++g) {
@@ -262,8 +262,7 @@ void World::buildAgents(const Scene& scene)
         }
         choosesFrom.resize(m_agents.info.size(), set);
     }
-    addSourceAgents(scene, next);
-    choosesFrom.resize(m_agents.info.size(), -1);
+    addSourceAgents(scene, next, choosesFrom, exitSets);
     m_exits.build(std::move(choosesFrom), std::move(exitSets));
 
     // Leaders were given as ids; the step reads dense indices.
@@ -473,20 +472,28 @@ void World::addAgent(const Scene& scene, AgentId id, std::uint16_t type, glm::ve
 }
 
 // The sources' arrivals (Sources.h): agents after the groups', off stage until due.
-void World::addSourceAgents(const Scene& scene, AgentId& nextId)
+void World::addSourceAgents(const Scene& scene, AgentId& nextId, std::vector<std::int32_t>& choosesFrom,
+                            std::vector<std::vector<std::int32_t>>& exitSets)
 {
     const NameIndex goals(scene.goals), paths(scene.paths);
     std::vector<std::uint32_t> agents, sources;
     std::vector<double> times;
     for (std::size_t s = 0; s < scene.sources.size(); ++s) {
         const Source& source = scene.sources[s];
+        const std::int32_t set = source.exits.empty() ? -1 : std::int32_t(exitSets.size());
+        if (set >= 0) {
+            exitSets.emplace_back();
+            for (const std::string& e : source.exits)
+                exitSets.back().push_back(goals(e));
+        }
         for (const SourceArrival& a : sourceArrivals(scene, s, m_seed)) {
             agents.push_back(std::uint32_t(m_agents.info.size()));
             times.push_back(a.timeS);
             sources.push_back(a.source);
             addAgent(scene, nextId++, a.type, glm::vec3(a.place.x, 0.0f, a.place.y), a.headingRad,
-                     goals(source.goal), paths(source.path), 0);
+                     source.exits.empty() ? goals(source.goal) : goals(source.exits[0]), paths(source.path), 0);
         }
+        choosesFrom.resize(m_agents.info.size(), set);
     }
     m_sources.build(std::move(agents), std::move(times), std::move(sources));
 }

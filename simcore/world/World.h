@@ -213,8 +213,10 @@ private:
                        std::vector<glm::vec2>& places, const std::vector<std::uint8_t>& clearOfStatics) const;
     void addAgent(const Scene& scene, AgentId id, std::uint16_t type, glm::vec3 pos, float headingRad, int goal,
                   int path, AgentId leader);
-    // Every source's arrivals as off-stage agents after the groups' (Sources.h).
-    void addSourceAgents(const Scene& scene, AgentId& nextId);
+    // Every source's arrivals as off-stage agents after the groups' (Sources.h); a source's
+    // exits (ExitChoice.h) become a set its agents choose from.
+    void addSourceAgents(const Scene& scene, AgentId& nextId, std::vector<std::int32_t>& choosesFrom,
+                         std::vector<std::vector<std::int32_t>>& exitSets);
     // The walkers whose type sets a reaction time, and when each sets off (StartPhase.h);
     // `hold` stands them where they are, as at the start (not the driven agents or those
     // off stage). Drawn by id, so adoptState schedules again once kept agents have theirs.

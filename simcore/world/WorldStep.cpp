@@ -22,9 +22,14 @@ void World::stepOnce()
     // Anything to constrain walkers against? Not in an open field like `cross`.
     const bool hasStatics = m_set.hasStatics();
 
-    // Enter: the sources' agents whose time has come, where their bodies fit (Sources.h).
-    if (m_sources.scheduled() != 0 && m_sources.enter(m_clock.timeS(), m_agents) != 0)
+    // Enter: the sources' agents whose time has come, where their bodies fit (Sources.h);
+    // those that choose an exit choose it as they come in (ExitChoice.h).
+    std::vector<std::uint32_t> entered;
+    if (m_sources.scheduled() != 0 && m_sources.enter(m_clock.timeS(), m_agents, &entered) != 0) {
         m_gridCurrent = false;
+        if (m_exits.active())
+            takeExits(m_exits.onEntry(view(), entered));
+    }
     // Start: walkers whose reaction time has passed set off (StartPhase.h).
     if (m_starts.pending())
         m_starts.release(m_clock.timeS(), m_agents);

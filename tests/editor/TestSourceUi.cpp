@@ -230,6 +230,50 @@ private slots:
         QCOMPARE(scene.sources[0].types[0].type, scene.agentTypes[0].name);
     }
 
+    // A source's exits, typed as a list: a goal that is not an exit is refused; two exits take
+    // the place of its goal in one undo step, its goal and path rows hide while it chooses,
+    // the saved file loads with the same source, and undo gives back the goal.
+    void aSourceChoosesAmongExits()
+    {
+        MainWindow window;
+        const QByteArray yaml = R"(throng: 1
+settings: {fps: 24, duration: 20, seed: 2, bounds: {min: [-20, -12], max: [20, 12]}}
+agent_types: [{name: walker}]
+goals:
+  - {name: east, position: [14, 0], radius: 2}
+  - {name: north_door, position: [0, -10], radius: 1, exit: true}
+  - {name: south_door, position: [0, 10], radius: 1, exit: true}
+sources:
+  - {name: from_west, type: walker, line: [[-10, -3], [-10, 3]], rate: 0.5, goal: east}
+)";
+        QVERIFY(showWithYaml(window, m_dir, "exits.yaml", yaml));
+        const QByteArray before = sceneYaml(window);
+        const sim::Scene& scene = window.document().scene();
+        QWidget* panel = window.findChild<QWidget*>("properties");
+        selectInOutliner(window, {{ItemKind::Source, 0}});
+        auto* exits = field<QLineEdit>(window, "exits");
+        QVERIFY(exits);
+        showInPanel(window, exits);
+        QVERIFY(field<QComboBox>(window, "goal")->isVisibleTo(panel));
+        typeInto(window, exits, "north_door, east");
+        QVERIFY(scene.sources[0].exits.empty());
+        QVERIFY2(lastMessage(window).contains("not an exit"), qPrintable(lastMessage(window)));
+        typeInto(window, exits, "north_door, south_door");
+        QCOMPARE(scene.sources[0].exits, (std::vector<std::string>{"north_door", "south_door"}));
+        QVERIFY(scene.sources[0].goal.empty());
+        QCOMPARE(window.document().undoStack()->count(), 1);
+        QVERIFY(!field<QComboBox>(window, "goal")->isVisibleTo(panel));
+        QVERIFY(!field<QComboBox>(window, "path")->isVisibleTo(panel));
+        const QByteArray saved = sceneYaml(window);
+        QVERIFY2(saved.contains("exits: [north_door, south_door]"), saved.constData());
+        const sim::LoadResult again = sim::parseScene(saved.toStdString(), "exits.yaml", "");
+        QVERIFY(again.ok());
+        QVERIFY(again.scene.sources == scene.sources);
+        undo(window);
+        QCOMPARE(sceneYaml(window), before);
+        QCOMPARE(scene.sources[0].goal, std::string("east"));
+    }
+
     void namesFollowDeletesAreRefusedAndTheSourceMovesAndGoes()
     {
         MainWindow window;

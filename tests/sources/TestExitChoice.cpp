@@ -156,6 +156,43 @@ private slots:
                  qPrintable(QString("%1 s against %2 s").arg(choosingS).arg(west.timeS())));
     }
 
+    // A source's agents choose as they enter: the first ones, with no queue yet, the nearer
+    // door (listed second) on the step they come in; a stream faster than that door lets out sends later
+    // ones to the far door; all leave, and the stats count each door as the positions do.
+    void aStreamChoosesAsItEnters()
+    {
+        std::string yaml = hall(0, "{min: [6, -1], max: [8, 1]}");
+        yaml.replace(yaml.find("groups:"), std::string::npos,
+                     "sources:\n  - {name: hall_door, type: walker, line: [[8, -6], [8, 6]], rate: 6, cap: 240, "
+                     "exits: [east, west]}\n");  // the far door first: the choice, not the order, sends them west
+        World world(parseChoice(yaml));
+        QCOMPARE(world.agentCount(), std::size_t(240));
+        std::vector<int> chosenOnEntry(world.agentCount(), -1), door(world.agentCount(), -1);
+        std::uint64_t steps = 0;
+        std::size_t out = 0;
+        while (out < door.size() && world.timeS() < 400.0) {
+            world.step();
+            ++steps;
+            for (std::size_t i = 0; i < door.size(); ++i) {
+                if (chosenOnEntry[i] < 0 && !world.isOffstage(i))
+                    chosenOnEntry[i] = world.goalIndex(i);
+                if (door[i] < 0 && world.isOut(i)) {
+                    door[i] = world.positions()[i].x < 15.0f ? 0 : 1;
+                    ++out;
+                }
+            }
+        }
+        QCOMPARE(out, door.size());
+        for (std::size_t i = 0; i < 5; ++i)
+            QCOMPARE(chosenOnEntry[i], 0);  // the first arrivals: the west door, 8 m off
+        const std::size_t east = std::size_t(std::count(door.begin(), door.end(), 1));
+        QVERIFY2(east >= 40 && east <= 200, qPrintable(QString::number(east)));
+        const RunStats stats = RunStats::from(world, steps + 1, 0.0);
+        QCOMPARE(stats.nav.exits[0].agentsOut, std::uint64_t(door.size() - east));
+        QCOMPARE(stats.nav.exits[1].agentsOut, std::uint64_t(east));
+        qInfo("%zu of %zu by the far door", east, door.size());
+    }
+
     // One thread or two (each with chunks to run), the same choices and positions; and a
     // checkpoint resumed gives the run that went on. 3,000 walkers in a yard 80 m across
     // with an exit on each side, so that a loaded machine still hands the second thread
@@ -202,11 +239,23 @@ private slots:
     // not exist, one listed twice, and exits with a goal too are refused, naming the line.
     void theFileKeepsAndChecksTheKey()
     {
-        const Scene s = parseChoice(hall(3, "{min: [6, -1], max: [8, 1]}"));
+        std::string withSource = hall(3, "{min: [6, -1], max: [8, 1]}");
+        withSource += "sources:\n  - {name: door, type: walker, line: [[8, -6], [8, 6]], rate: 1, exits: [east, west]}\n";
+        const Scene s = parseChoice(withSource);
         QCOMPARE(s.groups[0].exits, (std::vector<std::string>{"west", "east"}));
+        QCOMPARE(s.sources[0].exits, (std::vector<std::string>{"east", "west"}));
         const std::string written = sceneToYaml(s);
         QVERIFY2(written.find("exits: [west, east]") != std::string::npos, written.c_str());
+        QVERIFY2(written.find("exits: [east, west]") != std::string::npos, written.c_str());
         QVERIFY(parseChoice(written).groups == s.groups);
+        QVERIFY(parseChoice(written).sources == s.sources);
+        // A source with exits and a goal too is refused, naming both.
+        std::string both = withSource;
+        both.replace(both.find("exits: [east, west]"), 19, "goal: east, exits: [east, west]");
+        const LoadResult twice = parseScene(both, "choice.yaml", "");
+        QVERIFY(!twice.ok());
+        QVERIFY2(twice.diagnostics[0].format().find("no goal or path too") != std::string::npos,
+                 twice.diagnostics[0].format().c_str());
         struct Bad {
             const char* exits;
             const char* message;

@@ -481,7 +481,8 @@ void SceneReader::readGroups(const YAML::Node& node, Scene& scene)
             checkRef(item, "path", key, g.path, known("path", g.path), "path");
         if (m_f.readU32(item, "leader", key, g.leader, false) && item["leader"].IsDefined())
             m_leaderRefs.push_back({item["leader"].Mark(), key + ".leader", g.leader});
-        readGroupExits(item, key, g, scene);
+        readExits(item, key, g.exits, !g.goal.empty() || !g.path.empty() || g.leader != 0, "goal, path or leader",
+                  scene);
         if (item["altitude"].IsDefined() &&
             m_f.readVec2(item, "altitude", key, g.altitudeM, false, Range::NonNegative)) {
             const AgentType* type = scene.findAgentType(g.type);
@@ -495,25 +496,26 @@ void SceneReader::readGroups(const YAML::Node& node, Scene& scene)
     }
 }
 
-void SceneReader::readGroupExits(const YAML::Node& item, const std::string& key, SpawnGroup& g, const Scene& scene)
+void SceneReader::readExits(const YAML::Node& item, const std::string& key, std::vector<std::string>& names,
+                            bool routed, const char* route, const Scene& scene)
 {
-    if (!item["exits"].IsDefined() || !m_f.readStringList(item, "exits", key, g.exits, false))
+    if (!item["exits"].IsDefined() || !m_f.readStringList(item, "exits", key, names, false))
         return;
     const YAML::Node exits = item["exits"];
-    if (g.exits.size() < 2)
+    if (names.size() < 2)
         m_f.error(exits.Mark(), key + ".exits", "list at least two exits to choose among");
-    if (!g.goal.empty() || !g.path.empty() || g.leader != 0)
-        m_f.error(exits.Mark(), key + ".exits", "the members choose their exit: give no goal, path or leader too");
-    for (std::size_t k = 0; k < g.exits.size(); ++k) {
+    if (routed)
+        m_f.error(exits.Mark(), key + ".exits", std::string("the agents choose their exit: give no ") + route + " too");
+    for (std::size_t k = 0; k < names.size(); ++k) {
         const std::string ek = indexKey(key + ".exits", k);
-        const Goal* goal = scene.findGoal(g.exits[k]);
+        const Goal* goal = scene.findGoal(names[k]);
         if (!goal)
-            m_f.error(exits[k].Mark(), ek, "no goal named '" + g.exits[k] + "'");
+            m_f.error(exits[k].Mark(), ek, "no goal named '" + names[k] + "'");
         else if (!goal->exit)
-            m_f.error(exits[k].Mark(), ek, "goal '" + g.exits[k] + "' is not an exit (exit: true)");
+            m_f.error(exits[k].Mark(), ek, "goal '" + names[k] + "' is not an exit (exit: true)");
         for (std::size_t j = 0; j < k; ++j)
-            if (g.exits[j] == g.exits[k])
-                m_f.error(exits[k].Mark(), ek, "'" + g.exits[k] + "' is listed twice");
+            if (names[j] == names[k])
+                m_f.error(exits[k].Mark(), ek, "'" + names[k] + "' is listed twice");
     }
 }
 

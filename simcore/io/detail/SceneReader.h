@@ -35,8 +35,10 @@ private:
     // The hand-set variation of one agent (look, tint, height), checked against its type.
     void readAgentVariation(const YAML::Node& item, const std::string& key, const Scene& scene, Agent& a);
     void readGroups(const YAML::Node& node, Scene& scene);
-    // A group's `exits`: at least two exit goals, none twice, and no goal, path or leader.
-    void readGroupExits(const YAML::Node& item, const std::string& key, SpawnGroup& g, const Scene& scene);
+    // A group's or source's `exits`: at least two exit goals, none twice, and no other route
+    // (`routed`: the item gives one too, named `route` in the message).
+    void readExits(const YAML::Node& item, const std::string& key, std::vector<std::string>& names, bool routed,
+                   const char* route, const Scene& scene);
     // The spawn area of group `item`: exactly one of rect, circle and shape: polygon.
     // `{min: [x, z], max: [x, z]}` at `key` (a map already), min not above max.
     void readRect(const YAML::Node& rect, const std::string& key, glm::vec2& min, glm::vec2& max);

@@ -20,7 +20,7 @@ void SceneReader::readSources(const YAML::Node& node, Scene& scene)
         if (!m_f.expectMap(item, key))
             continue;
         m_f.checkKeys(item, key, {"name", "type", "types", "line", "rect", "rate", "arrivals", "windows", "goal",
-                                  "path", "cap", "heading"});
+                                  "path", "cap", "heading", "exits"});
         Source s;
         if (m_f.readName(item, "name", key, s.name, true))
             claimName(item, key, s.name, "source");
@@ -41,14 +41,15 @@ void SceneReader::readSources(const YAML::Node& node, Scene& scene)
             checkRef(item, "path", key, s.path, known("path", s.path), "path");
         if (!s.goal.empty() && !s.path.empty())
             m_f.error(item.Mark(), key, "give a goal or a path, not both");
+        readExits(item, key, s.exits, !s.goal.empty() || !s.path.empty(), "goal or path", scene);
         m_f.readU32(item, "cap", key, s.cap, false);
         if (double(s.cap) > kMaxSourceAgents)
             m_f.error(item["cap"].Mark(), key + ".cap", "at most 10,000,000 agents per source");
         else if (s.cap == 0 && double(s.rate) * double(scene.settings.durationS) > kMaxSourceAgents)
             m_f.error(item["rate"].Mark(), key + ".rate",
                       "lets in more than 10,000,000 agents over the run's duration; lower it or set a 'cap'");
-        if (s.goal.empty() && s.path.empty())
-            m_f.warning(item.Mark(), key, "has no goal or path: its agents stand where they enter");
+        if (s.goal.empty() && s.path.empty() && s.exits.empty())
+            m_f.warning(item.Mark(), key, "has no goal, path or exits: its agents stand where they enter");
         if (item["heading"].IsDefined() && m_f.readFloat(item, "heading", key, s.headingDeg, false))
             s.headed = true;
         scene.sources.push_back(std::move(s));
