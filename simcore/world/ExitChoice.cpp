@@ -1,5 +1,7 @@
 #include "simcore/world/ExitChoice.h"
 
+#include "simcore/base/detail/PlanarSegments.h"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -10,8 +12,6 @@
 namespace throng::sim {
 
 namespace {
-
-glm::vec2 ground(glm::vec3 p) { return {p.x, p.z}; }
 
 // Whether agent i is in the scene and still on its way: not off stage, out or arrived.
 bool onItsWay(const AgentColumns& a, std::size_t i)
@@ -39,7 +39,7 @@ std::vector<std::int32_t> ExitChoice::goals() const
 
 float ExitChoice::distanceM(const StepView& v, std::size_t i, std::int32_t g) const
 {
-    const glm::vec2 p = ground(v.agents.pos[i]);
+    const glm::vec2 p = detail::xz(v.agents.pos[i]);
     const std::size_t goal = std::size_t(g);
     if (v.nav.active && goal < v.nav.hasField.size() && v.nav.hasField[goal]) {
         const FlowField& field = v.nav.fields[goal];
