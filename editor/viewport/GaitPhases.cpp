@@ -65,7 +65,14 @@ void GaitPhases::step(const sim::FrameCache& cache, std::span<const Walker> walk
 void GaitPhases::gaitAt(const sim::FrameCache& cache, std::size_t frame, std::span<const Walker> walkers,
                         std::vector<exporting::GaitFrame>& out)
 {
-    if (&cache != m_cache || walkers.size() != m_clocks.size() || cache.agentCount() != walkers.size()) {
+    // Walkers for another agent set than the cache's: no gait (the caller draws the frames'
+    // own phases) rather than frames read past their width.
+    if (cache.agentCount() != walkers.size()) {
+        forget();
+        out.clear();
+        return;
+    }
+    if (&cache != m_cache || walkers.size() != m_clocks.size()) {
         restart(cache, walkers);
     } else if (cache.revision() != m_revision) {
         // Frames from `kept` on were recorded again: what was stepped over them is stale.

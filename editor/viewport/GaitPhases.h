@@ -28,7 +28,8 @@ public:
 
     // Per cache agent, its gait on `frame` (< cache.frameCount()). `walkers` must stay the
     // same between calls for the same recording (forget() when they change); the cache may
-    // grow, and it may be truncated and recorded again (revision() tells).
+    // grow, and it may be truncated and recorded again (revision() tells). Walkers that are
+    // not one per cache agent give an empty `out`.
     void gaitAt(const sim::FrameCache& cache, std::size_t frame, std::span<const Walker> walkers,
                 std::vector<exporting::GaitFrame>& out);
     // Drops every clock: the walkers or the recording changed.

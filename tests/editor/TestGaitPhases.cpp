@@ -190,6 +190,27 @@ private slots:
             compare(phases, cache, f, after, upper);
     }
 
+    // Walkers for another agent set than the cache's (one fewer, one more): no gait at all,
+    // not frames read past their width; with the right walkers again, the gait is the export's.
+    void walkersOfAnotherAgentSetGiveNoGait()
+    {
+        sim::FrameCache cache;
+        cache.reset({{1, 0}, {2, 1}, {3, 2}}, kRecordFps);
+        record(cache, 0, 60, 0);
+        GaitPhases phases;
+        std::vector<exporting::GaitFrame> gait(5);
+        const std::vector<GaitPhases::Walker> fewer(m_walkers.begin(), m_walkers.begin() + 2);
+        phases.gaitAt(cache, 40, fewer, gait);
+        QVERIFY(gait.empty());
+        std::vector<GaitPhases::Walker> more = m_walkers;
+        more.push_back(m_walkers[0]);
+        gait.resize(5);
+        phases.gaitAt(cache, 59, more, gait);
+        QVERIFY(gait.empty());
+        int upper = 0;
+        compare(phases, cache, 50, reference(cache), upper);
+    }
+
     // The same cache started over (File > Revert, a settings edit): nothing kept is used.
     void resetAndRecordedAgain()
     {
