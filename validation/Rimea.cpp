@@ -237,17 +237,22 @@ Outcome fourAgainstTwoExits(const std::vector<sim::Scene>& scenes)
     return out;
 }
 
-// Test 10: every walker leaves by the exit assigned to it. Where a walker left is the exit
-// goal nearest its position on the step it went out, read from the positions alone.
-Outcome assignedExits(const std::vector<sim::Scene>& scenes)
+// Where each walker of `world` left: the exit goal nearest its position on the step it went
+// out, read from the positions alone (-1: still in). Steps until all are out or limitS;
+// with `throughWalls`, counts the steps through a wall of `scene` from the positions too.
+std::vector<std::int32_t> exitsTaken(const sim::Scene& scene, sim::World& world, double limitS,
+                                     std::uint64_t* throughWalls = nullptr)
 {
-    sim::World world(scenes[0]);
     const std::size_t n = world.agentCount();
-    const std::vector<glm::vec3> start(world.positions().begin(), world.positions().end());
     std::vector<std::int32_t> leftBy(n, -1);
-    std::size_t out = 0, far = 0;
-    while (out < n && world.timeS() < 200.0) {
+    std::vector<glm::vec3> before;
+    std::size_t out = 0;
+    while (out < n && world.timeS() < limitS) {
+        if (throughWalls)
+            before.assign(world.positions().begin(), world.positions().end());
         world.step();
+        if (throughWalls)
+            *throughWalls += wallCrossings(scene, before, world.positions());
         for (std::size_t i = 0; i < n; ++i) {
             if (leftBy[i] >= 0 || !world.isOut(i))
                 continue;
@@ -263,7 +268,20 @@ Outcome assignedExits(const std::vector<sim::Scene>& scenes)
             ++out;
         }
     }
-    std::size_t own = 0;
+    return leftBy;
+}
+
+// Test 10: every walker leaves by the exit assigned to it. Where a walker left is the exit
+// goal nearest its position on the step it went out, read from the positions alone.
+Outcome assignedExits(const std::vector<sim::Scene>& scenes)
+{
+    sim::World world(scenes[0]);
+    const std::size_t n = world.agentCount();
+    const std::vector<glm::vec3> start(world.positions().begin(), world.positions().end());
+    const std::vector<std::int32_t> leftBy = exitsTaken(scenes[0], world, 200.0);
+    const std::size_t out =
+        std::size_t(std::count_if(leftBy.begin(), leftBy.end(), [](std::int32_t g) { return g >= 0; }));
+    std::size_t own = 0, far = 0;
     for (std::size_t i = 0; i < n; ++i) {
         own += leftBy[i] >= 0 && leftBy[i] == world.goalIndex(i) ? 1 : 0;
         // Assigned the exit farther from where it started: the one it would not take by itself.
@@ -286,38 +304,6 @@ Outcome assignedExits(const std::vector<sim::Scene>& scenes)
     return result;
 }
 
-// Where each walker of `world` left: the exit goal nearest its position on the step it went
-// out, read from the positions alone (-1: still in). Steps until all are out or limitS,
-// counting the steps through a wall of `scene` from the positions too.
-std::vector<std::int32_t> exitsTaken(const sim::Scene& scene, sim::World& world, double limitS,
-                                     std::uint64_t& throughWalls)
-{
-    const std::size_t n = world.agentCount();
-    std::vector<std::int32_t> leftBy(n, -1);
-    std::vector<glm::vec3> before;
-    std::size_t out = 0;
-    while (out < n && world.timeS() < limitS) {
-        before.assign(world.positions().begin(), world.positions().end());
-        world.step();
-        throughWalls += wallCrossings(scene, before, world.positions());
-        for (std::size_t i = 0; i < n; ++i) {
-            if (leftBy[i] >= 0 || !world.isOut(i))
-                continue;
-            const glm::vec2 p(world.positions()[i].x, world.positions()[i].z);
-            float nearest = INFINITY;
-            for (std::size_t g = 0; g < world.goals().size(); ++g) {
-                const sim::Goal& goal = world.goals()[g];
-                if (goal.exit && glm::distance(p, goal.position) < nearest) {
-                    nearest = glm::distance(p, goal.position);
-                    leftBy[i] = std::int32_t(g);
-                }
-            }
-            ++out;
-        }
-    }
-    return leftBy;
-}
-
 // Test 11: 1,000 walkers choose between a near exit and a far one in the same wall. Those
 // for whom the far one is farthest (the quarter nearest the west wall) leave by the near
 // one (90 % or more), the congestion there sends others to the far one (100 or more), the
@@ -334,7 +320,7 @@ Outcome exitChoice(const std::vector<sim::Scene>& scenes)
     std::sort(sorted.begin(), sorted.end());
     const float westQuarter = sorted.empty() ? 0.0f : sorted[sorted.size() / 4];
     std::uint64_t throughWalls = 0;
-    const std::vector<std::int32_t> leftBy = exitsTaken(scenes[0], choosing, 900.0, throughWalls);
+    const std::vector<std::int32_t> leftBy = exitsTaken(scenes[0], choosing, 900.0, &throughWalls);
     const double choiceS = choosing.timeS();
     sim::Scene nearest = scenes[0];
     for (sim::SpawnGroup& g : nearest.groups)
@@ -343,7 +329,7 @@ Outcome exitChoice(const std::vector<sim::Scene>& scenes)
             g.exits.clear();
         }
     sim::World allNear(nearest);
-    const std::vector<std::int32_t> nearOnly = exitsTaken(nearest, allNear, 900.0, throughWalls);
+    const std::vector<std::int32_t> nearOnly = exitsTaken(nearest, allNear, 900.0, &throughWalls);
     std::size_t near = 0, far = 0, out = 0, outNear = 0, west = 0, westNear = 0;
     for (std::size_t i = 0; i < leftBy.size(); ++i) {
         near += leftBy[i] == 0 ? 1 : 0;
