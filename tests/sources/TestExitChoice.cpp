@@ -3,8 +3,9 @@
 // nearer exit; a crowd at a narrow exit sends its back rows to a farther one while its
 // front rows stay, and empties sooner than when all take the near one; the stats' count
 // per exit matches a recount from where each walker went out; direct walkers choose too;
-// the same choices for any thread count and after a checkpoint; the file keeps the key
-// and refuses what cannot be chosen, with its line.
+// the same choices for any thread count and after a checkpoint, and alike at 24, 30 and
+// 60 fps; a source's agents choose as they enter; the file keeps the key and refuses what
+// cannot be chosen, with its line.
 #include "TestRegistry.h"
 
 #include "simcore/io/SceneIO.h"
@@ -154,6 +155,34 @@ private slots:
               byEast, frontWest, front, choosingS, west.timeS());
         QVERIFY2(choosingS < 0.8 * west.timeS(),
                  qPrintable(QString("%1 s against %2 s").arg(choosingS).arg(west.timeS())));
+    }
+
+    // The same hall at 24, 30 and 60 fps: rounds of choices come every half second of
+    // simulated time whatever the frame rate, so the crowd splits and empties alike (within
+    // 10 % of the walkers and 5 % of the time).
+    void frameRatesAgree()
+    {
+        std::size_t eastAt24 = 0;
+        double timeAt24 = 0.0;
+        for (const int fps : {24, 30, 60}) {
+            std::string yaml = hall(300, "{min: [6, -7.5], max: [12, 7.5]}");
+            yaml.replace(yaml.find("fps: 24"), 7, "fps: " + std::to_string(fps));
+            World world(parseChoice(yaml));
+            const std::vector<int> door = doorsTaken(world, 600.0);
+            QVERIFY(std::count(door.begin(), door.end(), -1) == 0);
+            const std::size_t east = std::size_t(std::count(door.begin(), door.end(), 1));
+            qInfo("%d fps: %zu of 300 east, out after %.1f s", fps, east, world.timeS());
+            if (fps == 24) {
+                eastAt24 = east;
+                timeAt24 = world.timeS();
+                QVERIFY(east > 30 && east < 270);
+                continue;
+            }
+            QVERIFY2(std::abs(double(east) - double(eastAt24)) <= 30.0,
+                     qPrintable(QString("%1 against %2").arg(east).arg(eastAt24)));
+            QVERIFY2(std::abs(world.timeS() - timeAt24) <= 0.05 * timeAt24,
+                     qPrintable(QString("%1 s against %2 s").arg(world.timeS()).arg(timeAt24)));
+        }
     }
 
     // A source's agents choose as they enter: the first ones, with no queue yet, the nearer
