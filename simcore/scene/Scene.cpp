@@ -22,6 +22,31 @@ const Lane* Scene::findLane(const std::string& name) const { return findByName(l
 const Crosswalk* Scene::findCrosswalk(const std::string& name) const { return findByName(crosswalks, name); }
 const BrainGraph* Scene::findBrain(const std::string& name) const { return findByName(brains, name); }
 
+namespace {
+
+bool picksGoals(const Scene& scene, const BrainGraph* brain, int depth)
+{
+    if (!brain || depth > 16)  // a macro that uses itself is the compiler's error, not a loop here
+        return false;
+    for (const BrainNode& n : brain->nodes) {
+        if (n.type == "output.goal")
+            return true;
+        if (n.type == "macro")
+            for (const BrainParam& p : n.params)
+                if (p.key == "brain" && picksGoals(scene, scene.findBrain(p.text), depth + 1))
+                    return true;
+    }
+    return false;
+}
+
+}  // namespace
+
+bool Scene::brainPicksGoals(const std::string& type) const
+{
+    const AgentType* t = findAgentType(type);
+    return t && !t->brain.empty() && picksGoals(*this, findBrain(t->brain), 0);
+}
+
 const BrainNode* BrainGraph::findNode(NodeId id) const
 {
     auto it = std::find_if(nodes.begin(), nodes.end(), [&](const BrainNode& n) { return n.id == id; });

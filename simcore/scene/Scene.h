@@ -374,6 +374,9 @@ struct Scene {
     const Lane* findLane(const std::string& name) const;
     const Crosswalk* findCrosswalk(const std::string& name) const;
     const BrainGraph* findBrain(const std::string& name) const;
+    // Whether agent type `type`'s brain (or a macro brain it uses) picks the agent's goal
+    // (an output.goal node): then the brain, not an exit choice, sends its agents.
+    bool brainPicksGoals(const std::string& type) const;
 };
 
 // The id of the first agent spawn groups create in a World: after every id the scene's

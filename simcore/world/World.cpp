@@ -254,7 +254,7 @@ void World::buildAgents(const Scene& scene)
         spawnGroup(scene, group, g, std::uint16_t(std::max(0, types(group.type))),
                    group.exits.empty() ? goals(group.goal) : goals(group.exits[0]), paths(group.path), next);
         std::int32_t set = -1;
-        if (!group.exits.empty()) {
+        if (!group.exits.empty() && !scene.brainPicksGoals(group.type)) {
             set = std::int32_t(exitSets.size());
             exitSets.emplace_back();
             for (const std::string& e : group.exits)
@@ -478,6 +478,9 @@ void World::addSourceAgents(const Scene& scene, AgentId& nextId, std::vector<std
     const NameIndex goals(scene.goals), paths(scene.paths);
     std::vector<std::uint32_t> agents, sources;
     std::vector<double> times;
+    std::vector<std::uint8_t> brainPicks;  // per type: its brain picks goals, not an exit choice
+    for (const AgentType& t : scene.agentTypes)
+        brainPicks.push_back(scene.brainPicksGoals(t.name) ? 1 : 0);
     for (std::size_t s = 0; s < scene.sources.size(); ++s) {
         const Source& source = scene.sources[s];
         const std::int32_t set = source.exits.empty() ? -1 : std::int32_t(exitSets.size());
@@ -492,8 +495,8 @@ void World::addSourceAgents(const Scene& scene, AgentId& nextId, std::vector<std
             sources.push_back(a.source);
             addAgent(scene, nextId++, a.type, glm::vec3(a.place.x, 0.0f, a.place.y), a.headingRad,
                      source.exits.empty() ? goals(source.goal) : goals(source.exits[0]), paths(source.path), 0);
+            choosesFrom.push_back(brainPicks[a.type] ? -1 : set);
         }
-        choosesFrom.resize(m_agents.info.size(), set);
     }
     m_sources.build(std::move(agents), std::move(times), std::move(sources));
 }

@@ -222,6 +222,40 @@ private slots:
         qInfo("%zu of %zu by the far door", east, door.size());
     }
 
+    // A group whose type's brain picks goals (an output.goal node, here inside a macro brain)
+    // follows its brain, not an exit choice: loading warns, and every member goes where the
+    // brain sends it (the far door) whatever the queue.
+    void aBrainThatPicksGoalsWins()
+    {
+        std::string yaml = hall(40, "{min: [6, -3], max: [9, 3]}");
+        yaml.replace(yaml.find("navigation: flow_field}"), 23, "navigation: flow_field, brain: sender}");
+        yaml += "brains:\n"
+                "  - name: sender\n"
+                "    nodes:\n"
+                "      - {id: 1, type: input.constant, params: {value: 1}}\n"
+                "      - {id: 2, type: macro, params: {brain: east_picker}}\n"
+                "    links:\n"
+                "      - {from: [1, 0], to: [2, 0]}\n"
+                "  - name: east_picker\n"
+                "    nodes:\n"
+                "      - {id: 1, type: macro.in, params: {port: 0}}\n"
+                "      - {id: 2, type: input.constant, params: {value: 0}}\n"
+                "      - {id: 3, type: output.goal, params: {goals: \"east west\"}}\n"
+                "    links:\n"
+                "      - {from: [1, 0], to: [3, 0]}\n"
+                "      - {from: [2, 0], to: [3, 1]}\n";
+        const LoadResult r = parseScene(yaml, "choice.yaml", "");
+        QVERIFY2(r.ok(), r.diagnostics.empty() ? "" : r.diagnostics[0].format().c_str());
+        QCOMPARE(r.diagnostics.size(), std::size_t(1));
+        QCOMPARE(r.diagnostics[0].severity, Severity::Warning);
+        QVERIFY2(r.diagnostics[0].format().find("picks its agents' goals") != std::string::npos,
+                 r.diagnostics[0].format().c_str());
+        World world(r.scene);
+        QVERIFY2(world.brainErrors().empty(), world.brainErrors().empty() ? "" : world.brainErrors()[0].c_str());
+        const std::vector<int> door = doorsTaken(world, 300.0);
+        QCOMPARE(std::count(door.begin(), door.end(), 1), std::ptrdiff_t(40));  // all east, as the brain says
+    }
+
     // One thread or two (each with chunks to run), the same choices and positions; and a
     // checkpoint resumed gives the run that went on. 3,000 walkers in a yard 80 m across
     // with an exit on each side, so that a loaded machine still hands the second thread

@@ -483,6 +483,9 @@ void SceneReader::readGroups(const YAML::Node& node, Scene& scene)
             m_leaderRefs.push_back({item["leader"].Mark(), key + ".leader", g.leader});
         readExits(item, key, g.exits, !g.goal.empty() || !g.path.empty() || g.leader != 0, "goal, path or leader",
                   scene);
+        if (!g.exits.empty() && scene.brainPicksGoals(g.type))
+            m_f.warning(item["exits"].Mark(), key + ".exits",
+                        "the brain of type '" + g.type + "' picks its agents' goals: they do not choose among exits");
         if (item["altitude"].IsDefined() &&
             m_f.readVec2(item, "altitude", key, g.altitudeM, false, Range::NonNegative)) {
             const AgentType* type = scene.findAgentType(g.type);

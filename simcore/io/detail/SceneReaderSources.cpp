@@ -42,6 +42,11 @@ void SceneReader::readSources(const YAML::Node& node, Scene& scene)
         if (!s.goal.empty() && !s.path.empty())
             m_f.error(item.Mark(), key, "give a goal or a path, not both");
         readExits(item, key, s.exits, !s.goal.empty() || !s.path.empty(), "goal or path", scene);
+        for (const SourceType& t : s.types)
+            if (!s.exits.empty() && scene.brainPicksGoals(t.type))
+                m_f.warning(item["exits"].Mark(), key + ".exits", "the brain of type '" + t.type +
+                                                                  "' picks its agents' goals: they do not choose "
+                                                                  "among exits");
         m_f.readU32(item, "cap", key, s.cap, false);
         if (double(s.cap) > kMaxSourceAgents)
             m_f.error(item["cap"].Mark(), key + ".cap", "at most 10,000,000 agents per source");
