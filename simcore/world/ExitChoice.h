@@ -1,7 +1,7 @@
 #pragma once
-// The exit choice phase (SpawnGroup::exits; RiMEA test 11): a group's walkers choose among
-// several exits the one they expect to leave by soonest, and choose again as the crowd
-// moves. A walker expects to leave exit e after
+// The exit choice phase (SpawnGroup::exits, Source::exits; RiMEA test 11): a group's or a
+// source's walkers choose among several exits the one they expect to leave by soonest, and
+// choose again as the crowd moves. A walker expects to leave exit e after
 //
 //     max(d / v, q / c)
 //
@@ -12,9 +12,10 @@
 // arrives, and a farther one when the near one's queue would hold it longer than the walk.
 // When the World is built the walkers choose in order of nearness to an exit, each counting
 // those who chose before it (a source's agents choose as they enter); then every
-// kChoiceRoundS of simulated time a quarter of them (by id) choose again, each switching only when another exit is clearly sooner
-// (kSwitchShare and kSwitchS), so a crowd does not swing between exits. Serial and by id:
-// the same for any thread count.
+// kChoiceRoundS of simulated time a quarter of them (by id) choose again, each switching
+// only when another exit is clearly sooner (kSwitchShare and kSwitchS), so a crowd does not
+// swing between exits. Walkers whose brain picks their goal take no part (the World leaves
+// them out). Serial and by id: the same for any thread count.
 
 #include "simcore/world/StepView.h"
 
