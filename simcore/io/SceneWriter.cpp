@@ -20,6 +20,7 @@ void writeSceneSound(YamlWriter& w, const Scene& s);
 void writeEmission(YamlWriter& w, const SoundEmission& e);
 void writeSceneActionPoints(YamlWriter& w, const Scene& s);
 void writeSceneSources(YamlWriter& w, const Scene& s);
+void writeSceneMeasurements(YamlWriter& w, const Scene& s);
 }  // namespace detail
 
 namespace {
@@ -313,6 +314,7 @@ std::string sceneToYaml(const Scene& s)
     detail::writeSceneSound(w, s);
     detail::writeSceneActionPoints(w, s);
     detail::writeSceneSources(w, s);
+    detail::writeSceneMeasurements(w, s);
     writeAgents(w, s);
     o << YAML::EndMap;
     return std::string(o.c_str()) + "\n";

@@ -108,6 +108,11 @@ const char* toString(Arrivals arrivals)
     return arrivals == Arrivals::Poisson ? "poisson" : "steady";
 }
 
+const char* toString(MeasurementShape shape)
+{
+    return shape == MeasurementShape::Area ? "area" : "line";
+}
+
 const char* toString(AreaShape shape)
 {
     switch (shape) {

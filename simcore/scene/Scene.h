@@ -344,6 +344,22 @@ struct Source {
     bool operator==(const Source&) const = default;
 };
 
+// What a measurement records (RunAnalysis.h): the walkers crossing a line, or the
+// density and speed of those inside an area.
+enum class MeasurementShape { Line, Area };
+
+// A researcher's measurement place: it changes nothing in the run, the analysis of the
+// recorded frames reads it (flow over a line, speed against density in an area).
+struct Measurement {
+    std::string name;
+    MeasurementShape shape = MeasurementShape::Line;
+    // Line: its two ends (x, z); a crossing counts as forward when it moves along
+    // (z1 - z0, x0 - x1), the line's direction turned a quarter. Area: the corners (x, z)
+    // of a simple polygon, >= 3.
+    std::vector<glm::vec2> points;
+    bool operator==(const Measurement&) const = default;
+};
+
 struct Scene {
     static constexpr int kFormatVersion = 1;
     Settings settings;
@@ -365,6 +381,7 @@ struct Scene {
     std::vector<SoundSource> soundSources;
     std::vector<ActionPoint> actionPoints;
     std::vector<Source> sources;
+    std::vector<Measurement> measurements;
     std::vector<BrainGraph> brains;
     bool operator==(const Scene&) const = default;
 
@@ -394,6 +411,7 @@ const char* toString(AgentKind kind);
 const char* toString(Navigation navigation);
 const char* toString(AreaShape shape);
 const char* toString(Arrivals arrivals);
+const char* toString(MeasurementShape shape);  // "line", "area"
 const char* toString(ObstacleShape shape);
 const char* toString(CarFollowing model);  // "inherit", "idm", "gap_time", "fuzzy"
 // The model a vehicle of `type` on `lane` follows (either may be null): the lane's, the

@@ -62,6 +62,7 @@ private:
     void readEmission(const YAML::Node& node, const std::string& key, SoundEmission& e);
     void readActionPoints(const YAML::Node& node, Scene& scene);
     void readSources(const YAML::Node& node, Scene& scene);
+    void readMeasurements(const YAML::Node& node, Scene& scene);
     void readSourceTypes(const YAML::Node& item, const std::string& key, Source& s);
     void readSourcePlace(const YAML::Node& item, const std::string& key, Source& s);
     void readSourceWindows(const YAML::Node& item, const std::string& key, Source& s);

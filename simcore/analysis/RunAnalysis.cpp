@@ -1,0 +1,68 @@
+#include "simcore/analysis/RunAnalysis.h"
+
+#include "simcore/analysis/RecordedPositions.h"
+
+#include <algorithm>
+#include <utility>
+
+namespace throng::sim {
+
+namespace {
+
+std::vector<Trajectory> sampleTrajectories(const Scene& scene, const FrameCache& cache, const AnalysisOptions& options,
+                                           std::size_t& walkers)
+{
+    std::vector<std::uint32_t> seen;
+    for (std::size_t i = 0; i < cache.agentCount(); ++i)
+        for (std::size_t f = 0; f < cache.frameCount(); ++f)
+            if (inShot(cache.at(f, i)) && isWalkerAt(scene, cache, f, i)) {
+                seen.push_back(std::uint32_t(i));
+                break;
+            }
+    walkers = seen.size();
+    std::vector<Trajectory> out;
+    const std::size_t take = std::min(seen.size(), std::max<std::size_t>(options.maxTrajectories, 1));
+    const std::size_t frames = cache.frameCount();
+    const std::size_t stride = std::max<std::size_t>(1, frames / std::max<std::size_t>(options.maxTrajectoryPoints, 2));
+    for (std::size_t k = 0; k < take; ++k) {
+        const std::uint32_t agent = seen[k * seen.size() / take];
+        Trajectory t{agent, {}};
+        for (std::size_t f = 0; f < frames; ++f) {
+            const bool here = inShot(cache.at(f, agent)) && isWalkerAt(scene, cache, f, agent);
+            if (!here) {
+                if (!t.points.empty())
+                    out.push_back(std::exchange(t, Trajectory{agent, {}}));
+                continue;
+            }
+            const bool last = f + 1 == frames || !inShot(cache.at(f + 1, agent));
+            if (f % stride == 0 || last || t.points.empty())
+                t.points.push_back(groundPosition(cache, f, agent));
+        }
+        if (!t.points.empty())
+            out.push_back(std::move(t));
+    }
+    return out;
+}
+
+}  // namespace
+
+RunAnalysis analyseRun(const Scene& scene, const FrameCache& cache, const AnalysisOptions& options)
+{
+    RunAnalysis a;
+    a.fps = cache.fps();
+    a.frames = cache.frameCount();
+    a.durationS = a.frames > 0 ? double(a.frames - 1) / double(a.fps) : 0.0;
+    a.boundsMin = glm::dvec2(scene.settings.boundsMin);
+    a.boundsMax = glm::dvec2(scene.settings.boundsMax);
+    a.trajectories = sampleTrajectories(scene, cache, options, a.walkers);
+    a.density = densityMap(scene, cache, options.densityCellM, 0, a.frames);
+    a.speedDensity = measureSpeedDensity(scene, cache, 1);
+    a.lines = countLineCrossings(scene, cache);
+    a.flowBinS = options.flowBinS > 0.0 ? options.flowBinS : 1.0;
+    for (const LineFlow& l : a.lines)
+        a.lineFlowPerSecond.push_back(flowPerSecond(l, a.fps, a.frames, a.flowBinS));
+    a.occupancy = measureOccupancy(scene, cache);
+    return a;
+}
+
+}  // namespace throng::sim
