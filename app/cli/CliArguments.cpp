@@ -47,6 +47,9 @@ std::string usageText()
            "      --seed S                override the scene's random seed\n"
            "      --threads T             worker threads (default: all cores)\n"
            "      --stats OUT.json        write the run's figures as JSON\n"
+           "      --report OUT.html       write the run's analysis as one self-contained HTML file:\n"
+           "                              trajectories, density heatmap, speed against density,\n"
+           "                              flow per measurement line and exit, agents in and out\n"
            "      --trajectories OUT.csv  write frame,agent,x,y,z,heading,speed,clip,phase rows\n"
            "                              (the same file as --export OUT.csv)\n"
            "      --export OUT            write the recorded run in the format OUT's suffix names;\n"
@@ -125,6 +128,7 @@ ParseOutcome parseArguments(const std::vector<std::string>& argv)
             else if (t)
                 a.threads = int(*t);
         } else if (arg == "--stats") value(a.statsPath);
+        else if (arg == "--report") value(a.reportPath);
         else if (arg == "--trajectories") {
             std::string path;
             if (value(path))
@@ -181,9 +185,9 @@ ParseOutcome parseArguments(const std::vector<std::string>& argv)
         out.error = "unknown command '" + a.command + "'";
     }
     if (out.error.empty() && a.command != "run" &&
-        (!a.statsPath.empty() || !a.exports.empty() || a.frames ||
+        (!a.statsPath.empty() || !a.reportPath.empty() || !a.exports.empty() || a.frames ||
          !a.exportMode.empty() || a.exportJointStep || !a.exportLod.empty()))
-        out.error = "--frames, --stats, --trajectories and --export options belong to 'run'";
+        out.error = "--frames, --stats, --report, --trajectories and --export options belong to 'run'";
     return out;
 }
 

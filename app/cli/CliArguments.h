@@ -24,6 +24,7 @@ struct CliArguments {
     std::optional<std::uint64_t> frames, seed, agents, steps;
     int threads = 0;
     std::string statsPath, scenario;
+    std::string reportPath;  // run: the analysis as one HTML file (report/HtmlReport.h)
     std::vector<ExportOutput> exports;             // in the order given; the run records frames for them
     std::string exportMode;                        // exact | compact; empty = exact
     std::optional<std::uint64_t> exportJointStep;  // >= 1

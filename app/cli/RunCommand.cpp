@@ -45,7 +45,7 @@ int runCommand(const CliArguments& args, std::ostream& out, std::ostream& err)
         return 1;
     }
 
-    const bool record = !args.exports.empty();
+    const bool record = !args.exports.empty() || !args.reportPath.empty();
     sim::FrameCache cache;
     if (record)
         world.startRecording(cache);

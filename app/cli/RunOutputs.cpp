@@ -2,6 +2,10 @@
 
 #include "export/ExportFormats.h"
 #include "simcore/io/SceneIO.h"
+#ifdef THRONG_HAS_REPORT
+#include "report/HtmlReport.h"
+#include "simcore/analysis/RunAnalysis.h"
+#endif
 
 #include <filesystem>
 #include <ostream>
@@ -41,6 +45,17 @@ bool writeRunOutputs(const CliArguments& args, const sim::Scene& scene, const si
             for (const std::string& p : r.writtenPaths)
                 written += (written.empty() ? "" : ", ") + p;
         report(output.flag.c_str(), r.ok(), written, r.error);
+    }
+    if (!args.reportPath.empty()) {
+#ifdef THRONG_HAS_REPORT
+        const sim::RunAnalysis analysis = sim::analyseRun(scene, cache);
+        const report::ReportHeading heading{std::filesystem::path(args.scene).filename().string(), stats.seed};
+        const sim::SaveResult r = report::writeReport(args.reportPath, scene, analysis, heading);
+        report("report", r.ok, args.reportPath, r.error);
+#else
+        report("report", false, args.reportPath,
+               "--report " + args.reportPath + ": this throng-cli was built without Qt Charts, which the report needs");
+#endif
     }
     // Stats last, so a pipeline that sees the stats file knows the other outputs are done.
     if (!args.statsPath.empty()) {

@@ -58,7 +58,15 @@ RunAnalysis analyseRun(const Scene& scene, const FrameCache& cache, const Analys
     a.density = densityMap(scene, cache, options.densityCellM, 0, a.frames);
     a.speedDensity = measureSpeedDensity(scene, cache, 1);
     a.lines = countLineCrossings(scene, cache);
-    a.flowBinS = options.flowBinS > 0.0 ? options.flowBinS : 1.0;
+    a.flowBinS = options.flowBinS;
+    if (a.flowBinS <= 0.0) {
+        a.flowBinS = 10.0;
+        for (double bin : {1.0, 2.0, 5.0})
+            if (a.durationS / bin <= 80.0) {
+                a.flowBinS = bin;
+                break;
+            }
+    }
     for (const LineFlow& l : a.lines)
         a.lineFlowPerSecond.push_back(flowPerSecond(l, a.fps, a.frames, a.flowBinS));
     a.occupancy = measureOccupancy(scene, cache);

@@ -20,7 +20,7 @@ namespace throng::sim {
 
 struct AnalysisOptions {
     double densityCellM = 1.0;      // heatmap cells, m
-    double flowBinS = 1.0;          // flow bins, s
+    double flowBinS = 0.0;          // flow bins, s; <= 0: 1, 2, 5 or 10 s, about 80 bins over the run
     std::size_t maxTrajectories = 2'000;   // walkers drawn (evenly picked by cache index)
     std::size_t maxTrajectoryPoints = 400; // points per trajectory (evenly picked frames)
 };
