@@ -52,6 +52,9 @@ const char* fieldName(SceneField field)
 
 bool simulationReads(ItemKind kind, SceneField field)
 {
+    // Measurements are read by the analysis of the recorded frames, never by a World.
+    if (kind == ItemKind::Measurement)
+        return false;
     switch (field) {
     case SceneField::Look:
     case SceneField::Group:

@@ -41,7 +41,8 @@ constexpr std::uint32_t fieldBit(SceneField field)
 // placed agent's look, tint, height scale and group (export only), a type's looks,
 // tints, height range and character (export only), a brain's layout, and the names of
 // walls, obstacles, heroes and paths (display only: what refers to a path by name is an
-// item of its own). Everything else is read.
+// item of its own), and anything of a measurement (the analysis reads it). Everything else
+// is read.
 bool simulationReads(ItemKind kind, SceneField field);
 
 struct SceneChange {

@@ -41,6 +41,7 @@ std::size_t itemCount(const sim::Scene& s, ItemKind kind)
     case ItemKind::Vehicle: return s.vehicles.size();
     case ItemKind::ActionPoint: return s.actionPoints.size();
     case ItemKind::Source: return s.sources.size();
+    case ItemKind::Measurement: return s.measurements.size();
     }
     return 0;
 }
@@ -65,6 +66,7 @@ QString kindTitle(ItemKind kind)
     case ItemKind::Vehicle: return tr("Vehicles");
     case ItemKind::ActionPoint: return tr("Action Points");
     case ItemKind::Source: return tr("Sources");
+    case ItemKind::Measurement: return tr("Measurements");
     }
     return {};
 }
@@ -100,6 +102,7 @@ QString itemLabel(const sim::Scene& s, SceneItem item)
             .arg(QString::fromStdString(s.vehicles[i].type), QString::fromStdString(s.vehicles[i].lane));
     case ItemKind::ActionPoint: return named(s.actionPoints, i, tr("Action point"));
     case ItemKind::Source: return named(s.sources, i, tr("Source"));
+    case ItemKind::Measurement: return named(s.measurements, i, tr("Measurement"));
     }
     return {};
 }
@@ -113,7 +116,7 @@ std::optional<SceneItem> itemForKey(const std::string& key)
         {"lanes", ItemKind::Lane},             {"heroes", ItemKind::Hero},    {"brains", ItemKind::Brain},
         {"flow_strokes", ItemKind::FlowStroke}, {"crosswalks", ItemKind::Crosswalk},
         {"vehicles", ItemKind::Vehicle},       {"action_points", ItemKind::ActionPoint},
-        {"sources", ItemKind::Source}};
+        {"sources", ItemKind::Source},         {"measurements", ItemKind::Measurement}};
     if (key.rfind("settings", 0) == 0)
         return SceneItem{ItemKind::Settings, 0};
     const std::size_t open = key.find('['), close = key.find(']');

@@ -15,10 +15,10 @@ namespace throng::editor {
 
 enum class ItemKind {
     Settings, AgentType, Group, Agent, Path, Wall, Obstacle, Goal, TrafficLight, Lane, FlowStroke, Hero, Brain,
-    Crosswalk, Vehicle, ActionPoint, Source
+    Crosswalk, Vehicle, ActionPoint, Source, Measurement
 };
 // How many kinds there are (the last kind + 1).
-inline constexpr int kItemKindCount = int(ItemKind::Source) + 1;
+inline constexpr int kItemKindCount = int(ItemKind::Measurement) + 1;
 
 struct SceneItem {
     ItemKind kind = ItemKind::Settings;

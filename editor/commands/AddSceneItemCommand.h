@@ -33,6 +33,7 @@ constexpr ItemKind listKind()
     else if constexpr (std::is_same_v<Item, sim::Crosswalk>) return ItemKind::Crosswalk;
     else if constexpr (std::is_same_v<Item, sim::ActionPoint>) return ItemKind::ActionPoint;
     else if constexpr (std::is_same_v<Item, sim::Source>) return ItemKind::Source;
+    else if constexpr (std::is_same_v<Item, sim::Measurement>) return ItemKind::Measurement;
     else {
         static_assert(std::is_same_v<Item, sim::Vehicle>, "not an item of a scene list");
         return ItemKind::Vehicle;

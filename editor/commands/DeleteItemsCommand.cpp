@@ -66,6 +66,7 @@ void DeleteItemsCommand::forEachList(Scene& s, F f)
     f(s.brains, m_brains, ItemKind::Brain);
     f(s.actionPoints, m_actionPoints, ItemKind::ActionPoint);
     f(s.sources, m_sources, ItemKind::Source);
+    f(s.measurements, m_measurements, ItemKind::Measurement);
 }
 
 DeleteItemsCommand::DeleteItemsCommand(SceneDocument& document, const Selection& items) : m_document(document)

@@ -34,6 +34,7 @@ void forEachPoint(Scene& s, SceneItem item, Visit visit)
     case ItemKind::Wall: for (auto& p : s.walls[i].points) visit(p); return;
     case ItemKind::Lane: for (auto& p : s.lanes[i].points) visit(p); return;
     case ItemKind::FlowStroke: for (auto& p : s.flowStrokes[i].points) visit(p); return;
+    case ItemKind::Measurement: for (auto& p : s.measurements[i].points) visit(p); return;
     case ItemKind::Crosswalk: visit(s.crosswalks[i].from); visit(s.crosswalks[i].to); return;
     case ItemKind::Source: {
         // Only the shape's own points, as for a group: the other pair is not written.
@@ -80,6 +81,7 @@ bool MoveItemsCommand::movable(ItemKind kind)
     case ItemKind::FlowStroke:
     case ItemKind::Crosswalk:
     case ItemKind::Source:
+    case ItemKind::Measurement:
     case ItemKind::Group: return true;
     default: return false;
     }

@@ -107,6 +107,7 @@ std::function<std::string&(sim::Scene&)> nameLocate(SceneItem item)
     case ItemKind::Crosswalk: return [i](sim::Scene& s) -> std::string& { return s.crosswalks[i].name; };
     case ItemKind::ActionPoint: return [i](sim::Scene& s) -> std::string& { return s.actionPoints[i].name; };
     case ItemKind::Source: return [i](sim::Scene& s) -> std::string& { return s.sources[i].name; };
+    case ItemKind::Measurement: return [i](sim::Scene& s) -> std::string& { return s.measurements[i].name; };
     default: return {};
     }
 }

@@ -25,7 +25,7 @@ constexpr ItemKind kListed[] = {ItemKind::Settings,    ItemKind::AgentType, Item
                                 ItemKind::Path,        ItemKind::Wall,      ItemKind::Obstacle,     ItemKind::Goal,
                                 ItemKind::ActionPoint, ItemKind::Source,    ItemKind::TrafficLight, ItemKind::Lane,
                                 ItemKind::Crosswalk,   ItemKind::Vehicle,   ItemKind::FlowStroke,   ItemKind::Hero,
-                                ItemKind::Brain};
+                                ItemKind::Brain,       ItemKind::Measurement};
 }  // namespace
 
 OutlinerPanel::OutlinerPanel(SceneDocument& document, QWidget* parent) : QTreeWidget(parent), m_document(document)

@@ -114,6 +114,10 @@ void PointTable::addPoint()
     const int row = m_table->currentRow() >= 0 ? m_table->currentRow() : m_table->rowCount() - 1;
     if (row < 0)
         return;
+    if (std::size_t(m_table->rowCount()) >= m_maxPoints) {
+        m_form.refuse(m_add, tr("This line has its %1 points, its ends; none was added.").arg(m_maxPoints));
+        return;
+    }
     change(tr("add a point"), [&](Points& points) {
         const std::size_t at = std::min(std::size_t(row), points.size() - 1);
         const glm::vec2 p = points[at];

@@ -32,6 +32,8 @@ public:
 
     // A polyline keeps 2 points, a polygon 3; the default is 2.
     void setMinPoints(std::size_t minPoints) { m_minPoints = minPoints; }
+    // A measurement line keeps exactly 2: "Add point" is refused at the maximum.
+    void setMaxPoints(std::size_t maxPoints) { m_maxPoints = maxPoints; }
     void setCheck(Check check) { m_check = std::move(check); }
 
     // Re-reads the selection's points.
@@ -52,6 +54,7 @@ private:
     QPushButton* m_add = nullptr;
     QPushButton* m_remove = nullptr;
     std::size_t m_minPoints = 2;  // the scene check's minimum for a polyline
+    std::size_t m_maxPoints = std::size_t(-1);
     Check m_check;
     int m_serial = 0;  // each edit its own undo step
 };

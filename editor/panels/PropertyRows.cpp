@@ -7,7 +7,10 @@
 #include "editor/panels/PropertyForm.h"
 #include "editor/SpawnPolygonCheck.h"
 #include "simcore/scene/Clip.h"
+#include "simcore/scene/GroundPolygon.h"
 #include "simcore/scene/SpawnArea.h"
+
+#include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -96,6 +99,47 @@ sim::SpawnGroup withAreaShape(const sim::SpawnGroup& now, sim::AreaShape shape)
 }  // namespace
 
 #define THRONG_AT(list, member) [](sim::Scene& s, std::size_t i) -> auto& { return s.list[i].member; }
+
+namespace {
+
+// A measurement's kind and size, and its points: a line's two ends, or an area's corners
+// (kept a simple polygon). Lines and areas selected together show neither table.
+void addMeasurementRows(PropertyForm& form)
+{
+    form.addInfo("measures", tr("Measures"), [](const sim::Scene& s, std::size_t i) {
+        const sim::Measurement& m = s.measurements[i];
+        if (m.shape == sim::MeasurementShape::Line)
+            return tr("Walkers crossing it (flow), %1 m long").arg(double(glm::length(m.points[1] - m.points[0])), 0, 'f', 2);
+        return tr("Density and speed inside, %1 m²").arg(sim::polygonArea(m.points), 0, 'f', 2);
+    });
+    auto allOf = [&form](sim::MeasurementShape shape) {
+        const std::vector<std::size_t> items = form.indices();
+        return std::all_of(items.begin(), items.end(),
+                           [&](std::size_t i) { return form.scene().measurements[i].shape == shape; });
+    };
+    auto* ends = new PointTable(form, THRONG_AT(measurements, points), form.owner());
+    ends->setMinPoints(2);
+    ends->setMaxPoints(2);
+    ends->setCheck([](const PointTable::Points& points) {
+        return points.size() == 2 && points[0] == points[1] ? tr("A measurement line's ends must differ.") : QString();
+    });
+    form.addRow(tr("Ends"), ends, [&form, ends, allOf] {
+        form.setRowShown(ends, allOf(sim::MeasurementShape::Line));
+        ends->refresh();
+    });
+    auto* corners = new PointTable(form, THRONG_AT(measurements, points), form.owner());
+    corners->setMinPoints(3);
+    corners->setCheck([](const PointTable::Points& points) {
+        return sim::polygonSelfCrossing(points) ? tr("That would make the area's outline cross itself; it stays as it is.")
+                                                : QString();
+    });
+    form.addRow(tr("Corners"), corners, [&form, corners, allOf] {
+        form.setRowShown(corners, allOf(sim::MeasurementShape::Area));
+        corners->refresh();
+    });
+}
+
+}  // namespace
 
 void addPropertyRows(PropertyForm& form)
 {
@@ -254,6 +298,7 @@ void addSetRows(PropertyForm& form)
                                            : tr("%1 from %2").arg(count, QString::fromStdString(h.keyframesFile));
         });
         break;
+    case ItemKind::Measurement: addMeasurementRows(form); break;
     case ItemKind::Wall:
         addPoints(form, THRONG_AT(walls, points));
         break;

@@ -99,15 +99,18 @@ std::optional<SelectTool::Hit> SelectTool::pick(QPointF pixel) const
                 bestPx = hit->distancePx;
                 best = Hit{{kind, i}};
             }
-    // A source is picked anywhere on its line or its rectangle's edge.
-    for (std::size_t i = 0; i < s.sources.size(); ++i) {
-        const std::vector<glm::vec2> outline = sourceOutline(s.sources[i]);
+    // A source or a measurement is picked anywhere on its line or its outline.
+    auto considerOutline = [&](SceneItem item, const std::vector<glm::vec2>& outline) {
         for (std::size_t k = 1; k < outline.size(); ++k)
             if (const double d = segmentDistancePx(pixel, pixelOf(outline[k - 1]), pixelOf(outline[k])); d < bestPx) {
                 bestPx = d;
-                best = Hit{{ItemKind::Source, i}};
+                best = Hit{item};
             }
-    }
+    };
+    for (std::size_t i = 0; i < s.sources.size(); ++i)
+        considerOutline({ItemKind::Source, i}, sourceOutline(s.sources[i]));
+    for (std::size_t i = 0; i < s.measurements.size(); ++i)
+        considerOutline({ItemKind::Measurement, i}, measurementOutline(s.measurements[i]));
     return best;
 }
 
@@ -299,11 +302,15 @@ void SelectTool::finishBox(Qt::KeyboardModifiers modifiers)
                                                  [&](glm::vec2 p) { return box.contains(pixelOf(p)); }))
                     add({kind, i});
             }
-        for (std::size_t i = 0; i < s.sources.size(); ++i) {
-            const std::vector<glm::vec2> outline = sourceOutline(s.sources[i]);
-            if (std::all_of(outline.begin(), outline.end(), [&](glm::vec2 p) { return box.contains(pixelOf(p)); }))
+        auto inBox = [&](const std::vector<glm::vec2>& outline) {
+            return std::all_of(outline.begin(), outline.end(), [&](glm::vec2 p) { return box.contains(pixelOf(p)); });
+        };
+        for (std::size_t i = 0; i < s.sources.size(); ++i)
+            if (inBox(sourceOutline(s.sources[i])))
                 add({ItemKind::Source, i});
-        }
+        for (std::size_t i = 0; i < s.measurements.size(); ++i)
+            if (inBox(measurementOutline(s.measurements[i])))
+                add({ItemKind::Measurement, i});
     }
     document().setSelection(selection);
 }

@@ -39,6 +39,13 @@ std::optional<glm::vec2> itemAnchor(const sim::Scene& s, SceneItem item)
         return src.shape == sim::SourceShape::Line ? 0.5f * (src.from + src.to) : 0.5f * (src.min + src.max);
     }
     case ItemKind::Vehicle: return vehicleStart(s, s.vehicles[item.index]);
+    case ItemKind::Measurement: {
+        const std::vector<glm::vec2>& points = s.measurements[item.index].points;
+        glm::vec2 sum(0.0f);
+        for (const glm::vec2& p : points)
+            sum += p;
+        return points.empty() ? std::nullopt : std::optional<glm::vec2>(sum / float(points.size()));
+    }
     default: return std::nullopt;
     }
 }
@@ -94,6 +101,14 @@ std::vector<glm::vec2> sourceOutline(const sim::Source& source)
         return {source.from, source.to};
     const glm::vec2 lo = source.min, hi = source.max;
     return {lo, {hi.x, lo.y}, hi, {lo.x, hi.y}, lo};
+}
+
+std::vector<glm::vec2> measurementOutline(const sim::Measurement& measurement)
+{
+    std::vector<glm::vec2> outline = measurement.points;
+    if (measurement.shape == sim::MeasurementShape::Area && !outline.empty())
+        outline.push_back(outline.front());
+    return outline;
 }
 
 std::vector<EditHandle> editHandles(const sim::Scene& scene, const Selection& selection)

@@ -19,8 +19,8 @@ namespace throng::editor {
 // Where a vehicle starts: `atM` along its lane (clamped to the lane's end); empty when
 // the lane is unknown.
 std::optional<glm::vec2> vehicleStart(const sim::Scene& scene, const sim::Vehicle& vehicle);
-// The point an agent, obstacle, goal, light, vehicle (its start), crosswalk or source (its
-// middle) stands on; empty for other kinds and for a vehicle on an unknown lane.
+// The point an agent, obstacle, goal, light, vehicle (its start), crosswalk, source (its
+// middle) or measurement (the mean of its points) stands on; empty for other kinds and for a vehicle on an unknown lane.
 std::optional<glm::vec2> itemAnchor(const sim::Scene& scene, SceneItem item);
 // The ids the World gives group `group`'s members: [first, second). Spawned agents take
 // ids after every id the scene uses, group after group (World::buildAgents).
@@ -33,6 +33,8 @@ std::span<const glm::vec2> itemPolyline(const sim::Scene& scene, SceneItem item)
 // Where a source lets agents in, as a polyline: its line's two ends, or its rectangle's
 // corners closed (five points).
 std::vector<glm::vec2> sourceOutline(const sim::Source& source);
+// A measurement as a polyline: a line's two ends, or an area's corners closed.
+std::vector<glm::vec2> measurementOutline(const sim::Measurement& measurement);
 
 struct EditHandle {
     enum class Kind { Point, Radius };

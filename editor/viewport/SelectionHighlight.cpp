@@ -89,6 +89,9 @@ void SelectionHighlight::addItems(const sim::Scene& s, const Selection& selectio
             mesh.addRing(s.actionPoints[i].position, s.actionPoints[i].radiusM + kMarginM, kLineM, c);
             break;
         case ItemKind::Source: mesh.addPolyline(sourceOutline(s.sources[i]), false, 0.08f + kLineM, c); break;
+        case ItemKind::Measurement:
+            mesh.addPolyline(measurementOutline(s.measurements[i]), false, 0.06f + kLineM, c);
+            break;
         case ItemKind::TrafficLight: mesh.addRing(s.trafficLights[i].position, 0.6f + kMarginM, kLineM, c); break;
         case ItemKind::Path: mesh.addPolyline(s.paths[i].points, s.paths[i].closed, kLineM, c); break;
         case ItemKind::Wall: mesh.addPolyline(s.walls[i].points, false, 0.12f + kLineM, c); break;

@@ -79,6 +79,7 @@ void SetGeometryBuilder::addSet(const sim::Scene& scene, ShapeMesh& mesh)
     addGoals(scene.goals, mesh);
     addActionPoints(scene.actionPoints, mesh);
     addSources(scene, mesh);
+    addMeasurements(scene.measurements, mesh);
     addObstacles(scene.obstacles, mesh);
     addWalls(scene.walls, mesh);
 }
@@ -268,6 +269,33 @@ void SetGeometryBuilder::addSources(const sim::Scene& scene, ShapeMesh& mesh)
         mesh.addLine(middle, tip, kThinHalfWidthM, palette::kSource);
         mesh.addLine(tip - 0.4f * (dir - side), tip, kThinHalfWidthM, palette::kSource);
         mesh.addLine(tip - 0.4f * (dir + side), tip, kThinHalfWidthM, palette::kSource);
+    }
+}
+
+void SetGeometryBuilder::addMeasurements(std::span<const sim::Measurement> measurements, ShapeMesh& mesh)
+{
+    constexpr float kLineHalfWidthM = 0.06f, kDashM = 0.6f;
+    for (const sim::Measurement& m : measurements) {
+        if (m.shape == sim::MeasurementShape::Line && m.points.size() == 2) {
+            const glm::vec2 a = m.points[0], b = m.points[1], d = b - a;
+            mesh.addLine(a, b, kLineHalfWidthM, palette::kMeasurement);
+            if (glm::length(d) <= 0.0f)
+                continue;
+            const glm::vec2 dir = glm::normalize(glm::vec2(d.y, -d.x)), side(-dir.y, dir.x);
+            const glm::vec2 middle = 0.5f * (a + b), tip = middle + 0.8f * dir;
+            mesh.addLine(middle, tip, kThinHalfWidthM, palette::kMeasurement);
+            mesh.addLine(tip - 0.3f * (dir - side), tip, kThinHalfWidthM, palette::kMeasurement);
+            mesh.addLine(tip - 0.3f * (dir + side), tip, kThinHalfWidthM, palette::kMeasurement);
+            continue;
+        }
+        // An area: its outline in dashes, so it reads as a region to measure, not a wall.
+        for (std::size_t k = 0; k < m.points.size(); ++k) {
+            const glm::vec2 a = m.points[k], b = m.points[(k + 1) % m.points.size()];
+            const float length = glm::length(b - a);
+            for (float t = 0.0f; t < length; t += 2.0f * kDashM)
+                mesh.addLine(a + (b - a) * (t / length), a + (b - a) * (std::min(t + kDashM, length) / length),
+                             kThinHalfWidthM, palette::kMeasurement);
+        }
     }
 }
 

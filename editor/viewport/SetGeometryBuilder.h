@@ -37,6 +37,9 @@ private:
     // A source's line or rectangle, with an arrow from its middle the way its agents head
     // off: its heading, else toward its goal or its path's first point, else square to the line.
     static void addSources(const sim::Scene& scene, ShapeMesh& mesh);
+    // A measurement line with an arrow from its middle to its forward side (the way a
+    // crossing counts as forward), or an area's outline dashed.
+    static void addMeasurements(std::span<const sim::Measurement> measurements, ShapeMesh& mesh);
     static void addObstacles(std::span<const sim::Obstacle> obstacles, ShapeMesh& mesh);
     static void addWalls(std::span<const sim::Wall> walls, ShapeMesh& mesh);
     static void addChevrons(std::span<const glm::vec2> points, bool closed, float sizeM, glm::vec4 colour,

@@ -22,6 +22,7 @@ inline constexpr glm::vec4 kObstacleSolid{0.640f, 0.570f, 0.490f, 1.0f};  // 3D 
 inline constexpr glm::vec4 kGoal{0.380f, 0.850f, 0.560f, 1.0f};
 inline constexpr glm::vec4 kActionPoint{0.960f, 0.480f, 0.800f, 1.0f};
 inline constexpr glm::vec4 kSource{0.250f, 0.820f, 0.800f, 1.0f};
+inline constexpr glm::vec4 kMeasurement{0.330f, 0.560f, 1.000f, 1.0f};
 inline constexpr glm::vec4 kLane{0.165f, 0.173f, 0.184f, 1.0f};
 inline constexpr glm::vec4 kLaneEdge{0.420f, 0.435f, 0.455f, 1.0f};
 inline constexpr glm::vec4 kLaneCentre{0.860f, 0.760f, 0.330f, 1.0f};
