@@ -12,6 +12,7 @@
 #include "editor/brain/BrainEditorPanel.h"
 #include "editor/commands/DeleteItemsCommand.h"
 #include "editor/panels/AgentTypeActions.h"
+#include "editor/panels/AnalysisPanel.h"
 #include "editor/panels/OutlinerPanel.h"
 #include "editor/panels/PropertiesPanel.h"
 #include "editor/panels/TimelinePanel.h"
@@ -135,6 +136,18 @@ void MainWindow::createDocks()
     addDock(tr("Timeline"), "timelineDock", m_timeline, Qt::BottomDockWidgetArea);
     m_messages = new MessagesPanel(this);
     m_messagesDock = addDock(tr("Messages"), "messagesDock", m_messages, Qt::BottomDockWidgetArea);
+    // The analysis shares the bottom with the messages, behind them until asked for.
+    m_analysis = new AnalysisPanel(m_document, *m_simulation, this);
+    QDockWidget* analysisDock = addDock(tr("Analysis"), "analysisDock", m_analysis, Qt::BottomDockWidgetArea);
+    tabifyDockWidget(m_messagesDock, analysisDock);
+    m_messagesDock->raise();
+    analysisDock->toggleViewAction()->setIcon(themeIcon("action-analyse"));
+    analysisDock->toggleViewAction()->setToolTip(tr("Show the Analysis panel: flows, densities and speeds of the "
+                                                    "recorded run, and its HTML report"));
+    connect(m_analysis, &AnalysisPanel::message, this, [this](const QString& text) {
+        m_messages->showNote(text);
+        statusBar()->showMessage(text, 8000);
+    });
     m_brains = new BrainEditorPanel(m_document, *m_simulation, m_viewport, this);
     m_brains->setObjectName("brainEditor");
     // The brain editor shares the centre with the viewport in its own workspace (Ctrl+B),

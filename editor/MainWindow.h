@@ -22,6 +22,7 @@ class QToolBar;
 namespace throng::editor {
 
 class AgentTypeActions;
+class AnalysisPanel;
 class AutosaveRecovery;
 class BrainEditorPanel;
 class ExportDialog;
@@ -59,6 +60,7 @@ public:
     MessagesPanel& messages() { return *m_messages; }
     ToolManager& tools() { return *m_tools; }
     SimulationController& simulation() { return *m_simulation; }
+    AnalysisPanel& analysis() { return *m_analysis; }
     OutlinerPanel& outliner() { return *m_outliner; }
     TimelinePanel& timeline() { return *m_timeline; }
     WorkspaceLayout& workspace() { return *m_workspace; }
@@ -102,6 +104,7 @@ private:
     ToolManager* m_tools = nullptr;
     SimulationController* m_simulation = nullptr;
     MessagesPanel* m_messages = nullptr;
+    AnalysisPanel* m_analysis = nullptr;
     OutlinerPanel* m_outliner = nullptr;
     TimelinePanel* m_timeline = nullptr;
     RecentFiles* m_recent = nullptr;

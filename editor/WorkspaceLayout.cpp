@@ -18,7 +18,7 @@ namespace {
 // Raised whenever the docks or the central widget change: a layout saved by an older
 // build is then not applied (restoreState would place docks the window no longer has
 // where they no longer fit).
-constexpr int kLayoutVersion = 2;
+constexpr int kLayoutVersion = 3;
 constexpr int kViewportMinWidth = 360, kViewportMinHeight = 260;
 constexpr int kBrainEditorMinWidth = 420;
 const char* const kKeys[] = {"layout", "brains"};

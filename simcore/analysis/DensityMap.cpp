@@ -41,9 +41,11 @@ DensityMap densityMap(const Scene& scene, const FrameCache& cache, double cellM,
         return map;
     std::vector<std::uint64_t> counts(map.persons.size(), 0);
     std::uint64_t outside = 0;
-    for (std::size_t f = firstFrame; f < lastFrame; ++f)
+    const WalkerTypes walker(scene);
+    for (std::size_t f = firstFrame; f < lastFrame; ++f) {
+        const std::vector<AgentInfo>& agents = cache.agentsAt(f);
         for (std::size_t i = 0; i < cache.agentCount(); ++i) {
-            if (!inShot(cache.at(f, i)) || !isWalkerAt(scene, cache, f, i))
+            if (!inShot(cache.at(f, i)) || !walker(agents, i))
                 continue;
             const glm::dvec2 p = groundPosition(cache, f, i);
             const double cx = std::floor((p.x - lo.x) / map.cellM), cz = std::floor((p.y - lo.y) / map.cellM);
@@ -53,6 +55,7 @@ DensityMap densityMap(const Scene& scene, const FrameCache& cache, double cellM,
             }
             ++counts[std::size_t(cz) * map.cols + std::size_t(cx)];
         }
+    }
     map.frames = lastFrame - firstFrame;
     for (std::size_t c = 0; c < counts.size(); ++c)
         map.persons[c] = double(counts[c]) / double(map.frames);

@@ -45,10 +45,12 @@ std::vector<LineFlow> countLineCrossings(const Scene& scene, const FrameCache& c
         }
     if (lines.empty())
         return flows;
-    for (std::size_t f = 1; f < cache.frameCount(); ++f)
+    const WalkerTypes walker(scene);
+    for (std::size_t f = 1; f < cache.frameCount(); ++f) {
+        const std::vector<AgentInfo>& agents = cache.agentsAt(f);
         for (std::size_t i = 0; i < cache.agentCount(); ++i) {
             const AgentFrame& before = cache.at(f - 1, i);
-            if (!inShot(before) || !cache.at(f, i).present || !isWalkerAt(scene, cache, f, i))
+            if (!inShot(before) || !cache.at(f, i).present || !walker(agents, i))
                 continue;
             const glm::dvec2 p = groundPosition(cache, f - 1, i), q = groundPosition(cache, f, i);
             for (std::size_t l = 0; l < lines.size(); ++l) {
@@ -59,6 +61,7 @@ std::vector<LineFlow> countLineCrossings(const Scene& scene, const FrameCache& c
                 ++(sign > 0 ? flows[l].forward : flows[l].backward);
             }
         }
+    }
     return flows;
 }
 

@@ -9,6 +9,7 @@
 #include <glm/vec2.hpp>
 
 #include <cstddef>
+#include <vector>
 
 namespace throng::sim {
 
@@ -22,11 +23,23 @@ inline glm::dvec2 groundPosition(const FrameCache& cache, std::size_t f, std::si
 // Whether the agent exists on frame f and has not left through an exit.
 inline bool inShot(const AgentFrame& a) { return a.present && !a.out; }
 
-// Whether cache agent `agent` is a walker on frame f (its type is a pedestrian type).
-inline bool isWalkerAt(const Scene& scene, const FrameCache& cache, std::size_t f, std::size_t agent)
-{
-    const std::uint16_t type = cache.agentsAt(f)[agent].typeIndex;
-    return type < scene.agentTypes.size() && scene.agentTypes[type].kind == AgentKind::Pedestrian;
-}
+// Which agents are walkers (their type is a pedestrian type), frame by frame: look up a
+// frame's agents once (FrameCache::agentsAt), then ask per agent.
+class WalkerTypes {
+public:
+    explicit WalkerTypes(const Scene& scene)
+    {
+        for (const AgentType& t : scene.agentTypes)
+            m_walker.push_back(t.kind == AgentKind::Pedestrian ? 1 : 0);
+    }
+    bool operator()(const std::vector<AgentInfo>& agentsOnFrame, std::size_t agent) const
+    {
+        const std::uint16_t type = agentsOnFrame[agent].typeIndex;
+        return type < m_walker.size() && m_walker[type] != 0;
+    }
+
+private:
+    std::vector<char> m_walker;
+};
 
 }  // namespace throng::sim

@@ -12,10 +12,15 @@ namespace {
 std::vector<Trajectory> sampleTrajectories(const Scene& scene, const FrameCache& cache, const AnalysisOptions& options,
                                            std::size_t& walkers)
 {
+    const WalkerTypes walker(scene);
+    std::vector<const std::vector<AgentInfo>*> agentsAt(cache.frameCount());
+    for (std::size_t f = 0; f < agentsAt.size(); ++f)
+        agentsAt[f] = &cache.agentsAt(f);
+    auto isWalker = [&](std::size_t f, std::size_t i) { return walker(*agentsAt[f], i); };
     std::vector<std::uint32_t> seen;
     for (std::size_t i = 0; i < cache.agentCount(); ++i)
         for (std::size_t f = 0; f < cache.frameCount(); ++f)
-            if (inShot(cache.at(f, i)) && isWalkerAt(scene, cache, f, i)) {
+            if (inShot(cache.at(f, i)) && isWalker(f, i)) {
                 seen.push_back(std::uint32_t(i));
                 break;
             }
@@ -28,7 +33,7 @@ std::vector<Trajectory> sampleTrajectories(const Scene& scene, const FrameCache&
         const std::uint32_t agent = seen[k * seen.size() / take];
         Trajectory t{agent, {}};
         for (std::size_t f = 0; f < frames; ++f) {
-            const bool here = inShot(cache.at(f, agent)) && isWalkerAt(scene, cache, f, agent);
+            const bool here = inShot(cache.at(f, agent)) && isWalker(f, agent);
             if (!here) {
                 if (!t.points.empty())
                     out.push_back(std::exchange(t, Trajectory{agent, {}}));

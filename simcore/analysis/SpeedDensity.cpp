@@ -12,6 +12,7 @@ std::vector<AreaSpeedDensity> measureSpeedDensity(const Scene& scene, const Fram
 {
     std::vector<AreaSpeedDensity> out;
     everyFrames = std::max<std::size_t>(everyFrames, 1);
+    const WalkerTypes walker(scene);
     for (const Measurement& m : scene.measurements) {
         if (m.shape != MeasurementShape::Area || m.points.size() < 3)
             continue;
@@ -26,9 +27,10 @@ std::vector<AreaSpeedDensity> measureSpeedDensity(const Scene& scene, const Fram
         for (std::size_t f = 0; f < cache.frameCount() && series.areaM2 > 0.0; f += everyFrames) {
             std::uint32_t walkers = 0;
             double speed = 0.0;
+            const std::vector<AgentInfo>& agents = cache.agentsAt(f);
             for (std::size_t i = 0; i < cache.agentCount(); ++i) {
                 const AgentFrame& a = cache.at(f, i);
-                if (!inShot(a) || !isWalkerAt(scene, cache, f, i))
+                if (!inShot(a) || !walker(agents, i))
                     continue;
                 const glm::dvec2 p = groundPosition(cache, f, i);
                 if (p.x < lo.x || p.y < lo.y || p.x > hi.x || p.y > hi.y ||

@@ -1,0 +1,212 @@
+#include "editor/panels/AnalysisPanel.h"
+
+#include "editor/Icons.h"
+#include "editor/SceneDocument.h"
+#include "editor/simulation/SimulationController.h"
+#include "report/AnalysisCharts.h"
+#include "report/GroundPlot.h"
+#include "report/HtmlReport.h"
+#include "report/ReportFigures.h"
+
+#include <QtCharts/QAbstractAxis>
+#include <QtCharts/QChartView>
+
+#include <QApplication>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QPushButton>
+#include <QScrollArea>
+#include <QTabWidget>
+#include <QTreeWidget>
+#include <QVBoxLayout>
+
+#include <algorithm>
+
+namespace throng::editor {
+
+namespace {
+
+QChartView* chartView(QWidget* parent, const QString& name)
+{
+    auto* view = new QChartView(parent);
+    view->setObjectName(name);
+    view->setRenderHint(QPainter::Antialiasing);
+    // Small enough not to widen the window or deepen the bottom docks it shares.
+    view->setMinimumSize(160, 90);
+    return view;
+}
+
+QLabel* imageLabel(QTabWidget* tabs, const QString& name, const QString& title)
+{
+    auto* label = new QLabel(tabs);
+    label->setObjectName(name);
+    label->setAlignment(Qt::AlignCenter);
+    label->setBackgroundRole(QPalette::Base);
+    auto* scroll = new QScrollArea(tabs);
+    scroll->setWidget(label);
+    scroll->setWidgetResizable(true);
+    tabs->addTab(scroll, title);
+    return label;
+}
+
+}  // namespace
+
+AnalysisPanel::AnalysisPanel(SceneDocument& document, SimulationController& controller, QWidget* parent)
+    : QWidget(parent), m_document(document), m_controller(controller)
+{
+    setObjectName("analysisPanel");
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(4, 4, 4, 4);
+    auto* bar = new QHBoxLayout;
+    m_analyse = new QPushButton(themeIcon("action-analyse"), tr("&Analyse"), this);
+    m_analyse->setObjectName("analyseButton");
+    m_analyse->setToolTip(tr("Measure the frames recorded so far: flows over the measurement lines, density and speed "
+                             "in the areas, agents in the scene and out (Ctrl+Shift+A)"));
+    m_analyse->setShortcut(QKeySequence(tr("Ctrl+Shift+A")));
+    m_save = new QPushButton(themeIcon("action-export"), tr("Save &Report..."), this);
+    m_save->setObjectName("saveReportButton");
+    m_save->setToolTip(tr("Write this analysis as one HTML file: the figures, every plot and the data behind them"));
+    m_save->setEnabled(false);
+    m_status = new QLabel(this);
+    m_status->setObjectName("analysisStatus");
+    m_status->setWordWrap(true);
+    bar->addWidget(m_analyse);
+    bar->addWidget(m_save);
+    bar->addWidget(m_status, 1);
+    layout->addLayout(bar);
+
+    m_tabs = new QTabWidget(this);
+    m_tabs->setObjectName("analysisTabs");
+    m_figures = new QTreeWidget(m_tabs);
+    m_figures->setObjectName("analysisFigures");
+    m_figures->setColumnCount(2);
+    m_figures->setHeaderLabels({tr("Figure"), tr("Value")});
+    m_figures->header()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
+    m_tabs->addTab(m_figures, tr("Figures"));
+    m_trajectories = imageLabel(m_tabs, "analysisTrajectories", tr("Trajectories"));
+    m_density = imageLabel(m_tabs, "analysisDensity", tr("Density"));
+    m_speedDensity = chartView(m_tabs, "analysisSpeedDensity");
+    m_tabs->addTab(m_speedDensity, tr("Speed-Density"));
+    m_flow = chartView(m_tabs, "analysisFlow");
+    m_tabs->addTab(m_flow, tr("Flow"));
+    m_occupancy = chartView(m_tabs, "analysisOccupancy");
+    m_tabs->addTab(m_occupancy, tr("In and Out"));
+    layout->addWidget(m_tabs, 1);
+
+    connect(m_analyse, &QPushButton::clicked, this, &AnalysisPanel::analyse);
+    connect(m_save, &QPushButton::clicked, this, &AnalysisPanel::saveReportAs);
+    connect(&m_controller, &SimulationController::recordedChanged, this, &AnalysisPanel::updateStatus);
+    // Another scene: what was measured belongs to the last one.
+    connect(&m_document, &SceneDocument::sceneReset, this, [this] {
+        m_analysis.reset();
+        m_trajectories->clear();
+        m_density->clear();
+        for (QChartView* view : {m_speedDensity, m_flow, m_occupancy}) {
+            QChart* old = view->chart();
+            view->setChart(new QChart);
+            delete old;
+        }
+        showAnalysis();
+        updateStatus();
+    });
+    updateStatus();
+}
+
+void AnalysisPanel::analyse()
+{
+    QApplication::setOverrideCursor(Qt::WaitCursor);
+    m_analysis = sim::analyseRun(m_document.scene(), m_controller.cache());
+    m_analysedFrames = m_controller.cache().frameCount();
+    m_analysedRevision = m_controller.cache().revision();
+    showAnalysis();
+    QApplication::restoreOverrideCursor();
+    updateStatus();
+}
+
+void AnalysisPanel::showAnalysis()
+{
+    m_figures->clear();
+    m_save->setEnabled(m_analysis.has_value());
+    if (!m_analysis)
+        return;
+    const sim::RunAnalysis& a = *m_analysis;
+    for (const report::FigureSection& section : report::reportFigures(a)) {
+        auto* top = new QTreeWidgetItem(m_figures, {QString::fromStdString(section.title)});
+        for (const report::FigureRow& row : section.rows)
+            new QTreeWidgetItem(top, {QString::fromStdString(row.label), QString::fromStdString(row.value)});
+        top->setExpanded(true);
+    }
+    const sim::Scene& scene = m_document.scene();
+    m_trajectories->setPixmap(
+        QPixmap::fromImage(report::paintGround(scene, a, report::GroundLayer::Trajectories, QSize(900, 620))));
+    m_density->setPixmap(QPixmap::fromImage(report::paintGround(scene, a, report::GroundLayer::Density, QSize(900, 620))));
+    // QChartView takes the charts; the one it showed before is deleted with it.
+    auto replace = [](QChartView* view, std::unique_ptr<QChart> chart) {
+        // A dock is small: the tab names the chart (a title that says what is missing
+        // stays), the legend goes beside it, the axes' text shrinks.
+        if (!chart->title().contains(QChar(0x2014)))
+            chart->setTitle(QString());
+        chart->setMargins(QMargins(2, 2, 2, 2));
+        chart->legend()->setAlignment(Qt::AlignRight);
+        QFont small = chart->font();
+        small.setPointSizeF(std::max(6.0, small.pointSizeF() - 1.0));
+        for (QAbstractAxis* axis : chart->axes()) {
+            axis->setLabelsFont(small);
+            axis->setTitleFont(small);
+        }
+        chart->legend()->setFont(small);
+        QChart* old = view->chart();
+        view->setChart(chart.release());
+        delete old;
+    };
+    replace(m_speedDensity, report::speedDensityChart(a));
+    replace(m_flow, report::flowChart(a));
+    replace(m_occupancy, report::occupancyChart(a));
+}
+
+void AnalysisPanel::updateStatus()
+{
+    const sim::FrameCache& cache = m_controller.cache();
+    const std::size_t frames = cache.frameCount();
+    if (!m_analysis) {
+        m_status->setText(frames > 1 ? tr("%1 frames recorded: press Analyse to measure them.").arg(frames)
+                                     : tr("Play or simulate to the end, then press Analyse."));
+        return;
+    }
+    const bool stale = cache.revision() != m_analysedRevision || frames != m_analysedFrames;
+    const QString measured = tr("Measured %1 frames (%2 s).").arg(m_analysedFrames).arg(m_analysis->durationS, 0, 'f', 1);
+    m_status->setText(stale ? measured + " " + tr("The recording has changed since: press Analyse again.") : measured);
+}
+
+bool AnalysisPanel::saveReport(const QString& path, QString& error)
+{
+    if (!m_analysis) {
+        error = tr("Nothing analysed yet: press Analyse first.");
+        return false;
+    }
+    const QString file = m_document.filePath().isEmpty() ? tr("untitled scene") : QFileInfo(m_document.filePath()).fileName();
+    const sim::SaveResult r = report::writeReport(path.toStdString(), m_document.scene(), *m_analysis,
+                                                  {file.toStdString(), m_document.scene().settings.seed});
+    if (!r.ok)
+        error = QString::fromStdString(r.error);
+    return r.ok;
+}
+
+void AnalysisPanel::saveReportAs()
+{
+    const QString base = m_document.filePath().isEmpty() ? QStringLiteral("report")
+                                                         : QFileInfo(m_document.filePath()).completeBaseName() + "-report";
+    const QString path = QFileDialog::getSaveFileName(this, tr("Save Report"), base + ".html", tr("HTML (*.html)"));
+    if (path.isEmpty())
+        return;
+    QString error;
+    if (saveReport(path, error))
+        emit message(tr("Report written to %1").arg(path));
+    else
+        emit message(tr("The report was not written: %1").arg(error));
+}
+
+}  // namespace throng::editor
