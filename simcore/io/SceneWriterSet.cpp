@@ -143,6 +143,19 @@ void writeSceneSet(YamlWriter& w, const Scene& s)
                 w.key("altitude");
                 w.vec2(g.altitudeM);
             }
+            if (g.formation.shape != FormationShape::None) {
+                w.key("formation");
+                o << YAML::Flow << YAML::BeginMap;
+                w.kv("shape", toString(g.formation.shape));
+                w.kvf("spacing", g.formation.spacingM);
+                if (g.formation.shape == FormationShape::Column)
+                    w.kv("width", std::to_string(g.formation.width));
+                o << YAML::EndMap;
+            }
+            if (g.companions != glm::uvec2(0u)) {
+                w.key("companions");
+                o << YAML::Flow << YAML::BeginSeq << g.companions.x << g.companions.y << YAML::EndSeq;
+            }
             o << YAML::EndMap;
         }
         o << YAML::EndSeq;

@@ -108,6 +108,17 @@ const char* toString(Arrivals arrivals)
     return arrivals == Arrivals::Poisson ? "poisson" : "steady";
 }
 
+const char* toString(FormationShape shape)
+{
+    switch (shape) {
+    case FormationShape::Line: return "line";
+    case FormationShape::Column: return "column";
+    case FormationShape::Wedge: return "wedge";
+    case FormationShape::None: break;
+    }
+    return "none";
+}
+
 const char* toString(MeasurementShape shape)
 {
     return shape == MeasurementShape::Area ? "area" : "line";

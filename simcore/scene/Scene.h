@@ -147,6 +147,18 @@ struct Agent {
 
 enum class AreaShape { Rect, Circle, Polygon };
 
+// The shape a group's formation holds while it moves (Formations.h): its members side by
+// side (line), in rows behind the anchor (column), or in rows widening behind it (wedge, an
+// arrow with the anchor at the tip).
+enum class FormationShape { None, Line, Column, Wedge };
+
+struct GroupFormation {
+    FormationShape shape = FormationShape::None;
+    float spacingM = 1.0f;    // between neighbouring slots' centres, m, >= the members' diameter
+    std::uint32_t width = 2;  // Column: members abreast in each row, >= 1
+    bool operator==(const GroupFormation&) const = default;
+};
+
 struct SpawnGroup {
     std::string name;
     std::string type;
@@ -163,6 +175,11 @@ struct SpawnGroup {
     // Exit goals the members choose among, each the one it expects to leave by soonest
     // (ExitChoice.h); instead of goal, path and leader. Empty = none.
     std::vector<std::string> exits{};
+    // Members hold a formation round an anchor (the leader, else the member at the front).
+    GroupFormation formation{};
+    // Members walk in small groups of companions, [min, max] walkers each (families,
+    // friends; Formations.h): abreast where there is room, waiting for each other. 0 = none.
+    glm::uvec2 companions{0u};
     bool operator==(const SpawnGroup&) const = default;
 };
 
@@ -412,6 +429,7 @@ const char* toString(Navigation navigation);
 const char* toString(AreaShape shape);
 const char* toString(Arrivals arrivals);
 const char* toString(MeasurementShape shape);  // "line", "area"
+const char* toString(FormationShape shape);    // "none", "line", "column", "wedge"
 const char* toString(ObstacleShape shape);
 const char* toString(CarFollowing model);  // "inherit", "idm", "gap_time", "fuzzy"
 // The model a vehicle of `type` on `lane` follows (either may be null): the lane's, the

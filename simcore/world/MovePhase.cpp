@@ -179,11 +179,13 @@ void MovePhase::Pass::stepAgent(std::size_t i, bool hasStatics, NeighbourGrid::S
         BoidPass(m_boids, m_view, m_agents).stepBoid(i, sweep);
         return;
     }
-    if (m_walk.runs(m_agents.info[i].typeIndex) && m_agents.path[i] < 0) {
+    if (m_walk.runs(m_agents.info[i].typeIndex) && m_agents.path[i] < 0 && !m_view.formations.inFormation(i)) {
         m_walk.step(m_view, m_brains, m_agents, i);  // walkers in the open: the same (WalkKernel.h)
         return;
     }
-    const SteeringAgent self = steeringAgent(m_agents, m_types, i);
+    SteeringAgent self = steeringAgent(m_agents, m_types, i);
+    // An anchor walks at its formation's pace (Formations.h).
+    self.maxSpeed *= m_view.formations.paceOf(i);
     // Sense: nearby agents in the perception cone.
     // (Uninitialised: only the first `count` are written, and only they are read.)
     UninitialisedArray<Neighbour, kMaxNeighbours> near;

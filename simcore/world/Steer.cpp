@@ -4,6 +4,7 @@
 
 #include "simcore/world/BrainPhase.h"
 #include "simcore/world/StepView.h"
+#include "simcore/world/Formations.h"
 #include "simcore/world/WorldPriority.h"
 
 #include "simcore/steering/UninitialisedArray.h"
@@ -88,15 +89,22 @@ glm::vec3 steer(const StepView& v, const BrainPhase& brains, std::size_t i, cons
     const TypeSteering& s = v.types.steering[v.agents.info[i].typeIndex];
     SteeringRequestList requests;
     const glm::vec3 p = self.position;
-    const bool hasGoal = v.agents.goal[i] >= 0;
-    const glm::vec3 goal =
-        hasGoal ? v.nav.goal(i, glm::vec3(v.agents.goalSpot[i].x, p.y, v.agents.goalSpot[i].y)) : p + self.forward;
-    const std::int32_t leaderIndex = v.agents.leader[i];
+    // A member of a formation or of companions walks to its slot round its anchor, not to
+    // its goal or along its path, until the anchor has arrived (Formations.h).
+    const Formations::SlotTarget slot = v.formations.target(i, v.agents, v.set);
+    const std::int32_t anchor = slot.anchor;
+    const bool hasGoal = v.agents.goal[i] >= 0 && anchor < 0;
+    const std::int32_t leaderIndex = anchor >= 0 ? anchor : v.agents.leader[i];
     Neighbour leader;
     if (leaderIndex >= 0) {
         const auto j = std::size_t(leaderIndex);
         leader = {v.agents.pos[j], v.agents.vel[j], v.agents.fwd[j], v.agents.radius[j], v.agents.info[j].id};
     }
+    // What wall following and obstacle avoidance steer round statics toward: the goal (the
+    // navigation's waypoint), a member's slot, else straight on.
+    const glm::vec3 goal = hasGoal     ? v.nav.goal(i, glm::vec3(v.agents.goalSpot[i].x, p.y, v.agents.goalSpot[i].y))
+                           : anchor >= 0 ? pointInFrameOf(leader, slot.offsetM)
+                                         : p + self.forward;
     // Separation and collision avoidance leave to lower-priority neighbours the whole
     // of making way (WorldPriority.h).
     // (The buffer is only written when priorities differ, and only as far as it is read.)
@@ -113,8 +121,11 @@ glm::vec3 steer(const StepView& v, const BrainPhase& brains, std::size_t i, cons
                              .leader = leaderIndex >= 0 ? &leader : nullptr,
                              .avoided = avoided,
                              .near = near,
-                             .wanderOut = &wanderOut};
+                             .wanderOut = &wanderOut,
+                             .formed = anchor >= 0};
     requestBehaviours(BehaviourList{}, step, s, brains, requests, sink);
+    if (anchor >= 0)
+        requests.add(pursueOffset(self, leader, Formations::slotParams(slot)), 2.0f);
     // A walker or vehicle with nowhere to go comes to rest instead of coasting on what
     // separation or a collision gave it (the lowest priority: anything else comes first).
     const bool goesSomewhere =

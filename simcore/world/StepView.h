@@ -18,6 +18,8 @@
 
 namespace throng::sim {
 
+class Formations;
+
 struct StepView {
     const AgentColumns& agents;
     const AgentTypes& types;
@@ -34,6 +36,7 @@ struct StepView {
     // The kernels' neighbour searches start from last step's k nearest (lastNearestBound,
     // Sense.h) instead of the perception radius: the same result, fewer cells (WorldOptions).
     bool warmSearch;
+    const Formations& formations;  // who walks on a slot round whom (Formations.h)
 
     const TypeParams& type(std::size_t i) const { return types.params[agents.info[i].typeIndex]; }
     const TypeCollision& collision(std::size_t i) const { return types.collision[agents.info[i].typeIndex]; }

@@ -122,6 +122,7 @@ void World::build(const Scene& scene, const WorldOptions& options)
     m_sources.sendOffstage(m_agents);
     m_agents.unstarted.assign(m_agents.size(), 0);
     scheduleReactions(scene, true);
+    m_formations.build(scene, m_agents, m_seed);
     m_nav.build(scene, view());
     if (m_exits.active()) {
         for (const std::int32_t g : m_exits.goals())

@@ -16,6 +16,7 @@
 #include "simcore/world/NearestList.h"
 #include "simcore/world/NeighbourGrid.h"
 #include "simcore/world/ExitChoice.h"
+#include "simcore/world/Formations.h"
 #include "simcore/world/Sources.h"
 #include "simcore/world/StartPhase.h"
 #include "simcore/world/StaticSet.h"
@@ -126,6 +127,9 @@ public:
     // looked up in the schedule, not a column), and whether it still stands waiting.
     double startTimeS(std::size_t i) const { return m_starts.startS(i); }
     bool isUnstarted(std::size_t i) const { return m_agents.unstarted[i] != 0; }
+    // The agent walker i keeps its slot round (a formation's or its companions' anchor,
+    // Formations.h) as built from the scene; -1 for walkers that keep to nobody.
+    std::int32_t formationAnchor(std::size_t i) const { return m_formations.anchorIndex(i); }
     // Agent i's age, years, when its type sets an age range (WalkingAge.h); else 0.
     float ageYears(std::size_t i) const;
     // Agents in the scene now: neither off stage nor gone through an exit.
@@ -230,7 +234,8 @@ private:
     StepView view() const
     {
         return {m_agents, m_types,  m_set,       m_clock,      m_grid,      m_traffic,
-                m_nav,    m_team,   m_hasFliers, m_allFliers, m_maxRadius, m_seed, m_neighbourSweep};
+                m_nav,    m_team,   m_hasFliers, m_allFliers, m_maxRadius, m_seed, m_neighbourSweep,
+                m_formations};
     }
     const TypeCollision& collision(std::size_t i) const { return m_types.collision[m_agents.info[i].typeIndex]; }
 
@@ -262,6 +267,7 @@ private:
     SourcePhase m_sources;
     StartPhase m_starts;  // walkers standing out their reaction times
     ExitChoice m_exits;   // walkers choosing among exits
+    Formations m_formations;  // walkers keeping together: formations and companions
 };
 
 }  // namespace throng::sim

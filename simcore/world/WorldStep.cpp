@@ -53,6 +53,8 @@ void World::stepOnce()
     // Traffic: the lanes' vehicles step on the pedestrians' state before this step.
     m_traffic.beforeStep(m_agents);
 
+    // Keep together: each anchor's pace from how far its members are from their slots.
+    m_formations.pace(m_agents, m_set);
     // Move: steer, avoid, integrate and constrain, agent by agent (MovePhase.h).
     m_move.run(view(), m_brains, m_traffic, m_agents, hasStatics);
     // Traffic: vehicles and heroes to where the system and their tracks put them.

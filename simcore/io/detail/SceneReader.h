@@ -44,6 +44,7 @@ private:
     void readRect(const YAML::Node& rect, const std::string& key, glm::vec2& min, glm::vec2& max);
     void readGroupArea(const YAML::Node& item, const std::string& key, SpawnGroup& g);
     void readGroupPolygon(const YAML::Node& item, const std::string& key, SpawnGroup& g);
+    void readKeepingTogether(const YAML::Node& item, const std::string& key, const Scene& scene, SpawnGroup& g);
     void readPaths(const YAML::Node& node, Scene& scene);
     void readWalls(const YAML::Node& node, Scene& scene);
     void readObstacles(const YAML::Node& node, Scene& scene);

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace throng::sim::detail {
 
@@ -29,7 +30,7 @@ void SceneReader::readGroups(const YAML::Node& node, Scene& scene)
         m_f.checkKeys(
             item, key,
             {"name", "type", "count", "rect", "circle", "shape", "points", "goal", "path", "leader", "altitude",
-             "exits"});
+             "exits", "formation", "companions"});
         SpawnGroup g;
         if (m_f.readName(item, "name", key, g.name, true))
             claimName(item, key, g.name, "group");
@@ -58,8 +59,85 @@ void SceneReader::readGroups(const YAML::Node& node, Scene& scene)
                 m_f.warning(item["altitude"].Mark(), key + ".altitude",
                             "'altitude' only affects fliers and is ignored here");
         }
+        readKeepingTogether(item, key, scene, g);
         scene.groups.push_back(std::move(g));
     }
+}
+
+// `formation: {shape, spacing, width}` or `companions: [min, max]` (Formations.h): walkers
+// only, one of the two, and a group that walks to one place (no exits to choose among).
+void SceneReader::readKeepingTogether(const YAML::Node& item, const std::string& key, const Scene& scene,
+                                      SpawnGroup& g)
+{
+    const YAML::Node formation = item["formation"], companions = item["companions"];
+    if (!formation.IsDefined() && !companions.IsDefined())
+        return;
+    const AgentType* type = scene.findAgentType(g.type);
+    const char* which = formation.IsDefined() ? "formation" : "companions";
+    if (formation.IsDefined() && companions.IsDefined()) {
+        m_f.error(companions.Mark(), key + ".companions", "give a formation or companions, not both");
+        return;
+    }
+    if (type && type->kind != AgentKind::Pedestrian) {
+        m_f.error(item[which].Mark(), key + "." + which, "only walkers keep together this way; '" + g.type +
+                                                            "' is a " + toString(type->kind) + " type");
+        return;
+    }
+    if (!g.exits.empty()) {
+        m_f.error(item[which].Mark(), key + "." + which,
+                  "members that keep together walk to one place: give a goal or a path, not exits");
+        return;
+    }
+    if (companions.IsDefined()) {
+        glm::vec2 size(0.0f);
+        if (!m_f.readVec2(item, "companions", key, size, false, Range::Positive))
+            return;
+        if (size.x != std::floor(size.x) || size.y != std::floor(size.y) || size.x > size.y || size.y < 2.0f ||
+            size.y > 8.0f)
+            m_f.error(companions.Mark(), key + ".companions",
+                      "give [min, max] walkers per small group, whole numbers with 1 <= min <= max, 2 <= max <= 8");
+        else {
+            g.companions = glm::uvec2(size);
+            if (g.leader != 0)
+                m_f.warning(companions.Mark(), key + ".companions",
+                            "companions walk with each other: they follow their leader only once their own have "
+                            "arrived");
+        }
+        return;
+    }
+    if (!m_f.expectMap(formation, key + ".formation"))
+        return;
+    const std::string fk = key + ".formation";
+    m_f.checkKeys(formation, fk, {"shape", "spacing", "width"});
+    std::string shape;
+    if (!m_f.readName(formation, "shape", fk, shape, true))
+        return;
+    if (shape == "line")
+        g.formation.shape = FormationShape::Line;
+    else if (shape == "column")
+        g.formation.shape = FormationShape::Column;
+    else if (shape == "wedge")
+        g.formation.shape = FormationShape::Wedge;
+    else {
+        m_f.error(formation["shape"].Mark(), fk + ".shape", "must be 'line', 'column' or 'wedge'");
+        return;
+    }
+    if (m_f.readFloat(formation, "spacing", fk, g.formation.spacingM, false, Range::Positive) && type &&
+        g.formation.spacingM < 2.0f * type->radiusM) {
+        char body[32];
+        std::snprintf(body, sizeof body, "%.2f", double(2.0f * type->radiusM));
+        m_f.error(formation["spacing"].Mark(), fk + ".spacing",
+                  std::string("closer than two of its walkers' bodies (") + body +
+                      " m): they could not stand in their slots");
+    }
+    if (formation["width"].IsDefined()) {
+        if (m_f.readU32(formation, "width", fk, g.formation.width, false) && g.formation.width == 0)
+            m_f.error(formation["width"].Mark(), fk + ".width", "at least 1 walker a row");
+        if (g.formation.shape != FormationShape::Column)
+            m_f.warning(formation["width"].Mark(), fk + ".width", "only a column has rows of a set width");
+    }
+    if (g.goal.empty() && g.path.empty() && g.leader == 0)
+        m_f.warning(formation.Mark(), fk, "has no goal, path or leader: the formation forms where it stands");
 }
 
 void SceneReader::readExits(const YAML::Node& item, const std::string& key, std::vector<std::string>& names,

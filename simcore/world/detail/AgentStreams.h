@@ -16,7 +16,7 @@ namespace throng::sim::detail {
 
 enum AgentStream : std::uint64_t {
     kSpawnX = 1, kSpawnZ, kSpawnHeading, kSpeedFactor, kPhaseOffset, kStride, kWanderStart, kSpotR, kSpotA, kSpawnY,
-    kSpawnPick, kReaction, kAge
+    kSpawnPick, kReaction, kAge, kCompanions
 };
 static_assert(kAge == kAgeStream, "the age's stream is WalkingAge.h's");
 

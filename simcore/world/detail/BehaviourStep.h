@@ -35,8 +35,9 @@ struct BehaviourStep {
     std::span<const Neighbour> avoided{};  // the neighbours it avoids: not those making way for it
     std::span<const Neighbour> near{};     // every neighbour it sees
     WanderState* wanderOut = nullptr;      // its new wander state (steer only)
+    bool formed = false;                   // it walks on a slot round its anchor (Formations.h)
 
-    bool onPath() const { return v.agents.path[i] >= 0; }
+    bool onPath() const { return !formed && v.agents.path[i] >= 0; }
     // The path it follows; only when onPath().
     SteeringPath path() const
     {
