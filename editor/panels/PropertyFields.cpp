@@ -91,6 +91,20 @@ Refusal sourceRateRefusal()
     };
 }
 
+// Refuses a formation's spacing closer than two of its walkers' bodies (the file refuses it).
+Refusal formationSpacingRefusal()
+{
+    return [](const sim::Scene& s, std::size_t i, float value) {
+        const sim::AgentType* type = s.findAgentType(s.groups[i].type);
+        if (type && value < 2.0f * type->radiusM)
+            return tr("%1: slots closer than two of its walkers' bodies (%2 m) could not hold them; the spacing stays "
+                      "as it is.")
+                .arg(itemLabel(s, {ItemKind::Group, i}))
+                .arg(double(2.0f * type->radiusM));
+        return QString();
+    };
+}
+
 bool isFlier(const sim::Scene& s, std::size_t i)
 {
     return s.agentTypes[i].kind == sim::AgentKind::Flier;
@@ -213,6 +227,9 @@ std::vector<PropertyField> make(ItemKind kind)
             const sim::AgentType* type = s.findAgentType(s.groups[i].type);
             return type && type->kind == sim::AgentKind::Flier;
         };
+        const auto formed = [](const sim::Scene& s, std::size_t i) {
+            return s.groups[i].formation.shape != sim::FormationShape::None;
+        };
         return {{"minX", tr("Min X (m)"), -1e5, 1e5, 0.5, 2, THRONG_FIELD(groups, min.x), cornerEnd(0, true), rect},
                 {"minZ", tr("Min Z (m)"), -1e5, 1e5, 0.5, 2, THRONG_FIELD(groups, min.y), cornerEnd(1, true), rect},
                 {"maxX", tr("Max X (m)"), -1e5, 1e5, 0.5, 2, THRONG_FIELD(groups, max.x), cornerEnd(0, false), rect},
@@ -223,7 +240,9 @@ std::vector<PropertyField> make(ItemKind kind)
                 {"altitudeMin", tr("Altitude min (m)"), 0, 1e4, 0.5, 2, THRONG_FIELD(groups, altitudeM.x),
                  altitudeEnd(true), flier},
                 {"altitudeMax", tr("Altitude max (m)"), 0, 1e4, 0.5, 2, THRONG_FIELD(groups, altitudeM.y),
-                 altitudeEnd(false), flier}};
+                 altitudeEnd(false), flier},
+                {"formationSpacing", tr("Formation spacing (m)"), 0.1, 100, 0.1, 2, THRONG_FIELD(groups, formation.spacingM),
+                 formationSpacingRefusal(), formed}};
     }
     case ItemKind::Crosswalk:
         return {{"fromX", tr("From X (m)"), -1e5, 1e5, 0.1, 2, THRONG_FIELD(crosswalks, from.x), crosswalkEnd(false, 0)},

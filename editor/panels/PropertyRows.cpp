@@ -204,9 +204,12 @@ void addGroupRows(PropertyForm& form)
             sim::SpawnGroup out = now;
             out.exits = names;
             if (!names.empty()) {
+                // Walkers that choose their exit go on their own: no route, and no keeping together.
                 out.goal.clear();
                 out.path.clear();
                 out.leader = 0;
+                out.formation.shape = sim::FormationShape::None;
+                out.companions = glm::uvec2(0u);
             }
             return out;
         });
@@ -224,6 +227,7 @@ void addGroupRows(PropertyForm& form)
         });
     });
     form.addNumberFields();
+    addKeepTogetherRows(form);
     // A polygon's corners, kept a valid spawn area: an edit that would make it cross
     // itself is refused.
     auto* corners = new PointTable(form, THRONG_AT(groups, points), form.owner());

@@ -43,5 +43,8 @@ void addAgentTypeAgeRow(PropertyForm& form);
 void addExitsRow(PropertyForm& form, std::function<std::vector<std::string>&(sim::Scene&, std::size_t)> exits,
                  std::function<void(const std::vector<std::string>&)> apply, const QStringList& routeRows);
 void addAgentTypeCollisionRows(PropertyForm& form);
+// PropertyRowsKeep.cpp: how a group's members keep together: a formation (shape, spacing,
+// column width) or companions (small groups' sizes), Formations.h.
+void addKeepTogetherRows(PropertyForm& form);
 
 }  // namespace throng::editor
