@@ -125,7 +125,7 @@ glm::vec3 steer(const StepView& v, const BrainPhase& brains, std::size_t i, cons
                              .formed = anchor >= 0};
     requestBehaviours(BehaviourList{}, step, s, brains, requests, sink);
     if (anchor >= 0)
-        requests.add(pursueOffset(self, leader, Formations::slotParams(slot)), 2.0f);
+        requests.add(pursueOffset(self, leader, Formations::slotParams(slot)), Formations::kSlotWeight);
     // A walker or vehicle with nowhere to go comes to rest instead of coasting on what
     // separation or a collision gave it (the lowest priority: anything else comes first).
     const bool goesSomewhere =
