@@ -152,24 +152,32 @@ void SourcePhase::sendOffstage(AgentColumns& agents) const
         agents.offstage[i] = agents.out[i] = agents.stopped[i] = 1;
 }
 
-bool SourcePhase::fits(std::size_t i, const AgentColumns& agents) const
+bool SourcePhase::fits(std::size_t i, const AgentColumns& agents, const NeighbourGrid& grid,
+                       float largestRadiusM) const
 {
+    // The bodies near the arrival's place from the grid, not every agent: an arrival
+    // checked against all N agents made a stream into a crowd cost O(N) each (issue 26).
     const glm::vec3 p = agents.pos[i];
-    for (std::size_t j = 0; j < agents.size(); ++j) {
+    bool clear = true;
+    auto overlaps = [&](std::size_t j) {
         if (j == i || agents.out[j])
-            continue;
+            return;
         const float reach = agents.radius[i] + agents.radius[j];
         const glm::vec3 d = agents.pos[j] - p;
-        if (d.x * d.x + d.z * d.z < reach * reach)
-            return false;
-    }
-    return true;
+        clear = clear && !(d.x * d.x + d.z * d.z < reach * reach);
+    };
+    grid.forEachNear(glm::vec2(p.x, p.z), agents.radius[i] + largestRadiusM, [&](std::uint32_t j) { overlaps(j); });
+    for (const std::uint32_t j : m_enteredNow)
+        overlaps(j);
+    return clear;
 }
 
-std::size_t SourcePhase::enter(double timeS, AgentColumns& agents, std::vector<std::uint32_t>* entered)
+std::size_t SourcePhase::enter(double timeS, AgentColumns& agents, const NeighbourGrid& grid, float largestRadiusM,
+                               std::vector<std::uint32_t>* entered)
 {
     if (entered)
         entered->clear();
+    m_enteredNow.clear();
     // Small slack: a due time that is a whole number of steps enters on that step.
     const double now = timeS + 1e-9;
     std::fill(m_blocked.begin(), m_blocked.end(), std::uint8_t(0));
@@ -180,7 +188,7 @@ std::size_t SourcePhase::enter(double timeS, AgentColumns& agents, std::vector<s
         const std::uint32_t i = m_agent[k];
         if (!agents.offstage[i] || m_blocked[m_source[k]])
             continue;
-        if (!fits(i, agents)) {
+        if (!fits(i, agents, grid, largestRadiusM)) {
             m_blocked[m_source[k]] = 1;  // those after it from its source wait behind it
             continue;
         }
@@ -190,6 +198,7 @@ std::size_t SourcePhase::enter(double timeS, AgentColumns& agents, std::vector<s
         agents.stoppedBefore[i] = 0;
         agents.nextPos[i] = agents.pos[i];
         agents.resolvedPos[i] = agents.pos[i];
+        m_enteredNow.push_back(i);
         if (entered)
             entered->push_back(i);
         ++count;

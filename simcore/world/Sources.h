@@ -11,6 +11,7 @@
 
 #include "simcore/scene/Scene.h"
 #include "simcore/world/AgentColumns.h"
+#include "simcore/world/NeighbourGrid.h"
 
 #include <glm/vec2.hpp>
 
@@ -42,9 +43,11 @@ public:
     // Puts every one of them off stage (out and stopped too), as at the start.
     void sendOffstage(AgentColumns& agents) const;
     // Lets in the agents due by timeS (the step's start) whose body fits where they enter,
-    // each at rest facing its heading; returns how many entered.
+    // each at rest facing its heading; returns how many entered. `grid` indexes the agents'
+    // current positions (those in the scene), whose bodies are at most largestRadiusM.
     // `entered`, when given, gets their dense indices.
-    std::size_t enter(double timeS, AgentColumns& agents, std::vector<std::uint32_t>* entered = nullptr);
+    std::size_t enter(double timeS, AgentColumns& agents, const NeighbourGrid& grid, float largestRadiusM,
+                      std::vector<std::uint32_t>* entered = nullptr);
     // Agents the sources will let in over the run, and how many are still off stage.
     std::size_t scheduled() const { return m_agent.size(); }
     std::size_t offstage(const AgentColumns& agents) const;
@@ -52,12 +55,15 @@ public:
     void rewind() { m_done = 0; }
 
 private:
-    bool fits(std::size_t i, const AgentColumns& agents) const;
+    // No body in the scene (those in the grid, and those let in by this call so far)
+    // overlaps agent i's where it enters.
+    bool fits(std::size_t i, const AgentColumns& agents, const NeighbourGrid& grid, float largestRadiusM) const;
 
     std::vector<std::uint32_t> m_agent;   // dense index, in (time, index) order
     std::vector<double> m_timeS;          // due time, same order
     std::vector<std::uint32_t> m_source;  // source, same order
     std::vector<std::uint8_t> m_blocked;  // per source, scratch for one call of enter
+    std::vector<std::uint32_t> m_enteredNow;  // scratch for one call of enter: not in the grid yet
     std::size_t m_done = 0;               // m_agent[0, m_done) have all entered
 };
 

@@ -25,7 +25,11 @@ void World::stepOnce()
     // Enter: the sources' agents whose time has come, where their bodies fit (Sources.h);
     // those that choose an exit choose it as they come in (ExitChoice.h).
     std::vector<std::uint32_t> entered;
-    if (m_sources.scheduled() != 0 && m_sources.enter(m_clock.timeS(), m_agents, &entered) != 0) {
+    if (m_sources.scheduled() != 0 && !m_gridCurrent) {  // arrivals look for room in the grid
+        m_grid.rebuild(m_agents.pos, m_hasFliers, m_agents.out, &m_team);
+        m_gridCurrent = true;
+    }
+    if (m_sources.scheduled() != 0 && m_sources.enter(m_clock.timeS(), m_agents, m_grid, m_maxRadius, &entered) != 0) {
         m_gridCurrent = false;
         if (m_exits.active())
             takeExits(m_exits.onEntry(view(), entered));
