@@ -58,7 +58,8 @@ QValueAxis* addAxis(QChart& chart, Qt::Alignment side, const QString& title, dou
     return axis;
 }
 
-void attach(QChart& chart, QXYSeries* series, QValueAxis* x, QValueAxis* y, QColor colour, Qt::PenStyle style = Qt::SolidLine)
+void attach(QChart& chart, QXYSeries* series, QValueAxis* x, QValueAxis* y, QColor colour,
+            Qt::PenStyle style = Qt::SolidLine)
 {
     QPen pen(colour, 2.0, style);
     series->setPen(pen);
@@ -130,7 +131,8 @@ std::unique_ptr<QChart> flowChart(const sim::RunAnalysis& a)
         const std::vector<double>& bins = a.lineFlowPerSecond[l];
         for (double b : bins)
             most = std::max(most, b);
-        series.push_back(binSeries(bins, a.flowBinS, QStringLiteral("Line %1").arg(QString::fromStdString(a.lines[l].name))));
+        const QString name = QStringLiteral("Line %1").arg(QString::fromStdString(a.lines[l].name));
+        series.push_back(binSeries(bins, a.flowBinS, name));
         styles.push_back(Qt::SolidLine);
     }
     for (const sim::ExitOutflow& e : a.occupancy.exits) {

@@ -102,7 +102,9 @@ QImage paintGround(const sim::Scene& scene, const sim::RunAnalysis& a, GroundLay
     image.fill(Qt::white);
     QPainter p(&image);
     p.setRenderHint(QPainter::Antialiasing);
-    auto toPx = [&](glm::dvec2 w) { return QPointF(plot.left() + (w.x - e.lo.x) * scale, plot.top() + (w.y - e.lo.y) * scale); };
+    auto toPx = [&](glm::dvec2 w) {
+        return QPointF(plot.left() + (w.x - e.lo.x) * scale, plot.top() + (w.y - e.lo.y) * scale);
+    };
 
     p.setFont(QFont(p.font().family(), 9));
     p.drawText(QRectF(0, 4, image.width(), kTop - 6), Qt::AlignCenter,
@@ -201,7 +203,8 @@ QImage paintGround(const sim::Scene& scene, const sim::RunAnalysis& a, GroundLay
     p.setPen(QPen(Qt::black, 1.0));
     p.drawRect(plot);
     const QFontMetrics fm(p.font());
-    const double stepX = niceStep(span.x, int(plot.width() / 80.0)), stepZ = niceStep(span.y, int(plot.height() / 50.0));
+    const double stepX = niceStep(span.x, int(plot.width() / 80.0));
+    const double stepZ = niceStep(span.y, int(plot.height() / 50.0));
     for (double x = std::ceil(e.lo.x / stepX) * stepX; x <= e.hi.x; x += stepX) {
         const double px = toPx({x, e.lo.y}).x();
         p.drawLine(QPointF(px, plot.bottom()), QPointF(px, plot.bottom() + 4));

@@ -101,13 +101,16 @@ std::string analysisJson(const sim::RunAnalysis& a)
     }
     j << "{\"fps\": " << num(a.fps) << ", \"frames\": " << a.frames << ", \"walkers\": " << a.walkers
       << ", \"evacuation_s\": " << num(o.evacuationS) << ", \"in_scene_each_second\": " << list(inEachSecond)
-      << ", \"out_each_second\": " << list(outEachSecond) << ", \"flow_bin_s\": " << num(a.flowBinS) << ",\n \"lines\": [";
+      << ", \"out_each_second\": " << list(outEachSecond) << ", \"flow_bin_s\": " << num(a.flowBinS)
+      << ",\n \"lines\": [";
     for (std::size_t l = 0; l < a.lines.size(); ++l)
-        j << (l ? ", " : "") << "{\"name\": \"" << jsonText(a.lines[l].name) << "\", \"forward\": " << a.lines[l].forward
+        j << (l ? ", " : "") << "{\"name\": \"" << jsonText(a.lines[l].name)
+          << "\", \"forward\": " << a.lines[l].forward
           << ", \"backward\": " << a.lines[l].backward << ", \"flow_per_s\": " << list(a.lineFlowPerSecond[l]) << "}";
     j << "],\n \"exits\": [";
     for (std::size_t e = 0; e < o.exits.size(); ++e)
-        j << (e ? ", " : "") << "{\"name\": \"" << jsonText(o.exits[e].exit) << "\", \"out\": " << o.exits[e].agentsOut()
+        j << (e ? ", " : "") << "{\"name\": \"" << jsonText(o.exits[e].exit)
+          << "\", \"out\": " << o.exits[e].agentsOut()
           << ", \"flow_per_s\": " << list(exitFlowPerSecond(o.exits[e], a.fps, a.frames, a.flowBinS)) << "}";
     j << "],\n \"areas\": [";
     for (std::size_t k = 0; k < a.speedDensity.size(); ++k) {
@@ -121,7 +124,8 @@ std::string analysisJson(const sim::RunAnalysis& a)
           << ", \"density\": " << list(density) << ", \"speed\": " << list(speed) << "}";
     }
     const sim::DensityMap& d = a.density;
-    j << "],\n \"density_map\": {\"min\": [" << num(d.min.x) << ", " << num(d.min.y) << "], \"cell_m\": " << num(d.cellM)
+    j << "],\n \"density_map\": {\"min\": [" << num(d.min.x) << ", " << num(d.min.y)
+      << "], \"cell_m\": " << num(d.cellM)
       << ", \"cols\": " << d.cols << ", \"rows\": " << d.rows << ", \"frames\": " << d.frames
       << ", \"total_persons\": " << num(d.totalPersons()) << ", \"peak_density\": " << num(d.peakDensity()) << "}}";
     return j.str();

@@ -143,7 +143,8 @@ Outcome fundamentalDiagram(const std::vector<sim::Scene>& scenes)
         const std::vector<sim::AreaSpeedDensity> areas = sim::measureSpeedDensity(scene, cache, 1);
         double density = 0.0, speed = 0.0;
         std::size_t n = 0;
-        for (const sim::SpeedDensitySample& s : areas.empty() ? std::vector<sim::SpeedDensitySample>{} : areas[0].samples)
+        const std::vector<sim::SpeedDensitySample> none;
+        for (const sim::SpeedDensitySample& s : areas.empty() ? none : areas[0].samples)
             if (double(s.frame) / double(cache.fps()) >= kFromS) {
                 density += s.densityPerM2;
                 speed += s.speedMps;

@@ -142,7 +142,8 @@ void AnalysisPanel::showAnalysis()
     const sim::Scene& scene = m_document.scene();
     m_trajectories->setPixmap(
         QPixmap::fromImage(report::paintGround(scene, a, report::GroundLayer::Trajectories, QSize(900, 620))));
-    m_density->setPixmap(QPixmap::fromImage(report::paintGround(scene, a, report::GroundLayer::Density, QSize(900, 620))));
+    m_density->setPixmap(
+        QPixmap::fromImage(report::paintGround(scene, a, report::GroundLayer::Density, QSize(900, 620))));
     // QChartView takes the charts; the one it showed before is deleted with it.
     auto replace = [](QChartView* view, std::unique_ptr<QChart> chart) {
         // A dock is small: the tab names the chart (a title that says what is missing
@@ -177,7 +178,8 @@ void AnalysisPanel::updateStatus()
         return;
     }
     const bool stale = cache.revision() != m_analysedRevision || frames != m_analysedFrames;
-    const QString measured = tr("Measured %1 frames (%2 s).").arg(m_analysedFrames).arg(m_analysis->durationS, 0, 'f', 1);
+    const QString measured =
+        tr("Measured %1 frames (%2 s).").arg(m_analysedFrames).arg(m_analysis->durationS, 0, 'f', 1);
     m_status->setText(stale ? measured + " " + tr("The recording has changed since: press Analyse again.") : measured);
 }
 
@@ -187,7 +189,8 @@ bool AnalysisPanel::saveReport(const QString& path, QString& error)
         error = tr("Nothing analysed yet: press Analyse first.");
         return false;
     }
-    const QString file = m_document.filePath().isEmpty() ? tr("untitled scene") : QFileInfo(m_document.filePath()).fileName();
+    const QString file =
+        m_document.filePath().isEmpty() ? tr("untitled scene") : QFileInfo(m_document.filePath()).fileName();
     const sim::SaveResult r = report::writeReport(path.toStdString(), m_document.scene(), *m_analysis,
                                                   {file.toStdString(), m_document.scene().settings.seed});
     if (!r.ok)
@@ -197,8 +200,9 @@ bool AnalysisPanel::saveReport(const QString& path, QString& error)
 
 void AnalysisPanel::saveReportAs()
 {
-    const QString base = m_document.filePath().isEmpty() ? QStringLiteral("report")
-                                                         : QFileInfo(m_document.filePath()).completeBaseName() + "-report";
+    const QString base = m_document.filePath().isEmpty()
+                             ? QStringLiteral("report")
+                             : QFileInfo(m_document.filePath()).completeBaseName() + "-report";
     const QString path = QFileDialog::getSaveFileName(this, tr("Save Report"), base + ".html", tr("HTML (*.html)"));
     if (path.isEmpty())
         return;

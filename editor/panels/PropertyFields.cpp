@@ -241,8 +241,8 @@ std::vector<PropertyField> make(ItemKind kind)
                  altitudeEnd(true), flier},
                 {"altitudeMax", tr("Altitude max (m)"), 0, 1e4, 0.5, 2, THRONG_FIELD(groups, altitudeM.y),
                  altitudeEnd(false), flier},
-                {"formationSpacing", tr("Formation spacing (m)"), 0.1, 100, 0.1, 2, THRONG_FIELD(groups, formation.spacingM),
-                 formationSpacingRefusal(), formed}};
+                {"formationSpacing", tr("Formation spacing (m)"), 0.1, 100, 0.1, 2,
+                 THRONG_FIELD(groups, formation.spacingM), formationSpacingRefusal(), formed}};
     }
     case ItemKind::Crosswalk:
         return {{"fromX", tr("From X (m)"), -1e5, 1e5, 0.1, 2, THRONG_FIELD(crosswalks, from.x), crosswalkEnd(false, 0)},

@@ -109,7 +109,8 @@ void addMeasurementRows(PropertyForm& form)
     form.addInfo("measures", tr("Measures"), [](const sim::Scene& s, std::size_t i) {
         const sim::Measurement& m = s.measurements[i];
         if (m.shape == sim::MeasurementShape::Line)
-            return tr("Walkers crossing it (flow), %1 m long").arg(double(glm::length(m.points[1] - m.points[0])), 0, 'f', 2);
+            return tr("Walkers crossing it (flow), %1 m long")
+                .arg(double(glm::length(m.points[1] - m.points[0])), 0, 'f', 2);
         return tr("Density and speed inside, %1 m²").arg(sim::polygonArea(m.points), 0, 'f', 2);
     });
     auto allOf = [&form](sim::MeasurementShape shape) {
@@ -130,8 +131,9 @@ void addMeasurementRows(PropertyForm& form)
     auto* corners = new PointTable(form, THRONG_AT(measurements, points), form.owner());
     corners->setMinPoints(3);
     corners->setCheck([](const PointTable::Points& points) {
-        return sim::polygonSelfCrossing(points) ? tr("That would make the area's outline cross itself; it stays as it is.")
-                                                : QString();
+        return sim::polygonSelfCrossing(points)
+                   ? tr("That would make the area's outline cross itself; it stays as it is.")
+                   : QString();
     });
     form.addRow(tr("Corners"), corners, [&form, corners, allOf] {
         form.setRowShown(corners, allOf(sim::MeasurementShape::Area));

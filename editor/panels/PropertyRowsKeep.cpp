@@ -62,7 +62,8 @@ void addKeepTogetherRows(PropertyForm& form)
                     return;
                 }
         const sim::Scene& scene = form.scene();
-        form.applyEach<sim::SpawnGroup>("formation", tr("Formation"), kGroup, [shape, &scene](const sim::SpawnGroup& now) {
+        form.applyEach<sim::SpawnGroup>("formation", tr("Formation"), kGroup,
+                                        [shape, &scene](const sim::SpawnGroup& now) {
             sim::SpawnGroup out = now;
             out.formation.shape = shape;
             if (shape != sim::FormationShape::None) {

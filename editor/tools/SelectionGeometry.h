@@ -20,7 +20,8 @@ namespace throng::editor {
 // the lane is unknown.
 std::optional<glm::vec2> vehicleStart(const sim::Scene& scene, const sim::Vehicle& vehicle);
 // The point an agent, obstacle, goal, light, vehicle (its start), crosswalk, source (its
-// middle) or measurement (the mean of its points) stands on; empty for other kinds and for a vehicle on an unknown lane.
+// middle) or measurement (the mean of its points) stands on; empty for other kinds and for
+// a vehicle on an unknown lane.
 std::optional<glm::vec2> itemAnchor(const sim::Scene& scene, SceneItem item);
 // The ids the World gives group `group`'s members: [first, second). Spawned agents take
 // ids after every id the scene uses, group after group (World::buildAgents).

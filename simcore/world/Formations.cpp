@@ -59,8 +59,10 @@ float segmentGap(glm::vec2 p0, glm::vec2 p1, glm::vec2 a, glm::vec2 b)
 {
     if (detail::segmentsCross(p0, p1, a, b))
         return 0.0f;
-    return std::min({glm::length(detail::closestOnSegment(p0, a, b) - p0), glm::length(detail::closestOnSegment(p1, a, b) - p1),
-                     glm::length(detail::closestOnSegment(a, p0, p1) - a), glm::length(detail::closestOnSegment(b, p0, p1) - b)});
+    auto gap = [](glm::vec2 p, glm::vec2 s0, glm::vec2 s1) {
+        return glm::length(detail::closestOnSegment(p, s0, s1) - p);
+    };
+    return std::min({gap(p0, a, b), gap(p1, a, b), gap(a, p0, p1), gap(b, p0, p1)});
 }
 
 }  // namespace
@@ -154,7 +156,8 @@ void Formations::buildFormation(const SpawnGroup& group, std::int32_t anchor, st
         const glm::vec2 d = xz(agents.pos[i]) - origin;
         return glm::vec2(glm::dot(d, right), glm::dot(d, fwd));
     };
-    std::stable_sort(members.begin(), members.end(), [&](std::size_t p, std::size_t q) { return local(p).y > local(q).y; });
+    std::stable_sort(members.begin(), members.end(),
+                     [&](std::size_t p, std::size_t q) { return local(p).y > local(q).y; });
     std::vector<std::size_t> order(slots.size());
     std::iota(order.begin(), order.end(), std::size_t(0));
     std::stable_sort(order.begin(), order.end(), [&](std::size_t p, std::size_t q) { return slots[p].y > slots[q].y; });
@@ -189,7 +192,8 @@ void Formations::buildCompanions(const SpawnGroup& group, std::size_t groupIndex
     // stand near each other: each small group is the next few.
     for (std::uint64_t small = 0; k < end; ++small) {
         const float u = rngUniform(seed, (std::uint64_t(groupIndex + 1) << 32) | small, 0, detail::kCompanions);
-        const std::size_t size = std::min<std::size_t>(end - k, lo + std::min<std::uint32_t>(hi - lo, std::uint32_t(u * float(hi - lo + 1))));
+        const std::uint32_t drawn = lo + std::min<std::uint32_t>(hi - lo, std::uint32_t(u * float(hi - lo + 1)));
+        const std::size_t size = std::min<std::size_t>(end - k, drawn);
         const std::size_t anchor = hasTarget ? frontMember(agents, k, size, target) : k;
         const float spacing = 2.0f * agents.radius[anchor] + kCompanionGapM;
         float slowest = agents.maxSpeed[anchor];

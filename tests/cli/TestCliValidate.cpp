@@ -204,7 +204,8 @@ private slots:
         QVERIFY2(out.contains("RiMEA 7: Walking speed by age: FAIL\n"), qPrintable(out));
         QVERIFY2(out.contains("RiMEA 10: Assigned exits: FAIL\n"), qPrintable(out));
         QVERIFY2(out.contains("RiMEA 11: Exit choice under congestion: FAIL\n"), qPrintable(out));
-        QVERIFY2(out.contains(QRegularExpression("measured: +[0-9]+ by the near exit, 0 by the far one")), qPrintable(out));
+        QVERIFY2(out.contains(QRegularExpression("measured: +[0-9]+ by the near exit, 0 by the far one")),
+                 qPrintable(out));
         QVERIFY2(out.contains("RiMEA 4: Fundamental diagram: FAIL\n"), qPrintable(out));
         QVERIFY2(out.contains(QRegularExpression("measured: +1[0-9] of 24 left by their own exit")), qPrintable(out));
         QVERIFY2(out.contains("RiMEA 12: Bottleneck: FAIL\n"), qPrintable(out));

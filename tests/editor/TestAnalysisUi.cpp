@@ -207,7 +207,8 @@ private slots:
         QCOMPARE(figure(figures, "Exit out", "Agents out"), QString::number(out));
         QCOMPARE(figure(figures, "Measurement area before_gate", "Area"), QString("24.00 m²"));
         QVERIFY(!figure(figures, "Measurement area before_gate", "Mean speed while occupied").isEmpty());
-        QVERIFY2(status->text().startsWith(QString("Measured %1 frames").arg(cache.frameCount())), qPrintable(status->text()));
+        QVERIFY2(status->text().startsWith(QString("Measured %1 frames").arg(cache.frameCount())),
+                 qPrintable(status->text()));
         QVERIFY(cache.frameCount() >= 720);
 
         // The flow tab plots the line and the exit.

@@ -166,7 +166,8 @@ agent_types:
         QCOMPARE(none.density.totalPersons(), 0.0);
         const QImage blank = report::paintGround(empty.scene, none, report::GroundLayer::Density, QSize(900, 600));
         QVERIFY(pixelsOf(blank, top) < pixelsOf(heat, top));
-        const QImage noPaths = report::paintGround(empty.scene, none, report::GroundLayer::Trajectories, QSize(900, 600));
+        const QImage noPaths =
+            report::paintGround(empty.scene, none, report::GroundLayer::Trajectories, QSize(900, 600));
         const QImage paths = report::paintGround(r.scene, a, report::GroundLayer::Trajectories, QSize(900, 600));
         QVERIFY(paths != noPaths);
     }

@@ -164,7 +164,8 @@ private slots:
         for (const char* outside : {"src=\"http", "href=\"http", "<link", "url(", "<script src", "src=\"file:"})
             QVERIFY2(!text.contains(outside), outside);
         // Five plots, each a PNG that decodes and shows something.
-        const QRegularExpression img(QStringLiteral("<img alt=\"([^\"]+)\"[^>]* src=\"data:image/png;base64,([^\"]+)\""));
+        const QRegularExpression img(
+            QStringLiteral("<img alt=\"([^\"]+)\"[^>]* src=\"data:image/png;base64,([^\"]+)\""));
         QStringList alts;
         for (auto it = img.globalMatch(text); it.hasNext();) {
             const QRegularExpressionMatch m = it.next();

@@ -42,7 +42,8 @@ std::string walkersToFar(int count, const std::string& keep, double fps = 24, co
                   const char* speed = "[1, 1]")
 {
     std::ostringstream y;
-    y << "throng: 1\nsettings: {fps: " << fps << ", seed: 6, duration: 120, bounds: {min: [-10, -30], max: [100, 30]}}\n"
+    y << "throng: 1\nsettings: {fps: " << fps
+      << ", seed: 6, duration: 120, bounds: {min: [-10, -30], max: [100, 30]}}\n"
       << "agent_types:\n  - {name: walker, radius: 0.25, max_speed: 1.3, variation: {speed: " << speed << "}}\n"
       << "goals:\n  - {name: far, position: [80, 0], radius: 2}\n"
       << "groups:\n  - {name: crowd, type: walker, count: " << count
@@ -119,7 +120,8 @@ HeldShape holdShape(const std::string& yaml, const std::vector<glm::vec2>& expec
     h.medianM = errors[errors.size() / 2];
     h.worstM = errors.back();
     h.anchorSpeed = glm::length(groundOf(w.positions()[h.anchor]) - at20) / 30.0;
-    qInfo("slot error median %.3f m, worst %.3f m; anchor %.3f m/s", double(h.medianM), double(h.worstM), h.anchorSpeed);
+    qInfo("slot error median %.3f m, worst %.3f m; anchor %.3f m/s", double(h.medianM), double(h.worstM),
+          h.anchorSpeed);
     return h;
 }
 
@@ -150,10 +152,12 @@ private slots:
     void aColumnHoldsItsRowsWhileItWalks()
     {
         // 13 walkers: the anchor and four rows of three, 1.2 m apart, behind it.
-        const auto expected = slotList({{-1.2f, -1.2f}, {0, -1.2f}, {1.2f, -1.2f}, {-1.2f, -2.4f}, {0, -2.4f}, {1.2f, -2.4f},
-                                 {-1.2f, -3.6f}, {0, -3.6f}, {1.2f, -3.6f}, {-1.2f, -4.8f}, {0, -4.8f}, {1.2f, -4.8f}});
+        const auto expected =
+            slotList({{-1.2f, -1.2f}, {0, -1.2f}, {1.2f, -1.2f}, {-1.2f, -2.4f}, {0, -2.4f}, {1.2f, -2.4f},
+                      {-1.2f, -3.6f}, {0, -3.6f}, {1.2f, -3.6f}, {-1.2f, -4.8f}, {0, -4.8f}, {1.2f, -4.8f}});
         QVERIFY(sameSlots(Formations::layout({FormationShape::Column, 1.2f, 3}, 12), expected));
-        const HeldShape held = holdShape(walkersToFar(13, "formation: {shape: column, spacing: 1.2, width: 3}"), expected);
+        const HeldShape held =
+            holdShape(walkersToFar(13, "formation: {shape: column, spacing: 1.2, width: 3}"), expected);
         QVERIFY2(held.medianM < 0.15f && held.worstM < 0.5f,
                  qPrintable(QString("median %1 m, worst %2 m").arg(held.medianM).arg(held.worstM)));
         // The anchor walks at 0.9 of its members' top speed (1.3 m/s), so they can close up.
@@ -198,7 +202,8 @@ private slots:
         for (std::size_t i = 1; i < w.agentCount(); ++i) {
             const glm::vec2 p = groundOf(w.positions()[i]);
             QVERIFY2(p.x < front.x - 0.5f && p.x > front.x - 6.6f && std::abs(p.y - front.y) < 1.0f,
-                     qPrintable(QString("%1: (%2, %3) behind (%4, %5)").arg(i).arg(p.x).arg(p.y).arg(front.x).arg(front.y)));
+                     qPrintable(QString("%1: (%2, %3) behind (%4, %5)")
+                                    .arg(i).arg(p.x).arg(p.y).arg(front.x).arg(front.y)));
         }
     }
 
@@ -258,7 +263,8 @@ private slots:
     {
         // Three pairs pass a gap 1 m wide in a wall across the way at x = 30: abreast
         // (0.8 m apart, each body 0.5 m across) they would not fit.
-        const std::string walls = "walls:\n  - {points: [[30, -30], [30, -0.5]]}\n  - {points: [[30, 0.5], [30, 30]]}\n";
+        const std::string walls =
+            "walls:\n  - {points: [[30, -30], [30, -0.5]]}\n  - {points: [[30, 0.5], [30, 30]]}\n";
         // They navigate by a flow field, as walkers among walls do.
         std::string yaml = walkersToFar(6, "companions: [2, 2]", 24, walls);
         yaml.replace(yaml.find("max_speed: 1.3"), 14, "max_speed: 1.3, navigation: flow_field");
@@ -313,7 +319,8 @@ private slots:
             w.step();
             for (std::size_t i = 0; i < w.agentCount(); ++i)
                 if (const std::int32_t a = w.formationAnchor(i); a >= 0 && w.timeS() > 5.0)
-                    farthest = std::max(farthest, glm::length(groundOf(w.positions()[i]) - groundOf(w.positions()[std::size_t(a)])));
+                    farthest = std::max(farthest, glm::length(groundOf(w.positions()[i]) -
+                                                              groundOf(w.positions()[std::size_t(a)])));
         }
         QVERIFY2(farthest < 3.5f, qPrintable(QString::number(farthest)));
         qInfo("companions of speeds 0.4 to 1: farthest %.2f m apart", double(farthest));
@@ -404,11 +411,13 @@ private slots:
             QVERIFY2(!r.ok(), keep);
             bool found = false;
             for (const Diagnostic& d : r.diagnostics)
-                found = found || (d.format().find(words) != std::string::npos && d.format().find("bad.yaml:8") != std::string::npos);
+                found = found || (d.format().find(words) != std::string::npos &&
+                                  d.format().find("bad.yaml:8") != std::string::npos);
             QVERIFY2(found, (std::string(keep) + ": " + r.diagnostics[0].format()).c_str());
         }
         // Companions with a leader load, with a warning: they follow it once their own arrived.
-        const LoadResult led = parseScene(walkersToFar(10, "companions: [2, 3], leader: 500", 24, placed), "led.yaml", "");
+        const LoadResult led =
+            parseScene(walkersToFar(10, "companions: [2, 3], leader: 500", 24, placed), "led.yaml", "");
         QVERIFY(led.ok());
         QVERIFY(!led.diagnostics.empty() && led.diagnostics[0].format().find("warning") != std::string::npos);
         // Fliers and exit choosers cannot keep together.

@@ -51,7 +51,8 @@ Watched watch(const std::string& yaml, double seconds)
         std::vector<glm::dvec2> p(world.agentCount());
         std::vector<char> in(world.agentCount()), out(world.agentCount());
         for (std::size_t i = 0; i < p.size(); ++i) {
-            p[i] = {double(world.positions()[i].x) + world.origin().x, double(world.positions()[i].z) + world.origin().z};
+            const glm::vec3 at = world.positions()[i];
+            p[i] = {double(at.x) + world.origin().x, double(at.z) + world.origin().z};
             out[i] = world.isOut(i) ? 1 : 0;
             in[i] = out[i] ? 0 : 1;
         }
