@@ -1,7 +1,8 @@
 // How a group's members keep together (Formations.h): its formation's shape, spacing and
 // column width, or its companions' group sizes, typed as "2 to 4". A formation and
 // companions exclude each other (setting one clears the other in the same step); both
-// are for walker groups that walk to one place, and anything else is refused with why.
+// are for groups that go to one place (fliers: a formation only), and anything else is
+// refused with why.
 #include "editor/panels/PropertyRows.h"
 
 #include "editor/panels/PropertyForm.h"
@@ -24,13 +25,16 @@ const PropertyForm::Locate<sim::SpawnGroup> kGroup = [](sim::Scene& s, std::size
     return s.groups[i];
 };
 
-// Why group i cannot keep together, or empty.
-QString keepTogetherProblem(const sim::Scene& s, std::size_t i)
+// Why group i cannot keep together, or empty: walkers may hold a formation or walk as
+// companions, fliers only fly in formation.
+QString keepTogetherProblem(const sim::Scene& s, std::size_t i, bool companions)
 {
     const sim::SpawnGroup& g = s.groups[i];
     const sim::AgentType* type = s.findAgentType(g.type);
-    if (type && type->kind != sim::AgentKind::Pedestrian)
-        return tr("%1: only walkers keep together this way; it stays as it is.").arg(QString::fromStdString(g.name));
+    if (type && type->kind == sim::AgentKind::Vehicle)
+        return tr("%1: vehicles hold no formation; it stays as it is.").arg(QString::fromStdString(g.name));
+    if (type && companions && type->kind != sim::AgentKind::Pedestrian)
+        return tr("%1: only walkers walk as companions; it stays as it is.").arg(QString::fromStdString(g.name));
     if (!g.exits.empty())
         return tr("%1 chooses among exits: members that keep together walk to one place. Give it a goal or a path "
                   "first; it stays as it is.")
@@ -57,7 +61,7 @@ void addKeepTogetherRows(PropertyForm& form)
         const auto shape = sim::FormationShape(index);
         if (shape != sim::FormationShape::None)
             for (std::size_t i : form.indices())
-                if (const QString why = keepTogetherProblem(form.scene(), i); !why.isEmpty()) {
+                if (const QString why = keepTogetherProblem(form.scene(), i, false); !why.isEmpty()) {
                     form.refuse(form.owner()->findChild<QComboBox*>("formation"), why);
                     return;
                 }
@@ -107,7 +111,7 @@ void addKeepTogetherRows(PropertyForm& form)
         }
         if (!sizes.empty())
             for (std::size_t i : form.indices())
-                if (const QString why = keepTogetherProblem(form.scene(), i); !why.isEmpty()) {
+                if (const QString why = keepTogetherProblem(form.scene(), i, true); !why.isEmpty()) {
                     form.refuse(edit, why);
                     return;
                 }

@@ -109,6 +109,11 @@ void Formations::build(const Scene& scene, const AgentColumns& agents, std::uint
     m_slot.assign(n, glm::vec2(0.0f));
     m_behind.assign(n, glm::vec2(0.0f));
     m_companion.assign(n, 0);
+    m_flier.assign(n, 0);
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::uint16_t t = agents.info[i].typeIndex;
+        m_flier[i] = t < scene.agentTypes.size() && scene.agentTypes[t].kind == AgentKind::Flier ? 1 : 0;
+    }
     m_isAnchor.assign(n, 0);
     m_basePace.assign(n, 1.0f);
     m_waitFromM.assign(n, 1.0f);
@@ -253,6 +258,8 @@ Formations::SlotTarget Formations::target(std::size_t i, const AgentColumns& age
         set.walls.forEachNear(at, reach, [&](std::uint32_t k) { fn(set.walls.segment(k)); });
     };
     glm::vec2 slot = m_slot[i], at = place(slot);
+    if (m_flier[i])
+        return {anchor, glm::vec3(slot.x, 0.0f, slot.y)};  // over walls, in the anchor's frame
     const float room = agents.radius[i] + 0.05f;
     if (m_companion[i]) {
         // Abreast only where the slot and the way to it from the anchor are clear of walls.

@@ -1,6 +1,7 @@
 #pragma once
-// Walkers that keep together. A group's formation (line, column, wedge) holds each member
-// on a slot in its anchor's frame: the group's leader, else the member at its front. A
+// Agents that keep together. A group's formation (line, column, wedge; walkers or fliers)
+// holds each member on a slot in its anchor's frame: the group's leader, else the member at
+// its front. A
 // group's companions (families, friends) walk in small groups, each round one of them:
 // abreast where there is room, one behind the other where a wall leaves none. Members
 // steer to their slots (offset pursuit, Reynolds 1999); each anchor walks a little slower
@@ -67,6 +68,7 @@ private:
     std::vector<glm::vec2> m_slot;          // per member: (x right, z forward) in the anchor's frame
     std::vector<glm::vec2> m_behind;        // per companion: where it walks when its slot has no room
     std::vector<std::uint8_t> m_companion;  // per member: a companion (its slot may fall back)
+    std::vector<std::uint8_t> m_flier;      // per member: flies (walls do not cut it off its slot)
     std::vector<std::uint8_t> m_isAnchor;
     std::vector<float> m_basePace, m_waitFromM, m_waitToM;  // per anchor
     std::vector<float> m_pace, m_lagM;                      // per anchor, this step

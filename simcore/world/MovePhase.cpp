@@ -137,7 +137,7 @@ void MovePhase::Pass::stepInGridOrder(const std::uint32_t* order, std::size_t be
             __builtin_prefetch(&m_agents.nextVel[a], 1);
             __builtin_prefetch(&m_agents.nextFwd[a], 1);
         }
-        if (!m_boids.runs(m_agents.info[i].typeIndex) || m_agents.stopped[i]) {
+        if (!m_boids.runs(m_agents.info[i].typeIndex) || m_agents.stopped[i] || m_view.formations.inFormation(i)) {
             stepAgent(i, hasStatics, &sweep);
             continue;
         }
@@ -174,7 +174,7 @@ void MovePhase::Pass::stepAgent(std::size_t i, bool hasStatics, NeighbourGrid::S
         m_boids.collideFree()[i] = 0;  // a stopped boid's last flag no longer holds: others may come
         return;
     }
-    if (m_boids.runs(m_agents.info[i].typeIndex)) {
+    if (m_boids.runs(m_agents.info[i].typeIndex) && !m_view.formations.inFormation(i)) {
         // boids: sense, steer and integrate in one pass (BoidKernel.h)
         BoidPass(m_boids, m_view, m_agents).stepBoid(i, sweep);
         return;
@@ -183,6 +183,9 @@ void MovePhase::Pass::stepAgent(std::size_t i, bool hasStatics, NeighbourGrid::S
         m_walk.step(m_view, m_brains, m_agents, i);  // walkers in the open: the same (WalkKernel.h)
         return;
     }
+    // A boid flying in formation takes this path: the collide pass must check it again.
+    if (m_boids.runs(m_agents.info[i].typeIndex))
+        m_boids.collideFree()[i] = 0;
     SteeringAgent self = steeringAgent(m_agents, m_types, i);
     // An anchor walks at its formation's pace (Formations.h).
     self.maxSpeed *= m_view.formations.paceOf(i);

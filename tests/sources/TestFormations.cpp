@@ -207,6 +207,54 @@ private slots:
         }
     }
 
+    void aSchoolFliesAsAnArrow()
+    {
+        // Finding Nemo's arrow: nine fish (fliers) in a wedge 2 m apart behind a leader that
+        // flies a straight course 30 m up at 6 m/s.
+        const char* yaml = R"(throng: 1
+settings: {fps: 24, seed: 5, duration: 40, bounds: {min: [-50, -100], max: [400, 100]}}
+agent_types:
+  - {name: lead, kind: flier, radius: 0.3, max_speed: 6, min_speed: 4, max_force: 20,
+     variation: {speed: [1, 1]}, behaviours: {path_following: {weight: 1, ahead: 10}}}
+  - {name: fish, kind: flier, radius: 0.3, max_speed: 9, min_speed: 3, max_force: 30, perception: 3,
+     variation: {speed: [1, 1]}, behaviours: {separation: 1}}
+agents:
+  - {id: 1, type: lead, position: [0, 30, 0], heading: 0, path: course}
+groups:
+  - {name: school, type: fish, count: 9, circle: {center: [-8, 0], radius: 4}, altitude: [28, 32], leader: 1,
+     formation: {shape: wedge, spacing: 2}}
+paths:
+  - {name: course, points: [[0, 0], [1000, 0]], radius: 3}
+)";
+        World w(parseFormation(yaml));
+        for (std::size_t i = 1; i < w.agentCount(); ++i)
+            QCOMPARE(w.formationAnchor(i), 0);
+        const std::vector<glm::vec2> arrow = Formations::layout({FormationShape::Wedge, 2.0f, 2}, 9);
+        std::vector<float> errors;
+        while (w.timeS() < 40.0) {
+            const glm::vec3 before = w.positions()[0];
+            w.step();
+            if (w.timeS() < 20.0 || std::lround(w.timeS() * 24.0) % 24 != 0)
+                continue;
+            // The leader's frame from its motion: forward, right (level) and up.
+            const glm::vec3 fwd = glm::normalize(w.positions()[0] - before);
+            const glm::vec3 right = glm::normalize(glm::cross(fwd, glm::vec3(0, 1, 0))), up = glm::cross(right, fwd);
+            std::vector<glm::vec2> local;
+            for (std::size_t i = 1; i < w.agentCount(); ++i) {
+                const glm::vec3 d = w.positions()[i] - w.positions()[0];
+                local.push_back({glm::dot(d, right), glm::dot(d, fwd)});
+                QVERIFY2(std::abs(glm::dot(d, up)) < 0.5f, "in the leader's plane");
+            }
+            const std::vector<float> e = slotErrors(local, arrow);
+            errors.insert(errors.end(), e.begin(), e.end());
+        }
+        std::sort(errors.begin(), errors.end());
+        QVERIFY(errors.size() >= 9 * 20);
+        qInfo("arrow slot error median %.3f m, worst %.3f m", double(errors[errors.size() / 2]), double(errors.back()));
+        QVERIFY2(errors[errors.size() / 2] < 0.2f && errors.back() < 0.6f,
+                 qPrintable(QString("median %1, worst %2").arg(errors[errors.size() / 2]).arg(errors.back())));
+    }
+
     void companionsWalkAbreastInSmallGroups()
     {
         World w(parseFormation(walkersToFar(60, "companions: [2, 3]")));
@@ -420,12 +468,12 @@ private slots:
             parseScene(walkersToFar(10, "companions: [2, 3], leader: 500", 24, placed), "led.yaml", "");
         QVERIFY(led.ok());
         QVERIFY(!led.diagnostics.empty() && led.diagnostics[0].format().find("warning") != std::string::npos);
-        // Fliers and exit choosers cannot keep together.
-        std::string flier = walkersToFar(10, "formation: {shape: line}");
+        // Fliers fly in formation, but do not walk as companions; exit choosers do neither.
+        std::string flier = walkersToFar(10, "companions: [2, 3]");
         flier.replace(flier.find("max_speed: 1.3"), 14, "max_speed: 1.3, kind: flier");
         const LoadResult f = parseScene(flier, "flier.yaml", "");
         QVERIFY(!f.ok());
-        QVERIFY(f.diagnostics[0].format().find("only walkers") != std::string::npos);
+        QVERIFY(f.diagnostics[0].format().find("only walkers walk as companions") != std::string::npos);
         std::string exits = walkersToFar(10, "formation: {shape: line}");
         exits.replace(exits.find("goals:\n"), 7, "goals:\n  - {name: e1, position: [90, 5], radius: 1, exit: true}\n"
                                                  "  - {name: e2, position: [90, -5], radius: 1, exit: true}\n");

@@ -78,9 +78,13 @@ void SceneReader::readKeepingTogether(const YAML::Node& item, const std::string&
         m_f.error(companions.Mark(), key + ".companions", "give a formation or companions, not both");
         return;
     }
-    if (type && type->kind != AgentKind::Pedestrian) {
-        m_f.error(item[which].Mark(), key + "." + which, "only walkers keep together this way; '" + g.type +
-                                                            "' is a " + toString(type->kind) + " type");
+    // Walkers keep together either way; fliers fly in formation (a school's arrow).
+    if (type && (type->kind == AgentKind::Vehicle ||
+                 (companions.IsDefined() && type->kind != AgentKind::Pedestrian))) {
+        const std::string what = companions.IsDefined() ? "only walkers walk as companions"
+                                                        : "vehicles hold no formation";
+        m_f.error(item[which].Mark(), key + "." + which,
+                  what + "; '" + g.type + "' is a " + toString(type->kind) + " type");
         return;
     }
     if (!g.exits.empty()) {
