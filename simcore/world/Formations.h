@@ -1,12 +1,11 @@
 #pragma once
 // Agents that keep together. A group's formation (line, column, wedge; walkers or fliers)
 // holds each member on a slot in its anchor's frame: the group's leader, else the member at
-// its front. A
-// group's companions (families, friends) walk in small groups, each round one of them:
-// abreast where there is room, one behind the other where a wall leaves none. Members
-// steer to their slots (offset pursuit, Reynolds 1999); each anchor walks a little slower
-// than its slowest member and waits while one lags. Owns who follows whom and where, built
-// once per World from the scene; each step's pace comes from the previous state only.
+// its front. A group's companions (families, friends) walk in small groups, each round one
+// of them: abreast where there is room, one behind the other where a wall leaves none.
+// Members steer to their slots (offset pursuit, Reynolds 1999); each anchor walks a little
+// slower than its slowest member and waits while one lags. Owns who follows whom and where,
+// built once per World from the scene; each step's pace comes from the previous state only.
 
 #include "simcore/scene/Scene.h"
 #include "simcore/steering/PursuitBehaviours.h"
