@@ -44,6 +44,24 @@ bool juttingEnd(std::span<const WallSegment> walls, glm::vec2 e, glm::vec2 p)
     return true;
 }
 
+// Whether the wall through segment (o, e) goes on at its end e, by a segment that p lies in
+// front of, turning by less than 30 degrees.
+bool bendsOnGently(std::span<const WallSegment> walls, glm::vec2 e, glm::vec2 o, glm::vec2 p)
+{
+    constexpr float kCosGentleBend = 0.866f;
+    const glm::vec2 on = normalizeOr(e - o, glm::vec2(0.0f));
+    for (const WallSegment& w : walls) {
+        const glm::vec2 a = xz(finiteOrZero(w.a)), b = xz(finiteOrZero(w.b));
+        if (a != e && b != e)
+            continue;
+        const glm::vec2 q = a == e ? b : a;
+        const bool inFront = glm::dot(p - e, q - e) > 0.0f;
+        if (q != o && inFront && glm::dot(normalizeOr(q - e, glm::vec2(0.0f)), on) >= kCosGentleBend)
+            return true;
+    }
+    return false;
+}
+
 }  // namespace
 
 glm::vec3 avoidWalls(const SteeringAgent& agent, std::span<const WallSegment> walls, const WallAvoidanceParams& params,
@@ -80,6 +98,12 @@ glm::vec3 avoidWalls(const SteeringAgent& agent, std::span<const WallSegment> wa
         const bool pastA = glm::dot(p - a, b - a) <= 0.0f, pastB = glm::dot(p - b, a - b) <= 0.0f;
         const glm::vec2 c = pastA ? a : pastB ? b : closestOnSegment(p, a, b);
         const bool post = (pastA || pastB) && juttingEnd(walls, c, p);
+        // A joint where the wall bends on gently, into a segment that p lies in front of (an
+        // arc drawn as segments), is that segment's to push from: its face is nearer. Pushed
+        // from and braked for along the line to the joint as well, a walker entering the bend
+        // of a corridor 0.8 m wide came to a stand at its start.
+        if ((pastA || pastB) && !post && bendsOnGently(walls, c, pastA ? b : a, p))
+            continue;
         const float dist = glm::length(p - c);
         const glm::vec2 n = dist > kTiny ? (p - c) / dist : wallNormalToward(p, a, b, h);
         const float gap = dist - r;

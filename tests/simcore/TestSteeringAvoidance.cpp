@@ -313,6 +313,30 @@ private slots:
         QVERIFY2(f.x > 0.0f && f.z > 0.0f, "a room's corner no longer holds a walker off");
     }
 
+    // The outer wall of a corridor's bend, drawn as a straight wall and then segments
+    // turning 7.5 degrees each (a half circle of 4.4 m radius in 24). A walker near the
+    // straight's end, walking along it 0.22 m off, is not braked by the joints ahead:
+    // braked for along the line to each joint, walkers stood at the start of such a bend
+    // for good. A room's corner (90 degrees) still holds a walker off, as tested above.
+    void aBendDrawnAsSegmentsDoesNotBrakeAWalkerAlongIt()
+    {
+        std::vector<WallSegment> walls{{{0, 0, -4.4f}, {20, 0, -4.4f}}};
+        glm::vec3 last(20.0f, 0.0f, -4.4f);
+        for (int k = 1; k <= 12; ++k) {
+            const float a = -1.5707963f + 3.14159265f * float(k) / 24.0f;
+            const glm::vec3 next(20.0f + 4.4f * std::cos(a), 0.0f, 4.4f * std::sin(a));
+            walls.push_back({last, next});
+            last = next;
+        }
+        for (const float x : {18.0f, 19.0f, 19.6f, 19.9f}) {
+            SteeringAgent a = walker({x, 0, -4.0f}, {1.32f, 0, 0});
+            a.radius = 0.18f;
+            const glm::vec3 ahead(x + 2.0f, 0.0f, -3.9f);
+            const glm::vec3 f = avoidWalls(a, walls, {}, &ahead);
+            QVERIFY2(f.x > -0.05f, qPrintable(QString("braked with %1 N at x = %2").arg(-f.x).arg(x)));
+        }
+    }
+
     void containmentKeepsAWandererInside_data()
     {
         QTest::addColumn<bool>("polygon");
