@@ -162,6 +162,8 @@ std::vector<PropertyField> make(ItemKind kind)
                 {"priority", tr("Priority"), -1e6, 1e6, 1, 1, THRONG_FIELD(agentTypes, priority)},
                 {"actionBlend", tr("Action blend (s; -1 = each action's own)"), -1, 10, 0.05, 2,
                  THRONG_FIELD(agentTypes, actionBlendS)},
+                {"timeGap", tr("Time gap (s; 0 = none)"), 0, 10, 0.05, 2, THRONG_FIELD(agentTypes, timeGapS), {},
+                 isWalker},
                 {"heightMin", tr("Height scale min"), 0.01, 10, 0.05, 2, THRONG_FIELD(agentTypes, variation.heightScale.x),
                  variationEnd(&sim::Variation::heightScale, true)},
                 {"heightMax", tr("Height scale max"), 0.01, 10, 0.05, 2, THRONG_FIELD(agentTypes, variation.heightScale.y),

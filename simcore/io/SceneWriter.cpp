@@ -167,6 +167,8 @@ void writeAgentTypes(Writer& w, const Scene& s)
             w.kvf("banking", t.banking);
         if (t.actionBlendS >= 0.0f)
             w.kvf("action_blend", t.actionBlendS);
+        if (t.timeGapS > 0.0f)
+            w.kvf("time_gap", t.timeGapS);
         detail::writeEmission(w, t.emits);
         if (t.priority != 0.0f)
             w.kvf("priority", t.priority);

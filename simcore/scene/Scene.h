@@ -124,6 +124,9 @@ struct AgentType {
     // action's own (Clip.h's clips: a few tenths of a second, sit 0.8 s).
     float actionBlendS = -1.0f;
     CarFollowing carFollowing = CarFollowing::Inherit;  // vehicles: their model where the lane sets none
+    // Walkers: the time gap they keep to the body in their way, s (the headway rule,
+    // steering/Headway.h; 1.06 s in Seyfried's single-file data). 0 = no such rule.
+    float timeGapS = 0.0f;
     bool operator==(const AgentType&) const = default;
 };
 

@@ -26,6 +26,7 @@ struct AgentTypes {
     // oncoming walker in its way (KeepRight.h); 0 for every other type.
     std::vector<float> keepRight;
     std::vector<glm::vec2> ageYears;  // the variation's age range ([0, 0] = no age; WalkingAge.h)
+    std::vector<float> timeGapS;      // walkers' headway rule (steering/Headway.h); 0 = none
     bool makingWay = false;  // some types differ in layers or priority (else all collide as equals)
 };
 

@@ -9,6 +9,7 @@
 #include "simcore/world/Steer.h"
 #include "simcore/world/WorldTraffic.h"
 
+#include "simcore/steering/Headway.h"
 #include "simcore/steering/KeepRight.h"
 #include "simcore/steering/UninitialisedArray.h"
 #include "simcore/world/detail/StepGeometry.h"
@@ -206,6 +207,19 @@ void MovePhase::Pass::stepAgent(std::size_t i, bool hasStatics, NeighbourGrid::S
                 force += keepRightForce(self.forward, self.maxForce, keepRight);
                 break;
             }
+    // Headway: a walker that keeps a time gap goes no faster than lets it stop behind the
+    // body in the way it wants to go (Headway.h): along its path, toward its goal's
+    // waypoint, else as it moves. Seen along its heading, or the way its forces push it, a
+    // walker that stood facing the one beside it, or was pushed back by the one ahead,
+    // never set off.
+    if (const float gapS = m_types.timeGapS[m_agents.info[i].typeIndex]; gapS > 0.0f && self.maxSpeed > 0.0f) {
+        const glm::vec2 wanted = wantedHeading(m_view, i);
+        if (const float len = glm::length(wanted); len > 1e-4f) {
+            const float free =
+                freeGapAhead(xz(self.position), self.radius, wanted / len, {near.data(), count}, self.maxSpeed * gapS);
+            self.maxSpeed = headwaySpeed(free, gapS, self.maxSpeed);
+        }
+    }
     if (s.on(Behaviour::ReciprocalAvoidance) && !s.vehicle.flying && m_clock.decide)
         force = avoidReciprocally(m_view, i, self, force, {near.data(), count}, s);
     // Between decisions (StepRate.h) a ground agent applies the force it decided last.

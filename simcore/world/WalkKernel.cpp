@@ -78,7 +78,10 @@ void WalkKernel::build(const AgentTypes& types, const StaticSet& set, float dt, 
     m_walkTypes.assign(types.steering.size(), WalkType{});
     for (std::size_t t = 0; t < types.steering.size(); ++t) {
         const TypeSteering& s = types.steering[t];
-        m_runs[t] = plain && types.params[t].kind != AgentKind::Flier && fitsWalkKernel(s) ? 1 : 0;
+        // A walker that keeps a time gap (Headway.h) takes the general path, which applies it.
+        m_runs[t] = plain && types.params[t].kind != AgentKind::Flier && fitsWalkKernel(s) && types.timeGapS[t] <= 0.0f
+                        ? 1
+                        : 0;
         // Each constant as the behaviour's function computes it from the parameters.
         const float mass = effectiveMass(types.params[t].mass);
         WalkType& w = m_walkTypes[t];

@@ -98,6 +98,7 @@ void World::build(const Scene& scene, const WorldOptions& options)
         const TypeSteering& steering = m_types.steering.back();
         m_types.keepRight.push_back(keepRightShare(t.kind, steering));
         m_types.ageYears.push_back(t.kind == AgentKind::Pedestrian ? t.variation.ageYears : glm::vec2(0.0f));
+        m_types.timeGapS.push_back(t.kind == AgentKind::Pedestrian ? t.timeGapS : 0.0f);
         // Reciprocal avoidance needs both sides of a pair to see each other: such a type
         // perceives all round, whatever its view angle.
         const bool allRound = t.viewAngleDeg >= 360.0f || m_types.steering.back().on(Behaviour::ReciprocalAvoidance);

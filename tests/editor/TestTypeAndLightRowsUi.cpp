@@ -3,7 +3,7 @@
 // tints added and removed, an inverted range and an unknown character refused, layers
 // set; a light's stop lines moved along their lane, put on another lane, turned into a
 // crosswalk stop, added and removed. Each edit is one undo step, and undoing them all
-// gives back the same saved bytes.
+// gives back the same saved bytes. A walker type's reaction times, ages and time gap.
 #include "EditorTestSupport.h"
 #include "EditorUiDriver.h"
 #include "PanelTestScene.h"
@@ -209,6 +209,36 @@ private slots:
         QCOMPARE(window.document().undoStack()->count(), 2);
         for (int k = 0; k < 2; ++k)
             undo(window);
+        QCOMPARE(sceneYaml(window), before);
+    }
+
+    // A walker type's time gap (RiMEA test 16): typed in, written to the file and read back,
+    // one undo step; a flier type shows no such row.
+    void walkersKeepATimeGap()
+    {
+        QByteArray yaml = tablesScene();
+        yaml.replace("  - {name: runner, max_speed: 3, max_force: 6}\n",
+                     "  - {name: runner, max_speed: 3, max_force: 6}\n"
+                     "  - {name: gull, kind: flier, max_speed: 8, max_force: 20}\n");
+        MainWindow window;
+        QVERIFY(showWithYaml(window, m_dir, "gaps.yaml", yaml));
+        const QByteArray before = sceneYaml(window);
+        const sim::Scene& scene = window.document().scene();
+        QWidget* panel = window.findChild<QWidget*>("properties");
+        selectInOutliner(window, {{ItemKind::AgentType, 2}});  // gull: no time gap
+        QVERIFY(!field<QDoubleSpinBox>(window, "timeGap")->isVisibleTo(panel));
+
+        selectInOutliner(window, {{ItemKind::AgentType, 0}});  // walker
+        auto* gap = field<QDoubleSpinBox>(window, "timeGap");
+        QVERIFY(gap->isVisibleTo(panel));
+        QCOMPARE(gap->value(), 0.0);
+        typeInto(window, gap, "1.06");
+        QCOMPARE(scene.agentTypes[0].timeGapS, 1.06f);
+        QCOMPARE(window.document().undoStack()->index(), 1);
+        QVERIFY2(sceneYaml(window).contains("time_gap: 1.06"), sceneYaml(window).constData());
+        QCOMPARE(sim::parseScene(sceneYaml(window).toStdString(), "gaps.yaml", "").scene.agentTypes[0].timeGapS, 1.06f);
+        undo(window);
+        QCOMPARE(scene.agentTypes[0].timeGapS, 0.0f);
         QCOMPARE(sceneYaml(window), before);
     }
 

@@ -250,7 +250,7 @@ void SceneReader::readAgentTypes(const YAML::Node& node, Scene& scene)
         m_f.checkKeys(item, key, {"name", "kind", "radius", "max_speed", "max_force", "mass", "perception",
                                   "view_angle", "brain", "character", "clips", "variation", "behaviours", "combination",
                                   "min_speed", "banking", "emits", "priority", "layer", "collides_with",
-                                  "navigation", "action_blend", "car_following"});
+                                  "navigation", "action_blend", "car_following", "time_gap"});
         AgentType t;
         if (!m_f.readName(item, "name", key, t.name, true))
             continue;
@@ -322,6 +322,11 @@ void SceneReader::readAgentTypes(const YAML::Node& node, Scene& scene)
             m_f.error(item["min_speed"].Mark(), key + ".min_speed", "is above max_speed");
         m_f.readFloat(item, "banking", key, t.banking, false, Range::NonNegative);
         m_f.readFloat(item, "action_blend", key, t.actionBlendS, false, Range::NonNegative);
+        if (m_f.readFloat(item, "time_gap", key, t.timeGapS, false, Range::NonNegative) &&
+            t.kind != AgentKind::Pedestrian && t.timeGapS > 0.0f) {
+            m_f.warning(item["time_gap"].Mark(), key + ".time_gap", "only walkers keep a time gap; ignored here");
+            t.timeGapS = 0.0f;
+        }
         if (YAML::Node e = item["emits"]; e.IsDefined())
             readEmission(e, key + ".emits", t.emits);
         std::string navigation = "direct";
