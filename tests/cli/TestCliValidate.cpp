@@ -67,7 +67,7 @@ private slots:
         for (const auto& [number, o] : tests) {
             qInfo("RiMEA %d: %s: %s", number, qPrintable(o["result"].toString()), qPrintable(o["measured"].toString()));
             if (number == 1 || number == 4 || number == 5 || number == 6 || number == 7 || number == 9 ||
-                number == 10 || number == 11 || number == 12 || number == 15) {
+                number == 10 || number == 11 || number == 12 || number == 15 || number == 16) {
                 QCOMPARE(o["result"].toString(), QString("pass"));
                 QVERIFY(!o["criterion"].toString().isEmpty());
             } else {
@@ -120,6 +120,21 @@ private slots:
         }
         QVERIFY(tests.at(15)["measured"].toString().startsWith("500 of 500 out in"));
         QVERIFY(tests.at(15)["measured"].toString().contains(", 0 steps through a wall (the World counts 0)"));
+        // Test 16: four densities from 0.5 to 2 per metre, each speed within 0.1 m/s of
+        // (1/rho - 0.36) / 1.06 (at most the free speed), recomputed here from the density
+        // the line reports, each below the last.
+        const QStringList file = tests.at(16)["measured"].toString().split("; ");
+        QCOMPARE(file.size(), 4);
+        double before = 10.0;
+        for (const QString& p : file) {
+            const double rho = numberAfter(p, ""), speed = numberAfter(p, "/m:");
+            const double seyfried = std::clamp((1.0 / rho - 0.36) / 1.06, 0.0, 1.34);
+            QVERIFY2(std::abs(numberAfter(p, "(Seyfried") - seyfried) < 0.012, qPrintable(p));  // both printed to 0.01
+            QVERIFY2(std::abs(speed - seyfried) <= 0.1 && speed < before, qPrintable(p));
+            before = speed;
+        }
+        QVERIFY2(numberAfter(file.front(), "") < 0.6 && numberAfter(file.back(), "") > 1.9,
+                 qPrintable(file.join("; ")));
     }
 
     // The same corridor with a walker at 1 m/s takes 40 s: test 1 fails, and so does the
@@ -147,10 +162,11 @@ private slots:
         QVERIFY(out.contains("RiMEA 9: Four against two exits: FAIL (" + dir.filePath("rimea-09-four-exits.yaml")));
         // Tests 10, 12 and 15 have no scenes in the folder: each names its missing file.
         QVERIFY(out.contains("RiMEA 10: Assigned exits: FAIL (" + dir.filePath("rimea-10-assigned-exits.yaml")));
-        QVERIFY2(out.contains("0 passed, 10 failed, 6 not run\n"), qPrintable(out));
+        QVERIFY2(out.contains("0 passed, 11 failed, 5 not run\n"), qPrintable(out));
     }
 
-    // Each newer test fails on a scene that breaks it: walkers that do not slow in a crowd (4);
+    // Each newer test fails on a scene that breaks it: walkers that do not slow in a crowd (4)
+    // or in single file (16);
     // walkers who all set off at once (5); a
     // crowd whose speeds do not follow its ages (7); a crowd all sent to the near exit (11);
     // a corridor whose east end is walled
@@ -184,6 +200,8 @@ private slots:
         copy("rimea-04-fundamental-diagram.yaml", [](QByteArray text) {
             return text.replace("navigation: flow_field", "navigation: direct");
         });
+        // Walkers in single file that keep no time gap walk on at their free speed however close.
+        copy("rimea-16-single-file.yaml", [](QByteArray text) { return text.replace(", time_gap: 1.06", ""); });
         copy("rimea-11-exit-choice.yaml", [](QByteArray text) {
             return text.replace("exits: [west_exit, east_exit]", "goal: west_exit");
         });
@@ -211,6 +229,7 @@ private slots:
         QVERIFY2(out.contains("RiMEA 12: Bottleneck: FAIL\n"), qPrintable(out));
         QVERIFY2(out.contains("RiMEA 15: 500 round a corner: FAIL\n"), qPrintable(out));
         QVERIFY2(out.contains(QRegularExpression("measured: +0 of 500 out in 300")), qPrintable(out));
+        QVERIFY2(out.contains("RiMEA 16: Single file: FAIL\n"), qPrintable(out));
     }
 };
 
