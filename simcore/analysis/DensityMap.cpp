@@ -22,7 +22,7 @@ double DensityMap::peakDensity() const
 }
 
 DensityMap densityMap(const Scene& scene, const FrameCache& cache, double cellM, std::size_t firstFrame,
-                      std::size_t lastFrame, std::size_t maxCells)
+                      std::size_t lastFrame, std::size_t maxCells, StopFlag stop)
 {
     DensityMap map;
     const glm::dvec2 lo(scene.settings.boundsMin), hi(scene.settings.boundsMax);
@@ -43,6 +43,10 @@ DensityMap densityMap(const Scene& scene, const FrameCache& cache, double cellM,
     std::uint64_t outside = 0;
     const WalkerTypes walker(scene);
     for (std::size_t f = firstFrame; f < lastFrame; ++f) {
+        if (stopRequested(stop)) {
+            lastFrame = std::max(f, firstFrame + 1);
+            break;
+        }
         const std::vector<AgentInfo>& agents = cache.agentsAt(f);
         for (std::size_t i = 0; i < cache.agentCount(); ++i) {
             if (!inShot(cache.at(f, i)) || !walker(agents, i))

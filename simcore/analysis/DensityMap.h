@@ -4,6 +4,7 @@
 // and a FrameCache; never simulates.
 
 #include "simcore/scene/Scene.h"
+#include "simcore/analysis/AnalysisStop.h"
 #include "simcore/world/FrameCache.h"
 
 #include <glm/vec2.hpp>
@@ -30,8 +31,9 @@ struct DensityMap {
 };
 
 // Over frames [firstFrame, lastFrame) (clamped to the recording); cells of cellM metres
-// (> 0) over the scene's bounds, at most maxCells of them (coarser cells otherwise).
+// (> 0) over the scene's bounds, at most maxCells of them (coarser cells otherwise). Told
+// to stop, it returns the frames it has counted.
 DensityMap densityMap(const Scene& scene, const FrameCache& cache, double cellM, std::size_t firstFrame,
-                      std::size_t lastFrame, std::size_t maxCells = 250'000);
+                      std::size_t lastFrame, std::size_t maxCells = 250'000, StopFlag stop = nullptr);
 
 }  // namespace throng::sim

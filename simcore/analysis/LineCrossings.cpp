@@ -31,7 +31,7 @@ int crossingSign(glm::dvec2 a, glm::dvec2 b, glm::dvec2 p, glm::dvec2 q)
 
 }  // namespace
 
-std::vector<LineFlow> countLineCrossings(const Scene& scene, const FrameCache& cache)
+std::vector<LineFlow> countLineCrossings(const Scene& scene, const FrameCache& cache, StopFlag stop)
 {
     std::vector<LineFlow> flows;
     std::vector<const Measurement*> lines;
@@ -46,7 +46,7 @@ std::vector<LineFlow> countLineCrossings(const Scene& scene, const FrameCache& c
     if (lines.empty())
         return flows;
     const WalkerTypes walker(scene);
-    for (std::size_t f = 1; f < cache.frameCount(); ++f) {
+    for (std::size_t f = 1; f < cache.frameCount() && !stopRequested(stop); ++f) {
         const std::vector<AgentInfo>& agents = cache.agentsAt(f);
         for (std::size_t i = 0; i < cache.agentCount(); ++i) {
             const AgentFrame& before = cache.at(f - 1, i);

@@ -4,6 +4,7 @@
 // FrameCache; never simulates.
 
 #include "simcore/scene/Scene.h"
+#include "simcore/analysis/AnalysisStop.h"
 #include "simcore/world/FrameCache.h"
 
 #include <cstddef>
@@ -30,7 +31,8 @@ struct LineFlow {
 // frame f when it stood on one side on frame f - 1 and on the other on frame f, with the
 // step between them passing through the line. Walkers only; a walker counts while it is
 // in the shot on f - 1 (so the step on which it leaves through an exit counts too).
-std::vector<LineFlow> countLineCrossings(const Scene& scene, const FrameCache& cache);
+// Told to stop, it returns the crossings up to where it stopped.
+std::vector<LineFlow> countLineCrossings(const Scene& scene, const FrameCache& cache, StopFlag stop = nullptr);
 
 // Persons per second over bins of binS seconds from 0 s: bin k holds the crossings on
 // frames in [k binS, (k + 1) binS) of the recording, divided by binS. Both directions.

@@ -34,7 +34,7 @@ std::size_t nearestExit(const std::vector<ExitPlace>& places, glm::dvec2 p)
 
 }  // namespace
 
-Occupancy measureOccupancy(const Scene& scene, const FrameCache& cache)
+Occupancy measureOccupancy(const Scene& scene, const FrameCache& cache, StopFlag stop)
 {
     Occupancy o;
     std::vector<ExitPlace> places;
@@ -48,10 +48,16 @@ Occupancy measureOccupancy(const Scene& scene, const FrameCache& cache)
             o.exits.push_back({p.name, {}});
             places.push_back({glm::dvec2(p.points.back()), double(p.radiusM)});
         }
-    const std::size_t frames = cache.frameCount();
+    std::size_t frames = cache.frameCount();
     o.inScene.assign(frames, 0);
     o.out.assign(frames, 0);
-    for (std::size_t f = 0; f < frames; ++f)
+    for (std::size_t f = 0; f < frames; ++f) {
+        if (stopRequested(stop)) {
+            frames = f;
+            o.inScene.resize(f);
+            o.out.resize(f);
+            break;
+        }
         for (std::size_t i = 0; i < cache.agentCount(); ++i) {
             const AgentFrame& a = cache.at(f, i);
             if (!a.present)
@@ -65,6 +71,7 @@ Occupancy measureOccupancy(const Scene& scene, const FrameCache& cache)
             if (leftNow && !places.empty())
                 o.exits[nearestExit(places, groundPosition(cache, f, i))].frames.push_back(f);
         }
+    }
     for (std::uint32_t n : o.inScene)
         o.peakInScene = std::max<std::uint64_t>(o.peakInScene, n);
     if (frames > 0 && o.inScene.back() == 0 && o.out.back() > 0) {

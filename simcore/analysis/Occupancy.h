@@ -5,6 +5,7 @@
 // never simulates.
 
 #include "simcore/scene/Scene.h"
+#include "simcore/analysis/AnalysisStop.h"
 #include "simcore/world/FrameCache.h"
 
 #include <cstddef>
@@ -30,6 +31,7 @@ struct Occupancy {
     double evacuationS = -1.0;
 };
 
-Occupancy measureOccupancy(const Scene& scene, const FrameCache& cache);
+// Told to stop, it returns the frames it has counted.
+Occupancy measureOccupancy(const Scene& scene, const FrameCache& cache, StopFlag stop = nullptr);
 
 }  // namespace throng::sim

@@ -13,6 +13,7 @@
 #include <glm/vec2.hpp>
 
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,14 @@ struct AnalysisOptions {
     double flowBinS = 0.0;          // flow bins, s; <= 0: 1, 2, 5 or 10 s, about 80 bins over the run
     std::size_t maxTrajectories = 2'000;   // walkers drawn (evenly picked by cache index)
     std::size_t maxTrajectoryPoints = 400; // points per trajectory (evenly picked frames)
+};
+
+// How an analysis run off the caller's thread reports and stops: `progress` hears, between
+// its stages, the share done (0 to 1) and what comes next; `stop` (AnalysisStop.h) is read
+// once a frame, and an analysis told to stop returns early with `complete` false.
+struct AnalysisControl {
+    std::function<void(double done, const std::string& next)> progress;
+    StopFlag stop = nullptr;
 };
 
 struct Trajectory {
@@ -43,8 +52,10 @@ struct RunAnalysis {
     std::vector<std::vector<double>> lineFlowPerSecond;  // per line, bins of flowBinS
     double flowBinS = 1.0;
     Occupancy occupancy;
+    bool complete = true;  // false: stopped early (AnalysisControl), the figures partial
 };
 
-RunAnalysis analyseRun(const Scene& scene, const FrameCache& cache, const AnalysisOptions& options = {});
+RunAnalysis analyseRun(const Scene& scene, const FrameCache& cache, const AnalysisOptions& options = {},
+                       const AnalysisControl& control = {});
 
 }  // namespace throng::sim

@@ -8,7 +8,8 @@
 
 namespace throng::sim {
 
-std::vector<AreaSpeedDensity> measureSpeedDensity(const Scene& scene, const FrameCache& cache, std::size_t everyFrames)
+std::vector<AreaSpeedDensity> measureSpeedDensity(const Scene& scene, const FrameCache& cache, std::size_t everyFrames,
+                                                  StopFlag stop)
 {
     std::vector<AreaSpeedDensity> out;
     everyFrames = std::max<std::size_t>(everyFrames, 1);
@@ -24,7 +25,8 @@ std::vector<AreaSpeedDensity> measureSpeedDensity(const Scene& scene, const Fram
             lo = glm::min(lo, glm::dvec2(c));
             hi = glm::max(hi, glm::dvec2(c));
         }
-        for (std::size_t f = 0; f < cache.frameCount() && series.areaM2 > 0.0; f += everyFrames) {
+        for (std::size_t f = 0; f < cache.frameCount() && series.areaM2 > 0.0 && !stopRequested(stop);
+             f += everyFrames) {
             std::uint32_t walkers = 0;
             double speed = 0.0;
             const std::vector<AgentInfo>& agents = cache.agentsAt(f);

@@ -5,6 +5,7 @@
 // Reads a scene and a FrameCache; never simulates.
 
 #include "simcore/scene/Scene.h"
+#include "simcore/analysis/AnalysisStop.h"
 #include "simcore/world/FrameCache.h"
 
 #include <cstddef>
@@ -28,8 +29,9 @@ struct AreaSpeedDensity {
 };
 
 // One series per measurement area (scene order), sampling every `everyFrames` frame (>= 1).
+// Told to stop, the series end where it stopped.
 std::vector<AreaSpeedDensity> measureSpeedDensity(const Scene& scene, const FrameCache& cache,
-                                                  std::size_t everyFrames = 1);
+                                                  std::size_t everyFrames = 1, StopFlag stop = nullptr);
 
 // Weidmann (1993): v(rho) = 1.34 (1 - exp(-1.913 (1 / rho - 1 / 5.4))) m/s for rho persons
 // per m² in (0, 5.4]; 1.34 at 0 and 0 from 5.4 on.

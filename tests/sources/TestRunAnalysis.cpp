@@ -14,8 +14,12 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <sstream>
+#include <string>
+#include <vector>
 
 using namespace throng;
 using namespace throng::sim;
@@ -356,6 +360,42 @@ private slots:
             QVERIFY(glm::length(t.points.back() - w.at[last][t.agent]) < 1e-3);
             QVERIFY(t.points.back().x > 35.0);  // it walked to the exit
         }
+    }
+
+    // The stages report their progress in order up to 1; told to stop (here as the lines
+    // come next), the analysis returns at once, incomplete, without the lines' and exits'
+    // figures; never told, it gives what analyseRun gives without a control.
+    void anAnalysisReportsProgressAndStopsWhenTold()
+    {
+        const Watched w = watch(corridor(), 50.0);
+        std::vector<double> progress;
+        std::vector<std::string> stages;
+        std::atomic<bool> stop{false};
+        AnalysisControl control;
+        control.progress = [&](double done, const std::string& next) {
+            progress.push_back(done);
+            stages.push_back(next);
+        };
+        control.stop = &stop;
+        const RunAnalysis whole = analyseRun(w.scene, w.cache, {}, control);
+        QVERIFY(whole.complete);
+        QCOMPARE(stages, (std::vector<std::string>{"trajectories", "density", "areas", "lines", "exits", ""}));
+        QVERIFY(std::is_sorted(progress.begin(), progress.end()) && progress.front() == 0.0 && progress.back() == 1.0);
+        const RunAnalysis plain = analyseRun(w.scene, w.cache);
+        QCOMPARE(whole.lines[0].forward, plain.lines[0].forward);
+        QCOMPARE(whole.occupancy.evacuationS, plain.occupancy.evacuationS);
+        QCOMPARE(whole.density.totalPersons(), plain.density.totalPersons());
+
+        control.progress = [&](double, const std::string& next) { stop = stop || next == "lines"; };
+        const RunAnalysis stopped = analyseRun(w.scene, w.cache, {}, control);
+        QVERIFY(!stopped.complete);
+        QVERIFY(stopped.lines.empty() && stopped.occupancy.inScene.empty());
+        QCOMPARE(stopped.density.totalPersons(), plain.density.totalPersons());
+        QCOMPARE(stopped.trajectories.size(), plain.trajectories.size());
+        // Each measure stops within its frames too: a flag set beforehand leaves nothing counted.
+        QVERIFY(countLineCrossings(w.scene, w.cache, &stop)[0].crossings.empty());
+        QVERIFY(measureOccupancy(w.scene, w.cache, &stop).inScene.empty());
+        QVERIFY(measureSpeedDensity(w.scene, w.cache, 1, &stop)[0].samples.empty());
     }
 
     void theFileKeepsMeasurementsAndRefusesBadOnes()
