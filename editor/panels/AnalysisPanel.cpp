@@ -2,6 +2,7 @@
 
 #include "editor/Icons.h"
 #include "editor/SceneDocument.h"
+#include "editor/panels/AnalysisJob.h"
 #include "editor/simulation/SimulationController.h"
 #include "report/AnalysisCharts.h"
 #include "report/GroundPlot.h"
@@ -11,15 +12,16 @@
 #include <QtCharts/QAbstractAxis>
 #include <QtCharts/QChartView>
 
-#include <QApplication>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
+#include <QProgressBar>
 #include <QPushButton>
 #include <QScrollArea>
 #include <QTabWidget>
+#include <QTimer>
 #include <QTreeWidget>
 #include <QVBoxLayout>
 
@@ -55,7 +57,7 @@ QLabel* imageLabel(QTabWidget* tabs, const QString& name, const QString& title)
 }  // namespace
 
 AnalysisPanel::AnalysisPanel(SceneDocument& document, SimulationController& controller, QWidget* parent)
-    : QWidget(parent), m_document(document), m_controller(controller)
+    : QWidget(parent), m_document(document), m_controller(controller), m_controllerAlive(&controller)
 {
     setObjectName("analysisPanel");
     auto* layout = new QVBoxLayout(this);
@@ -70,11 +72,22 @@ AnalysisPanel::AnalysisPanel(SceneDocument& document, SimulationController& cont
     m_save->setObjectName("saveReportButton");
     m_save->setToolTip(tr("Write this analysis as one HTML file: the figures, every plot and the data behind them"));
     m_save->setEnabled(false);
+    m_stop = new QPushButton(tr("S&top"), this);
+    m_stop->setObjectName("stopAnalysisButton");
+    m_stop->setToolTip(tr("Stop measuring; the analysis shown before stays"));
+    m_stop->setVisible(false);
+    m_progress = new QProgressBar(this);
+    m_progress->setObjectName("analysisProgress");
+    m_progress->setRange(0, 100);
+    m_progress->setMaximumWidth(160);
+    m_progress->setVisible(false);
     m_status = new QLabel(this);
     m_status->setObjectName("analysisStatus");
     m_status->setWordWrap(true);
     bar->addWidget(m_analyse);
     bar->addWidget(m_save);
+    bar->addWidget(m_progress);
+    bar->addWidget(m_stop);
     bar->addWidget(m_status, 1);
     layout->addLayout(bar);
 
@@ -96,7 +109,11 @@ AnalysisPanel::AnalysisPanel(SceneDocument& document, SimulationController& cont
     m_tabs->addTab(m_occupancy, tr("In and Out"));
     layout->addWidget(m_tabs, 1);
 
+    m_poll = new QTimer(this);
+    m_poll->setInterval(50);
+    connect(m_poll, &QTimer::timeout, this, &AnalysisPanel::poll);
     connect(m_analyse, &QPushButton::clicked, this, &AnalysisPanel::analyse);
+    connect(m_stop, &QPushButton::clicked, this, &AnalysisPanel::stopAnalysis);
     connect(m_save, &QPushButton::clicked, this, &AnalysisPanel::saveReportAs);
     connect(&m_controller, &SimulationController::recordedChanged, this, &AnalysisPanel::updateStatus);
     // Another scene: what was measured belongs to the last one.
@@ -115,14 +132,62 @@ AnalysisPanel::AnalysisPanel(SceneDocument& document, SimulationController& cont
     updateStatus();
 }
 
+AnalysisPanel::~AnalysisPanel()
+{
+    if (m_job)
+        m_job->stop();
+    if (m_controllerAlive)
+        m_controllerAlive->clearCacheReader();
+}
+
 void AnalysisPanel::analyse()
 {
-    QApplication::setOverrideCursor(Qt::WaitCursor);
-    m_analysis = sim::analyseRun(m_document.scene(), m_controller.cache());
-    m_analysedFrames = m_controller.cache().frameCount();
+    if (m_job)
+        return;
+    m_jobFrames = m_controller.cache().frameCount();
+    m_job = std::make_shared<AnalysisJob>(m_document.scene(), m_controller.cache());
+    // An edit that changes the recording stops the job first (it reads the cache in place).
+    m_controller.setCacheReader([job = std::weak_ptr<AnalysisJob>(m_job)] {
+        if (const std::shared_ptr<AnalysisJob> j = job.lock())
+            j->stop();
+    });
+    m_analyse->setEnabled(false);
+    m_progress->setValue(0);
+    m_progress->setVisible(true);
+    m_stop->setVisible(true);
+    m_status->setText(tr("Measuring %1 frames...").arg(m_jobFrames));
+    m_poll->start();
+}
+
+void AnalysisPanel::stopAnalysis()
+{
+    if (m_job)
+        m_job->stop();
+    poll();
+}
+
+void AnalysisPanel::poll()
+{
+    if (!m_job)
+        return;
+    m_progress->setValue(int(m_job->progress() * 100.0 + 0.5));
+    if (!m_job->isDone())
+        return;
+    m_poll->stop();
+    const std::shared_ptr<AnalysisJob> job = std::exchange(m_job, nullptr);
+    m_controller.clearCacheReader();
+    m_analyse->setEnabled(true);
+    m_progress->setVisible(false);
+    m_stop->setVisible(false);
+    if (!job->result().complete) {
+        updateStatus();
+        m_status->setText(m_status->text() + " " + tr("(The analysis was stopped before it finished.)"));
+        return;
+    }
+    m_analysis = job->result();
+    m_analysedFrames = m_jobFrames;
     m_analysedRevision = m_controller.cache().revision();
     showAnalysis();
-    QApplication::restoreOverrideCursor();
     updateStatus();
 }
 

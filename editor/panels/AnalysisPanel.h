@@ -8,6 +8,7 @@
 
 #include "simcore/analysis/RunAnalysis.h"
 
+#include <QPointer>
 #include <QWidget>
 
 #include <cstdint>
@@ -16,12 +17,15 @@
 
 class QChartView;
 class QLabel;
+class QProgressBar;
 class QPushButton;
 class QTabWidget;
+class QTimer;
 class QTreeWidget;
 
 namespace throng::editor {
 
+class AnalysisJob;
 class SceneDocument;
 class SimulationController;
 
@@ -30,10 +34,15 @@ class AnalysisPanel : public QWidget {
 
 public:
     AnalysisPanel(SceneDocument& document, SimulationController& controller, QWidget* parent = nullptr);
+    ~AnalysisPanel() override;
 
-    // Analyses the frames recorded so far and shows them (a run of a few thousand agents
-    // over a few thousand frames takes well under a second, on the GUI thread).
+    // Analyses the frames recorded so far on a thread of its own, with progress and Stop,
+    // and shows them when done (10,000 walkers over 2,400 frames take about 0.6 s). The
+    // recording holds still meanwhile; an edit that changes it stops the analysis first.
     void analyse();
+    // Stops an analysis under way; the last one shown stays.
+    void stopAnalysis();
+    bool analysing() const { return m_job != nullptr; }
     // Writes the shown analysis as an HTML report; false (with `error` set) when it could not.
     bool saveReport(const QString& path, QString& error);
 
@@ -50,18 +59,26 @@ signals:
     void message(const QString& text);
 
 private:
+    // The job's progress, and once it is done its result.
+    void poll();
     void showAnalysis();
     void updateStatus();
     void saveReportAs();
 
     SceneDocument& m_document;
     SimulationController& m_controller;
+    QPointer<SimulationController> m_controllerAlive;  // the controller may go first
+    std::shared_ptr<AnalysisJob> m_job;                 // the analysis under way, if any
+    std::size_t m_jobFrames = 0;                        // the frames it reads
+    QTimer* m_poll = nullptr;
     std::optional<sim::RunAnalysis> m_analysis;
     std::size_t m_analysedFrames = 0;
     std::uint64_t m_analysedRevision = 0;
     QLabel* m_status = nullptr;
     QPushButton* m_analyse = nullptr;
     QPushButton* m_save = nullptr;
+    QPushButton* m_stop = nullptr;
+    QProgressBar* m_progress = nullptr;
     QTabWidget* m_tabs = nullptr;
     QTreeWidget* m_figures = nullptr;
     QLabel* m_trajectories = nullptr;

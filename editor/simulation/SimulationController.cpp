@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace throng::editor {
 
@@ -16,7 +17,27 @@ SimulationController::SimulationController(QObject* parent)
 
 SimulationController::~SimulationController()
 {
+    stopCacheReader();
     m_runner.stop();
+}
+
+void SimulationController::setCacheReader(std::function<void()> stop)
+{
+    m_cacheReader = std::move(stop);
+}
+
+void SimulationController::clearCacheReader()
+{
+    if (!m_cacheReader)
+        return;
+    m_cacheReader = {};
+    takeFrames();  // the runner notifies once until its frames are taken
+}
+
+void SimulationController::stopCacheReader()
+{
+    if (const std::function<void()> stop = std::exchange(m_cacheReader, {}))
+        stop();
 }
 
 void SimulationController::takeTiming(const sim::Scene& scene)
@@ -39,6 +60,7 @@ void SimulationController::applyEdit(const sim::Scene& scene, const SceneChange&
     // goes on with the scene it has, which simulates alike).
     if (m_hasScene && !change.simulationReads)
         return;
+    stopCacheReader();
     // Frames up to the shown one stay; the runner goes on from there with the edited scene
     // (or starts over when the edit cannot be resumed: the first batch then says so).
     const bool resume = m_hasScene && m_current > 0 && m_current < m_cache.frameCount();
@@ -70,6 +92,7 @@ void SimulationController::startOver(const sim::Scene& scene)
     // edit), so Play pressed just before the edit reached here still plays.
     const bool wasPlaying = m_playing;
     pause();
+    stopCacheReader();
     m_stepPending = false;
     m_seekTarget.reset();
     m_cache = {};
@@ -86,6 +109,8 @@ void SimulationController::startOver(const sim::Scene& scene)
 
 void SimulationController::takeFrames()
 {
+    if (m_cacheReader)
+        return;  // they wait in the runner until the reader is done (clearCacheReader)
     SimulationRunner::Batch batch = m_runner.takeFrames();
     if (!batch.error.empty()) {
         pause();

@@ -18,6 +18,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <functional>
 #include <optional>
 
 namespace throng::editor {
@@ -80,6 +81,14 @@ public:
     std::size_t totalFrames() const { return m_totalFrames; }
     double fps() const { return m_fps; }
     const sim::FrameCache& cache() const { return m_cache; }
+    // A reader of cache() on another thread (the Analysis dock's). While one is set, the
+    // cache stays as it is: frames the runner records wait in the runner, and before an
+    // edit or a new scene changes the recorded frames, `stop` is called, which returns once
+    // the reader no longer reads (the reader is then cleared). The destructor stops it too.
+    void setCacheReader(std::function<void()> stop);
+    // The reader is done: the frames that waited are taken. Nothing when none is set.
+    void clearCacheReader();
+    bool hasCacheReader() const { return static_cast<bool>(m_cacheReader); }
     double stepsPerSecond() const { return m_runner.stepsPerSecond(); }
     // The brain editor's live view: the simulation records agent `agent`'s (dense index)
     // brain node values with every frame it computes; -1 = nobody. Frames recorded before
@@ -128,10 +137,13 @@ private:
     void takeTiming(const sim::Scene& scene);
     // Drops every frame and runs `scene` from frame 0; playing goes on from there.
     void startOver(const sim::Scene& scene);
+    // Stops and clears the cache's reader, if one is set, before the cache changes.
+    void stopCacheReader();
 
     SimulationRunner m_runner;
     bool m_hasScene = false;
     sim::FrameCache m_cache;
+    std::function<void()> m_cacheReader;  // stops the reader of m_cache; empty = none
     std::vector<SimulationRunner::PickedBrainValues> m_brainValues;  // per recorded frame
     SteeringRecord m_steering;
     std::size_t m_runFrames = 0;  // frame index of the next frame the runner hands over

@@ -5,7 +5,9 @@
 // beside Messages opens on a click, Analyse measures the recorded run, and its figures
 // agree with a recount from the cache: every walker crossed the line forward, and the
 // exit's count. The flow chart plots the line, Save Report writes the HTML file, and an
-// edit that changes the run marks the analysis as stale.
+// edit that changes the run marks the analysis as stale. The analysis runs on a thread of
+// its own and Stop ends it; the recording holds still while it is read, and an edit stops
+// the reading before it changes the frames.
 #include "EditorTestSupport.h"
 #include "EditorUiDriver.h"
 #include "TestRegistry.h"
@@ -188,7 +190,15 @@ private slots:
         QVERIFY(status->text().contains("press Analyse"));
         auto* analyse = window.findChild<QPushButton*>("analyseButton");
         QTest::mouseClick(analyse, Qt::LeftButton);
+        // It measures on a thread of its own, with progress and Stop meanwhile.
+        QVERIFY(window.analysis().analysing());
+        QVERIFY(!analyse->isEnabled());
+        QVERIFY(window.findChild<QPushButton*>("stopAnalysisButton")->isVisible());
+        QTRY_VERIFY(!window.analysis().analysing());
         QVERIFY(window.analysis().analysis().has_value());
+        QVERIFY(analyse->isEnabled());
+        QVERIFY(!window.findChild<QPushButton*>("stopAnalysisButton")->isVisible());
+        QVERIFY(!window.simulation().hasCacheReader());
 
         // Recount: walkers past x = 12 between one frame and the next, and out at the end.
         int crossings = 0, out = 0;
@@ -255,6 +265,15 @@ private slots:
         QCOMPARE(stack->count(), steps + 1);
         QTRY_VERIFY(status->text().contains("changed"));
 
+        // Analysed again and stopped at once with Stop: the buttons come back, the
+        // recording is free, and an analysis is shown (the one before, or this one if it
+        // finished first).
+        QTest::mouseClick(analyse, Qt::LeftButton);
+        QTest::mouseClick(window.findChild<QPushButton*>("stopAnalysisButton"), Qt::LeftButton);
+        QVERIFY(!window.analysis().analysing());
+        QVERIFY(analyse->isEnabled() && !window.simulation().hasCacheReader());
+        QVERIFY(window.analysis().analysis().has_value());
+
         // Another scene (the edit taken back first: nothing to save): the last one's
         // analysis goes.
         undo(window);
@@ -263,6 +282,49 @@ private slots:
         QVERIFY(!window.analysis().analysis().has_value());
         QCOMPARE(figures->topLevelItemCount(), 0);
         QVERIFY(!window.findChild<QPushButton*>("saveReportButton")->isEnabled());
+    }
+
+    // The dock reads the recording in place on a thread of its own. While a reader is set,
+    // the frames the simulation records wait (playing goes on recording into the runner),
+    // and they come once it is done; an edit the run reads stops the reader before it
+    // drops any frame.
+    void theRecordingHoldsStillWhileItIsRead()
+    {
+        MainWindow window;
+        QByteArray yaml = kCorridor;
+        yaml.replace("duration: 30", "duration: 600");
+        QVERIFY(showWithYaml(window, m_dir, "held.yaml", yaml));
+        SimulationController& sim = window.simulation();
+        QVERIFY(clickButton(window, "playButton"));
+        QTRY_VERIFY(sim.recordedFrames() > 24);
+        int stops = 0;
+        std::size_t framesAtStop = 0;
+        auto reader = [&] {
+            ++stops;
+            framesAtStop = sim.recordedFrames();
+        };
+        sim.setCacheReader(reader);
+        const std::size_t held = sim.recordedFrames();
+        QTest::qWait(400);
+        QCOMPARE(sim.recordedFrames(), held);
+        sim.clearCacheReader();
+        QTRY_VERIFY(sim.recordedFrames() > held);
+        QCOMPARE(stops, 0);
+        clickButton(window, "playButton");  // pause
+        QTRY_VERIFY(!sim.isPlaying());
+
+        // Dragging the exit with the mouse: the reader is stopped with every frame still there.
+        sim.setCacheReader(reader);
+        const std::size_t before = sim.recordedFrames();
+        window.viewport().setFocus();
+        QTest::keyClick(&window.viewport(), Qt::Key_Q);
+        QTRY_VERIFY(window.findChild<QAction*>("selectAction")->isChecked());
+        clickOnGround(window, {20, 0});
+        QCOMPARE(window.document().selection(), (Selection{{ItemKind::Goal, 0}}));
+        dragOnGround(window, {{20, 0}, {19, 0}, {18, -1}});
+        QTRY_COMPARE(stops, 1);
+        QCOMPARE(framesAtStop, before);
+        QVERIFY(!sim.hasCacheReader());
     }
 };
 
