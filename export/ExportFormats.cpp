@@ -50,6 +50,18 @@ ExportResult writeTextCache(const sim::Scene&, const sim::FrameCache& cache, con
     return writeAgentTextCache(cache, directory, progress);
 }
 
+// The text cache for Maya (docs/export.md, Maya): +Z forward unless asked otherwise, and the
+// manifest resources/maya/throngCrowd.mel reads.
+ExportResult writeMayaCache(const sim::Scene& scene, const sim::FrameCache& cache, const ExportRequest& request,
+                            const ProgressFn& progress)
+{
+    (void)scene;
+    std::string directory = request.path;
+    while (directory.size() > 1 && directory.back() == '/')
+        directory.pop_back();
+    return writeAgentTextCache(cache, directory, progress, {.forward = request.mayaForward, .manifest = true});
+}
+
 std::string lowerCase(std::string text)
 {
     std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return char(std::tolower(c)); });
@@ -76,6 +88,11 @@ const std::vector<ExportFormat>& exportFormats()
          .suffixes = {},
          .writesDirectory = true,
          .write = writeTextCache},
+        {.key = "maya-cache",
+         .label = "Maya per-agent cache and manifest (a directory; +Z forward)",
+         .suffixes = {},
+         .writesDirectory = true,
+         .write = writeMayaCache},
     };
     return formats;
 }
@@ -119,7 +136,8 @@ std::string knownPathForms()
 {
     std::string text;
     for (const ExportFormat& f : exportFormats())
-        text += (text.empty() ? "" : ", ") + pathForms(f);
+        if (formatForPath(f.writesDirectory ? "d/" : "d" + f.suffixes.front()) == &f)  // one DIR/
+            text += (text.empty() ? "" : ", ") + pathForms(f);
     return text;
 }
 

@@ -3,6 +3,7 @@
 // a label, the path forms it accepts and one writer with a signature shared by all.
 // Adding a format is one row here; the table never simulates and holds no state.
 
+#include "export/AgentTextCache.h"
 #include "export/ExportResult.h"
 #include "export/character/Character.h"
 #include "simcore/scene/Scene.h"
@@ -30,6 +31,7 @@ struct ExportRequest {
     int jointFrameStep = 1;             // skinned characters, exact bake: joints every N-th frame, >= 1
     Lod lod = Lod::Near;                // built-in characters: how fine their meshes are
     bool indentedText = false;          // structured text (glTF JSON): indented for reading
+    ForwardAxis mayaForward = ForwardAxis::PlusZ;  // the Maya cache: the axis its rigs face at rotY 0
 };
 
 // Every format's writer. Writes `request.path` from the recorded frames, atomically:
@@ -50,13 +52,14 @@ struct ExportFormat {
 const std::vector<ExportFormat>& exportFormats();
 
 // The format whose suffix `path` ends with (case-insensitive), or, for a path ending in
-// '/', the first format that writes a directory. nullptr when none.
+// '/', the first format that writes a directory (the text cache; the others are chosen by
+// key: the CLI's --maya-cache, the editor's format list). nullptr when none.
 const ExportFormat* formatForPath(const std::string& path);
 const ExportFormat* formatByKey(const std::string& key);
 
 // How a path names `format`: ".glb, .gltf" or "DIR/".
 std::string pathForms(const ExportFormat& format);
-// Every format's path forms, in table order: ".glb, .gltf, .csv, DIR/".
+// The path forms formatForPath knows, in table order: ".glb, .gltf, .csv, .txt, DIR/".
 std::string knownPathForms();
 
 }  // namespace throng::exporting

@@ -22,11 +22,14 @@ std::string unknownFormat(const std::string& path)
            exporting::knownPathForms() + ")";
 }
 
-// "                                .glb, .gltf  glTF 2.0 ...\n", a line per format.
+// "                                .glb, .gltf  glTF 2.0 ...\n", a line per format --export
+// reaches by its path (the Maya cache has its own option).
 std::string formatLines()
 {
     std::string text;
     for (const exporting::ExportFormat& f : exporting::exportFormats()) {
+        if (f.writesDirectory && exporting::formatForPath("d/") != &f)
+            continue;
         std::string forms = exporting::pathForms(f);
         forms.resize(std::max<std::size_t>(forms.size() + 1, 13), ' ');
         text += "                                " + forms + f.label + "\n";
@@ -60,6 +63,11 @@ std::string usageText()
            "      --export-joint-step N   glTF, exact: bake joints every N-th frame (default 1)\n"
            "      --export-lod near|mid|far  glTF: the built-in characters' detail (default near,\n"
            "                              about 6,600 triangles a body; mid 2,300; far 1,000)\n"
+           "      --maya-cache DIR        write the " +
+           exporting::formatByKey("maya-cache")->label +
+           ":\n"
+           "                              for resources/maya/throngCrowd.mel (docs/export.md)\n"
+           "      --maya-forward z|x      the Maya cache: the axis the rigs face at rotY 0 (default z)\n"
            "  bench [--agents N] [--steps S] [--scenario flock|cross|cross-brain|army|corridor] [--threads T]\n"
            "                              run a built-in scenario and print figures as JSON\n"
            "  validate [DIR] [--json]     run the RiMEA tests (docs/validation.md) on the scenes in DIR\n"
@@ -145,6 +153,13 @@ ParseOutcome parseArguments(const std::vector<std::string>& argv)
         else if (arg == "--export-mode") {
             if (value(a.exportMode) && a.exportMode != "exact" && a.exportMode != "compact")
                 out.error = "--export-mode is exact or compact, got '" + a.exportMode + "'";
+        } else if (arg == "--maya-cache") {
+            std::string path;
+            if (value(path))
+                addOutput("maya-cache", path, exporting::formatByKey("maya-cache"));
+        } else if (arg == "--maya-forward") {
+            if (value(a.mayaForward) && a.mayaForward != "z" && a.mayaForward != "x")
+                out.error = "--maya-forward is z or x, got '" + a.mayaForward + "'";
         } else if (arg == "--export-lod") {
             exporting::Lod lod{};
             if (value(a.exportLod) && !exporting::lodFromName(a.exportLod, lod))
@@ -186,8 +201,8 @@ ParseOutcome parseArguments(const std::vector<std::string>& argv)
     }
     if (out.error.empty() && a.command != "run" &&
         (!a.statsPath.empty() || !a.reportPath.empty() || !a.exports.empty() || a.frames ||
-         !a.exportMode.empty() || a.exportJointStep || !a.exportLod.empty()))
-        out.error = "--frames, --stats, --report, --trajectories and --export options belong to 'run'";
+         !a.exportMode.empty() || a.exportJointStep || !a.exportLod.empty() || !a.mayaForward.empty()))
+        out.error = "--frames, --stats, --report, --trajectories, --export and --maya options belong to 'run'";
     return out;
 }
 

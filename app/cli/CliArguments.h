@@ -11,7 +11,8 @@
 
 namespace throng::cli {
 
-// One recorded output of `run`: --export PATH, or --trajectories PATH (the CSV format).
+// One recorded output of `run`: --export PATH, --trajectories PATH (the CSV format) or
+// --maya-cache DIR (the Maya cache).
 struct ExportOutput {
     std::string flag;                                // "export" or "trajectories": says where it went
     std::string path;
@@ -29,6 +30,7 @@ struct CliArguments {
     std::string exportMode;                        // exact | compact; empty = exact
     std::optional<std::uint64_t> exportJointStep;  // >= 1
     std::string exportLod;                         // near | mid | far; empty = near
+    std::string mayaForward;                       // z | x; empty = z (the Maya cache's rigs)
     bool quiet = false;
     bool json = false;  // check: diagnostics as JSON lines; validate: a JSON line per test
 };

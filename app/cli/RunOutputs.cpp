@@ -34,6 +34,7 @@ bool writeRunOutputs(const CliArguments& args, const sim::Scene& scene, const si
         request.jointFrameStep = static_cast<int>(*args.exportJointStep);
     if (!args.exportLod.empty())
         exporting::lodFromName(args.exportLod, request.lod);
+    request.mayaForward = args.mayaForward == "x" ? exporting::ForwardAxis::PlusX : exporting::ForwardAxis::PlusZ;
     for (const ExportOutput& output : args.exports) {
         request.path = output.path;
         const exporting::ExportResult r = output.format->write(scene, cache, request, {});

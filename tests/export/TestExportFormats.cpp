@@ -13,6 +13,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <cmath>
 #include <set>
 
 using namespace throng;
@@ -63,8 +64,10 @@ private slots:
             }
             QCOMPARE(exporting::formatByKey(f.key), &f);
         }
-        // A trailing '/' names the directory format: a second one would need a key to choose it.
-        QVERIFY(directories <= 1);
+        // A trailing '/' names the first directory format (the text cache); the Maya cache,
+        // a second one, is chosen by its key.
+        QCOMPARE(directories, 2);
+        QCOMPARE(exporting::formatForPath("x/"), exporting::formatByKey("text-cache"));
     }
 
     void formatForPathGoesBySuffix()
@@ -128,6 +131,25 @@ private slots:
                 QCOMPARE(first[4].toFloat(), a.position.y);
                 QCOMPARE(result.writtenPaths.size(), std::size_t(2));
                 QVERIFY(readLines(dir.filePath("out.wkt")).first().startsWith("GEOMETRYCOLLECTION (POLYGON (("));
+            } else if (f.key == "maya-cache") {
+                // The text cache's files with rotY for rigs facing +Z (heading + 90), and the
+                // manifest a script reads: the rate, the frames, each agent's file.
+                const QString out = dir.filePath("out");
+                QCOMPARE(entries(out),
+                         (QStringList{"agent_1000.txt", "agent_42.txt", "agent_7.txt", "throng_cache.txt"}));
+                const QStringList manifest = readLines(QDir(out).filePath("throng_cache.txt"));
+                QVERIFY(manifest.contains("fps 24") && manifest.contains("frames 49") && manifest.contains("forward +z"));
+                QVERIFY(manifest.contains("agent 42 agent_42.txt 0 49"));
+                const QStringList first = readLines(QDir(out).filePath("agent_42.txt")).first().split(' ');
+                const double heading = double(fx.cache.at(0, 1).headingRad) * 180.0 / 3.14159265358979;
+                QVERIFY2(std::abs(first[3].toDouble() - (heading + 90.0)) < 1e-3, qPrintable(first.join(' ')));
+                request.mayaForward = exporting::ForwardAxis::PlusX;
+                QTemporaryDir plain;
+                request.path = (plain.filePath("out") + '/').toStdString();
+                QVERIFY(f.write(fx.scene, fx.cache, request, {}).ok());
+                const QStringList asX = readLines(QDir(plain.filePath("out")).filePath("agent_42.txt")).first().split(' ');
+                QVERIFY2(std::abs(asX[3].toDouble() - heading) < 1e-3, qPrintable(asX.join(' ')));
+                QVERIFY(readLines(QDir(plain.filePath("out")).filePath("throng_cache.txt")).contains("forward +x"));
             } else if (f.key == "text-cache") {
                 const QString out = dir.filePath("out");
                 QCOMPARE(entries(out), (QStringList{"agent_1000.txt", "agent_42.txt", "agent_7.txt"}));
