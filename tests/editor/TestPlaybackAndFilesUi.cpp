@@ -195,6 +195,19 @@ private slots:
             QVERIFY2(f.startsWith("agent_") && f.endsWith(".txt"), qPrintable(f));
         format->setCurrentIndex(format->findData(QStringLiteral("csv")));
         QCOMPARE(path->text(), m_dir.filePath("caches/shot1.csv"));
+
+        // The Maya cache: the same files, rotY for rigs facing +Z, and its manifest.
+        format->setCurrentIndex(format->findData(QStringLiteral("maya-cache")));
+        const QString maya = m_dir.filePath("caches/maya1");
+        path->setText(maya);
+        QTest::mouseClick(dialog->findChild<QPushButton*>("exportButton"), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(!dialog->isBusy(), 60000);
+        QVERIFY2(dialog->outcome().startsWith("Wrote"), qPrintable(dialog->outcome()));
+        QCOMPARE(QDir(maya).entryList(QDir::Files).size(), files.size() + 1);
+        QFile manifest(QDir(maya).filePath("throng_cache.txt"));
+        QVERIFY(manifest.open(QIODevice::ReadOnly));
+        const QByteArray text = manifest.readAll();
+        QVERIFY2(text.contains("\nframes 5\n") && text.contains("\nforward +z\n"), text.constData());
     }
 
     void unsavedChangesAreAskedAbout()
