@@ -285,18 +285,17 @@ private slots:
     }
 
     // The dock reads the recording in place on a thread of its own. While a reader is set,
-    // the frames the simulation records wait (playing goes on recording into the runner),
+    // the frames the simulation records wait (a Step computes its frame into the runner),
     // and they come once it is done; an edit the run reads stops the reader before it
     // drops any frame.
     void theRecordingHoldsStillWhileItIsRead()
     {
         MainWindow window;
-        QByteArray yaml = kCorridor;
-        yaml.replace("duration: 30", "duration: 600");
-        QVERIFY(showWithYaml(window, m_dir, "held.yaml", yaml));
+        QVERIFY(showWithYaml(window, m_dir, "held.yaml", kCorridor));
         SimulationController& sim = window.simulation();
-        QVERIFY(clickButton(window, "playButton"));
-        QTRY_VERIFY(sim.recordedFrames() > 24);
+        QTRY_VERIFY(sim.recordedFrames() >= 1);
+        QTest::qWait(200);  // paused at frame 0: nothing more is computed
+        const std::size_t held = sim.recordedFrames();
         int stops = 0;
         std::size_t framesAtStop = 0;
         auto reader = [&] {
@@ -304,14 +303,15 @@ private slots:
             framesAtStop = sim.recordedFrames();
         };
         sim.setCacheReader(reader);
-        const std::size_t held = sim.recordedFrames();
-        QTest::qWait(400);
+        window.viewport().setFocus();
+        QTest::keyClick(&window.viewport(), Qt::Key_Period);  // Step
+        QTest::qWait(500);
         QCOMPARE(sim.recordedFrames(), held);
+        QCOMPARE(sim.currentFrame(), std::size_t(0));
         sim.clearCacheReader();
-        QTRY_VERIFY(sim.recordedFrames() > held);
+        QTRY_COMPARE(sim.recordedFrames(), held + 1);
+        QTRY_COMPARE(sim.currentFrame(), held);
         QCOMPARE(stops, 0);
-        clickButton(window, "playButton");  // pause
-        QTRY_VERIFY(!sim.isPlaying());
 
         // Dragging the exit with the mouse: the reader is stopped with every frame still there.
         sim.setCacheReader(reader);
