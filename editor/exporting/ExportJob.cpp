@@ -7,7 +7,7 @@ namespace throng::editor {
 sim::FrameCache sliceFrames(const sim::FrameCache& cache, std::size_t first, std::size_t last)
 {
     sim::FrameCache out;
-    out.reset(cache.agents(), cache.fps());
+    out.reset(cache.agents(), cache.fps(), cache.origin());  // a far scene's frames stay relative to it
     const std::size_t end = std::min(last + 1, cache.frameCount());
     for (std::size_t f = first; f < end; ++f)
         out.append(cache.frame(f));
