@@ -25,6 +25,8 @@ ExportResult writeGltf(const sim::Scene& scene, const sim::FrameCache& cache, co
     options.lod = request.lod;
     options.prettyJson = request.indentedText;
     options.threads = request.threads;
+    options.includeSet = request.includeSet;
+    options.firstFrame = request.firstFrame;
     return exportGltf(scene, cache, options, progress);
 }
 
@@ -77,6 +79,7 @@ const std::vector<ExportFormat>& exportFormats()
          .label = "glTF 2.0 animated crowd (.glb, or .gltf + .bin)",
          .suffixes = {".glb", ".gltf"},
          .readsIndentedText = true,
+         .writesSet = true,
          .write = writeGltf},
         {.key = "csv", .label = "Trajectories CSV (.csv)", .suffixes = {".csv"}, .write = writeCsv},
         {.key = "pedpy",

@@ -32,6 +32,9 @@ struct ExportRequest {
     Lod lod = Lod::Near;                // built-in characters: how fine their meshes are
     bool indentedText = false;          // structured text (glTF JSON): indented for reading
     ForwardAxis mayaForward = ForwardAxis::PlusZ;  // the Maya cache: the axis its rigs face at rotY 0
+    bool includeSet = true;             // glTF: the set (ground, lanes, walls, obstacles, lights) too
+    std::size_t firstFrame = 0;         // the recording's frame the cache begins with (an export of a
+                                        // range): the set's traffic lights keep the recording's time
 };
 
 // Every format's writer. Writes `request.path` from the recorded frames, atomically:
@@ -45,6 +48,7 @@ struct ExportFormat {
     std::vector<std::string> suffixes;  // lower case, with the dot; the first is the default; empty for a directory
     bool writesDirectory = false;       // the path is a directory the format fills
     bool readsIndentedText = false;     // honours ExportRequest::indentedText
+    bool writesSet = false;             // honours ExportRequest::includeSet
     FormatWriter write = nullptr;
 };
 

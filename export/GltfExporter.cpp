@@ -8,6 +8,7 @@
 #include "export/detail/CompactBake.h"
 #include "export/detail/ExactBake.h"
 #include "export/detail/GltfBuilder.h"
+#include "export/detail/SetNodes.h"
 #include "export/detail/GltfFiles.h"
 #include "export/detail/KeyReduction.h"
 #include "simcore/base/ThreadTeam.h"
@@ -62,6 +63,7 @@ tinygltf::Value runExtras(const sim::FrameCache& cache, const GltfOptions& optio
     extras["mode"] = tinygltf::Value(std::string(options.mode == GltfMode::Exact ? "exact" : "compact"));
     extras["seed"] = tinygltf::Value(std::to_string(seed));
     extras["jointFrameStep"] = tinygltf::Value(options.jointFrameStep);
+    extras["set"] = tinygltf::Value(options.includeSet);
     return tinygltf::Value(std::move(extras));
 }
 
@@ -402,6 +404,11 @@ ExportResult exportGltf(const sim::Scene& scene, const sim::FrameCache& cache, c
             else
                 detail::writeJoints(channels, jointClock, w.joints, rig);
         }
+    }
+    if (options.includeSet) {
+        builder.setUse(detail::GltfBuilder::Use::Geometry);
+        detail::addSetNodes(builder, channels, scene, glm::dvec2(cache.origin().x, cache.origin().z), frameClock, fps,
+                            options.firstFrame);
     }
     builder.endAnimationData();
     moveRootsToOrigin(model, cache.origin());

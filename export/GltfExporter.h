@@ -32,6 +32,9 @@ struct GltfOptions {
     float rootRotationToleranceDeg = 0.05f;
     bool prettyJson = false;             // .gltf only: indented JSON
     int threads = 0;                     // agents prepared on this many threads; 0 = one per core
+    bool includeSet = true;              // the set too: ground, lanes, crosswalks, walls, obstacles, lights
+    std::size_t firstFrame = 0;          // the recording's frame the cache begins with: the lights' phases
+                                         // on the cache's frame f are those of frame firstFrame + f
 };
 
 // Where an export's bytes went (binary buffer only; the JSON is the file's remainder).
@@ -53,7 +56,13 @@ struct GltfExportStats {
 // it wears, each with its slot's material: the tint on the top, palette colours on skin,
 // hair, clothes and accessories) and skin. One animation,
 // "crowd". Rotations are normalised int16. Asset and scene extras carry generator
-// "Throng", fps, frameCount, agentCount, mode, seed; each root's extras its variation.
+// "Throng", fps, frameCount, agentCount, mode, seed, set; each root's extras its variation.
+// With includeSet, a scene-root node `set` holds the set as the editor's 3D view stands it
+// up, a child per part: `set_ground` (the bounds, on the terrain), `set_lanes`,
+// `set_crosswalks`, `set_walls` (extruded to their height, 0.2 m thick), `set_obstacles`
+// (1 m high) and `set_lights` (poles and heads, every lamp dark), and per light and lamp a
+// node `set_lamp_<light>_<red|yellow|green>` whose STEP scale is 1 on the frames the light's
+// phase lights it and 0 otherwise (docs/export.md, The set).
 // writtenPaths: {path} for .glb, {path, <stem>.bin} for .gltf (the .bin name keeps only
 // [A-Za-z0-9._~-], others become '_'). Errors name the file: empty cache, an agent type
 // index the scene lacks, a character that cannot be built or loaded, a .glb over 4 GiB,

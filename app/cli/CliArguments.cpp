@@ -63,6 +63,8 @@ std::string usageText()
            "      --export-joint-step N   glTF, exact: bake joints every N-th frame (default 1)\n"
            "      --export-lod near|mid|far  glTF: the built-in characters' detail (default near,\n"
            "                              about 6,600 triangles a body; mid 2,300; far 1,000)\n"
+           "      --no-set                glTF: the crowd alone, without the set (ground, lanes,\n"
+           "                              crosswalks, walls, obstacles, traffic lights)\n"
            "      --maya-cache DIR        write the " +
            exporting::formatByKey("maya-cache")->label +
            ":\n"
@@ -124,6 +126,7 @@ ParseOutcome parseArguments(const std::vector<std::string>& argv)
         }
         if (arg == "--quiet" || arg == "-q") a.quiet = true;
         else if (arg == "--json") a.json = true;
+        else if (arg == "--no-set") a.noSet = true;
         else if (arg == "--frames") count(a.frames, true);
         else if (arg == "--seed") count(a.seed, true);
         else if (arg == "--agents") count(a.agents, false);
@@ -201,7 +204,8 @@ ParseOutcome parseArguments(const std::vector<std::string>& argv)
     }
     if (out.error.empty() && a.command != "run" &&
         (!a.statsPath.empty() || !a.reportPath.empty() || !a.exports.empty() || a.frames ||
-         !a.exportMode.empty() || a.exportJointStep || !a.exportLod.empty() || !a.mayaForward.empty()))
+         !a.exportMode.empty() || a.exportJointStep || !a.exportLod.empty() || !a.mayaForward.empty() ||
+         a.noSet))
         out.error = "--frames, --stats, --report, --trajectories, --export and --maya options belong to 'run'";
     return out;
 }

@@ -31,6 +31,7 @@ struct CliArguments {
     std::optional<std::uint64_t> exportJointStep;  // >= 1
     std::string exportLod;                         // near | mid | far; empty = near
     std::string mayaForward;                       // z | x; empty = z (the Maya cache's rigs)
+    bool noSet = false;                            // glTF: leave the set out
     bool quiet = false;
     bool json = false;  // check: diagnostics as JSON lines; validate: a JSON line per test
 };

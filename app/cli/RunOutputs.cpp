@@ -35,6 +35,7 @@ bool writeRunOutputs(const CliArguments& args, const sim::Scene& scene, const si
     if (!args.exportLod.empty())
         exporting::lodFromName(args.exportLod, request.lod);
     request.mayaForward = args.mayaForward == "x" ? exporting::ForwardAxis::PlusX : exporting::ForwardAxis::PlusZ;
+    request.includeSet = !args.noSet;
     for (const ExportOutput& output : args.exports) {
         request.path = output.path;
         const exporting::ExportResult r = output.format->write(scene, cache, request, {});

@@ -76,7 +76,15 @@ ExportDialog::ExportDialog(SceneDocument& document, SimulationController& simula
     form->addRow(tr("Frames"), range);
     m_pretty = new QCheckBox(tr("Indented JSON (.gltf)"), this);
     m_pretty->setChecked(true);
-    form->addRow(tr("Options"), m_pretty);
+    m_set = new QCheckBox(tr("The set: ground, lanes, crosswalks, walls, obstacles, lights"), this);
+    m_set->setObjectName("exportSet");
+    m_set->setChecked(true);
+    m_set->setToolTip(tr("Write the set with the crowd, as the 3D view stands it up, each traffic light's lamps lit "
+                         "with its phase; clear it for the crowd alone (throng-cli --no-set)"));
+    auto* options = new QVBoxLayout;
+    options->addWidget(m_pretty);
+    options->addWidget(m_set);
+    form->addRow(tr("Options"), options);
 
     m_progress = new QProgressBar(this);
     m_progress->setObjectName("exportProgress");
@@ -135,6 +143,7 @@ void ExportDialog::formatChanged()
     else if (std::find(f.suffixes.begin(), f.suffixes.end(), suffix) == f.suffixes.end())
         m_path->setText(stem + QString::fromStdString(f.suffixes.front()));
     m_pretty->setEnabled(f.readsIndentedText);
+    m_set->setEnabled(f.writesSet);
 }
 
 void ExportDialog::browse()
@@ -156,8 +165,10 @@ ExportJobRequest ExportDialog::request() const
     if (!m_document.filePath().isEmpty())
         r.output.sceneDirectory = QFileInfo(m_document.filePath()).absolutePath().toStdString();
     r.output.indentedText = m_pretty->isChecked();
+    r.output.includeSet = m_set->isChecked();
     r.firstFrame = std::size_t(std::min(m_first->value(), m_last->value()));
     r.lastFrame = std::size_t(std::max(m_first->value(), m_last->value()));
+    r.output.firstFrame = r.firstFrame;  // the lights keep the recording's time
     return r;
 }
 

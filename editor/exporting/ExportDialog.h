@@ -57,6 +57,7 @@ private:
     QSpinBox* m_first = nullptr;
     QSpinBox* m_last = nullptr;
     QCheckBox* m_pretty = nullptr;
+    QCheckBox* m_set = nullptr;
     QProgressBar* m_progress = nullptr;
     QLabel* m_status = nullptr;
     QPushButton* m_export = nullptr;

@@ -55,19 +55,19 @@ bool SolidRenderer::initialize(QOpenGLFunctions_3_3_Core& gl)
     gl.glGenBuffers(1, &m_vbo);
     gl.glBindVertexArray(m_vao);
     gl.glBindBuffer(GL_ARRAY_BUFFER, m_vbo);
-    constexpr GLsizei stride = sizeof(SolidVertex);
+    constexpr GLsizei stride = sizeof(exporting::SolidVertex);
     gl.glEnableVertexAttribArray(0);
     gl.glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride,
-                             reinterpret_cast<const void*>(offsetof(SolidVertex, position)));
+                             reinterpret_cast<const void*>(offsetof(exporting::SolidVertex, position)));
     gl.glEnableVertexAttribArray(1);
     gl.glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride,
-                             reinterpret_cast<const void*>(offsetof(SolidVertex, normal)));
+                             reinterpret_cast<const void*>(offsetof(exporting::SolidVertex, normal)));
     gl.glEnableVertexAttribArray(2);
     gl.glVertexAttribPointer(2, 4, GL_FLOAT, GL_FALSE, stride,
-                             reinterpret_cast<const void*>(offsetof(SolidVertex, colour)));
+                             reinterpret_cast<const void*>(offsetof(exporting::SolidVertex, colour)));
     gl.glEnableVertexAttribArray(3);
     gl.glVertexAttribPointer(3, 1, GL_FLOAT, GL_FALSE, stride,
-                             reinterpret_cast<const void*>(offsetof(SolidVertex, glow)));
+                             reinterpret_cast<const void*>(offsetof(exporting::SolidVertex, glow)));
     gl.glBindVertexArray(0);
     return true;
 }
@@ -81,13 +81,13 @@ void SolidRenderer::destroy(QOpenGLFunctions_3_3_Core& gl)
     m_program.reset();
 }
 
-void SolidRenderer::upload(QOpenGLFunctions_3_3_Core& gl, const SolidMesh& mesh)
+void SolidRenderer::upload(QOpenGLFunctions_3_3_Core& gl, const exporting::SolidMesh& mesh)
 {
     if (!m_program)
         return;
     const auto& vertices = mesh.vertices();
     gl.glBindBuffer(GL_ARRAY_BUFFER, m_vbo);
-    gl.glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices.size() * sizeof(SolidVertex)), vertices.data(),
+    gl.glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices.size() * sizeof(exporting::SolidVertex)), vertices.data(),
                     GL_STATIC_DRAW);
     m_vertexCount = int(vertices.size());
 }

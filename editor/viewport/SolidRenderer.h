@@ -5,7 +5,7 @@
 // never builds geometry itself, and draws nothing in the top view.
 
 #include "editor/viewport/RenderView.h"
-#include "editor/viewport/SolidMesh.h"
+#include "export/set/SolidMesh.h"
 
 #include <QOpenGLShaderProgram>
 
@@ -20,7 +20,7 @@ public:
     bool initialize(QOpenGLFunctions_3_3_Core& gl);
     void destroy(QOpenGLFunctions_3_3_Core& gl);
     // Copies the mesh to the GPU (now, if the context is current and initialised).
-    void upload(QOpenGLFunctions_3_3_Core& gl, const SolidMesh& mesh);
+    void upload(QOpenGLFunctions_3_3_Core& gl, const exporting::SolidMesh& mesh);
     // Draws with the depth test as the caller set it up.
     void draw(QOpenGLFunctions_3_3_Core& gl, const RenderView& view);
 

@@ -2,7 +2,7 @@
 
 #include "editor/viewport/GroundRay.h"
 #include "editor/viewport/SetGeometryBuilder.h"
-#include "editor/viewport/SetSolids.h"
+#include "export/set/SetSolids.h"
 #include "editor/viewport/ToolOverlay.h"
 #include "editor/viewport/TrailBuilder.h"
 #include "editor/viewport/ViewportPalette.h"
@@ -172,7 +172,7 @@ void Viewport::setSet(const sim::Scene& scene)
     m_setMesh.clear();
     SetGeometryBuilder::addSet(scene, m_setMesh);
     m_solidMesh.clear();
-    SetSolids::addSet(scene, m_solidMesh);
+    exporting::SetSolids::addSet(scene, m_solidMesh);
     m_setChanged = true;
     m_traffic = {};
     m_traffic.lanes = scene.lanes;
@@ -289,7 +289,7 @@ void Viewport::rebuildLights()
     m_lightMesh.clear();
     SetGeometryBuilder::addLights(m_traffic, m_timeS, m_lightMesh);
     m_lampMesh.clear();
-    SetSolids::addLamps(m_traffic.trafficLights, m_terrain, m_timeS, m_lampMesh);
+    exporting::SetSolids::addLamps(m_traffic.trafficLights, m_terrain, m_timeS, m_lampMesh);
     m_lightsChanged = true;
 }
 

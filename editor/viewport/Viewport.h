@@ -201,7 +201,7 @@ private:
     ShapeMesh m_lightMesh;
     ShapeMesh m_highlightMesh;
     OverlayLayers m_layers;  // trails, steering, fields and density, and what is on
-    SolidMesh m_solidMesh, m_lampMesh;
+    exporting::SolidMesh m_solidMesh, m_lampMesh;
     SelectionMarks m_marks;
     ShownAgents m_shown;  // the shown frame's agents, by World index
     std::vector<AgentGlyph> m_glyphs;     // walkers

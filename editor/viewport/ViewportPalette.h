@@ -2,6 +2,8 @@
 // The viewport's colours in one place (linear 0..1 RGBA, drawn without lighting in the
 // top view), so renderers, the screenshot and the tests agree. Holds no GL state.
 
+#include "export/set/SetColours.h"
+
 #include <glm/vec4.hpp>
 
 #include <cstddef>
@@ -9,30 +11,30 @@
 namespace throng::editor::palette {
 
 inline constexpr glm::vec4 kBackground{0.145f, 0.153f, 0.165f, 1.0f};   // outside the world bounds
-inline constexpr glm::vec4 kGround{0.212f, 0.224f, 0.239f, 1.0f};       // inside the world bounds
+inline constexpr glm::vec4 kGround = exporting::setcolours::kGround;       // inside the world bounds
 inline constexpr glm::vec4 kGridMinor{0.290f, 0.302f, 0.322f, 1.0f};
 inline constexpr glm::vec4 kGridMajor{0.345f, 0.357f, 0.380f, 1.0f};
 inline constexpr glm::vec4 kBounds{0.560f, 0.580f, 0.610f, 1.0f};
-inline constexpr glm::vec4 kWall{0.925f, 0.890f, 0.800f, 1.0f};
+inline constexpr glm::vec4 kWall = exporting::setcolours::kWall;
 inline constexpr glm::vec4 kPathBand{0.224f, 0.290f, 0.380f, 1.0f};     // the radius band, opaque over the ground
 inline constexpr glm::vec4 kPathLine{0.420f, 0.650f, 1.000f, 1.0f};
 inline constexpr glm::vec4 kObstacleFill{0.455f, 0.404f, 0.349f, 1.0f};
 inline constexpr glm::vec4 kObstacleEdge{0.690f, 0.620f, 0.545f, 1.0f};
-inline constexpr glm::vec4 kObstacleSolid{0.640f, 0.570f, 0.490f, 1.0f};  // 3D view, lit
+inline constexpr glm::vec4 kObstacleSolid = exporting::setcolours::kObstacle;  // 3D view, lit
 inline constexpr glm::vec4 kGoal{0.380f, 0.850f, 0.560f, 1.0f};
 inline constexpr glm::vec4 kActionPoint{0.960f, 0.480f, 0.800f, 1.0f};
 inline constexpr glm::vec4 kSource{0.250f, 0.820f, 0.800f, 1.0f};
 inline constexpr glm::vec4 kMeasurement{0.330f, 0.560f, 1.000f, 1.0f};
-inline constexpr glm::vec4 kLane{0.165f, 0.173f, 0.184f, 1.0f};
+inline constexpr glm::vec4 kLane = exporting::setcolours::kLane;
 inline constexpr glm::vec4 kLaneEdge{0.420f, 0.435f, 0.455f, 1.0f};
-inline constexpr glm::vec4 kLaneCentre{0.860f, 0.760f, 0.330f, 1.0f};
-inline constexpr glm::vec4 kCrosswalkStripe{0.880f, 0.880f, 0.870f, 1.0f};
-inline constexpr glm::vec4 kLightHousing{0.080f, 0.085f, 0.090f, 1.0f};
-inline constexpr glm::vec4 kLightPole{0.420f, 0.440f, 0.460f, 1.0f};      // 3D view, lit
-inline constexpr glm::vec4 kLightGreen{0.240f, 0.860f, 0.420f, 1.0f};
-inline constexpr glm::vec4 kLightYellow{1.000f, 0.780f, 0.200f, 1.0f};
-inline constexpr glm::vec4 kLightRed{1.000f, 0.300f, 0.300f, 1.0f};
-inline constexpr glm::vec4 kLightUnknown{0.500f, 0.500f, 0.500f, 1.0f};
+inline constexpr glm::vec4 kLaneCentre = exporting::setcolours::kLaneCentre;
+inline constexpr glm::vec4 kCrosswalkStripe = exporting::setcolours::kCrosswalkStripe;
+inline constexpr glm::vec4 kLightHousing = exporting::setcolours::kLightHousing;
+inline constexpr glm::vec4 kLightPole = exporting::setcolours::kLightPole;  // 3D view, lit
+inline constexpr glm::vec4 kLightGreen = exporting::setcolours::kLightGreen;
+inline constexpr glm::vec4 kLightYellow = exporting::setcolours::kLightYellow;
+inline constexpr glm::vec4 kLightRed = exporting::setcolours::kLightRed;
+inline constexpr glm::vec4 kLightUnknown = exporting::setcolours::kLightUnknown;
 inline constexpr glm::vec4 kSpawnArea{0.700f, 0.700f, 0.720f, 1.0f};
 inline constexpr glm::vec4 kFlowStroke{0.560f, 0.470f, 0.800f, 1.0f};
 inline constexpr glm::vec4 kAgentNose{0.090f, 0.095f, 0.105f, 1.0f};

@@ -1,6 +1,6 @@
-#include "editor/viewport/SetSolids.h"
+#include "export/set/SetSolids.h"
 
-#include "editor/viewport/ViewportPalette.h"
+#include "export/set/SetColours.h"
 #include "simcore/scene/TerrainHeight.h"
 
 #include <glm/geometric.hpp>
@@ -10,28 +10,13 @@
 #include <array>
 #include <cmath>
 
-namespace throng::editor {
+namespace throng::exporting {
 
 namespace {
 
 constexpr int kPostSegments = 8;
-constexpr int kHeadSegments = 16;
 constexpr float kHeadRadiusM = 0.13f;
 constexpr float kVisorRadiusM = 0.22f, kVisorThicknessM = 0.03f;
-// A dark lamp keeps a trace of its colour, so the head reads red-yellow-green unlit too.
-constexpr float kDarkLampShade = 0.22f;
-constexpr std::array<sim::LightPhase, 3> kLamps{sim::LightPhase::Red, sim::LightPhase::Yellow,
-                                                sim::LightPhase::Green};
-
-glm::vec4 lampColour(sim::LightPhase lamp)
-{
-    switch (lamp) {
-    case sim::LightPhase::Green: return palette::kLightGreen;
-    case sim::LightPhase::Yellow: return palette::kLightYellow;
-    case sim::LightPhase::Red: return palette::kLightRed;
-    }
-    return palette::kLightUnknown;
-}
 
 float ground(const sim::Scene& scene, glm::vec2 p)
 {
@@ -44,6 +29,18 @@ int cylinderSegments(float radiusM)
 }
 
 }  // namespace
+
+// A dark lamp keeps a trace of its colour (kDarkLampShade), so the head reads red-yellow-
+// green unlit too.
+glm::vec4 SetSolids::lampColour(sim::LightPhase lamp)
+{
+    switch (lamp) {
+    case sim::LightPhase::Green: return setcolours::kLightGreen;
+    case sim::LightPhase::Yellow: return setcolours::kLightYellow;
+    case sim::LightPhase::Red: return setcolours::kLightRed;
+    }
+    return setcolours::kLightUnknown;
+}
 
 float SetSolids::lampHeightM(sim::LightPhase lamp)
 {
@@ -74,12 +71,12 @@ void SetSolids::addWalls(const sim::Scene& scene, SolidMesh& mesh)
             // On sloping terrain a segment stands from its lower end's ground to its
             // height above the higher end's: never floating, never shorter than asked.
             const float ya = ground(scene, a), yb = ground(scene, b);
-            mesh.addPrism(outline, std::min(ya, yb), std::max(ya, yb) + w.heightM, palette::kWall);
+            mesh.addPrism(outline, std::min(ya, yb), std::max(ya, yb) + w.heightM, setcolours::kWall);
         }
         // A post at each corner fills the gap the two segments leave outside it.
         for (std::size_t i = 1; i + 1 < w.points.size(); ++i) {
             const float y = ground(scene, w.points[i]);
-            mesh.addCylinder(w.points[i], half, kPostSegments, y, y + w.heightM, palette::kWall);
+            mesh.addCylinder(w.points[i], half, kPostSegments, y, y + w.heightM, setcolours::kWall);
         }
     }
 }
@@ -90,9 +87,9 @@ void SetSolids::addObstacles(const sim::Scene& scene, SolidMesh& mesh)
         const float y = ground(scene, o.center);
         if (o.shape == sim::ObstacleShape::Circle)
             mesh.addCylinder(o.center, o.radiusM, cylinderSegments(o.radiusM), y, y + kObstacleHeightM,
-                             palette::kObstacleSolid);
+                             setcolours::kObstacle);
         else
-            mesh.addBox(o.center, o.size, glm::radians(o.angleDeg), y, y + kObstacleHeightM, palette::kObstacleSolid);
+            mesh.addBox(o.center, o.size, glm::radians(o.angleDeg), y, y + kObstacleHeightM, setcolours::kObstacle);
     }
 }
 
@@ -101,13 +98,13 @@ void SetSolids::addLightPoles(const sim::Scene& scene, SolidMesh& mesh)
     for (const sim::TrafficLight& light : scene.trafficLights) {
         const glm::vec2 p = light.position;
         const float y = ground(scene, p);
-        mesh.addCylinder(p, kPoleRadiusM, kPostSegments, y, y + kHeadBottomM, palette::kLightPole);
-        mesh.addCylinder(p, kHeadRadiusM, kHeadSegments, y + kHeadBottomM, y + kHeadTopM, palette::kLightHousing,
+        mesh.addCylinder(p, kPoleRadiusM, kPostSegments, y, y + kHeadBottomM, setcolours::kLightPole);
+        mesh.addCylinder(p, kHeadRadiusM, kHeadSegments, y + kHeadBottomM, y + kHeadTopM, setcolours::kLightHousing,
                          true);
         // A visor over each lamp: the head reads as three lamps from any side.
         for (sim::LightPhase lamp : kLamps) {
             const float top = y + lampHeightM(lamp) + kLampHalfHeightM;
-            mesh.addCylinder(p, kVisorRadiusM, kHeadSegments, top, top + kVisorThicknessM, palette::kLightHousing,
+            mesh.addCylinder(p, kVisorRadiusM, kHeadSegments, top, top + kVisorThicknessM, setcolours::kLightHousing,
                              true);
         }
     }
@@ -130,4 +127,4 @@ void SetSolids::addLamps(std::span<const sim::TrafficLight> lights, const sim::T
     }
 }
 
-}  // namespace throng::editor
+}  // namespace throng::exporting

@@ -4,14 +4,15 @@
 // following the phase. Builds SolidMesh triangles from plain scene data; never touches
 // GL or the simulation, and adds nothing flat (SetGeometryBuilder draws the ground).
 
-#include "editor/viewport/SolidMesh.h"
+#include "export/set/SolidMesh.h"
 #include "simcore/scene/Scene.h"
 #include "simcore/traffic/LightPhase.h"
 
+#include <array>
 #include <optional>
 #include <span>
 
-namespace throng::editor {
+namespace throng::exporting {
 
 class SetSolids {
 public:
@@ -35,11 +36,18 @@ public:
                          std::optional<double> timeS, SolidMesh& mesh);
     // The height of a lamp's middle above the light's ground, m.
     static float lampHeightM(sim::LightPhase lamp);
+    // A lamp's colour when lit (dark lamps keep a trace of it).
+    static glm::vec4 lampColour(sim::LightPhase lamp);
+    // The three lamps of a head, red on top.
+    static constexpr std::array<sim::LightPhase, 3> kLamps{sim::LightPhase::Red, sim::LightPhase::Yellow,
+                                                           sim::LightPhase::Green};
+    static constexpr float kDarkLampShade = 0.22f;
+    static constexpr int kHeadSegments = 16;
 
-private:
+    // The parts addSet adds, one at a time (the glTF export names a node for each).
     static void addWalls(const sim::Scene& scene, SolidMesh& mesh);
     static void addObstacles(const sim::Scene& scene, SolidMesh& mesh);
     static void addLightPoles(const sim::Scene& scene, SolidMesh& mesh);
 };
 
-}  // namespace throng::editor
+}  // namespace throng::exporting

@@ -1,4 +1,4 @@
-#include "editor/viewport/SolidMesh.h"
+#include "export/set/SolidMesh.h"
 
 #include <glm/geometric.hpp>
 
@@ -6,7 +6,7 @@
 #include <cmath>
 #include <numbers>
 
-namespace throng::editor {
+namespace throng::exporting {
 
 void SolidMesh::push(glm::vec3 p, glm::vec3 normal, glm::vec4 colour, float glow)
 {
@@ -66,4 +66,26 @@ void SolidMesh::addBox(glm::vec2 centre, glm::vec2 size, float angleRad, float b
     addPrism(corners, bottomY, topY, colour);
 }
 
-}  // namespace throng::editor
+void SolidMesh::addSurface(std::span<const glm::vec3> polygon, glm::vec4 colour)
+{
+    for (std::size_t i = 1; i + 1 < polygon.size(); ++i) {
+        const glm::vec3 a = polygon[0], b = polygon[i], c = polygon[i + 1];
+        glm::vec3 n = glm::cross(b - a, c - a);
+        const float len = glm::length(n);
+        if (!(len > 0.0f))
+            continue;
+        n /= len;
+        // Up, and counter-clockwise seen from above (glTF's front face).
+        if (n.y < 0.0f) {
+            push(a, -n, colour, 0.0f);
+            push(c, -n, colour, 0.0f);
+            push(b, -n, colour, 0.0f);
+        } else {
+            push(a, n, colour, 0.0f);
+            push(b, n, colour, 0.0f);
+            push(c, n, colour, 0.0f);
+        }
+    }
+}
+
+}  // namespace throng::exporting

@@ -1,7 +1,8 @@
 #pragma once
 // Lit solids standing on the ground (upright prisms over a convex outline: boxes,
-// cylinders, wall segments) as a CPU triangle list with a normal and a colour per vertex,
-// for SolidRenderer. Knows nothing of scenes; owns no GL.
+// cylinders, wall segments) and flat surfaces on it, as a CPU triangle list with a normal
+// and a colour per vertex: the editor's 3D view draws it (SolidRenderer) and the glTF
+// export writes it. Knows nothing of scenes; owns no GL.
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -10,7 +11,7 @@
 #include <span>
 #include <vector>
 
-namespace throng::editor {
+namespace throng::exporting {
 
 struct SolidVertex {
     glm::vec3 position{0.0f};                // m
@@ -36,6 +37,9 @@ public:
     // A box of `size` (x, z extent) round `centre`, turned by `angleRad` about +y
     // (counter-clockwise seen from above, as scene headings and obstacle angles).
     void addBox(glm::vec2 centre, glm::vec2 size, float angleRad, float bottomY, float topY, glm::vec4 colour);
+    // A flat, upward-facing fan over a convex polygon of points (x, y, z): the ground, a
+    // lane, a crosswalk's bar. Each triangle's normal is its own, turned up.
+    void addSurface(std::span<const glm::vec3> polygon, glm::vec4 colour);
 
 private:
     void push(glm::vec3 p, glm::vec3 normal, glm::vec4 colour, float glow);
@@ -43,4 +47,4 @@ private:
     std::vector<SolidVertex> m_vertices;
 };
 
-}  // namespace throng::editor
+}  // namespace throng::exporting

@@ -119,6 +119,23 @@ private slots:
         QVERIFY2(r.err.find("belong to 'run'") != std::string::npos, r.err.c_str());
     }
 
+    // --no-set: the glTF of the crowd alone. kScene has bounds but no set beyond the ground.
+    void noSetLeavesTheSetOut()
+    {
+        QTemporaryDir tmp;
+        const std::string scene = throng::test::writeText(tmp.filePath("s.yaml"), kScene).toStdString();
+        const QString with = tmp.filePath("with.glb"), without = tmp.filePath("without.glb");
+        auto r = runCli({"run", scene, "--frames", "4", "--export", with.toStdString(), "--quiet"});
+        QCOMPARE(r.status, 0);
+        r = runCli({"run", scene, "--frames", "4", "--export", without.toStdString(), "--no-set", "--quiet"});
+        QCOMPARE(r.status, 0);
+        QVERIFY(readAll(with).contains("\"set_ground\""));
+        QVERIFY(!readAll(without).contains("\"set_"));
+        r = runCli({"check", scene, "--no-set"});
+        QCOMPARE(r.status, 2);
+        QVERIFY2(r.err.find("belong to 'run'") != std::string::npos, r.err.c_str());
+    }
+
     void exportBelongsToRun()
     {
         const auto r = runCli({"check", "s.yaml", "--export", "a.glb"});

@@ -13,6 +13,7 @@
 
 #include <glm/geometric.hpp>
 
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDir>
 #include <QFile>
@@ -151,6 +152,30 @@ private slots:
         QVERIFY(file.open(QIODevice::ReadOnly));
         QCOMPARE(file.read(4), QByteArray("glTF"));
         QVERIFY(file.size() > 10000);
+        // The set comes with the crowd unless its box is cleared.
+        const QByteArray withSet = file.readAll();
+        for (const char* node : {"\"set_ground\"", "\"set_lanes\"", "\"set_crosswalks\"", "\"set_lights\"",
+                                 "\"set_lamp_north_south_green\""})
+            QVERIFY2(withSet.contains(node), node);
+        auto* set = dialog->findChild<QCheckBox*>("exportSet");
+        QVERIFY(set->isChecked() && set->isEnabled());
+        QTest::mouseClick(set, Qt::LeftButton, {}, QPoint(8, set->height() / 2));
+        QVERIFY(!set->isChecked());
+        const QString bare = m_dir.filePath("bare.glb");
+        path->selectAll();
+        QTest::keyClicks(path, bare);
+        QTest::mouseClick(dialog->findChild<QPushButton*>("exportButton"), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(!dialog->isBusy(), 60000);
+        QVERIFY2(dialog->outcome().startsWith("Wrote"), qPrintable(dialog->outcome()));
+        QFile bareFile(bare);
+        QVERIFY(bareFile.open(QIODevice::ReadOnly));
+        const QByteArray without = bareFile.readAll();
+        QVERIFY(!without.contains("\"set_") && without.contains("\"agent_"));
+        QVERIFY(without.size() < withSet.size());
+        // Formats without a set grey the box out.
+        auto* format = dialog->findChild<QComboBox*>("exportFormat");
+        format->setCurrentIndex(format->findData(QStringLiteral("csv")));
+        QVERIFY(!set->isEnabled());
     }
 
     void exportCanBeCancelledAndLeavesNoFile()

@@ -5,7 +5,7 @@
 #include "ShowInitialState.h"
 #include "TestRegistry.h"
 
-#include "editor/viewport/SetSolids.h"
+#include "export/set/SetSolids.h"
 #include "editor/viewport/ViewportPalette.h"
 
 #include <QTest>
@@ -182,13 +182,13 @@ private slots:
         // Each lamp's face towards the camera.
         const glm::vec3 eye = viewport.renderView().eye;
         const glm::vec2 toEye = glm::normalize(glm::vec2(eye.x, eye.z) - light.position);
-        const glm::vec2 face = light.position + toEye * (0.9f * SetSolids::kLampRadiusM);
+        const glm::vec2 face = light.position + toEye * (0.9f * exporting::SetSolids::kLampRadiusM);
         const std::pair<sim::LightPhase, glm::vec4> lamps[] = {{sim::LightPhase::Red, palette::kLightRed},
                                                                {sim::LightPhase::Yellow, palette::kLightYellow},
                                                                {sim::LightPhase::Green, palette::kLightGreen}};
         for (const auto& [lamp, colour] : lamps) {
             const QRgb p = pixelAt(image, viewport,
-                                   viewport.worldToPixel({face.x, SetSolids::lampHeightM(lamp), face.y}));
+                                   viewport.worldToPixel({face.x, exporting::SetSolids::lampHeightM(lamp), face.y}));
             const QString what = describe(p) + QString(" for lamp %1").arg(int(lamp));
             if (int(lamp) == lit) {
                 QVERIFY2(sameColour(p, colour, 10), qPrintable(what));

@@ -73,7 +73,8 @@ private slots:
     }
 
     // Per agent: a root agent_<id>_<type> with its 17 joints under it, and a body node with
-    // the agent's own mesh entry and skin over geometry every agent of that look shares.
+    // the agent's own mesh entry and skin over geometry every agent of that look shares;
+    // besides them the set: a node `set` over the ground of the fixture's bounds.
     void format()
     {
         QFETCH(QString, name);
@@ -82,7 +83,9 @@ private slots:
         exportAndLoad(dir, name, model);
         if (QTest::currentTestFailed())
             return;
-        QCOMPARE(model.nodes.size(), std::size_t(3 * (1 + 17 + 1)));
+        QCOMPARE(model.nodes.size(), std::size_t(3 * (1 + 17 + 1) + 2));
+        QCOMPARE(model.nodes[std::size_t(test::nodeNamed(model, "set"))].children,
+                 std::vector<int>{test::nodeNamed(model, "set_ground")});
         const int n7 = test::nodeNamed(model, "agent_7_walker");
         const int n42 = test::nodeNamed(model, "agent_42_runner");
         const int n1000 = test::nodeNamed(model, "agent_1000_walker");
@@ -94,7 +97,7 @@ private slots:
         const int body1000 = test::nodeNamed(model, "agent_1000_walker_body");
         QVERIFY(body7 >= 0 && body1000 >= 0);
         // Own mesh entries (assimp binds one skin per mesh), one set of vertex accessors.
-        QCOMPARE(model.meshes.size(), std::size_t(3));
+        QCOMPARE(model.meshes.size(), std::size_t(3 + 1));  // and the ground's
         QVERIFY(model.nodes[body7].mesh != model.nodes[body1000].mesh);
         QCOMPARE(model.meshes[model.nodes[body7].mesh].primitives[0].attributes,
                  model.meshes[model.nodes[body1000].mesh].primitives[0].attributes);
@@ -102,8 +105,8 @@ private slots:
         QCOMPARE(model.skins[model.nodes[body7].skin].inverseBindMatrices,
                  model.skins[model.nodes[body1000].skin].inverseBindMatrices);
         QCOMPARE(model.skins[model.nodes[body7].skin].joints.size(), std::size_t(17));
-        // Roots and bodies are the scene's roots; joints hang under the roots.
-        QCOMPARE(model.scenes.at(model.defaultScene).nodes.size(), std::size_t(6));
+        // Roots, bodies and the set are the scene's roots; joints hang under the roots.
+        QCOMPARE(model.scenes.at(model.defaultScene).nodes.size(), std::size_t(6 + 1));
     }
 
     // Root channels share clocks: a straight walk at constant speed keeps two keys read
@@ -344,7 +347,7 @@ private slots:
         QVERIFY2(run.summary["warnings"].toInt(-1) == 0, qPrintable(run.output));
         const QJsonObject stats = run.summary["stats"].toObject();
         QCOMPARE(stats["agentNodes"].toInt(), 3);
-        QCOMPARE(stats["meshes"].toInt(), 3);
+        QCOMPARE(stats["meshes"].toInt(), 3 + 1);  // the agents' and the ground's
         QCOMPARE(stats["skins"].toInt(), 3);
         QCOMPARE(stats["distinctInverseBindMatrixAccessors"].toInt(), 1);
     }
