@@ -69,7 +69,8 @@ void BoidKernel::build(const AgentTypes& types, float dt, std::size_t agents, bo
     m_boidTypes.assign(types.steering.size(), BoidType{});
     for (std::size_t t = 0; t < types.steering.size(); ++t) {
         const TypeSteering& s = types.steering[t];
-        m_runs[t] = plain && fitsBoidKernel(s) ? 1 : 0;
+        // A walker that keeps a time gap (Headway.h) takes the general path, which applies it.
+        m_runs[t] = plain && fitsBoidKernel(s) && types.timeGapS[t] <= 0.0f ? 1 : 0;
         anyKernel = anyKernel || m_runs[t];
         accelMax = std::max(accelMax, nonNegative(types.params[t].maxForce) / effectiveMass(types.params[t].mass));
         // As steerTowards, separate and integrateVehicle make each parameter usable.
