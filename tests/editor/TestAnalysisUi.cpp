@@ -94,7 +94,14 @@ private slots:
         QVERIFY(showWithYaml(window, m_dir, "corridor.yaml", kCorridor));
         const sim::Scene& scene = window.document().scene();
         QVERIFY(playUntilRecorded(window, 240));
-        const std::size_t recorded = window.simulation().recordedFrames();
+        // Frames computed before the pause may still come in: wait until none has for 0.5 s.
+        std::size_t recorded = window.simulation().recordedFrames();
+        for (int quiet = 0, k = 0; quiet < 5 && k < 100; ++k) {
+            QTest::qWait(100);
+            const std::size_t now = window.simulation().recordedFrames();
+            quiet = now == recorded ? quiet + 1 : 0;
+            recorded = now;
+        }
         const std::uint64_t hash = hashOfFirst(window.simulation().cache(), recorded);
         QUndoStack* stack = window.document().undoStack();
         const int steps = stack->count();
