@@ -29,6 +29,10 @@ int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
         return runCommand(a, out, err);
     if (a.command == "validate")
         return validateCommand(a, out, err);
+    if (a.command == "wedge")
+        return wedgeCommand(a, out, err);
+    if (a.command == "wedge-collect")
+        return wedgeCollectCommand(a, out, err);
     return benchCommand(a, out, err);
 }
 

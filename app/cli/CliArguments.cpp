@@ -70,6 +70,16 @@ std::string usageText()
            ":\n"
            "                              for resources/maya/throngCrowd.mel (docs/export.md)\n"
            "      --maya-forward z|x      the Maya cache: the axis the rigs face at rotY 0 (default z)\n"
+           "      --set KEY=VALUE         set a scene value for this run, as if the file said so\n"
+           "                              (e.g. agent_types.walker.max_speed=1.2; docs/wedges.md)\n"
+           "  wedge SCENE --out DIR [--set KEY=V1,V2,...]... [--seeds A..B] [--jobs N] [--frames N]\n"
+           "                              run every combination of the values for every seed, each in\n"
+           "                              DIR/vNNN (its stats.json and run.log), in N processes at once;\n"
+           "                              then collect\n"
+           "  wedge collect DIR [--metric NAME]\n"
+           "                              gather the variants' figures into DIR/wedge.csv and\n"
+           "                              DIR/wedge.json, and plot NAME (default arrived) in\n"
+           "                              DIR/wedge.png; a failed variant's row says why\n"
            "  bench [--agents N] [--steps S] [--scenario flock|cross|cross-brain|army|corridor] [--threads T]\n"
            "                              run a built-in scenario and print figures as JSON\n"
            "  validate [DIR] [--json]     run the RiMEA tests (docs/validation.md) on the scenes in DIR\n"
@@ -127,6 +137,21 @@ ParseOutcome parseArguments(const std::vector<std::string>& argv)
         if (arg == "--quiet" || arg == "-q") a.quiet = true;
         else if (arg == "--json") a.json = true;
         else if (arg == "--no-set") a.noSet = true;
+        else if (arg == "--set") {
+            std::string text;
+            if (value(text))
+                a.sets.push_back(text);
+        } else if (arg == "--seeds") value(a.seeds);
+        else if (arg == "--out") value(a.outDir);
+        else if (arg == "--metric") value(a.metric);
+        else if (arg == "--jobs") {
+            std::optional<std::uint64_t> j;
+            count(j, false);
+            if (j && *j > 1024)
+                out.error = "--jobs must be at most 1024";
+            else if (j)
+                a.jobs = int(*j);
+        }
         else if (arg == "--frames") count(a.frames, true);
         else if (arg == "--seed") count(a.seed, true);
         else if (arg == "--agents") count(a.agents, false);
@@ -194,6 +219,19 @@ ParseOutcome parseArguments(const std::vector<std::string>& argv)
     } else if (a.command == "bench") {
         if (positional.size() != 1)
             out.error = "bench takes no file";
+    } else if (a.command == "wedge") {
+        if (positional.size() == 3 && positional[1] == "collect") {
+            a.command = "wedge-collect";
+            a.scene = positional[2];
+        } else if (positional.size() != 2) {
+            out.error = "wedge takes one SCENE (or: wedge collect DIR)";
+        } else {
+            a.scene = positional[1];
+            if (a.outDir.empty())
+                out.error = "wedge needs --out DIR, the folder of its variants";
+            else if (a.sets.empty() && a.seeds.empty())
+                out.error = "wedge needs --set KEY=V1,V2,... or --seeds A..B: something to vary";
+        }
     } else if (a.command == "validate") {
         if (positional.size() > 2)
             out.error = "validate takes at most one folder of validation scenes";
@@ -202,7 +240,15 @@ ParseOutcome parseArguments(const std::vector<std::string>& argv)
     } else {
         out.error = "unknown command '" + a.command + "'";
     }
-    if (out.error.empty() && a.command != "run" &&
+    const bool wedge = a.command == "wedge" || a.command == "wedge-collect";
+    if (out.error.empty() && !wedge && (!a.seeds.empty() || !a.outDir.empty() || a.jobs > 0 || !a.metric.empty()))
+        out.error = "--seeds, --out, --jobs and --metric belong to 'wedge'";
+    if (out.error.empty() && a.command != "run" && a.command != "wedge" && !a.sets.empty())
+        out.error = "--set belongs to 'run' and 'wedge'";
+    if (out.error.empty() && a.command == "wedge" && (!a.statsPath.empty() || !a.reportPath.empty() ||
+                                                      !a.exports.empty()))
+        out.error = "a wedge writes each variant's stats itself; --stats, --report and --export belong to 'run'";
+    if (out.error.empty() && a.command != "run" && a.command != "wedge" &&
         (!a.statsPath.empty() || !a.reportPath.empty() || !a.exports.empty() || a.frames ||
          !a.exportMode.empty() || a.exportJointStep || !a.exportLod.empty() || !a.mayaForward.empty() ||
          a.noSet))

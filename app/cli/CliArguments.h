@@ -20,8 +20,9 @@ struct ExportOutput {
 };
 
 struct CliArguments {
-    std::string command;  // check | run | bench | validate | help | version
-    std::string scene;    // check, run: the scene; validate: the folder of validation scenes
+    std::string command;  // check | run | bench | validate | wedge | wedge-collect | help | version
+    std::string scene;    // check, run, wedge: the scene; validate: the folder of validation scenes;
+                          // wedge-collect: the wedge's folder
     std::optional<std::uint64_t> frames, seed, agents, steps;
     int threads = 0;
     std::string statsPath, scenario;
@@ -32,6 +33,11 @@ struct CliArguments {
     std::string exportLod;                         // near | mid | far; empty = near
     std::string mayaForward;                       // z | x; empty = z (the Maya cache's rigs)
     bool noSet = false;                            // glTF: leave the set out
+    std::vector<std::string> sets;                 // --set: run KEY=VALUE; wedge KEY=V1,V2,...
+    std::string seeds;                             // wedge: A..B or A,B,C
+    std::string outDir;                            // wedge: the folder of its variants
+    int jobs = 0;                                  // wedge: variants at once; 0 = one per core
+    std::string metric;                            // wedge collect: the figure plotted
     bool quiet = false;
     bool json = false;  // check: diagnostics as JSON lines; validate: a JSON line per test
 };

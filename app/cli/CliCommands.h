@@ -11,5 +11,7 @@ int checkCommand(const CliArguments& args, std::ostream& out, std::ostream& err)
 int runCommand(const CliArguments& args, std::ostream& out, std::ostream& err);
 int benchCommand(const CliArguments& args, std::ostream& out, std::ostream& err);
 int validateCommand(const CliArguments& args, std::ostream& out, std::ostream& err);
+int wedgeCommand(const CliArguments& args, std::ostream& out, std::ostream& err);
+int wedgeCollectCommand(const CliArguments& args, std::ostream& out, std::ostream& err);
 
 }  // namespace throng::cli

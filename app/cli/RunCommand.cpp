@@ -3,6 +3,7 @@
 #include "RunOutputs.h"
 
 #include "simcore/io/SceneIO.h"
+#include "simcore/io/SceneOverrides.h"
 #include "simcore/world/FrameCache.h"
 #include "simcore/world/RunStats.h"
 #include "simcore/world/World.h"
@@ -15,7 +16,17 @@ namespace throng::cli {
 
 int runCommand(const CliArguments& args, std::ostream& out, std::ostream& err)
 {
-    const sim::LoadResult loaded = sim::loadScene(args.scene);
+    std::vector<sim::SceneOverride> overrides;
+    for (const std::string& text : args.sets) {
+        std::string why;
+        const std::optional<sim::SceneOverride> o = sim::parseOverride(text, why);
+        if (!o) {
+            err << "throng-cli: --set " << why << '\n';
+            return 2;
+        }
+        overrides.push_back(*o);
+    }
+    const sim::LoadResult loaded = sim::loadScene(args.scene, overrides);
     for (const sim::Diagnostic& d : loaded.diagnostics)
         err << d.format() << '\n';
     if (!loaded.ok()) {
