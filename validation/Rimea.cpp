@@ -117,6 +117,43 @@ WatchedRun runWatchingWalls(const sim::Scene& scene, double limitS, bool (sim::W
     return run;
 }
 
+// The mean density (persons/m²) and speed in the scene's first measurement area, by the
+// classical method (simcore/analysis), over the frames from fromS to toS of a run of
+// `scene`; n is the frames with somebody inside (0: nobody ever was).
+struct AreaMeans {
+    double densityPerM2 = 0.0, speedMps = 0.0, areaM2 = 0.0;
+    std::size_t n = 0;
+};
+
+AreaMeans meansInFirstArea(const sim::Scene& scene, double fromS, double toS)
+{
+    sim::World world(scene);
+    sim::FrameCache cache;
+    world.startRecording(cache);
+    std::vector<sim::AgentFrame> frame;
+    while (world.timeS() < toS - 1e-9) {
+        world.step();
+        world.snapshot(frame);
+        cache.append(frame);
+    }
+    const std::vector<sim::AreaSpeedDensity> areas = sim::measureSpeedDensity(scene, cache, 1);
+    AreaMeans m;
+    if (areas.empty())
+        return m;
+    m.areaM2 = areas[0].areaM2;
+    for (const sim::SpeedDensitySample& s : areas[0].samples)
+        if (double(s.frame) / double(cache.fps()) >= fromS) {
+            m.densityPerM2 += s.densityPerM2;
+            m.speedMps += s.speedMps;
+            ++m.n;
+        }
+    if (m.n > 0) {
+        m.densityPerM2 /= double(m.n);
+        m.speedMps /= double(m.n);
+    }
+    return m;
+}
+
 // Test 4: the fundamental diagram. The corridor filled at each density; in its middle
 // (the scene's measurement area), from 10 s to 25 s, the walkers' density and mean speed
 // by the classical method (simcore/analysis), set against Weidmann's curve at the density
@@ -135,32 +172,13 @@ Outcome fundamentalDiagram(const std::vector<sim::Scene>& scenes)
         sim::SpawnGroup& crowd = scene.groups[0];
         const glm::vec2 size = crowd.max - crowd.min;
         crowd.count = std::uint32_t(std::lround(rho * double(size.x) * double(size.y)));
-        sim::World world(scene);
-        sim::FrameCache cache;
-        world.startRecording(cache);
-        std::vector<sim::AgentFrame> frame;
-        while (world.timeS() < kToS - 1e-9) {
-            world.step();
-            world.snapshot(frame);
-            cache.append(frame);
-        }
-        const std::vector<sim::AreaSpeedDensity> areas = sim::measureSpeedDensity(scene, cache, 1);
-        double density = 0.0, speed = 0.0;
-        std::size_t n = 0;
-        const std::vector<sim::SpeedDensitySample> none;
-        for (const sim::SpeedDensitySample& s : areas.empty() ? none : areas[0].samples)
-            if (double(s.frame) / double(cache.fps()) >= kFromS) {
-                density += s.densityPerM2;
-                speed += s.speedMps;
-                ++n;
-            }
-        if (n == 0) {
+        const AreaMeans m = meansInFirstArea(scene, kFromS, kToS);
+        if (m.n == 0) {
             out.measured += format("%.1f /m2: nobody in the area; ", rho);
             out.pass = false;
             continue;
         }
-        density /= double(n);
-        speed /= double(n);
+        const double density = m.densityPerM2, speed = m.speedMps;
         const double weidmann = sim::weidmannSpeed(density);
         out.measured += format("%.2f /m2: %.2f m/s (Weidmann %.2f); ", density, speed, weidmann);
         out.pass = out.pass && std::abs(speed - weidmann) <= kToleranceMps && speed < lastSpeed;
@@ -234,31 +252,14 @@ Outcome singleFile(const std::vector<sim::Scene>& scenes)
             a.path = walkers.path;
             scene.agents.push_back(a);
         }
-        sim::World world(scene);
-        sim::FrameCache cache;
-        world.startRecording(cache);
-        std::vector<sim::AgentFrame> frame;
-        while (world.timeS() < kToS - 1e-9) {
-            world.step();
-            world.snapshot(frame);
-            cache.append(frame);
-        }
-        const std::vector<sim::AreaSpeedDensity> areas = sim::measureSpeedDensity(scene, cache, 1);
-        double density = 0.0, speed = 0.0;
-        std::size_t n = 0;
-        for (const sim::SpeedDensitySample& s : areas[0].samples)
-            if (double(s.frame) / double(cache.fps()) >= kFromS) {
-                density += s.densityPerM2 * areas[0].areaM2 / double(toX - fromX);  // persons per metre
-                speed += s.speedMps;
-                ++n;
-            }
-        if (n == 0) {
+        const AreaMeans m = meansInFirstArea(scene, kFromS, kToS);
+        if (m.n == 0) {
             out.measured += format("%.1f /m: nobody on the stretch; ", perMetre);
             out.pass = false;
             continue;
         }
-        density /= double(n);
-        speed /= double(n);
+        const double density = m.densityPerM2 * m.areaM2 / double(toX - fromX);  // persons per metre
+        const double speed = m.speedMps;
         const double freeSpeed = double(scene.agentTypes[0].maxSpeed);
         const double seyfried = std::clamp((1.0 / density - kStandingM) / kHeadwayS, 0.0, freeSpeed);
         out.measured += format("%.2f /m: %.2f m/s (Seyfried %.2f); ", density, speed, seyfried);
