@@ -18,6 +18,8 @@ if [ "${1:-build}" = test ]; then
   packages+=(assimp-utils blender python3-numpy)
   # The PedPy export's test reads the set's WKT with Shapely, the geometry library PedPy uses.
   packages+=(python3-shapely)
+  # The wedge test submits to a real single-node Slurm it starts (tests/cli/local-slurm.sh).
+  packages+=(slurmctld slurmd slurm-client munge)
   command -v node >/dev/null || packages+=(nodejs)
   command -v npm >/dev/null || packages+=(npm)
 fi

@@ -76,6 +76,8 @@ std::string usageText()
            "                              run every combination of the values for every seed, each in\n"
            "                              DIR/vNNN (its stats.json and run.log), in N processes at once;\n"
            "                              then collect\n"
+           "      --slurm                 submit the variants as one Slurm array job (sbatch), a task\n"
+           "                              each, and return; collect when it is done\n"
            "  wedge collect DIR [--metric NAME]\n"
            "                              gather the variants' figures into DIR/wedge.csv and\n"
            "                              DIR/wedge.json, and plot NAME (default arrived) in\n"
@@ -137,6 +139,7 @@ ParseOutcome parseArguments(const std::vector<std::string>& argv)
         if (arg == "--quiet" || arg == "-q") a.quiet = true;
         else if (arg == "--json") a.json = true;
         else if (arg == "--no-set") a.noSet = true;
+        else if (arg == "--slurm") a.slurm = true;
         else if (arg == "--set") {
             std::string text;
             if (value(text))
@@ -241,8 +244,11 @@ ParseOutcome parseArguments(const std::vector<std::string>& argv)
         out.error = "unknown command '" + a.command + "'";
     }
     const bool wedge = a.command == "wedge" || a.command == "wedge-collect";
-    if (out.error.empty() && !wedge && (!a.seeds.empty() || !a.outDir.empty() || a.jobs > 0 || !a.metric.empty()))
-        out.error = "--seeds, --out, --jobs and --metric belong to 'wedge'";
+    if (out.error.empty() && !wedge &&
+        (!a.seeds.empty() || !a.outDir.empty() || a.jobs > 0 || !a.metric.empty() || a.slurm))
+        out.error = "--seeds, --out, --jobs, --slurm and --metric belong to 'wedge'";
+    if (out.error.empty() && a.slurm && a.jobs > 0)
+        out.error = "--jobs is for a wedge on this machine; with --slurm, Slurm runs the variants";
     if (out.error.empty() && a.command != "run" && a.command != "wedge" && !a.sets.empty())
         out.error = "--set belongs to 'run' and 'wedge'";
     if (out.error.empty() && a.command == "wedge" && (!a.statsPath.empty() || !a.reportPath.empty() ||

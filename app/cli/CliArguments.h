@@ -38,6 +38,7 @@ struct CliArguments {
     std::string outDir;                            // wedge: the folder of its variants
     int jobs = 0;                                  // wedge: variants at once; 0 = one per core
     std::string metric;                            // wedge collect: the figure plotted
+    bool slurm = false;                            // wedge: submit one Slurm array job instead
     bool quiet = false;
     bool json = false;  // check: diagnostics as JSON lines; validate: a JSON line per test
 };

@@ -119,6 +119,42 @@ pid_t spawn(const std::string& program, const std::vector<std::string>& argument
     return rc == 0 ? pid : -1;
 }
 
+// `text` quoted for bash, as one word.
+std::string shellWord(const std::string& text)
+{
+    std::string out = "'";
+    for (const char c : text)
+        out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return out + "'";
+}
+
+// The array job: task k runs variant k (its own folder's log and status), one CPU each.
+std::string sbatchScript(const WedgePlan& plan, const fs::path& dir, const CliArguments& args, const std::string& self)
+{
+    std::ostringstream s;
+    s << "#!/bin/bash\n"
+      << "# A Throng wedge of " << plan.variants.size() << " variants of " << plan.scene << " (throng-cli wedge --slurm):\n"
+      << "# task k runs variant k into its folder; collect with: throng-cli wedge collect " << dir.string() << "\n"
+      << "#SBATCH --job-name=throng-wedge\n"
+      << "#SBATCH --array=0-" << plan.variants.size() - 1 << "\n"
+      << "#SBATCH --cpus-per-task=1\n"
+      << "#SBATCH --output=" << (dir / "slurm-%a.log").string() << "\n"
+      << "case \"$SLURM_ARRAY_TASK_ID\" in\n";
+    for (const WedgeVariant& v : plan.variants) {
+        s << v.index << ") folder=" << shellWord((dir / v.folder).string()) << "; args=(";
+        for (const std::string& a : variantArguments(plan, v, dir / v.folder, args, 1))
+            s << ' ' << shellWord(a);
+        s << " ) ;;\n";
+    }
+    s << "*) echo \"no variant $SLURM_ARRAY_TASK_ID in this wedge\" >&2; exit 2 ;;\n"
+      << "esac\n"
+      << shellWord(self) << " \"${args[@]}\" > \"$folder/run.log\" 2>&1\n"
+      << "status=$?\n"
+      << "echo \"$status\" > \"$folder/status\"\n"
+      << "exit \"$status\"\n";
+    return s.str();
+}
+
 std::string selfPath()
 {
     std::error_code ec;
@@ -322,6 +358,28 @@ int wedgeCommand(const CliArguments& args, std::ostream& out, std::ostream& err)
         return 1;
     }
     const std::string self = selfPath();
+    if (args.slurm) {
+        // One array job; the throng-cli that wrote it must be at the same path on the nodes.
+        const fs::path script = dir / "wedge.sbatch";
+        if (const sim::SaveResult saved = sim::writeFileAtomically(script.string(), sbatchScript(plan, dir, args, self));
+            !saved.ok) {
+            err << "throng-cli: " << saved.error << '\n';
+            return 1;
+        }
+        const fs::path submitted = dir / "sbatch.out";
+        const pid_t pid = spawn("/usr/bin/env", {"sbatch", "--parsable", script.string()}, submitted);
+        int status = 0;
+        if (pid < 0 || waitpid(pid, &status, 0) < 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+            err << "throng-cli: sbatch did not take " << script.string() << ": "
+                << (pid < 0 ? std::string("it could not be started") : readText(submitted)) << '\n';
+            return 1;
+        }
+        std::string job = readText(submitted);
+        job = job.substr(0, job.find_first_of(";\n"));
+        out << "wedge: submitted Slurm job " << job << ", " << plan.variants.size() << " tasks; when it is done: "
+            << "throng-cli wedge collect " << dir.string() << '\n';
+        return 0;
+    }
     const int jobs = args.jobs > 0 ? args.jobs : int(std::max(1u, std::thread::hardware_concurrency()));
     const int threads = jobs > 1 ? 1 : args.threads;
     std::map<pid_t, const WedgeVariant*> running;

@@ -4,7 +4,8 @@
 // variant's figures in its own folder, and `wedge collect` gathers them into a CSV, a JSON
 // table and a plot, where a failed variant's row says why and the others are kept; a bad
 // --set or --seeds stops before anything runs, and a folder that holds a wedge is never
-// overwritten.
+// overwritten. With --slurm the same wedge goes to a real single-node Slurm the test
+// starts (local-slurm.sh) as one array job, and gives the same figures.
 #include "CliRunner.h"
 #include "TestRegistry.h"
 
@@ -16,8 +17,11 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
+#include <QProcessEnvironment>
 #include <QTemporaryDir>
 #include <QTest>
+
+#include <unistd.h>
 
 using throng::test::runCli;
 
@@ -36,9 +40,14 @@ struct ProcessRun {
     QString out, err;
 };
 
-ProcessRun cli(const QStringList& args)
+ProcessRun cli(const QStringList& args, const QString& slurmConf = {})
 {
     QProcess p;
+    if (!slurmConf.isEmpty()) {
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.insert("SLURM_CONF", slurmConf);
+        p.setProcessEnvironment(env);
+    }
     p.start(QStringLiteral(THRONG_CLI_PATH), args);
     p.waitForFinished(300000);
     return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1, QString::fromUtf8(p.readAllStandardOutput()),
@@ -191,6 +200,56 @@ private slots:
         QVERIFY2(twice.err.contains("already holds a wedge"), qPrintable(twice.err));
     }
 
+    // The wedge above as one Slurm array job on a node of this machine: every task ran, and
+    // every variant's figures are those of the same variant run here.
+    void aWedgeRunsAsASlurmArrayJob()
+    {
+        QTemporaryDir tmp;
+        const QString script = QStringLiteral(THRONG_SOURCE_DIR "/tests/cli/local-slurm.sh");
+        const QString slurmDir = tmp.filePath("slurm");
+        QDir().mkpath(slurmDir);
+        const int port = 20000 + int(getpid() % 10000) * 2;
+        QProcess start;
+        start.start("bash", {script, "start", slurmDir, QString::number(port)});
+        QVERIFY(start.waitForFinished(60000));
+        const QString conf = QString::fromUtf8(start.readAllStandardOutput()).trimmed();
+        struct Stop {
+            QString script, dir;
+            ~Stop() { QProcess::execute("bash", {script, "stop", dir}); }
+        } stop{script, slurmDir};
+        QVERIFY2(start.exitCode() == 0 && conf.endsWith("slurm.conf"),
+                 qPrintable(QString::fromUtf8(start.readAllStandardError())));
+
+        const QString scene = throng::test::writeText(tmp.filePath("room.yaml"), kRoom);
+        const QString farm = tmp.filePath("farm"), here = tmp.filePath("here");
+        const QStringList vary{"--set", "agent_types.walker.max_speed=0.4,1.3", "--seeds", "1..2"};
+        const ProcessRun submitted = cli(QStringList{"wedge", scene, "--out", farm, "--slurm"} + vary, conf);
+        QVERIFY2(submitted.status == 0, qPrintable(submitted.err + submitted.out));
+        QVERIFY2(submitted.out.contains("submitted Slurm job") && submitted.out.contains("4 tasks"),
+                 qPrintable(submitted.out));
+        QVERIFY(linesIn(QDir(farm).filePath("wedge.sbatch")).contains("#SBATCH --array=0-3"));
+        QTRY_VERIFY_WITH_TIMEOUT(QFile::exists(QDir(farm).filePath("v000/status")) &&
+                                     QFile::exists(QDir(farm).filePath("v001/status")) &&
+                                     QFile::exists(QDir(farm).filePath("v002/status")) &&
+                                     QFile::exists(QDir(farm).filePath("v003/status")),
+                                 120000);
+        const ProcessRun collected = cli({"wedge", "collect", farm}, conf);
+        QVERIFY2(collected.status == 0 && collected.out.contains("4 of 4 variants ran"), qPrintable(collected.out));
+        QCOMPARE(cli(QStringList{"wedge", scene, "--out", here} + vary).status, 0);
+        const QStringList fromFarm = linesIn(QDir(farm).filePath("wedge.csv")),
+                          fromHere = linesIn(QDir(here).filePath("wedge.csv"));
+        QCOMPARE(fromFarm.size(), 5);
+        const QStringList header = fromFarm[0].split(',');
+        QCOMPARE(header, fromHere[0].split(','));
+        for (const char* figure : {"agents_out", "arrived", "overlapping_pairs", "peak_density_per_m2"}) {
+            const int c = header.indexOf(figure);
+            QVERIFY2(c > 0, figure);
+            for (int k = 1; k <= 4; ++k)
+                QCOMPARE(fromFarm[k].split(',')[c], fromHere[k].split(',')[c]);
+        }
+        QCOMPARE(fromFarm[3].split(',')[header.indexOf("agents_out")], QString("10"));
+    }
+
     void badWedgesStopBeforeAnythingRuns()
     {
         QTemporaryDir tmp;
@@ -218,6 +277,9 @@ private slots:
         r = cli({"check", scene, "--seeds", "1..2"});
         QCOMPARE(r.status, 2);
         QVERIFY2(r.err.contains("belong to 'wedge'"), qPrintable(r.err));
+        r = cli({"wedge", scene, "--seeds", "1..2", "--out", dir, "--slurm", "--jobs", "2"});
+        QCOMPARE(r.status, 2);
+        QVERIFY2(r.err.contains("Slurm runs the variants"), qPrintable(r.err));
     }
 };
 
