@@ -9,6 +9,7 @@
 #include <QByteArray>
 
 #include <cstdio>
+#include <set>
 #include <sstream>
 
 namespace throng::report {
@@ -99,7 +100,11 @@ std::string analysisJson(const sim::RunAnalysis& a)
         inEachSecond.push_back(o.inScene[f]);
         outEachSecond.push_back(o.out[f]);
     }
+    std::set<std::uint32_t> drawn;  // the walkers the trajectory plan draws (a gap splits one in two)
+    for (const sim::Trajectory& t : a.trajectories)
+        drawn.insert(t.agent);
     j << "{\"fps\": " << num(a.fps) << ", \"frames\": " << a.frames << ", \"walkers\": " << a.walkers
+      << ", \"walkers_drawn\": " << drawn.size()
       << ", \"evacuation_s\": " << num(o.evacuationS) << ", \"in_scene_each_second\": " << list(inEachSecond)
       << ", \"out_each_second\": " << list(outEachSecond) << ", \"flow_bin_s\": " << num(a.flowBinS)
       << ",\n \"lines\": [";
@@ -151,6 +156,13 @@ std::string reportHtml(const sim::Scene& scene, const sim::RunAnalysis& a, const
     }
     const QSize chartSize(900, 420), groundSize(900, 620);
     html << "<h2>Trajectories</h2>\n";
+    {
+        std::set<std::uint32_t> drawn;
+        for (const sim::Trajectory& t : a.trajectories)
+            drawn.insert(t.agent);
+        if (drawn.size() < a.walkers)
+            html << "<p>" << drawn.size() << " of the " << a.walkers << " walkers, picked evenly.</p>\n";
+    }
     figure(html, paintGround(scene, a, GroundLayer::Trajectories, groundSize), "Trajectories");
     html << "<h2>Density</h2>\n";
     figure(html, paintGround(scene, a, GroundLayer::Density, groundSize), "Density heatmap");

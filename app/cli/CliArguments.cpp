@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cstdlib>
 #include <filesystem>
 
 namespace throng::cli {
@@ -53,6 +54,8 @@ std::string usageText()
            "      --report OUT.html       write the run's analysis as one self-contained HTML file:\n"
            "                              trajectories, density heatmap, speed against density,\n"
            "                              flow per measurement line and exit, agents in and out\n"
+           "      --report-cell M         the report's density heatmap in cells of M metres (default 1)\n"
+           "      --report-trajectories N the report's plan draws at most N walkers (default 2,000)\n"
            "      --trajectories OUT.csv  write frame,agent,x,y,z,heading,speed,clip,phase rows\n"
            "                              (the same file as --export OUT.csv)\n"
            "      --export OUT            write the recorded run in the format OUT's suffix names;\n"
@@ -168,6 +171,21 @@ ParseOutcome parseArguments(const std::vector<std::string>& argv)
                 a.threads = int(*t);
         } else if (arg == "--stats") value(a.statsPath);
         else if (arg == "--report") value(a.reportPath);
+        else if (arg == "--report-cell") {
+            std::string text;
+            if (value(text)) {
+                char* end = nullptr;
+                const double m = std::strtod(text.c_str(), &end);
+                if (end != text.c_str() + text.size() || !(m >= 0.1 && m <= 100.0))
+                    out.error = "--report-cell is the heatmap's cell in metres, 0.1 to 100, got '" + text + "'";
+                else
+                    a.reportCellM = m;
+            }
+        } else if (arg == "--report-trajectories") {
+            count(a.reportTrajectories, false);
+            if (a.reportTrajectories && *a.reportTrajectories > 1'000'000)
+                out.error = "--report-trajectories must be at most 1,000,000";
+        }
         else if (arg == "--trajectories") {
             std::string path;
             if (value(path))
@@ -251,6 +269,8 @@ ParseOutcome parseArguments(const std::vector<std::string>& argv)
         out.error = "--jobs is for a wedge on this machine; with --slurm, Slurm runs the variants";
     if (out.error.empty() && a.command != "run" && a.command != "wedge" && !a.sets.empty())
         out.error = "--set belongs to 'run' and 'wedge'";
+    if (out.error.empty() && (a.reportCellM || a.reportTrajectories) && a.reportPath.empty())
+        out.error = "--report-cell and --report-trajectories shape the --report: give --report OUT.html too";
     if (out.error.empty() && a.command == "wedge" && (!a.statsPath.empty() || !a.reportPath.empty() ||
                                                       !a.exports.empty()))
         out.error = "a wedge writes each variant's stats itself; --stats, --report and --export belong to 'run'";

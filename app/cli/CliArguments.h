@@ -27,6 +27,8 @@ struct CliArguments {
     int threads = 0;
     std::string statsPath, scenario;
     std::string reportPath;  // run: the analysis as one HTML file (report/HtmlReport.h)
+    std::optional<double> reportCellM;                 // its heatmap's cells, m; default 1
+    std::optional<std::uint64_t> reportTrajectories;   // the walkers its plan draws at most; default 2,000
     std::vector<ExportOutput> exports;             // in the order given; the run records frames for them
     std::string exportMode;                        // exact | compact; empty = exact
     std::optional<std::uint64_t> exportJointStep;  // >= 1

@@ -50,7 +50,10 @@ bool writeRunOutputs(const CliArguments& args, const sim::Scene& scene, const si
     }
     if (!args.reportPath.empty()) {
 #ifdef THRONG_HAS_REPORT
-        const sim::RunAnalysis analysis = sim::analyseRun(scene, cache);
+        sim::AnalysisOptions options;
+        options.densityCellM = args.reportCellM.value_or(options.densityCellM);
+        options.maxTrajectories = std::size_t(args.reportTrajectories.value_or(options.maxTrajectories));
+        const sim::RunAnalysis analysis = sim::analyseRun(scene, cache, options);
         const report::ReportHeading heading{std::filesystem::path(args.scene).filename().string(), stats.seed};
         const sim::SaveResult r = report::writeReport(args.reportPath, scene, analysis, heading);
         report("report", r.ok, args.reportPath, r.error);

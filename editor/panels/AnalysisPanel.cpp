@@ -17,9 +17,11 @@
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
+#include <QDoubleSpinBox>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QScrollArea>
+#include <QSpinBox>
 #include <QTabWidget>
 #include <QTimer>
 #include <QTreeWidget>
@@ -41,16 +43,29 @@ QChartView* chartView(QWidget* parent, const QString& name)
     return view;
 }
 
-QLabel* imageLabel(QTabWidget* tabs, const QString& name, const QString& title)
+// A tab of a painted plan, under a row holding `option` (what the next Analyse draws).
+QLabel* imageLabel(QTabWidget* tabs, const QString& name, const QString& title, const QString& before,
+                   QWidget* option, const QString& after)
 {
-    auto* label = new QLabel(tabs);
+    auto* page = new QWidget(tabs);
+    auto* column = new QVBoxLayout(page);
+    column->setContentsMargins(0, 0, 0, 0);
+    auto* row = new QHBoxLayout;
+    row->addWidget(new QLabel(before, page));
+    option->setParent(page);
+    row->addWidget(option);
+    row->addWidget(new QLabel(after, page));
+    row->addStretch(1);
+    column->addLayout(row);
+    auto* label = new QLabel(page);
     label->setObjectName(name);
     label->setAlignment(Qt::AlignCenter);
     label->setBackgroundRole(QPalette::Base);
-    auto* scroll = new QScrollArea(tabs);
+    auto* scroll = new QScrollArea(page);
     scroll->setWidget(label);
     scroll->setWidgetResizable(true);
-    tabs->addTab(scroll, title);
+    column->addWidget(scroll, 1);
+    tabs->addTab(page, title);
     return label;
 }
 
@@ -99,8 +114,24 @@ AnalysisPanel::AnalysisPanel(SceneDocument& document, SimulationController& cont
     m_figures->setHeaderLabels({tr("Figure"), tr("Value")});
     m_figures->header()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
     m_tabs->addTab(m_figures, tr("Figures"));
-    m_trajectories = imageLabel(m_tabs, "analysisTrajectories", tr("Trajectories"));
-    m_density = imageLabel(m_tabs, "analysisDensity", tr("Density"));
+    m_drawn = new QSpinBox;
+    m_drawn->setObjectName("analysisDrawn");
+    m_drawn->setRange(1, 1'000'000);
+    m_drawn->setValue(int(sim::AnalysisOptions{}.maxTrajectories));
+    m_drawn->setToolTip(tr("How many walkers' paths the plan draws at most, picked evenly (throng-cli "
+                           "--report-trajectories)"));
+    m_trajectories = imageLabel(m_tabs, "analysisTrajectories", tr("Trajectories"), tr("Draw at most"), m_drawn,
+                                tr("walkers (at the next Analyse)"));
+    m_cell = new QDoubleSpinBox;
+    m_cell->setObjectName("analysisCell");
+    m_cell->setRange(0.1, 100.0);
+    m_cell->setSingleStep(0.25);
+    m_cell->setDecimals(2);
+    m_cell->setValue(sim::AnalysisOptions{}.densityCellM);
+    m_cell->setToolTip(tr("The heatmap's cells, in metres; very fine cells over large bounds are made coarser "
+                          "(throng-cli --report-cell)"));
+    m_density = imageLabel(m_tabs, "analysisDensity", tr("Density"), tr("Cells of"), m_cell,
+                           tr("m (at the next Analyse)"));
     m_speedDensity = chartView(m_tabs, "analysisSpeedDensity");
     m_tabs->addTab(m_speedDensity, tr("Speed-Density"));
     m_flow = chartView(m_tabs, "analysisFlow");
@@ -145,7 +176,10 @@ void AnalysisPanel::analyse()
     if (m_job)
         return;
     m_jobFrames = m_controller.cache().frameCount();
-    m_job = std::make_shared<AnalysisJob>(m_document.scene(), m_controller.cache());
+    sim::AnalysisOptions options;
+    options.densityCellM = m_cell->value();
+    options.maxTrajectories = std::size_t(m_drawn->value());
+    m_job = std::make_shared<AnalysisJob>(m_document.scene(), m_controller.cache(), options);
     // An edit that changes the recording stops the job first (it reads the cache in place).
     m_controller.setCacheReader([job = std::weak_ptr<AnalysisJob>(m_job)] {
         if (const std::shared_ptr<AnalysisJob> j = job.lock())

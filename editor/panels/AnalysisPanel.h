@@ -16,6 +16,8 @@
 #include <optional>
 
 class QChartView;
+class QDoubleSpinBox;
+class QSpinBox;
 class QLabel;
 class QProgressBar;
 class QPushButton;
@@ -82,6 +84,8 @@ private:
     QTabWidget* m_tabs = nullptr;
     QTreeWidget* m_figures = nullptr;
     QLabel* m_trajectories = nullptr;
+    QSpinBox* m_drawn = nullptr;        // the next analysis: walkers drawn at most
+    QDoubleSpinBox* m_cell = nullptr;   // the next analysis: the heatmap's cell
     QLabel* m_density = nullptr;
     QChartView* m_speedDensity = nullptr;
     QChartView* m_flow = nullptr;

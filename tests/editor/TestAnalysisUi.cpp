@@ -26,6 +26,7 @@
 #include <QAction>
 #include <QComboBox>
 #include <QDockWidget>
+#include <QDoubleSpinBox>
 #include <QFile>
 #include <QLabel>
 #include <QPushButton>
@@ -196,6 +197,14 @@ private slots:
         auto* status = window.findChild<QLabel*>("analysisStatus");
         QVERIFY(status->text().contains("press Analyse"));
         auto* analyse = window.findChild<QPushButton*>("analyseButton");
+        // The heatmap in cells of 0.5 m, typed into the Density tab's box.
+        auto* cell = window.findChild<QDoubleSpinBox*>("analysisCell");
+        QVERIFY(cell);
+        QCOMPARE(cell->value(), 1.0);
+        cell->selectAll();
+        QTest::keyClicks(cell, "0.5");
+        QTest::keyClick(cell, Qt::Key_Enter);
+        QCOMPARE(cell->value(), 0.5);
         QTest::mouseClick(analyse, Qt::LeftButton);
         // It measures on a thread of its own, with progress and Stop meanwhile.
         QVERIFY(window.analysis().analysing());
@@ -203,6 +212,7 @@ private slots:
         QVERIFY(window.findChild<QPushButton*>("stopAnalysisButton")->isVisible());
         QTRY_VERIFY(!window.analysis().analysing());
         QVERIFY(window.analysis().analysis().has_value());
+        QCOMPARE(window.analysis().analysis()->density.cellM, 0.5);
         QVERIFY(analyse->isEnabled());
         QVERIFY(!window.findChild<QPushButton*>("stopAnalysisButton")->isVisible());
         QVERIFY(!window.simulation().hasCacheReader());

@@ -296,6 +296,43 @@ private slots:
         QVERIFY(data["lines"].toArray()[0].toObject()["forward"].toInt() > 100);
     }
 
+    // --report-cell and --report-trajectories: the heatmap in cells of 0.5 m holds the same
+    // walkers as in cells of 1 m, in four times the cells; the plan draws 5 walkers and says
+    // so. Without --report they are refused.
+    void theReportTakesItsCellAndItsWalkers()
+    {
+        QTemporaryDir dir;
+        const QString scene = writeText(dir.filePath("crowd.yaml"), kCrowd);
+        QJsonObject maps[2], data[2];
+        int k = 0;
+        for (const QStringList& extra : {QStringList{}, QStringList{"--report-cell", "0.5", "--report-trajectories", "5"}}) {
+            const QString html = dir.filePath(QString("r%1.html").arg(k));
+            const Ran ran = runHeadless(QStringList{"run", scene, "--quiet", "--frames", "240", "--report", html} + extra);
+            QVERIFY2(ran.status == 0, qPrintable(ran.err));
+            const QString text = QString::fromUtf8(readAll(html));
+            data[k] = embeddedData(text);
+            maps[k] = data[k]["density_map"].toObject();
+            if (k == 1)
+                QVERIFY2(text.contains(QString("<p>5 of the %1 walkers, picked evenly.</p>").arg(data[k]["walkers"].toInt())),
+                         "the plan says it draws 5");
+            ++k;
+        }
+        QCOMPARE(maps[0]["cell_m"].toDouble(), 1.0);
+        QCOMPARE(maps[1]["cell_m"].toDouble(), 0.5);
+        QCOMPARE(maps[1]["cols"].toInt(), 2 * maps[0]["cols"].toInt());
+        QCOMPARE(maps[1]["rows"].toInt(), 2 * maps[0]["rows"].toInt());
+        QVERIFY(std::abs(maps[1]["total_persons"].toDouble() - maps[0]["total_persons"].toDouble()) < 1e-9);
+        QVERIFY(maps[1]["peak_density"].toDouble() >= maps[0]["peak_density"].toDouble());
+        QCOMPARE(data[1]["walkers_drawn"].toInt(), 5);
+        QCOMPARE(data[0]["walkers_drawn"].toInt(), std::min(2000, data[0]["walkers"].toInt()));  // the default
+        const Ran alone = runHeadless({"run", scene, "--quiet", "--report-cell", "0.5"});
+        QCOMPARE(alone.status, 2);
+        QVERIFY2(alone.err.contains("give --report OUT.html too"), qPrintable(alone.err));
+        const Ran tiny = runHeadless({"run", scene, "--quiet", "--report", dir.filePath("t.html"), "--report-cell", "0"});
+        QCOMPARE(tiny.status, 2);
+        QVERIFY2(tiny.err.contains("0.1 to 100"), qPrintable(tiny.err));
+    }
+
     void anUnwritableReportFailsTheRunAndNamesThePath()
     {
         QTemporaryDir dir;
