@@ -1,5 +1,7 @@
 #include "RunOutputs.h"
 
+#include "Progress.h"
+
 #include "export/ExportFormats.h"
 #include "simcore/io/SceneIO.h"
 #ifdef THRONG_HAS_REPORT
@@ -7,11 +9,18 @@
 #include "simcore/analysis/RunAnalysis.h"
 #endif
 
+#include <algorithm>
 #include <filesystem>
 #include <ostream>
 #include <string>
 
 namespace throng::cli {
+
+namespace {
+
+constexpr std::size_t kProgressAgentFrames = 500'000;
+
+}  // namespace
 
 bool writeRunOutputs(const CliArguments& args, const sim::Scene& scene, const sim::FrameCache& cache,
                      const sim::RunStats& stats, std::ostream& out, std::ostream& err)
@@ -38,7 +47,15 @@ bool writeRunOutputs(const CliArguments& args, const sim::Scene& scene, const si
     request.includeSet = !args.noSet;
     for (const ExportOutput& output : args.exports) {
         request.path = output.path;
-        const exporting::ExportResult r = output.format->write(scene, cache, request, {});
+        // Progress on stderr, as the run's own, for an export of half a million agent-frames or more.
+        Progress progress(err, "exporting " + output.path, 1000,
+                          !args.quiet && cache.agentCount() * cache.frameCount() >= kProgressAgentFrames);
+        const exporting::ExportResult r = output.format->write(scene, cache, request, [&](float done) {
+            progress.update(std::uint64_t(std::clamp(done, 0.0f, 1.0f) * 1000.0f));
+            return true;
+        });
+        if (r.ok())
+            progress.finish();
         // A directory holds a file per agent: name the directory, not thousands of files.
         std::string written;
         if (output.format->writesDirectory)

@@ -136,6 +136,22 @@ private slots:
         QVERIFY2(r.err.find("belong to 'run'") != std::string::npos, r.err.c_str());
     }
 
+    // An export of half a million agent-frames and more shows its progress on stderr, as
+    // the run does (a line every 10 % when stderr is no terminal); --quiet silences it.
+    void aLongExportShowsItsProgress()
+    {
+        QTemporaryDir tmp;
+        const std::string scene = THRONG_SOURCE_DIR "/resources/scenes/crossroads.yaml";
+        const QString csv = tmp.filePath("long.csv");
+        auto r = runCli({"run", scene, "--frames", "2400", "--export", csv.toStdString()});
+        QCOMPARE(r.status, 0);
+        for (const char* percent : {": 0%", ": 50%", ": 100%"})
+            QVERIFY2(r.err.find("exporting " + csv.toStdString() + percent) != std::string::npos, r.err.c_str());
+        r = runCli({"run", scene, "--frames", "2400", "--export", csv.toStdString(), "--quiet"});
+        QCOMPARE(r.status, 0);
+        QVERIFY2(r.err.find("exporting") == std::string::npos, r.err.c_str());
+    }
+
     void exportBelongsToRun()
     {
         const auto r = runCli({"check", "s.yaml", "--export", "a.glb"});
