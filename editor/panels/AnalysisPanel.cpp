@@ -118,20 +118,19 @@ AnalysisPanel::AnalysisPanel(SceneDocument& document, SimulationController& cont
     m_drawn->setObjectName("analysisDrawn");
     m_drawn->setRange(1, 1'000'000);
     m_drawn->setValue(int(sim::AnalysisOptions{}.maxTrajectories));
-    m_drawn->setToolTip(tr("How many walkers' paths the plan draws at most, picked evenly (throng-cli "
-                           "--report-trajectories)"));
-    m_trajectories = imageLabel(m_tabs, "analysisTrajectories", tr("Trajectories"), tr("Draw at most"), m_drawn,
-                                tr("walkers (at the next Analyse)"));
+    m_drawn->setToolTip(tr("How many walkers' paths the plan draws at most, picked evenly; the next Analyse "
+                           "draws them (throng-cli --report-trajectories)"));
+    m_trajectories = imageLabel(m_tabs, "analysisTrajectories", tr("Trajectories"), tr("At most"), m_drawn,
+                                tr("walkers"));
     m_cell = new QDoubleSpinBox;
     m_cell->setObjectName("analysisCell");
     m_cell->setRange(0.1, 100.0);
     m_cell->setSingleStep(0.25);
     m_cell->setDecimals(2);
     m_cell->setValue(sim::AnalysisOptions{}.densityCellM);
-    m_cell->setToolTip(tr("The heatmap's cells, in metres; very fine cells over large bounds are made coarser "
-                          "(throng-cli --report-cell)"));
-    m_density = imageLabel(m_tabs, "analysisDensity", tr("Density"), tr("Cells of"), m_cell,
-                           tr("m (at the next Analyse)"));
+    m_cell->setToolTip(tr("The heatmap's cells, in metres, for the next Analyse; very fine cells over large "
+                          "bounds are made coarser (throng-cli --report-cell)"));
+    m_density = imageLabel(m_tabs, "analysisDensity", tr("Density"), tr("Cells of"), m_cell, tr("m"));
     m_speedDensity = chartView(m_tabs, "analysisSpeedDensity");
     m_tabs->addTab(m_speedDensity, tr("Speed-Density"));
     m_flow = chartView(m_tabs, "analysisFlow");
