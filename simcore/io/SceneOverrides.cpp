@@ -106,17 +106,20 @@ std::optional<SceneOverride> parseOverride(const std::string& text, std::string&
 
 LoadResult loadScene(const std::string& path, std::span<const SceneOverride> overrides)
 {
-    // The file as it is first: its own problems with its own lines.
-    LoadResult plain = loadScene(path);
-    if (overrides.empty() || !plain.ok())
-        return plain;
+    if (overrides.empty())
+        return loadScene(path);
+    // The file, read once; as it is first: its own problems with its own lines.
     LoadResult result;
-    result.diagnostics = plain.diagnostics;
     detail::YamlFields fields(path, result.diagnostics);
     std::string text;
     YAML::Node root;
     if (!detail::readYamlFile(fields, text, root))
         return result;
+    const std::string baseDir = std::filesystem::path(path).parent_path().string();
+    LoadResult plain = parseScene(text, path, baseDir);
+    if (!plain.ok())
+        return plain;
+    result.diagnostics = plain.diagnostics;
     bool applied = root.IsMap();
     for (const SceneOverride& o : overrides) {
         if (!root.IsMap())
@@ -136,8 +139,7 @@ LoadResult loadScene(const std::string& path, std::span<const SceneOverride> ove
     // key the format does not know (otherwise only a warning, and the value ignored).
     YAML::Emitter emitter;
     emitter << root;
-    const LoadResult read = parseScene(emitter.c_str(), path + " (with --set)",
-                                       std::filesystem::path(path).parent_path().string());
+    const LoadResult read = parseScene(emitter.c_str(), path + " (with --set)", baseDir);
     for (const Diagnostic& d : read.diagnostics)
         if (d.severity == Severity::Error)
             result.diagnostics.push_back(d);
