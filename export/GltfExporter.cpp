@@ -2,6 +2,7 @@
 
 #include "export/character/CharacterLibrary.h"
 #include "export/character/Gait.h"
+#include "export/detail/AgentBake.h"
 #include "export/detail/AgentRig.h"
 #include "export/detail/AnimationChannels.h"
 #include "export/detail/CharacterAssets.h"
@@ -38,20 +39,7 @@ constexpr double kPalette[][3] = {{0.85, 0.33, 0.26}, {0.22, 0.55, 0.85}, {0.35,
 
 using detail::failedExport;
 
-// What one agent needs before it is written (see prepare() below).
-struct AgentWork {
-    std::vector<glm::vec3> positions;
-    std::vector<glm::quat> yaw;
-    AgentVariation variation;
-    std::size_t character = 0;
-    std::vector<GaitFrame> gait;
-    Pose firstPose;
-    std::vector<std::uint32_t> positionKept, yawKept;
-    // Per frame: 1 = not in the shot (left through an exit, or not present: an edit added
-    // it later or removed it earlier); the character scales to nothing there.
-    std::vector<std::uint8_t> hidden;
-    detail::BakedJoints joints;  // exact mode
-};
+using detail::AgentWork;
 
 tinygltf::Value runExtras(const sim::FrameCache& cache, const GltfOptions& options, std::uint64_t seed)
 {
@@ -256,78 +244,14 @@ ExportResult exportGltf(const sim::Scene& scene, const sim::FrameCache& cache, c
     detail::AnimationChannels channels(builder, model.animations[0], pairClock);
     detail::CompactCycles cycles(builder, library);
 
-    // Placed agents may carry a hand-set look, tint or height (the variation brush).
-    std::map<std::uint32_t, const sim::Agent*> placed;
-    for (const sim::Agent& a : scene.agents)
-        if (a.look >= 0 || a.tint >= 0 || a.heightScale > 0.0f)
-            placed.emplace(a.id, &a);
-    auto variationOf = [&](std::size_t i) {
-        const sim::AgentInfo& info = cache.agents()[i];
-        const sim::AgentType& type = scene.agentTypes[info.typeIndex];
-        const std::size_t looks = library.looksOf(info.typeIndex).size();
-        AgentVariation v = drawVariation(type.variation, seed, info.id, looks);
-        if (const auto it = placed.find(info.id); it != placed.end())
-            applyHandSetVariation(v, *it->second, looks, type.variation.tints.size());
-        return v;
-    };
-    // One agent's motion, gait and (exact) baked joints: pure, so blocks of agents run on
-    // all threads, and the model is then appended to in agent order, whatever the count.
-    auto prepare = [&](std::size_t i, AgentWork& w, bool bakeJoints) {
-        w.positions.resize(frames);
-        w.yaw.resize(frames);
-        std::vector<float> speeds(frames), phases(frames, 0.0f);
-        std::vector<sim::Clip> clips(frames, sim::Clip::Idle);
-        w.hidden.assign(frames, 0);
-        std::size_t firstPresent = frames;
-        for (std::size_t f = 0; f < frames; ++f) {
-            const sim::AgentFrame& a = cache.at(f, i);
-            w.hidden[f] = a.out || !a.present ? 1 : 0;
-            if (!a.present) {
-                // Nothing recorded: stand still where it was last (or will first be).
-                w.positions[f] = f > 0 ? w.positions[f - 1] : glm::vec3(0.0f);
-                w.yaw[f] = f > 0 ? w.yaw[f - 1] : glm::quat(1.0f, 0.0f, 0.0f, 0.0f);
-                speeds[f] = 0.0f;
-                continue;
-            }
-            if (firstPresent == frames) {
-                firstPresent = f;
-                const double half = 0.5 * static_cast<double>(a.headingRad);
-                const glm::quat q(static_cast<float>(std::cos(half)), 0.0f, static_cast<float>(std::sin(half)), 0.0f);
-                for (std::size_t g = 0; g < f; ++g) {
-                    w.positions[g] = a.position;
-                    w.yaw[g] = q;
-                }
-            }
-            w.positions[f] = a.position;
-            speeds[f] = a.speed;
-            clips[f] = a.clip;
-            phases[f] = sim::actionPhase(a.clip, static_cast<double>(f) / static_cast<double>(cache.fps()),
-                                         cache.agents()[i].id);
-            // Rotation about +Y by the heading: the character's +X nose turns to (cos h, 0, -sin h).
-            const double half = 0.5 * static_cast<double>(a.headingRad);
-            w.yaw[f] = glm::quat(static_cast<float>(std::cos(half)), 0.0f, static_cast<float>(std::sin(half)), 0.0f);
-            if (f > 0 && glm::dot(w.yaw[f], w.yaw[f - 1]) < 0.0f)
-                w.yaw[f] = -w.yaw[f];
-        }
-        w.variation = variationOf(i);
-        w.character = library.looksOf(cache.agents()[i].typeIndex)[w.variation.look];
-        const Character& character = library.character(w.character);
-        const float blendS = scene.agentTypes[cache.agents()[i].typeIndex].actionBlendS;
-        w.gait = computeGait(character, w.positions, speeds, w.variation, {clips, phases, cache.fps(), blendS});
-        const RootMotion motion{w.positions, w.yaw, w.variation.heightScale, cache.fps()};
-        w.firstPose =
-            compact ? gaitPose(character, w.gait[0]) : FootPlanter(character, w.gait, motion, scene.terrain).next();
-        if (!bakeJoints)
-            return;
-        w.positionKept = detail::keepVec3Keys(frameClock.times, w.positions, options.positionToleranceM);
-        w.yawKept = detail::keepRotationKeys(frameClock.times, w.yaw, options.rootRotationToleranceDeg * kDegToRad);
-        if (!compact)
-            w.joints = detail::bakeJoints(jointClock, character, w.gait, motion, scene.terrain,
-                                          options.positionToleranceM, options.rotationToleranceDeg * kDegToRad);
-    };
+    const detail::AgentBaker baker(scene, cache, library, seed, allTimes, jointClock,
+                                   {.compact = compact,
+                                    .positionToleranceM = options.positionToleranceM,
+                                    .rotationToleranceRad = options.rotationToleranceDeg * kDegToRad,
+                                    .rootRotationToleranceRad = options.rootRotationToleranceDeg * kDegToRad});
     const sim::ThreadTeam team(options.threads);
     auto forBlock = [&](std::size_t begin, std::size_t count, std::vector<AgentWork>& work, bool bakeJoints) {
-        team.forEach(count, 4, [&](std::size_t k) { prepare(begin + k, work[k], bakeJoints); });
+        team.forEach(count, 4, [&](std::size_t k) { baker.prepare(begin + k, work[k], bakeJoints); });
     };
     constexpr std::size_t kBlock = 256;
     std::vector<AgentWork> work(kBlock);

@@ -1,0 +1,69 @@
+#pragma once
+// One agent's share of a skinned-crowd export, prepared from the recorded frames: its root
+// motion (positions and yaw per frame, with the keys that reduction keeps), the frames it
+// is out of the shot, its variation and look, its gait, its first pose and, for an exact
+// bake, its joints. Pure: agents may be prepared on any thread, in any order; the glTF and
+// USD writers then write them in agent order.
+#ifndef THRONG_EXPORT_BUILD
+#error "a detail/ header, private to throng::export: include the module's public headers instead"
+#endif
+
+#include "export/character/AgentVariation.h"
+#include "export/character/CharacterLibrary.h"
+#include "export/character/Gait.h"
+#include "export/detail/ExactBake.h"
+#include "simcore/scene/Scene.h"
+#include "simcore/world/FrameCache.h"
+
+#include <cstdint>
+#include <map>
+#include <vector>
+
+namespace throng::exporting::detail {
+
+struct AgentWork {
+    std::vector<glm::vec3> positions;  // per frame, m, relative to the cache's origin
+    std::vector<glm::quat> yaw;        // per frame, about +Y by the heading; neighbours in one hemisphere
+    AgentVariation variation;
+    std::size_t character = 0;         // in the library
+    std::vector<GaitFrame> gait;
+    Pose firstPose;
+    std::vector<std::uint32_t> positionKept, yawKept;
+    // Per frame: 1 = not in the shot (left through an exit, or not present: an edit added
+    // it later or removed it earlier); the character scales to nothing there.
+    std::vector<std::uint8_t> hidden;
+    BakedJoints joints;  // an exact bake's
+};
+
+struct BakeSettings {
+    bool compact = false;                // joints come from shared cycles: no exact bake, first pose unplanted
+    float positionToleranceM = 0.0005f;  // key reduction (KeyReduction.h)
+    float rotationToleranceRad = 0.0035f;
+    float rootRotationToleranceRad = 0.00087f;
+};
+
+class AgentBaker {
+public:
+    // `frameTimes`: every frame's time, s; `jointClock`: the frames an exact bake keys.
+    AgentBaker(const sim::Scene& scene, const sim::FrameCache& cache, const CharacterLibrary& library,
+               std::uint64_t seed, const std::vector<float>& frameTimes, const JointClock& jointClock,
+               BakeSettings settings);
+
+    // Agent i of the cache (dense order). withKeys: also the reduced keys and, unless
+    // compact, the exact bake of its joints.
+    void prepare(std::size_t i, AgentWork& work, bool withKeys) const;
+    // Its drawn variation, with what the variation brush set by hand.
+    AgentVariation variationOf(std::size_t i) const;
+
+private:
+    const sim::Scene& m_scene;
+    const sim::FrameCache& m_cache;
+    const CharacterLibrary& m_library;
+    std::uint64_t m_seed;
+    const std::vector<float>& m_frameTimes;
+    const JointClock& m_jointClock;
+    BakeSettings m_settings;
+    std::map<std::uint32_t, const sim::Agent*> m_placed;  // agents with a hand-set look, tint or height
+};
+
+}  // namespace throng::exporting::detail
