@@ -4,6 +4,7 @@
 #include "export/GltfExporter.h"
 #include "export/PedPyExport.h"
 #include "export/TrajectoryCsv.h"
+#include "export/UsdExporter.h"
 
 #include <algorithm>
 #include <cctype>
@@ -28,6 +29,21 @@ ExportResult writeGltf(const sim::Scene& scene, const sim::FrameCache& cache, co
     options.includeSet = request.includeSet;
     options.firstFrame = request.firstFrame;
     return exportGltf(scene, cache, options, progress);
+}
+
+ExportResult writeUsd(const sim::Scene& scene, const sim::FrameCache& cache, const ExportRequest& request,
+                      const ProgressFn& progress)
+{
+    UsdOptions options;
+    options.path = request.path;
+    options.sceneDirectory = request.sceneDirectory;
+    options.seed = request.seed;
+    options.jointFrameStep = request.jointFrameStep;
+    options.lod = request.lod;
+    options.threads = request.threads;
+    options.includeSet = request.includeSet;
+    options.firstFrame = request.firstFrame;
+    return exportUsd(scene, cache, options, progress);
 }
 
 ExportResult writeCsv(const sim::Scene&, const sim::FrameCache& cache, const ExportRequest& request,
@@ -81,6 +97,11 @@ const std::vector<ExportFormat>& exportFormats()
          .readsIndentedText = true,
          .writesSet = true,
          .write = writeGltf},
+        {.key = "usd",
+         .label = "USD crowd, UsdSkel (.usda)",
+         .suffixes = {".usda"},
+         .writesSet = true,
+         .write = writeUsd},
         {.key = "csv", .label = "Trajectories CSV (.csv)", .suffixes = {".csv"}, .write = writeCsv},
         {.key = "pedpy",
          .label = "PedPy trajectories of the walkers (.txt, the set beside it as .wkt)",

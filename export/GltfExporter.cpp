@@ -33,10 +33,6 @@ static_assert(std::endian::native == std::endian::little, "glTF buffers are litt
 
 constexpr float kDegToRad = 3.14159265358979f / 180.0f;
 
-// Colours for types that carry no tint of their own, distinct and mid-bright.
-constexpr double kPalette[][3] = {{0.85, 0.33, 0.26}, {0.22, 0.55, 0.85}, {0.35, 0.72, 0.36},
-                                  {0.92, 0.70, 0.20}, {0.60, 0.40, 0.78}, {0.25, 0.75, 0.75}};
-
 using detail::failedExport;
 
 using detail::AgentWork;
@@ -121,8 +117,8 @@ int materialFor(tinygltf::Model& model, std::map<std::pair<std::size_t, int>, in
         const glm::vec3 rgb = glm::clamp(type.variation.tints[static_cast<std::size_t>(tint)], 0.0f, 1.0f);
         material.pbrMetallicRoughness.baseColorFactor = {rgb.r, rgb.g, rgb.b, 1.0};
     } else {
-        const double* rgb = kPalette[typeIndex % std::size(kPalette)];
-        material.pbrMetallicRoughness.baseColorFactor = {rgb[0], rgb[1], rgb[2], 1.0};
+        const glm::dvec3 rgb = untintedColour(typeIndex);
+        material.pbrMetallicRoughness.baseColorFactor = {rgb.r, rgb.g, rgb.b, 1.0};
     }
     material.pbrMetallicRoughness.metallicFactor = 0.0;
     material.pbrMetallicRoughness.roughnessFactor = 0.8;

@@ -53,6 +53,14 @@ AgentVariation drawVariation(const sim::Variation& v, std::uint64_t seed, std::u
     return out;
 }
 
+glm::dvec3 untintedColour(std::size_t typeIndex)
+{
+    static constexpr double kPalette[][3] = {{0.85, 0.33, 0.26}, {0.22, 0.55, 0.85}, {0.35, 0.72, 0.36},
+                                             {0.92, 0.70, 0.20}, {0.60, 0.40, 0.78}, {0.25, 0.75, 0.75}};
+    const double* rgb = kPalette[typeIndex % std::size(kPalette)];
+    return {rgb[0], rgb[1], rgb[2]};
+}
+
 std::span<const glm::vec3> slotPalette(MaterialSlot slot)
 {
     switch (slot) {

@@ -30,6 +30,8 @@ struct AgentVariation {
 // The colours a material slot's parts come in (skin tones, hair, trousers, shoes, hats,
 // bags), at least one each; the top's and the body's are the type's tints (empty here).
 std::span<const glm::vec3> slotPalette(MaterialSlot slot);
+// The top's colour for agents of a type with no tints: distinct per type, mid-bright.
+glm::dvec3 untintedColour(std::size_t typeIndex);
 // Whether the agent wears the mesh part: always for a part with wornShare 1, else drawn
 // from the agent's own stream per slot (the same on every run, thread count and reader).
 bool wearsPart(const MeshPart& part, std::uint64_t seed, std::uint32_t agentId);

@@ -1,6 +1,7 @@
 #include "ExternalReader.h"
 
 #include <QDir>
+#include <QFile>
 #include <QJsonDocument>
 #include <QProcess>
 
@@ -8,6 +9,10 @@ namespace throng::test {
 
 QString externalReaderPath(const QString& tool)
 {
+    // Our own readers (tests/tools) first, then the shared ones beside the repository.
+    const QString own = QDir::cleanPath(QStringLiteral(THRONG_SOURCE_DIR "/tests/tools/") + tool);
+    if (QFile::exists(own))
+        return own;
     return QDir::cleanPath(QStringLiteral(THRONG_SOURCE_DIR "/../shared/tools/") + tool);
 }
 

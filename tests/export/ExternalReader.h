@@ -1,6 +1,6 @@
 #pragma once
-// Runs one of the external glTF readers in ../shared/tools (Khronos validator, three.js,
-// assimp) on a file and hands back its exit status and its one-line JSON summary.
+// Runs one of the external readers of our exports (Khronos validator, three.js, assimp,
+// tinyusdz) on a file and hands back its exit status and its one-line JSON summary.
 // Test-only; never installs anything itself (the tools do that on first use).
 
 #include <QJsonObject>
@@ -16,7 +16,7 @@ struct ExternalReaderRun {
     QJsonObject summary;    // the last output line parsed as JSON; empty if it is not JSON
 };
 
-// `tool`: a file name in ../shared/tools, e.g. "gltf-validate".
+// `tool`: a file name in tests/tools (usd-check), else in ../shared/tools (gltf-validate).
 QString externalReaderPath(const QString& tool);
 ExternalReaderRun runExternalReader(const QString& tool, const QStringList& arguments);
 

@@ -86,7 +86,8 @@ private slots:
         QCOMPARE(exporting::formatForPath(""), nullptr);
         QCOMPARE(exporting::formatByKey("fbx"), nullptr);
         QCOMPARE(exporting::formatForPath("walkers.TXT"), exporting::formatByKey("pedpy"));
-        QCOMPARE(exporting::knownPathForms(), std::string(".glb, .gltf, .csv, .txt, DIR/"));
+        QCOMPARE(exporting::formatForPath("shot.USDA"), exporting::formatByKey("usd"));
+        QCOMPARE(exporting::knownPathForms(), std::string(".glb, .gltf, .usda, .csv, .txt, DIR/"));
     }
 
     // Each row writes the fixture's 3 agents x 49 frames; a row without a check here fails,
@@ -110,6 +111,13 @@ private slots:
                 QCOMPARE(model.animations.size(), std::size_t(1));
                 for (const char* node : {"agent_7_walker", "agent_42_runner", "agent_1000_walker"})
                     QVERIFY2(test::nodeNamed(model, node) >= 0, node);
+            } else if (f.key == "usd") {
+                // A UsdSkel stage: a SkelRoot per agent (tests/export/TestUsdExport reads it with tinyusdz).
+                const QStringList lines = readLines(QString::fromStdString(request.path));
+                QCOMPARE(lines.first(), QStringLiteral("#usda 1.0"));
+                QVERIFY(lines.contains("    endTimeCode = 48"));
+                for (const char* agent : {"agent_7_walker", "agent_42_runner", "agent_1000_walker"})
+                    QVERIFY2(lines.contains(QString("        def SkelRoot \"%1\" (").arg(agent)), agent);
             } else if (f.key == "csv") {
                 const QStringList lines = readLines(QString::fromStdString(request.path));
                 QCOMPARE(lines.size(), 1 + 3 * int(CrowdFixture::kFrames));

@@ -1,0 +1,514 @@
+#include "export/UsdExporter.h"
+
+#include "export/character/AgentVariation.h"
+#include "export/character/CharacterLibrary.h"
+#include "export/detail/AgentBake.h"
+#include "export/detail/ExportCancel.h"
+#include "export/detail/TextFields.h"
+#include "export/detail/UsdCharacter.h"
+#include "export/detail/UsdMaterials.h"
+#include "export/detail/UsdSet.h"
+#include "export/detail/UsdText.h"
+#include "simcore/base/AtomicFile.h"
+#include "simcore/base/ThreadTeam.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+#include <set>
+
+namespace throng::exporting {
+
+namespace {
+
+using detail::appendUsdFloat;
+using detail::appendUsdQuat;
+using detail::appendUsdVec3;
+using detail::indent;
+using detail::usdQuoted;
+
+constexpr float kUsdDegToRad = 3.14159265358979f / 180.0f;
+const std::string kCrowd = "/Crowd";
+const std::string kCharacters = kCrowd + "/Characters";
+const std::string kMaterials = kCrowd + "/Materials";
+
+std::string checkUsdInput(const sim::Scene& scene, const sim::FrameCache& cache, const UsdOptions& options)
+{
+    const std::string where = "cannot export '" + options.path + "': ";
+    if (options.path.empty())
+        return "cannot export: no output path given";
+    std::string suffix = std::filesystem::path(options.path).extension().string();
+    std::transform(suffix.begin(), suffix.end(), suffix.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    if (suffix != ".usda")
+        return where + "USD is written as text: the file must end in .usda";
+    if (cache.agentCount() == 0 || cache.frameCount() == 0)
+        return where + "nothing recorded (" + std::to_string(cache.agentCount()) + " agents, " +
+               std::to_string(cache.frameCount()) + " frames)";
+    if (!(cache.fps() > 0.0f) || !std::isfinite(cache.fps()))
+        return where + "the frame cache's fps (" + std::to_string(cache.fps()) + ") is not > 0";
+    if (options.jointFrameStep < 1)
+        return where + "the joint frame step must be at least 1";
+    if (!(options.positionToleranceM >= 0.0f) || !(options.rotationToleranceDeg >= 0.0f) ||
+        !(options.rootRotationToleranceDeg >= 0.0f))
+        return where + "key tolerances must be >= 0";
+    for (const sim::AgentInfo& agent : cache.agents())
+        if (agent.typeIndex >= scene.agentTypes.size())
+            return where + "agent " + std::to_string(agent.id) + " has type index " + std::to_string(agent.typeIndex) +
+                   " but the scene has " + std::to_string(scene.agentTypes.size()) + " agent types";
+    return {};
+}
+
+// Writes the agents, remembering which looks and materials they use.
+class AgentWriter {
+public:
+    AgentWriter(const sim::Scene& scene, const sim::FrameCache& cache, const CharacterLibrary& library,
+                std::uint64_t seed, const detail::JointClock& jointClock, detail::UsdMaterials& materials)
+        : m_scene(scene), m_cache(cache), m_library(library), m_seed(seed), m_jointClock(jointClock),
+          m_materials(materials)
+    {
+        std::set<std::string> taken;
+        for (std::size_t c = 0; c < library.characterCount(); ++c) {
+            std::string base = detail::usdIdentifier(library.character(c).name), name = base;
+            for (int k = 1; taken.count(name); ++k)
+                name = base + "_" + std::to_string(k);
+            taken.insert(name);
+            m_looks.push_back(detail::usdLookOf(library.character(c), name));
+        }
+        m_used.assign(library.characterCount(), false);
+    }
+
+    void write(std::string& out, std::size_t i, const detail::AgentWork& w);
+    // The looks some agent's variant set names, as class prims.
+    void writeCharacters(std::string& out, int depth);
+
+private:
+    std::string tintMaterial(std::size_t typeIndex, int tint);
+    std::string slotMaterial(MaterialSlot slot, std::size_t colour);
+    void writeLookVariant(std::string& out, int depth, std::size_t character, std::uint32_t id,
+                          const AgentVariation& v, const std::string& untinted);
+    void writeAnimation(std::string& out, int depth, const detail::AgentWork& w);
+
+    const sim::Scene& m_scene;
+    const sim::FrameCache& m_cache;
+    const CharacterLibrary& m_library;
+    std::uint64_t m_seed;
+    const detail::JointClock& m_jointClock;
+    detail::UsdMaterials& m_materials;
+    std::vector<detail::UsdLook> m_looks;
+    std::vector<bool> m_used;
+};
+
+std::string AgentWriter::tintMaterial(std::size_t typeIndex, int tint)
+{
+    const sim::AgentType& type = m_scene.agentTypes[typeIndex];
+    if (tint < 0)
+        return m_materials.path(type.name + "_colour", glm::vec3(untintedColour(typeIndex)));
+    const glm::vec3 rgb = glm::clamp(type.variation.tints[static_cast<std::size_t>(tint)], 0.0f, 1.0f);
+    return m_materials.path(type.name + "_tint" + std::to_string(tint), rgb);
+}
+
+std::string AgentWriter::slotMaterial(MaterialSlot slot, std::size_t colour)
+{
+    return m_materials.path(std::string(toString(slot)) + "_" + std::to_string(colour), slotPalette(slot)[colour],
+                            slot == MaterialSlot::Skin ? 0.55f : 0.8f);
+}
+
+void AgentWriter::writeLookVariant(std::string& out, int depth, std::size_t character, std::uint32_t id,
+                                   const AgentVariation& v, const std::string& untinted)
+{
+    const Character& c = m_library.character(character);
+    const detail::UsdLook& look = m_looks[character];
+    m_used[character] = true;
+    indent(out, depth);
+    out += usdQuoted(look.prim) + " {\n";
+    indent(out, depth + 1);
+    out += "over \"Character\" (\n";
+    indent(out, depth + 2);
+    out += "prepend references = <" + kCharacters + "/" + look.prim + ">\n";
+    indent(out, depth + 1);
+    out += ")\n";
+    indent(out, depth + 1);
+    out += "{\n";
+    const std::vector<MeshPart> parts = partsOf(c.mesh);
+    for (std::size_t p = 0; p < parts.size(); ++p) {
+        const MeshPart& part = parts[p];
+        const bool worn = wearsPart(part, m_seed, id);
+        const bool tinted = slotPalette(part.slot).empty();
+        if (worn && tinted && untinted.empty())
+            continue;  // the tint's variant binds it
+        indent(out, depth + 2);
+        out += "over " + usdQuoted(look.partNames[p]) + "\n";
+        indent(out, depth + 2);
+        out += "{\n";
+        indent(out, depth + 3);
+        if (!worn)
+            out += "token visibility = \"invisible\"\n";
+        else
+            out += "rel material:binding = <" +
+                   (tinted ? untinted
+                           : slotMaterial(part.slot, v.colour[static_cast<std::size_t>(part.slot)])) +
+                   ">\n";
+        indent(out, depth + 2);
+        out += "}\n";
+    }
+    indent(out, depth + 1);
+    out += "}\n";
+    indent(out, depth);
+    out += "}\n";
+}
+
+void AgentWriter::writeAnimation(std::string& out, int depth, const detail::AgentWork& w)
+{
+    const Character& c = m_library.character(w.character);
+    const detail::BakedJoints& b = w.joints;
+    const std::size_t keys = m_jointClock.frames.size(), joints = c.joints.size();
+    indent(out, depth);
+    out += "def SkelAnimation \"Anim\"\n";
+    indent(out, depth);
+    out += "{\n";
+    indent(out, depth + 1);
+    out += "uniform token[] joints = ";
+    detail::appendUsdJointTokens(out, m_looks[w.character]);
+    out += '\n';
+    // Joint 0 moves (the hips bob); the others keep their rest translation.
+    indent(out, depth + 1);
+    out += "float3[] translations.timeSamples = {\n";
+    for (const std::uint32_t k : b.rootKept) {
+        indent(out, depth + 2);
+        out += std::to_string(m_jointClock.frames[k]) + ": [";
+        for (std::size_t j = 0; j < joints; ++j) {
+            if (j)
+                out += ", ";
+            appendUsdVec3(out, j == 0 ? b.rootTranslation[k] : c.joints[j].restTranslation);
+        }
+        out += "],\n";
+    }
+    indent(out, depth + 1);
+    out += "}\n";
+    // A sample holds every joint: the keys any joint keeps.
+    std::vector<std::uint8_t> kept(keys, 0);
+    for (const std::vector<std::uint32_t>& joint : b.kept)
+        for (const std::uint32_t k : joint)
+            kept[k] = 1;
+    indent(out, depth + 1);
+    out += "quatf[] rotations.timeSamples = {\n";
+    for (std::size_t k = 0; k < keys; ++k) {
+        if (!kept[k])
+            continue;
+        indent(out, depth + 2);
+        out += std::to_string(m_jointClock.frames[k]) + ": [";
+        for (std::size_t j = 0; j < joints; ++j) {
+            if (j)
+                out += ", ";
+            appendUsdQuat(out, b.rotations[j * keys + k]);
+        }
+        out += "],\n";
+    }
+    indent(out, depth + 1);
+    out += "}\n";
+    indent(out, depth + 1);
+    out += "half3[] scales = [";
+    for (std::size_t j = 0; j < joints; ++j) {
+        if (j)
+            out += ", ";
+        appendUsdVec3(out, c.joints[j].restScale);
+    }
+    out += "]\n";
+    indent(out, depth);
+    out += "}\n";
+}
+
+void AgentWriter::write(std::string& out, std::size_t i, const detail::AgentWork& w)
+{
+    const sim::AgentInfo& info = m_cache.agents()[i];
+    const sim::AgentType& type = m_scene.agentTypes[info.typeIndex];
+    const Character& look = m_library.character(w.character);
+    const std::string name = "agent_" + std::to_string(info.id) + "_" + detail::usdIdentifier(type.name);
+    const std::string path = kCrowd + "/Agents/" + name;
+    const bool tints = !type.variation.tints.empty();
+    const std::size_t frames = m_cache.frameCount();
+    constexpr int d = 2;
+
+    indent(out, d);
+    out += "def SkelRoot " + usdQuoted(name) + " (\n";
+    indent(out, d + 1);
+    out += "prepend apiSchemas = [\"SkelBindingAPI\"]\n";
+    indent(out, d + 1);
+    out += "customData = {\n";
+    indent(out, d + 2);
+    out += "int agentId = " + std::to_string(info.id) + "\n";
+    indent(out, d + 2);
+    out += "string type = " + usdQuoted(type.name) + "\n";
+    indent(out, d + 2);
+    out += "string character = " + usdQuoted(look.name) + "\n";
+    indent(out, d + 2);
+    out += "int tint = " + std::to_string(w.variation.tint) + "\n";
+    indent(out, d + 2);
+    out += "float speedFactor = ";
+    detail::appendUsdRounded(out, w.variation.speedFactor, 5);
+    out += "\n";
+    indent(out, d + 2);
+    out += "float phaseOffset = ";
+    detail::appendUsdRounded(out, w.variation.phaseOffset, 5);
+    out += "\n";
+    indent(out, d + 1);
+    out += "}\n";
+    indent(out, d + 1);
+    out += "variants = {\n";
+    indent(out, d + 2);
+    out += "string look = " + usdQuoted(m_looks[w.character].prim) + "\n";
+    if (tints) {
+        indent(out, d + 2);
+        out += "string tint = \"tint" + std::to_string(std::max(w.variation.tint, 0)) + "\"\n";
+    }
+    indent(out, d + 1);
+    out += "}\n";
+    indent(out, d + 1);
+    out += tints ? "prepend variantSets = [\"look\", \"tint\"]\n" : "prepend variantSets = \"look\"\n";
+    indent(out, d);
+    out += ")\n";
+    indent(out, d);
+    out += "{\n";
+    indent(out, d + 1);
+    out += "rel skel:animationSource = <" + path + "/Anim>\n";
+    indent(out, d + 1);
+    out += "double3 xformOp:translate.timeSamples = {\n";
+    for (const std::uint32_t f : w.positionKept) {
+        indent(out, d + 2);
+        out += std::to_string(f) + ": ";
+        appendUsdVec3(out, w.positions[f]);
+        out += ",\n";
+    }
+    indent(out, d + 1);
+    out += "}\n";
+    indent(out, d + 1);
+    out += "quatf xformOp:orient.timeSamples = {\n";
+    for (const std::uint32_t f : w.yawKept) {
+        indent(out, d + 2);
+        out += std::to_string(f) + ": ";
+        appendUsdQuat(out, w.yaw[f]);
+        out += ",\n";
+    }
+    indent(out, d + 1);
+    out += "}\n";
+    indent(out, d + 1);
+    out += "float3 xformOp:scale = ";
+    appendUsdVec3(out, glm::vec3(w.variation.heightScale));
+    out += '\n';
+    indent(out, d + 1);
+    out += "uniform token[] xformOpOrder = [\"xformOp:translate\", \"xformOp:orient\", \"xformOp:scale\"]\n";
+    if (std::find(w.hidden.begin(), w.hidden.end(), 1) != w.hidden.end()) {
+        indent(out, d + 1);
+        out += "token visibility.timeSamples = {\n";
+        for (std::size_t f = 0; f < frames; ++f) {
+            if (f > 0 && w.hidden[f] == w.hidden[f - 1])
+                continue;
+            indent(out, d + 2);
+            out += std::to_string(f) + (w.hidden[f] ? ": \"invisible\",\n" : ": \"inherited\",\n");
+        }
+        indent(out, d + 1);
+        out += "}\n";
+    }
+    writeAnimation(out, d + 1, w);
+    indent(out, d + 1);
+    out += "def Xform \"Character\"\n";
+    indent(out, d + 1);
+    out += "{\n";
+    indent(out, d + 1);
+    out += "}\n";
+
+    const std::string untinted = tints ? std::string() : tintMaterial(info.typeIndex, -1);
+    indent(out, d + 1);
+    out += "variantSet \"look\" = {\n";
+    for (const std::size_t character : m_library.looksOf(info.typeIndex))
+        writeLookVariant(out, d + 2, character, info.id, w.variation, untinted);
+    indent(out, d + 1);
+    out += "}\n";
+    if (tints) {
+        indent(out, d + 1);
+        out += "variantSet \"tint\" = {\n";
+        for (std::size_t t = 0; t < type.variation.tints.size(); ++t) {
+            const std::string material = tintMaterial(info.typeIndex, static_cast<int>(t));
+            indent(out, d + 2);
+            out += "\"tint" + std::to_string(t) + "\" {\n";
+            indent(out, d + 3);
+            out += "over \"Character\"\n";
+            indent(out, d + 3);
+            out += "{\n";
+            // Every look's tinted parts: whichever look the other set chooses.
+            std::set<std::string> parts;
+            for (const std::size_t character : m_library.looksOf(info.typeIndex)) {
+                const std::vector<MeshPart> meshParts = partsOf(m_library.character(character).mesh);
+                for (std::size_t p = 0; p < meshParts.size(); ++p)
+                    if (slotPalette(meshParts[p].slot).empty() && wearsPart(meshParts[p], m_seed, info.id))
+                        parts.insert(m_looks[character].partNames[p]);
+            }
+            for (const std::string& part : parts) {
+                indent(out, d + 4);
+                out += "over " + usdQuoted(part) + "\n";
+                indent(out, d + 4);
+                out += "{\n";
+                indent(out, d + 5);
+                out += "rel material:binding = <" + material + ">\n";
+                indent(out, d + 4);
+                out += "}\n";
+            }
+            indent(out, d + 3);
+            out += "}\n";
+            indent(out, d + 2);
+            out += "}\n";
+        }
+        indent(out, d + 1);
+        out += "}\n";
+    }
+    indent(out, d);
+    out += "}\n";
+}
+
+void AgentWriter::writeCharacters(std::string& out, int depth)
+{
+    indent(out, depth);
+    out += "class Scope \"Characters\"\n";
+    indent(out, depth);
+    out += "{\n";
+    for (std::size_t c = 0; c < m_looks.size(); ++c) {
+        if (!m_used[c])
+            continue;
+        // Until an agent's variant binds its own: the first colour of each palette, grey tops.
+        std::vector<std::string> materials;
+        for (const MeshPart& part : partsOf(m_library.character(c).mesh))
+            materials.push_back(slotPalette(part.slot).empty()
+                                    ? m_materials.path("untinted", glm::vec3(0.6f))
+                                    : slotMaterial(part.slot, 0));
+        detail::writeUsdCharacter(out, depth + 1, m_library.character(c), m_looks[c],
+                                  kCharacters + "/" + m_looks[c].prim, materials);
+    }
+    indent(out, depth);
+    out += "}\n";
+}
+
+void writeHeader(std::string& out, const sim::FrameCache& cache, std::uint64_t seed, const UsdOptions& options)
+{
+    out += "#usda 1.0\n(\n";
+    out += "    defaultPrim = \"Crowd\"\n";
+    out += "    doc = \"A crowd written by Throng\"\n";
+    out += "    metersPerUnit = 1\n";
+    out += "    upAxis = \"Y\"\n";
+    out += "    startTimeCode = 0\n";
+    out += "    endTimeCode = " + std::to_string(cache.frameCount() - 1) + "\n";
+    out += "    timeCodesPerSecond = ";
+    appendUsdFloat(out, cache.fps());
+    out += "\n    framesPerSecond = ";
+    appendUsdFloat(out, cache.fps());
+    out += "\n    customLayerData = {\n";
+    out += "        string generator = \"Throng\"\n";
+    out += "        int agentCount = " + std::to_string(cache.agentCount()) + "\n";
+    out += "        int frameCount = " + std::to_string(cache.frameCount()) + "\n";
+    out += "        string seed = \"" + std::to_string(seed) + "\"\n";
+    out += "        int jointFrameStep = " + std::to_string(options.jointFrameStep) + "\n";
+    out += std::string("        bool set = ") + (options.includeSet ? "1" : "0") + "\n";
+    out += "    }\n)\n\n";
+    out += "def Xform \"Crowd\" (\n    kind = \"assembly\"\n)\n{\n";
+    const glm::dvec3 origin = cache.origin();
+    if (origin != glm::dvec3(0.0)) {
+        out += "    double3 xformOp:translate = (";
+        detail::appendUsdDouble(out, origin.x);
+        out += ", ";
+        detail::appendUsdDouble(out, origin.y);
+        out += ", ";
+        detail::appendUsdDouble(out, origin.z);
+        out += ")\n    uniform token[] xformOpOrder = [\"xformOp:translate\"]\n";
+    }
+}
+
+}  // namespace
+
+ExportResult exportUsd(const sim::Scene& scene, const sim::FrameCache& cache, const UsdOptions& options,
+                       const ProgressFn& progress)
+{
+    ExportResult result;
+    if (std::string error = checkUsdInput(scene, cache, options); !error.empty()) {
+        result.error = std::move(error);
+        return result;
+    }
+    if (detail::cancelledAt(progress, 0.0f))
+        return detail::cancelledExport(options.path);
+
+    std::vector<bool> typeUsed(scene.agentTypes.size(), false);
+    for (const sim::AgentInfo& agent : cache.agents())
+        typeUsed[agent.typeIndex] = true;
+    CharacterLibrary library;
+    library.setLod(options.lod);
+    if (std::string error = library.resolve(scene, options.sceneDirectory, typeUsed); !error.empty()) {
+        result.error = "cannot export '" + options.path + "': " + error;
+        return result;
+    }
+    const std::uint64_t seed = options.seed.value_or(scene.settings.seed);
+    const std::size_t frames = cache.frameCount(), agents = cache.agentCount();
+    std::vector<float> times(frames);
+    for (std::size_t f = 0; f < frames; ++f)
+        times[f] = static_cast<float>(static_cast<double>(f) / static_cast<double>(cache.fps()));
+    detail::JointClock jointClock;
+    for (std::size_t f = 0; f < frames; f += static_cast<std::size_t>(options.jointFrameStep))
+        jointClock.frames.push_back(static_cast<std::uint32_t>(f));
+    if (jointClock.frames.back() != frames - 1)
+        jointClock.frames.push_back(static_cast<std::uint32_t>(frames - 1));
+    for (const std::uint32_t f : jointClock.frames)
+        jointClock.clock.times.push_back(times[f]);
+    const detail::AgentBaker baker(scene, cache, library, seed, times, jointClock,
+                                   {.compact = false,
+                                    .positionToleranceM = options.positionToleranceM,
+                                    .rotationToleranceRad = options.rotationToleranceDeg * kUsdDegToRad,
+                                    .rootRotationToleranceRad = options.rootRotationToleranceDeg * kUsdDegToRad});
+
+    sim::AtomicFile file(options.path);
+    if (!file.open()) {
+        result.error = file.error();
+        return result;
+    }
+    auto flush = [&](std::string& text, bool always) {
+        if (always || text.size() >= detail::kFlushBytes) {
+            file.stream().write(text.data(), static_cast<std::streamsize>(text.size()));
+            text.clear();
+        }
+    };
+    std::string text;
+    writeHeader(text, cache, seed, options);
+    detail::UsdMaterials materials(kMaterials);
+    AgentWriter writer(scene, cache, library, seed, jointClock, materials);
+    text += "    def Xform \"Agents\"\n    {\n";
+
+    const sim::ThreadTeam team(options.threads);
+    constexpr std::size_t kBlock = 256;
+    std::vector<detail::AgentWork> work(kBlock);
+    for (std::size_t begin = 0; begin < agents; begin += kBlock) {
+        if (detail::cancelledAt(progress, 0.95f * static_cast<float>(begin) / static_cast<float>(agents)))
+            return detail::cancelledExport(options.path);
+        const std::size_t count = std::min(kBlock, agents - begin);
+        team.forEach(count, 4, [&](std::size_t k) { baker.prepare(begin + k, work[k], true); });
+        for (std::size_t k = 0; k < count; ++k) {
+            writer.write(text, begin + k, work[k]);
+            flush(text, false);
+        }
+    }
+    text += "    }\n";
+    writer.writeCharacters(text, 1);
+    if (options.includeSet)
+        detail::writeUsdSet(text, 1, kCrowd + "/Set", scene, glm::dvec2(cache.origin().x, cache.origin().z), frames,
+                            cache.fps(), options.firstFrame, materials);
+    if (!materials.empty())
+        materials.write(text, 1);
+    text += "}\n";
+    flush(text, true);
+    if (!file.commit()) {
+        result.error = file.error();
+        return result;
+    }
+    result.writtenPaths.push_back(options.path);
+    if (progress)
+        progress(1.0f);
+    return result;
+}
+
+}  // namespace throng::exporting

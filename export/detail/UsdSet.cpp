@@ -1,0 +1,208 @@
+#include "export/detail/UsdSet.h"
+
+#include "export/detail/UsdText.h"
+#include "export/set/SetSolids.h"
+#include "export/set/SetSurfaces.h"
+#include "simcore/scene/SceneOrigin.h"
+#include "simcore/scene/TerrainHeight.h"
+#include "simcore/traffic/LightPhase.h"
+
+#include <map>
+#include <tuple>
+#include <vector>
+
+namespace throng::exporting::detail {
+
+namespace {
+
+using ColourKey = std::tuple<float, float, float, bool>;
+
+// One Mesh of the triangles `vertices` (a triangle list), named `name`, bound to `material`.
+void writeTriangles(std::string& out, int depth, const std::string& name, const std::vector<const SolidVertex*>& vertices,
+                    const std::string& material, const std::string& specifier = "def Mesh")
+{
+    indent(out, depth);
+    out += specifier + " " + usdQuoted(name) + " (\n";
+    indent(out, depth + 1);
+    out += "prepend apiSchemas = [\"MaterialBindingAPI\"]\n";
+    indent(out, depth);
+    out += ")\n";
+    indent(out, depth);
+    out += "{\n";
+    indent(out, depth + 1);
+    out += "uniform token subdivisionScheme = \"none\"\n";
+    indent(out, depth + 1);
+    out += "uniform bool doubleSided = 1\n";  // the solids are wound either way
+    indent(out, depth + 1);
+    out += "int[] faceVertexCounts = [";
+    for (std::size_t t = 0; t < vertices.size() / 3; ++t)
+        out += t ? ", 3" : "3";
+    out += "]\n";
+    indent(out, depth + 1);
+    out += "int[] faceVertexIndices = [";
+    for (std::size_t k = 0; k < vertices.size(); ++k) {
+        if (k)
+            out += ", ";
+        out += std::to_string(k);
+    }
+    out += "]\n";
+    indent(out, depth + 1);
+    out += "point3f[] points = [";
+    for (std::size_t k = 0; k < vertices.size(); ++k) {
+        if (k)
+            out += ", ";
+        appendUsdVec3(out, vertices[k]->position);
+    }
+    out += "]\n";
+    indent(out, depth + 1);
+    out += "normal3f[] normals = [";
+    for (std::size_t k = 0; k < vertices.size(); ++k) {
+        if (k)
+            out += ", ";
+        appendUsdVec3(out, vertices[k]->normal);
+    }
+    out += "] (\n";
+    indent(out, depth + 2);
+    out += "interpolation = \"vertex\"\n";
+    indent(out, depth + 1);
+    out += ")\n";
+    indent(out, depth + 1);
+    out += "color3f[] primvars:displayColor = [";
+    appendUsdColour(out, glm::vec3(vertices.front()->colour));
+    out += "] (\n";
+    indent(out, depth + 2);
+    out += "interpolation = \"constant\"\n";
+    indent(out, depth + 1);
+    out += ")\n";
+    indent(out, depth + 1);
+    out += "rel material:binding = <" + material + ">\n";
+    indent(out, depth);
+    out += "}\n";
+}
+
+// The part `name` of `solids`: an Xform with a Mesh per colour. Nothing for no triangles.
+void writeSetPart(std::string& out, int depth, const std::string& name, const SolidMesh& solids, UsdMaterials& materials)
+{
+    std::map<ColourKey, std::vector<const SolidVertex*>> byColour;
+    for (const SolidVertex& v : solids.vertices())
+        byColour[std::make_tuple(v.colour.r, v.colour.g, v.colour.b, v.glow > 0.0f)].push_back(&v);
+    if (byColour.empty())
+        return;
+    indent(out, depth);
+    out += "def Xform " + usdQuoted(name) + "\n";
+    indent(out, depth);
+    out += "{\n";
+    int k = 0;
+    for (const auto& [key, vertices] : byColour) {
+        const auto [r, g, b, glow] = key;
+        std::string colourName = "set_";
+        appendUsdRounded(colourName, r, 3);
+        colourName += "_";
+        appendUsdRounded(colourName, g, 3);
+        colourName += "_";
+        appendUsdRounded(colourName, b, 3);
+        const std::string material = materials.path(colourName + (glow ? "_lit" : ""), {r, g, b}, 0.85f, glow);
+        writeTriangles(out, depth + 1, "colour" + std::to_string(k++), vertices, material);
+    }
+    indent(out, depth);
+    out += "}\n";
+}
+
+const char* lampName(sim::LightPhase lamp)
+{
+    return lamp == sim::LightPhase::Red ? "red" : lamp == sim::LightPhase::Yellow ? "yellow" : "green";
+}
+
+}  // namespace
+
+bool writeUsdSet(std::string& out, int depth, const std::string& path, const sim::Scene& original, glm::dvec2 origin,
+                 std::size_t frames, float fps, std::size_t firstFrame, UsdMaterials& materials)
+{
+    const sim::Scene scene = sim::shiftedScene(original, origin);
+    std::string body;
+    auto part = [&](const char* name, auto build) {
+        SolidMesh solids;
+        build(solids);
+        writeSetPart(body, depth + 1, name, solids, materials);
+    };
+    part("Ground", [&](SolidMesh& m) { SetSurfaces::addGround(scene, m); });
+    part("Lanes", [&](SolidMesh& m) { SetSurfaces::addLanes(scene, m); });
+    part("Crosswalks", [&](SolidMesh& m) { SetSurfaces::addCrosswalks(scene, m); });
+    part("Walls", [&](SolidMesh& m) { SetSolids::addWalls(scene, m); });
+    part("Obstacles", [&](SolidMesh& m) { SetSolids::addObstacles(scene, m); });
+    // The poles and heads with every lamp dark; each lamp lit on top of its dark self.
+    part("Lights", [&](SolidMesh& m) {
+        SetSolids::addLightPoles(scene, m);
+        SetSolids::addLamps(scene.trafficLights, scene.terrain, std::nullopt, m);
+    });
+    if (!scene.trafficLights.empty()) {
+        // One lit lamp of each colour about its own middle, as classes the lamps reference.
+        indent(body, depth + 1);
+        body += "class Scope \"LitLamps\"\n";
+        indent(body, depth + 1);
+        body += "{\n";
+        std::vector<SolidMesh> lit(SetSolids::kLamps.size());
+        for (std::size_t l = 0; l < SetSolids::kLamps.size(); ++l) {
+            const sim::LightPhase lamp = SetSolids::kLamps[l];
+            constexpr float kOver = 1.03f;  // just over the dark lamp
+            lit[l].addCylinder({0.0f, 0.0f}, SetSolids::kLampRadiusM * kOver, SetSolids::kHeadSegments,
+                               -SetSolids::kLampHalfHeightM * kOver, SetSolids::kLampHalfHeightM * kOver,
+                               SetSolids::lampColour(lamp), true, 1.0f);
+            std::vector<const SolidVertex*> vertices;
+            for (const SolidVertex& v : lit[l].vertices())
+                vertices.push_back(&v);
+            const glm::vec3 rgb(SetSolids::lampColour(lamp));
+            writeTriangles(body, depth + 2, lampName(lamp), vertices,
+                           materials.path(std::string("set_lamp_") + lampName(lamp), rgb, 0.85f, true), "class Mesh");
+        }
+        indent(body, depth + 1);
+        body += "}\n";
+        for (const sim::TrafficLight& light : scene.trafficLights) {
+            const float ground = sim::terrainHeight(scene.terrain, light.position.x, light.position.y);
+            for (const sim::LightPhase lamp : SetSolids::kLamps) {
+                indent(body, depth + 1);
+                body += "def Mesh " + usdQuoted("lamp_" + usdIdentifier(light.name) + "_" + lampName(lamp)) + " (\n";
+                indent(body, depth + 2);
+                body += "prepend references = <" + path + "/LitLamps/" + lampName(lamp) + ">\n";
+                indent(body, depth + 1);
+                body += ")\n";
+                indent(body, depth + 1);
+                body += "{\n";
+                indent(body, depth + 2);
+                body += "double3 xformOp:translate = ";
+                appendUsdVec3(body, {light.position.x, ground + SetSolids::lampHeightM(lamp), light.position.y});
+                body += "\n";
+                indent(body, depth + 2);
+                body += "uniform token[] xformOpOrder = [\"xformOp:translate\"]\n";
+                // Shown on the frames its phase lights it, else invisible.
+                indent(body, depth + 2);
+                body += "token visibility.timeSamples = {\n";
+                int shown = -1;
+                for (std::size_t f = 0; f < frames; ++f) {
+                    const bool on = sim::lightPhaseAt(light, double(firstFrame + f) / double(fps)) == lamp;
+                    if (shown == int(on))
+                        continue;
+                    shown = int(on);
+                    indent(body, depth + 3);
+                    body += std::to_string(f) + (on ? ": \"inherited\",\n" : ": \"invisible\",\n");
+                }
+                indent(body, depth + 2);
+                body += "}\n";
+                indent(body, depth + 1);
+                body += "}\n";
+            }
+        }
+    }
+    if (body.empty())
+        return false;
+    indent(out, depth);
+    out += "def Xform \"Set\"\n";
+    indent(out, depth);
+    out += "{\n";
+    out += body;
+    indent(out, depth);
+    out += "}\n";
+    return true;
+}
+
+}  // namespace throng::exporting::detail

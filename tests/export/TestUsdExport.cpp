@@ -1,0 +1,305 @@
+// The USD export (issue 28), read by an independent reader: tinyusdz (tests/tools/usd-check)
+// parses the .usda, composes its variants and references and converts it to its render
+// scene. What it finds is held against the trajectories CSV of the same recording: one
+// SkelRoot per agent, the shot's time codes and fps, every agent's root where the CSV puts
+// it on every frame it is there and invisible on the frames it is not, a skeleton and an
+// animation of the same joints, every mesh bound to a material, the set with its lamps.
+// A scene at 10^6 m reads back at 10^6 m; --no-set leaves the set out; bad paths fail with
+// a message and leave nothing behind.
+#include "ExternalReader.h"
+#include "TestRegistry.h"
+
+#include "export/TrajectoryCsv.h"
+#include "export/UsdExporter.h"
+#include "simcore/io/SceneIO.h"
+#include "simcore/world/World.h"
+
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <glm/vec3.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+using namespace throng;
+
+namespace {
+
+// A walled court of 40 m x 30 m with a lane, a crosswalk, a post, a light and twelve
+// walkers, eight heading for an exit that takes them out of the shot, four for a goal;
+// a second type with two tints. Everything shifted by `shift` metres.
+std::string court(double shift)
+{
+    auto at = [&](double x, double z) {
+        std::ostringstream s;
+        s.precision(12);
+        s << "[" << x + shift << ", " << z + shift << "]";
+        return s.str();
+    };
+    std::ostringstream y;
+    y << "throng: 1\nsettings: {fps: 12, duration: 10, seed: 3, bounds: {min: " << at(-20, -15) << ", max: "
+      << at(20, 15) << "}}\n"
+      << "agent_types:\n  - {name: walker, radius: 0.3}\n"
+      << "  - {name: visitor, radius: 0.3, variation: {tints: [[0.9, 0.1, 0.1], [0.1, 0.2, 0.9]]}}\n"
+      << "walls:\n  - {name: back, height: 2.5, points: [" << at(-12, -8) << ", " << at(12, -8) << "]}\n"
+      << "obstacles:\n  - {name: post, shape: circle, center: " << at(0, 4) << ", radius: 0.4}\n"
+      << "lanes:\n  - {name: road, points: [" << at(-18, 12) << ", " << at(18, 12) << "], width: 3.5}\n"
+      << "crosswalks:\n  - {name: zebra, from: " << at(-8, 10) << ", to: " << at(-8, 14) << ", width: 3}\n"
+      << "traffic_lights:\n  - {name: signal, green: 3, yellow: 1, red: 3, position: " << at(-10, 9) << "}\n"
+      << "goals:\n  - {name: door, position: " << at(8, 0) << ", radius: 1.5, exit: true}\n"
+      << "  - {name: bench, position: " << at(-8, 0) << ", radius: 1}\n"
+      << "groups:\n  - {name: leaving, type: walker, count: 8, rect: {min: " << at(-4, -3) << ", max: " << at(0, 3)
+      << "}, goal: door}\n"
+      << "  - {name: staying, type: visitor, count: 4, rect: {min: " << at(-3, -6) << ", max: " << at(1, -4)
+      << "}, goal: bench}\n";
+    return y.str();
+}
+
+struct Recorded {
+    sim::Scene scene;
+    sim::FrameCache cache;
+};
+
+Recorded record(double shift)
+{
+    Recorded r;
+    const sim::LoadResult loaded = sim::parseScene(court(shift), "court.yaml", "");
+    if (!loaded.ok() || !loaded.diagnostics.empty())
+        qFatal("%s", loaded.diagnostics[0].format().c_str());
+    r.scene = loaded.scene;
+    sim::World world(r.scene);
+    world.startRecording(r.cache);
+    std::vector<sim::AgentFrame> frame;
+    for (int f = 1; f < 120; ++f) {
+        world.step();
+        world.snapshot(frame);
+        r.cache.append(frame);
+    }
+    return r;
+}
+
+// The CSV's rows: agent id -> frame -> position (the scene's coordinates).
+std::map<int, std::map<int, glm::dvec3>> readCsv(const std::string& path)
+{
+    std::map<int, std::map<int, glm::dvec3>> rows;
+    std::ifstream in(path);
+    std::string line;
+    std::getline(in, line);
+    while (std::getline(in, line)) {
+        std::istringstream s(line);
+        std::string field[5];
+        for (std::string& f : field)
+            std::getline(s, f, ',');
+        rows[std::stoi(field[1])][std::stoi(field[0])] = {std::stod(field[2]), std::stod(field[3]),
+                                                          std::stod(field[4])};
+    }
+    return rows;
+}
+
+// A time-sampled value at time t: USD's linear interpolation, held before the first and after the last.
+glm::dvec3 sampleAt(const QJsonArray& samples, double t)
+{
+    auto value = [&](int k) {
+        const QJsonArray v = samples[k].toArray()[1].toArray();
+        return glm::dvec3(v[0].toDouble(), v[1].toDouble(), v[2].toDouble());
+    };
+    if (t <= samples[0].toArray()[0].toDouble())
+        return value(0);
+    for (int k = 1; k < samples.size(); ++k) {
+        const double t1 = samples[k].toArray()[0].toDouble();
+        if (t <= t1) {
+            const double t0 = samples[k - 1].toArray()[0].toDouble();
+            return value(k - 1) + (value(k) - value(k - 1)) * ((t - t0) / (t1 - t0));
+        }
+    }
+    return value(samples.size() - 1);
+}
+
+// The token in force at time t (held from its sample on); "inherited" before any.
+QString tokenAt(const QJsonArray& samples, double t)
+{
+    QString token = "inherited";
+    for (const QJsonValue& s : samples)
+        if (s.toArray()[0].toDouble() <= t)
+            token = s.toArray()[1].toString();
+    return token;
+}
+
+struct Read {
+    test::ExternalReaderRun run;
+    QJsonObject stage;
+};
+
+Read readUsd(const QString& path, const QTemporaryDir& dir)
+{
+    Read r;
+    const QString json = dir.filePath("usd-check.json");
+    r.run = test::runExternalReader("usd-check", {"--json-out", json, path});
+    QFile file(json);
+    if (file.open(QIODevice::ReadOnly))
+        r.stage = QJsonDocument::fromJson(file.readAll()).object();
+    return r;
+}
+
+}  // namespace
+
+class TestUsdExport : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase()
+    {
+        if (!QFile::exists(test::externalReaderPath("usd-check")))
+            QFAIL("tests/tools/usd-check is missing");
+    }
+
+    void tinyusdzReadsTheCrowdWhereTheCsvHasIt_data()
+    {
+        QTest::addColumn<double>("shift");
+        QTest::newRow("at the origin") << 0.0;
+        QTest::newRow("at 10^6 m") << 1.0e6;
+    }
+    void tinyusdzReadsTheCrowdWhereTheCsvHasIt()
+    {
+        QFETCH(double, shift);
+        QTemporaryDir dir;
+        const Recorded rec = record(shift);
+        const std::string csv = dir.filePath("court.csv").toStdString();
+        QVERIFY(exporting::writeTrajectoryCsv(rec.cache, csv).ok());
+        exporting::UsdOptions options;
+        options.path = dir.filePath("court.usda").toStdString();
+        const exporting::ExportResult result = exporting::exportUsd(rec.scene, rec.cache, options);
+        QVERIFY2(result.ok(), result.error.c_str());
+
+        const Read read = readUsd(QString::fromStdString(options.path), dir);
+        QVERIFY2(read.run.started && read.run.exitCode == 0, qPrintable(read.run.output.right(3000)));
+        const QJsonObject& s = read.stage;
+        QCOMPARE(s["agents"].toInt(), int(rec.cache.agentCount()));
+        QCOMPARE(s["startTimeCode"].toDouble(), 0.0);
+        QCOMPARE(s["endTimeCode"].toDouble(), double(rec.cache.frameCount() - 1));
+        QCOMPARE(s["timeCodesPerSecond"].toDouble(), 12.0);
+        QCOMPARE(s["framesPerSecond"].toDouble(), 12.0);
+        QCOMPARE(s["metersPerUnit"].toDouble(), 1.0);
+        QCOMPARE(s["upAxis"].toString(), QString("Y"));
+        QCOMPARE(s["defaultPrim"].toString(), QString("Crowd"));
+        // Every agent mesh wears a material; the set is there, a lamp per colour of the light.
+        QVERIFY(s["agentMeshes"].toInt() >= int(rec.cache.agentCount()));
+        QCOMPARE(s["unboundAgentMeshes"].toInt(), 0);
+        QVERIFY(s["setMeshes"].toInt() >= 6);
+        QCOMPARE(s["lamps"].toInt(), 3);
+        const QJsonArray origin = s["origin"].toArray();
+        QCOMPARE(origin[0].toDouble(), rec.cache.origin().x);
+        QCOMPARE(origin[2].toDouble(), rec.cache.origin().z);
+
+        const auto rows = readCsv(csv);
+        const glm::dvec3 o(origin[0].toDouble(), origin[1].toDouble(), origin[2].toDouble());
+        int left = 0, compared = 0;
+        double worst = 0.0;
+        for (const QJsonValue& v : s["agentList"].toArray()) {
+            const QJsonObject a = v.toObject();
+            const int id = a["name"].toString().section('_', 1, 1).toInt();
+            QVERIFY2(rows.count(id), qPrintable(a["name"].toString()));
+            const auto& frames = rows.at(id);
+            QCOMPARE(a["animJoints"].toInt(), a["skelJoints"].toInt());
+            QVERIFY(a["animJoints"].toInt() > 10);
+            // The render scene's evaluated root: the first frame's place.
+            const QJsonArray first = a["first"].toArray();
+            const glm::dvec3 at0(first[0].toDouble(), first[1].toDouble(), first[2].toDouble());
+            QVERIFY2(glm::length(at0 - frames.at(0)) < 1e-3,
+                     qPrintable(QString("%1 at frame 0: %2 %3").arg(a["name"].toString()).arg(at0.x).arg(at0.z)));
+            // Every frame: where the CSV has it, visible; out of the shot, invisible.
+            const QJsonArray translate = a["translate"].toArray(), visibility = a["visibility"].toArray();
+            bool gone = false;
+            for (std::size_t f = 0; f < rec.cache.frameCount(); ++f) {
+                const auto row = frames.find(int(f));
+                const QString shown = tokenAt(visibility, double(f));
+                if (row == frames.end()) {
+                    QCOMPARE(shown, QString("invisible"));
+                    gone = true;
+                    continue;
+                }
+                QVERIFY2(shown == "inherited", qPrintable(QString("%1 frame %2: %3").arg(a["name"].toString()).arg(f).arg(QJsonDocument(visibility).toJson(QJsonDocument::Compact).constData())));
+                const double error = glm::length(o + sampleAt(translate, double(f)) - row->second);
+                worst = std::max(worst, error);
+                ++compared;
+            }
+            left += gone ? 1 : 0;
+        }
+        QVERIFY2(worst < 1e-3, qPrintable(QString("worst root %1 m from the CSV").arg(worst)));
+        QVERIFY2(left >= 4, qPrintable(QString("%1 agents left through the door").arg(left)));
+        QVERIFY(compared > 1000);
+        qInfo("%d agent-frames within %.2g m of the CSV; %d agents left the shot", compared, worst, left);
+    }
+
+    void withoutTheSetTheCrowdStaysAsItWas()
+    {
+        QTemporaryDir dir;
+        const Recorded rec = record(0.0);
+        exporting::UsdOptions options;
+        options.path = dir.filePath("bare.usda").toStdString();
+        options.includeSet = false;
+        QVERIFY(exporting::exportUsd(rec.scene, rec.cache, options).ok());
+        const Read read = readUsd(QString::fromStdString(options.path), dir);
+        QVERIFY2(read.run.started && read.run.exitCode == 0, qPrintable(read.run.output.right(3000)));
+        QCOMPARE(read.stage["setMeshes"].toInt(), 0);
+        QCOMPARE(read.stage["lamps"].toInt(), 0);
+        QCOMPARE(read.stage["agents"].toInt(), int(rec.cache.agentCount()));
+    }
+
+    void eachAgentWearsItsLookAndTint()
+    {
+        QTemporaryDir dir;
+        const Recorded rec = record(0.0);
+        exporting::UsdOptions options;
+        options.path = dir.filePath("looks.usda").toStdString();
+        QVERIFY(exporting::exportUsd(rec.scene, rec.cache, options).ok());
+        QFile file(QString::fromStdString(options.path));
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        const QString text = QString::fromUtf8(file.readAll());
+        // Visitors have tints: a variant set of both, the drawn one selected; walkers none.
+        int visitors = 0;
+        for (const sim::AgentInfo& info : rec.cache.agents()) {
+            const QString name = QString("agent_%1_%2").arg(info.id).arg(info.typeIndex ? "visitor" : "walker");
+            const qsizetype at = text.indexOf("def SkelRoot \"" + name + "\"");
+            QVERIFY2(at >= 0, qPrintable(name));
+            const QString agent = text.mid(at, text.indexOf("def SkelRoot", at + 10) - at);
+            QVERIFY(agent.contains("variantSet \"look\""));
+            if (info.typeIndex == 0) {
+                QVERIFY(!agent.contains("variantSet \"tint\""));
+                continue;
+            }
+            ++visitors;
+            QVERIFY(agent.contains("\"tint0\" {") && agent.contains("\"tint1\" {"));
+            QVERIFY(agent.contains("</Crowd/Materials/visitor_tint0>") && agent.contains("</Crowd/Materials/visitor_tint1>"));
+        }
+        QCOMPARE(visitors, 4);
+        QVERIFY(text.contains("def Material \"visitor_tint1\""));
+        QVERIFY(text.contains("color3f inputs:diffuseColor = (0.1, 0.2, 0.9)"));
+    }
+
+    void badPathsFailWithAMessageAndLeaveNothing()
+    {
+        QTemporaryDir dir;
+        const Recorded rec = record(0.0);
+        exporting::UsdOptions options;
+        options.path = dir.filePath("crowd.usd").toStdString();
+        exporting::ExportResult r = exporting::exportUsd(rec.scene, rec.cache, options);
+        QVERIFY(!r.ok());
+        QVERIFY2(r.error.find("crowd.usd") != std::string::npos && r.error.find(".usda") != std::string::npos,
+                 r.error.c_str());
+        options.path = dir.filePath("no/such/dir/crowd.usda").toStdString();
+        r = exporting::exportUsd(rec.scene, rec.cache, options);
+        QVERIFY(!r.ok());
+        QVERIFY2(r.error.find("crowd.usda") != std::string::npos, r.error.c_str());
+        QCOMPARE(QDir(dir.path()).entryList(QDir::NoDotAndDotDot | QDir::AllEntries).size(), 0);
+    }
+};
+
+THRONG_REGISTER_TEST(TestUsdExport)
+#include "TestUsdExport.moc"
