@@ -1,6 +1,7 @@
 #include "export/ExportFormats.h"
 
 #include "export/AgentTextCache.h"
+#include "export/FbxExporter.h"
 #include "export/GltfExporter.h"
 #include "export/PedPyExport.h"
 #include "export/TrajectoryCsv.h"
@@ -44,6 +45,21 @@ ExportResult writeUsd(const sim::Scene& scene, const sim::FrameCache& cache, con
     options.includeSet = request.includeSet;
     options.firstFrame = request.firstFrame;
     return exportUsd(scene, cache, options, progress);
+}
+
+ExportResult writeFbx(const sim::Scene& scene, const sim::FrameCache& cache, const ExportRequest& request,
+                      const ProgressFn& progress)
+{
+    FbxOptions options;
+    options.path = request.path;
+    options.sceneDirectory = request.sceneDirectory;
+    options.seed = request.seed;
+    options.jointFrameStep = request.jointFrameStep;
+    options.lod = request.lod;
+    options.threads = request.threads;
+    options.includeSet = request.includeSet;
+    options.firstFrame = request.firstFrame;
+    return exportFbx(scene, cache, options, progress);
 }
 
 ExportResult writeCsv(const sim::Scene&, const sim::FrameCache& cache, const ExportRequest& request,
@@ -102,6 +118,11 @@ const std::vector<ExportFormat>& exportFormats()
          .suffixes = {".usda"},
          .writesSet = true,
          .write = writeUsd},
+        {.key = "fbx",
+         .label = "FBX skinned crowd (.fbx)",
+         .suffixes = {".fbx"},
+         .writesSet = true,
+         .write = writeFbx},
         {.key = "csv", .label = "Trajectories CSV (.csv)", .suffixes = {".csv"}, .write = writeCsv},
         {.key = "pedpy",
          .label = "PedPy trajectories of the walkers (.txt, the set beside it as .wkt)",

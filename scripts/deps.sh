@@ -5,7 +5,7 @@ set -euo pipefail
 
 packages=(g++ cmake ninja-build pkg-config ccache
           qt6-base-dev qt6-base-dev-tools libqt6opengl6-dev qt6-svg-dev libqt6svg6 qt6-charts-dev
-          libyaml-cpp-dev libglm-dev libtinygltf-dev libeigen3-dev libtbb-dev
+          libyaml-cpp-dev libglm-dev libtinygltf-dev libassimp-dev libeigen3-dev libtbb-dev
           libgl-dev libgl1-mesa-dri libglx-mesa0)
 if [ "${1:-build}" = test ]; then
   packages+=(xvfb xauth)

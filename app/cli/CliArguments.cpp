@@ -63,10 +63,10 @@ std::string usageText()
            formatLines() +
            "      --export-mode exact|compact  glTF: bake every agent's joints (default), or share one\n"
            "                              cycle per look (joint data ~13x smaller; docs/export.md)\n"
-           "      --export-joint-step N   glTF (exact) and USD: bake joints every N-th frame (default 1)\n"
-           "      --export-lod near|mid|far  glTF, USD: the built-in characters' detail (default near,\n"
+           "      --export-joint-step N   glTF (exact), USD, FBX: bake joints every N-th frame (default 1)\n"
+           "      --export-lod near|mid|far  glTF, USD, FBX: the built-in characters' detail (default near,\n"
            "                              about 6,600 triangles a body; mid 2,300; far 1,000)\n"
-           "      --no-set                glTF, USD: the crowd alone, without the set (ground, lanes,\n"
+           "      --no-set                glTF, USD, FBX: the crowd alone, without the set (ground, lanes,\n"
            "                              crosswalks, walls, obstacles, traffic lights)\n"
            "      --maya-cache DIR        write the " +
            exporting::formatByKey("maya-cache")->label +

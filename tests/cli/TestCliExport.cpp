@@ -82,7 +82,7 @@ private slots:
         const std::string message = "throng-cli: --export " + xyz + ": unknown format '.xyz' (known: " +
                                     throng::exporting::knownPathForms() + ")";
         QVERIFY2(r.err.rfind(message, 0) == 0, r.err.c_str());
-        QVERIFY(throng::exporting::knownPathForms().find(".glb, .gltf, .csv") != std::string::npos);
+        QVERIFY(throng::exporting::knownPathForms().find(".glb, .gltf, .usda, .fbx, .csv") != std::string::npos);
         QVERIFY(r.out.empty());
         QCOMPARE(entries(tmp.path()), QStringList{"s.yaml"});
     }

@@ -13,6 +13,9 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <assimp/Importer.hpp>
+#include <assimp/scene.h>
+
 #include <cmath>
 #include <set>
 
@@ -84,10 +87,11 @@ private slots:
         QCOMPARE(exporting::formatForPath("out.xyz"), nullptr);
         QCOMPARE(exporting::formatForPath("out"), nullptr);
         QCOMPARE(exporting::formatForPath(""), nullptr);
-        QCOMPARE(exporting::formatByKey("fbx"), nullptr);
+        QCOMPARE(exporting::formatByKey("abc"), nullptr);
+        QCOMPARE(exporting::formatForPath("crowd.FBX"), exporting::formatByKey("fbx"));
         QCOMPARE(exporting::formatForPath("walkers.TXT"), exporting::formatByKey("pedpy"));
         QCOMPARE(exporting::formatForPath("shot.USDA"), exporting::formatByKey("usd"));
-        QCOMPARE(exporting::knownPathForms(), std::string(".glb, .gltf, .usda, .csv, .txt, DIR/"));
+        QCOMPARE(exporting::knownPathForms(), std::string(".glb, .gltf, .usda, .fbx, .csv, .txt, DIR/"));
     }
 
     // Each row writes the fixture's 3 agents x 49 frames; a row without a check here fails,
@@ -118,6 +122,14 @@ private slots:
                 QVERIFY(lines.contains("    endTimeCode = 48"));
                 for (const char* agent : {"agent_7_walker", "agent_42_runner", "agent_1000_walker"})
                     QVERIFY2(lines.contains(QString("        def SkelRoot \"%1\" (").arg(agent)), agent);
+            } else if (f.key == "fbx") {
+                // assimp reads it back: an agent node each, one animation (tests/export/TestFbxExport).
+                Assimp::Importer importer;
+                const aiScene* scene = importer.ReadFile(request.path, 0);
+                QVERIFY2(scene, importer.GetErrorString());
+                QCOMPARE(scene->mNumAnimations, 1u);
+                for (const char* agent : {"agent_7_walker", "agent_42_runner", "agent_1000_walker"})
+                    QVERIFY2(scene->mRootNode->FindNode(agent), agent);
             } else if (f.key == "csv") {
                 const QStringList lines = readLines(QString::fromStdString(request.path));
                 QCOMPARE(lines.size(), 1 + 3 * int(CrowdFixture::kFrames));

@@ -6,13 +6,12 @@
 // animation of the same joints, every mesh bound to a material, the set with its lamps.
 // A scene at 10^6 m reads back at 10^6 m; --no-set leaves the set out; bad paths fail with
 // a message and leave nothing behind.
+#include "CourtFixture.h"
 #include "ExternalReader.h"
 #include "TestRegistry.h"
 
 #include "export/TrajectoryCsv.h"
 #include "export/UsdExporter.h"
-#include "simcore/io/SceneIO.h"
-#include "simcore/world/World.h"
 
 #include <QFile>
 #include <QJsonArray>
@@ -31,77 +30,6 @@
 using namespace throng;
 
 namespace {
-
-// A walled court of 40 m x 30 m with a lane, a crosswalk, a post, a light and twelve
-// walkers, eight heading for an exit that takes them out of the shot, four for a goal;
-// a second type with two tints. Everything shifted by `shift` metres.
-std::string court(double shift)
-{
-    auto at = [&](double x, double z) {
-        std::ostringstream s;
-        s.precision(12);
-        s << "[" << x + shift << ", " << z + shift << "]";
-        return s.str();
-    };
-    std::ostringstream y;
-    y << "throng: 1\nsettings: {fps: 12, duration: 10, seed: 3, bounds: {min: " << at(-20, -15) << ", max: "
-      << at(20, 15) << "}}\n"
-      << "agent_types:\n  - {name: walker, radius: 0.3}\n"
-      << "  - {name: visitor, radius: 0.3, variation: {tints: [[0.9, 0.1, 0.1], [0.1, 0.2, 0.9]]}}\n"
-      << "walls:\n  - {name: back, height: 2.5, points: [" << at(-12, -8) << ", " << at(12, -8) << "]}\n"
-      << "obstacles:\n  - {name: post, shape: circle, center: " << at(0, 4) << ", radius: 0.4}\n"
-      << "lanes:\n  - {name: road, points: [" << at(-18, 12) << ", " << at(18, 12) << "], width: 3.5}\n"
-      << "crosswalks:\n  - {name: zebra, from: " << at(-8, 10) << ", to: " << at(-8, 14) << ", width: 3}\n"
-      << "traffic_lights:\n  - {name: signal, green: 3, yellow: 1, red: 3, position: " << at(-10, 9) << "}\n"
-      << "goals:\n  - {name: door, position: " << at(8, 0) << ", radius: 1.5, exit: true}\n"
-      << "  - {name: bench, position: " << at(-8, 0) << ", radius: 1}\n"
-      << "groups:\n  - {name: leaving, type: walker, count: 8, rect: {min: " << at(-4, -3) << ", max: " << at(0, 3)
-      << "}, goal: door}\n"
-      << "  - {name: staying, type: visitor, count: 4, rect: {min: " << at(-3, -6) << ", max: " << at(1, -4)
-      << "}, goal: bench}\n";
-    return y.str();
-}
-
-struct Recorded {
-    sim::Scene scene;
-    sim::FrameCache cache;
-};
-
-Recorded record(double shift)
-{
-    Recorded r;
-    const sim::LoadResult loaded = sim::parseScene(court(shift), "court.yaml", "");
-    if (!loaded.ok() || !loaded.diagnostics.empty())
-        qFatal("%s", loaded.diagnostics[0].format().c_str());
-    r.scene = loaded.scene;
-    sim::World world(r.scene);
-    world.startRecording(r.cache);
-    std::vector<sim::AgentFrame> frame;
-    for (int f = 1; f < 120; ++f) {
-        world.step();
-        world.snapshot(frame);
-        r.cache.append(frame);
-    }
-    return r;
-}
-
-// The CSV's rows: agent id -> frame -> position (the scene's coordinates).
-std::map<int, std::map<int, glm::dvec3>> readCsv(const std::string& path)
-{
-    std::map<int, std::map<int, glm::dvec3>> rows;
-    std::ifstream in(path);
-    std::string line;
-    std::getline(in, line);
-    while (std::getline(in, line)) {
-        std::istringstream s(line);
-        std::string field[5];
-        for (std::string& f : field)
-            std::getline(s, f, ',');
-        rows[std::stoi(field[1])][std::stoi(field[0])] = {std::stod(field[2]), std::stod(field[3]),
-                                                          std::stod(field[4])};
-    }
-    return rows;
-}
 
 // A time-sampled value at time t: USD's linear interpolation, held before the first and after the last.
 glm::dvec3 sampleAt(const QJsonArray& samples, double t)
@@ -169,7 +97,7 @@ private slots:
     {
         QFETCH(double, shift);
         QTemporaryDir dir;
-        const Recorded rec = record(shift);
+        const test::CourtShot rec = test::recordCourt(shift);
         const std::string csv = dir.filePath("court.csv").toStdString();
         QVERIFY(exporting::writeTrajectoryCsv(rec.cache, csv).ok());
         exporting::UsdOptions options;
@@ -197,7 +125,7 @@ private slots:
         QCOMPARE(origin[0].toDouble(), rec.cache.origin().x);
         QCOMPARE(origin[2].toDouble(), rec.cache.origin().z);
 
-        const auto rows = readCsv(csv);
+        const auto rows = test::readTrajectoryRows(csv);
         const glm::dvec3 o(origin[0].toDouble(), origin[1].toDouble(), origin[2].toDouble());
         int left = 0, compared = 0;
         double worst = 0.0;
@@ -240,7 +168,7 @@ private slots:
     void withoutTheSetTheCrowdStaysAsItWas()
     {
         QTemporaryDir dir;
-        const Recorded rec = record(0.0);
+        const test::CourtShot rec = test::recordCourt(0.0);
         exporting::UsdOptions options;
         options.path = dir.filePath("bare.usda").toStdString();
         options.includeSet = false;
@@ -255,7 +183,7 @@ private slots:
     void eachAgentWearsItsLookAndTint()
     {
         QTemporaryDir dir;
-        const Recorded rec = record(0.0);
+        const test::CourtShot rec = test::recordCourt(0.0);
         exporting::UsdOptions options;
         options.path = dir.filePath("looks.usda").toStdString();
         QVERIFY(exporting::exportUsd(rec.scene, rec.cache, options).ok());
@@ -286,7 +214,7 @@ private slots:
     void badPathsFailWithAMessageAndLeaveNothing()
     {
         QTemporaryDir dir;
-        const Recorded rec = record(0.0);
+        const test::CourtShot rec = test::recordCourt(0.0);
         exporting::UsdOptions options;
         options.path = dir.filePath("crowd.usd").toStdString();
         exporting::ExportResult r = exporting::exportUsd(rec.scene, rec.cache, options);
