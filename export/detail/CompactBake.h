@@ -12,6 +12,7 @@
 #include "export/character/Gait.h"
 #include "export/detail/AgentRig.h"
 #include "export/detail/AnimationChannels.h"
+#include "export/detail/CompactPlanner.h"
 
 #include <glm/vec3.hpp>
 
@@ -21,20 +22,19 @@
 
 namespace throng::exporting::detail {
 
-struct CompactPlan {
-    std::size_t character = 0;
-    int clip = -1;           // -1: holds the still pose; 0: walk; 1: run; with a gait ladder, its rung
-    std::size_t first = 0;   // window start in the cycle bank, samples
-    std::vector<float> times;  // one per window sample, s, strictly increasing
-};
-
 class CompactCycles {
 public:
-    CompactCycles(GltfBuilder& builder, const CharacterLibrary& library) : m_builder(builder), m_library(library) {}
+    CompactCycles(GltfBuilder& builder, const CharacterLibrary& library)
+        : m_builder(builder), m_library(library), m_planner(library)
+    {
+    }
 
     // Pass 1, agent by agent: which clip and window it reads.
     CompactPlan plan(std::size_t character, std::span<const glm::vec3> positions, const std::vector<GaitFrame>& gait,
-                     const AgentVariation& variation, float fps);
+                     const AgentVariation& variation, float fps)
+    {
+        return m_planner.plan(character, positions, gait, variation, fps);
+    }
     // Between the passes: writes every bank the plans need.
     void writeBanks();
     // Pass 2: the agent's joint channels as windows into the banks.
@@ -51,10 +51,10 @@ private:
         std::vector<int> rotation;
         int rootTranslation = -1;
     };
-    const CycleClip& clipOf(std::size_t character, int clip) const;
     const Still& stillOf(std::size_t character);
     GltfBuilder& m_builder;
     const CharacterLibrary& m_library;
+    CompactPlanner m_planner;
     std::map<std::pair<std::size_t, int>, Bank> m_banks;
     std::map<std::size_t, Still> m_still;
 };
