@@ -37,6 +37,7 @@ ExportResult writeUsd(const sim::Scene& scene, const sim::FrameCache& cache, con
 {
     UsdOptions options;
     options.path = request.path;
+    options.compact = request.jointBake == JointBake::Compact;
     options.sceneDirectory = request.sceneDirectory;
     options.seed = request.seed;
     options.jointFrameStep = request.jointFrameStep;

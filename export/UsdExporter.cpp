@@ -5,16 +5,20 @@
 #include "export/detail/AgentBake.h"
 #include "export/detail/ExportCancel.h"
 #include "export/detail/TextFields.h"
+#include "export/detail/UsdAnimation.h"
 #include "export/detail/UsdCharacter.h"
 #include "export/detail/UsdMaterials.h"
 #include "export/detail/UsdSet.h"
 #include "export/detail/UsdText.h"
-#include "simcore/base/AtomicFile.h"
+#include "export/detail/StagingDirectory.h"
 #include "simcore/base/ThreadTeam.h"
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
+#include <fstream>
 #include <filesystem>
 #include <set>
 
@@ -59,6 +63,17 @@ std::string checkUsdInput(const sim::Scene& scene, const sim::FrameCache& cache,
     return {};
 }
 
+// The clips layer's file name beside the stage: its stem and ".clips.usda", keeping only
+// [A-Za-z0-9._~-] (the stage names it in an asset path).
+std::string usdClipsFileName(const std::string& stagePath)
+{
+    std::string name = std::filesystem::path(stagePath).stem().string() + ".clips.usda";
+    for (char& c : name)
+        if (!std::isalnum(static_cast<unsigned char>(c)) && c != '.' && c != '_' && c != '~' && c != '-')
+            c = '_';
+    return name;
+}
+
 // Writes the agents, remembering which looks and materials they use.
 class AgentWriter {
 public:
@@ -78,7 +93,13 @@ public:
         m_used.assign(library.characterCount(), false);
     }
 
+    // compact: the agents' animations read shared cycles from this clips layer ("./x.clips.usda").
+    void shareCycles(const std::string& clipsAsset)
+    {
+        m_cycles = std::make_unique<detail::UsdSharedCycles>(m_library, clipsAsset, m_cache.fps());
+    }
     void write(std::string& out, std::size_t i, const detail::AgentWork& w);
+    void writeClipsLayer(std::string& out) const { m_cycles->writeClipsLayer(out, m_looks); }
     // The looks some agent's variant set names, as class prims.
     void writeCharacters(std::string& out, int depth);
 
@@ -87,7 +108,6 @@ private:
     std::string slotMaterial(MaterialSlot slot, std::size_t colour);
     void writeLookVariant(std::string& out, int depth, std::size_t character, std::uint32_t id,
                           const AgentVariation& v, const std::string& untinted);
-    void writeAnimation(std::string& out, int depth, const detail::AgentWork& w);
 
     const sim::Scene& m_scene;
     const sim::FrameCache& m_cache;
@@ -97,6 +117,7 @@ private:
     detail::UsdMaterials& m_materials;
     std::vector<detail::UsdLook> m_looks;
     std::vector<bool> m_used;
+    std::unique_ptr<detail::UsdSharedCycles> m_cycles;  // compact; none: each agent's joints baked
 };
 
 std::string AgentWriter::tintMaterial(std::size_t typeIndex, int tint)
@@ -154,67 +175,6 @@ void AgentWriter::writeLookVariant(std::string& out, int depth, std::size_t char
     }
     indent(out, depth + 1);
     out += "}\n";
-    indent(out, depth);
-    out += "}\n";
-}
-
-void AgentWriter::writeAnimation(std::string& out, int depth, const detail::AgentWork& w)
-{
-    const Character& c = m_library.character(w.character);
-    const detail::BakedJoints& b = w.joints;
-    const std::size_t keys = m_jointClock.frames.size(), joints = c.joints.size();
-    indent(out, depth);
-    out += "def SkelAnimation \"Anim\"\n";
-    indent(out, depth);
-    out += "{\n";
-    indent(out, depth + 1);
-    out += "uniform token[] joints = ";
-    detail::appendUsdJointTokens(out, m_looks[w.character]);
-    out += '\n';
-    // Joint 0 moves (the hips bob); the others keep their rest translation.
-    indent(out, depth + 1);
-    out += "float3[] translations.timeSamples = {\n";
-    for (const std::uint32_t k : b.rootKept) {
-        indent(out, depth + 2);
-        out += std::to_string(m_jointClock.frames[k]) + ": [";
-        for (std::size_t j = 0; j < joints; ++j) {
-            if (j)
-                out += ", ";
-            appendUsdVec3(out, j == 0 ? b.rootTranslation[k] : c.joints[j].restTranslation);
-        }
-        out += "],\n";
-    }
-    indent(out, depth + 1);
-    out += "}\n";
-    // A sample holds every joint: the keys any joint keeps.
-    std::vector<std::uint8_t> kept(keys, 0);
-    for (const std::vector<std::uint32_t>& joint : b.kept)
-        for (const std::uint32_t k : joint)
-            kept[k] = 1;
-    indent(out, depth + 1);
-    out += "quatf[] rotations.timeSamples = {\n";
-    for (std::size_t k = 0; k < keys; ++k) {
-        if (!kept[k])
-            continue;
-        indent(out, depth + 2);
-        out += std::to_string(m_jointClock.frames[k]) + ": [";
-        for (std::size_t j = 0; j < joints; ++j) {
-            if (j)
-                out += ", ";
-            appendUsdQuat(out, b.rotations[j * keys + k]);
-        }
-        out += "],\n";
-    }
-    indent(out, depth + 1);
-    out += "}\n";
-    indent(out, depth + 1);
-    out += "half3[] scales = [";
-    for (std::size_t j = 0; j < joints; ++j) {
-        if (j)
-            out += ", ";
-        appendUsdVec3(out, c.joints[j].restScale);
-    }
-    out += "]\n";
     indent(out, depth);
     out += "}\n";
 }
@@ -310,7 +270,10 @@ void AgentWriter::write(std::string& out, std::size_t i, const detail::AgentWork
         indent(out, d + 1);
         out += "}\n";
     }
-    writeAnimation(out, d + 1, w);
+    if (m_cycles)
+        m_cycles->writeAnimation(out, d + 1, w, m_looks[w.character]);
+    else
+        detail::writeBakedAnimation(out, d + 1, look, m_looks[w.character], m_jointClock, w.joints);
     indent(out, d + 1);
     out += "def Xform \"Character\"\n";
     indent(out, d + 1);
@@ -457,19 +420,23 @@ ExportResult exportUsd(const sim::Scene& scene, const sim::FrameCache& cache, co
     for (const std::uint32_t f : jointClock.frames)
         jointClock.clock.times.push_back(times[f]);
     const detail::AgentBaker baker(scene, cache, library, seed, times, jointClock,
-                                   {.compact = false,
+                                   {.compact = options.compact,
                                     .positionToleranceM = options.positionToleranceM,
                                     .rotationToleranceRad = options.rotationToleranceDeg * kUsdDegToRad,
                                     .rootRotationToleranceRad = options.rootRotationToleranceDeg * kUsdDegToRad});
 
-    sim::AtomicFile file(options.path);
-    if (!file.open()) {
-        result.error = file.error();
+    // The stage, and in compact mode the clips layer beside it, are written in full in a
+    // staging folder beside the target, then renamed in: the clips first.
+    detail::StagingDirectory staging(options.path);
+    if (!staging.create()) {
+        result.error = staging.error();
         return result;
     }
+    const std::string clipsName = usdClipsFileName(options.path);
+    std::ofstream file(staging.filePath("stage.usda"), std::ios::binary);
     auto flush = [&](std::string& text, bool always) {
         if (always || text.size() >= detail::kFlushBytes) {
-            file.stream().write(text.data(), static_cast<std::streamsize>(text.size()));
+            file.write(text.data(), static_cast<std::streamsize>(text.size()));
             text.clear();
         }
     };
@@ -477,6 +444,8 @@ ExportResult exportUsd(const sim::Scene& scene, const sim::FrameCache& cache, co
     writeHeader(text, cache, seed, options);
     detail::UsdMaterials materials(kMaterials);
     AgentWriter writer(scene, cache, library, seed, jointClock, materials);
+    if (options.compact)
+        writer.shareCycles("./" + clipsName);
     text += "    def Xform \"Agents\"\n    {\n";
 
     const sim::ThreadTeam team(options.threads);
@@ -501,10 +470,30 @@ ExportResult exportUsd(const sim::Scene& scene, const sim::FrameCache& cache, co
         materials.write(text, 1);
     text += "}\n";
     flush(text, true);
-    if (!file.commit()) {
-        result.error = file.error();
+    file.close();
+    std::string clipsPath;
+    if (options.compact) {
+        std::string clips;
+        writer.writeClipsLayer(clips);
+        std::ofstream out(staging.filePath("clips.usda"), std::ios::binary);
+        out.write(clips.data(), static_cast<std::streamsize>(clips.size()));
+        if (!out.flush()) {
+            result.error = "cannot write '" + options.path + "': " + std::strerror(errno);
+            return result;
+        }
+        clipsPath = (std::filesystem::path(options.path).parent_path() / clipsName).string();
+    }
+    if (!file) {
+        result.error = "cannot write '" + options.path + "': " + std::strerror(errno);
         return result;
     }
+    if (!staging.syncToDisk() || (options.compact && !staging.publish("clips.usda", clipsPath)) ||
+        !staging.publish("stage.usda", options.path)) {
+        result.error = staging.error();
+        return result;
+    }
+    if (options.compact)
+        result.writtenPaths.push_back(clipsPath);
     result.writtenPaths.push_back(options.path);
     if (progress)
         progress(1.0f);

@@ -21,7 +21,8 @@ struct UsdOptions {
     Lod lod = Lod::Near;                 // how fine the built-in characters' meshes are
     std::string sceneDirectory;          // where relative character file paths are resolved; empty = cwd
     std::optional<std::uint64_t> seed;   // variation seed; default: the scene's settings.seed
-    int jointFrameStep = 1;              // bake joints every N-th frame (and the last), >= 1
+    int jointFrameStep = 1;              // exact: bake joints every N-th frame (and the last), >= 1
+    bool compact = false;                // the looks' cycles shared in a clips layer beside the stage
     float positionToleranceM = 0.0005f;  // keys this close to their interpolation are dropped, m, >= 0
     float rotationToleranceDeg = 0.2f;   // joint rotations, degrees, >= 0
     float rootRotationToleranceDeg = 0.05f;
@@ -38,7 +39,9 @@ struct UsdOptions {
 //   +Y by the heading, the character's nose on +X) and scale (its height); visibility
 //   time samples when it leaves through an exit or is not present; customData with its
 //   id, type, character and variation; skel:animationSource its child `Anim`, a
-//   SkelAnimation with every joint's rotations and translations; a child `Character` that
+//   SkelAnimation with every joint's rotations and translations (compact: a value clip
+//   into its look's cycle in the clips layer `<stem>.clips.usda` beside the stage, which
+//   the export writes too); a child `Character` that
 //   the variant set `look` (one variant per look of its type) makes a reference to the
 //   look, binding its colours and hiding the accessories it does not wear; and, for a
 //   type with tints, a variant set `tint` binding its top's material;

@@ -61,7 +61,7 @@ std::string usageText()
            "      --export OUT            write the recorded run in the format OUT's suffix names;\n"
            "                              give it again for more outputs of the same run:\n" +
            formatLines() +
-           "      --export-mode exact|compact  glTF: bake every agent's joints (default), or share one\n"
+           "      --export-mode exact|compact  glTF, USD: bake every agent's joints (default), or share one\n"
            "                              cycle per look (joint data ~13x smaller; docs/export.md)\n"
            "      --export-joint-step N   glTF (exact), USD, FBX: bake joints every N-th frame (default 1)\n"
            "      --export-lod near|mid|far  glTF, USD, FBX: the built-in characters' detail (default near,\n"

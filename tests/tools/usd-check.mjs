@@ -121,6 +121,35 @@ function tokens(text, attribute) {
   return m ? (m[1].match(/"[^"]*"/g) || []).length : null;
 }
 
+// Value clips: each clip layer read once with tinyusdz, its SkelAnimations by path.
+const clipLayers = new Map();
+function clipLayer(asset) {
+  if (clipLayers.has(asset)) return clipLayers.get(asset);
+  const where = path.resolve(path.dirname(file), asset);
+  let prims = null;
+  if (fs.existsSync(where)) {
+    const clips = new native.TinyUSDZLoaderNative();
+    if (!clips.loadAsLayerFromBinary(new Uint8Array(fs.readFileSync(where)), path.basename(where)))
+      die(1, `tinyusdz cannot parse the clips layer ${where}: ${clips.error()}`);
+    const text = clips.layerToString();
+    prims = new Map();
+    for (const m of text.matchAll(/def SkelAnimation "([^"]+)"/g)) {
+      const start = m.index;
+      const lineStart = text.lastIndexOf('\n', start) + 1;
+      const close = text.indexOf(`\n${text.slice(lineStart, start)}}`, start);
+      const body = text.slice(start, close < 0 ? text.length : close);
+      const rotations = arraySamples(body, 'quatf[] rotations') || [];
+      prims.set(`/Clips/${m[1]}`, {
+        joints: tokens(body, 'uniform token[] joints'),
+        samples: rotations.length,
+        lengths: [...new Set(rotations.concat(arraySamples(body, 'float3[] translations') || []).map((r) => r[1]))],
+      });
+    }
+  }
+  clipLayers.set(asset, prims);
+  return prims;
+}
+
 const agents = [];
 for (const node of agentsNode.children || []) {
   const name = node.primName;
@@ -136,6 +165,29 @@ for (const node of agentsNode.children || []) {
   const skelJoints = text.indexOf('def Skeleton') >= 0 ? tokens(skel, 'uniform token[] joints') : null;
   const rotations = arraySamples(anim, 'quatf[] rotations') || [];
   const translations = arraySamples(anim, 'float3[] translations') || [];
+  // A value clip in place of its own samples (compact): the layer, the prim, the times.
+  let clip = null;
+  const clipsAt = anim.indexOf('clips = {');
+  if (clipsAt >= 0) {
+    const asset = (anim.slice(clipsAt).match(/assetPaths = \[@([^@]*)@\]/) || [])[1];
+    const primPath = (anim.slice(clipsAt).match(/primPath = "([^"]*)"/) || [])[1];
+    const timesText = (anim.slice(clipsAt).match(/double2\[\] times = \[([^\]]*)\]/) || [])[1] || '';
+    const times = [...timesText.matchAll(/\(([-\d.e+]+),\s*([-\d.e+]+)\)/g)].map((m) => [Number(m[1]), Number(m[2])]);
+    const layerPrims = asset ? clipLayer(asset) : null;
+    const target = layerPrims && layerPrims.get(primPath);
+    clip = { asset, primPath, times, samples: target ? target.samples : 0, joints: target ? target.joints : null };
+    if (!layerPrims) problems.push(`${name}: clips layer ${asset} missing`);
+    else if (!target) problems.push(`${name}: no ${primPath} in ${asset}`);
+    else {
+      if (target.joints !== skelJoints) problems.push(`${name}: ${primPath} animates ${target.joints} joints, the skeleton has ${skelJoints}`);
+      if (target.lengths.some((n) => n !== target.joints)) problems.push(`${primPath}: a sample's length is not its joint count`);
+      for (let k = 0; k < times.length; ++k) {
+        if (times[k][1] < 0 || times[k][1] > target.samples - 1) { problems.push(`${name}: clip time ${times[k][1]} outside ${primPath}`); break; }
+        if (k > 0 && !(times[k][0] > times[k - 1][0])) { problems.push(`${name}: clip stage times not increasing`); break; }
+      }
+    }
+  }
+  const scaleMatch = text.match(/xformOp:scale = \(([-\d.e+]+)/);
   const agentMeshes = meshes.filter((m) => m.absPath.startsWith(`${node.absPath}/`));
   const g = node.globalMatrix;
   const agent = {
@@ -146,12 +198,16 @@ for (const node of agentsNode.children || []) {
     visibility: samples(text, 'token visibility') || [],
     animJoints, skelJoints,
     rotationSamples: rotations.length,
+    clip,
+    scale: scaleMatch ? Number(scaleMatch[1]) : 1,
     meshes: agentMeshes.length,
     unboundMeshes: agentMeshes.filter((m) => m.materialId < 0).length,
   };
   if (!text.includes(`rel skel:animationSource = <${node.absPath}/Anim>`)) problems.push(`${name}: no animation source`);
   if (animJoints === null || skelJoints === null) problems.push(`${name}: no skeleton or no animation`);
   else if (animJoints !== skelJoints) problems.push(`${name}: ${animJoints} animated joints, ${skelJoints} in the skeleton`);
+  if (!clip && rotations.length === 0 && !/quatf\[\] rotations = \[/.test(anim))
+    problems.push(`${name}: its animation has no rotations`);
   for (const [t, n] of rotations.concat(translations))
     if (n !== animJoints) { problems.push(`${name}: ${n} values at time ${t} for ${animJoints} joints`); break; }
   if (agent.translate.length === 0) problems.push(`${name}: no root motion`);
@@ -170,6 +226,7 @@ const summary = {
   agents: agents.length,
   meshes: meshes.length,
   agentMeshes: agents.reduce((s, a) => s + a.meshes, 0),
+  clippedAgents: agents.filter((a) => a.clip).length,
   unboundAgentMeshes: agents.reduce((s, a) => s + a.unboundMeshes, 0),
   setMeshes: meshes.filter((m) => m.absPath.startsWith('/Crowd/Set/')).length,
   lamps: [...nodes.keys()].filter((p) => /^\/Crowd\/Set\/lamp_/.test(p)).length,
