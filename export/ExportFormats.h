@@ -49,6 +49,8 @@ struct ExportFormat {
     bool writesDirectory = false;       // the path is a directory the format fills
     bool readsIndentedText = false;     // honours ExportRequest::indentedText
     bool writesSet = false;             // honours ExportRequest::includeSet
+    bool writesCharacters = false;      // skinned characters: honours lod and jointFrameStep
+    bool sharesCycles = false;          // honours jointBake (Compact: each look's cycles shared)
     FormatWriter write = nullptr;
 };
 

@@ -46,7 +46,7 @@ ExportDialog::ExportDialog(SceneDocument& document, SimulationController& simula
     for (const exporting::ExportFormat& f : exporting::exportFormats())
         m_format->addItem(QString::fromStdString(f.label), QString::fromStdString(f.key));
     m_format->setToolTip(tr("The formats throng-cli run --export writes: animated glTF for Blender, Maya, Houdini "
-                            "or a game engine, a CSV of every agent per frame, the walkers for PedPy, or a text "
+                            "or a game engine, USD for film pipelines, FBX for games and older pipelines, a CSV of every agent per frame, the walkers for PedPy, or a text "
                             "file per agent (for Maya with a manifest that resources/maya/throngCrowd.mel reads)"));
     form->addRow(tr("Format"), m_format);
 
@@ -85,6 +85,23 @@ ExportDialog::ExportDialog(SceneDocument& document, SimulationController& simula
     options->addWidget(m_pretty);
     options->addWidget(m_set);
     form->addRow(tr("Options"), options);
+
+    m_bake = new QComboBox(this);
+    m_bake->setObjectName("exportJoints");
+    m_bake->addItem(tr("Baked per agent"), int(exporting::JointBake::Exact));
+    m_bake->addItem(tr("Compact: each look's cycles shared"), int(exporting::JointBake::Compact));
+    m_bake->setToolTip(tr("Baked: every agent's joints, frame by frame, feet planted. Compact: each look's walk and "
+                          "run cycle stored once, each agent reading it at its own pace; several times smaller "
+                          "(throng-cli --export-mode)"));
+    form->addRow(tr("Joints"), m_bake);
+    m_lod = new QComboBox(this);
+    m_lod->setObjectName("exportDetail");
+    m_lod->addItem(tr("Near (about 6,600 triangles a body)"), int(exporting::Lod::Near));
+    m_lod->addItem(tr("Mid (2,300)"), int(exporting::Lod::Mid));
+    m_lod->addItem(tr("Far (1,000)"), int(exporting::Lod::Far));
+    m_lod->setToolTip(tr("How fine the built-in characters' bodies are: near for close-ups, far for the back of a "
+                         "crowd or a large FBX (throng-cli --export-lod)"));
+    form->addRow(tr("Detail"), m_lod);
 
     m_progress = new QProgressBar(this);
     m_progress->setObjectName("exportProgress");
@@ -144,6 +161,8 @@ void ExportDialog::formatChanged()
         m_path->setText(stem + QString::fromStdString(f.suffixes.front()));
     m_pretty->setEnabled(f.readsIndentedText);
     m_set->setEnabled(f.writesSet);
+    m_bake->setEnabled(f.sharesCycles);
+    m_lod->setEnabled(f.writesCharacters);
 }
 
 void ExportDialog::browse()
@@ -166,6 +185,8 @@ ExportJobRequest ExportDialog::request() const
         r.output.sceneDirectory = QFileInfo(m_document.filePath()).absolutePath().toStdString();
     r.output.indentedText = m_pretty->isChecked();
     r.output.includeSet = m_set->isChecked();
+    r.output.jointBake = exporting::JointBake(m_bake->currentData().toInt());
+    r.output.lod = exporting::Lod(m_lod->currentData().toInt());
     r.firstFrame = std::size_t(std::min(m_first->value(), m_last->value()));
     r.lastFrame = std::size_t(std::max(m_first->value(), m_last->value()));
     r.output.firstFrame = r.firstFrame;  // the lights keep the recording's time

@@ -58,6 +58,8 @@ private:
     QSpinBox* m_last = nullptr;
     QCheckBox* m_pretty = nullptr;
     QCheckBox* m_set = nullptr;
+    QComboBox* m_bake = nullptr;
+    QComboBox* m_lod = nullptr;
     QProgressBar* m_progress = nullptr;
     QLabel* m_status = nullptr;
     QPushButton* m_export = nullptr;

@@ -178,6 +178,69 @@ private slots:
         QVERIFY(!set->isEnabled());
     }
 
+    // USD and FBX from the dialog, chosen with the keyboard: the joint bake (USD's compact
+    // mode writes its clips layer beside the stage) and the bodies' detail; FBX shares no
+    // cycles, so its Joints box greys out.
+    void exportWritesUsdAndFbxWithTheirChoices()
+    {
+        MainWindow window;
+        QVERIFY(showWithScene(window, m_dir, "crossroads.yaml"));
+        ExportDialog* dialog = window.showExportDialog();
+        auto* format = dialog->findChild<QComboBox*>("exportFormat");
+        auto* joints = dialog->findChild<QComboBox*>("exportJoints");
+        auto* detail = dialog->findChild<QComboBox*>("exportDetail");
+        auto* path = dialog->findChild<QLineEdit*>("exportPath");
+        auto* last = dialog->findChild<QSpinBox*>("exportLastFrame");
+        QVERIFY(format && joints && detail && path && last);
+        auto choose = [&](QComboBox* box, const QString& key) {
+            box->setFocus();
+            QTest::keyClick(box, Qt::Key_Home);
+            for (int k = 0; k < box->count() && box->currentData().toString() != key; ++k)
+                QTest::keyClick(box, Qt::Key_Down);
+            return box->currentData().toString() == key;
+        };
+        last->selectAll();
+        QTest::keyClicks(last, "24");
+        QTest::keyClick(last, Qt::Key_Tab);
+        QCOMPARE(last->value(), 24);
+
+        QVERIFY(choose(format, "usd"));
+        QVERIFY(path->text().endsWith(".usda"));
+        QVERIFY(joints->isEnabled() && detail->isEnabled());
+        joints->setFocus();
+        QTest::keyClick(joints, Qt::Key_Down);
+        QCOMPARE(exporting::JointBake(joints->currentData().toInt()), exporting::JointBake::Compact);
+        const QString usd = m_dir.filePath("shot.usda");
+        path->selectAll();
+        QTest::keyClicks(path, usd);
+        QTest::mouseClick(dialog->findChild<QPushButton*>("exportButton"), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(!dialog->isBusy(), 120000);
+        QVERIFY2(dialog->outcome().startsWith("Wrote"), qPrintable(dialog->outcome()));
+        QFile stage(usd), clips(m_dir.filePath("shot.clips.usda"));
+        QVERIFY(stage.open(QIODevice::ReadOnly) && clips.open(QIODevice::ReadOnly));
+        const QByteArray stageText = stage.readAll();
+        QVERIFY(stageText.startsWith("#usda 1.0") && stageText.contains("endTimeCode = 24"));
+        QVERIFY(stageText.contains("asset[] assetPaths = [@./shot.clips.usda@]"));
+        QVERIFY(clips.readAll().contains("def SkelAnimation \"man_0_walk\""));
+
+        QVERIFY(choose(format, "fbx"));
+        QVERIFY(!joints->isEnabled() && detail->isEnabled());
+        detail->setFocus();
+        QTest::keyClick(detail, Qt::Key_End);
+        QCOMPARE(exporting::Lod(detail->currentData().toInt()), exporting::Lod::Far);
+        const QString fbx = m_dir.filePath("shot.fbx");
+        path->selectAll();
+        QTest::keyClicks(path, fbx);
+        QTest::mouseClick(dialog->findChild<QPushButton*>("exportButton"), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(!dialog->isBusy(), 120000);
+        QVERIFY2(dialog->outcome().startsWith("Wrote"), qPrintable(dialog->outcome()));
+        QFile file(fbx);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        QVERIFY(file.read(18) == QByteArray("Kaydara FBX Binary"));
+        QVERIFY(choose(format, "csv"));
+        QVERIFY(!joints->isEnabled() && !detail->isEnabled());
+    }
+
     void exportCanBeCancelledAndLeavesNoFile()
     {
         MainWindow window;
