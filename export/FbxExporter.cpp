@@ -5,6 +5,7 @@
 #include "export/detail/AgentBake.h"
 #include "export/detail/AssimpScene.h"
 #include "export/detail/AssimpSet.h"
+#include "export/detail/CrowdSetup.h"
 #include "export/detail/ExportCancel.h"
 #include "export/detail/FbxFraming.h"
 #include "export/detail/StagingDirectory.h"
@@ -33,26 +34,11 @@ using detail::toAssimp;
 
 std::string checkFbxInput(const sim::Scene& scene, const sim::FrameCache& cache, const FbxOptions& options)
 {
-    const std::string where = "cannot export '" + options.path + "': ";
-    if (options.path.empty())
-        return "cannot export: no output path given";
-    std::string suffix = std::filesystem::path(options.path).extension().string();
-    std::transform(suffix.begin(), suffix.end(), suffix.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    if (suffix != ".fbx")
-        return where + "an FBX file must end in .fbx";
-    if (cache.agentCount() == 0 || cache.frameCount() == 0)
-        return where + "nothing recorded (" + std::to_string(cache.agentCount()) + " agents, " +
-               std::to_string(cache.frameCount()) + " frames)";
-    if (!(cache.fps() > 0.0f) || !std::isfinite(cache.fps()))
-        return where + "the frame cache's fps (" + std::to_string(cache.fps()) + ") is not > 0";
-    if (options.jointFrameStep < 1)
-        return where + "the joint frame step must be at least 1";
+    if (std::string error = detail::checkCrowdInput(scene, cache, options.path, {".fbx"}, options.jointFrameStep);
+        !error.empty())
+        return error;
     if (!(options.positionToleranceM >= 0.0f))
-        return where + "key tolerances must be >= 0";
-    for (const sim::AgentInfo& agent : cache.agents())
-        if (agent.typeIndex >= scene.agentTypes.size())
-            return where + "agent " + std::to_string(agent.id) + " has type index " + std::to_string(agent.typeIndex) +
-                   " but the scene has " + std::to_string(scene.agentTypes.size()) + " agent types";
+        return "cannot export '" + options.path + "': key tolerances must be >= 0";
     return {};
 }
 
@@ -189,27 +175,14 @@ ExportResult exportFbx(const sim::Scene& scene, const sim::FrameCache& cache, co
     if (detail::cancelledAt(progress, 0.0f))
         return detail::cancelledExport(options.path);
 
-    std::vector<bool> typeUsed(scene.agentTypes.size(), false);
-    for (const sim::AgentInfo& agent : cache.agents())
-        typeUsed[agent.typeIndex] = true;
     CharacterLibrary library;
-    library.setLod(options.lod);
-    if (std::string error = library.resolve(scene, options.sceneDirectory, typeUsed); !error.empty()) {
-        result.error = "cannot export '" + options.path + "': " + error;
+    result.error = detail::resolveCharacters(scene, cache, options.lod, options.sceneDirectory, options.path, library);
+    if (!result.error.empty())
         return result;
-    }
     const std::uint64_t seed = options.seed.value_or(scene.settings.seed);
     const std::size_t frames = cache.frameCount(), agents = cache.agentCount();
-    std::vector<float> times(frames);
-    for (std::size_t f = 0; f < frames; ++f)
-        times[f] = static_cast<float>(static_cast<double>(f) / static_cast<double>(cache.fps()));
-    detail::JointClock jointClock;
-    for (std::size_t f = 0; f < frames; f += static_cast<std::size_t>(options.jointFrameStep))
-        jointClock.frames.push_back(static_cast<std::uint32_t>(f));
-    if (jointClock.frames.back() != frames - 1)
-        jointClock.frames.push_back(static_cast<std::uint32_t>(frames - 1));
-    for (const std::uint32_t f : jointClock.frames)
-        jointClock.clock.times.push_back(times[f]);
+    const std::vector<float> times = detail::frameTimes(cache);
+    const detail::JointClock jointClock = detail::jointFrames(times, options.jointFrameStep);
     // Rotations are keyed on every joint frame (Euler angles do not interpolate): the
     // tolerances only decide what the baker keeps, which this writer does not read.
     const detail::AgentBaker baker(scene, cache, library, seed, times, jointClock,

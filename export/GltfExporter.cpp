@@ -7,6 +7,7 @@
 #include "export/detail/AnimationChannels.h"
 #include "export/detail/CharacterAssets.h"
 #include "export/detail/CompactBake.h"
+#include "export/detail/CrowdSetup.h"
 #include "export/detail/ExactBake.h"
 #include "export/detail/GltfBuilder.h"
 #include "export/detail/SetNodes.h"
@@ -74,23 +75,12 @@ tinygltf::Value agentExtras(const sim::AgentInfo& info, const std::string& type,
 
 std::string checkInput(const sim::Scene& scene, const sim::FrameCache& cache, const GltfOptions& options)
 {
-    const std::string where = "cannot export '" + options.path + "': ";
-    if (options.path.empty())
-        return "cannot export: no output path given";
-    if (cache.agentCount() == 0 || cache.frameCount() == 0)
-        return where + "nothing recorded (" + std::to_string(cache.agentCount()) + " agents, " +
-               std::to_string(cache.frameCount()) + " frames)";
-    if (!(cache.fps() > 0.0f) || !std::isfinite(cache.fps()))
-        return where + "the frame cache's fps (" + std::to_string(cache.fps()) + ") is not > 0";
-    if (options.jointFrameStep < 1)
-        return where + "the joint frame step must be at least 1";
+    if (std::string error = detail::checkCrowdInput(scene, cache, options.path, {}, options.jointFrameStep);
+        !error.empty())
+        return error;
     if (!(options.positionToleranceM >= 0.0f) || !(options.rotationToleranceDeg >= 0.0f) ||
         !(options.rootRotationToleranceDeg >= 0.0f))
-        return where + "key tolerances must be >= 0";
-    for (const sim::AgentInfo& agent : cache.agents())
-        if (agent.typeIndex >= scene.agentTypes.size())
-            return where + "agent " + std::to_string(agent.id) + " has type index " + std::to_string(agent.typeIndex) +
-                   " but the scene has " + std::to_string(scene.agentTypes.size()) + " agent types";
+        return "cannot export '" + options.path + "': key tolerances must be >= 0";
     return {};
 }
 
@@ -101,8 +91,6 @@ detail::Clock makeClock(detail::GltfBuilder& b, std::vector<float> times)
     clock.accessor = b.addTimes(clock.times);
     return clock;
 }
-
-float frameTime(std::size_t f, float fps) { return static_cast<float>(static_cast<double>(f) / static_cast<double>(fps)); }
 
 // One material per (type, tint) that some agent wears.
 int materialFor(tinygltf::Model& model, std::map<std::pair<std::size_t, int>, int>& made, const sim::AgentType& type,
@@ -171,13 +159,11 @@ ExportResult exportGltf(const sim::Scene& scene, const sim::FrameCache& cache, c
     if (detail::cancelledAt(progress, 0.0f))
         return detail::cancelledExport(options.path);
 
-    std::vector<bool> typeUsed(scene.agentTypes.size(), false);
-    for (const sim::AgentInfo& agent : cache.agents())
-        typeUsed[agent.typeIndex] = true;
     CharacterLibrary library;
-    library.setLod(options.lod);
-    if (std::string error = library.resolve(scene, options.sceneDirectory, typeUsed); !error.empty())
-        return failedExport("cannot export '" + options.path + "': " + error);
+    if (std::string error =
+            detail::resolveCharacters(scene, cache, options.lod, options.sceneDirectory, options.path, library);
+        !error.empty())
+        return failedExport(std::move(error));
 
     const std::uint64_t seed = options.seed.value_or(scene.settings.seed);
     const std::size_t frames = cache.frameCount(), agents = cache.agentCount();
@@ -201,25 +187,13 @@ ExportResult exportGltf(const sim::Scene& scene, const sim::FrameCache& cache, c
 
     builder.beginAnimationData();
     builder.setUse(detail::GltfBuilder::Use::Clocks);
-    std::vector<float> allTimes(frames);
-    for (std::size_t f = 0; f < frames; ++f)
-        allTimes[f] = frameTime(f, fps);
+    const std::vector<float> allTimes = detail::frameTimes(cache);
     const detail::Clock frameClock = makeClock(builder, allTimes);
     const detail::Clock pairClock =
         frames >= 2 ? makeClock(builder, {0.0f, allTimes.back()}) : frameClock;
-    detail::JointClock jointClock;
-    for (std::size_t f = 0; f < frames; f += static_cast<std::size_t>(options.jointFrameStep))
-        jointClock.frames.push_back(static_cast<std::uint32_t>(f));
-    if (jointClock.frames.back() != frames - 1)
-        jointClock.frames.push_back(static_cast<std::uint32_t>(frames - 1));
-    if (jointClock.frames.size() == frames) {
-        jointClock.clock = frameClock;
-    } else {
-        std::vector<float> times;
-        for (std::uint32_t f : jointClock.frames)
-            times.push_back(allTimes[f]);
-        jointClock.clock = makeClock(builder, std::move(times));
-    }
+    detail::JointClock jointClock = detail::jointFrames(allTimes, options.jointFrameStep);
+    jointClock.clock = jointClock.frames.size() == frames ? frameClock
+                                                          : makeClock(builder, std::move(jointClock.clock.times));
 
     model.animations.emplace_back();
     model.animations[0].name = "crowd";

@@ -3,6 +3,7 @@
 #include "export/character/AgentVariation.h"
 #include "export/character/CharacterLibrary.h"
 #include "export/detail/AgentBake.h"
+#include "export/detail/CrowdSetup.h"
 #include "export/detail/ExportCancel.h"
 #include "export/detail/TextFields.h"
 #include "export/detail/UsdAnimation.h"
@@ -39,27 +40,12 @@ const std::string kMaterials = kCrowd + "/Materials";
 
 std::string checkUsdInput(const sim::Scene& scene, const sim::FrameCache& cache, const UsdOptions& options)
 {
-    const std::string where = "cannot export '" + options.path + "': ";
-    if (options.path.empty())
-        return "cannot export: no output path given";
-    std::string suffix = std::filesystem::path(options.path).extension().string();
-    std::transform(suffix.begin(), suffix.end(), suffix.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    if (suffix != ".usda")
-        return where + "USD is written as text: the file must end in .usda";
-    if (cache.agentCount() == 0 || cache.frameCount() == 0)
-        return where + "nothing recorded (" + std::to_string(cache.agentCount()) + " agents, " +
-               std::to_string(cache.frameCount()) + " frames)";
-    if (!(cache.fps() > 0.0f) || !std::isfinite(cache.fps()))
-        return where + "the frame cache's fps (" + std::to_string(cache.fps()) + ") is not > 0";
-    if (options.jointFrameStep < 1)
-        return where + "the joint frame step must be at least 1";
+    if (std::string error = detail::checkCrowdInput(scene, cache, options.path, {".usda"}, options.jointFrameStep);
+        !error.empty())
+        return error;
     if (!(options.positionToleranceM >= 0.0f) || !(options.rotationToleranceDeg >= 0.0f) ||
         !(options.rootRotationToleranceDeg >= 0.0f))
-        return where + "key tolerances must be >= 0";
-    for (const sim::AgentInfo& agent : cache.agents())
-        if (agent.typeIndex >= scene.agentTypes.size())
-            return where + "agent " + std::to_string(agent.id) + " has type index " + std::to_string(agent.typeIndex) +
-                   " but the scene has " + std::to_string(scene.agentTypes.size()) + " agent types";
+        return "cannot export '" + options.path + "': key tolerances must be >= 0";
     return {};
 }
 
@@ -232,26 +218,23 @@ void AgentWriter::write(std::string& out, std::size_t i, const detail::AgentWork
     out += "{\n";
     indent(out, d + 1);
     out += "rel skel:animationSource = <" + path + "/Anim>\n";
+    // Time samples of `declaration` at the kept frames.
+    auto samples = [&](const char* declaration, const std::vector<std::uint32_t>& kept, auto append) {
+        out += declaration;
+        out += ".timeSamples = {\n";
+        for (const std::uint32_t f : kept) {
+            indent(out, d + 2);
+            out += std::to_string(f) + ": ";
+            append(f);
+            out += ",\n";
+        }
+        indent(out, d + 1);
+        out += "}\n";
+    };
     indent(out, d + 1);
-    out += "double3 xformOp:translate.timeSamples = {\n";
-    for (const std::uint32_t f : w.positionKept) {
-        indent(out, d + 2);
-        out += std::to_string(f) + ": ";
-        appendUsdVec3(out, w.positions[f]);
-        out += ",\n";
-    }
+    samples("double3 xformOp:translate", w.positionKept, [&](std::uint32_t f) { appendUsdVec3(out, w.positions[f]); });
     indent(out, d + 1);
-    out += "}\n";
-    indent(out, d + 1);
-    out += "quatf xformOp:orient.timeSamples = {\n";
-    for (const std::uint32_t f : w.yawKept) {
-        indent(out, d + 2);
-        out += std::to_string(f) + ": ";
-        appendUsdQuat(out, w.yaw[f]);
-        out += ",\n";
-    }
-    indent(out, d + 1);
-    out += "}\n";
+    samples("quatf xformOp:orient", w.yawKept, [&](std::uint32_t f) { appendUsdQuat(out, w.yaw[f]); });
     indent(out, d + 1);
     out += "float3 xformOp:scale = ";
     appendUsdVec3(out, glm::vec3(w.variation.heightScale));
@@ -370,6 +353,7 @@ void writeHeader(std::string& out, const sim::FrameCache& cache, std::uint64_t s
     out += "        int frameCount = " + std::to_string(cache.frameCount()) + "\n";
     out += "        string seed = \"" + std::to_string(seed) + "\"\n";
     out += "        int jointFrameStep = " + std::to_string(options.jointFrameStep) + "\n";
+    out += std::string("        string mode = \"") + (options.compact ? "compact" : "exact") + "\"\n";
     out += std::string("        bool set = ") + (options.includeSet ? "1" : "0") + "\n";
     out += "    }\n)\n\n";
     out += "def Xform \"Crowd\" (\n    kind = \"assembly\"\n)\n{\n";
@@ -398,27 +382,14 @@ ExportResult exportUsd(const sim::Scene& scene, const sim::FrameCache& cache, co
     if (detail::cancelledAt(progress, 0.0f))
         return detail::cancelledExport(options.path);
 
-    std::vector<bool> typeUsed(scene.agentTypes.size(), false);
-    for (const sim::AgentInfo& agent : cache.agents())
-        typeUsed[agent.typeIndex] = true;
     CharacterLibrary library;
-    library.setLod(options.lod);
-    if (std::string error = library.resolve(scene, options.sceneDirectory, typeUsed); !error.empty()) {
-        result.error = "cannot export '" + options.path + "': " + error;
+    result.error = detail::resolveCharacters(scene, cache, options.lod, options.sceneDirectory, options.path, library);
+    if (!result.error.empty())
         return result;
-    }
     const std::uint64_t seed = options.seed.value_or(scene.settings.seed);
     const std::size_t frames = cache.frameCount(), agents = cache.agentCount();
-    std::vector<float> times(frames);
-    for (std::size_t f = 0; f < frames; ++f)
-        times[f] = static_cast<float>(static_cast<double>(f) / static_cast<double>(cache.fps()));
-    detail::JointClock jointClock;
-    for (std::size_t f = 0; f < frames; f += static_cast<std::size_t>(options.jointFrameStep))
-        jointClock.frames.push_back(static_cast<std::uint32_t>(f));
-    if (jointClock.frames.back() != frames - 1)
-        jointClock.frames.push_back(static_cast<std::uint32_t>(frames - 1));
-    for (const std::uint32_t f : jointClock.frames)
-        jointClock.clock.times.push_back(times[f]);
+    const std::vector<float> times = detail::frameTimes(cache);
+    const detail::JointClock jointClock = detail::jointFrames(times, options.jointFrameStep);
     const detail::AgentBaker baker(scene, cache, library, seed, times, jointClock,
                                    {.compact = options.compact,
                                     .positionToleranceM = options.positionToleranceM,

@@ -1,5 +1,6 @@
 #include "export/detail/UsdCharacter.h"
 
+#include "export/detail/UsdMesh.h"
 #include "export/detail/UsdText.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -44,95 +45,23 @@ void writePart(std::string& out, int depth, const Character& c, const MeshPart& 
     const CharacterMesh& mesh = c.mesh;
     // The part's own vertices, in the order its triangles first use them.
     std::map<std::uint32_t, std::uint32_t> local;
-    std::vector<std::uint32_t> used, indices;
+    UsdMeshData data;
     for (std::uint32_t k = part.firstIndex; k < part.firstIndex + part.indexCount; ++k) {
         const std::uint32_t v = mesh.indices[k];
-        const auto [it, added] = local.emplace(v, static_cast<std::uint32_t>(used.size()));
-        if (added)
-            used.push_back(v);
-        indices.push_back(it->second);
-    }
-    indent(out, depth);
-    out += "def Mesh " + usdQuoted(name) + " (\n";
-    indent(out, depth + 1);
-    out += material.empty() ? "prepend apiSchemas = [\"SkelBindingAPI\"]\n"
-                            : "prepend apiSchemas = [\"SkelBindingAPI\", \"MaterialBindingAPI\"]\n";
-    indent(out, depth);
-    out += ")\n";
-    indent(out, depth);
-    out += "{\n";
-    indent(out, depth + 1);
-    out += "uniform token subdivisionScheme = \"none\"\n";
-    indent(out, depth + 1);
-    out += "int[] faceVertexCounts = [";
-    for (std::size_t t = 0; t < indices.size() / 3; ++t)
-        out += t ? ", 3" : "3";
-    out += "]\n";
-    indent(out, depth + 1);
-    out += "int[] faceVertexIndices = [";
-    for (std::size_t k = 0; k < indices.size(); ++k) {
-        if (k)
-            out += ", ";
-        out += std::to_string(indices[k]);
-    }
-    out += "]\n";
-    auto vec3s = [&](const char* declaration, const std::vector<glm::vec3>& values, const std::string& after) {
-        indent(out, depth + 1);
-        out += declaration;
-        out += " = [";
-        for (std::size_t k = 0; k < used.size(); ++k) {
-            if (k)
-                out += ", ";
-            appendUsdVec3(out, values[used[k]]);
+        const auto [it, added] = local.emplace(v, static_cast<std::uint32_t>(data.points.size()));
+        if (added) {
+            data.points.push_back(mesh.positions[v]);
+            data.normals.push_back(mesh.normals[v]);
+            for (std::size_t i = 0; i < 4; ++i) {
+                data.jointIndices.push_back(mesh.joints[v][i]);
+                data.jointWeights.push_back(mesh.weights[v][static_cast<int>(i)]);
+            }
         }
-        out += ']';
-        out += after;
-        out += '\n';
-    };
-    vec3s("point3f[] points", mesh.positions, "");
-    vec3s("normal3f[] normals", mesh.normals, " (\n" + std::string(4 * (depth + 2), ' ') +
-                                                  "interpolation = \"vertex\"\n" + std::string(4 * (depth + 1), ' ') +
-                                                  ")");
-    indent(out, depth + 1);
-    out += "int[] primvars:skel:jointIndices = [";
-    for (std::size_t k = 0; k < used.size(); ++k)
-        for (int i = 0; i < 4; ++i) {
-            if (k || i)
-                out += ", ";
-            out += std::to_string(mesh.joints[used[k]][static_cast<std::size_t>(i)]);
-        }
-    out += "] (\n";
-    indent(out, depth + 2);
-    out += "elementSize = 4\n";
-    indent(out, depth + 2);
-    out += "interpolation = \"vertex\"\n";
-    indent(out, depth + 1);
-    out += ")\n";
-    indent(out, depth + 1);
-    out += "float[] primvars:skel:jointWeights = [";
-    for (std::size_t k = 0; k < used.size(); ++k)
-        for (int i = 0; i < 4; ++i) {
-            if (k || i)
-                out += ", ";
-            appendUsdFloat(out, mesh.weights[used[k]][i]);
-        }
-    out += "] (\n";
-    indent(out, depth + 2);
-    out += "elementSize = 4\n";
-    indent(out, depth + 2);
-    out += "interpolation = \"vertex\"\n";
-    indent(out, depth + 1);
-    out += ")\n";
-    indent(out, depth + 1);
-    out += "matrix4d primvars:skel:geomBindTransform = ((1, 0, 0, 0), (0, 1, 0, 0), (0, 0, 1, 0), (0, 0, 0, 1))\n";
-    indent(out, depth + 1);
-    out += "rel skel:skeleton = <" + skeleton + ">\n";
-    if (!material.empty()) {
-        indent(out, depth + 1);
-        out += "rel material:binding = <" + material + ">\n";
+        data.indices.push_back(it->second);
     }
-    indent(out, depth);
-    out += "}\n";
+    data.skeleton = skeleton;
+    data.material = material;
+    writeUsdMesh(out, depth, "def Mesh", name, data);
 }
 
 }  // namespace

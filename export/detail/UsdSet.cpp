@@ -1,5 +1,6 @@
 #include "export/detail/UsdSet.h"
 
+#include "export/detail/UsdMesh.h"
 #include "export/detail/UsdText.h"
 #include "export/set/SetSolids.h"
 #include "export/set/SetSurfaces.h"
@@ -21,63 +22,16 @@ using ColourKey = std::tuple<float, float, float, bool>;
 void writeTriangles(std::string& out, int depth, const std::string& name, const std::vector<const SolidVertex*>& vertices,
                     const std::string& material, const std::string& specifier = "def Mesh")
 {
-    indent(out, depth);
-    out += specifier + " " + usdQuoted(name) + " (\n";
-    indent(out, depth + 1);
-    out += "prepend apiSchemas = [\"MaterialBindingAPI\"]\n";
-    indent(out, depth);
-    out += ")\n";
-    indent(out, depth);
-    out += "{\n";
-    indent(out, depth + 1);
-    out += "uniform token subdivisionScheme = \"none\"\n";
-    indent(out, depth + 1);
-    out += "uniform bool doubleSided = 1\n";  // the solids are wound either way
-    indent(out, depth + 1);
-    out += "int[] faceVertexCounts = [";
-    for (std::size_t t = 0; t < vertices.size() / 3; ++t)
-        out += t ? ", 3" : "3";
-    out += "]\n";
-    indent(out, depth + 1);
-    out += "int[] faceVertexIndices = [";
-    for (std::size_t k = 0; k < vertices.size(); ++k) {
-        if (k)
-            out += ", ";
-        out += std::to_string(k);
+    UsdMeshData data;
+    for (const SolidVertex* v : vertices) {
+        data.indices.push_back(static_cast<unsigned>(data.points.size()));
+        data.points.push_back(v->position);
+        data.normals.push_back(v->normal);
     }
-    out += "]\n";
-    indent(out, depth + 1);
-    out += "point3f[] points = [";
-    for (std::size_t k = 0; k < vertices.size(); ++k) {
-        if (k)
-            out += ", ";
-        appendUsdVec3(out, vertices[k]->position);
-    }
-    out += "]\n";
-    indent(out, depth + 1);
-    out += "normal3f[] normals = [";
-    for (std::size_t k = 0; k < vertices.size(); ++k) {
-        if (k)
-            out += ", ";
-        appendUsdVec3(out, vertices[k]->normal);
-    }
-    out += "] (\n";
-    indent(out, depth + 2);
-    out += "interpolation = \"vertex\"\n";
-    indent(out, depth + 1);
-    out += ")\n";
-    indent(out, depth + 1);
-    out += "color3f[] primvars:displayColor = [";
-    appendUsdColour(out, glm::vec3(vertices.front()->colour));
-    out += "] (\n";
-    indent(out, depth + 2);
-    out += "interpolation = \"constant\"\n";
-    indent(out, depth + 1);
-    out += ")\n";
-    indent(out, depth + 1);
-    out += "rel material:binding = <" + material + ">\n";
-    indent(out, depth);
-    out += "}\n";
+    data.material = material;
+    data.displayColour = glm::vec3(vertices.front()->colour);
+    data.doubleSided = true;  // the solids are wound either way
+    writeUsdMesh(out, depth, specifier, name, data);
 }
 
 // The part `name` of `solids`: an Xform with a Mesh per colour. Nothing for no triangles.

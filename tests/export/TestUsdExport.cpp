@@ -213,6 +213,7 @@ private slots:
         }
         QCOMPARE(visitors, 4);
         QVERIFY(text.contains("def Material \"visitor_tint1\""));
+        QVERIFY(text.contains("string mode = \"exact\""));
         QVERIFY(text.contains("color3f inputs:diffuseColor = (0.1, 0.2, 0.9)"));
     }
 
@@ -233,6 +234,8 @@ private slots:
         QCOMPARE(result.writtenPaths.size(), std::size_t(2));
         QCOMPARE(QDir(dir.path()).entryList(QDir::Files).size(), 3);  // the CSV, the stage, its clips
         QVERIFY(QFile::exists(dir.filePath("court.clips.usda")));
+        QFile stageFile(QString::fromStdString(options.path));
+        QVERIFY(stageFile.open(QIODevice::ReadOnly) && stageFile.readAll().contains("string mode = \"compact\""));
 
         const Read read = readUsd(QString::fromStdString(options.path), dir);
         QVERIFY2(read.run.started && read.run.exitCode == 0, qPrintable(read.run.output.right(3000)));
