@@ -15,52 +15,43 @@ namespace throng::exporting {
 
 namespace {
 
-ExportResult writeGltf(const sim::Scene& scene, const sim::FrameCache& cache, const ExportRequest& request,
-                       const ProgressFn& progress)
+// The choices every skinned-crowd writer (glTF, USD, FBX) reads, as its options.
+template <typename Options>
+Options crowdOptions(const ExportRequest& request)
 {
-    GltfOptions options;
+    Options options;
     options.path = request.path;
-    options.mode = request.jointBake == JointBake::Compact ? GltfMode::Compact : GltfMode::Exact;
     options.sceneDirectory = request.sceneDirectory;
     options.seed = request.seed;
     options.jointFrameStep = request.jointFrameStep;
     options.lod = request.lod;
-    options.prettyJson = request.indentedText;
     options.threads = request.threads;
     options.includeSet = request.includeSet;
     options.firstFrame = request.firstFrame;
+    return options;
+}
+
+ExportResult writeGltf(const sim::Scene& scene, const sim::FrameCache& cache, const ExportRequest& request,
+                       const ProgressFn& progress)
+{
+    GltfOptions options = crowdOptions<GltfOptions>(request);
+    options.mode = request.jointBake == JointBake::Compact ? GltfMode::Compact : GltfMode::Exact;
+    options.prettyJson = request.indentedText;
     return exportGltf(scene, cache, options, progress);
 }
 
 ExportResult writeUsd(const sim::Scene& scene, const sim::FrameCache& cache, const ExportRequest& request,
                       const ProgressFn& progress)
 {
-    UsdOptions options;
-    options.path = request.path;
+    UsdOptions options = crowdOptions<UsdOptions>(request);
     options.compact = request.jointBake == JointBake::Compact;
-    options.sceneDirectory = request.sceneDirectory;
-    options.seed = request.seed;
-    options.jointFrameStep = request.jointFrameStep;
-    options.lod = request.lod;
-    options.threads = request.threads;
-    options.includeSet = request.includeSet;
-    options.firstFrame = request.firstFrame;
     return exportUsd(scene, cache, options, progress);
 }
 
 ExportResult writeFbx(const sim::Scene& scene, const sim::FrameCache& cache, const ExportRequest& request,
                       const ProgressFn& progress)
 {
-    FbxOptions options;
-    options.path = request.path;
-    options.sceneDirectory = request.sceneDirectory;
-    options.seed = request.seed;
-    options.jointFrameStep = request.jointFrameStep;
-    options.lod = request.lod;
-    options.threads = request.threads;
-    options.includeSet = request.includeSet;
-    options.firstFrame = request.firstFrame;
-    return exportFbx(scene, cache, options, progress);
+    return exportFbx(scene, cache, crowdOptions<FbxOptions>(request), progress);
 }
 
 ExportResult writeCsv(const sim::Scene&, const sim::FrameCache& cache, const ExportRequest& request,
