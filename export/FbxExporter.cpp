@@ -80,7 +80,7 @@ unsigned FbxAgents::materialOf(const MeshPart& part, const AgentVariation& v, st
     }
     const sim::AgentType& type = m_scene.agentTypes[typeIndex];
     if (v.tint < 0)
-        return m_out.material(type.name, glm::vec3(untintedColour(typeIndex)));
+        return m_out.material(type.name + "_colour", glm::vec3(untintedColour(typeIndex)));
     return m_out.material(type.name + "_tint" + std::to_string(v.tint),
                           glm::clamp(type.variation.tints[static_cast<std::size_t>(v.tint)], 0.0f, 1.0f));
 }

@@ -2,8 +2,8 @@
 // One agent's share of a skinned-crowd export, prepared from the recorded frames: its root
 // motion (positions and yaw per frame, with the keys that reduction keeps), the frames it
 // is out of the shot, its variation and look, its gait, its first pose and, for an exact
-// bake, its joints. Pure: agents may be prepared on any thread, in any order; the glTF and
-// USD writers then write them in agent order.
+// bake, its joints. Pure: agents may be prepared on any thread, in any order; the glTF, USD
+// and FBX writers then write them in agent order.
 #ifndef THRONG_EXPORT_BUILD
 #error "a detail/ header, private to throng::export: include the module's public headers instead"
 #endif
