@@ -4,6 +4,7 @@
 
 #include "export/ExportFormats.h"
 #include "simcore/io/SceneIO.h"
+#include "simcore/layout/LayoutApply.h"
 #ifdef THRONG_HAS_REPORT
 #include "report/HtmlReport.h"
 #include "simcore/analysis/RunAnalysis.h"
@@ -11,6 +12,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <optional>
 #include <ostream>
 #include <string>
 
@@ -45,12 +47,22 @@ bool writeRunOutputs(const CliArguments& args, const sim::Scene& scene, const si
         exporting::lodFromName(args.exportLod, request.lod);
     request.mayaForward = args.mayaForward == "x" ? exporting::ForwardAxis::PlusX : exporting::ForwardAxis::PlusZ;
     request.includeSet = !args.noSet;
+    // The scene's layout layer edits what the exports write, never the run itself: stats
+    // and the report stay the simulation's. An operation that selects nobody is named.
+    std::optional<sim::FrameCache> laidOut;
+    if (!scene.layout.ops.empty() && !args.exports.empty()) {
+        std::vector<std::string> messages;
+        laidOut = sim::applyLayout(scene, cache, &messages);
+        for (const std::string& m : messages)
+            err << "throng-cli: warning: " << m << '\n';
+    }
+    const sim::FrameCache& frames = laidOut ? *laidOut : cache;
     for (const ExportOutput& output : args.exports) {
         request.path = output.path;
         // Progress on stderr, as the run's own, for an export of half a million agent-frames or more.
         Progress progress(err, "exporting " + output.path, 1000,
-                          !args.quiet && cache.agentCount() * cache.frameCount() >= kProgressAgentFrames);
-        const exporting::ExportResult r = output.format->write(scene, cache, request, [&](float done) {
+                          !args.quiet && frames.agentCount() * frames.frameCount() >= kProgressAgentFrames);
+        const exporting::ExportResult r = output.format->write(scene, frames, request, [&](float done) {
             progress.update(std::uint64_t(std::clamp(done, 0.0f, 1.0f) * 1000.0f));
             return true;
         });

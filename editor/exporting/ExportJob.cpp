@@ -1,5 +1,7 @@
 #include "editor/exporting/ExportJob.h"
 
+#include "simcore/layout/LayoutApply.h"
+
 #include <algorithm>
 
 namespace throng::editor {
@@ -17,7 +19,11 @@ sim::FrameCache sliceFrames(const sim::FrameCache& cache, std::size_t first, std
 ExportJob::ExportJob(const sim::Scene& scene, const sim::FrameCache& cache, ExportJobRequest request)
     : m_format(request.format)
 {
-    sim::FrameCache frames = sliceFrames(cache, request.firstFrame, request.lastFrame);
+    // The layout layer edits what is exported (its frames are the recording's: applied
+    // before the range is cut out).
+    sim::FrameCache frames = scene.layout.ops.empty()
+                                 ? sliceFrames(cache, request.firstFrame, request.lastFrame)
+                                 : sliceFrames(sim::applyLayout(scene, cache), request.firstFrame, request.lastFrame);
     m_thread = std::thread([this, scene, frames = std::move(frames), request]() mutable {
         run(std::move(scene), std::move(frames), std::move(request));
     });

@@ -21,6 +21,7 @@ void writeEmission(YamlWriter& w, const SoundEmission& e);
 void writeSceneActionPoints(YamlWriter& w, const Scene& s);
 void writeSceneSources(YamlWriter& w, const Scene& s);
 void writeSceneMeasurements(YamlWriter& w, const Scene& s);
+void writeSceneLayout(YamlWriter& w, const Scene& s);
 }  // namespace detail
 
 namespace {
@@ -318,6 +319,7 @@ std::string sceneToYaml(const Scene& s)
     detail::writeSceneSources(w, s);
     detail::writeSceneMeasurements(w, s);
     writeAgents(w, s);
+    detail::writeSceneLayout(w, s);
     o << YAML::EndMap;
     return std::string(o.c_str()) + "\n";
 }

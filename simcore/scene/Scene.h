@@ -2,6 +2,7 @@
 // The authoring document as plain data: everything a scene file holds, nothing the
 // simulation derives from it. Never holds runtime arrays, pointers or Qt types.
 
+#include "simcore/layout/LayoutLayer.h"
 #include "simcore/scene/BrainGraph.h"
 
 #include <glm/vec2.hpp>
@@ -403,6 +404,7 @@ struct Scene {
     std::vector<Source> sources;
     std::vector<Measurement> measurements;
     std::vector<BrainGraph> brains;
+    LayoutLayer layout;  // edits to the recorded crowd, applied after the simulation (issue 29)
     bool operator==(const Scene&) const = default;
 
     const AgentType* findAgentType(const std::string& name) const;

@@ -70,6 +70,9 @@ public:
     glm::dvec3 origin() const { return m_origin; }
     std::span<const AgentFrame> frame(std::size_t f) const { return {m_frames.data() + f * m_count, m_count}; }
     const AgentFrame& at(std::size_t f, std::size_t agent) const { return m_frames[f * m_count + agent]; }
+    // For the layout layer (LayoutApply.h), which edits a copy of a recording: agent
+    // `agent`'s entry on frame f, to rewrite. The copy is not a new recording.
+    AgentFrame& edit(std::size_t f, std::size_t agent) { return m_frames[f * m_count + agent]; }
     // Every cache agent, with the type of the latest agent set.
     const std::vector<AgentInfo>& agents() const { return m_epochs.back().agents; }
     // Every cache agent with the type it had on frame f (its last one where absent).

@@ -8,8 +8,12 @@
 
 #include <QDir>
 #include <QFile>
+#include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QTest>
+
+#include <algorithm>
+#include <cmath>
 
 using throng::test::runCli;
 
@@ -40,6 +44,56 @@ QStringList entries(const QString& dir)
 class TestCliExport : public QObject {
     Q_OBJECT
 private slots:
+    // The scene's layout layer edits what the exports write, not the run: the CSV's rows of
+    // the deleted agent are gone and the moved ones' x is 5 m further on; the stats are the
+    // run's, byte for byte; an operation that selects nobody is named on stderr.
+    void theLayoutLayerEditsTheExportsNotTheRun()
+    {
+        QTemporaryDir tmp;
+        const std::string plain = throng::test::writeText(tmp.filePath("plain.yaml"), kScene).toStdString();
+        const std::string layered = std::string(kScene) + "layout:\n"
+                                                          "  - {op: delete, agents: {ids: [1]}}\n"
+                                                          "  - {op: translate, agents: {groups: [g]}, offset: [5, 0]}\n"
+                                                          "  - {op: delete, agents: {ids: [77]}}\n";
+        const std::string laid = throng::test::writeText(tmp.filePath("laid.yaml"), layered.c_str()).toStdString();
+        const QString csvPlain = tmp.filePath("plain.csv"), csvLaid = tmp.filePath("laid.csv");
+        const QString statsPlain = tmp.filePath("plain.json"), statsLaid = tmp.filePath("laid.json");
+        auto r = runCli({"run", plain, "--frames", "15", "--trajectories", csvPlain.toStdString(), "--stats",
+                         statsPlain.toStdString(), "--quiet"});
+        QCOMPARE(r.status, 0);
+        r = runCli({"run", laid, "--frames", "15", "--trajectories", csvLaid.toStdString(), "--stats",
+                    statsLaid.toStdString(), "--quiet"});
+        QCOMPARE(r.status, 0);
+        QVERIFY2(r.err.find("warning: layout operation 3 (delete): 1 agent is not in the recording (id 77)") !=
+                     std::string::npos,
+                 r.err.c_str());
+        QVERIFY2(r.err.find("warning: layout operation 1") == std::string::npos, r.err.c_str());
+        // The stats are the simulation's whatever the layer does, but for the seconds it took.
+        auto withoutTimes = [](QByteArray json) {
+            QStringList lines = QString::fromUtf8(json).split('\n');
+            lines.erase(std::remove_if(lines.begin(), lines.end(), [](const QString& l) {
+                            return l.contains("seconds") || l.contains("steps_per_second") || l.contains("per_second");
+                        }),
+                        lines.end());
+            return lines;
+        };
+        QCOMPARE(withoutTimes(readAll(statsLaid)), withoutTimes(readAll(statsPlain)));
+        const QStringList before = QString::fromUtf8(readAll(csvPlain)).trimmed().split('\n');
+        const QStringList after = QString::fromUtf8(readAll(csvLaid)).trimmed().split('\n');
+        QCOMPARE(before.size(), 1 + 15 * 12);
+        QCOMPARE(after.size(), 1 + 15 * 11);  // agent 1 deleted
+        int compared = 0;
+        for (const QString& row : after.mid(1)) {
+            const QStringList f = row.split(',');
+            QVERIFY(f[1] != "1");
+            const QStringList original = before.filter(QRegularExpression("^" + f[0] + "," + f[1] + ",")).first().split(',');
+            QVERIFY2(std::abs(f[2].toDouble() - original[2].toDouble() - 5.0) < 1e-4, qPrintable(row));
+            QCOMPARE(f[4], original[4]);
+            ++compared;
+        }
+        QCOMPARE(compared, 15 * 11);
+    }
+
     void exportCsvIsTheTrajectoriesFile()
     {
         QTemporaryDir tmp;

@@ -27,7 +27,7 @@ void SceneReader::read(const YAML::Node& root, Scene& scene)
     m_f.checkKeys(root, "", {"throng", "settings", "brains", "agent_types", "agents", "groups", "paths",
                              "walls", "obstacles", "goals", "terrain", "flow_strokes", "lanes", "crosswalks",
                              "traffic_lights", "vehicles", "heroes", "sound_sources", "action_points", "traffic",
-                             "sources", "measurements"});
+                             "sources", "measurements", "layout"});
     std::uint64_t version = 0;
     if (m_f.readUInt(root, "throng", "", version, true, 1'000'000) && version != Scene::kFormatVersion)
         m_f.error(root["throng"].Mark(), "throng",
@@ -79,6 +79,8 @@ void SceneReader::read(const YAML::Node& root, Scene& scene)
         readSources(n, scene);
     if (auto n = section("measurements"); n.IsDefined())
         readMeasurements(n, scene);
+    if (auto n = section("layout"); n.IsDefined())
+        readLayout(n, scene);
     assignMissingIds(scene);
     // Leaders are checked last: any placed agent, vehicle or hero may lead.
     std::set<std::uint32_t> all;
