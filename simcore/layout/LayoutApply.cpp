@@ -52,14 +52,14 @@ void place(AgentFrame& a, glm::vec2 xz)
     a.position.z = xz.y;
 }
 
-// The mean place of `agents` present on frame f; false when none is.
-bool centreOf(const FrameCache& cache, const std::vector<std::size_t>& agents, std::size_t f, glm::vec2& centre)
+// The mean place of `agents` present in `frame`; false when none is.
+bool centreOf(std::span<const AgentFrame> frame, const std::vector<std::size_t>& agents, glm::vec2& centre)
 {
     glm::dvec2 sum(0.0);
     std::size_t n = 0;
     for (const std::size_t i : agents)
-        if (cache.at(f, i).present) {
-            sum += glm::dvec2(ground(cache.at(f, i).position));
+        if (frame[i].present) {
+            sum += glm::dvec2(ground(frame[i].position));
             ++n;
         }
     if (n == 0)
@@ -68,108 +68,12 @@ bool centreOf(const FrameCache& cache, const std::vector<std::size_t>& agents, s
     return true;
 }
 
-void timeOffset(FrameCache& cache, std::size_t agent, const LayoutOp& op, std::size_t first, std::size_t last)
+// Standing still in a held pose: no speed, the idle clip.
+AgentFrame standing(AgentFrame a)
 {
-    const std::size_t frames = cache.frameCount();
-    std::vector<AgentFrame> column(frames);
-    for (std::size_t f = 0; f < frames; ++f)
-        column[f] = cache.at(f, agent);
-    const auto firstPresent = std::find_if(column.begin(), column.end(), [](const AgentFrame& a) { return a.present; });
-    if (firstPresent == column.end())
-        return;
-    for (std::size_t f = first; f <= last; ++f) {
-        const long long source = static_cast<long long>(f) - op.frames;
-        const std::size_t firstFrame = std::size_t(firstPresent - column.begin());
-        AgentFrame a;
-        if (source >= static_cast<long long>(frames)) {
-            a = column[frames - 1];  // after the recording: its last pose, standing
-            a.speed = 0.0f;
-            a.clip = Clip::Idle;
-        } else if (source < static_cast<long long>(firstFrame)) {
-            // Before its (shifted) start: standing in its first pose, or not there yet.
-            a = *firstPresent;
-            a.present = op.holdFirst;
-            a.speed = 0.0f;
-            a.clip = Clip::Idle;
-        } else {
-            a = column[std::size_t(source)];
-        }
-        cache.edit(f, agent) = a;
-    }
-}
-
-void applyOp(FrameCache& cache, const LayoutOp& op, const std::vector<std::size_t>& agents, glm::dvec3 origin)
-{
-    const std::size_t frames = cache.frameCount();
-    if (frames == 0 || agents.empty() || op.firstFrame >= frames)
-        return;
-    const std::size_t first = op.firstFrame, last = std::min(op.lastFrame, frames - 1);
-    if (last < first)
-        return;
-    const glm::vec2 shift(float(origin.x), float(origin.z));  // scene coordinates -> the cache's
-    switch (op.kind) {
-    case LayoutKind::Translate:
-        for (std::size_t f = first; f <= last; ++f)
-            for (const std::size_t i : agents) {
-                AgentFrame& a = cache.edit(f, i);
-                if (a.present)
-                    place(a, ground(a.position) + op.offset);
-            }
-        break;
-    case LayoutKind::Rotate: {
-        glm::vec2 pivot;
-        if (op.pivot)
-            pivot = *op.pivot - shift;
-        else if (!centreOf(cache, agents, first, pivot))
-            return;
-        const float rad = op.angleDeg * kDegToRad;
-        for (std::size_t f = first; f <= last; ++f)
-            for (const std::size_t i : agents) {
-                AgentFrame& a = cache.edit(f, i);
-                if (!a.present)
-                    continue;
-                place(a, pivot + turned(ground(a.position) - pivot, rad));
-                a.headingRad += rad;
-            }
-        break;
-    }
-    case LayoutKind::TimeOffset:
-        for (const std::size_t i : agents)
-            timeOffset(cache, i, op, first, last);
-        break;
-    case LayoutKind::Mirror: {
-        const glm::vec2 a0 = op.axis[0] - shift;
-        const glm::vec2 d = glm::normalize(op.axis[1] - op.axis[0]);
-        auto reflect = [&](glm::vec2 v) { return 2.0f * glm::dot(v, d) * d - v; };
-        for (std::size_t f = first; f <= last; ++f)
-            for (const std::size_t i : agents) {
-                AgentFrame& a = cache.edit(f, i);
-                if (!a.present)
-                    continue;
-                place(a, a0 + reflect(ground(a.position) - a0));
-                const glm::vec2 facing = reflect({std::cos(a.headingRad), -std::sin(a.headingRad)});
-                a.headingRad = std::atan2(-facing.y, facing.x);
-            }
-        break;
-    }
-    case LayoutKind::Delete:
-        for (std::size_t f = first; f <= last; ++f)
-            for (const std::size_t i : agents)
-                cache.edit(f, i).present = false;
-        break;
-    case LayoutKind::Expand:
-        for (std::size_t f = first; f <= last; ++f) {
-            glm::vec2 centre;
-            if (!centreOf(cache, agents, f, centre))
-                continue;
-            for (const std::size_t i : agents) {
-                AgentFrame& a = cache.edit(f, i);
-                if (a.present)
-                    place(a, centre + op.factor * (ground(a.position) - centre));
-            }
-        }
-        break;
-    }
+    a.speed = 0.0f;
+    a.clip = Clip::Idle;
+    return a;
 }
 
 }  // namespace
@@ -243,18 +147,182 @@ LayoutSelection selectLayoutAgents(const Scene& scene, const LayoutLayer& layer,
     return selection;
 }
 
+struct LayoutEvaluator::Memo {
+    std::map<std::pair<std::size_t, std::size_t>, std::vector<AgentFrame>> frames;  // (ops, frame)
+};
+
+LayoutEvaluator::LayoutEvaluator(const Scene& scene, const FrameCache& recorded)
+    : m_layer(scene.layout), m_recorded(recorded), m_selection(selectLayoutAgents(scene, scene.layout, recorded)),
+      m_shift(float(recorded.origin().x), float(recorded.origin().z))
+{
+    const std::size_t frames = recorded.frameCount();
+    m_firstPresent.assign(recorded.agentCount(), frames);
+    for (std::size_t f = frames; f-- > 0;)
+        for (std::size_t i = 0; i < recorded.agentCount(); ++i)
+            if (recorded.at(f, i).present)
+                m_firstPresent[i] = f;
+    // A rotation without a pivot turns about its agents' centre on its first frame, as the
+    // operations before it left them.
+    m_pivots.assign(m_layer.ops.size(), glm::vec2(0.0f));
+    for (std::size_t k = 0; k < m_layer.ops.size(); ++k) {
+        const LayoutOp& op = m_layer.ops[k];
+        if (op.kind != LayoutKind::Rotate)
+            continue;
+        if (op.pivot) {
+            m_pivots[k] = *op.pivot - m_shift;
+        } else if (op.firstFrame < frames) {
+            Memo memo;
+            centreOf(evaluate(k, op.firstFrame, memo), m_selection.agents[k], m_pivots[k]);
+        }
+    }
+}
+
+LayoutEvaluator::Shown LayoutEvaluator::shown(std::size_t k, std::size_t f, std::size_t i) const
+{
+    // Frame f shows what frame f - later showed before this operation; before the agent's
+    // first recorded frame it holds that frame's pose (or is absent), past the recording's
+    // end the last frame's.
+    const std::size_t frames = m_recorded.frameCount();
+    const long long source = static_cast<long long>(f) - m_layer.ops[k].frames;
+    if (source >= static_cast<long long>(frames))
+        return {frames - 1, true, false};
+    if (m_firstPresent[i] >= frames)
+        return {f, false, false};  // never recorded: nothing to move
+    if (source < static_cast<long long>(m_firstPresent[i]))
+        return {m_firstPresent[i], true, true};
+    return {std::size_t(source), false, false};
+}
+
+AgentFrame LayoutEvaluator::showing(std::size_t k, const Shown& s, const AgentFrame& there) const
+{
+    AgentFrame a = s.standing ? standing(there) : there;
+    if (s.beforeStart)
+        a.present = m_layer.ops[k].holdFirst && there.present;
+    return a;
+}
+
+void LayoutEvaluator::applyInFrame(std::size_t k, std::span<AgentFrame> out) const
+{
+    const LayoutOp& op = m_layer.ops[k];
+    const std::vector<std::size_t>& agents = m_selection.agents[k];
+    switch (op.kind) {
+    case LayoutKind::Translate:
+        for (const std::size_t i : agents)
+            if (out[i].present)
+                place(out[i], ground(out[i].position) + op.offset);
+        break;
+    case LayoutKind::Rotate: {
+        const float rad = op.angleDeg * kDegToRad;
+        for (const std::size_t i : agents) {
+            AgentFrame& a = out[i];
+            if (!a.present)
+                continue;
+            place(a, m_pivots[k] + turned(ground(a.position) - m_pivots[k], rad));
+            a.headingRad += rad;
+        }
+        break;
+    }
+    case LayoutKind::Mirror: {
+        const glm::vec2 a0 = op.axis[0] - m_shift;
+        const glm::vec2 d = glm::normalize(op.axis[1] - op.axis[0]);
+        auto reflect = [&](glm::vec2 v) { return 2.0f * glm::dot(v, d) * d - v; };
+        for (const std::size_t i : agents) {
+            AgentFrame& a = out[i];
+            if (!a.present)
+                continue;
+            place(a, a0 + reflect(ground(a.position) - a0));
+            const glm::vec2 facing = reflect({std::cos(a.headingRad), -std::sin(a.headingRad)});
+            a.headingRad = std::atan2(-facing.y, facing.x);
+        }
+        break;
+    }
+    case LayoutKind::Delete:
+        for (const std::size_t i : agents)
+            out[i].present = false;
+        break;
+    case LayoutKind::Expand: {
+        glm::vec2 centre;
+        if (!centreOf(out, agents, centre))
+            break;
+        for (const std::size_t i : agents)
+            if (out[i].present)
+                place(out[i], centre + op.factor * (ground(out[i].position) - centre));
+        break;
+    }
+    case LayoutKind::TimeOffset:
+        break;  // across frames: evaluate() and allFrames() do it
+    }
+}
+
+const std::vector<AgentFrame>& LayoutEvaluator::evaluate(std::size_t ops, std::size_t f, Memo& memo) const
+{
+    const auto key = std::make_pair(ops, f);
+    if (const auto it = memo.frames.find(key); it != memo.frames.end())
+        return it->second;
+    std::vector<AgentFrame> out;
+    if (ops == 0) {
+        const std::span<const AgentFrame> recorded = m_recorded.frame(f);
+        out.assign(recorded.begin(), recorded.end());
+    } else {
+        out = evaluate(ops - 1, f, memo);
+        const std::size_t k = ops - 1;
+        const LayoutOp& op = m_layer.ops[k];
+        if (op.enabled && !m_selection.agents[k].empty() && f >= op.firstFrame && f <= op.lastFrame) {
+            if (op.kind == LayoutKind::TimeOffset) {
+                for (const std::size_t i : m_selection.agents[k]) {
+                    const Shown s = shown(k, f, i);
+                    out[i] = showing(k, s, evaluate(k, s.frame, memo)[i]);
+                }
+            } else {
+                applyInFrame(k, out);
+            }
+        }
+    }
+    return memo.frames.emplace(key, std::move(out)).first->second;
+}
+
+void LayoutEvaluator::frame(std::size_t f, std::vector<AgentFrame>& out) const
+{
+    Memo memo;
+    out = evaluate(m_layer.ops.size(), f, memo);
+}
+
+FrameCache LayoutEvaluator::allFrames() const
+{
+    FrameCache laid = m_recorded;
+    const std::size_t frames = m_recorded.frameCount(), width = m_recorded.agentCount();
+    for (std::size_t k = 0; k < m_layer.ops.size(); ++k) {
+        const LayoutOp& op = m_layer.ops[k];
+        const std::vector<std::size_t>& agents = m_selection.agents[k];
+        if (!op.enabled || agents.empty() || op.firstFrame >= frames)
+            continue;
+        const std::size_t last = std::min(op.lastFrame, frames - 1);
+        if (op.kind == LayoutKind::TimeOffset) {
+            std::vector<AgentFrame> column(frames);
+            for (const std::size_t i : agents) {
+                for (std::size_t f = 0; f < frames; ++f)
+                    column[f] = laid.at(f, i);
+                for (std::size_t f = op.firstFrame; f <= last; ++f) {
+                    const Shown s = shown(k, f, i);
+                    laid.edit(f, i) = showing(k, s, column[s.frame]);
+                }
+            }
+        } else {
+            for (std::size_t f = op.firstFrame; f <= last; ++f)
+                applyInFrame(k, std::span<AgentFrame>(&laid.edit(f, 0), width));
+        }
+    }
+    return laid;
+}
+
 FrameCache applyLayout(const Scene& scene, const FrameCache& recorded, std::vector<std::string>* messages)
 {
-    FrameCache laid = recorded;
     if (scene.layout.ops.empty())
-        return laid;
-    const LayoutSelection selection = selectLayoutAgents(scene, scene.layout, recorded);
-    for (std::size_t k = 0; k < scene.layout.ops.size(); ++k)
-        if (scene.layout.ops[k].enabled)
-            applyOp(laid, scene.layout.ops[k], selection.agents[k], recorded.origin());
+        return recorded;
+    const LayoutEvaluator evaluator(scene, recorded);
     if (messages)
-        *messages = selection.messages;
-    return laid;
+        *messages = evaluator.messages();
+    return evaluator.allFrames();
 }
 
 }  // namespace throng::sim

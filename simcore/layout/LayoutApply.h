@@ -8,6 +8,7 @@
 #include "simcore/scene/Scene.h"
 #include "simcore/world/FrameCache.h"
 
+#include <span>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,44 @@ struct LayoutSelection {
     std::vector<std::string> messages;
 };
 LayoutSelection selectLayoutAgents(const Scene& scene, const LayoutLayer& layer, const FrameCache& recorded);
+
+// The layer applied to a recording: one frame at a time, as the viewport shows them
+// (frame f costs what its operations touch; a time offset also evaluates the frames it
+// shows), or every frame at once, operation after operation, as the exports write them.
+// Both go through the same per-operation code. Keeps references to `scene`'s layer and to
+// `recorded`, which must outlive it.
+class LayoutEvaluator {
+public:
+    LayoutEvaluator(const Scene& scene, const FrameCache& recorded);
+    const std::vector<std::string>& messages() const { return m_selection.messages; }
+    // Frame f with every enabled operation applied, one entry per cache agent.
+    void frame(std::size_t f, std::vector<AgentFrame>& out) const;
+    // Every frame so: a copy of the recording, edited.
+    FrameCache allFrames() const;
+
+private:
+    // What a time offset shows of agent i on frame f: the frame of the stage before it,
+    // and whether it stands there (a held pose) or, before its start, may be absent.
+    struct Shown {
+        std::size_t frame = 0;
+        bool standing = false;
+        bool beforeStart = false;
+    };
+    Shown shown(std::size_t op, std::size_t f, std::size_t agent) const;
+    AgentFrame showing(std::size_t op, const Shown& s, const AgentFrame& there) const;
+    // Operation `op` (any but a time offset) on one frame's agents, in place.
+    void applyInFrame(std::size_t op, std::span<AgentFrame> frame) const;
+    struct Memo;
+    // Frame f after the first `ops` operations.
+    const std::vector<AgentFrame>& evaluate(std::size_t ops, std::size_t f, Memo& memo) const;
+
+    const LayoutLayer& m_layer;
+    const FrameCache& m_recorded;
+    LayoutSelection m_selection;
+    std::vector<glm::vec2> m_pivots;          // per operation: rotate's pivot, in the cache's coordinates
+    std::vector<std::size_t> m_firstPresent;  // per cache agent: its first recorded frame (frames: never)
+    glm::vec2 m_shift{0.0f};                  // scene coordinates -> the cache's
+};
 
 // `recorded` with `scene.layout` applied; `messages` (when given) gets selectLayoutAgents'.
 FrameCache applyLayout(const Scene& scene, const FrameCache& recorded, std::vector<std::string>* messages = nullptr);

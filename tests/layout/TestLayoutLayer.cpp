@@ -368,6 +368,14 @@ private slots:
         }
         const sim::FrameCache laid = sim::applyLayout(b.scene, b.cache);
         QVERIFY(!laid.at(60, indexOf(b.cache, 1)).present && laid.at(59, indexOf(b.cache, 1)).present);
+        // The viewport's frame-at-a-time evaluation gives every frame the exports write.
+        const sim::LayoutEvaluator evaluator(b.scene, b.cache);
+        std::vector<sim::AgentFrame> one;
+        for (std::size_t f = 0; f < laid.frameCount(); ++f) {
+            evaluator.frame(f, one);
+            for (std::size_t i = 0; i < one.size(); ++i)
+                QVERIFY2(sameFrame(one[i], laid.at(f, i)), qPrintable(QString("frame %1 agent %2").arg(f).arg(i)));
+        }
     }
 
     // Bad entries fail with the file, line and what is wrong.
