@@ -21,6 +21,7 @@
 #include <QLineEdit>
 #include <QPushButton>
 #include <QSpinBox>
+#include <QSet>
 #include <QSlider>
 #include <QTest>
 #include <QToolButton>
@@ -239,6 +240,49 @@ private slots:
         QVERIFY(file.read(18) == QByteArray("Kaydara FBX Binary"));
         QVERIFY(choose(format, "csv"));
         QVERIFY(!joints->isEnabled() && !detail->isEnabled());
+    }
+
+    // A scene with a layout layer, opened and exported from the dialog: the CSV is the
+    // laid-out crowd (agent 1 deleted, the others 5 m east of where they walked).
+    void exportWritesTheLayoutLayersEdits()
+    {
+        const QString path = m_dir.filePath("laid.yaml");
+        QFile scene(path);
+        QVERIFY(scene.open(QIODevice::WriteOnly));
+        scene.write("throng: 1\n"
+                    "settings: {fps: 10, duration: 2, seed: 4}\n"
+                    "agent_types: [{name: walker}]\n"
+                    "goals: [{name: exit, position: [8, 0], radius: 1}]\n"
+                    "groups: [{name: g, type: walker, count: 6, rect: {min: [-6, -3], max: [0, 3]}, goal: exit}]\n"
+                    "layout:\n"
+                    "  - {op: delete, agents: {ids: [1]}}\n"
+                    "  - {op: translate, agents: {groups: [g]}, offset: [5, 0]}\n");
+        scene.close();
+        MainWindow window;
+        QVERIFY(showWithSceneFile(window, path));
+        ExportDialog* dialog = window.showExportDialog();
+        auto* format = dialog->findChild<QComboBox*>("exportFormat");
+        format->setCurrentIndex(format->findData(QStringLiteral("csv")));
+        auto* pathEdit = dialog->findChild<QLineEdit*>("exportPath");
+        const QString csv = m_dir.filePath("laid.csv");
+        pathEdit->selectAll();
+        QTest::keyClicks(pathEdit, csv);
+        QTest::mouseClick(dialog->findChild<QPushButton*>("exportButton"), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(!dialog->isBusy(), 60000);
+        QVERIFY2(dialog->outcome().startsWith("Wrote"), qPrintable(dialog->outcome()));
+        QFile file(csv);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        const QStringList rows = QString::fromUtf8(file.readAll()).trimmed().split('\n').mid(1);
+        QSet<QString> agents;
+        for (const QString& row : rows) {
+            const QStringList f = row.split(',');
+            agents.insert(f[1]);
+            QVERIFY2(f[2].toDouble() > -1.01, qPrintable(row));  // started at x >= -6, moved 5 m east
+        }
+        QCOMPARE(agents.size(), 5);  // agent 1 gone
+        QVERIFY(!agents.contains("1"));
+        QCOMPARE(rows.size() % 5, 0);
+        QVERIFY(rows.size() >= 100);
     }
 
     void exportCanBeCancelledAndLeavesNoFile()
