@@ -46,7 +46,8 @@ ExportDialog::ExportDialog(SceneDocument& document, SimulationController& simula
     for (const exporting::ExportFormat& f : exporting::exportFormats())
         m_format->addItem(QString::fromStdString(f.label), QString::fromStdString(f.key));
     m_format->setToolTip(tr("The formats throng-cli run --export writes: animated glTF for Blender, Maya, Houdini "
-                            "or a game engine, USD for film pipelines, FBX for games and older pipelines, a CSV of every agent per frame, the walkers for PedPy, or a text "
+                            "or a game engine, USD for film pipelines, FBX for games and older pipelines, a CSV "
+                            "of every agent per frame, the walkers for PedPy, or a text "
                             "file per agent (for Maya with a manifest that resources/maya/throngCrowd.mel reads)"));
     form->addRow(tr("Format"), m_format);
 

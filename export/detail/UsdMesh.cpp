@@ -47,9 +47,9 @@ void writeUsdMesh(std::string& out, int depth, const std::string& specifier, con
     const bool skinned = !mesh.skeleton.empty();
     const bool bound = !mesh.material.empty();
     line(out, depth, specifier + " " + usdQuoted(name) + " (");
-    line(out, depth + 1,
-         std::string("prepend apiSchemas = [") + (skinned ? "\"SkelBindingAPI\"" : "") + (skinned && bound ? ", " : "") +
-             (bound ? "\"MaterialBindingAPI\"" : "") + "]");
+    const std::string schemas = std::string(skinned ? "\"SkelBindingAPI\"" : "") + (skinned && bound ? ", " : "") +
+                                (bound ? "\"MaterialBindingAPI\"" : "");
+    line(out, depth + 1, "prepend apiSchemas = [" + schemas + "]");
     line(out, depth, ")");
     line(out, depth, "{");
     line(out, depth + 1, "uniform token subdivisionScheme = \"none\"");

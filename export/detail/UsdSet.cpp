@@ -19,8 +19,9 @@ namespace {
 using ColourKey = std::tuple<float, float, float, bool>;
 
 // One Mesh of the triangles `vertices` (a triangle list), named `name`, bound to `material`.
-void writeTriangles(std::string& out, int depth, const std::string& name, const std::vector<const SolidVertex*>& vertices,
-                    const std::string& material, const std::string& specifier = "def Mesh")
+void writeTriangles(std::string& out, int depth, const std::string& name,
+                    const std::vector<const SolidVertex*>& vertices, const std::string& material,
+                    const std::string& specifier = "def Mesh")
 {
     UsdMeshData data;
     for (const SolidVertex* v : vertices) {
@@ -35,7 +36,8 @@ void writeTriangles(std::string& out, int depth, const std::string& name, const 
 }
 
 // The part `name` of `solids`: an Xform with a Mesh per colour. Nothing for no triangles.
-void writeSetPart(std::string& out, int depth, const std::string& name, const SolidMesh& solids, UsdMaterials& materials)
+void writeSetPart(std::string& out, int depth, const std::string& name, const SolidMesh& solids,
+                  UsdMaterials& materials)
 {
     std::map<ColourKey, std::vector<const SolidVertex*>> byColour;
     for (const SolidVertex& v : solids.vertices())

@@ -86,7 +86,8 @@ private slots:
         for (const QString& row : after.mid(1)) {
             const QStringList f = row.split(',');
             QVERIFY(f[1] != "1");
-            const QStringList original = before.filter(QRegularExpression("^" + f[0] + "," + f[1] + ",")).first().split(',');
+            const QRegularExpression sameRow("^" + f[0] + "," + f[1] + ",");
+            const QStringList original = before.filter(sameRow).first().split(',');
             QVERIFY2(std::abs(f[2].toDouble() - original[2].toDouble() - 5.0) < 1e-4, qPrintable(row));
             QCOMPARE(f[4], original[4]);
             ++compared;

@@ -136,7 +136,8 @@ private slots:
                 const double scale = keyAt(channel->mScalingKeys, channel->mNumScalingKeys, time).x;
                 const auto row = frames.find(int(f));
                 if (row == frames.end()) {
-                    QVERIFY2(scale < 1e-3, qPrintable(QString("%1 frame %2 out, scale %3").arg(name).arg(f).arg(scale)));
+                    QVERIFY2(scale < 1e-3,
+                             qPrintable(QString("%1 frame %2 out, scale %3").arg(name).arg(f).arg(scale)));
                     left = true;
                     continue;
                 }
@@ -223,7 +224,9 @@ private slots:
                 const glm::dvec3 body(p[4].toDouble(), p[5].toDouble(), p[6].toDouble());
                 const double apart = glm::length(glm::dvec2(body.x - root.x, body.z - root.z));
                 QVERIFY2(apart < 0.3 && body.y > 0.5 && body.y < 1.4,
-                         qPrintable(where + QString(": body's middle %1 m off the root, %2 m up").arg(apart).arg(body.y)));
+                         qPrintable(where + QString(": body's middle %1 m off the root, %2 m up")
+                                                .arg(apart)
+                                                .arg(body.y)));
                 ++compared;
             }
         }

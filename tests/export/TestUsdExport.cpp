@@ -157,7 +157,9 @@ private slots:
                     gone = true;
                     continue;
                 }
-                QVERIFY2(shown == "inherited", qPrintable(QString("%1 frame %2: %3").arg(a["name"].toString()).arg(f).arg(QJsonDocument(visibility).toJson(QJsonDocument::Compact).constData())));
+                const QByteArray samples = QJsonDocument(visibility).toJson(QJsonDocument::Compact);
+                QVERIFY2(shown == "inherited",
+                         qPrintable(QString("%1 frame %2: %3").arg(a["name"].toString()).arg(f).arg(samples.constData())));
                 const double error = glm::length(o + sampleAt(translate, double(f)) - row->second);
                 worst = std::max(worst, error);
                 ++compared;
@@ -209,7 +211,8 @@ private slots:
             }
             ++visitors;
             QVERIFY(agent.contains("\"tint0\" {") && agent.contains("\"tint1\" {"));
-            QVERIFY(agent.contains("</Crowd/Materials/visitor_tint0>") && agent.contains("</Crowd/Materials/visitor_tint1>"));
+            QVERIFY(agent.contains("</Crowd/Materials/visitor_tint0>") &&
+                    agent.contains("</Crowd/Materials/visitor_tint1>"));
         }
         QCOMPARE(visitors, 4);
         QVERIFY(text.contains("def Material \"visitor_tint1\""));
@@ -306,7 +309,8 @@ private slots:
         const double compactBytes = double(QFileInfo(QString::fromStdString(options.path)).size() +
                                            QFileInfo(dir.filePath("court.clips.usda")).size());
         const double exactBytes = double(QFileInfo(QString::fromStdString(exact.path)).size());
-        QVERIFY2(compactBytes < 0.7 * exactBytes, qPrintable(QString("%1 vs %2 bytes").arg(compactBytes).arg(exactBytes)));
+        QVERIFY2(compactBytes < 0.7 * exactBytes,
+                 qPrintable(QString("%1 vs %2 bytes").arg(compactBytes).arg(exactBytes)));
         qInfo("compact: %d agent-frames within %.3f samples of the distance walked; %.0f bytes, exact %.0f", checked,
               worst, compactBytes, exactBytes);
     }

@@ -128,7 +128,8 @@ private slots:
         QVERIFY2(messages.empty(), messages.empty() ? "" : messages[0].c_str());
 
         QTemporaryDir dir;
-        const std::string before = dir.filePath("before.csv").toStdString(), after = dir.filePath("after.csv").toStdString();
+        const std::string before = dir.filePath("before.csv").toStdString();
+        const std::string after = dir.filePath("after.csv").toStdString();
         QVERIFY(exporting::writeTrajectoryCsv(s.cache, before).ok());
         QVERIFY(exporting::writeTrajectoryCsv(laid, after).ok());
         const auto rowsBefore = csvRows(before), rowsAfter = csvRows(after);
@@ -171,7 +172,8 @@ private slots:
             if (s.cache.agents()[i].typeIndex != 1)
                 continue;
             for (std::size_t f = 0; f < s.cache.frameCount(); ++f) {
-                const glm::vec2 before = xz(s.cache.at(f, i)) - glm::vec2(1, 2), after = xz(laid.at(f, i)) - glm::vec2(1, 2);
+                const glm::vec2 before = xz(s.cache.at(f, i)) - glm::vec2(1, 2);
+                const glm::vec2 after = xz(laid.at(f, i)) - glm::vec2(1, 2);
                 QVERIFY(std::abs(glm::length(before) - glm::length(after)) < 1e-4f);
                 // Counter-clockwise seen from above (+y up): +x turns to -z, as headings do.
                 QVERIFY2(glm::length(after - glm::vec2(before.y, -before.x)) < 1e-4f, qPrintable(QString::number(f)));
@@ -335,7 +337,8 @@ private slots:
         const std::string yaml = std::string(kSquare) + R"(layout:
   - {name: nudge, op: translate, agents: {ids: [1], groups: [northbound]}, offset: [1.5, 0], frames: [10, 40]}
   - {op: rotate, agents: {types: [runner]}, angle: 30}
-  - {op: time_offset, agents: {lasso: [[-16, -5], [-9, -5], [-9, 5], [-16, 5]], lasso_frame: 0}, later: 12, hold_first: false}
+  - {op: time_offset, agents: {lasso: [[-16, -5], [-9, -5], [-9, 5], [-16, 5]], lasso_frame: 0}, later: 12,
+     hold_first: false}
   - {op: mirror, enabled: false, agents: {ids: [1]}, axis: [[0, 0], [1, 1]]}
   - {op: delete, agents: {ids: [1]}, frames: [60]}
   - {op: expand, agents: {groups: [eastbound]}, factor: 1.25}

@@ -111,7 +111,8 @@ void SceneReader::readLayout(const YAML::Node& node, Scene& scene)
             std::vector<glm::vec2> axis;
             if (m_f.readPolyline(item, "axis", key, axis, true, 2)) {
                 if (axis.size() != 2 || axis[0] == axis[1])
-                    m_f.error(item["axis"].Mark(), key + ".axis", "the mirror's line: two different points [[x, z], [x, z]]");
+                    m_f.error(item["axis"].Mark(), key + ".axis",
+                              "the mirror's line: two different points [[x, z], [x, z]]");
                 else {
                     op.axis[0] = axis[0];
                     op.axis[1] = axis[1];
