@@ -85,8 +85,15 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
     connect(&m_document, &SceneDocument::filePathChanged, this, &MainWindow::updateTitle);
     connect(&m_document, &SceneDocument::modifiedChanged, this, &QWidget::setWindowModified);
     connect(m_viewport, &Viewport::agentsChanged, this, &MainWindow::updateAgentStatus);
-    connect(m_simulation, &SimulationController::frameChanged, this,
-            [this](std::size_t frame) { m_viewport->showFrame(m_simulation->cache(), frame); });
+    connect(m_simulation, &SimulationController::frameChanged, this, [this](std::size_t frame) {
+        // The recording through the scene's layout layer, if it has one.
+        m_viewport->showFrame(m_shown.frames(m_simulation->cache(), m_document.scene()), frame);
+        QStringList notes;
+        for (const std::string& message : m_shown.takeNewMessages())
+            notes << QString::fromStdString(message);
+        if (!notes.isEmpty())
+            m_messages->showNote(notes.join('\n'));
+    });
     connect(m_messages, &MessagesPanel::itemRequested, this, [this](SceneItem item) {
         if (item.index < itemCount(m_document.scene(), item.kind))
             m_document.setSelection({item});

@@ -6,6 +6,7 @@
 
 #include "editor/SceneChange.h"
 #include "editor/SceneDocument.h"
+#include "editor/simulation/ShownRecording.h"
 
 #include <QMainWindow>
 #include <QMessageBox>
@@ -100,6 +101,7 @@ private:
     void restoreWindowState();
 
     SceneDocument m_document;
+    ShownRecording m_shown;  // the frames the viewport shows: the recording through the layout layer
     Viewport* m_viewport = nullptr;
     ToolManager* m_tools = nullptr;
     SimulationController* m_simulation = nullptr;

@@ -8,10 +8,17 @@
 #include "editor/exporting/ExportDialog.h"
 #include "editor/panels/TimelinePanel.h"
 #include "editor/simulation/SimulationController.h"
+#include "editor/viewport/ShownAgents.h"
 #include "editor/viewport/Viewport.h"
 #include "export/ExportFormats.h"
+#include "simcore/world/World.h"
+#include "simcore/layout/LayoutApply.h"
+#include "simcore/io/SceneIO.h"
+#include "editor/simulation/ShownRecording.h"
 
 #include <glm/geometric.hpp>
+
+#include <map>
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -20,6 +27,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
+#include <QListWidget>
 #include <QSpinBox>
 #include <QSet>
 #include <QSlider>
@@ -283,6 +291,90 @@ private slots:
         QVERIFY(!agents.contains("1"));
         QCOMPARE(rows.size() % 5, 0);
         QVERIFY(rows.size() >= 100);
+    }
+
+    // The viewport shows the recording through the layout layer: the deleted agent is not
+    // drawn, the moved ones stand 5 m east of the simulation's places; an operation whose
+    // agent the recording lacks is named in Messages.
+    void theViewportShowsTheLayoutLayer()
+    {
+        const char* base = "throng: 1\n"
+                           "settings: {fps: 10, duration: 2, seed: 4}\n"
+                           "agent_types: [{name: walker}]\n"
+                           "goals: [{name: exit, position: [8, 0], radius: 1}]\n"
+                           "groups: [{name: g, type: walker, count: 6, rect: {min: [-6, -3], max: [0, 3]}, goal: exit}]\n";
+        auto shownAt = [&](const QString& name, const QByteArray& layout, std::map<sim::AgentId, glm::vec3>& feet,
+                           QString& messages) {
+            const QString path = m_dir.filePath(name);
+            QFile scene(path);
+            if (!scene.open(QIODevice::WriteOnly))
+                return false;
+            scene.write(QByteArray(base) + layout);
+            scene.close();
+            MainWindow window;
+            if (!showWithSceneFile(window, path))
+                return false;
+            auto* viewport = window.findChild<Viewport*>();
+            if (!QTest::qWaitFor([&] { return !viewport->shownAgents().empty(); }, 20000))
+                return false;
+            const ShownAgents& shown = viewport->shownAgents();
+            for (std::size_t i = 0; i < shown.size(); ++i)
+                if (shown.drawn(i))
+                    feet[shown.id(i)] = shown.feet(i);
+            for (QListWidget* list : window.findChildren<QListWidget*>())
+                for (int row = 0; row < list->count(); ++row)
+                    messages += list->item(row)->text() + "\n";
+            return true;
+        };
+        std::map<sim::AgentId, glm::vec3> plain, laid;
+        QString plainMessages, laidMessages;
+        QVERIFY(shownAt("plain.yaml", "", plain, plainMessages));
+        QVERIFY(shownAt("shown.yaml",
+                        "layout:\n"
+                        "  - {op: delete, agents: {ids: [1]}}\n"
+                        "  - {op: translate, agents: {groups: [g]}, offset: [5, 0]}\n"
+                        "  - {op: delete, agents: {ids: [42]}}\n",
+                        laid, laidMessages));
+        QCOMPARE(plain.size(), std::size_t(6));
+        QCOMPARE(laid.size(), std::size_t(5));
+        QVERIFY(!laid.count(1));
+        for (const auto& [id, at] : laid)
+            QVERIFY2(glm::length(at - (plain.at(id) + glm::vec3(5, 0, 0))) < 1e-3f, qPrintable(QString::number(id)));
+        QVERIFY2(laidMessages.contains("1 agent is not in the recording (id 42)"), qPrintable(laidMessages));
+    }
+
+    // While a run records, the shown frames grow with it, each laid out once; the result
+    // is the whole recording laid out at once (with a translate and expand, and with a time
+    // offset, which lays out anew).
+    void theShownRecordingKeepsUpWithTheRun()
+    {
+        for (const char* extra : {"", "  - {op: time_offset, agents: {ids: [2, 3]}, later: 7}\n"}) {
+            const std::string yaml = std::string("throng: 1\n"
+                                                 "settings: {fps: 10, duration: 4, seed: 4}\n"
+                                                 "agent_types: [{name: walker}]\n"
+                                                 "goals: [{name: exit, position: [8, 0], radius: 1}]\n"
+                                                 "groups: [{name: g, type: walker, count: 6, rect: {min: [-6, -3], "
+                                                 "max: [0, 3]}, goal: exit}]\n"
+                                                 "layout:\n"
+                                                 "  - {op: translate, agents: {ids: [1, 2]}, offset: [2, 1]}\n"
+                                                 "  - {op: expand, agents: {groups: [g]}, factor: 1.5}\n") +
+                                     extra;
+            const sim::LoadResult loaded = sim::parseScene(yaml, "grow.yaml", "");
+            QVERIFY(loaded.ok());
+            sim::World world(loaded.scene);
+            sim::FrameCache cache;
+            world.startRecording(cache);
+            ShownRecording shown;
+            std::vector<sim::AgentFrame> frame;
+            for (int f = 1; f < 40; ++f) {
+                world.step();
+                world.snapshot(frame);
+                cache.append(frame);
+                QCOMPARE(shown.frames(cache, loaded.scene).frameCount(), cache.frameCount());
+            }
+            QCOMPARE(shown.frames(cache, loaded.scene).hash(), sim::applyLayout(loaded.scene, cache).hash());
+            QVERIFY(shown.frames(cache, loaded.scene).hash() != cache.hash());
+        }
     }
 
     void exportCanBeCancelledAndLeavesNoFile()

@@ -1,0 +1,58 @@
+#include "editor/simulation/ShownRecording.h"
+
+#include "simcore/layout/LayoutApply.h"
+
+#include <algorithm>
+
+namespace throng::editor {
+
+namespace {
+
+bool retimes(const sim::LayoutLayer& layer)
+{
+    return std::any_of(layer.ops.begin(), layer.ops.end(), [](const sim::LayoutOp& op) {
+        return op.enabled && op.kind == sim::LayoutKind::TimeOffset;
+    });
+}
+
+}  // namespace
+
+const sim::FrameCache& ShownRecording::frames(const sim::FrameCache& recorded, const sim::Scene& scene)
+{
+    if (scene.layout.ops.empty()) {
+        m_valid = false;
+        m_messages.clear();
+        return recorded;
+    }
+    const bool same = m_valid && scene.layout == m_layer && recorded.revision() == m_revision &&
+                      recorded.agentCount() == m_laid.agentCount();
+    if (same && recorded.frameCount() == m_laid.frameCount())
+        return m_laid;
+    // Grown by frames appended to one agent set: lay out only the new ones.
+    if (same && recorded.frameCount() > m_laid.frameCount() && m_laid.frameCount() > 0 &&
+        recorded.agentSetChanges().size() == 1 && !retimes(m_layer)) {
+        const sim::LayoutEvaluator evaluator(scene, recorded);
+        std::vector<sim::AgentFrame> frame;
+        for (std::size_t f = m_laid.frameCount(); f < recorded.frameCount(); ++f) {
+            evaluator.frame(f, frame);
+            m_laid.append(frame);
+        }
+        m_messages = evaluator.messages();
+        return m_laid;
+    }
+    m_laid = sim::applyLayout(scene, recorded, &m_messages);
+    m_layer = scene.layout;
+    m_revision = recorded.revision();
+    m_valid = true;
+    return m_laid;
+}
+
+std::vector<std::string> ShownRecording::takeNewMessages()
+{
+    if (m_messages == m_told)
+        return {};
+    m_told = m_messages;
+    return m_messages;
+}
+
+}  // namespace throng::editor

@@ -1,0 +1,35 @@
+#pragma once
+// The recording as the editor shows it: the simulation's frames, or, when the scene has a
+// layout layer, those frames through it (sim::LayoutEvaluator). Keeps the laid-out copy
+// while the layer and the recording stay the same, and extends it frame by frame while the
+// recording grows (a layer with a time offset is laid out anew: its early frames may show
+// later ones). Holds no Qt state.
+
+#include "simcore/layout/LayoutLayer.h"
+#include "simcore/scene/Scene.h"
+#include "simcore/world/FrameCache.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace throng::editor {
+
+class ShownRecording {
+public:
+    // The frames to show of `recorded`, a recording of `scene`: `recorded` itself when the
+    // scene has no layout layer. Valid until the next call.
+    const sim::FrameCache& frames(const sim::FrameCache& recorded, const sim::Scene& scene);
+    // What the layer's selections say (operations that select nobody, ids the recording
+    // lacks) since the last call, once each time they change; empty otherwise.
+    std::vector<std::string> takeNewMessages();
+
+private:
+    sim::FrameCache m_laid;
+    sim::LayoutLayer m_layer;
+    std::uint64_t m_revision = 0;
+    bool m_valid = false;
+    std::vector<std::string> m_messages, m_told;
+};
+
+}  // namespace throng::editor
