@@ -2,7 +2,8 @@
 // walkers heading east, eight heading north, one placed agent in a group of its own). Each
 // operation measured where a user would look: the trajectories CSV. Moved agents are
 // where the layer puts them and the others byte for byte where they were; a retimed
-// agent's first step comes later by the offset; deleted agents leave the CSV; a turn
+// agent's first step comes later by the offset; deleted agents leave the CSV and are
+// invisible in USD; a turn
 // keeps distances to its pivot; a mirror reflects the walk; Expand spreads the group about
 // its centre. Selections by id, group, type and lasso; operations that select nobody are
 // named; the file round trip keeps the layer; bad entries fail with file:line messages;
@@ -10,10 +11,12 @@
 #include "TestRegistry.h"
 
 #include "export/TrajectoryCsv.h"
+#include "export/UsdExporter.h"
 #include "simcore/io/SceneIO.h"
 #include "simcore/layout/LayoutApply.h"
 #include "simcore/world/World.h"
 
+#include <QFile>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -238,6 +241,22 @@ private slots:
         QCOMPARE(rows.at(first).rbegin()->first, 29);
         QVERIFY(!rows.count(first + 1));
         QCOMPARE(int(rows.size()), 20);
+        // In a skinned export they are hidden from those frames: USD's visibility says so.
+        exporting::UsdOptions usd;
+        usd.path = dir.filePath("laid.usda").toStdString();
+        usd.lod = exporting::Lod::Far;
+        usd.includeSet = false;
+        QVERIFY(exporting::exportUsd(s.scene, laid, usd).ok());
+        QFile file(QString::fromStdString(usd.path));
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        const QString text = QString::fromUtf8(file.readAll());
+        auto visibility = [&](std::uint32_t id) {
+            const qsizetype at = text.indexOf(QString("def SkelRoot \"agent_%1_walker\"").arg(id));
+            const qsizetype samples = text.indexOf("token visibility.timeSamples = {", at);
+            return text.mid(samples, text.indexOf('}', samples) - samples).simplified();
+        };
+        QCOMPARE(visibility(first), QString("token visibility.timeSamples = { 0: \"inherited\", 30: \"invisible\","));
+        QCOMPARE(visibility(first + 1), QString("token visibility.timeSamples = { 0: \"invisible\","));
     }
 
     // Mirror the eastbound group across the line x = 0: they walk west, at -x of where they
