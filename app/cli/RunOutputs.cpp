@@ -5,6 +5,7 @@
 #include "export/ExportFormats.h"
 #include "simcore/io/SceneIO.h"
 #include "simcore/layout/LayoutApply.h"
+#include "simcore/layout/LayoutCheck.h"
 #ifdef THRONG_HAS_REPORT
 #include "report/HtmlReport.h"
 #include "simcore/analysis/RunAnalysis.h"
@@ -55,6 +56,9 @@ bool writeRunOutputs(const CliArguments& args, const sim::Scene& scene, const si
         laidOut = sim::applyLayout(scene, cache, &messages);
         for (const std::string& m : messages)
             err << "throng-cli: warning: " << m << '\n';
+        // What the edits broke that the simulation had kept: bodies overlapping, walls walked through.
+        if (const std::string clashes = sim::describe(sim::checkLayout(scene, cache, *laidOut)); !clashes.empty())
+            err << "throng-cli: warning: the layout layer makes " << clashes << '\n';
     }
     const sim::FrameCache& frames = laidOut ? *laidOut : cache;
     for (const ExportOutput& output : args.exports) {

@@ -68,6 +68,7 @@ private slots:
                      std::string::npos,
                  r.err.c_str());
         QVERIFY2(r.err.find("warning: layout operation 1") == std::string::npos, r.err.c_str());
+        QVERIFY2(r.err.find("the layout layer makes") == std::string::npos, r.err.c_str());  // all moved as one
         // The stats are the simulation's whatever the layer does, but for the seconds it took.
         auto withoutTimes = [](QByteArray json) {
             QStringList lines = QString::fromUtf8(json).split('\n');
@@ -93,6 +94,18 @@ private slots:
             ++compared;
         }
         QCOMPARE(compared, 15 * 11);
+
+        // Squeezed to a tenth of its spread, the group's bodies overlap: the check says so.
+        const std::string squeezed = std::string(kScene) + "layout:\n"
+                                                           "  - {op: expand, agents: {groups: [g]}, factor: 0.1}\n";
+        const std::string tight = throng::test::writeText(tmp.filePath("tight.yaml"), squeezed.c_str()).toStdString();
+        r = runCli({"run", tight, "--frames", "15", "--trajectories", tmp.filePath("tight.csv").toStdString(),
+                    "--quiet"});
+        QCOMPARE(r.status, 0);
+        QVERIFY2(r.err.find("warning: the layout layer makes ") != std::string::npos &&
+                     r.err.find(" overlaps and 0 wall crossings on 15 frames (first: frame 0, agent ") !=
+                         std::string::npos,
+                 r.err.c_str());
     }
 
     void exportCsvIsTheTrajectoriesFile()

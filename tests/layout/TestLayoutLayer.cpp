@@ -6,7 +6,8 @@
 // invisible in USD; a turn
 // keeps distances to its pivot; a mirror reflects the walk; Expand spreads the group about
 // its centre. Selections by id, group, type and lasso; operations that select nobody are
-// named; the file round trip keeps the layer; bad entries fail with file:line messages;
+// named; the check after the edits finds the overlaps and wall crossings they make; the
+// file round trip keeps the layer; bad entries fail with file:line messages;
 // a re-simulation with another seed keeps the layer by agent id.
 #include "TestRegistry.h"
 
@@ -14,6 +15,7 @@
 #include "export/UsdExporter.h"
 #include "simcore/io/SceneIO.h"
 #include "simcore/layout/LayoutApply.h"
+#include "simcore/layout/LayoutCheck.h"
 #include "simcore/world/World.h"
 
 #include <QFile>
@@ -398,6 +400,72 @@ private slots:
             for (std::size_t i = 0; i < one.size(); ++i)
                 QVERIFY2(sameFrame(one[i], laid.at(f, i)), qPrintable(QString("frame %1 agent %2").arg(f).arg(i)));
         }
+    }
+
+    // The check after layout edits: an agent moved onto another's path overlaps it on the
+    // frames an independent recount from the frames finds; one moved across a wall steps
+    // through it on the frame the recount finds; what the recording already had, and
+    // agents nobody edited, are not reported.
+    void theCheckFindsWhatTheEditsBroke()
+    {
+        const std::string yaml = std::string(kSquare) + "walls:\n  - {name: fence, points: [[0, -8], [0, -12]]}\n";
+        Shot s = record(yaml);
+        const std::size_t loner = indexOf(s.cache, 1);
+        QCOMPARE(sim::checkLayout(s.scene, s.cache, s.cache).overlaps.size(), std::size_t(0));
+        // The loner walks east along z = -10 from x = -12 and crosses x = 0 (the fence's line)
+        // only if moved: put it 0.2 m beside the first eastbound walker's path instead.
+        const std::size_t other = indexOf(s.cache, sim::firstSpawnedId(s.scene));
+        sim::LayoutOp onto = op(sim::LayoutKind::Translate, {1});
+        onto.offset = xz(s.cache.at(0, other)) - xz(s.cache.at(0, loner)) + glm::vec2(0.0f, 0.2f);
+        s.scene.layout.ops = {onto};
+        const sim::FrameCache laid = sim::applyLayout(s.scene, s.cache);
+        const sim::LayoutCheck check = sim::checkLayout(s.scene, s.cache, laid);
+        // The recount: frames where the loner's body (0.3 m) overlaps another's by > 5 cm.
+        std::size_t expected = 0;
+        for (std::size_t f = 0; f < laid.frameCount(); ++f)
+            for (std::size_t j = 0; j < laid.agentCount(); ++j) {
+                if (j == loner || !laid.at(f, j).present)
+                    continue;
+                const float r = s.scene.agentTypes[laid.agents()[j].typeIndex].radiusM;
+                const float now = glm::length(xz(laid.at(f, loner)) - xz(laid.at(f, j)));
+                const float then = glm::length(xz(s.cache.at(f, loner)) - xz(s.cache.at(f, j)));
+                if (now < 0.3f + r - 0.05f && !(then < 0.3f + r - 0.05f))
+                    ++expected;
+            }
+        QVERIFY(expected > 5);
+        QCOMPARE(check.overlaps.size(), expected);
+        for (const sim::LayoutClash& c : check.overlaps)
+            QCOMPARE(c.agent, sim::AgentId(1));
+        QVERIFY2(sim::describe(check).find("(first: frame 0, agent 1 and agent ") != std::string::npos,
+                 sim::describe(check).c_str());
+
+        // An edit that moves nobody reports nothing.
+        sim::LayoutOp west = op(sim::LayoutKind::Translate, {1});
+        west.offset = {0.0f, 0.0f};
+        s.scene.layout.ops = {west};
+        QCOMPARE(sim::checkLayout(s.scene, s.cache, sim::applyLayout(s.scene, s.cache)).wallCrossings.size(),
+                 std::size_t(0));  // unedited: nothing
+        int recordedCrossing = -1;
+        for (std::size_t f = 1; f < s.cache.frameCount() && recordedCrossing < 0; ++f)
+            if (s.cache.at(f - 1, loner).position.x < 0.0f && s.cache.at(f, loner).position.x >= 0.0f)
+                recordedCrossing = int(f);
+        QVERIFY2(recordedCrossing < 0, "the loner reaches the fence without an edit");
+        // Moved west so that it stands at x = 0 on frame 40: it walks through the fence then.
+        west.offset = {-s.cache.at(40, loner).position.x, 0.0f};
+        s.scene.layout.ops = {west};
+        const sim::FrameCache moved = sim::applyLayout(s.scene, s.cache);
+        int crossing = -1;
+        for (std::size_t f = 1; f < moved.frameCount() && crossing < 0; ++f) {
+            const float z = moved.at(f, loner).position.z;
+            if (moved.at(f - 1, loner).position.x < 0.0f && moved.at(f, loner).position.x >= 0.0f && z < -8 &&
+                z > -12)
+                crossing = int(f);
+        }
+        QVERIFY(crossing > 0);
+        const sim::LayoutCheck walls = sim::checkLayout(s.scene, s.cache, moved);
+        QCOMPARE(walls.wallCrossings.size(), std::size_t(1));
+        QCOMPARE(walls.wallCrossings[0].frame, std::size_t(crossing));
+        QCOMPARE(walls.wallCrossings[0].wall, std::string("fence"));
     }
 
     // Bad entries fail with the file, line and what is wrong.

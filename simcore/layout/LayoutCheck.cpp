@@ -1,0 +1,172 @@
+#include "simcore/layout/LayoutCheck.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+#include <unordered_map>
+
+namespace throng::sim {
+
+namespace {
+
+bool unchangedFrame(const AgentFrame& a, const AgentFrame& b)
+{
+    return a.position == b.position && a.headingRad == b.headingRad && a.present == b.present && a.out == b.out &&
+           a.speed == b.speed && a.clip == b.clip;
+}
+
+bool inShot(const AgentFrame& a) { return a.present && !a.out; }
+
+glm::vec2 placeOf(const AgentFrame& a) { return {a.position.x, a.position.z}; }
+
+// Whether the step p0-p1 crosses the wall q0-q1: it ends on it or beyond (a step that only
+// starts on it was counted as the one before, which ended there).
+bool crosses(glm::vec2 p0, glm::vec2 p1, glm::vec2 q0, glm::vec2 q1)
+{
+    auto cross = [](glm::vec2 a, glm::vec2 b) { return a.x * b.y - a.y * b.x; };
+    const glm::vec2 r = p1 - p0, s = q1 - q0;
+    const float denominator = cross(r, s);
+    if (std::abs(denominator) < 1e-12f)
+        return false;  // parallel: a step along a wall does not go through it
+    const float t = cross(q0 - p0, s) / denominator, u = cross(q0 - p0, r) / denominator;
+    return t > 0.0f && t <= 1.0f && u >= 0.0f && u <= 1.0f;
+}
+
+struct WallPiece {
+    glm::vec2 a, b;
+    std::string wall;
+};
+
+// The wall a step crosses, or nullptr.
+const WallPiece* crossedWall(const std::vector<WallPiece>& walls, glm::vec2 from, glm::vec2 to)
+{
+    if (from == to)
+        return nullptr;
+    for (const WallPiece& w : walls)
+        if (crosses(from, to, w.a, w.b))
+            return &w;
+    return nullptr;
+}
+
+// Pairs of shown agents closer than their radii allow on one frame: (i, j) with i < j,
+// and how deep; only pairs with an agent `wanted` marks.
+void overlapsOn(const FrameCache& cache, std::size_t f, const std::vector<float>& radius,
+                const std::vector<std::uint8_t>& wanted, float tolerance,
+                std::map<std::pair<std::size_t, std::size_t>, float>& out)
+{
+    const std::size_t n = cache.agentCount();
+    float largest = 0.0f;
+    for (const float r : radius)
+        largest = std::max(largest, r);
+    const float cell = std::max(2.0f * largest, 0.1f);
+    std::unordered_map<std::uint64_t, std::vector<std::size_t>> grid;
+    auto key = [&](long long x, long long z) { return (std::uint64_t(x) << 32) ^ std::uint64_t(z & 0xffffffff); };
+    for (std::size_t i = 0; i < n; ++i)
+        if (inShot(cache.at(f, i))) {
+            const glm::vec2 p = placeOf(cache.at(f, i));
+            grid[key(std::llround(std::floor(p.x / cell)), std::llround(std::floor(p.y / cell)))].push_back(i);
+        }
+    for (std::size_t i = 0; i < n; ++i) {
+        if (!wanted[i] || !inShot(cache.at(f, i)))
+            continue;
+        const glm::vec2 p = placeOf(cache.at(f, i));
+        const long long cx = std::llround(std::floor(p.x / cell)), cz = std::llround(std::floor(p.y / cell));
+        for (long long dx = -1; dx <= 1; ++dx)
+            for (long long dz = -1; dz <= 1; ++dz) {
+                const auto it = grid.find(key(cx + dx, cz + dz));
+                if (it == grid.end())
+                    continue;
+                for (const std::size_t j : it->second) {
+                    if (j == i)
+                        continue;
+                    const float depth = radius[i] + radius[j] - glm::length(p - placeOf(cache.at(f, j)));
+                    if (depth > tolerance)
+                        out[{std::min(i, j), std::max(i, j)}] = depth;
+                }
+            }
+    }
+}
+
+}  // namespace
+
+LayoutCheck checkLayout(const Scene& scene, const FrameCache& recorded, const FrameCache& laid, float toleranceM)
+{
+    LayoutCheck check;
+    const std::size_t frames = std::min(recorded.frameCount(), laid.frameCount());
+    const std::size_t n = laid.agentCount();
+    if (recorded.agentCount() != n || frames == 0)
+        return check;
+    std::vector<std::uint8_t> edited(n, 0);
+    for (std::size_t f = 0; f < frames; ++f)
+        for (std::size_t i = 0; i < n; ++i)
+            if (!edited[i] && !unchangedFrame(recorded.at(f, i), laid.at(f, i)))
+                edited[i] = 1;
+    if (std::find(edited.begin(), edited.end(), 1) == edited.end())
+        return check;
+    std::vector<float> radius(n, 0.3f);
+    for (std::size_t i = 0; i < n; ++i)
+        if (laid.agents()[i].typeIndex < scene.agentTypes.size())
+            radius[i] = scene.agentTypes[laid.agents()[i].typeIndex].radiusM;
+    std::vector<WallPiece> walls;
+    const glm::vec2 shift(float(laid.origin().x), float(laid.origin().z));
+    for (std::size_t w = 0; w < scene.walls.size(); ++w)
+        for (std::size_t k = 0; k + 1 < scene.walls[w].points.size(); ++k)
+            walls.push_back({scene.walls[w].points[k] - shift, scene.walls[w].points[k + 1] - shift,
+                             scene.walls[w].name.empty() ? "wall " + std::to_string(w + 1) : scene.walls[w].name});
+
+    std::set<std::size_t> clashFrames;
+    for (std::size_t f = 0; f < frames; ++f) {
+        std::map<std::pair<std::size_t, std::size_t>, float> now, before;
+        overlapsOn(laid, f, radius, edited, toleranceM, now);
+        if (!now.empty())
+            overlapsOn(recorded, f, radius, edited, toleranceM, before);
+        for (const auto& [pair, depth] : now) {
+            if (before.count(pair))
+                continue;
+            const std::size_t a = edited[pair.first] ? pair.first : pair.second;
+            const std::size_t b = a == pair.first ? pair.second : pair.first;
+            check.overlaps.push_back({f, laid.agents()[a].id, laid.agents()[b].id, {}, depth});
+            clashFrames.insert(f);
+        }
+        if (f == 0 || walls.empty())
+            continue;
+        for (std::size_t i = 0; i < n; ++i) {
+            if (!edited[i] || !inShot(laid.at(f, i)) || !inShot(laid.at(f - 1, i)))
+                continue;
+            const WallPiece* wall = crossedWall(walls, placeOf(laid.at(f - 1, i)), placeOf(laid.at(f, i)));
+            if (!wall)
+                continue;
+            const bool recordedToo = inShot(recorded.at(f, i)) && inShot(recorded.at(f - 1, i)) &&
+                                     crossedWall(walls, placeOf(recorded.at(f - 1, i)), placeOf(recorded.at(f, i)));
+            if (recordedToo)
+                continue;
+            check.wallCrossings.push_back({f, laid.agents()[i].id, 0, wall->wall, 0.0f});
+            clashFrames.insert(f);
+        }
+    }
+    check.frames = clashFrames.size();
+    return check;
+}
+
+std::string describe(const LayoutCheck& check)
+{
+    if (check.overlaps.empty() && check.wallCrossings.empty())
+        return {};
+    auto count = [](std::size_t n, const char* one, const char* many) {
+        return std::to_string(n) + " " + (n == 1 ? one : many);
+    };
+    std::string text = count(check.overlaps.size(), "overlap", "overlaps") + " and " +
+                       count(check.wallCrossings.size(), "wall crossing", "wall crossings") + " on " +
+                       count(check.frames, "frame", "frames");
+    const bool overlapFirst = !check.overlaps.empty() &&
+                              (check.wallCrossings.empty() || check.overlaps[0].frame <= check.wallCrossings[0].frame);
+    const LayoutClash& first = overlapFirst ? check.overlaps[0] : check.wallCrossings[0];
+    text += " (first: frame " + std::to_string(first.frame) + ", agent " + std::to_string(first.agent) +
+            (first.other ? " and agent " + std::to_string(first.other) : " through " + first.wall) + ")";
+    return text;
+}
+
+}  // namespace throng::sim
