@@ -25,7 +25,7 @@ san_log="$san/background-build.log"
 # In this script's session, so that nice ranks it below the tests (the kernel's autogroups
 # share the processor equally between sessions, whatever their processes' nice values).
 nice -n 19 ninja -C "$san" -j"$jobs" test_simcore test_worldbrain test_worldstate test_worldnav \
-  test_nav test_traffic test_brain test_export test_sources >"$san_log" 2>&1 &
+  test_nav test_traffic test_brain test_export test_sources test_layout >"$san_log" 2>&1 &
 san_build=$!
 # Whatever happens to the Release tests, the background build does not outlive this script.
 trap 'kill "$san_build" 2>/dev/null || true' EXIT
