@@ -76,4 +76,20 @@ std::map<int, std::map<int, glm::dvec3>> readTrajectoryRows(const std::string& c
     return rows;
 }
 
+std::map<int, std::map<int, double>> readTrajectoryHeadings(const std::string& csvPath)
+{
+    std::map<int, std::map<int, double>> rows;
+    std::ifstream in(csvPath);
+    std::string line;
+    std::getline(in, line);
+    while (std::getline(in, line)) {
+        std::istringstream s(line);
+        std::string field[6];
+        for (std::string& f : field)
+            std::getline(s, f, ',');
+        rows[std::stoi(field[1])][std::stoi(field[0])] = std::stod(field[5]) * 3.14159265358979 / 180.0;
+    }
+    return rows;
+}
+
 }  // namespace throng::test

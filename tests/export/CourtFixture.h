@@ -24,5 +24,7 @@ CourtShot recordCourt(double shift);
 
 // A trajectories CSV's rows: agent id -> frame -> position (the scene's coordinates).
 std::map<int, std::map<int, glm::dvec3>> readTrajectoryRows(const std::string& csvPath);
+// Its headings: agent id -> frame -> heading, radians (the CSV's degrees).
+std::map<int, std::map<int, double>> readTrajectoryHeadings(const std::string& csvPath);
 
 }  // namespace throng::test

@@ -152,6 +152,30 @@ private slots:
         QVERIFY2(skinned >= agents * 4, qPrintable(QString("%1 skinned meshes").arg(skinned)));
         QVERIFY2(worst < 1e-3, qPrintable(QString("worst root %1 m from the CSV").arg(worst)));
         QVERIFY2(gone >= 4, qPrintable(QString("%1 agents left through the door").arg(gone)));
+        // Each root faces where the CSV says on every frame it is there (FBX's Euler keys,
+        // read back by assimp as quaternions about +Y).
+        const auto headings = test::readTrajectoryHeadings(csv);
+        double worstTurn = 0.0;
+        int turns = 0;
+        for (unsigned c = 0; c < crowd->mNumChildren; ++c) {
+            const QString name = crowd->mChildren[c]->mName.C_Str();
+            if (!name.startsWith("agent_"))
+                continue;
+            const aiNodeAnim* channel = channelOf(anim, crowd->mChildren[c]->mName.C_Str());
+            const auto& byFrame = headings.at(name.section('_', 1, 1).toInt());
+            for (unsigned k = 0; k < channel->mNumRotationKeys; ++k) {
+                const aiQuaternion& q = channel->mRotationKeys[k].mValue;
+                const int f = int(std::lround(channel->mRotationKeys[k].mTime / ticks * 12.0));
+                const auto row = byFrame.find(f);
+                if (row == byFrame.end())
+                    continue;
+                const double yaw = 2.0 * std::atan2(double(q.y), double(q.w));
+                worstTurn = std::max(worstTurn, std::abs(std::remainder(yaw - row->second, 2.0 * 3.14159265358979)));
+                ++turns;
+            }
+        }
+        QVERIFY2(worstTurn < 2e-3, qPrintable(QString("worst heading %1 rad from the CSV").arg(worstTurn)));
+        QVERIFY(turns > 700);
         QVERIFY(compared > 700);
         qInfo("assimp: %d agents, %d skinned meshes, %d agent-frames within %.2g m of the CSV, %d left the shot",
               agents, skinned, compared, worst, gone);

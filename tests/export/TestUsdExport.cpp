@@ -168,6 +168,27 @@ private slots:
         }
         QVERIFY2(worst < 1e-3, qPrintable(QString("worst root %1 m from the CSV").arg(worst)));
         QVERIFY2(left >= 4, qPrintable(QString("%1 agents left through the door").arg(left)));
+        // Each agent faces where the CSV says: every orient sample, a turn about +Y by its heading.
+        const auto headings = test::readTrajectoryHeadings(csv);
+        double worstTurn = 0.0;
+        int turns = 0;
+        for (const QJsonValue& v : s["agentList"].toArray()) {
+            const QJsonObject a = v.toObject();
+            const auto& byFrame = headings.at(a["name"].toString().section('_', 1, 1).toInt());
+            for (const QJsonValue& sample : a["orient"].toArray()) {
+                const int f = int(sample.toArray()[0].toDouble());
+                const QJsonArray q = sample.toArray()[1].toArray();  // (w, x, y, z)
+                QVERIFY(std::abs(q[1].toDouble()) < 1e-6 && std::abs(q[3].toDouble()) < 1e-6);
+                const auto row = byFrame.find(f);
+                if (row == byFrame.end())
+                    continue;
+                const double yaw = 2.0 * std::atan2(q[2].toDouble(), q[0].toDouble());
+                worstTurn = std::max(worstTurn, std::abs(std::remainder(yaw - row->second, 2.0 * 3.14159265358979)));
+                ++turns;
+            }
+        }
+        QVERIFY2(worstTurn < 2e-3, qPrintable(QString("worst heading %1 rad from the CSV").arg(worstTurn)));
+        QVERIFY(turns > 100);
         QVERIFY(compared > 1000);
         qInfo("%d agent-frames within %.2g m of the CSV; %d agents left the shot", compared, worst, left);
     }
