@@ -39,10 +39,6 @@ void addPart(AssimpScene& out, aiNode* parent, const std::string& name, const So
     out.setMeshes(node, meshes);
 }
 
-const char* lampName(sim::LightPhase lamp)
-{
-    return lamp == sim::LightPhase::Red ? "red" : lamp == sim::LightPhase::Yellow ? "yellow" : "green";
-}
 
 }  // namespace
 
@@ -87,11 +83,8 @@ void addAssimpSet(AssimpScene& out, aiNode* parent, const sim::Scene& original, 
         const float ground = sim::terrainHeight(scene.terrain, light.position.x, light.position.y);
         for (const sim::LightPhase lamp : SetSolids::kLamps) {
             SolidMesh lit;
-            constexpr float kOver = 1.03f;  // just over the dark lamp
-            lit.addCylinder({0.0f, 0.0f}, SetSolids::kLampRadiusM * kOver, SetSolids::kHeadSegments,
-                            -SetSolids::kLampHalfHeightM * kOver, SetSolids::kLampHalfHeightM * kOver,
-                            SetSolids::lampColour(lamp), true, 1.0f);
-            const std::string name = "set_lamp_" + light.name + "_" + lampName(lamp);
+            SetSolids::addLitLamp(lamp, lit);
+            const std::string name = "set_lamp_" + light.name + "_" + SetSolids::lampName(lamp);
             const glm::vec3 at(light.position.x, ground + SetSolids::lampHeightM(lamp), light.position.y);
             aiNode* node = out.addNode(set, name, toAssimp(glm::translate(glm::mat4(1.0f), at)));
             std::vector<glm::vec3> positions, normals;
@@ -100,8 +93,8 @@ void addAssimpSet(AssimpScene& out, aiNode* parent, const sim::Scene& original, 
                 normals.push_back(v.normal);
             }
             const glm::vec3 rgb(SetSolids::lampColour(lamp));
-            out.setMeshes(node, {out.addRigidMesh(name, positions, normals,
-                                                  out.material(std::string("set_lamp_") + lampName(lamp), rgb, true))});
+            const unsigned material = out.material(std::string("set_lamp_") + SetSolids::lampName(lamp), rgb, true);
+            out.setMeshes(node, {out.addRigidMesh(name, positions, normals, material)});
             std::vector<std::uint8_t> on(frames);
             for (std::size_t f = 0; f < frames; ++f)
                 on[f] = sim::lightPhaseAt(light, double(firstFrame + f) / double(fps)) == lamp ? 1 : 0;

@@ -125,19 +125,14 @@ int addSetNodes(GltfBuilder& b, AnimationChannels& channels, const sim::Scene& o
         std::map<sim::LightPhase, int> litMesh;  // one lit lamp about its own middle, shared
         for (const sim::LightPhase lamp : SetSolids::kLamps) {
             SolidMesh lit;
-            constexpr float kOver = 1.03f;  // just over the dark lamp
-            lit.addCylinder({0.0f, 0.0f}, SetSolids::kLampRadiusM * kOver, SetSolids::kHeadSegments,
-                            -SetSolids::kLampHalfHeightM * kOver, SetSolids::kLampHalfHeightM * kOver,
-                            SetSolids::lampColour(lamp), true, 1.0f);
+            SetSolids::addLitLamp(lamp, lit);
             litMesh[lamp] = addMesh(b, materials, lit, "set_lamp_lit");
         }
         for (const sim::TrafficLight& light : scene.trafficLights) {
             const float ground = sim::terrainHeight(scene.terrain, light.position.x, light.position.y);
             for (const sim::LightPhase lamp : SetSolids::kLamps) {
-                const char* colour = lamp == sim::LightPhase::Red      ? "red"
-                                     : lamp == sim::LightPhase::Yellow ? "yellow"
-                                                                       : "green";
-                const int node = addNode(model, "set_lamp_" + light.name + "_" + colour, litMesh[lamp]);
+                const int node =
+                    addNode(model, "set_lamp_" + light.name + "_" + SetSolids::lampName(lamp), litMesh[lamp]);
                 model.nodes[node].translation = {light.position.x, ground + SetSolids::lampHeightM(lamp),
                                                  light.position.y};
                 // Lit (scale 1) on the frames its phase shows it, else nothing (scale 0).

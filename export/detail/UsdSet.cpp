@@ -64,10 +64,6 @@ void writeSetPart(std::string& out, int depth, const std::string& name, const So
     out += "}\n";
 }
 
-const char* lampName(sim::LightPhase lamp)
-{
-    return lamp == sim::LightPhase::Red ? "red" : lamp == sim::LightPhase::Yellow ? "yellow" : "green";
-}
 
 }  // namespace
 
@@ -100,16 +96,14 @@ bool writeUsdSet(std::string& out, int depth, const std::string& path, const sim
         std::vector<SolidMesh> lit(SetSolids::kLamps.size());
         for (std::size_t l = 0; l < SetSolids::kLamps.size(); ++l) {
             const sim::LightPhase lamp = SetSolids::kLamps[l];
-            constexpr float kOver = 1.03f;  // just over the dark lamp
-            lit[l].addCylinder({0.0f, 0.0f}, SetSolids::kLampRadiusM * kOver, SetSolids::kHeadSegments,
-                               -SetSolids::kLampHalfHeightM * kOver, SetSolids::kLampHalfHeightM * kOver,
-                               SetSolids::lampColour(lamp), true, 1.0f);
+            SetSolids::addLitLamp(lamp, lit[l]);
             std::vector<const SolidVertex*> vertices;
             for (const SolidVertex& v : lit[l].vertices())
                 vertices.push_back(&v);
             const glm::vec3 rgb(SetSolids::lampColour(lamp));
-            writeTriangles(body, depth + 2, lampName(lamp), vertices,
-                           materials.path(std::string("set_lamp_") + lampName(lamp), rgb, 0.85f, true), "class Mesh");
+            const std::string name = SetSolids::lampName(lamp);
+            writeTriangles(body, depth + 2, name, vertices, materials.path("set_lamp_" + name, rgb, 0.85f, true),
+                           "class Mesh");
         }
         indent(body, depth + 1);
         body += "}\n";
@@ -117,9 +111,10 @@ bool writeUsdSet(std::string& out, int depth, const std::string& path, const sim
             const float ground = sim::terrainHeight(scene.terrain, light.position.x, light.position.y);
             for (const sim::LightPhase lamp : SetSolids::kLamps) {
                 indent(body, depth + 1);
-                body += "def Mesh " + usdQuoted("lamp_" + usdIdentifier(light.name) + "_" + lampName(lamp)) + " (\n";
+                const std::string name = SetSolids::lampName(lamp);
+                body += "def Mesh " + usdQuoted("lamp_" + usdIdentifier(light.name) + "_" + name) + " (\n";
                 indent(body, depth + 2);
-                body += "prepend references = <" + path + "/LitLamps/" + lampName(lamp) + ">\n";
+                body += "prepend references = <" + path + "/LitLamps/" + name + ">\n";
                 indent(body, depth + 1);
                 body += ")\n";
                 indent(body, depth + 1);

@@ -32,6 +32,18 @@ int cylinderSegments(float radiusM)
 
 // A dark lamp keeps a trace of its colour (kDarkLampShade), so the head reads red-yellow-
 // green unlit too.
+const char* SetSolids::lampName(sim::LightPhase lamp)
+{
+    return lamp == sim::LightPhase::Red ? "red" : lamp == sim::LightPhase::Yellow ? "yellow" : "green";
+}
+
+void SetSolids::addLitLamp(sim::LightPhase lamp, SolidMesh& mesh)
+{
+    constexpr float kOver = 1.03f;  // just over the dark lamp
+    mesh.addCylinder({0.0f, 0.0f}, kLampRadiusM * kOver, kHeadSegments, -kLampHalfHeightM * kOver,
+                     kLampHalfHeightM * kOver, lampColour(lamp), true, 1.0f);
+}
+
 glm::vec4 SetSolids::lampColour(sim::LightPhase lamp)
 {
     switch (lamp) {

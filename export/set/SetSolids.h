@@ -38,6 +38,11 @@ public:
     static float lampHeightM(sim::LightPhase lamp);
     // A lamp's colour when lit (dark lamps keep a trace of it).
     static glm::vec4 lampColour(sim::LightPhase lamp);
+    // "red", "yellow" or "green": how the exports name a lamp.
+    static const char* lampName(sim::LightPhase lamp);
+    // One lamp lit, about its own middle, a little larger than its dark self so that it
+    // covers it where an export stands it over the head (glowing in its colour).
+    static void addLitLamp(sim::LightPhase lamp, SolidMesh& mesh);
     // The three lamps of a head, red on top.
     static constexpr std::array<sim::LightPhase, 3> kLamps{sim::LightPhase::Red, sim::LightPhase::Yellow,
                                                            sim::LightPhase::Green};
