@@ -493,6 +493,15 @@ private slots:
             QVERIFY2(text.find(c.message) != std::string::npos, text.c_str());
             QVERIFY2(text.find("square.yaml:15:") == 0, text.c_str());
         }
+        const sim::LoadResult twice = sim::parseScene(std::string(kSquare) + "layout:\n"
+                                                      "  - {name: a, op: delete, agents: {ids: [1]}}\n"
+                                                      "  - {name: a, op: delete, agents: {ids: [1]}}\n",
+                                                      "square.yaml", "");
+        QVERIFY(!twice.ok());
+        QVERIFY2(twice.diagnostics[0].format().find("square.yaml:16:") == 0 &&
+                     twice.diagnostics[0].format().find("another layout operation is already named 'a'") !=
+                         std::string::npos,
+                 twice.diagnostics[0].format().c_str());
     }
 };
 

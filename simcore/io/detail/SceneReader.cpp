@@ -1,5 +1,6 @@
 #include "simcore/io/detail/SceneReader.h"
 
+#include "simcore/io/detail/LayoutReader.h"
 #include "simcore/io/detail/SceneSizeCheck.h"
 #include "simcore/io/detail/YamlDocument.h"
 #include "simcore/scene/Clip.h"
@@ -80,7 +81,7 @@ void SceneReader::read(const YAML::Node& root, Scene& scene)
     if (auto n = section("measurements"); n.IsDefined())
         readMeasurements(n, scene);
     if (auto n = section("layout"); n.IsDefined())
-        readLayout(n, scene);
+        LayoutReader(m_f).read(n, scene);
     assignMissingIds(scene);
     // Leaders are checked last: any placed agent, vehicle or hero may lead.
     std::set<std::uint32_t> all;

@@ -64,8 +64,6 @@ private:
     void readActionPoints(const YAML::Node& node, Scene& scene);
     void readSources(const YAML::Node& node, Scene& scene);
     void readMeasurements(const YAML::Node& node, Scene& scene);
-    void readLayout(const YAML::Node& node, Scene& scene);
-    void readLayoutAgents(const YAML::Node& item, const std::string& key, const Scene& scene, AgentSelector& s);
     void readSourceTypes(const YAML::Node& item, const std::string& key, Source& s);
     void readSourcePlace(const YAML::Node& item, const std::string& key, Source& s);
     void readSourceWindows(const YAML::Node& item, const std::string& key, Source& s);

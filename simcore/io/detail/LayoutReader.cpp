@@ -1,6 +1,6 @@
 // The layout layer (`layout`): edits to the recorded crowd, applied after the simulation
 // (LayoutLayer.h); they change nothing in the simulation itself.
-#include "simcore/io/detail/SceneReader.h"
+#include "simcore/io/detail/LayoutReader.h"
 
 #include "simcore/scene/GroundPolygon.h"
 
@@ -9,8 +9,8 @@
 
 namespace throng::sim::detail {
 
-void SceneReader::readLayoutAgents(const YAML::Node& item, const std::string& key, const Scene& scene,
-                                   AgentSelector& s)
+void LayoutReader::readAgents(const YAML::Node& item, const std::string& key, const Scene& scene,
+                              AgentSelector& s)
 {
     const YAML::Node agents = item["agents"];
     const std::string at = key + ".agents";
@@ -45,7 +45,7 @@ void SceneReader::readLayoutAgents(const YAML::Node& item, const std::string& ke
         m_f.error(agents.Mark(), at, "select some agents: ids, groups, types or a lasso");
 }
 
-void SceneReader::readLayout(const YAML::Node& node, Scene& scene)
+void LayoutReader::read(const YAML::Node& node, Scene& scene)
 {
     if (!m_f.expectSequence(node, "layout"))
         return;
@@ -57,8 +57,9 @@ void SceneReader::readLayout(const YAML::Node& node, Scene& scene)
         m_f.checkKeys(item, key, {"name", "op", "enabled", "agents", "frames", "offset", "angle", "pivot",
                                   "later", "hold_first", "axis", "factor"});
         LayoutOp op;
-        if (m_f.readName(item, "name", key, op.name, false) && !op.name.empty())
-            claimName(item, key, op.name, "layout operation");
+        if (m_f.readName(item, "name", key, op.name, false) && !op.name.empty() && !m_names.insert(op.name).second)
+            m_f.error(item["name"].Mark(), key + ".name",
+                      "another layout operation is already named '" + op.name + "'");
         std::string kind;
         if (!m_f.readString(item, "op", key, kind, true))
             continue;
@@ -69,7 +70,7 @@ void SceneReader::readLayout(const YAML::Node& node, Scene& scene)
             continue;
         }
         m_f.readBool(item, "enabled", key, op.enabled, false);
-        readLayoutAgents(item, key, scene, op.agents);
+        readAgents(item, key, scene, op.agents);
         if (const YAML::Node frames = item["frames"]; frames.IsDefined()) {
             // [first, last] inclusive, or [first] for "from this frame on".
             std::vector<float> range;
