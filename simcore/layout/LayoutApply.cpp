@@ -156,11 +156,17 @@ LayoutEvaluator::LayoutEvaluator(const Scene& scene, const FrameCache& recorded)
       m_shift(float(recorded.origin().x), float(recorded.origin().z))
 {
     const std::size_t frames = recorded.frameCount();
-    m_firstPresent.assign(recorded.agentCount(), frames);
-    for (std::size_t f = frames; f-- > 0;)
-        for (std::size_t i = 0; i < recorded.agentCount(); ++i)
-            if (recorded.at(f, i).present)
-                m_firstPresent[i] = f;
+    // Only a time offset asks where an agent's recording starts: a scan of every frame,
+    // which a layer without one (the editor extends those frame by frame) never pays for.
+    const bool retimes = std::any_of(m_layer.ops.begin(), m_layer.ops.end(),
+                                     [](const LayoutOp& op) { return op.kind == LayoutKind::TimeOffset; });
+    if (retimes) {
+        m_firstPresent.assign(recorded.agentCount(), frames);
+        for (std::size_t f = frames; f-- > 0;)
+            for (std::size_t i = 0; i < recorded.agentCount(); ++i)
+                if (recorded.at(f, i).present)
+                    m_firstPresent[i] = f;
+    }
     // A rotation without a pivot turns about its agents' centre on its first frame, as the
     // operations before it left them.
     m_pivots.assign(m_layer.ops.size(), glm::vec2(0.0f));

@@ -57,7 +57,7 @@ private:
     const FrameCache& m_recorded;
     LayoutSelection m_selection;
     std::vector<glm::vec2> m_pivots;          // per operation: rotate's pivot, in the cache's coordinates
-    std::vector<std::size_t> m_firstPresent;  // per cache agent: its first recorded frame (frames: never)
+    std::vector<std::size_t> m_firstPresent;  // time offsets: per cache agent, its first recorded frame (frames: never)
     glm::vec2 m_shift{0.0f};                  // scene coordinates -> the cache's
 };
 
