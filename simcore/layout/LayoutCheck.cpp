@@ -6,6 +6,7 @@
 #include <cmath>
 #include <map>
 #include <set>
+#include <tuple>
 #include <unordered_map>
 
 namespace throng::sim {
@@ -149,6 +150,37 @@ LayoutCheck checkLayout(const Scene& scene, const FrameCache& recorded, const Fr
     }
     check.frames = clashFrames.size();
     return check;
+}
+
+std::vector<LayoutClashSpan> clashSpans(const LayoutCheck& check, std::size_t max)
+{
+    // Open runs by what clashes: (agent, other, wall).
+    std::map<std::tuple<AgentId, AgentId, std::string>, LayoutClashSpan> open;
+    std::vector<LayoutClashSpan> spans;
+    auto take = [&](const LayoutClash& c) {
+        const auto key = std::make_tuple(c.agent, c.other, c.wall);
+        const auto it = open.find(key);
+        if (it != open.end() && it->second.last + 1 >= c.frame) {
+            it->second.last = c.frame;
+            it->second.deepestM = std::max(it->second.deepestM, c.depthM);
+            return;
+        }
+        if (it != open.end())
+            spans.push_back(it->second);
+        open[key] = {c.frame, c.frame, c.agent, c.other, c.wall, c.depthM};
+    };
+    for (const LayoutClash& c : check.overlaps)
+        take(c);
+    for (const LayoutClash& c : check.wallCrossings)
+        take(c);
+    for (const auto& [key, span] : open)
+        spans.push_back(span);
+    std::sort(spans.begin(), spans.end(), [](const LayoutClashSpan& a, const LayoutClashSpan& b) {
+        return std::tie(a.first, a.agent, a.other, a.wall) < std::tie(b.first, b.agent, b.other, b.wall);
+    });
+    if (spans.size() > max)
+        spans.resize(max);
+    return spans;
 }
 
 std::string describe(const LayoutCheck& check)

@@ -35,6 +35,18 @@ struct LayoutCheck {
 LayoutCheck checkLayout(const Scene& scene, const FrameCache& recorded, const FrameCache& laid,
                         float toleranceM = 0.05f);
 
+// One clash over a run of consecutive frames: the same two agents overlapping, or the same
+// agent stepping through the same wall, from `first` to `last`.
+struct LayoutClashSpan {
+    std::size_t first = 0, last = 0;
+    AgentId agent = 0, other = 0;  // other: 0 for a wall
+    std::string wall;
+    float deepestM = 0.0f;         // the deepest overlap over the run (0 for a wall)
+};
+// The check's clashes as such runs, by first frame, then agent; at most `max` (the
+// earliest).
+std::vector<LayoutClashSpan> clashSpans(const LayoutCheck& check, std::size_t max = 1000);
+
 // "3 overlaps and 1 wall crossing on 4 frames (first: frame 12, agents 4 and 7)"; empty when clean.
 std::string describe(const LayoutCheck& check);
 

@@ -438,6 +438,30 @@ private slots:
             QCOMPARE(c.agent, sim::AgentId(1));
         QVERIFY2(sim::describe(check).find("(first: frame 0, agent 1 and agent ") != std::string::npos,
                  sim::describe(check).c_str());
+        // As the editor lists them: runs of consecutive frames per pair, which together
+        // hold every overlap once, never touch another run of their pair, and carry the
+        // deepest overlap of their frames.
+        const std::vector<sim::LayoutClashSpan> spans = sim::clashSpans(check);
+        std::size_t covered = 0;
+        for (const sim::LayoutClashSpan& span : spans) {
+            QCOMPARE(span.agent, sim::AgentId(1));
+            QVERIFY(span.first <= span.last);
+            covered += span.last - span.first + 1;
+            float deepest = 0.0f;
+            std::size_t inRun = 0;
+            for (const sim::LayoutClash& c : check.overlaps)
+                if (c.other == span.other && c.frame >= span.first && c.frame <= span.last) {
+                    deepest = std::max(deepest, c.depthM);
+                    ++inRun;
+                }
+            QCOMPARE(inRun, span.last - span.first + 1);  // no frame of the run lacks the overlap
+            QCOMPARE(span.deepestM, deepest);
+            for (const sim::LayoutClashSpan& next : spans)
+                if (&next != &span && next.other == span.other)
+                    QVERIFY(next.first > span.last + 1 || next.last + 1 < span.first);
+        }
+        QCOMPARE(covered, check.overlaps.size());
+        QCOMPARE(spans.front().first, std::size_t(0));
 
         // An edit that moves nobody reports nothing.
         sim::LayoutOp west = op(sim::LayoutKind::Translate, {1});
@@ -466,6 +490,12 @@ private slots:
         QCOMPARE(walls.wallCrossings.size(), std::size_t(1));
         QCOMPARE(walls.wallCrossings[0].frame, std::size_t(crossing));
         QCOMPARE(walls.wallCrossings[0].wall, std::string("fence"));
+        const std::vector<sim::LayoutClashSpan> wallSpans = sim::clashSpans(walls);
+        QCOMPARE(wallSpans.size(), std::size_t(1));
+        QCOMPARE(wallSpans[0].first, std::size_t(crossing));
+        QCOMPARE(wallSpans[0].last, std::size_t(crossing));
+        QCOMPARE(wallSpans[0].other, sim::AgentId(0));
+        QCOMPARE(wallSpans[0].wall, std::string("fence"));
     }
 
     // Bad entries fail with the file, line and what is wrong.
