@@ -52,8 +52,9 @@ const char* fieldName(SceneField field)
 
 bool simulationReads(ItemKind kind, SceneField field)
 {
-    // Measurements are read by the analysis of the recorded frames, never by a World.
-    if (kind == ItemKind::Measurement)
+    // Measurements are read by the analysis of the recorded frames, never by a World; the
+    // layout layer edits the recorded frames after the simulation.
+    if (kind == ItemKind::Measurement || kind == ItemKind::LayoutOp)
         return false;
     switch (field) {
     case SceneField::Look:

@@ -21,6 +21,19 @@ QString named(const std::vector<T>& list, std::size_t i, const QString& kind)
 
 }  // namespace
 
+QString layoutKindTitle(sim::LayoutKind kind)
+{
+    switch (kind) {
+    case sim::LayoutKind::Translate: return tr("Translate");
+    case sim::LayoutKind::Rotate: return tr("Rotate");
+    case sim::LayoutKind::TimeOffset: return tr("Time offset");
+    case sim::LayoutKind::Mirror: return tr("Mirror");
+    case sim::LayoutKind::Delete: return tr("Delete");
+    case sim::LayoutKind::Expand: return tr("Expand");
+    }
+    return {};
+}
+
 std::size_t itemCount(const sim::Scene& s, ItemKind kind)
 {
     switch (kind) {
@@ -42,6 +55,7 @@ std::size_t itemCount(const sim::Scene& s, ItemKind kind)
     case ItemKind::ActionPoint: return s.actionPoints.size();
     case ItemKind::Source: return s.sources.size();
     case ItemKind::Measurement: return s.measurements.size();
+    case ItemKind::LayoutOp: return s.layout.ops.size();
     }
     return 0;
 }
@@ -67,6 +81,7 @@ QString kindTitle(ItemKind kind)
     case ItemKind::ActionPoint: return tr("Action Points");
     case ItemKind::Source: return tr("Sources");
     case ItemKind::Measurement: return tr("Measurements");
+    case ItemKind::LayoutOp: return tr("Layout");
     }
     return {};
 }
@@ -103,6 +118,9 @@ QString itemLabel(const sim::Scene& s, SceneItem item)
     case ItemKind::ActionPoint: return named(s.actionPoints, i, tr("Action point"));
     case ItemKind::Source: return named(s.sources, i, tr("Source"));
     case ItemKind::Measurement: return named(s.measurements, i, tr("Measurement"));
+    case ItemKind::LayoutOp:
+        // An unnamed operation by what it does and where it stands in the layer: "Translate 2".
+        return i < s.layout.ops.size() ? named(s.layout.ops, i, layoutKindTitle(s.layout.ops[i].kind)) : QString();
     }
     return {};
 }
@@ -116,7 +134,8 @@ std::optional<SceneItem> itemForKey(const std::string& key)
         {"lanes", ItemKind::Lane},             {"heroes", ItemKind::Hero},    {"brains", ItemKind::Brain},
         {"flow_strokes", ItemKind::FlowStroke}, {"crosswalks", ItemKind::Crosswalk},
         {"vehicles", ItemKind::Vehicle},       {"action_points", ItemKind::ActionPoint},
-        {"sources", ItemKind::Source},         {"measurements", ItemKind::Measurement}};
+        {"sources", ItemKind::Source},         {"measurements", ItemKind::Measurement},
+        {"layout", ItemKind::LayoutOp}};
     if (key.rfind("settings", 0) == 0)
         return SceneItem{ItemKind::Settings, 0};
     const std::size_t open = key.find('['), close = key.find(']');

@@ -15,10 +15,10 @@ namespace throng::editor {
 
 enum class ItemKind {
     Settings, AgentType, Group, Agent, Path, Wall, Obstacle, Goal, TrafficLight, Lane, FlowStroke, Hero, Brain,
-    Crosswalk, Vehicle, ActionPoint, Source, Measurement
+    Crosswalk, Vehicle, ActionPoint, Source, Measurement, LayoutOp
 };
 // How many kinds there are (the last kind + 1).
-inline constexpr int kItemKindCount = int(ItemKind::Measurement) + 1;
+inline constexpr int kItemKindCount = int(ItemKind::LayoutOp) + 1;
 
 struct SceneItem {
     ItemKind kind = ItemKind::Settings;
@@ -34,6 +34,8 @@ std::size_t itemCount(const sim::Scene& scene, ItemKind kind);
 QString itemLabel(const sim::Scene& scene, SceneItem item);
 // The plural heading of a kind in the outliner ("Walls").
 QString kindTitle(ItemKind kind);
+// What a layout operation of `kind` is called in the editor ("Time offset").
+QString layoutKindTitle(sim::LayoutKind kind);
 // The item a diagnostic's key path names ("obstacles[3].radius" = obstacle 3); empty
 // when the key names no item.
 std::optional<SceneItem> itemForKey(const std::string& key);

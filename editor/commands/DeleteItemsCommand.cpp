@@ -67,6 +67,7 @@ void DeleteItemsCommand::forEachList(Scene& s, F f)
     f(s.actionPoints, m_actionPoints, ItemKind::ActionPoint);
     f(s.sources, m_sources, ItemKind::Source);
     f(s.measurements, m_measurements, ItemKind::Measurement);
+    f(s.layout.ops, m_layoutOps, ItemKind::LayoutOp);
 }
 
 DeleteItemsCommand::DeleteItemsCommand(SceneDocument& document, const Selection& items) : m_document(document)

@@ -62,6 +62,7 @@ private:
     Removed<sim::ActionPoint> m_actionPoints;
     Removed<sim::Source> m_sources;
     Removed<sim::Measurement> m_measurements;
+    Removed<sim::LayoutOp> m_layoutOps;
     Removed<sim::Vehicle> m_vehicles;
     Removed<sim::BrainGraph> m_brains;
     // Leaders cleared because the agent, vehicle or hero they name is deleted, with the old id.

@@ -82,6 +82,20 @@ void collectSourceTypes(std::vector<NameUse>& out, const sim::Scene& scene, cons
                                SceneItem{ItemKind::Source, p}, userName(scene, {ItemKind::Source, p})});
 }
 
+// The layout operations whose selector names `name` among its groups or types (`list`).
+void collectLayoutNames(std::vector<NameUse>& out, const sim::Scene& scene, const std::string& name,
+                        std::vector<std::string> sim::AgentSelector::*list)
+{
+    for (std::size_t o = 0; o < scene.layout.ops.size(); ++o) {
+        const std::vector<std::string>& names = scene.layout.ops[o].agents.*list;
+        for (std::size_t k = 0; k < names.size(); ++k)
+            if (names[k] == name)
+                out.push_back({[o, k, list](sim::Scene& s) -> std::string& { return (s.layout.ops[o].agents.*list)[k]; },
+                               SceneItem{ItemKind::LayoutOp, o},
+                               tr("layout operation %1").arg(itemLabel(scene, {ItemKind::LayoutOp, o}))});
+    }
+}
+
 }  // namespace
 
 bool hasName(ItemKind kind)
@@ -108,6 +122,7 @@ std::function<std::string&(sim::Scene&)> nameLocate(SceneItem item)
     case ItemKind::ActionPoint: return [i](sim::Scene& s) -> std::string& { return s.actionPoints[i].name; };
     case ItemKind::Source: return [i](sim::Scene& s) -> std::string& { return s.sources[i].name; };
     case ItemKind::Measurement: return [i](sim::Scene& s) -> std::string& { return s.measurements[i].name; };
+    case ItemKind::LayoutOp: return [i](sim::Scene& s) -> std::string& { return s.layout.ops[i].name; };
     default: return {};
     }
 }
@@ -144,7 +159,9 @@ std::vector<NameUse> nameUses(const sim::Scene& scene, ItemKind kind, const std:
         collectVehicles(out, scene, name, [](sim::Scene& s, std::size_t i) -> std::string& { return s.vehicles[i].type; });
         collectActionPointTypes(out, scene, name);
         collectSourceTypes(out, scene, name);
+        collectLayoutNames(out, scene, name, &sim::AgentSelector::types);
         break;
+    case ItemKind::Group: collectLayoutNames(out, scene, name, &sim::AgentSelector::groups); break;
     case ItemKind::Brain:
         collect(out, scene, scene.agentTypes.size(), name, ItemKind::AgentType,
                 [](sim::Scene& s, std::size_t i) -> std::string& { return s.agentTypes[i].brain; });

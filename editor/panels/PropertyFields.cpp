@@ -105,6 +105,21 @@ Refusal formationSpacingRefusal()
     };
 }
 
+// Refuses a coordinate of a mirror's axis point `end` (axis 0 = x, 1 = z) that would put
+// both points of the line on one place: a line needs two.
+Refusal mirrorAxisEnd(int end, int axis)
+{
+    return [end, axis](const sim::Scene& s, std::size_t i, float value) {
+        const sim::LayoutOp& op = s.layout.ops[std::size_t(i)];
+        glm::vec2 moved = op.axis[end];
+        moved[axis] = value;
+        if (moved != op.axis[1 - end])
+            return QString();
+        return tr("%1: the mirror's line needs two different points; it stays as it is.")
+            .arg(itemLabel(s, {ItemKind::LayoutOp, i}));
+    };
+}
+
 bool isFlier(const sim::Scene& s, std::size_t i)
 {
     return s.agentTypes[i].kind == sim::AgentKind::Flier;
@@ -271,6 +286,24 @@ std::vector<PropertyField> make(ItemKind kind)
                  sourceCornerEnd(1, false), rect},
                 {"rate", tr("Rate (agents/s)"), 0, 1e5, 0.1, 3, THRONG_FIELD(sources, rate), sourceRateRefusal()},
                 {"heading", tr("Heading (deg)"), -360, 360, 5, 1, THRONG_FIELD(sources, headingDeg), {}, headed}};
+    }
+    case ItemKind::LayoutOp: {
+        const auto is = [](sim::LayoutKind kind) {
+            return [kind](const sim::Scene& s, std::size_t i) { return s.layout.ops[i].kind == kind; };
+        };
+        using K = sim::LayoutKind;
+        return {{"offsetX", tr("Offset X (m)"), -1e5, 1e5, 0.1, 2, THRONG_FIELD(layout.ops, offset.x), {}, is(K::Translate)},
+                {"offsetZ", tr("Offset Z (m)"), -1e5, 1e5, 0.1, 2, THRONG_FIELD(layout.ops, offset.y), {}, is(K::Translate)},
+                {"angle", tr("Angle (deg)"), -3600, 3600, 5, 1, THRONG_FIELD(layout.ops, angleDeg), {}, is(K::Rotate)},
+                {"factor", tr("Factor"), 0.01, 100, 0.1, 2, THRONG_FIELD(layout.ops, factor), {}, is(K::Expand)},
+                {"axisFromX", tr("Axis from X (m)"), -1e5, 1e5, 0.5, 2, THRONG_FIELD(layout.ops, axis[0].x),
+                 mirrorAxisEnd(0, 0), is(K::Mirror)},
+                {"axisFromZ", tr("Axis from Z (m)"), -1e5, 1e5, 0.5, 2, THRONG_FIELD(layout.ops, axis[0].y),
+                 mirrorAxisEnd(0, 1), is(K::Mirror)},
+                {"axisToX", tr("Axis to X (m)"), -1e5, 1e5, 0.5, 2, THRONG_FIELD(layout.ops, axis[1].x),
+                 mirrorAxisEnd(1, 0), is(K::Mirror)},
+                {"axisToZ", tr("Axis to Z (m)"), -1e5, 1e5, 0.5, 2, THRONG_FIELD(layout.ops, axis[1].y),
+                 mirrorAxisEnd(1, 1), is(K::Mirror)}};
     }
     case ItemKind::Vehicle:
         return {{"at", tr("Start distance (m)"), 0, 1e5, 0.5, 2, THRONG_FIELD(vehicles, atM)},

@@ -119,11 +119,7 @@ void PropertyForm::addNumber(const PropertyField& field)
         apply(field.key, field.label, locate, float(v));
     });
     addRow(field.label, spin, [this, spin, field, locate] {
-        if (field.shown) {
-            const std::vector<std::size_t> items = indices();
-            m_layout->setRowVisible(spin, std::any_of(items.begin(), items.end(),
-                                                      [&](std::size_t i) { return field.shown(scene(), i); }));
-        }
+        showRowFor(spin, field.shown);
         const std::optional<float> value = common(locate);
         showNumber(spin, value ? std::optional<double>(*value) : std::nullopt, field.min);
     });
@@ -154,7 +150,16 @@ void PropertyForm::addIntegerRow(const QString& key, const QString& label, int m
     });
 }
 
-void PropertyForm::addCheck(const QString& key, const QString& label, Locate<bool> locate)
+void PropertyForm::showRowFor(QWidget* widget, const Shown& shown)
+{
+    if (!shown)
+        return;
+    const std::vector<std::size_t> items = indices();
+    m_layout->setRowVisible(widget, std::any_of(items.begin(), items.end(),
+                                                [&](std::size_t i) { return shown(scene(), i); }));
+}
+
+void PropertyForm::addCheck(const QString& key, const QString& label, Locate<bool> locate, Shown shown)
 {
     auto* check = new QCheckBox(m_owner);
     check->setObjectName(key);
@@ -162,7 +167,8 @@ void PropertyForm::addCheck(const QString& key, const QString& label, Locate<boo
         // From "(mixed)" a click sets the value on every item.
         apply(key, label, locate, check->checkState() != Qt::Unchecked);
     });
-    addRow(label, check, [this, check, locate] {
+    addRow(label, check, [this, check, locate, shown] {
+        showRowFor(check, shown);
         const QSignalBlocker block(check);
         const std::optional<bool> value = common(locate);
         check->setTristate(!value);

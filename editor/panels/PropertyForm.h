@@ -63,7 +63,8 @@ public:
             return value ? std::optional<int>(int(*value)) : std::nullopt;
         }, [this, key, label, locate](int index) { apply(key, label, locate, Enum(index)); }, std::move(shown));
     }
-    void addCheck(const QString& key, const QString& label, Locate<bool> locate);
+    // A check box; with `shown`, the row shows only while that holds for one of the selected items.
+    void addCheck(const QString& key, const QString& label, Locate<bool> locate, Shown shown = {});
     // A combo box of `names()` (read again on every refresh): `value` is the selection's
     // common index (empty = "(mixed)"), `apply` takes the picked one.
     void addIndexChoice(const QString& key, const QString& label, std::function<QStringList()> names,
@@ -86,6 +87,8 @@ public:
     // Shows or hides the row of a widget added with addRow (a row that applies to some
     // items only: a polygon group's points).
     void setRowShown(QWidget* widget, bool shown);
+    // Shows the row of `widget` while `shown` holds for one of the selected items (always when empty).
+    void showRowFor(QWidget* widget, const Shown& shown);
 
     // The value every selected item has, or nothing when they differ.
     template <class T>

@@ -152,6 +152,7 @@ void addPropertyRows(PropertyForm& form)
     case ItemKind::Crosswalk: addCrosswalkRows(form); break;
     case ItemKind::Source: addSourceRows(form); break;
     case ItemKind::Vehicle: addVehicleRows(form); break;
+    case ItemKind::LayoutOp: addLayoutOpRows(form); break;
     default: addSetRows(form); break;
     }
 }

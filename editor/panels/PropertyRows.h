@@ -46,5 +46,7 @@ void addAgentTypeCollisionRows(PropertyForm& form);
 // PropertyRowsKeep.cpp: how a group's members keep together: a formation (shape, spacing,
 // column width) or companions (small groups' sizes), Formations.h.
 void addKeepTogetherRows(PropertyForm& form);
+// PropertyRowsLayout.cpp: a layout operation's kind, switch, agents, frames and amount.
+void addLayoutOpRows(PropertyForm& form);
 
 }  // namespace throng::editor
