@@ -10,6 +10,9 @@
 #include "editor/ViewportDisplayActions.h"
 #include "editor/WorkspaceLayout.h"
 #include "editor/brain/BrainEditorPanel.h"
+#include "editor/layout/LayoutCheckWatch.h"
+#include "editor/layout/LayoutEdits.h"
+#include "editor/layout/LayoutPanel.h"
 #include "editor/commands/DeleteItemsCommand.h"
 #include "editor/panels/AgentTypeActions.h"
 #include "editor/panels/AnalysisPanel.h"
@@ -155,20 +158,61 @@ void MainWindow::createDocks()
         m_messages->showNote(text);
         statusBar()->showMessage(text, 8000);
     });
+    QDockWidget* layoutDock = createLayoutDock(historyDock);
     m_brains = new BrainEditorPanel(m_document, *m_simulation, m_viewport, this);
     m_brains->setObjectName("brainEditor");
     // The brain editor shares the centre with the viewport in its own workspace (Ctrl+B),
     // where the outliner, properties and history give it their room.
-    m_workspace = new WorkspaceLayout(*this, m_viewport, m_brains, {outlinerDock, propertiesDock, historyDock});
+    m_workspace = new WorkspaceLayout(*this, m_viewport, m_brains, {outlinerDock, propertiesDock, historyDock, layoutDock});
     // Room for Properties' fields at 1280 x 800 without a sideways scroll bar, and most of
     // the right column for them (History needs a few lines).
-    m_workspace->setDefaultDockSizes({{"outlinerDock", QSize(220, 0)}, {"propertiesDock", QSize(330, 440)}});
+    // The timeline keeps most of the foot for its scrub bar, the messages the rest.
+    m_workspace->setDefaultDockSizes({{"outlinerDock", QSize(220, 0)},
+                                      {"propertiesDock", QSize(330, 440)},
+                                      {"messagesDock", QSize(380, 0)}});
     connect(m_brains, &BrainEditorPanel::brainMessages, m_messages, &MessagesPanel::showDiagnostics);
     connect(properties, &PropertiesPanel::problem, this, [this](const QString& text) {
         m_messages->showNote(text);
         m_messagesDock->show();
         statusBar()->showMessage(text, 8000);
     });
+}
+
+QDockWidget* MainWindow::createLayoutDock(QDockWidget* besides)
+{
+    m_layout = new LayoutPanel(m_document, this);
+    QDockWidget* dock = addDock(tr("Layout Edits"), "layoutDock", m_layout, Qt::RightDockWidgetArea);
+    // The layer shares the right column's foot with the history, behind it until asked for.
+    tabifyDockWidget(besides, dock);
+    besides->raise();
+    dock->toggleViewAction()->setIcon(themeIcon("action-layout"));
+    dock->toggleViewAction()->setToolTip(tr("Show the Layout Edits panel: edits of the recorded crowd (move, turn, retime, "
+                                            "mirror, delete, spread) without simulating again"));
+    m_layout->setContextSource([this] {
+        LayoutContext context;
+        context.frame = m_simulation->currentFrame();
+        context.clicked = m_viewport->focusedAgent();
+        context.fps = m_simulation->fps();
+        context.centreOf = [this](const sim::AgentSelector& agents) {
+            return shownCentre(m_shown.frames(m_simulation->cache(), m_document.scene()), m_document.scene(), agents,
+                               m_simulation->currentFrame());
+        };
+        return context;
+    });
+    connect(m_layout, &LayoutPanel::problem, this, [this](const QString& text) {
+        m_messages->showNote(text);
+        statusBar()->showMessage(text, 8000);
+    });
+    connect(m_layout, &LayoutPanel::clashRequested, this, [this](std::size_t frame, sim::AgentId agent) {
+        m_simulation->seek(frame);
+        m_viewport->setFocusedAgent(agent);
+    });
+    m_layoutCheck = new LayoutCheckWatch(m_document, *m_simulation, m_shown, this);
+    connect(m_layoutCheck, &LayoutCheckWatch::checked, this, [this](const sim::LayoutCheck& check) {
+        m_layout->showCheck(check);
+        m_viewport->setLayoutCheck(check);
+    });
+    return dock;
 }
 
 void MainWindow::createEditMenu()
@@ -426,6 +470,11 @@ void MainWindow::refreshAfterEdit()
     m_viewport->updateScene(m_document.scene());
     m_viewport->setHighlight(m_document.scene(), m_document.selection());
     m_simulation->applyEdit(m_document.scene(), change);
+    // The layout layer edits the recorded frames, not the simulation: show the shown
+    // frame through the edited layer now.
+    const std::size_t frame = m_simulation->currentFrame();
+    if (change.touches(ItemKind::LayoutOp) && frame < m_simulation->cache().frameCount())
+        m_viewport->showFrame(m_shown.frames(m_simulation->cache(), m_document.scene()), frame);
 }
 
 void MainWindow::updateAgentStatus()

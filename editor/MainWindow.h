@@ -27,6 +27,8 @@ class AnalysisPanel;
 class AutosaveRecovery;
 class BrainEditorPanel;
 class ExportDialog;
+class LayoutCheckWatch;
+class LayoutPanel;
 class MessagesPanel;
 class OutlinerPanel;
 class RecentFiles;
@@ -66,6 +68,8 @@ public:
     TimelinePanel& timeline() { return *m_timeline; }
     WorkspaceLayout& workspace() { return *m_workspace; }
     BrainEditorPanel& brainEditor() { return *m_brains; }
+    LayoutPanel& layoutPanel() { return *m_layout; }
+    LayoutCheckWatch& layoutCheck() { return *m_layoutCheck; }
     // Opens File > Export (window-modal, not blocking) and returns it.
     ExportDialog* showExportDialog();
 
@@ -77,6 +81,7 @@ protected:
 private:
     QDockWidget* addDock(const QString& title, const QString& name, QWidget* widget, Qt::DockWidgetArea area);
     void createDocks();
+    QDockWidget* createLayoutDock(QDockWidget* besides);
     void createFileMenu();
     void createEditMenu();
     void createViewMenu();
@@ -113,6 +118,8 @@ private:
     AutosaveRecovery* m_autosave = nullptr;
     AgentTypeActions* m_typeActions = nullptr;
     BrainEditorPanel* m_brains = nullptr;
+    LayoutPanel* m_layout = nullptr;
+    LayoutCheckWatch* m_layoutCheck = nullptr;
     WorkspaceLayout* m_workspace = nullptr;
     QToolBar* m_outlinerBar = nullptr;
     QDockWidget* m_messagesDock = nullptr;

@@ -45,6 +45,11 @@ SelectionHighlight::AgentRing SelectionHighlight::inspectedRing(sim::AgentId id)
     return {ShownAgents::kNone, id, {}, 0.0f, 3.0f * kLineM, kInspectedColour};
 }
 
+SelectionHighlight::AgentRing SelectionHighlight::clashRing(sim::AgentId id)
+{
+    return {ShownAgents::kNone, id, {}, 0.0f, 6.0f * kLineM, palette::kLayoutClash};
+}
+
 void SelectionHighlight::addAgentRings(std::span<const AgentRing> rings, const ShownAgents& shown, ShapeMesh& mesh)
 {
     for (const AgentRing& r : rings) {

@@ -42,6 +42,8 @@ public:
     static AgentRing focusRing(sim::AgentId id);
     // The ring of the brain editor's inspected agent, just outside a selection ring.
     static AgentRing inspectedRing(sim::AgentId id);
+    // The ring of an agent the layout check flags on the shown frame, outside the others.
+    static AgentRing clashRing(sim::AgentId id);
     // Each ring where `shown` draws its agent; an agent held but not drawn there has none
     // (it left or is absent); one the frame does not hold (no World, or a frame from
     // before the edit that added it) is ringed at its start.

@@ -34,7 +34,31 @@ void SelectionMarks::build(const ShownAgents& shown, ShapeMesh& mesh) const
         extra.push_back(SelectionHighlight::focusRing(m_focused));
     if (m_inspected != 0)
         extra.push_back(SelectionHighlight::inspectedRing(m_inspected));
+    for (const sim::AgentId id : m_flagged)
+        extra.push_back(SelectionHighlight::clashRing(id));
     SelectionHighlight::addAgentRings(extra, shown, mesh);
+}
+
+void SelectionMarks::setLayoutClashes(const sim::LayoutCheck& check)
+{
+    m_clashes.clear();
+    for (const auto* list : {&check.overlaps, &check.wallCrossings})
+        for (const sim::LayoutClash& c : *list) {
+            m_clashes.emplace_back(c.frame, c.agent);
+            if (c.other != 0)
+                m_clashes.emplace_back(c.frame, c.other);
+        }
+    std::sort(m_clashes.begin(), m_clashes.end());
+    m_clashes.erase(std::unique(m_clashes.begin(), m_clashes.end()), m_clashes.end());
+    m_flagged.clear();
+}
+
+void SelectionMarks::showFrame(std::size_t frame)
+{
+    m_flagged.clear();
+    auto it = std::lower_bound(m_clashes.begin(), m_clashes.end(), std::make_pair(frame, sim::AgentId(0)));
+    for (; it != m_clashes.end() && it->first == frame; ++it)
+        m_flagged.push_back(it->second);
 }
 
 std::vector<sim::AgentId> SelectionMarks::watchedIds() const

@@ -9,6 +9,7 @@
 #include "editor/viewport/SelectionHighlight.h"
 #include "editor/viewport/ShapeMesh.h"
 #include "editor/viewport/ShownAgents.h"
+#include "simcore/layout/LayoutCheck.h"
 #include "simcore/world/FrameCache.h"
 
 #include <utility>
@@ -25,8 +26,17 @@ public:
     sim::AgentId focusedAgent() const { return m_focused; }
     void setInspectedAgent(sim::AgentId id) { m_inspected = id; }
     sim::AgentId inspectedAgent() const { return m_inspected; }
+    // The agents the layout check flags (sim::LayoutCheck), frame by frame; showFrame picks
+    // the shown frame's, which get a ring of their own colour.
+    void setLayoutClashes(const sim::LayoutCheck& check);
+    void showFrame(std::size_t frame);
+    // How many agents the shown frame flags.
+    std::size_t flaggedCount() const { return m_flagged.size(); }
     // Whether some mark rings an agent, and so moves from frame to frame.
-    bool followsAgents() const { return !m_rings.empty() || m_focused != 0 || m_inspected != 0; }
+    bool followsAgents() const
+    {
+        return !m_rings.empty() || m_focused != 0 || m_inspected != 0 || !m_clashes.empty();
+    }
 
     // The outlines, and the rings where `shown` has their agents.
     void build(const ShownAgents& shown, ShapeMesh& mesh) const;
@@ -48,6 +58,8 @@ private:
     std::vector<SelectionHighlight::AgentRing> m_rings;
     std::vector<std::pair<sim::AgentId, sim::AgentId>> m_groupIds;  // selected groups' member ids
     sim::AgentId m_focused = 0, m_inspected = 0;
+    std::vector<std::pair<std::size_t, sim::AgentId>> m_clashes;  // (frame, agent), sorted, without repeats
+    std::vector<sim::AgentId> m_flagged;                          // the shown frame's
 };
 
 }  // namespace throng::editor

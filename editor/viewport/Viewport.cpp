@@ -273,6 +273,7 @@ void Viewport::setAgents(std::span<const sim::AgentFrame> frames, std::span<cons
         m_shown.set(i, agents[i].id, frames[i].position, type < m_typeRadiusM.size() ? m_typeRadiusM[type] : kFallbackRadiusM,
                     drawn);
     }
+    m_marks.showFrame(frameIndex);
     if (m_marks.followsAgents())
         rebuildHighlight();
     if (m_layers.settings().trails)
@@ -341,6 +342,7 @@ void Viewport::updateHud()
     figures.timeS = m_timeS;
     figures.fps = double(m_fps);
     figures.stepsPerSecond = m_stepsPerSecond;
+    figures.layoutFlagged = m_marks.flaggedCount();
     ColourLegend colouring = m_agentColours.legend();
     colouring.title = "Colour by " + colouring.title;
     figures.legends.push_back(std::move(colouring));
@@ -377,6 +379,16 @@ void Viewport::setInspectedAgent(sim::AgentId id)
     const std::vector<sim::AgentId> watched = m_marks.watchedIds();
     m_marks.setInspectedAgent(id);
     marksChanged(watched);
+}
+
+void Viewport::setLayoutCheck(const sim::LayoutCheck& check)
+{
+    m_marks.setLayoutClashes(check);
+    m_marks.showFrame(m_frameIndex);
+    m_hudCounts.layoutOverlaps = check.overlaps.size();
+    m_hudCounts.layoutWallCrossings = check.wallCrossings.size();
+    rebuildHighlight();
+    updateHud();
 }
 
 void Viewport::marksChanged(const std::vector<sim::AgentId>& watchedBefore)

@@ -90,7 +90,12 @@ public:
     sim::AgentId focusedAgent() const { return m_marks.focusedAgent(); }
     // The agent the brain editor inspects (0 = none): ringed in its own colour.
     void setInspectedAgent(sim::AgentId id);
+    // What the layout check found (sim::checkLayout): its count goes to the HUD, and the
+    // agents it flags on the shown frame get a ring of their own.
+    void setLayoutCheck(const sim::LayoutCheck& check);
     sim::AgentId inspectedAgent() const { return m_marks.inspectedAgent(); }
+    // How many agents the layout check flags on the shown frame.
+    std::size_t layoutFlaggedCount() const { return m_marks.flaggedCount(); }
 
     void setViewMode(ViewMode mode);
     ViewMode viewMode() const { return m_camera.mode(); }

@@ -82,6 +82,9 @@ QStringList ViewportHud::lines() const
         out << tr("  %1 more types %2").arg(f.perType.size() - kTypeLines).arg(count(rest));
     }
     out << tr("Arrived %1   Out %2").arg(count(f.arrived), count(f.out));
+    if (f.layoutOverlaps + f.layoutWallCrossings > 0)
+        out << tr("Layout: %1 overlaps, %2 wall crossings   %3 here")
+                   .arg(count(f.layoutOverlaps), count(f.layoutWallCrossings), count(f.layoutFlagged));
     out << tr("Simulation %1 steps/s   View %2 fps")
                .arg(f.stepsPerSecond > 0.0 ? QString::number(std::lround(f.stepsPerSecond)) : QStringLiteral("-"))
                .arg(std::lround(viewFps()));

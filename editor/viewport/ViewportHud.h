@@ -26,6 +26,8 @@ struct HudFigures {
     std::size_t shown = 0, arrived = 0, out = 0;
     std::vector<std::pair<std::string, std::size_t>> perType;  // type name, agents shown
     double stepsPerSecond = 0.0;  // the simulation's, 0 while idle
+    // What the layout check found over the recording, and the agents it flags on this frame.
+    std::size_t layoutOverlaps = 0, layoutWallCrossings = 0, layoutFlagged = 0;
     // The agents' colouring first, then what the overlays show (a watched agent's forces).
     std::vector<ColourLegend> legends;
 };

@@ -40,6 +40,7 @@ inline constexpr glm::vec4 kFlowStroke{0.560f, 0.470f, 0.800f, 1.0f};
 inline constexpr glm::vec4 kAgentNose{0.090f, 0.095f, 0.105f, 1.0f};
 inline constexpr glm::vec4 kHeroWay{1.000f, 0.550f, 0.250f, 1.0f};
 inline constexpr glm::vec4 kSelection{1.000f, 0.850f, 0.100f, 1.0f};
+inline constexpr glm::vec4 kLayoutClash{1.000f, 0.250f, 0.250f, 1.0f};  // an agent the layout edits made clash
 inline constexpr glm::vec4 kFlowArrow{0.700f, 0.620f, 0.950f, 0.75f};
 inline constexpr glm::vec4 kTrail{1.000f, 0.780f, 0.300f, 0.90f};         // the newest part of a trail
 // Steering annotations (SteeringOverlay).

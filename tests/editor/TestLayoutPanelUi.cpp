@@ -1,0 +1,314 @@
+// The Layout panel driven like a user, on a recorded crossing: an operation added for the
+// agent selected in the Outliner (the Add menu), given its offset in Properties, switched
+// off with the keyboard, a second one for a group, reordered and removed with the panel's
+// buttons and keys; the viewport shows each state; every step undoes, and undoing them
+// all gives back the scene file byte for byte. The layout check flags what an edit breaks:
+// its count in the HUD, rings on the frame's agents, the list with frames, and a
+// double-click on a clash goes to its frame and agent. "Only the clicked agent" takes the
+// member of a group clicked in the viewport. Renaming a group keeps the operations on it.
+#include "EditorTestSupport.h"
+#include "EditorUiDriver.h"
+#include "TestRegistry.h"
+
+#include "editor/commands/NameReferences.h"
+#include "editor/layout/LayoutCheckWatch.h"
+#include "editor/layout/LayoutPanel.h"
+#include "editor/simulation/SimulationController.h"
+#include "editor/viewport/ShownAgents.h"
+#include "editor/viewport/Viewport.h"
+
+#include <QAction>
+#include <QCheckBox>
+#include <QDockWidget>
+#include <QDoubleSpinBox>
+#include <QLineEdit>
+#include <QListWidget>
+#include <QSpinBox>
+#include <QTest>
+#include <QTimer>
+#include <QToolButton>
+#include <QTreeWidget>
+#include <QUndoStack>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <memory>
+
+using namespace throng;
+using namespace throng::editor;
+using namespace throng::editor::test;
+
+namespace {
+
+// Two placed walkers (ids 1 at z = -4, 2 at z = 4) and a spawned group of three (ids 3
+// to 5) walk east at 1 m/s.
+const QByteArray kLayoutScene = R"(throng: 1
+settings: {fps: 24, duration: 10, seed: 3, bounds: {min: [-20, -20], max: [20, 20]}}
+agent_types: [{name: walker, radius: 0.3, max_speed: 1, max_force: 3, variation: {speed: [1, 1]}}]
+goals: [{name: east, position: [18, 0], radius: 1}]
+agents:
+  - {id: 1, type: walker, position: [-12, 0, -4], goal: east}
+  - {id: 2, type: walker, position: [-12, 0, 4], goal: east}
+groups:
+  - {name: crowd, type: walker, count: 3, rect: {min: [-14, 10], max: [-10, 14]}, goal: east}
+)";
+
+constexpr std::size_t kRecorded = 72;
+
+// Runs `answer` on the next popup menu that opens (its exec() blocks the caller).
+void whenMenuOpens(std::function<bool()> answer)
+{
+    auto* timer = new QTimer;
+    timer->setInterval(20);
+    auto tries = std::make_shared<int>(0);
+    QObject::connect(timer, &QTimer::timeout, timer, [timer, answer, tries] {
+        if (answer() || ++*tries > 250)
+            timer->deleteLater();
+    });
+    timer->start();
+}
+
+QDockWidget* showLayoutDock(MainWindow& window)
+{
+    auto* dock = window.findChild<QDockWidget*>("layoutDock");
+    dock->show();
+    dock->raise();
+    QTest::qWait(0);
+    return dock;
+}
+
+// Picks `kind` ("Translate") from the panel's Add menu with the mouse.
+bool addFromMenu(MainWindow& window, const QString& kind)
+{
+    auto* add = window.layoutPanel().findChild<QToolButton*>("layoutAddButton");
+    if (!add)
+        return false;
+    bool picked = false;
+    whenMenuOpens([&picked, kind] { return picked = clickPopupItem(kind); });
+    QTest::mouseClick(add, Qt::LeftButton);
+    return QTest::qWaitFor([&] { return picked; }, 5000);
+}
+
+// Where the viewport draws agent `id` on the shown frame (its feet), or nothing.
+std::optional<glm::vec3> shownFeet(MainWindow& window, sim::AgentId id)
+{
+    const ShownAgents& shown = window.viewport().shownAgents();
+    const std::size_t i = shown.find(id);
+    if (i == ShownAgents::kNone || !shown.drawn(i))
+        return std::nullopt;
+    return shown.feet(i);
+}
+
+// Where the simulation recorded agent `id` on `frame`.
+glm::vec3 recordedFeet(MainWindow& window, sim::AgentId id, std::size_t frame)
+{
+    const sim::FrameCache& cache = window.simulation().cache();
+    for (std::size_t i = 0; i < cache.agentCount(); ++i)
+        if (cache.agents()[i].id == id)
+            return cache.at(frame, i).position;
+    qFatal("agent %u is not in the recording", unsigned(id));
+}
+
+void clickRow(QListWidget* list, int row)
+{
+    list->scrollToItem(list->item(row));
+    QTest::mouseClick(list->viewport(), Qt::LeftButton, Qt::NoModifier, list->visualItemRect(list->item(row)).center());
+}
+
+bool hudHasLayoutLine(MainWindow& window)
+{
+    for (const QString& line : window.viewport().hud().lines())
+        if (line.startsWith("Layout:"))
+            return true;
+    return false;
+}
+
+}  // namespace
+
+class TestLayoutPanelUi : public QObject {
+    Q_OBJECT
+
+private:
+    QTemporaryDir m_dir;
+
+private slots:
+    void everyLayoutEditIsOneUndoableStepAndUndoingAllRestoresTheFile()
+    {
+        MainWindow window;
+        QVERIFY(showWithYaml(window, m_dir, "layout.yaml", kLayoutScene));
+        QVERIFY(playUntilRecorded(window, kRecorded - 1));
+        QVERIFY(scrubWithKeys(window, 48));
+        const QByteArray original = sceneYaml(window);
+        QUndoStack& undo = *window.document().undoStack();
+        const int startIndex = undo.index();
+        showLayoutDock(window);
+        LayoutPanel& panel = window.layoutPanel();
+        QListWidget* list = panel.list();
+        QCOMPARE(list->count(), 0);
+
+        // Nothing selected: the Add menu refuses, says why, and adds nothing.
+        window.document().setSelection({});
+        QVERIFY(addFromMenu(window, "Translate"));
+        QVERIFY(window.document().scene().layout.ops.empty());
+        QVERIFY2(lastMessage(window).contains("select agents"), qPrintable(lastMessage(window)));
+
+        // Agent 1 selected in the Outliner; Add > Translate makes one operation on it,
+        // selected, so that Properties edits it.
+        selectInOutliner(window, {{ItemKind::Agent, 0}});
+        QVERIFY(addFromMenu(window, "Translate"));
+        QCOMPARE(window.document().scene().layout.ops.size(), std::size_t(1));
+        const sim::LayoutOp& made = window.document().scene().layout.ops[0];
+        QCOMPARE(made.kind, sim::LayoutKind::Translate);
+        QCOMPARE(made.agents.ids, (std::vector<std::uint32_t>{1}));
+        QCOMPARE(made.name, std::string("Translate 1"));
+        QCOMPARE(window.document().selection(), (Selection{{ItemKind::LayoutOp, 0}}));
+        QCOMPARE(list->count(), 1);
+        QVERIFY2(list->item(0)->text().contains("agent 1"), qPrintable(list->item(0)->text()));
+
+        // 8 m north in Properties: agent 1 is drawn on agent 2's line, 8 m from where it
+        // was recorded; agent 2 where it was.
+        const glm::vec3 was1 = recordedFeet(window, 1, 48), was2 = recordedFeet(window, 2, 48);
+        typeInto(window, field<QDoubleSpinBox>(window, "offsetZ"), "8");
+        QCOMPARE(window.document().scene().layout.ops[0].offset, glm::vec2(0.0f, 8.0f));
+        QTRY_VERIFY(shownFeet(window, 1) && std::abs(shownFeet(window, 1)->z - (was1.z + 8.0f)) < 1e-4f);
+        QCOMPARE(shownFeet(window, 1)->x, was1.x);
+        QCOMPARE(*shownFeet(window, 2), was2);
+
+        // Moved, agent 1 starts inside agent 2; the two drift apart as each heads for the
+        // goal. Recounted from the recording: the frames their bodies (0.3 m each, less the
+        // check's 5 cm) overlap once agent 1 is 8 m north. The recording has them 8 m apart.
+        const sim::FrameCache& cache = window.simulation().cache();
+        std::size_t overlapping = 0;
+        for (std::size_t f = 0; f < cache.frameCount(); ++f) {
+            const glm::vec3 d = recordedFeet(window, 1, f) + glm::vec3(0, 0, 8) - recordedFeet(window, 2, f);
+            overlapping += std::hypot(d.x, d.z) < 0.6f - 0.05f;
+        }
+        QVERIFY2(overlapping > 24, qPrintable(QString::number(overlapping)));
+        // The HUD counts them, both are ringed on frame 0, and the list names the pair
+        // over those frames.
+        QTRY_VERIFY(hudHasLayoutLine(window));
+        QCOMPARE(window.layoutCheck().last().overlaps.size(), overlapping);
+        QVERIFY(scrubWithKeys(window, 0));
+        QCOMPARE(window.viewport().layoutFlaggedCount(), std::size_t(2));
+        QVERIFY(scrubWithKeys(window, 48));
+        QTreeWidget* clashes = panel.clashes();
+        QVERIFY(clashes->isVisible());
+        QCOMPARE(clashes->topLevelItemCount(), 1);
+        QCOMPARE(clashes->topLevelItem(0)->text(0), QString("0–%1").arg(overlapping - 1));
+        QCOMPARE(clashes->topLevelItem(0)->text(1), QString("1"));
+        QCOMPARE(clashes->topLevelItem(0)->text(2), QString("agent 2"));
+
+        // Double-clicking the clash goes to its first frame and clicks agent 1.
+        const QRect rect = clashes->visualItemRect(clashes->topLevelItem(0));
+        QTest::mouseClick(clashes->viewport(), Qt::LeftButton, Qt::NoModifier, rect.center());
+        QTest::mouseDClick(clashes->viewport(), Qt::LeftButton, Qt::NoModifier, rect.center());
+        QTRY_COMPARE(window.viewport().frameIndex(), std::size_t(0));
+        QCOMPARE(window.viewport().focusedAgent(), sim::AgentId(1));
+        QVERIFY(scrubWithKeys(window, 48));
+
+        // Space on the row switches it off: agent 1 is back where it was recorded, and
+        // the check is clean.
+        clickRow(list, 0);
+        QTest::keyClick(list, Qt::Key_Space);
+        QVERIFY(!window.document().scene().layout.ops[0].enabled);
+        QTRY_COMPARE(*shownFeet(window, 1), was1);
+        QTRY_VERIFY(!hudHasLayoutLine(window));
+        QVERIFY(window.layoutCheck().last().overlaps.empty());
+        QCOMPARE(window.viewport().layoutFlaggedCount(), std::size_t(0));
+
+        // The group, selected in the Outliner: Add > Delete removes it from the shown frame on.
+        selectInOutliner(window, {{ItemKind::Group, 0}});
+        QVERIFY(addFromMenu(window, "Delete"));
+        QCOMPARE(window.document().scene().layout.ops.size(), std::size_t(2));
+        const sim::LayoutOp& gone = window.document().scene().layout.ops[1];
+        QCOMPARE(gone.kind, sim::LayoutKind::Delete);
+        QCOMPARE(gone.agents.groups, (std::vector<std::string>{"crowd"}));
+        QCOMPARE(gone.firstFrame, std::size_t(48));
+        QTRY_VERIFY(!shownFeet(window, 3) && !shownFeet(window, 4) && !shownFeet(window, 5));
+        QVERIFY(shownFeet(window, 1) && shownFeet(window, 2));
+
+        // Earlier (the panel's button) puts the delete first; Ctrl+Down puts it back.
+        QCOMPARE(list->currentRow(), 1);
+        auto* up = panel.findChild<QToolBar*>("layoutBar")->widgetForAction(panel.findChild<QAction*>("layoutUp"));
+        QTest::mouseClick(up, Qt::LeftButton);
+        QCOMPARE(window.document().scene().layout.ops[0].kind, sim::LayoutKind::Delete);
+        QCOMPARE(window.document().scene().layout.ops[1].name, std::string("Translate 1"));
+        QCOMPARE(list->currentRow(), 0);
+        list->setFocus();
+        QTest::keyClick(list, Qt::Key_Down, Qt::ControlModifier);
+        QCOMPARE(window.document().scene().layout.ops[1].kind, sim::LayoutKind::Delete);
+
+        // Delete on the selected row removes the operation: the group is back.
+        clickRow(list, 1);
+        QTest::keyClick(list, Qt::Key_Delete);
+        QCOMPARE(window.document().scene().layout.ops.size(), std::size_t(1));
+        QCOMPARE(list->count(), 1);
+        QTRY_VERIFY(shownFeet(window, 3) && shownFeet(window, 4) && shownFeet(window, 5));
+
+        // Each of add, offset, switch, add, earlier, later and remove was one step; undoing
+        // them all gives back the file as it was, byte for byte, and redoing them the layer.
+        const sim::LayoutLayer edited = window.document().scene().layout;
+        QCOMPARE(undo.index() - startIndex, 7);
+        for (int k = 0; k < 7; ++k)
+            undo.undo();
+        QCOMPARE(sceneYaml(window), original);
+        QCOMPARE(list->count(), 0);
+        QTRY_COMPARE(*shownFeet(window, 1), was1);
+        for (int k = 0; k < 7; ++k)
+            undo.redo();
+        QVERIFY(window.document().scene().layout == edited);
+    }
+
+    void onlyTheClickedAgentTakesOneMemberOfAGroup()
+    {
+        MainWindow window;
+        QVERIFY(showWithYaml(window, m_dir, "clicked.yaml", kLayoutScene));
+        QVERIFY(playUntilRecorded(window, 24));
+        QVERIFY(scrubWithKeys(window, 24));
+        showLayoutDock(window);
+        // A click on a member of the group in the viewport selects the group and
+        // focuses the member.
+        const glm::vec3 feet = recordedFeet(window, 4, 24);
+        clickToolButton(window, "select");
+        clickOnGround(window, {feet.x, feet.z});
+        QTRY_COMPARE(window.viewport().focusedAgent(), sim::AgentId(4));
+        QCOMPARE(window.document().selection(), (Selection{{ItemKind::Group, 0}}));
+        auto* only = window.layoutPanel().findChild<QCheckBox*>("layoutClickedOnly");
+        QTest::mouseClick(only, Qt::LeftButton, Qt::NoModifier, QPoint(6, only->height() / 2));
+        QVERIFY(only->isChecked());
+        QVERIFY(addFromMenu(window, "Time offset"));
+        const sim::LayoutOp& later = window.document().scene().layout.ops.at(0);
+        QCOMPARE(later.agents.ids, (std::vector<std::uint32_t>{4}));
+        QVERIFY(later.agents.groups.empty());
+        QCOMPARE(later.frames, 24);  // one second at 24 fps
+        // Shown 24 frames later: on frame 24 it stands where it stood on frame 0.
+        QTRY_VERIFY(shownFeet(window, 4) && glm::length(*shownFeet(window, 4) - recordedFeet(window, 4, 0)) < 1e-4f);
+    }
+
+    void renamingAGroupOrTypeKeepsTheOperationsOnIt()
+    {
+        MainWindow window;
+        const QByteArray withLayer = kLayoutScene + "layout:\n  - {op: delete, agents: {groups: [crowd], types: [walker]}}\n";
+        QVERIFY(showWithYaml(window, m_dir, "rename.yaml", withLayer));
+        selectInOutliner(window, {{ItemKind::Group, 0}});
+        typeInto(window, field<QLineEdit>(window, "name"), "parade");
+        QCOMPARE(window.document().scene().groups[0].name, std::string("parade"));
+        QCOMPARE(window.document().scene().layout.ops[0].agents.groups, (std::vector<std::string>{"parade"}));
+        selectInOutliner(window, {{ItemKind::AgentType, 0}});
+        typeInto(window, field<QLineEdit>(window, "name"), "stroller");
+        QCOMPARE(window.document().scene().layout.ops[0].agents.types, (std::vector<std::string>{"stroller"}));
+        // A type an operation still selects is not deleted from under it.
+        selectInOutliner(window, {{ItemKind::AgentType, 0}});
+        QTest::keyClick(&window.outliner(), Qt::Key_Delete);
+        QCOMPARE(window.document().scene().agentTypes.size(), std::size_t(1));
+        QVERIFY2(lastMessage(window).startsWith("Nothing deleted"), qPrintable(lastMessage(window)));
+        const std::vector<NameUse> uses = nameUses(window.document().scene(), ItemKind::AgentType, "stroller");
+        QVERIFY(std::any_of(uses.begin(), uses.end(), [](const NameUse& use) {
+            return use.user == SceneItem{ItemKind::LayoutOp, 0} && use.who == "layout operation Delete 1";
+        }));
+    }
+};
+
+THRONG_REGISTER_TEST(TestLayoutPanelUi)
+#include "TestLayoutPanelUi.moc"
