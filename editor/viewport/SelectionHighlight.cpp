@@ -30,6 +30,10 @@ std::vector<SelectionHighlight::AgentRing> SelectionHighlight::agentRings(const 
             const sim::Vehicle& v = s.vehicles[item.index];
             if (const std::optional<glm::vec2> start = vehicleStart(s, v))
                 rings.push_back({ShownAgents::kNone, v.id, *start, radiusOf(v.type, 1.0f), 0.0f, palette::kSelection});
+        } else if (item.kind == ItemKind::LayoutOp && item.index < s.layout.ops.size()) {
+            // The agents a layout operation names by id, where the shown frame draws them.
+            for (const std::uint32_t id : s.layout.ops[item.index].agents.ids)
+                rings.push_back({ShownAgents::kNone, id, {}, 0.0f, 0.0f, palette::kSelection});
         }
     }
     return rings;

@@ -36,7 +36,8 @@ public:
 
     // Everything selected but agents and vehicles.
     static void addItems(const sim::Scene& scene, const Selection& selection, ShapeMesh& mesh);
-    // The rings of the selected placed agents and vehicles.
+    // The rings of the selected placed agents and vehicles, and of the agents selected layout
+    // operations name by id.
     static std::vector<AgentRing> agentRings(const sim::Scene& scene, const Selection& selection);
     // The ring that marks the agent the user clicked (a group's member too).
     static AgentRing focusRing(sim::AgentId id);

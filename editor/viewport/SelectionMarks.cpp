@@ -15,9 +15,16 @@ void SelectionMarks::setSelection(const sim::Scene& scene, const Selection& sele
     for (const ShapeVertex& v : m_items.vertices())
         m_itemsBox.include({v.position.x, v.position.z});
     m_groupIds.clear();
-    for (const SceneItem& item : selection)
+    for (const SceneItem& item : selection) {
         if (item.kind == ItemKind::Group && item.index < scene.groups.size())
             m_groupIds.push_back(groupMemberIds(scene, item.index));
+        // A layout operation's spawn groups: their members' trails show the edited paths.
+        if (item.kind == ItemKind::LayoutOp && item.index < scene.layout.ops.size())
+            for (const std::string& name : scene.layout.ops[item.index].agents.groups)
+                for (std::size_t g = 0; g < scene.groups.size(); ++g)
+                    if (scene.groups[g].name == name)
+                        m_groupIds.push_back(groupMemberIds(scene, g));
+    }
     if (m_focused != 0) {
         const std::optional<SceneItem> focused = agentItem(scene, m_focused);
         if (!focused || std::find(selection.begin(), selection.end(), *focused) == selection.end())

@@ -43,7 +43,7 @@ const QList<IconGroup> kExpected = {
      {"tool-select", "tool-crowd-brush", "tool-spawn-group", "tool-erase-brush", "tool-variation-brush",
       "tool-orient-brush", "tool-assign-brush", "tool-wall", "tool-path", "tool-obstacle", "tool-traffic-light",
       "tool-lane", "tool-flow-stroke", "tool-hero", "tool-goal",
-      "tool-action-point", "tool-source", "tool-measure"}},
+      "tool-action-point", "tool-source", "tool-measure", "tool-layout-move"}},
     {"File and edit",
      {"action-new", "action-open", "action-save", "action-save-as", "action-export", "action-undo", "action-redo",
       "action-delete", "action-duplicate", "action-new-agent-type", "action-revert", "action-quit"}},

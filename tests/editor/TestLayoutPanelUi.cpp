@@ -286,6 +286,88 @@ private slots:
         QTRY_VERIFY(shownFeet(window, 4) && glm::length(*shownFeet(window, 4) - recordedFeet(window, 4, 0)) < 1e-4f);
     }
 
+    // Layout Move: a drag moves the selected agent's recorded path by the drag (one step,
+    // a new Translate); a second drag with that operation selected changes its offset;
+    // Shift+drag turns a group about its centre on the shown frame; Escape takes a drag back.
+    void layoutMoveDragsTheSelectedAgentsAsOneStep()
+    {
+        MainWindow window;
+        QVERIFY(showWithYaml(window, m_dir, "move.yaml", kLayoutScene));
+        QVERIFY(playUntilRecorded(window, 48));
+        QVERIFY(scrubWithKeys(window, 24));
+        QUndoStack& undo = *window.document().undoStack();
+        const int start = undo.index();
+        selectInOutliner(window, {{ItemKind::Agent, 0}});
+        QVERIFY(clickToolButton(window, "layoutMove"));
+        const glm::vec3 was = recordedFeet(window, 1, 24);
+        const glm::vec2 from(was.x, was.z);
+        dragOnGround(window, {from, from + glm::vec2(3.0f, 2.0f)});
+        QCOMPARE(window.document().scene().layout.ops.size(), std::size_t(1));
+        const sim::LayoutOp& moved = window.document().scene().layout.ops[0];
+        QCOMPARE(moved.kind, sim::LayoutKind::Translate);
+        QCOMPARE(moved.agents.ids, (std::vector<std::uint32_t>{1}));
+        QVERIFY2(glm::length(moved.offset - glm::vec2(3.0f, 2.0f)) < 0.05f,
+                 qPrintable(QString("%1, %2").arg(moved.offset.x).arg(moved.offset.y)));
+        QCOMPARE(undo.index() - start, 1);
+        QCOMPARE(window.document().selection(), (Selection{{ItemKind::LayoutOp, 0}}));
+        // The operation selected, its agent is ringed (and its trail drawn when trails are on).
+        QCOMPARE(window.viewport().watchedAgents(), (std::vector<sim::AgentId>{1}));
+        QTRY_VERIFY(shownFeet(window, 1) &&
+                    glm::length(*shownFeet(window, 1) - (was + glm::vec3(moved.offset.x, 0, moved.offset.y))) < 1e-4f);
+
+        // The operation selected: another drag adds a metre east to the same operation.
+        const glm::vec2 at = from + moved.offset;
+        dragOnGround(window, {at, at + glm::vec2(1.0f, 0.0f)});
+        QCOMPARE(window.document().scene().layout.ops.size(), std::size_t(1));
+        QVERIFY(glm::length(window.document().scene().layout.ops[0].offset - glm::vec2(4.0f, 2.0f)) < 0.08f);
+        QCOMPARE(undo.index() - start, 2);
+
+        // Shift+drag a quarter turn from +x to +z (clockwise seen from above) about the group's centre.
+        selectInOutliner(window, {{ItemKind::Group, 0}});
+        glm::vec2 centre(0.0f);
+        for (const sim::AgentId id : {3u, 4u, 5u})
+            centre += glm::vec2(recordedFeet(window, id, 24).x, recordedFeet(window, id, 24).z) / 3.0f;
+        QWidget* view = &window.viewport();
+        QTest::mousePress(view, Qt::LeftButton, Qt::ShiftModifier, pixelOf(window, centre + glm::vec2(4.0f, 0.0f)));
+        for (int k = 1; k <= 12; ++k) {
+            const float a = float(k) / 12.0f * 1.5707963f;
+            QTest::mouseMove(view, pixelOf(window, centre + 4.0f * glm::vec2(std::cos(a), std::sin(a))));
+        }
+        QTest::mouseRelease(view, Qt::LeftButton, Qt::NoModifier, pixelOf(window, centre + glm::vec2(0.0f, 4.0f)));
+        QCOMPARE(window.document().scene().layout.ops.size(), std::size_t(2));
+        const sim::LayoutOp& turned = window.document().scene().layout.ops[1];
+        QCOMPARE(turned.kind, sim::LayoutKind::Rotate);
+        QCOMPARE(turned.agents.groups, (std::vector<std::string>{"crowd"}));
+        QVERIFY(turned.pivot && glm::length(*turned.pivot - centre) < 1e-3f);
+        QVERIFY2(std::abs(turned.angleDeg + 90.0f) < 2.0f, qPrintable(QString::number(turned.angleDeg)));  // clockwise
+        // Each member stands where the quarter turn of its recorded place about the centre is.
+        for (const sim::AgentId id : {3u, 4u, 5u}) {
+            const glm::vec3 r = recordedFeet(window, id, 24);
+            const glm::vec2 rel = glm::vec2(r.x, r.z) - centre;
+            const glm::vec2 expected = centre + glm::vec2(-rel.y, rel.x);
+            auto near = [&] {
+                const std::optional<glm::vec3> now = shownFeet(window, id);
+                return now && glm::length(glm::vec2(now->x, now->z) - expected) < 0.1f;
+            };
+            QTRY_VERIFY(near());
+            const glm::vec3 now = *shownFeet(window, id);
+            QVERIFY2(near(),
+                     qPrintable(QString("agent %1 at %2, %3; expected %4, %5")
+                                    .arg(id).arg(now.x).arg(now.z).arg(expected.x).arg(expected.y)));
+        }
+        QCOMPARE(undo.index() - start, 3);
+
+        // Escape during a drag: nothing added, no step.
+        selectInOutliner(window, {{ItemKind::Agent, 1}});
+        QTest::mousePress(view, Qt::LeftButton, Qt::NoModifier, pixelOf(window, {0.0f, 0.0f}));
+        QTest::mouseMove(view, pixelOf(window, {2.0f, 0.0f}));
+        QTest::mouseMove(view, pixelOf(window, {3.0f, 0.0f}));
+        QTest::keyClick(view, Qt::Key_Escape);
+        QTest::mouseRelease(view, Qt::LeftButton, Qt::NoModifier, pixelOf(window, {3.0f, 0.0f}));
+        QCOMPARE(window.document().scene().layout.ops.size(), std::size_t(2));
+        QCOMPARE(undo.index() - start, 3);
+    }
+
     void renamingAGroupOrTypeKeepsTheOperationsOnIt()
     {
         MainWindow window;

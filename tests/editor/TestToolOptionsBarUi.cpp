@@ -33,7 +33,7 @@ private slots:
         QStringList keys;
         for (const ViewportTool* t : window.tools().tools())
             keys << t->objectKey();
-        QCOMPARE(keys.size(), 18);  // with the action point, source and measure tools
+        QCOMPARE(keys.size(), 19);  // with the action point, source, measure and layout move tools
         QVERIFY(clickToolButton(window, keys.front()));
         QApplication::processEvents();
         const int height = bar->height();

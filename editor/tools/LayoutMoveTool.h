@@ -1,0 +1,60 @@
+#pragma once
+// Layout Move (Y): moves or turns recorded trajectories through the layout layer, as a
+// director asks after the take. With agents, groups or types selected, a drag adds a
+// Translate operation for them (Shift: a Rotate about their centre on the shown frame)
+// and sets its offset or angle as the mouse goes; with a Translate or Rotate operation
+// selected, a drag changes its amount. The whole drag is one undoable step; Escape takes
+// it back. Draws the gizmo over the agents' centre: a cross for a move, a ring for a turn.
+
+#include "editor/tools/ViewportTool.h"
+#include "simcore/layout/LayoutLayer.h"
+
+#include <glm/vec2.hpp>
+
+#include <optional>
+
+namespace throng::editor {
+
+class LayoutMoveTool : public ViewportTool {
+    Q_OBJECT
+
+public:
+    using ViewportTool::ViewportTool;
+
+    QString name() const override { return tr("Layout Move"); }
+    QString toolTip() const override
+    {
+        return tr("Layout Move (Y): drag to move the selected agents' recorded paths without simulating again, "
+                  "Shift+drag to turn them; with a layout operation selected, drag to change it");
+    }
+    QKeySequence shortcut() const override { return QKeySequence(Qt::Key_Y); }
+    QString objectKey() const override { return QStringLiteral("layoutMove"); }
+
+    void mousePressed(const ToolMouse& mouse) override;
+    void mouseMoved(const ToolMouse& mouse) override;
+    void mouseReleased(const ToolMouse& mouse) override;
+    void cancel() override;
+    void drawOverlay(QPainter& painter) const override;
+
+    // A drag shorter than this on screen changes nothing (a click), px.
+    static constexpr double kDeadPx = 3.0;
+
+private:
+    // The operation a drag edits: the one selected (its index), or a new one to append.
+    struct Target {
+        std::optional<std::size_t> index;
+        sim::LayoutOp op;  // as it was when the drag began (new: with nothing done yet)
+    };
+    std::optional<Target> target(bool turn) const;
+    // Where the agents `op` names stand on the shown frame: their centre (the scene's x, z).
+    std::optional<glm::vec2> centreOf(const sim::LayoutOp& op) const;
+    void apply(glm::vec2 ground);
+
+    std::optional<Target> m_target;
+    glm::vec2 m_press{0.0f}, m_now{0.0f}, m_centre{0.0f};
+    QPointF m_pressPixel;
+    bool m_moved = false;
+    int m_serial = 0;  // one merge key per drag
+};
+
+}  // namespace throng::editor
