@@ -94,4 +94,13 @@ void applyHandSetVariation(AgentVariation& variation, const sim::Agent& agent, s
         variation.heightScale = agent.heightScale;
 }
 
+void applySwappedLook(AgentVariation& variation, const sim::AgentInfo& agent, std::size_t lookCount,
+                      std::size_t tintCount)
+{
+    if (agent.look != sim::AgentInfo::kDrawnLook && agent.look < std::max<std::size_t>(1, lookCount))
+        variation.look = agent.look;
+    if (agent.tint == -1 || (agent.tint >= 0 && std::size_t(agent.tint) < tintCount))
+        variation.tint = agent.tint;
+}
+
 }  // namespace throng::exporting

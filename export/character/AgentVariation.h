@@ -6,6 +6,7 @@
 
 #include "export/character/Character.h"
 #include "simcore/scene/Scene.h"
+#include "simcore/world/FrameCache.h"
 
 #include <glm/vec3.hpp>
 
@@ -44,5 +45,9 @@ AgentVariation drawVariation(const sim::Variation& variation, std::uint64_t seed
 // (sim::Agent::look, tint, heightScale), where they are set and in range.
 void applyHandSetVariation(AgentVariation& variation, const sim::Agent& agent, std::size_t lookCount,
                            std::size_t tintCount);
+// Then what a layout layer's swap shows instead (sim::AgentInfo::look, tint), where it is set
+// and in range.
+void applySwappedLook(AgentVariation& variation, const sim::AgentInfo& agent, std::size_t lookCount,
+                      std::size_t tintCount);
 
 }  // namespace throng::exporting

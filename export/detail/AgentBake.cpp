@@ -37,6 +37,7 @@ AgentVariation AgentBaker::variationOf(std::size_t i) const
     AgentVariation v = drawVariation(type.variation, m_seed, info.id, looks);
     if (const auto it = m_placed.find(info.id); it != m_placed.end())
         applyHandSetVariation(v, *it->second, looks, type.variation.tints.size());
+    applySwappedLook(v, info, looks, type.variation.tints.size());
     return v;
 }
 

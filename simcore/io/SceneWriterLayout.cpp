@@ -93,6 +93,27 @@ void writeSceneLayout(YamlWriter& w, const Scene& s)
         case LayoutKind::Expand:
             w.kvf("factor", op.factor);
             break;
+        case LayoutKind::Duplicate:
+            w.key("offset");
+            w.vec2(op.offset);
+            break;
+        case LayoutKind::Swap:
+            if (!op.type.empty())
+                w.kv("type", op.type);
+            if (op.look >= 0) {
+                w.key("look");
+                o << op.look;
+            }
+            if (op.tint == -1)
+                w.kv("tint", "none");
+            else if (op.tint >= 0) {
+                w.key("tint");
+                o << op.tint;
+            }
+            break;
+        case LayoutKind::ReplaceClip:
+            w.kv("clip", toString(op.clip));
+            break;
         }
         o << YAML::EndMap;
     }

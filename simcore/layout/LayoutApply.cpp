@@ -81,9 +81,16 @@ AgentFrame standing(AgentFrame a)
 LayoutSelection selectLayoutAgents(const Scene& scene, const LayoutLayer& layer, const FrameCache& recorded)
 {
     LayoutSelection selection;
-    std::map<std::uint32_t, std::size_t> byId;
-    for (std::size_t i = 0; i < recorded.agentCount(); ++i)
+    const std::size_t n = recorded.agentCount();
+    std::map<std::uint32_t, std::size_t> byId;  // recorded agents and copies made so far
+    AgentId nextCopy = kFirstCopyId;
+    for (std::size_t i = 0; i < n; ++i) {
         byId.emplace(recorded.agents()[i].id, i);
+        if (recorded.agents()[i].id >= nextCopy)
+            nextCopy = recorded.agents()[i].id + 1;
+    }
+    std::vector<std::uint16_t> copyTypes;
+    auto typeOf = [&](std::size_t i) { return i < n ? recorded.agents()[i].typeIndex : copyTypes[i - n]; };
     const auto members = groupMembers(scene);
     const glm::vec2 shift(float(recorded.origin().x), float(recorded.origin().z));
     for (std::size_t k = 0; k < layer.ops.size(); ++k) {
@@ -106,7 +113,7 @@ LayoutSelection selectLayoutAgents(const Scene& scene, const LayoutLayer& layer,
                 continue;
             }
             for (const std::uint32_t id : it->second)
-                if (const auto found = byId.find(id); found != byId.end())
+                if (const auto found = byId.find(id); found != byId.end() && found->second < n)
                     chosen.insert(found->second);
         }
         for (const std::string& t : s.types) {
@@ -117,15 +124,15 @@ LayoutSelection selectLayoutAgents(const Scene& scene, const LayoutLayer& layer,
                 continue;
             }
             const auto index = std::size_t(type - scene.agentTypes.begin());
-            for (std::size_t i = 0; i < recorded.agentCount(); ++i)
-                if (recorded.agents()[i].typeIndex == index)
+            for (std::size_t i = 0; i < n + copyTypes.size(); ++i)
+                if (typeOf(i) == index)
                     chosen.insert(i);
         }
         if (s.lasso.size() >= 3 && s.lassoFrame < recorded.frameCount()) {
             std::vector<glm::vec2> polygon;
             for (const glm::vec2 p : s.lasso)
                 polygon.push_back(p - shift);
-            for (std::size_t i = 0; i < recorded.agentCount(); ++i) {
+            for (std::size_t i = 0; i < n; ++i) {
                 const AgentFrame& a = recorded.at(s.lassoFrame, i);
                 if (a.present && polygonContains(polygon, ground(a.position)))
                     chosen.insert(i);
@@ -143,6 +150,13 @@ LayoutSelection selectLayoutAgents(const Scene& scene, const LayoutLayer& layer,
         if (chosen.empty() && op.enabled)
             selection.messages.push_back(label(op, k) + " selects no agent of the recording: it changes nothing");
         selection.agents.emplace_back(chosen.begin(), chosen.end());
+        // An enabled duplicate's copies, which later operations may select by id or type.
+        if (op.kind == LayoutKind::Duplicate && op.enabled)
+            for (const std::size_t i : selection.agents.back()) {
+                byId.emplace(nextCopy, n + copyTypes.size());
+                selection.copies.push_back({k, i, nextCopy++});
+                copyTypes.push_back(typeOf(i));
+            }
     }
     return selection;
 }
@@ -155,17 +169,48 @@ LayoutEvaluator::LayoutEvaluator(const Scene& scene, const FrameCache& recorded)
     : m_layer(scene.layout), m_recorded(recorded), m_selection(selectLayoutAgents(scene, scene.layout, recorded)),
       m_shift(float(recorded.origin().x), float(recorded.origin().z))
 {
-    const std::size_t frames = recorded.frameCount();
+    const std::size_t frames = recorded.frameCount(), n = recorded.agentCount();
+    // The laid-out agents: the recording's, then the copies (each of its source's type), and
+    // what the swaps show instead, operation after operation.
+    m_agents = recorded.agents();
+    m_copiesOf.assign(m_layer.ops.size(), {});
+    for (std::size_t c = 0; c < m_selection.copies.size(); ++c) {
+        const LayoutCopy& copy = m_selection.copies[c];
+        AgentInfo info = m_agents[copy.source];
+        info.id = copy.id;
+        m_agents.push_back(info);
+        m_copiesOf[copy.op].emplace_back(copy.source, n + c);
+    }
+    for (std::size_t k = 0; k < m_layer.ops.size(); ++k) {
+        const LayoutOp& op = m_layer.ops[k];
+        if (op.kind != LayoutKind::Swap || !op.enabled)
+            continue;
+        const auto type = std::find_if(scene.agentTypes.begin(), scene.agentTypes.end(),
+                                       [&](const AgentType& t) { return !op.type.empty() && t.name == op.type; });
+        for (const std::size_t i : m_selection.agents[k]) {
+            if (type != scene.agentTypes.end())
+                m_agents[i].typeIndex = std::uint16_t(type - scene.agentTypes.begin());
+            if (op.look >= 0 && op.look < AgentInfo::kDrawnLook)
+                m_agents[i].look = std::uint8_t(op.look);
+            if (op.tint != LayoutOp::kKeepTint && op.tint >= -1 && op.tint < 128)
+                m_agents[i].tint = std::int8_t(op.tint);
+        }
+    }
     // Only a time offset asks where an agent's recording starts: a scan of every frame,
     // which a layer without one (the editor extends those frame by frame) never pays for.
     const bool retimes = std::any_of(m_layer.ops.begin(), m_layer.ops.end(),
                                      [](const LayoutOp& op) { return op.kind == LayoutKind::TimeOffset; });
     if (retimes) {
-        m_firstPresent.assign(recorded.agentCount(), frames);
+        m_firstPresent.assign(m_agents.size(), frames);
         for (std::size_t f = frames; f-- > 0;)
-            for (std::size_t i = 0; i < recorded.agentCount(); ++i)
+            for (std::size_t i = 0; i < n; ++i)
                 if (recorded.at(f, i).present)
                     m_firstPresent[i] = f;
+        // A copy is there from its source's start or its duplicate's first frame, the later.
+        for (std::size_t c = 0; c < m_selection.copies.size(); ++c) {
+            const LayoutCopy& copy = m_selection.copies[c];
+            m_firstPresent[n + c] = std::max(m_firstPresent[copy.source], m_layer.ops[copy.op].firstFrame);
+        }
     }
     // A rotation without a pivot turns about its agents' centre on its first frame, as the
     // operations before it left them.
@@ -255,8 +300,22 @@ void LayoutEvaluator::applyInFrame(std::size_t k, std::span<AgentFrame> out) con
                 place(out[i], centre + op.factor * (ground(out[i].position) - centre));
         break;
     }
+    case LayoutKind::Duplicate:
+        for (const auto& [source, copy] : m_copiesOf[k]) {
+            out[copy] = out[source];
+            if (out[copy].present)
+                place(out[copy], ground(out[copy].position) + op.offset);
+        }
+        break;
+    case LayoutKind::ReplaceClip:
+        for (const std::size_t i : agents)
+            if (out[i].present)
+                out[i].clip = op.clip;
+        break;
     case LayoutKind::TimeOffset:
         break;  // across frames: evaluate() and allFrames() do it
+    case LayoutKind::Swap:
+        break;  // not frames: the agents' descriptions (agents())
     }
 }
 
@@ -269,6 +328,9 @@ const std::vector<AgentFrame>& LayoutEvaluator::evaluate(std::size_t ops, std::s
     if (ops == 0) {
         const std::span<const AgentFrame> recorded = m_recorded.frame(f);
         out.assign(recorded.begin(), recorded.end());
+        AgentFrame absent;
+        absent.present = false;
+        out.resize(m_agents.size(), absent);  // the copies, until their duplicate makes them
     } else {
         out = evaluate(ops - 1, f, memo);
         const std::size_t k = ops - 1;
@@ -295,12 +357,35 @@ void LayoutEvaluator::frame(std::size_t f, std::vector<AgentFrame>& out) const
 
 FrameCache LayoutEvaluator::allFrames() const
 {
-    FrameCache laid = m_recorded;
-    const std::size_t frames = m_recorded.frameCount(), width = m_recorded.agentCount();
+    const std::size_t frames = m_recorded.frameCount(), width = m_agents.size(), n = m_recorded.agentCount();
+    FrameCache laid;
+    if (width == n) {
+        laid = m_recorded;
+    } else {
+        // Wider by the copies: one agent set, the copies absent until their duplicate.
+        laid.reset(m_agents, m_recorded.fps(), m_recorded.origin());
+        std::vector<AgentFrame> frame(width);
+        AgentFrame absent;
+        absent.present = false;
+        for (std::size_t f = 0; f < frames; ++f) {
+            const std::span<const AgentFrame> recorded = m_recorded.frame(f);
+            std::copy(recorded.begin(), recorded.end(), frame.begin());
+            std::fill(frame.begin() + std::ptrdiff_t(n), frame.end(), absent);
+            laid.append(frame);
+        }
+    }
+    const std::vector<AgentInfo>& before = m_recorded.agents();
+    for (std::size_t i = 0; i < n; ++i) {
+        const AgentInfo& a = m_agents[i];
+        if (a.look != before[i].look || a.tint != before[i].tint || a.typeIndex != before[i].typeIndex)
+            laid.swapAgent(i, a.typeIndex != before[i].typeIndex ? std::optional<std::uint16_t>(a.typeIndex)
+                                                                 : std::nullopt,
+                           a.look, a.tint);
+    }
     for (std::size_t k = 0; k < m_layer.ops.size(); ++k) {
         const LayoutOp& op = m_layer.ops[k];
         const std::vector<std::size_t>& agents = m_selection.agents[k];
-        if (!op.enabled || agents.empty() || op.firstFrame >= frames)
+        if (!op.enabled || agents.empty() || op.firstFrame >= frames || op.kind == LayoutKind::Swap)
             continue;
         const std::size_t last = std::min(op.lastFrame, frames - 1);
         if (op.kind == LayoutKind::TimeOffset) {

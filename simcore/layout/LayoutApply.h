@@ -14,11 +14,25 @@
 
 namespace throng::sim {
 
-// The cache agents (indices) each operation of `layer` selects in `recorded`, and what
-// the user should hear about: an operation that selects nobody (its agents no longer
-// exist after a re-simulation, say), ids the recording lacks, names no group or type has.
+// A copy a duplicate makes: of cache agent `source` (a recorded agent, or an earlier copy),
+// with id `id`. Copies follow the recorded agents in the laid-out frames, in the order the
+// operations make them: copy c is cache agent recorded.agentCount() + c.
+struct LayoutCopy {
+    std::size_t op = 0, source = 0;
+    AgentId id = 0;
+};
+// Copies' ids count up from here (past the recording's highest id, if that is higher), so
+// that a copy keeps its id when a re-simulation changes the crowd around it.
+inline constexpr AgentId kFirstCopyId = 1'000'000'000;
+
+// The cache agents (indices) each operation of `layer` selects in `recorded` (and among the
+// copies earlier operations made, by id or type), the copies its enabled duplicates make,
+// and what the user should hear about: an operation that selects nobody (its agents no
+// longer exist after a re-simulation, say), ids the recording lacks, names no group or
+// type has.
 struct LayoutSelection {
     std::vector<std::vector<std::size_t>> agents;  // per operation, sorted
+    std::vector<LayoutCopy> copies;
     std::vector<std::string> messages;
 };
 LayoutSelection selectLayoutAgents(const Scene& scene, const LayoutLayer& layer, const FrameCache& recorded);
@@ -32,9 +46,12 @@ class LayoutEvaluator {
 public:
     LayoutEvaluator(const Scene& scene, const FrameCache& recorded);
     const std::vector<std::string>& messages() const { return m_selection.messages; }
-    // Frame f with every enabled operation applied, one entry per cache agent.
+    // The laid-out agents: the recording's, then the copies, with what swaps show instead
+    // (type, look, tint).
+    const std::vector<AgentInfo>& agents() const { return m_agents; }
+    // Frame f with every enabled operation applied, one entry per laid-out agent.
     void frame(std::size_t f, std::vector<AgentFrame>& out) const;
-    // Every frame so: a copy of the recording, edited.
+    // Every frame so: a copy of the recording, edited (one agent set: the laid-out agents).
     FrameCache allFrames() const;
 
 private:
@@ -56,8 +73,10 @@ private:
     const LayoutLayer& m_layer;
     const FrameCache& m_recorded;
     LayoutSelection m_selection;
+    std::vector<AgentInfo> m_agents;                                     // laid-out agents
+    std::vector<std::vector<std::pair<std::size_t, std::size_t>>> m_copiesOf;  // per operation: (source, copy)
     std::vector<glm::vec2> m_pivots;          // per operation: rotate's pivot, in the cache's coordinates
-    std::vector<std::size_t> m_firstPresent;  // time offsets: per cache agent, its first recorded frame (frames: never)
+    std::vector<std::size_t> m_firstPresent;  // time offsets: per laid-out agent, its first frame (frames: never)
     glm::vec2 m_shift{0.0f};                  // scene coordinates -> the cache's
 };
 

@@ -97,12 +97,14 @@ LayoutCheck checkLayout(const Scene& scene, const FrameCache& recorded, const Fr
 {
     LayoutCheck check;
     const std::size_t frames = std::min(recorded.frameCount(), laid.frameCount());
-    const std::size_t n = laid.agentCount();
-    if (recorded.agentCount() != n || frames == 0)
+    const std::size_t n = laid.agentCount(), recordedCount = recorded.agentCount();
+    if (recordedCount > n || frames == 0)
         return check;
+    // The laid-out agents past the recording's are copies a duplicate made: edited.
     std::vector<std::uint8_t> edited(n, 0);
+    std::fill(edited.begin() + std::ptrdiff_t(recordedCount), edited.end(), 1);
     for (std::size_t f = 0; f < frames; ++f)
-        for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t i = 0; i < recordedCount; ++i)
             if (!edited[i] && !unchangedFrame(recorded.at(f, i), laid.at(f, i)))
                 edited[i] = 1;
     if (std::find(edited.begin(), edited.end(), 1) == edited.end())
@@ -140,7 +142,7 @@ LayoutCheck checkLayout(const Scene& scene, const FrameCache& recorded, const Fr
             const WallPiece* wall = crossedWall(walls, placeOf(laid.at(f - 1, i)), placeOf(laid.at(f, i)));
             if (!wall)
                 continue;
-            const bool recordedToo = inShot(recorded.at(f, i)) && inShot(recorded.at(f - 1, i)) &&
+            const bool recordedToo = i < recordedCount && inShot(recorded.at(f, i)) && inShot(recorded.at(f - 1, i)) &&
                                      crossedWall(walls, placeOf(recorded.at(f - 1, i)), placeOf(recorded.at(f, i)));
             if (recordedToo)
                 continue;

@@ -29,9 +29,9 @@ struct LayoutCheck {
 
 // Bodies overlap when their centres are closer than the sum of their types' radii less
 // `toleranceM` (the simulation's own packing presses bodies a little into each other). An
-// agent is edited when any of its frames differs between `recorded` and `laid` (same agents,
-// same frames). A pair overlapping on a frame of the recording too is not reported; nor a
-// step through a wall the recording also took.
+// agent is edited when any of its frames differs between `recorded` and `laid` (the same
+// frames; `laid` holds the recording's agents first, then any copies, which count as edited). A
+// pair overlapping on a frame of the recording too is not reported; nor a step through a wall the recording also took.
 LayoutCheck checkLayout(const Scene& scene, const FrameCache& recorded, const FrameCache& laid,
                         float toleranceM = 0.05f);
 

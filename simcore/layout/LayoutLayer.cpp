@@ -4,7 +4,8 @@ namespace throng::sim {
 
 namespace {
 
-constexpr const char* kNames[kLayoutKindCount] = {"translate", "rotate", "time_offset", "mirror", "delete", "expand"};
+constexpr const char* kNames[kLayoutKindCount] = {"translate", "rotate", "time_offset", "mirror",   "delete",
+                                                      "expand",    "duplicate", "swap",     "replace_clip"};
 
 }  // namespace
 

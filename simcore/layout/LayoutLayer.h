@@ -3,6 +3,8 @@
 // in the scene file as an ordered list of operations and applied to the recorded frames
 // (LayoutApply.h) for everything that reads them, without simulating again. Plain data.
 
+#include "simcore/scene/Clip.h"
+
 #include <glm/vec2.hpp>
 
 #include <cstdint>
@@ -21,8 +23,11 @@ enum class LayoutKind : std::uint8_t {
     Mirror,      // reflect them across a vertical plane through a line on the ground
     Delete,      // remove them from a frame on, or entirely
     Expand,      // scale their distances from their centre, frame by frame
+    Duplicate,   // add a copy of each, moved by an offset, with an id of its own (and so a look of its own)
+    Swap,        // show them with another look, tint or agent type (its character) for the whole shot
+    ReplaceClip, // play another clip (an action, or idle, walk, run) over the frames
 };
-inline constexpr int kLayoutKindCount = 6;
+inline constexpr int kLayoutKindCount = 9;
 const char* toString(LayoutKind kind);
 bool layoutKindFromName(std::string_view name, LayoutKind& kind);
 
@@ -46,13 +51,18 @@ struct LayoutOp {
     bool enabled = true;
     AgentSelector agents;
     std::size_t firstFrame = 0, lastFrame = kLastFrame;  // the frames it edits, inclusive
-    glm::vec2 offset{0.0f};                // translate: (dx, dz), m
+    glm::vec2 offset{0.0f};                // translate, duplicate: (dx, dz), m
     float angleDeg = 0.0f;                 // rotate: counter-clockwise seen from above
     std::optional<glm::vec2> pivot;        // rotate: (x, z); none: the agents' centre on firstFrame
     int frames = 0;                        // time offset: frames later (negative: earlier)
     bool holdFirst = true;                 // time offset: before its new start, stand in its first pose (else absent)
     glm::vec2 axis[2]{{0.0f, -1.0f}, {0.0f, 1.0f}};  // mirror: two points of the line, (x, z)
     float factor = 1.0f;                   // expand: > 0
+    int look = -1;                         // swap: index into the type's looks; -1 keeps the drawn one
+    int tint = kKeepTint;                  // swap: index into the type's tints, -1 = untinted; kKeepTint keeps it
+    std::string type;                      // swap: the agent type to show instead; empty keeps it
+    Clip clip = Clip::Idle;                // replace clip: what plays instead
+    static constexpr int kKeepTint = -2;
     bool operator==(const LayoutOp&) const = default;
 };
 

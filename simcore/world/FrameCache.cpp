@@ -137,6 +137,18 @@ void FrameCache::truncate(std::size_t firstFrameToDrop)
     }
 }
 
+void FrameCache::swapAgent(std::size_t i, std::optional<std::uint16_t> type, std::uint8_t look, std::int8_t tint)
+{
+    for (Epoch& e : m_epochs) {
+        if (i >= e.agents.size())
+            continue;
+        if (type)
+            e.agents[i].typeIndex = *type;
+        e.agents[i].look = look;
+        e.agents[i].tint = tint;
+    }
+}
+
 const FrameCache::Epoch& FrameCache::epochAt(std::size_t f) const
 {
     for (std::size_t k = m_epochs.size(); k-- > 1;)

@@ -17,6 +17,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <utility>
 #include <vector>
@@ -46,7 +47,14 @@ struct AgentFrame {
 struct AgentInfo {
     AgentId id = 0;
     std::uint16_t typeIndex = 0;  // index into Scene::agentTypes
+    // What a layout layer's swap shows instead of the drawn look and tint (LayoutApply.h);
+    // the simulation never sets them. In the 8 bytes the id and type leave.
+    static constexpr std::uint8_t kDrawnLook = 0xff;
+    static constexpr std::int8_t kDrawnTint = -2;
+    std::uint8_t look = kDrawnLook;  // index into the type's looks
+    std::int8_t tint = kDrawnTint;   // index into the type's tints, -1 = untinted
 };
+static_assert(sizeof(AgentInfo) == 8, "a World keeps one per agent");
 
 class FrameCache {
 public:
@@ -69,6 +77,10 @@ public:
     float fps() const { return m_fps; }
     glm::dvec3 origin() const { return m_origin; }
     std::span<const AgentFrame> frame(std::size_t f) const { return {m_frames.data() + f * m_count, m_count}; }
+    // For the layout layer's swap, on a copy of a recording: cache agent i shows `look` and
+    // `tint` (AgentInfo's) on every frame, and, when given, the type `type` instead of the
+    // one each agent set recorded.
+    void swapAgent(std::size_t i, std::optional<std::uint16_t> type, std::uint8_t look, std::int8_t tint);
     const AgentFrame& at(std::size_t f, std::size_t agent) const { return m_frames[f * m_count + agent]; }
     // For the layout layer (LayoutApply.h), which edits a copy of a recording: agent
     // `agent`'s entry on frame f, to rewrite. The copy is not a new recording.

@@ -498,6 +498,122 @@ private slots:
         QCOMPARE(wallSpans[0].wall, std::string("fence"));
     }
 
+    // Duplicate, swap and replace clip, as a user checks them in the exports: a copy walks
+    // beside its source, 2 m north, with an id of its own that later operations select (a
+    // translate moves the copy alone) and a look of its own; a swapped agent wears the look,
+    // tint and type asked for in USD; a replaced clip plays on exactly its frames in the CSV.
+    // The frame-at-a-time evaluation agrees on every frame; the check counts a copy left on
+    // its source; the file keeps all three.
+    void duplicateSwapAndReplaceClipReachTheExports()
+    {
+        const std::string yaml = std::string(kSquare) + R"(  - {id: 2, type: walker, position: [-12, 10], goal: east}
+  - {id: 3, type: walker, position: [-12, 16], goal: east}
+layout:
+  - {op: swap, agents: {ids: [1]}, look: 1, tint: none}
+  - {op: swap, agents: {ids: [2]}, type: runner}
+  - {op: duplicate, agents: {ids: [3]}, offset: [0, 2]}
+  - {op: translate, agents: {ids: [1000000000]}, offset: [1, 0]}
+  - {op: replace_clip, agents: {ids: [1]}, clip: wave, frames: [10, 20]}
+)";
+        const std::string withLooks = [&] {
+            std::string text = yaml;
+            const std::string walker = "  - {name: walker, radius: 0.3}";
+            text.replace(text.find(walker), walker.size(),
+                         "  - {name: walker, radius: 0.3, variation: {looks: [man, woman], tints: [[0.9, 0.1, 0.1], "
+                         "[0.1, 0.1, 0.9]]}}");
+            return text;
+        }();
+        Shot s = record(withLooks);
+        QVERIFY2(s.scene.layout.ops.size() == 5, "the layer is read");
+        std::vector<std::string> messages;
+        const sim::FrameCache laid = sim::applyLayout(s.scene, s.cache, &messages);
+        QVERIFY2(messages.empty(), messages.empty() ? "" : messages[0].c_str());
+        const std::size_t n = s.cache.agentCount();
+        QCOMPARE(laid.agentCount(), n + 1);
+        QCOMPARE(laid.frameCount(), s.cache.frameCount());
+        const sim::AgentInfo copy = laid.agents()[n];
+        QCOMPARE(copy.id, sim::kFirstCopyId);
+        QCOMPARE(copy.typeIndex, s.cache.agents()[indexOf(s.cache, 3)].typeIndex);
+
+        // The CSV: the copy 1 m east and 2 m north of agent 3 on every frame, agent 3 as
+        // recorded; agent 1 waving on frames 10 to 20 and as recorded elsewhere.
+        QTemporaryDir dir;
+        const std::string before = dir.filePath("before.csv").toStdString();
+        const std::string after = dir.filePath("after.csv").toStdString();
+        QVERIFY(exporting::writeTrajectoryCsv(s.cache, before).ok());
+        QVERIFY(exporting::writeTrajectoryCsv(laid, after).ok());
+        const auto rowsBefore = csvRows(before), rowsAfter = csvRows(after);
+        QCOMPARE(rowsAfter.at(3), rowsBefore.at(3));
+        QCOMPARE(rowsAfter.at(sim::kFirstCopyId).size(), rowsBefore.at(3).size());
+        const std::size_t three = indexOf(s.cache, 3), one = indexOf(s.cache, 1);
+        for (std::size_t f = 0; f < laid.frameCount(); ++f) {
+            const glm::vec2 d = xz(laid.at(f, n)) - xz(s.cache.at(f, three));
+            QVERIFY2(glm::length(d - glm::vec2(1.0f, 2.0f)) < 1e-4f, qPrintable(QString("frame %1").arg(f)));
+            QCOMPARE(laid.at(f, n).headingRad, s.cache.at(f, three).headingRad);
+            const sim::Clip expected = f >= 10 && f <= 20 ? sim::Clip::Wave : s.cache.at(f, one).clip;
+            QCOMPARE(laid.at(f, one).clip, expected);
+            QCOMPARE(xz(laid.at(f, one)), xz(s.cache.at(f, one)));
+        }
+        QVERIFY(rowsAfter.at(1).at(15).find(",wave,") != std::string::npos);
+        QVERIFY(rowsAfter.at(1).at(9).find(",wave,") == std::string::npos);
+
+        // USD: agent 1 wears look 1 (the woman) untinted; agent 2 is a runner; the copy is an
+        // agent of its own, with a look drawn for its own id.
+        exporting::UsdOptions usd;
+        usd.path = dir.filePath("laid.usda").toStdString();
+        usd.lod = exporting::Lod::Far;
+        usd.includeSet = false;
+        QVERIFY(exporting::exportUsd(s.scene, laid, usd).ok());
+        QFile file(QString::fromStdString(usd.path));
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        const QString text = QString::fromUtf8(file.readAll());
+        auto customData = [&](const QString& prim) {
+            const qsizetype at = text.indexOf(QString("def SkelRoot \"%1\"").arg(prim));
+            if (at < 0)
+                return QString();
+            const qsizetype data = text.indexOf("customData = {", at);
+            return text.mid(data, text.indexOf('}', data) - data).simplified();
+        };
+        QVERIFY2(customData("agent_1_walker").contains("string character = \"woman\"") &&
+                     customData("agent_1_walker").contains("int tint = -1"),
+                 qPrintable(customData("agent_1_walker")));
+        QVERIFY2(!customData("agent_2_runner").isEmpty(), "agent 2 is exported as a runner");
+        QVERIFY(customData("agent_2_walker").isEmpty());
+        QVERIFY2(!customData("agent_1000000000_walker").isEmpty(), "the copy is exported");
+
+        // The viewport's frame-at-a-time evaluation gives every frame the exports write.
+        const sim::LayoutEvaluator evaluator(s.scene, s.cache);
+        QCOMPARE(evaluator.agents().size(), n + 1);
+        std::vector<sim::AgentFrame> frame;
+        for (std::size_t f = 0; f < laid.frameCount(); ++f) {
+            evaluator.frame(f, frame);
+            QCOMPARE(frame.size(), n + 1);
+            for (std::size_t i = 0; i < frame.size(); ++i)
+                QVERIFY2(sameFrame(frame[i], laid.at(f, i)), qPrintable(QString("frame %1 agent %2").arg(f).arg(i)));
+        }
+
+        // A copy left on its source overlaps it on every frame it is in the shot.
+        s.scene.layout.ops = {op(sim::LayoutKind::Duplicate, {3})};
+        const sim::FrameCache stacked = sim::applyLayout(s.scene, s.cache);
+        std::size_t shown = 0;
+        for (std::size_t f = 0; f < s.cache.frameCount(); ++f)
+            shown += s.cache.at(f, three).present && !s.cache.at(f, three).out;
+        const sim::LayoutCheck check = sim::checkLayout(s.scene, s.cache, stacked);
+        QCOMPARE(check.overlaps.size(), shown);
+        QCOMPARE(check.overlaps.front().agent, sim::kFirstCopyId);
+        QCOMPARE(check.overlaps.front().other, sim::AgentId(3));
+
+        // The file keeps the three kinds.
+        const sim::LoadResult loaded = sim::parseScene(withLooks, "square.yaml", "");
+        const sim::LoadResult again = sim::parseScene(sim::sceneToYaml(loaded.scene), "square.yaml", "");
+        QVERIFY2(again.ok(), again.diagnostics.empty() ? "" : again.diagnostics[0].format().c_str());
+        QVERIFY(again.scene.layout == loaded.scene.layout);
+        QCOMPARE(again.scene.layout.ops[0].tint, -1);
+        QCOMPARE(again.scene.layout.ops[0].look, 1);
+        QCOMPARE(again.scene.layout.ops[1].type, std::string("runner"));
+        QCOMPARE(again.scene.layout.ops[4].clip, sim::Clip::Wave);
+    }
+
     // Bad entries fail with the file, line and what is wrong.
     void badEntriesAreErrorsWithTheirLine()
     {
@@ -514,6 +630,13 @@ private slots:
             {"  - {op: delete, agents: {ids: [1]}, frames: [40, 10]}", "give [first, last] frames"},
             {"  - {op: time_offset, agents: {ids: [1]}, later: 2.5}", "a whole number of frames"},
             {"  - {op: rotate, agents: {types: [flier]}, angle: 10}", "no agent type named 'flier'"},
+            {"  - {op: duplicate, agents: {ids: [1]}}", "offset"},
+            {"  - {op: swap, agents: {ids: [1]}}", "a swap gives a 'look', a 'tint' (or none) or a 'type'"},
+            {"  - {op: swap, agents: {ids: [1]}, type: flier}", "no agent type named 'flier'"},
+            {"  - {op: swap, agents: {ids: [1]}, type: runner, look: 3}",
+             "look 3 is out of range: type 'runner' has 1"},
+            {"  - {op: swap, agents: {ids: [1]}, look: 0, frames: [3, 9]}", "a swap shows the agents so on every frame"},
+            {"  - {op: replace_clip, agents: {ids: [1]}, clip: moonwalk}", "unknown clip 'moonwalk'"},
         };
         for (const auto& c : cases) {
             const std::string yaml = std::string(kSquare) + "layout:\n" + c.entry + "\n";

@@ -45,6 +45,43 @@ void LayoutReader::readAgents(const YAML::Node& item, const std::string& key, co
         m_f.error(agents.Mark(), at, "select some agents: ids, groups, types or a lasso");
 }
 
+void LayoutReader::readSwap(const YAML::Node& item, const std::string& key, const Scene& scene, LayoutOp& op)
+{
+    if (item["frames"].IsDefined())
+        m_f.error(item["frames"].Mark(), key + ".frames",
+                  "a swap shows the agents so on every frame: leave out 'frames'");
+    const AgentType* type = nullptr;
+    if (m_f.readString(item, "type", key, op.type, false) && !op.type.empty()) {
+        type = scene.findAgentType(op.type);
+        if (!type)
+            m_f.error(item["type"].Mark(), key + ".type", "no agent type named '" + op.type + "'");
+    }
+    // Out of range for the type it shows (when the file says which): as for a placed agent.
+    auto index = [&](const char* name, int& out, std::size_t count, const char* what) {
+        std::uint32_t v = 0;
+        if (!m_f.readU32(item, name, key, v, false))
+            return;
+        if (type && v >= count) {
+            m_f.error(item[name].Mark(), key + "." + name,
+                      std::string(what) + " " + std::to_string(v) + " is out of range: type '" + op.type + "' has " +
+                          std::to_string(count));
+            return;
+        }
+        out = int(v);
+    };
+    if (item["look"].IsDefined())
+        index("look", op.look, type ? std::max<std::size_t>(1, type->variation.looks.size()) : 0, "look");
+    if (const YAML::Node tint = item["tint"]; tint.IsDefined()) {
+        if (tint.IsScalar() && tint.Scalar() == "none")
+            op.tint = -1;
+        else
+            index("tint", op.tint, type ? type->variation.tints.size() : 0, "tint");
+    }
+    if (op.type.empty() && op.look < 0 && op.tint == LayoutOp::kKeepTint && !item["look"].IsDefined() &&
+        !item["tint"].IsDefined())
+        m_f.error(item.Mark(), key, "a swap gives a 'look', a 'tint' (or none) or a 'type'");
+}
+
 void LayoutReader::read(const YAML::Node& node, Scene& scene)
 {
     if (!m_f.expectSequence(node, "layout"))
@@ -55,7 +92,7 @@ void LayoutReader::read(const YAML::Node& node, Scene& scene)
         if (!m_f.expectMap(item, key))
             continue;
         m_f.checkKeys(item, key, {"name", "op", "enabled", "agents", "frames", "offset", "angle", "pivot",
-                                  "later", "hold_first", "axis", "factor"});
+                                  "later", "hold_first", "axis", "factor", "look", "tint", "type", "clip"});
         LayoutOp op;
         if (m_f.readName(item, "name", key, op.name, false) && !op.name.empty() && !m_names.insert(op.name).second)
             m_f.error(item["name"].Mark(), key + ".name",
@@ -66,7 +103,8 @@ void LayoutReader::read(const YAML::Node& node, Scene& scene)
         if (!layoutKindFromName(kind, op.kind)) {
             m_f.error(item["op"].Mark(), key + ".op",
                       "unknown layout operation '" + kind +
-                          "' (translate, rotate, time_offset, mirror, delete or expand)");
+                          "' (translate, rotate, time_offset, mirror, delete, expand, duplicate, swap or "
+                          "replace_clip)");
             continue;
         }
         m_f.readBool(item, "enabled", key, op.enabled, false);
@@ -127,6 +165,23 @@ void LayoutReader::read(const YAML::Node& node, Scene& scene)
             if (m_f.readFloat(item, "factor", key, op.factor, true) && !(op.factor > 0.0f && op.factor <= 100.0f))
                 m_f.error(item["factor"].Mark(), key + ".factor", "the factor is above 0 and at most 100");
             break;
+        case LayoutKind::Duplicate:
+            m_f.readVec2(item, "offset", key, op.offset, true);
+            break;
+        case LayoutKind::Swap:
+            readSwap(item, key, scene, op);
+            break;
+        case LayoutKind::ReplaceClip: {
+            std::string clip;
+            if (m_f.readString(item, "clip", key, clip, true)) {
+                if (const std::optional<Clip> c = clipFromName(clip))
+                    op.clip = *c;
+                else
+                    m_f.error(item["clip"].Mark(), key + ".clip",
+                              "unknown clip '" + clip + "' (idle, walk, run, or an action such as wave or sit)");
+            }
+            break;
+        }
         }
         scene.layout.ops.push_back(std::move(op));
     }

@@ -22,6 +22,8 @@ public:
 
 private:
     void readAgents(const YAML::Node& item, const std::string& key, const Scene& scene, AgentSelector& s);
+    // A swap's look, tint and type, checked against the type it shows when it names one.
+    void readSwap(const YAML::Node& item, const std::string& key, const Scene& scene, LayoutOp& op);
     YamlFields& m_f;
     std::set<std::string> m_names;
 };
