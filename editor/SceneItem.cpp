@@ -30,6 +30,9 @@ QString layoutKindTitle(sim::LayoutKind kind)
     case sim::LayoutKind::Mirror: return tr("Mirror");
     case sim::LayoutKind::Delete: return tr("Delete");
     case sim::LayoutKind::Expand: return tr("Expand");
+    case sim::LayoutKind::Duplicate: return tr("Duplicate");
+    case sim::LayoutKind::Swap: return tr("Swap");
+    case sim::LayoutKind::ReplaceClip: return tr("Replace clip");
     }
     return {};
 }

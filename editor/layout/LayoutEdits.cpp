@@ -57,6 +57,9 @@ sim::LayoutOp newLayoutOp(sim::LayoutKind kind, sim::AgentSelector agents, const
         op.axis[1] = {centre.x, centre.y + 1.0f};
         break;
     case sim::LayoutKind::Delete: op.firstFrame = frame; break;
+    case sim::LayoutKind::Duplicate: op.offset = {1.0f, 0.0f}; break;
+    case sim::LayoutKind::Swap: op.look = 0; break;
+    case sim::LayoutKind::ReplaceClip: op.clip = sim::Clip::Wave; op.firstFrame = frame; break;
     default: break;
     }
     const QString base = layoutKindTitle(kind);
@@ -101,7 +104,8 @@ QUndoCommand* changeLayoutCommand(SceneDocument& document, sim::LayoutLayer afte
     using Command = ChangeValuesCommand<sim::LayoutLayer>;
     // Operations may come and go and shift: every one of them is named as changed.
     const SceneChange change =
-        SceneChange::ofAll(ItemKind::LayoutOp, SceneField::Items) | SceneChange::ofAll(ItemKind::LayoutOp, SceneField::Parameters);
+        SceneChange::ofAll(ItemKind::LayoutOp, SceneField::Items) |
+        SceneChange::ofAll(ItemKind::LayoutOp, SceneField::Parameters);
     return new Command(document, mergeKey, {[](sim::Scene& s) -> sim::LayoutLayer& { return s.layout; }},
                        {std::move(after)}, text, change);
 }

@@ -27,7 +27,8 @@ sim::AgentSelector selectorFor(const sim::Scene& scene, const Selection& selecti
 // A new operation of `kind` on `agents`, as the Add menu makes it: a translate, rotate or
 // expand that changes nothing yet (a gizmo or the properties give it its amount), a time
 // offset of one second, a mirror across the line x = `centre`.x, a delete from `frame` on
-// (entirely when `frame` is 0). Named "<kind> N", unique in `layer`.
+// (entirely when `frame` is 0), copies a metre east, the first look, a wave from `frame`
+// on. Named "<kind> N", unique in `layer`.
 sim::LayoutOp newLayoutOp(sim::LayoutKind kind, sim::AgentSelector agents, const sim::LayoutLayer& layer,
                           std::size_t frame, double fps, glm::vec2 centre);
 

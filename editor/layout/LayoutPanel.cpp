@@ -54,7 +54,11 @@ LayoutPanel::LayoutPanel(SceneDocument& document, QWidget* parent) : QWidget(par
         QT_TR_NOOP("Reflect the selected agents' trajectories across a line"),
         QT_TR_NOOP("Remove the selected agents from the shown frame on (entirely from frame 0)"),
         QT_TR_NOOP("Spread the selected agents apart about their centre, frame by frame"),
+        QT_TR_NOOP("Add a copy of each selected agent a metre east, with an id and look of its own"),
+        QT_TR_NOOP("Show the selected agents with another look, tint or agent type (set it in Properties)"),
+        QT_TR_NOOP("Play another clip (an action such as wave or sit) over the selected agents' frames"),
     };
+    static_assert(std::size(tips) == sim::kLayoutKindCount);
     for (int k = 0; k < sim::kLayoutKindCount; ++k) {
         const auto kind = sim::LayoutKind(k);
         QAction* add = addMenu->addAction(layoutKindTitle(kind));

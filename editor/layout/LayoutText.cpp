@@ -67,12 +67,27 @@ QString effectText(const sim::LayoutOp& op)
         return op.pivot ? tr("by %1° about %2").arg(double(op.angleDeg), 0, 'f', 1).arg(point(*op.pivot))
                         : tr("by %1° about their centre").arg(double(op.angleDeg), 0, 'f', 1);
     case sim::LayoutKind::TimeOffset: {
-        const QString shift = op.frames >= 0 ? tr("%n frame(s) later", op.frames) : tr("%n frame(s) earlier", -op.frames);
+        const QString shift =
+            op.frames >= 0 ? tr("%n frame(s) later", op.frames) : tr("%n frame(s) earlier", -op.frames);
         return op.holdFirst ? tr("%1, holding the first pose").arg(shift) : tr("%1, absent before").arg(shift);
     }
     case sim::LayoutKind::Mirror: return tr("across %1 to %2").arg(point(op.axis[0]), point(op.axis[1]));
     case sim::LayoutKind::Delete: return tr("removed");
     case sim::LayoutKind::Expand: return tr("spread ×%1").arg(double(op.factor), 0, 'f', 2);
+    case sim::LayoutKind::Duplicate: return tr("copied %1 m away").arg(point(op.offset));
+    case sim::LayoutKind::Swap: {
+        QStringList what;
+        if (!op.type.empty())
+            what << tr("as %1").arg(QString::fromStdString(op.type));
+        if (op.look >= 0)
+            what << tr("look %1").arg(op.look + 1);
+        if (op.tint == -1)
+            what << tr("untinted");
+        else if (op.tint >= 0)
+            what << tr("tint %1").arg(op.tint + 1);
+        return what.isEmpty() ? tr("shown as drawn") : what.join(", ");
+    }
+    case sim::LayoutKind::ReplaceClip: return tr("playing %1").arg(QString::fromLatin1(sim::toString(op.clip)));
     }
     return {};
 }

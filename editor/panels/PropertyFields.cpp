@@ -288,12 +288,15 @@ std::vector<PropertyField> make(ItemKind kind)
                 {"heading", tr("Heading (deg)"), -360, 360, 5, 1, THRONG_FIELD(sources, headingDeg), {}, headed}};
     }
     case ItemKind::LayoutOp: {
+        using K = sim::LayoutKind;
         const auto is = [](sim::LayoutKind kind) {
             return [kind](const sim::Scene& s, std::size_t i) { return s.layout.ops[i].kind == kind; };
         };
-        using K = sim::LayoutKind;
-        return {{"offsetX", tr("Offset X (m)"), -1e5, 1e5, 0.1, 2, THRONG_FIELD(layout.ops, offset.x), {}, is(K::Translate)},
-                {"offsetZ", tr("Offset Z (m)"), -1e5, 1e5, 0.1, 2, THRONG_FIELD(layout.ops, offset.y), {}, is(K::Translate)},
+        const auto moves = [](const sim::Scene& s, std::size_t i) {
+            return s.layout.ops[i].kind == K::Translate || s.layout.ops[i].kind == K::Duplicate;
+        };
+        return {{"offsetX", tr("Offset X (m)"), -1e5, 1e5, 0.1, 2, THRONG_FIELD(layout.ops, offset.x), {}, moves},
+                {"offsetZ", tr("Offset Z (m)"), -1e5, 1e5, 0.1, 2, THRONG_FIELD(layout.ops, offset.y), {}, moves},
                 {"angle", tr("Angle (deg)"), -3600, 3600, 5, 1, THRONG_FIELD(layout.ops, angleDeg), {}, is(K::Rotate)},
                 {"factor", tr("Factor"), 0.01, 100, 0.1, 2, THRONG_FIELD(layout.ops, factor), {}, is(K::Expand)},
                 {"axisFromX", tr("Axis from X (m)"), -1e5, 1e5, 0.5, 2, THRONG_FIELD(layout.ops, axis[0].x),

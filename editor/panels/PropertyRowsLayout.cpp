@@ -60,16 +60,47 @@ int lastShown(const sim::LayoutOp& op)
     return op.lastFrame == sim::kLastFrame ? -1 : int(std::min<std::size_t>(op.lastFrame, kMaxFrame));
 }
 
+// A swap's type ("(keep)" for its own), look and tint, numbered from 1 as elsewhere.
+void addSwapRows(PropertyForm& form)
+{
+    const PropertyForm::Shown swap = isKind(sim::LayoutKind::Swap);
+    form.addIndexChoice("type", tr("Show as type"), [&form] {
+        QStringList names{tr("(keep)")};
+        for (const sim::AgentType& t : form.scene().agentTypes)
+            names << QString::fromStdString(t.name);
+        return names;
+    }, [&form]() -> std::optional<int> {
+        const auto type = form.common(opField(&sim::LayoutOp::type));
+        if (!type)
+            return std::nullopt;
+        const auto& types = form.scene().agentTypes;
+        const auto it =
+            std::find_if(types.begin(), types.end(), [&](const sim::AgentType& t) { return t.name == *type; });
+        return it == types.end() ? 0 : int(it - types.begin()) + 1;
+    }, [&form](int index) {
+        const std::string name = index <= 0 ? std::string() : form.scene().agentTypes.at(std::size_t(index - 1)).name;
+        form.apply<std::string>("type", tr("Show as type"), opField(&sim::LayoutOp::type), name);
+    }, swap);
+    const auto look = opField(&sim::LayoutOp::look);
+    addWholeRow(form, "look", tr("Look"), 0, 255, tr("as drawn"), [](const sim::LayoutOp& op) { return op.look + 1; },
+                [&form, look](QSpinBox*, int v) { form.apply<int>("look", tr("Look"), look, v - 1); }, swap);
+    const auto tint = opField(&sim::LayoutOp::tint);
+    auto* tints = addWholeRow(form, "tint", tr("Tint"), -1, 127, tr("as drawn"),
+                              [](const sim::LayoutOp& op) { return op.tint + 1; },
+                              [&form, tint](QSpinBox*, int v) { form.apply<int>("tint", tr("Tint"), tint, v - 1); },
+                              swap);
+    tints->setToolTip(tr("The tint to show, numbered from 1; 0 untinted"));
+}
+
 }  // namespace
 
 void addLayoutOpRows(PropertyForm& form)
 {
     form.addName();
-    form.addEnum<sim::LayoutKind>("op", tr("Operation"),
-                                  {layoutKindTitle(sim::LayoutKind::Translate), layoutKindTitle(sim::LayoutKind::Rotate),
-                                   layoutKindTitle(sim::LayoutKind::TimeOffset), layoutKindTitle(sim::LayoutKind::Mirror),
-                                   layoutKindTitle(sim::LayoutKind::Delete), layoutKindTitle(sim::LayoutKind::Expand)},
-                                  opField(&sim::LayoutOp::kind));
+    QStringList kinds;
+    for (int k = 0; k < sim::kLayoutKindCount; ++k)
+        kinds << layoutKindTitle(sim::LayoutKind(k));
+    form.addEnum<sim::LayoutKind>("op", tr("Operation"), kinds, opField(&sim::LayoutOp::kind));
     form.addCheck("enabled", tr("On"), opField(&sim::LayoutOp::enabled));
     form.addInfo("agents", tr("Agents"), [](const sim::Scene& s, std::size_t i) {
         return selectorText(s.layout.ops[i].agents);
@@ -106,6 +137,12 @@ void addLayoutOpRows(PropertyForm& form)
                 isKind(sim::LayoutKind::TimeOffset));
     form.addCheck("holdFirst", tr("Hold first pose"), opField(&sim::LayoutOp::holdFirst),
                   isKind(sim::LayoutKind::TimeOffset));
+    addSwapRows(form);
+    QStringList clips;
+    for (int c = 0; c < sim::kClipCount; ++c)
+        clips << QString::fromLatin1(sim::toString(sim::Clip(c)));
+    form.addEnum<sim::Clip>("clip", tr("Clip"), clips, opField(&sim::LayoutOp::clip),
+                            isKind(sim::LayoutKind::ReplaceClip));
 }
 
 }  // namespace throng::editor

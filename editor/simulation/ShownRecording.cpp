@@ -25,7 +25,7 @@ const sim::FrameCache& ShownRecording::frames(const sim::FrameCache& recorded, c
         return recorded;
     }
     const bool same = m_valid && scene.layout == m_layer && recorded.revision() == m_revision &&
-                      recorded.agentCount() == m_laid.agentCount();
+                      recorded.agentCount() == m_recordedAgents;
     if (same && recorded.frameCount() == m_laid.frameCount())
         return m_laid;
     // Grown by frames appended to one agent set: lay out only the new ones.
@@ -41,6 +41,7 @@ const sim::FrameCache& ShownRecording::frames(const sim::FrameCache& recorded, c
         return m_laid;
     }
     m_laid = sim::applyLayout(scene, recorded, &m_messages);
+    m_recordedAgents = recorded.agentCount();
     m_layer = scene.layout;
     m_revision = recorded.revision();
     m_valid = true;

@@ -28,6 +28,7 @@ private:
     sim::FrameCache m_laid;
     sim::LayoutLayer m_layer;
     std::uint64_t m_revision = 0;
+    std::size_t m_recordedAgents = 0;  // the recording's width when laid out (copies widen m_laid)
     bool m_valid = false;
     std::vector<std::string> m_messages, m_told;
 };

@@ -163,7 +163,8 @@ void LayoutMoveTool::drawOverlay(QPainter& painter) const
         const Selection& selection = document().selection();
         const sim::Scene& scene = document().scene();
         if (selection.size() == 1 && selection.front().kind == ItemKind::LayoutOp &&
-            selection.front().index < scene.layout.ops.size() && movesOrTurns(scene.layout.ops[selection.front().index])) {
+            selection.front().index < scene.layout.ops.size() &&
+            movesOrTurns(scene.layout.ops[selection.front().index])) {
             op = scene.layout.ops[selection.front().index];
             const std::optional<glm::vec2> c = op->kind == sim::LayoutKind::Rotate && op->pivot ? op->pivot
                                                                                                 : centreOf(*op);

@@ -110,6 +110,7 @@ AgentCharacters::Look AgentCharacters::lookOf(const sim::AgentInfo& agent) const
     exporting::AgentVariation v = exporting::drawVariation(m_variations[type], m_seed, agent.id, looks.size());
     if (const auto it = m_handSet.find(agent.id); it != m_handSet.end())
         exporting::applyHandSetVariation(v, it->second, looks.size(), m_variations[type].tints.size());
+    exporting::applySwappedLook(v, agent, looks.size(), m_variations[type].tints.size());
     const int character = looks[std::min(v.look, looks.size() - 1)];
     std::uint32_t bits = 0;
     for (int slot = 1; slot < exporting::kMaterialSlotCount; ++slot)

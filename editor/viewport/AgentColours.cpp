@@ -115,6 +115,11 @@ glm::vec3 AgentColours::tint(const sim::AgentInfo& agent) const
     const auto hand = m_handTint.find(agent.id);
     int index = hand != m_handTint.end() ? hand->second
                                           : exporting::drawVariation(m_variations[type], m_seed, agent.id, 1).tint;
+    // A layout layer's swap shows another tint (or none: the type's own colour).
+    if (agent.tint == -1)
+        return glm::vec3(palette::agentColour(type));
+    if (agent.tint >= 0 && std::size_t(agent.tint) < tints->size())
+        index = agent.tint;
     index = std::clamp(index, 0, int(tints->size()) - 1);
     return (*tints)[std::size_t(index)];
 }

@@ -16,6 +16,7 @@
 #include "editor/simulation/SimulationController.h"
 #include "editor/viewport/ShownAgents.h"
 #include "editor/viewport/Viewport.h"
+#include "simcore/layout/LayoutApply.h"
 
 #include <QAction>
 #include <QCheckBox>
@@ -368,10 +369,38 @@ private slots:
         QCOMPARE(undo.index() - start, 3);
     }
 
+    // Duplicate from the Add menu: the viewport draws one more agent, a metre east of its
+    // source; Swap's look and tint are set in Properties, numbered from 1 (0: untinted).
+    void duplicateAndSwapFromThePanel()
+    {
+        MainWindow window;
+        QVERIFY(showWithYaml(window, m_dir, "copies.yaml", kLayoutScene));
+        QVERIFY(playUntilRecorded(window, 24));
+        QVERIFY(scrubWithKeys(window, 24));
+        showLayoutDock(window);
+        const std::size_t drawn = window.viewport().agentCount();
+        selectInOutliner(window, {{ItemKind::Agent, 1}});
+        QVERIFY(addFromMenu(window, "Duplicate"));
+        QTRY_COMPARE(window.viewport().agentCount(), drawn + 1);
+        const glm::vec3 source = recordedFeet(window, 2, 24);
+        QTRY_VERIFY(shownFeet(window, sim::kFirstCopyId));
+        QVERIFY(glm::length(*shownFeet(window, sim::kFirstCopyId) - (source + glm::vec3(1, 0, 0))) < 1e-4f);
+
+        selectInOutliner(window, {{ItemKind::Agent, 0}});
+        QVERIFY(addFromMenu(window, "Swap"));
+        QCOMPARE(window.document().scene().layout.ops.back().kind, sim::LayoutKind::Swap);
+        typeInto(window, field<QSpinBox>(window, "tint"), "0");
+        QCOMPARE(window.document().scene().layout.ops.back().tint, -1);  // untinted
+        typeInto(window, field<QSpinBox>(window, "look"), "2");
+        QCOMPARE(window.document().scene().layout.ops.back().look, 1);
+        QVERIFY(window.layoutPanel().list()->item(1)->text().contains("look 2, untinted"));
+    }
+
     void renamingAGroupOrTypeKeepsTheOperationsOnIt()
     {
         MainWindow window;
-        const QByteArray withLayer = kLayoutScene + "layout:\n  - {op: delete, agents: {groups: [crowd], types: [walker]}}\n";
+        const QByteArray withLayer =
+            kLayoutScene + "layout:\n  - {op: delete, agents: {groups: [crowd], types: [walker]}}\n";
         QVERIFY(showWithYaml(window, m_dir, "rename.yaml", withLayer));
         selectInOutliner(window, {{ItemKind::Group, 0}});
         typeInto(window, field<QLineEdit>(window, "name"), "parade");
