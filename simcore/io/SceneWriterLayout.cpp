@@ -56,7 +56,8 @@ void writeSceneLayout(YamlWriter& w, const Scene& s)
             w.key("enabled");
             o << false;
         }
-        writeSelector(w, op.agents);
+        if (op.kind != LayoutKind::Resolve || !(op.agents == AgentSelector{}))
+            writeSelector(w, op.agents);
         if (op.firstFrame != 0 || op.lastFrame != kLastFrame) {
             w.key("frames");
             o << YAML::Flow << YAML::BeginSeq << op.firstFrame;
@@ -113,6 +114,8 @@ void writeSceneLayout(YamlWriter& w, const Scene& s)
             break;
         case LayoutKind::ReplaceClip:
             w.kv("clip", toString(op.clip));
+            break;
+        case LayoutKind::Resolve:
             break;
         }
         o << YAML::EndMap;

@@ -1,5 +1,6 @@
 #include "simcore/layout/LayoutApply.h"
 
+#include "simcore/layout/LayoutResolve.h"
 #include "simcore/scene/GroundPolygon.h"
 
 #include <glm/geometric.hpp>
@@ -147,6 +148,9 @@ LayoutSelection selectLayoutAgents(const Scene& scene, const LayoutLayer& layer,
                                          " not in the recording (id " + ids + (missing.size() > 8 ? ", ..." : "") +
                                          ")");
         }
+        if (op.kind == LayoutKind::Resolve && s == AgentSelector{})  // a resolve of every agent
+            for (std::size_t i = 0; i < n + copyTypes.size(); ++i)
+                chosen.insert(i);
         if (chosen.empty() && op.enabled)
             selection.messages.push_back(label(op, k) + " selects no agent of the recording: it changes nothing");
         selection.agents.emplace_back(chosen.begin(), chosen.end());
@@ -212,6 +216,12 @@ LayoutEvaluator::LayoutEvaluator(const Scene& scene, const FrameCache& recorded)
             m_firstPresent[n + c] = std::max(m_firstPresent[copy.source], m_layer.ops[copy.op].firstFrame);
         }
     }
+    // What a resolve keeps apart: the bodies (of the types shown) and the walls.
+    for (const AgentInfo& a : m_agents)
+        m_radius.push_back(a.typeIndex < scene.agentTypes.size() ? scene.agentTypes[a.typeIndex].radiusM : 0.3f);
+    for (const Wall& w : scene.walls)
+        for (std::size_t p = 0; p + 1 < w.points.size(); ++p)
+            m_walls.push_back({w.points[p] - m_shift, w.points[p + 1] - m_shift});
     // A rotation without a pivot turns about its agents' centre on its first frame, as the
     // operations before it left them.
     m_pivots.assign(m_layer.ops.size(), glm::vec2(0.0f));
@@ -252,7 +262,7 @@ AgentFrame LayoutEvaluator::showing(std::size_t k, const Shown& s, const AgentFr
     return a;
 }
 
-void LayoutEvaluator::applyInFrame(std::size_t k, std::span<AgentFrame> out) const
+void LayoutEvaluator::applyInFrame(std::size_t k, std::size_t f, std::span<AgentFrame> out) const
 {
     const LayoutOp& op = m_layer.ops[k];
     const std::vector<std::size_t>& agents = m_selection.agents[k];
@@ -316,7 +326,23 @@ void LayoutEvaluator::applyInFrame(std::size_t k, std::span<AgentFrame> out) con
         break;  // across frames: evaluate() and allFrames() do it
     case LayoutKind::Swap:
         break;  // not frames: the agents' descriptions (agents())
+    case LayoutKind::Resolve:
+        resolveInFrame(k, f, out);
+        break;
     }
+}
+
+void LayoutEvaluator::resolveInFrame(std::size_t k, std::size_t f, std::span<AgentFrame> out) const
+{
+    // It may move the agents it selects that the operations before it changed on this frame
+    // (a copy always): what the simulation placed stays where it is.
+    const std::span<const AgentFrame> recorded = m_recorded.frame(f);
+    std::vector<std::uint8_t> movable(out.size(), 0);
+    for (const std::size_t i : m_selection.agents[k]) {
+        const bool copy = i >= recorded.size();
+        movable[i] = copy || out[i].position != recorded[i].position ? 1 : 0;
+    }
+    resolveFrame({out, recorded, m_radius, movable, m_walls});
 }
 
 const std::vector<AgentFrame>& LayoutEvaluator::evaluate(std::size_t ops, std::size_t f, Memo& memo) const
@@ -342,7 +368,7 @@ const std::vector<AgentFrame>& LayoutEvaluator::evaluate(std::size_t ops, std::s
                     out[i] = showing(k, s, evaluate(k, s.frame, memo)[i]);
                 }
             } else {
-                applyInFrame(k, out);
+                applyInFrame(k, f, out);
             }
         }
     }
@@ -400,7 +426,7 @@ FrameCache LayoutEvaluator::allFrames() const
             }
         } else {
             for (std::size_t f = op.firstFrame; f <= last; ++f)
-                applyInFrame(k, std::span<AgentFrame>(&laid.edit(f, 0), width));
+                applyInFrame(k, f, std::span<AgentFrame>(&laid.edit(f, 0), width));
         }
     }
     return laid;

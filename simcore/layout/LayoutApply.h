@@ -8,6 +8,7 @@
 #include "simcore/scene/Scene.h"
 #include "simcore/world/FrameCache.h"
 
+#include <array>
 #include <span>
 #include <string>
 #include <vector>
@@ -64,8 +65,10 @@ private:
     };
     Shown shown(std::size_t op, std::size_t f, std::size_t agent) const;
     AgentFrame showing(std::size_t op, const Shown& s, const AgentFrame& there) const;
-    // Operation `op` (any but a time offset) on one frame's agents, in place.
-    void applyInFrame(std::size_t op, std::span<AgentFrame> frame) const;
+    // Operation `op` (any but a time offset) on frame f's agents, in place.
+    void applyInFrame(std::size_t op, std::size_t f, std::span<AgentFrame> frame) const;
+    // A resolve on frame f (LayoutResolve.h).
+    void resolveInFrame(std::size_t op, std::size_t f, std::span<AgentFrame> frame) const;
     struct Memo;
     // Frame f after the first `ops` operations.
     const std::vector<AgentFrame>& evaluate(std::size_t ops, std::size_t f, Memo& memo) const;
@@ -78,6 +81,8 @@ private:
     std::vector<glm::vec2> m_pivots;          // per operation: rotate's pivot, in the cache's coordinates
     std::vector<std::size_t> m_firstPresent;  // time offsets: per laid-out agent, its first frame (frames: never)
     glm::vec2 m_shift{0.0f};                  // scene coordinates -> the cache's
+    std::vector<float> m_radius;              // per laid-out agent, its type's body radius, m
+    std::vector<std::array<glm::vec2, 2>> m_walls;  // wall segments, in the cache's coordinates
 };
 
 // `recorded` with `scene.layout` applied; `messages` (when given) gets selectLayoutAgents'.

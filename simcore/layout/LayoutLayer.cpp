@@ -5,7 +5,7 @@ namespace throng::sim {
 namespace {
 
 constexpr const char* kNames[kLayoutKindCount] = {"translate", "rotate", "time_offset", "mirror",   "delete",
-                                                      "expand",    "duplicate", "swap",     "replace_clip"};
+                                                      "expand",    "duplicate", "swap",     "replace_clip", "resolve"};
 
 }  // namespace
 

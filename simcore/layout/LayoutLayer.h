@@ -26,14 +26,16 @@ enum class LayoutKind : std::uint8_t {
     Duplicate,   // add a copy of each, moved by an offset, with an id of its own (and so a look of its own)
     Swap,        // show them with another look, tint or agent type (its character) for the whole shot
     ReplaceClip, // play another clip (an action, or idle, walk, run) over the frames
+    Resolve,     // nudge the agents the operations before it moved apart where their bodies now overlap
 };
-inline constexpr int kLayoutKindCount = 9;
+inline constexpr int kLayoutKindCount = 10;
 const char* toString(LayoutKind kind);
 bool layoutKindFromName(std::string_view name, LayoutKind& kind);
 
 // Which agents an operation edits: every agent any of the lists names (ids; the members
 // of spawn groups or placed agents' groups by name; agents of types by name; agents
-// inside a ground polygon on a frame of the recording).
+// inside a ground polygon on a frame of the recording). A resolve may name none: then
+// every agent.
 struct AgentSelector {
     std::vector<std::uint32_t> ids;
     std::vector<std::string> groups;

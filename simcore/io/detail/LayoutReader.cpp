@@ -103,12 +103,14 @@ void LayoutReader::read(const YAML::Node& node, Scene& scene)
         if (!layoutKindFromName(kind, op.kind)) {
             m_f.error(item["op"].Mark(), key + ".op",
                       "unknown layout operation '" + kind +
-                          "' (translate, rotate, time_offset, mirror, delete, expand, duplicate, swap or "
-                          "replace_clip)");
+                          "' (translate, rotate, time_offset, mirror, delete, expand, duplicate, swap, "
+                          "replace_clip or resolve)");
             continue;
         }
         m_f.readBool(item, "enabled", key, op.enabled, false);
-        readAgents(item, key, scene, op.agents);
+        // A resolve without agents resolves every agent the operations before it moved.
+        if (op.kind != LayoutKind::Resolve || item["agents"].IsDefined())
+            readAgents(item, key, scene, op.agents);
         if (const YAML::Node frames = item["frames"]; frames.IsDefined()) {
             // [first, last] inclusive, or [first] for "from this frame on".
             std::vector<float> range;
@@ -170,6 +172,8 @@ void LayoutReader::read(const YAML::Node& node, Scene& scene)
             break;
         case LayoutKind::Swap:
             readSwap(item, key, scene, op);
+            break;
+        case LayoutKind::Resolve:
             break;
         case LayoutKind::ReplaceClip: {
             std::string clip;
