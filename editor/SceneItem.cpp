@@ -33,6 +33,7 @@ QString layoutKindTitle(sim::LayoutKind kind)
     case sim::LayoutKind::Duplicate: return tr("Duplicate");
     case sim::LayoutKind::Swap: return tr("Swap");
     case sim::LayoutKind::ReplaceClip: return tr("Replace clip");
+    case sim::LayoutKind::Resolve: return tr("Resolve");
     }
     return {};
 }

@@ -57,6 +57,8 @@ LayoutPanel::LayoutPanel(SceneDocument& document, QWidget* parent) : QWidget(par
         QT_TR_NOOP("Add a copy of each selected agent a metre east, with an id and look of its own"),
         QT_TR_NOOP("Show the selected agents with another look, tint or agent type (set it in Properties)"),
         QT_TR_NOOP("Play another clip (an action such as wave or sit) over the selected agents' frames"),
+        QT_TR_NOOP("Nudge apart the bodies the operations above pushed into each other (the selected agents', or "
+                   "everyone's with nothing selected); the agents the edits did not move stay where they are"),
     };
     static_assert(std::size(tips) == sim::kLayoutKindCount);
     for (int k = 0; k < sim::kLayoutKindCount; ++k) {
@@ -240,7 +242,8 @@ bool LayoutPanel::addOperation(sim::LayoutKind kind)
     if (m_clickedOnly->isChecked())
         clicked = context.clicked;
     sim::AgentSelector agents = selectorFor(scene, m_document.selection(), clicked);
-    if (agents == sim::AgentSelector{}) {
+    // A resolve without agents resolves everyone the operations before it moved.
+    if (agents == sim::AgentSelector{} && kind != sim::LayoutKind::Resolve) {
         emit problem(m_clickedOnly->isChecked()
                          ? tr("No layout operation added: click an agent in the viewport first.")
                          : tr("No layout operation added: select agents, groups or agent types first (in the "

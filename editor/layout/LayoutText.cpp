@@ -88,12 +88,15 @@ QString effectText(const sim::LayoutOp& op)
         return what.isEmpty() ? tr("shown as drawn") : what.join(", ");
     }
     case sim::LayoutKind::ReplaceClip: return tr("playing %1").arg(QString::fromLatin1(sim::toString(op.clip)));
+    case sim::LayoutKind::Resolve: return tr("nudged apart where the edits above made bodies overlap");
     }
     return {};
 }
 
 QString layoutSummary(const sim::LayoutOp& op)
 {
+    if (op.kind == sim::LayoutKind::Resolve && op.agents == sim::AgentSelector{})
+        return QStringLiteral("%1 · %2 · %3").arg(tr("every edited agent"), effectText(op), framesText(op));
     return QStringLiteral("%1 · %2 · %3").arg(selectorText(op.agents), effectText(op), framesText(op));
 }
 

@@ -103,7 +103,10 @@ void addLayoutOpRows(PropertyForm& form)
     form.addEnum<sim::LayoutKind>("op", tr("Operation"), kinds, opField(&sim::LayoutOp::kind));
     form.addCheck("enabled", tr("On"), opField(&sim::LayoutOp::enabled));
     form.addInfo("agents", tr("Agents"), [](const sim::Scene& s, std::size_t i) {
-        return selectorText(s.layout.ops[i].agents);
+        const sim::LayoutOp& op = s.layout.ops[i];
+        if (op.kind == sim::LayoutKind::Resolve && op.agents == sim::AgentSelector{})
+            return tr("every edited agent");
+        return selectorText(op.agents);
     });
     const auto first = opField(&sim::LayoutOp::firstFrame);
     const auto last = opField(&sim::LayoutOp::lastFrame);

@@ -396,6 +396,31 @@ private slots:
         QVERIFY(window.layoutPanel().list()->item(1)->text().contains("look 2, untinted"));
     }
 
+    // Agent 1 moved onto agent 2's line by the file's layer: the HUD counts the overlaps;
+    // Add > Resolve with nothing selected nudges agent 1 off agent 2, the HUD's count goes,
+    // and agent 2 stays where the simulation put it.
+    void resolveFromThePanelClearsTheCheck()
+    {
+        MainWindow window;
+        const QByteArray withLayer =
+            kLayoutScene + "layout:\n  - {op: translate, agents: {ids: [1]}, offset: [0, 8]}\n";
+        QVERIFY(showWithYaml(window, m_dir, "resolve.yaml", withLayer));
+        QVERIFY(playUntilRecorded(window, 48));
+        QVERIFY(scrubWithKeys(window, 0));
+        showLayoutDock(window);
+        QTRY_VERIFY(hudHasLayoutLine(window));
+        window.document().setSelection({});
+        QVERIFY(addFromMenu(window, "Resolve"));
+        QCOMPARE(window.document().scene().layout.ops.back().kind, sim::LayoutKind::Resolve);
+        QTRY_VERIFY(!hudHasLayoutLine(window));
+        QVERIFY(window.layoutCheck().last().overlaps.empty());
+        QTRY_COMPARE(*shownFeet(window, 2), recordedFeet(window, 2, 0));
+        const glm::vec3 one = *shownFeet(window, 1), two = *shownFeet(window, 2);
+        QVERIFY2(std::hypot(one.x - two.x, one.z - two.z) >= 0.6f - 0.05f,
+                 qPrintable(QString::number(std::hypot(one.x - two.x, one.z - two.z))));
+        QVERIFY(window.layoutPanel().list()->item(1)->text().contains("every edited agent"));
+    }
+
     void renamingAGroupOrTypeKeepsTheOperationsOnIt()
     {
         MainWindow window;
