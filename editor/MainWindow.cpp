@@ -13,6 +13,7 @@
 #include "editor/layout/LayoutCheckWatch.h"
 #include "editor/layout/LayoutEdits.h"
 #include "editor/layout/LayoutPanel.h"
+#include "editor/layout/LayoutRetimeDrag.h"
 #include "editor/commands/DeleteItemsCommand.h"
 #include "editor/panels/AgentTypeActions.h"
 #include "editor/panels/AnalysisPanel.h"
@@ -207,6 +208,7 @@ QDockWidget* MainWindow::createLayoutDock(QDockWidget* besides)
         m_simulation->seek(frame);
         m_viewport->setFocusedAgent(agent);
     });
+    new LayoutRetimeDrag(m_document, *m_timeline->scrubBar(), this);
     m_layoutCheck = new LayoutCheckWatch(m_document, *m_simulation, m_shown, this);
     connect(m_layoutCheck, &LayoutCheckWatch::checked, this, [this](const sim::LayoutCheck& check) {
         m_layout->showCheck(check);

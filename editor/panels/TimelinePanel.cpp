@@ -49,7 +49,8 @@ TimelinePanel::TimelinePanel(SimulationController& controller, QWidget* parent)
     m_scrub = new TimelineRuler(this);
     m_scrub->setObjectName("scrubBar");
     m_scrub->setToolTip(tr("Click or drag to a frame: frames not computed yet are computed up to it.\n"
-                           "Left / Right: previous / next frame, Home: frame 0, End: last computed frame"));
+                           "Left / Right: previous / next frame, Home: frame 0, End: last computed frame\n"
+                           "With a layout time offset selected: Shift+drag to shift its agents by the frames dragged"));
     column->addWidget(m_scrub);
     column->addWidget(makeControls());
 

@@ -102,6 +102,7 @@ void TimelineRuler::paintEvent(QPaintEvent*)
         painter.fillRect(QRect(QPoint(x0, strip.top()), QPoint(x1, strip.bottom())), QColor::fromRgb(kCachedColour));
     }
     paintTicks(painter);
+    paintRetime(painter);
     paintHandle(painter);
     if (hasFocus()) {
         painter.setPen(QPen(palette().color(QPalette::Highlight), 1));
@@ -163,10 +164,46 @@ void TimelineRuler::paintHandle(QPainter& painter) const
     painter.drawPolygon(tip, 3);
 }
 
+void TimelineRuler::setRetime(std::optional<Retime> retime)
+{
+    if (retime == m_retime)
+        return;
+    m_retime = retime;
+    update();
+}
+
+void TimelineRuler::paintRetime(QPainter& painter) const
+{
+    if (!m_retime)
+        return;
+    const QColor colour = QColor::fromRgb(kRetimeColour);
+    const int y = cacheStrip().top() - 14;
+    const int x0 = xOfFrame(std::clamp(m_retime->from, minimum(), maximum()));
+    const int x1 = xOfFrame(std::clamp(m_retime->from + m_retime->frames, minimum(), maximum()));
+    painter.setPen(QPen(colour, 2));
+    painter.drawLine(x0, y - 4, x0, y + 4);
+    painter.drawLine(x0, y, x1, y);
+    const int dir = x1 >= x0 ? 1 : -1;
+    painter.drawLine(x1, y, x1 - 5 * dir, y - 4);
+    painter.drawLine(x1, y, x1 - 5 * dir, y + 4);
+    QFont font = painter.font();
+    font.setPixelSize(10);
+    painter.setFont(font);
+    const QString label = m_retime->frames >= 0 ? QStringLiteral("+%1").arg(m_retime->frames)
+                                                : QString::number(m_retime->frames);
+    painter.drawText(std::max(x0, x1) + 4, y + 4, label);
+}
+
 void TimelineRuler::mousePressEvent(QMouseEvent* event)
 {
     if (event->button() != Qt::LeftButton) {
         QSlider::mousePressEvent(event);
+        return;
+    }
+    if (m_retime && (event->modifiers() & Qt::ShiftModifier)) {
+        m_retimePress = frameAtX(int(event->position().x()));
+        emit retimeDragged(0, false);
+        event->accept();
         return;
     }
     setSliderDown(true);
@@ -176,6 +213,11 @@ void TimelineRuler::mousePressEvent(QMouseEvent* event)
 
 void TimelineRuler::mouseMoveEvent(QMouseEvent* event)
 {
+    if (m_retimePress) {
+        emit retimeDragged(frameAtX(int(event->position().x())) - *m_retimePress, false);
+        event->accept();
+        return;
+    }
     if (!isSliderDown()) {
         QSlider::mouseMoveEvent(event);
         return;
@@ -186,6 +228,13 @@ void TimelineRuler::mouseMoveEvent(QMouseEvent* event)
 
 void TimelineRuler::mouseReleaseEvent(QMouseEvent* event)
 {
+    if (m_retimePress) {
+        const int frames = frameAtX(int(event->position().x())) - *m_retimePress;
+        m_retimePress.reset();
+        emit retimeDragged(frames, true);
+        event->accept();
+        return;
+    }
     if (!isSliderDown()) {
         QSlider::mouseReleaseEvent(event);
         return;

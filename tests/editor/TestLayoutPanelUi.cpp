@@ -13,6 +13,8 @@
 #include "editor/commands/NameReferences.h"
 #include "editor/layout/LayoutCheckWatch.h"
 #include "editor/layout/LayoutPanel.h"
+#include "editor/panels/TimelinePanel.h"
+#include "editor/panels/TimelineRuler.h"
 #include "editor/simulation/SimulationController.h"
 #include "editor/viewport/ShownAgents.h"
 #include "editor/viewport/Viewport.h"
@@ -419,6 +421,39 @@ private slots:
         QVERIFY2(std::hypot(one.x - two.x, one.z - two.z) >= 0.6f - 0.05f,
                  qPrintable(QString::number(std::hypot(one.x - two.x, one.z - two.z))));
         QVERIFY(window.layoutPanel().list()->item(1)->text().contains("every edited agent"));
+    }
+
+    // The retime drag: with the clicked member's time offset selected, the scrub bar marks
+    // it, and a Shift+drag of 12 frames on the bar makes it 36 frames later, as one step;
+    // the viewport shows the member where it stood 36 frames earlier.
+    void shiftDragOnTheTimelineRetimes()
+    {
+        MainWindow window;
+        const QByteArray withLayer =
+            kLayoutScene + "layout:\n  - {op: time_offset, agents: {ids: [1]}, later: 24}\n";
+        QVERIFY(showWithYaml(window, m_dir, "retime.yaml", withLayer));
+        QVERIFY(playUntilRecorded(window, 60));
+        QVERIFY(scrubWithKeys(window, 48));
+        showLayoutDock(window);
+        TimelineRuler* ruler = window.timeline().scrubBar();
+        QVERIFY(!ruler->retime());
+        clickRow(window.layoutPanel().list(), 0);
+        QCOMPARE(window.document().selection(), (Selection{{ItemKind::LayoutOp, 0}}));
+        QVERIFY(ruler->retime() && ruler->retime()->from == 0 && ruler->retime()->frames == 24);
+        QUndoStack& undo = *window.document().undoStack();
+        const int start = undo.index();
+        const int y = ruler->height() / 2;
+        QTest::mousePress(ruler, Qt::LeftButton, Qt::ShiftModifier, QPoint(ruler->xOfFrame(10), y));
+        for (int f = 11; f <= 22; ++f)
+            QTest::mouseMove(ruler, QPoint(ruler->xOfFrame(f), y));
+        QTest::mouseRelease(ruler, Qt::LeftButton, Qt::ShiftModifier, QPoint(ruler->xOfFrame(22), y));
+        QCOMPARE(window.document().scene().layout.ops[0].frames, 36);
+        QCOMPARE(undo.index() - start, 1);
+        QCOMPARE(ruler->retime()->frames, 36);
+        QCOMPARE(window.simulation().currentFrame(), std::size_t(48));  // the drag did not scrub
+        QTRY_VERIFY(shownFeet(window, 1) && glm::length(*shownFeet(window, 1) - recordedFeet(window, 1, 12)) < 1e-4f);
+        undo.undo();
+        QCOMPARE(window.document().scene().layout.ops[0].frames, 24);
     }
 
     void renamingAGroupOrTypeKeepsTheOperationsOnIt()
