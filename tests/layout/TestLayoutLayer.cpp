@@ -3,7 +3,7 @@
 // operation measured where a user would look: the trajectories CSV. Moved agents are
 // where the layer puts them and the others byte for byte where they were; a retimed
 // agent's first step comes later by the offset; deleted agents leave the CSV and are
-// invisible in USD; a turn
+// invisible in USD and scaled away in glTF; a turn
 // keeps distances to its pivot; a mirror reflects the walk; Expand spreads the group about
 // its centre. Selections by id, group, type and lasso; operations that select nobody are
 // named; the check after the edits finds the overlaps and wall crossings they make; the
@@ -11,6 +11,8 @@
 // a re-simulation with another seed keeps the layer by agent id.
 #include "TestRegistry.h"
 
+#include "GltfReadBack.h"
+#include "export/GltfExporter.h"
 #include "export/TrajectoryCsv.h"
 #include "export/UsdExporter.h"
 #include "simcore/io/SceneIO.h"
@@ -259,6 +261,38 @@ private slots:
         };
         QCOMPARE(visibility(first), QString("token visibility.timeSamples = { 0: \"inherited\", 30: \"invisible\","));
         QCOMPARE(visibility(first + 1), QString("token visibility.timeSamples = { 0: \"invisible\","));
+        // In glTF, read back as an importer would: scaled to nothing from those frames.
+        exporting::GltfOptions gltf;
+        gltf.path = dir.filePath("laid.glb").toStdString();
+        gltf.lod = exporting::Lod::Far;
+        gltf.includeSet = false;
+        QVERIFY(exporting::exportGltf(s.scene, laid, gltf).ok());
+        tinygltf::Model model;
+        std::string error;
+        QVERIFY2(test::loadGltf(gltf.path, model, error), error.c_str());
+        // The scale a STEP channel holds at the frame (its last key at or before it); -1
+        // without a channel.
+        auto scaleAt = [&](std::uint32_t id, int frame) {
+            const int node = test::nodeNamed(model, "agent_" + std::to_string(id) + "_walker");
+            const tinygltf::AnimationSampler* sampler = test::samplerFor(model, node, "scale");
+            if (!sampler)
+                return -1.0f;
+            if (sampler->interpolation != "STEP")
+                qFatal("a hiding scale is keyed STEP, not %s", sampler->interpolation.c_str());
+            const std::vector<float> times = test::accessorFloats(model, sampler->input);
+            const std::vector<float> values = test::accessorFloats(model, sampler->output);
+            float value = values[0];
+            for (std::size_t k = 0; k < times.size(); ++k)
+                if (times[k] <= float(frame) / 10.0f + 1e-4f)
+                    value = values[3 * k];
+            return value;
+        };
+        QVERIFY(scaleAt(first, 29) > 0.5f);
+        QCOMPARE(scaleAt(first, 30), 0.0f);
+        QCOMPARE(scaleAt(first, 79), 0.0f);
+        QCOMPARE(scaleAt(first + 1, 0), 0.0f);
+        QCOMPARE(scaleAt(first + 1, 79), 0.0f);
+        QVERIFY(scaleAt(first + 2, 0) > 0.5f || scaleAt(first + 2, 0) == -1.0f);  // untouched: no channel or shown
     }
 
     // Mirror the eastbound group across the line x = 0: they walk west, at -x of where they
