@@ -345,12 +345,14 @@ private slots:
 
     // While a run records, the shown frames grow with it, each laid out once; the result
     // is the whole recording laid out at once (with a translate and expand, and with a time
-    // offset, which lays out anew).
+    // offset later and one earlier, which read other frames: laid out anew only a few times
+    // over the run, not on every frame, and once more at the end).
     void theShownRecordingKeepsUpWithTheRun()
     {
-        for (const char* extra : {"", "  - {op: time_offset, agents: {ids: [2, 3]}, later: 7}\n"}) {
+        for (const char* extra : {"", "  - {op: time_offset, agents: {ids: [2, 3]}, later: 7}\n"
+                                      "  - {op: time_offset, agents: {ids: [4]}, later: -5}\n"}) {
             const std::string yaml = std::string("throng: 1\n"
-                                                 "settings: {fps: 10, duration: 4, seed: 4}\n"
+                                                 "settings: {fps: 10, duration: 8, seed: 4}\n"
                                                  "agent_types: [{name: walker}]\n"
                                                  "goals: [{name: exit, position: [8, 0], radius: 1}]\n"
                                                  "groups: [{name: g, type: walker, count: 6, rect: {min: [-6, -3], "
@@ -366,14 +368,17 @@ private slots:
             world.startRecording(cache);
             ShownRecording shown;
             std::vector<sim::AgentFrame> frame;
-            for (int f = 1; f < 40; ++f) {
+            for (int f = 1; f < 80; ++f) {
                 world.step();
                 world.snapshot(frame);
                 cache.append(frame);
                 QCOMPARE(shown.frames(cache, loaded.scene).frameCount(), cache.frameCount());
             }
+            // 80 frames: laid out whole on frame 1, then at 25 and 51 (a tenth and 24 more).
+            QVERIFY2(shown.fullLayouts() <= (*extra ? 3u : 1u), qPrintable(QString::number(shown.fullLayouts())));
             QCOMPARE(shown.frames(cache, loaded.scene).hash(), sim::applyLayout(loaded.scene, cache).hash());
             QVERIFY(shown.frames(cache, loaded.scene).hash() != cache.hash());
+            QVERIFY(shown.fullLayouts() <= 4);
         }
     }
 
