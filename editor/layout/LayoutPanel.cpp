@@ -104,6 +104,9 @@ LayoutPanel::LayoutPanel(SceneDocument& document, QWidget* parent) : QWidget(par
 
     m_list = new QListWidget(this);
     m_list->setObjectName("layoutList");
+    // Narrow as the column is: each row ends in "…", its tooltip says it all.
+    m_list->setTextElideMode(Qt::ElideRight);
+    m_list->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     m_list->setToolTip(tr("The layout operations, applied top to bottom to the recorded crowd; untick one to see the "
                           "crowd without it. Select one to edit it in Properties."));
     column->addWidget(m_list, 2);

@@ -2,14 +2,15 @@
 // window driven as a user drives it (never a test). Run under a display:
 //   xvfb-run -a -s "-screen 0 1920x1080x24" editor_screenshots OUTDIR
 // writes OUTDIR/editor-layout.png, editor-brains.png, editor-new-scene.png,
-// editor-timeline.png, editor-shortcuts.png, editor-overlays.png, editor-steering.png and
-// editor-3d-set.png.
+// editor-timeline.png, editor-shortcuts.png, editor-overlays.png, editor-steering.png,
+// editor-3d-set.png and editor-layout-edits.png.
 #include "EditorUiDriver.h"
 
 #include "editor/DarkTheme.h"
 #include "editor/HelpMenu.h"
 #include "editor/WorkspaceLayout.h"
 #include "editor/brain/BrainEditorPanel.h"
+#include "editor/layout/LayoutPanel.h"
 #include "editor/panels/OutlinerPanel.h"
 #include "editor/panels/TimelinePanel.h"
 #include "editor/simulation/SimulationController.h"
@@ -19,6 +20,7 @@
 #include <QDialog>
 #include <QDir>
 #include <QDockWidget>
+#include <QDoubleSpinBox>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QTemporaryDir>
@@ -194,6 +196,44 @@ int main(int argc, char** argv)
         }
         playTo(window, 300);
         ok = save(viewport, out + "/editor-3d-set.png") && ok;
+    }
+    {
+        // Editing the take: a group dragged with Layout Move, another squeezed by an Expand
+        // typed in Properties; the check's rings, HUD count and list; the trails of the
+        // selected operation's agents.
+        defaultViewSettings();
+        MainWindow window;
+        if (!showWithScene(window, dir, "crossroads.yaml"))
+            return 1;
+        window.resize(1280, 800);
+        QTest::qWait(100);
+        Viewport& viewport = window.viewport();
+        viewport.frameAll();
+        playTo(window, 240);
+        auto* dock = window.findChild<QDockWidget*>("layoutDock");
+        dock->show();
+        dock->raise();
+        window.document().setSelection({{ItemKind::Group, 1}});
+        window.layoutPanel().addOperation(sim::LayoutKind::Expand);
+        if (auto* factor = window.findChild<QWidget*>("properties")->findChild<QDoubleSpinBox*>("factor")) {
+            factor->setFocus();
+            factor->selectAll();
+            QTest::keyClicks(factor, "0.35");
+            QTest::keyClick(factor, Qt::Key_Return);
+        }
+        window.document().setSelection({{ItemKind::Group, 0}});
+        clickToolButton(window, "layoutMove");
+        const ShownAgents& shown = viewport.shownAgents();
+        glm::vec2 from(0.0f);
+        for (std::size_t i = 0; i < shown.size(); ++i)
+            if (shown.drawn(i)) {
+                from = {shown.feet(i).x, shown.feet(i).z};
+                break;
+            }
+        dragOnGround(window, {from, from + glm::vec2(4.0f, -3.0f)});
+        QTest::keyClick(&viewport, Qt::Key_T);  // the trails of the moved group's paths
+        QTest::qWait(800);                      // the check settles
+        ok = save(window, out + "/editor-layout-edits.png") && ok;
     }
     return ok ? 0 : 1;
 }
