@@ -4,6 +4,7 @@
 #include "editor/layout/LayoutEdits.h"
 #include "editor/tools/SelectionGeometry.h"
 #include "editor/viewport/Viewport.h"
+#include "simcore/scene/GroundPolygon.h"
 
 #include <glm/geometric.hpp>
 
@@ -71,6 +72,12 @@ void LayoutMoveTool::mousePressed(const ToolMouse& mouse)
 {
     if (!mouse.ground)
         return;
+    if (mouse.modifiers & Qt::ControlModifier) {
+        m_lasso = {{mouse.ground->x, mouse.ground->z}};
+        setState(State::Dragging);
+        emit overlayChanged();
+        return;
+    }
     m_target = target(mouse.modifiers & Qt::ShiftModifier);
     if (!m_target)
         return;
@@ -92,6 +99,14 @@ void LayoutMoveTool::mouseMoved(const ToolMouse& mouse)
 {
     if (state() != State::Dragging || !mouse.ground)
         return;
+    if (!m_lasso.empty()) {
+        const glm::vec2 p(mouse.ground->x, mouse.ground->z);
+        if (glm::length(p - m_lasso.back()) >= kLassoStepM) {
+            m_lasso.push_back(p);
+            emit overlayChanged();
+        }
+        return;
+    }
     const QPointF d = mouse.pixel - m_pressPixel;
     if (!m_moved && std::hypot(d.x(), d.y()) < kDeadPx)
         return;
@@ -103,6 +118,13 @@ void LayoutMoveTool::mouseReleased(const ToolMouse& mouse)
 {
     if (state() != State::Dragging)
         return;
+    if (!m_lasso.empty()) {
+        setState(State::Idle);
+        finishLasso();
+        m_lasso.clear();
+        emit overlayChanged();
+        return;
+    }
     if (m_moved && mouse.ground)
         apply({mouse.ground->x, mouse.ground->z});
     setState(State::Idle);
@@ -146,8 +168,24 @@ void LayoutMoveTool::apply(glm::vec2 ground)
     emit overlayChanged();
 }
 
+void LayoutMoveTool::finishLasso()
+{
+    if (m_lasso.size() < 3 || sim::polygonSelfCrossing(m_lasso))
+        return;
+    const sim::Scene& scene = document().scene();
+    sim::AgentSelector agents;
+    agents.lasso = m_lasso;
+    agents.lassoFrame = viewport().frameIndex();
+    sim::LayoutLayer after = scene.layout;
+    after.ops.push_back(newLayoutOp(sim::LayoutKind::Translate, std::move(agents), scene.layout, 0, 24.0, {}));
+    const QString text = tr("Lasso %1").arg(QString::fromStdString(after.ops.back().name));
+    document().undoStack()->push(changeLayoutCommand(document(), std::move(after), text));
+    document().setSelection({{ItemKind::LayoutOp, document().scene().layout.ops.size() - 1}});
+}
+
 void LayoutMoveTool::cancel()
 {
+    m_lasso.clear();
     m_target.reset();
     m_moved = false;
     ViewportTool::cancel();
@@ -155,6 +193,16 @@ void LayoutMoveTool::cancel()
 
 void LayoutMoveTool::drawOverlay(QPainter& painter) const
 {
+    if (!m_lasso.empty()) {
+        QPolygonF outline;
+        for (const glm::vec2 p : m_lasso)
+            outline << viewport().worldToPixel({p.x, 0.0f, p.y});
+        painter.setRenderHint(QPainter::Antialiasing);
+        painter.setPen(QPen(QColor(255, 217, 26), 1.5, Qt::DashLine));
+        painter.setBrush(QColor(255, 217, 26, 40));
+        painter.drawPolygon(outline);
+        return;
+    }
     std::optional<sim::LayoutOp> op;
     glm::vec2 centre = m_centre;
     if (state() == State::Dragging && m_target) {

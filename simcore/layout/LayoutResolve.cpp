@@ -70,7 +70,8 @@ void resolveFrame(const ResolveFrame& frame, float toleranceM)
     const float cell = std::max(2.0f * largest, 0.1f);
     // Whether the recording had the pair overlapping: then it is the simulation's, not ours.
     auto recordedOverlap = [&](std::size_t i, std::size_t j) {
-        if (i >= recordedCount || j >= recordedCount || !standsInShot(frame.recorded[i]) || !standsInShot(frame.recorded[j]))
+        if (i >= recordedCount || j >= recordedCount || !standsInShot(frame.recorded[i]) ||
+            !standsInShot(frame.recorded[j]))
             return false;
         return glm::length(xzOf(frame.recorded[i]) - xzOf(frame.recorded[j])) <
                frame.radius[i] + frame.radius[j] - toleranceM;

@@ -456,6 +456,49 @@ private slots:
         QCOMPARE(window.document().scene().layout.ops[0].frames, 24);
     }
 
+    // Ctrl+drag with Layout Move draws a lasso round the group's three walkers where frame
+    // 24 has them: a Translate of the agents inside that lasso on frame 24 (exactly those
+    // three), which a plain drag then moves.
+    void aLassoOnTheShownFrameSelectsTheAgentsInside()
+    {
+        MainWindow window;
+        QVERIFY(showWithYaml(window, m_dir, "lasso.yaml", kLayoutScene));
+        QVERIFY(playUntilRecorded(window, 30));
+        QVERIFY(scrubWithKeys(window, 24));
+        QVERIFY(clickToolButton(window, "layoutMove"));
+        glm::vec2 lo(1e9f), hi(-1e9f);
+        for (const sim::AgentId id : {3u, 4u, 5u}) {
+            const glm::vec3 p = recordedFeet(window, id, 24);
+            lo = glm::min(lo, glm::vec2(p.x, p.z));
+            hi = glm::max(hi, glm::vec2(p.x, p.z));
+        }
+        lo -= glm::vec2(1.0f);
+        hi += glm::vec2(1.0f);
+        QWidget* view = &window.viewport();
+        const std::vector<glm::vec2> corners{lo, {hi.x, lo.y}, hi, {lo.x, hi.y}, lo + glm::vec2(0.0f, 0.3f)};
+        QTest::mousePress(view, Qt::LeftButton, Qt::ControlModifier, pixelOf(window, corners[0]));
+        for (std::size_t c = 1; c < corners.size(); ++c)
+            for (int k = 1; k <= 10; ++k)
+                QTest::mouseMove(view, pixelOf(window, corners[c - 1] + (corners[c] - corners[c - 1]) * (k / 10.0f)));
+        QTest::mouseRelease(view, Qt::LeftButton, Qt::ControlModifier, pixelOf(window, corners.back()));
+        QCOMPARE(window.document().scene().layout.ops.size(), std::size_t(1));
+        const sim::LayoutOp lassoed = window.document().scene().layout.ops[0];
+        QCOMPARE(lassoed.agents.lassoFrame, std::size_t(24));
+        QVERIFY(lassoed.agents.lasso.size() >= 8);
+        QCOMPARE(window.document().selection(), (Selection{{ItemKind::LayoutOp, 0}}));
+        const sim::Scene& scene = window.document().scene();
+        const sim::LayoutSelection chosen = sim::selectLayoutAgents(scene, scene.layout, window.simulation().cache());
+        std::vector<sim::AgentId> ids;
+        for (const std::size_t i : chosen.agents[0])
+            ids.push_back(window.simulation().cache().agents()[i].id);
+        std::sort(ids.begin(), ids.end());
+        QCOMPARE(ids, (std::vector<sim::AgentId>{3, 4, 5}));
+        // A plain drag now moves them (the lassoed operation is selected).
+        const glm::vec3 was = recordedFeet(window, 4, 24);
+        dragOnGround(window, {{was.x, was.z}, {was.x + 2.0f, was.z}});
+        QVERIFY(glm::length(window.document().scene().layout.ops[0].offset - glm::vec2(2.0f, 0.0f)) < 0.05f);
+    }
+
     void renamingAGroupOrTypeKeepsTheOperationsOnIt()
     {
         MainWindow window;
