@@ -1,6 +1,7 @@
 // throng-bench-layout: the layout layer on a big recording (issue 29's figures): 10,000
-// walkers over 2,400 frames and a layer of 20 operations (translate, rotate, time offset,
-// mirror, delete, expand; selections by ids, types and a lasso). Times, medians of 3:
+// walkers over 2,400 frames and a layer of 20 operations, each kind twice (translate,
+// rotate, time offset, mirror, delete, expand, duplicate, swap, replace clip, resolve;
+// selections by ids, types and a lasso). Times, medians of 3:
 // setting the layer up, showing one edited frame (the viewport's cost after an edit;
 // median over 24 frames across the shot), applying it to every frame, and writing the
 // trajectories CSV of the laid-out frames against the recording's. Prints one JSON object.
@@ -76,6 +77,8 @@ sim::LayoutLayer makeLayer(std::size_t agents, std::size_t frames)
         op.axis[0] = {10, -30};
         op.axis[1] = {10, 30};
         op.factor = 1.1f;
+        op.look = 1;
+        op.clip = sim::Clip::Wave;
         if (op.kind == sim::LayoutKind::Delete)
             op.firstFrame = frames / 2;
         layer.ops.push_back(op);

@@ -68,6 +68,18 @@ bool sameColour(QRgb pixel, glm::vec4 colour, int tolerance)
            std::abs(qBlue(pixel) - channel(colour.b)) <= tolerance;
 }
 
+int pixelsOf(MainWindow& window, const QImage& image, glm::vec2 centre, float radiusM, glm::vec4 colour, int tolerance)
+{
+    int hits = 0;
+    for (float dx = -radiusM; dx <= radiusM; dx += 0.05f)
+        for (float dz = -radiusM; dz <= radiusM; dz += 0.05f)
+            if (dx * dx + dz * dz <= radiusM * radiusM)
+                hits += sameColour(pixelAt(image, window.viewport(),
+                                           window.viewport().worldToPixel({centre.x + dx, 0.0f, centre.y + dz})),
+                                   colour, tolerance);
+    return hits;
+}
+
 QString describe(QRgb pixel)
 {
     return QStringLiteral("rgb(%1, %2, %3)").arg(qRed(pixel)).arg(qGreen(pixel)).arg(qBlue(pixel));

@@ -38,6 +38,10 @@ QRgb pixelAt(const QImage& image, const Viewport& viewport, QPointF widgetPos);
 
 // True when every channel of `pixel` is within `tolerance` (0..255) of `colour`.
 bool sameColour(QRgb pixel, glm::vec4 colour, int tolerance = 8);
+// How many of `image`'s pixels within `radiusM` of a ground point (x, z), sampled every
+// 5 cm, have `colour` (within `tolerance`).
+int pixelsOf(MainWindow& window, const QImage& image, glm::vec2 centre, float radiusM, glm::vec4 colour,
+             int tolerance);
 QString describe(QRgb pixel);
 QString describe(glm::vec4 colour);
 

@@ -18,6 +18,7 @@
 #include "editor/simulation/SimulationController.h"
 #include "editor/viewport/ShownAgents.h"
 #include "editor/viewport/Viewport.h"
+#include "editor/viewport/ViewportPalette.h"
 #include "simcore/layout/LayoutApply.h"
 
 #include <QAction>
@@ -261,6 +262,32 @@ private slots:
         for (int k = 0; k < 7; ++k)
             undo.redo();
         QVERIFY(window.document().scene().layout == edited);
+    }
+
+    // Trails (T) with a layout operation selected follow its agents along the edited path:
+    // behind agent 1 where the layer moved it, none where it was recorded.
+    void trailsShowTheEditedPath()
+    {
+        MainWindow window;
+        const QByteArray withLayer =
+            kLayoutScene + "layout:\n  - {op: translate, agents: {ids: [1]}, offset: [0, 3]}\n";
+        QVERIFY(showWithYaml(window, m_dir, "trails.yaml", withLayer));
+        QVERIFY(playUntilRecorded(window, 72));
+        showLayoutDock(window);
+        clickRow(window.layoutPanel().list(), 0);
+        Viewport& viewport = window.viewport();
+        QTest::keyClick(&viewport, Qt::Key_Q);  // the HUD off: nothing over the trail
+        QTest::keyClick(&viewport, Qt::Key_T);
+        QVERIFY(viewport.overlays().trails);
+        QVERIFY(scrubWithKeys(window, 72));
+        QTest::qWait(50);
+        const QImage image = viewport.grabFramebuffer();
+        const glm::vec3 walked = recordedFeet(window, 1, 48), now = recordedFeet(window, 1, 72);
+        QVERIFY2(glm::distance(walked, now) > 0.9f, "it walked");
+        const int edited = pixelsOf(window, image, {walked.x, walked.z + 3.0f}, 0.15f, palette::kTrail, 70);
+        const int recorded = pixelsOf(window, image, {walked.x, walked.z}, 0.15f, palette::kTrail, 70);
+        QVERIFY2(edited >= 3 && recorded == 0, qPrintable(QString("%1 trail pixels on the edited path, %2 on the "
+                                                                  "recorded one").arg(edited).arg(recorded)));
     }
 
     void onlyTheClickedAgentTakesOneMemberOfAGroup()

@@ -135,19 +135,6 @@ std::size_t cacheIndex(MainWindow& window, sim::AgentId id)
     return agents.size();
 }
 
-// Pixels within `radiusM` of `centre` (ground) whose colour is `colour`.
-int pixelsOf(MainWindow& window, const QImage& image, glm::vec2 centre, float radiusM, glm::vec4 colour, int tolerance)
-{
-    int hits = 0;
-    for (float dx = -radiusM; dx <= radiusM; dx += 0.05f)
-        for (float dz = -radiusM; dz <= radiusM; dz += 0.05f)
-            if (dx * dx + dz * dz <= radiusM * radiusM)
-                hits += sameColour(pixelAt(image, window.viewport(),
-                                           window.viewport().worldToPixel({centre.x + dx, 0.0f, centre.y + dz})),
-                                   colour, tolerance);
-    return hits;
-}
-
 }  // namespace
 
 class TestViewportExplainsUi : public QObject {
