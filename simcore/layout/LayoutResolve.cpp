@@ -4,14 +4,16 @@
 
 #include <algorithm>
 #include <cmath>
-#include <unordered_map>
+#include <limits>
+#include <utility>
 #include <vector>
 
 namespace throng::sim {
 
 namespace {
 
-constexpr int kRounds = 24;  // relaxation rounds; a squeezed group of a dozen settles in fewer
+constexpr int kRounds = 8;            // relaxation rounds (each visits every pair once, in order)
+constexpr float kSettledM = 1e-4f;    // a round that pushes no body further than this ends them
 
 bool standsInShot(const AgentFrame& a) { return a.present && !a.out; }
 
@@ -24,36 +26,53 @@ glm::vec2 fallbackDirection(std::size_t i)
     return {std::cos(angle), std::sin(angle)};
 }
 
-class ResolveGrid {
+// Agents by grid cell over a box: counts, then one array in cell order (built once per
+// round, searched in constant time per cell). Points outside the box go to its edge cells.
+class CellGrid {
 public:
-    ResolveGrid(std::span<const AgentFrame> laid, float cell) : m_cell(cell)
+    CellGrid(glm::vec2 lo, glm::vec2 hi, float cell)
+        : m_lo(lo), m_cell(cell),
+          m_cols(std::max(1, int(std::ceil((hi.x - lo.x) / cell)))),
+          m_rows(std::max(1, int(std::ceil((hi.y - lo.y) / cell))))
     {
-        for (std::size_t i = 0; i < laid.size(); ++i)
-            if (standsInShot(laid[i]))
-                m_cells[key(cellOf(xzOf(laid[i])))].push_back(i);
+    }
+    std::size_t cells() const { return std::size_t(m_cols) * std::size_t(m_rows); }
+    void build(std::span<const AgentFrame> laid, const std::vector<std::uint32_t>& agents)
+    {
+        m_start.assign(cells() + 1, 0);
+        m_cellOf.resize(agents.size());
+        for (std::size_t k = 0; k < agents.size(); ++k) {
+            m_cellOf[k] = cellIndex(xzOf(laid[agents[k]]));
+            ++m_start[m_cellOf[k] + 1];
+        }
+        for (std::size_t c = 0; c < cells(); ++c)
+            m_start[c + 1] += m_start[c];
+        m_items.resize(agents.size());
+        std::vector<std::uint32_t> fill(m_start.begin(), m_start.end() - 1);
+        for (std::size_t k = 0; k < agents.size(); ++k)
+            m_items[fill[m_cellOf[k]]++] = agents[k];
     }
     template <class F>
     void forNear(glm::vec2 p, F f) const
     {
-        const auto c = cellOf(p);
-        for (long long dx = -1; dx <= 1; ++dx)
-            for (long long dz = -1; dz <= 1; ++dz)
-                if (const auto it = m_cells.find(key({c.first + dx, c.second + dz})); it != m_cells.end())
-                    for (const std::size_t j : it->second)
-                        f(j);
+        const int cx = column(p.x), cz = row(p.y);
+        for (int z = std::max(0, cz - 1); z <= std::min(m_rows - 1, cz + 1); ++z)
+            for (int x = std::max(0, cx - 1); x <= std::min(m_cols - 1, cx + 1); ++x) {
+                const std::size_t c = std::size_t(z) * std::size_t(m_cols) + std::size_t(x);
+                for (std::uint32_t k = m_start[c]; k < m_start[c + 1]; ++k)
+                    f(std::size_t(m_items[k]));
+            }
     }
 
 private:
-    std::pair<long long, long long> cellOf(glm::vec2 p) const
-    {
-        return {std::llround(std::floor(p.x / m_cell)), std::llround(std::floor(p.y / m_cell))};
-    }
-    static std::uint64_t key(std::pair<long long, long long> c)
-    {
-        return (std::uint64_t(c.first) << 32) ^ std::uint64_t(c.second & 0xffffffff);
-    }
+    int column(float x) const { return std::clamp(int(std::floor((x - m_lo.x) / m_cell)), 0, m_cols - 1); }
+    int row(float z) const { return std::clamp(int(std::floor((z - m_lo.y) / m_cell)), 0, m_rows - 1); }
+    std::uint32_t cellIndex(glm::vec2 p) const { return std::uint32_t(row(p.y) * m_cols + column(p.x)); }
+
+    glm::vec2 m_lo;
     float m_cell;
-    std::unordered_map<std::uint64_t, std::vector<std::size_t>> m_cells;
+    int m_cols, m_rows;
+    std::vector<std::uint32_t> m_start, m_items, m_cellOf;
 };
 
 }  // namespace
@@ -62,12 +81,44 @@ void resolveFrame(const ResolveFrame& frame, float toleranceM)
 {
     std::span<AgentFrame> laid = frame.laid;
     const std::size_t n = laid.size(), recordedCount = frame.recorded.size();
-    if (std::none_of(frame.movable.begin(), frame.movable.end(), [](std::uint8_t m) { return m != 0; }))
+    std::vector<std::uint32_t> moving;
+    for (std::size_t i = 0; i < n; ++i)
+        if (frame.movable[i] && standsInShot(laid[i]))
+            moving.push_back(std::uint32_t(i));
+    if (moving.empty())
         return;
     float largest = 0.0f;
     for (const float r : frame.radius)
         largest = std::max(largest, r);
     const float cell = std::max(2.0f * largest, 0.1f);
+    // The bodies that stay, near enough to the moving ones to touch them (a move of up to
+    // a body's width each round included): found once per frame.
+    glm::vec2 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
+    for (const std::uint32_t i : moving) {
+        lo = glm::min(lo, xzOf(laid[i]));
+        hi = glm::max(hi, xzOf(laid[i]));
+    }
+    const float reach = float(kRounds + 1) * cell;
+    lo -= glm::vec2(reach);
+    hi += glm::vec2(reach);
+    // Cells no finer than needed to hold the box in a few cells per body near it: movers
+    // kilometres apart make a coarse grid (slower), never a huge one.
+    float gridCell = cell;
+    const double area = double(hi.x - lo.x) * double(hi.y - lo.y);
+    const double cap = 16.0 * double(n) + 4096.0;
+    if (area / (double(cell) * double(cell)) > cap)
+        gridCell = float(std::sqrt(area / cap));
+    std::vector<std::uint32_t> staying;
+    staying.reserve(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        if (frame.movable[i] || !standsInShot(laid[i]))
+            continue;
+        const glm::vec2 p = xzOf(laid[i]);
+        if (p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y)
+            staying.push_back(std::uint32_t(i));
+    }
+    CellGrid still(lo, hi, gridCell), moved(lo, hi, gridCell);
+    still.build(laid, staying);
     // Whether the recording had the pair overlapping: then it is the simulation's, not ours.
     auto recordedOverlap = [&](std::size_t i, std::size_t j) {
         if (i >= recordedCount || j >= recordedCount || !standsInShot(frame.recorded[i]) ||
@@ -76,46 +127,40 @@ void resolveFrame(const ResolveFrame& frame, float toleranceM)
         return glm::length(xzOf(frame.recorded[i]) - xzOf(frame.recorded[j])) <
                frame.radius[i] + frame.radius[j] - toleranceM;
     };
-    std::vector<glm::vec2> delta(n);
+    auto move = [&](std::size_t i, glm::vec2 by) {
+        laid[i].position.x += by.x;
+        laid[i].position.z += by.y;
+    };
     for (int round = 0; round < kRounds; ++round) {
-        const ResolveGrid grid(laid, cell);
-        std::fill(delta.begin(), delta.end(), glm::vec2(0.0f));
-        bool pushed = false;
-        for (std::size_t i = 0; i < n; ++i) {
-            if (!frame.movable[i] || !standsInShot(laid[i]))
-                continue;
-            const glm::vec2 p = xzOf(laid[i]);
-            grid.forNear(p, [&](std::size_t j) {
-                if (j == i || (frame.movable[j] && j < i))  // a movable pair once, from its lower index
+        moved.build(laid, moving);
+        float largestPush = 0.0f;
+        for (const std::uint32_t i : moving) {
+            auto separate = [&](std::size_t j) {
+                if (j == i || (frame.movable[j] && j < i))  // a moving pair once, from its lower index
                     return;
                 const float need = frame.radius[i] + frame.radius[j] - 0.5f * toleranceM;
-                const glm::vec2 d = p - xzOf(laid[j]);
+                const glm::vec2 d = xzOf(laid[i]) - xzOf(laid[j]);
                 const float gap = glm::length(d);
                 if (gap >= need || recordedOverlap(i, j))
                     return;
                 const glm::vec2 away = gap > 1e-6f ? d / gap : fallbackDirection(i);
                 const float push = need - gap;
+                largestPush = std::max(largestPush, push);
                 if (frame.movable[j]) {
-                    delta[i] += 0.5f * push * away;
-                    delta[j] -= 0.5f * push * away;
+                    move(i, 0.5f * push * away);
+                    move(j, -0.5f * push * away);
                 } else {
-                    delta[i] += push * away;
+                    move(i, push * away);
                 }
-                pushed = true;
-            });
+            };
+            still.forNear(xzOf(laid[i]), separate);
+            moved.forNear(xzOf(laid[i]), separate);
         }
-        if (!pushed)
+        if (largestPush < kSettledM)
             break;
-        for (std::size_t i = 0; i < n; ++i)
-            if (frame.movable[i]) {
-                laid[i].position.x += delta[i].x;
-                laid[i].position.z += delta[i].y;
-            }
     }
-    // Off the walls: a movable body a radius clear of every segment, on the side it stands.
-    for (std::size_t i = 0; i < n; ++i) {
-        if (!frame.movable[i] || !standsInShot(laid[i]))
-            continue;
+    // Off the walls: a moving body a radius clear of every segment, on the side it stands.
+    for (const std::uint32_t i : moving)
         for (const auto& [a, b] : frame.walls) {
             const glm::vec2 p = xzOf(laid[i]), ab = b - a;
             const float len2 = glm::dot(ab, ab);
@@ -124,11 +169,8 @@ void resolveFrame(const ResolveFrame& frame, float toleranceM)
             const float gap = glm::length(d);
             if (gap >= frame.radius[i] || gap < 1e-6f)
                 continue;
-            const glm::vec2 out = d / gap * (frame.radius[i] - gap);
-            laid[i].position.x += out.x;
-            laid[i].position.z += out.y;
+            move(i, d / gap * (frame.radius[i] - gap));
         }
-    }
 }
 
 }  // namespace throng::sim
