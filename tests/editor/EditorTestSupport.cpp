@@ -21,9 +21,11 @@
 #include <QApplication>
 #include <QFile>
 #include <QTest>
+#include <QTimer>
 
 #include <cmath>
 #include <cstdlib>
+#include <memory>
 
 namespace throng::editor::test {
 
@@ -239,6 +241,18 @@ bool clickPopupItem(const QString& text)
             return true;
         }
     return false;
+}
+
+void whenShown(std::function<bool()> answer)
+{
+    auto* timer = new QTimer;
+    timer->setInterval(20);
+    auto tries = std::make_shared<int>(0);
+    QObject::connect(timer, &QTimer::timeout, timer, [timer, answer, tries] {
+        if (answer() || ++*tries > 250)
+            timer->deleteLater();
+    });
+    timer->start();
 }
 
 void undo(MainWindow& window)

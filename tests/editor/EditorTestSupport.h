@@ -12,6 +12,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 
 #include <QByteArray>
 #include <QImage>
@@ -97,6 +98,9 @@ void showNewWindow(MainWindow& window);
 // Clicks the item `text` (mnemonic '&' ignored) of the open popup menu; false when no
 // menu is open or it has no such item.
 bool clickPopupItem(const QString& text);
+// Runs `answer` on the next modal dialog or popup menu that opens (polling every 20 ms, as
+// the dialog's exec() blocks the caller, until it returns true or 5 s have passed).
+void whenShown(std::function<bool()> answer);
 
 // The newest line of the messages panel; empty when there is none.
 QString lastMessage(MainWindow& window);

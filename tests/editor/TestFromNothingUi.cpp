@@ -35,20 +35,6 @@ using namespace throng::editor::test;
 
 namespace {
 
-// Runs `answer` on the next modal dialog or popup menu that opens (polling, as the
-// dialog's exec() blocks the caller), then returns.
-void whenShown(std::function<bool()> answer)
-{
-    auto* timer = new QTimer;
-    timer->setInterval(20);
-    auto tries = std::make_shared<int>(0);
-    QObject::connect(timer, &QTimer::timeout, timer, [timer, answer, tries] {
-        if (answer() || ++*tries > 250)
-            timer->deleteLater();
-    });
-    timer->start();
-}
-
 std::vector<std::string> typeNames(MainWindow& window)
 {
     std::vector<std::string> names;

@@ -60,19 +60,6 @@ groups:
 
 constexpr std::size_t kRecorded = 72;
 
-// Runs `answer` on the next popup menu that opens (its exec() blocks the caller).
-void whenMenuOpens(std::function<bool()> answer)
-{
-    auto* timer = new QTimer;
-    timer->setInterval(20);
-    auto tries = std::make_shared<int>(0);
-    QObject::connect(timer, &QTimer::timeout, timer, [timer, answer, tries] {
-        if (answer() || ++*tries > 250)
-            timer->deleteLater();
-    });
-    timer->start();
-}
-
 QDockWidget* showLayoutDock(MainWindow& window)
 {
     auto* dock = window.findChild<QDockWidget*>("layoutDock");
@@ -89,7 +76,7 @@ bool addFromMenu(MainWindow& window, const QString& kind)
     if (!add)
         return false;
     bool picked = false;
-    whenMenuOpens([&picked, kind] { return picked = clickPopupItem(kind); });
+    whenShown([&picked, kind] { return picked = clickPopupItem(kind); });
     QTest::mouseClick(add, Qt::LeftButton);
     return QTest::qWaitFor([&] { return picked; }, 5000);
 }
