@@ -11,6 +11,7 @@
 // usage: throng-bench-layout [--agents N] [--frames F]
 #include "export/TrajectoryCsv.h"
 #include "simcore/layout/LayoutApply.h"
+#include "simcore/layout/LayoutCheck.h"
 
 #include <algorithm>
 #include <chrono>
@@ -118,7 +119,7 @@ int main(int argc, char** argv)
 
     sim::Scene unresolved = scene;
     std::erase_if(unresolved.layout.ops, [](const sim::LayoutOp& op) { return op.kind == sim::LayoutKind::Resolve; });
-    std::vector<double> setup, frame, apply, applyUnresolved, csvLaid, csvRaw;
+    std::vector<double> setup, frame, apply, applyUnresolved, check, csvLaid, csvRaw;
     const std::string path = (std::filesystem::temp_directory_path() / "throng-bench-layout.csv").string();
     for (int run = 0; run < 3; ++run) {
         std::unique_ptr<sim::LayoutEvaluator> evaluator;
@@ -131,16 +132,19 @@ int main(int argc, char** argv)
         sim::FrameCache laid;
         apply.push_back(seconds([&] { laid = sim::applyLayout(scene, cache); }));
         applyUnresolved.push_back(seconds([&] { sim::applyLayout(unresolved, cache); }));
+        check.push_back(seconds([&] { sim::checkLayout(scene, cache, laid); }));
         csvLaid.push_back(seconds([&] { exporting::writeTrajectoryCsv(laid, path); }));
         csvRaw.push_back(seconds([&] { exporting::writeTrajectoryCsv(cache, path); }));
     }
     std::filesystem::remove(path);
     std::printf("{\"bench\": \"layout\", \"agents\": %zu, \"frames\": %zu, \"operations\": %zu, "
                 "\"setup_ms\": %.1f, \"edited_frame_ms\": %.2f, \"apply_all_frames_s\": %.2f, "
-                "\"apply_without_resolves_s\": %.2f, \"csv_laid_out_s\": %.2f, \"csv_recording_s\": %.2f, "
+                "\"apply_without_resolves_s\": %.2f, \"check_s\": %.2f, \"csv_laid_out_s\": %.2f, "
+                "\"csv_recording_s\": %.2f, "
                 "\"csv_ratio\": %.3f, \"laid_out_agents\": %zu}\n",
                 agents, frames, scene.layout.ops.size(), 1e3 * median(setup), 1e3 * median(frame), median(apply),
-                median(applyUnresolved), median(csvLaid), median(csvRaw), median(csvLaid) / median(csvRaw),
+                median(applyUnresolved), median(check), median(csvLaid), median(csvRaw),
+                median(csvLaid) / median(csvRaw),
                 sim::LayoutEvaluator(scene, cache).agents().size());
     return 0;
 }

@@ -1,5 +1,7 @@
 #include "simcore/layout/LayoutCheck.h"
 
+#include "simcore/layout/LayoutGrid.h"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -7,7 +9,7 @@
 #include <map>
 #include <set>
 #include <tuple>
-#include <unordered_map>
+#include <limits>
 
 namespace throng::sim {
 
@@ -52,43 +54,61 @@ const WallPiece* crossedWall(const std::vector<WallPiece>& walls, glm::vec2 from
     return nullptr;
 }
 
-// Pairs of shown agents closer than their radii allow on one frame: (i, j) with i < j,
-// and how deep; only pairs with an agent `wanted` marks.
-void overlapsOn(const FrameCache& cache, std::size_t f, const std::vector<float>& radius,
-                const std::vector<std::uint8_t>& wanted, float tolerance,
-                std::map<std::pair<std::size_t, std::size_t>, float>& out)
+// Pairs of shown agents closer than their radii allow less `tolerance` on frame f of
+// `laid`, at least one of them `wanted`, that the recording did not have so: (i, j) with
+// i < j, and how deep, in pair order. Only the bodies near a wanted one are gridded.
+struct Overlap {
+    std::size_t i = 0, j = 0;
+    float depth = 0.0f;
+};
+void newOverlapsOn(const FrameCache& laid, const FrameCache& recorded, std::size_t f, const std::vector<float>& radius,
+                   const std::vector<std::uint8_t>& wanted, float tolerance, std::vector<Overlap>& out)
 {
-    const std::size_t n = cache.agentCount();
+    out.clear();
+    const std::size_t n = laid.agentCount(), recordedCount = recorded.agentCount();
+    const std::span<const AgentFrame> now = laid.frame(f);
+    std::vector<std::uint32_t> checked;
+    glm::vec2 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
+    for (std::size_t i = 0; i < n; ++i)
+        if (wanted[i] && inShot(now[i])) {
+            checked.push_back(std::uint32_t(i));
+            lo = glm::min(lo, placeOf(now[i]));
+            hi = glm::max(hi, placeOf(now[i]));
+        }
+    if (checked.empty())
+        return;
     float largest = 0.0f;
     for (const float r : radius)
         largest = std::max(largest, r);
     const float cell = std::max(2.0f * largest, 0.1f);
-    std::unordered_map<std::uint64_t, std::vector<std::size_t>> grid;
-    auto key = [&](long long x, long long z) { return (std::uint64_t(x) << 32) ^ std::uint64_t(z & 0xffffffff); };
-    for (std::size_t i = 0; i < n; ++i)
-        if (inShot(cache.at(f, i))) {
-            const glm::vec2 p = placeOf(cache.at(f, i));
-            grid[key(std::llround(std::floor(p.x / cell)), std::llround(std::floor(p.y / cell)))].push_back(i);
-        }
+    lo -= glm::vec2(cell);
+    hi += glm::vec2(cell);
+    std::vector<std::uint32_t> near;
     for (std::size_t i = 0; i < n; ++i) {
-        if (!wanted[i] || !inShot(cache.at(f, i)))
-            continue;
-        const glm::vec2 p = placeOf(cache.at(f, i));
-        const long long cx = std::llround(std::floor(p.x / cell)), cz = std::llround(std::floor(p.y / cell));
-        for (long long dx = -1; dx <= 1; ++dx)
-            for (long long dz = -1; dz <= 1; ++dz) {
-                const auto it = grid.find(key(cx + dx, cz + dz));
-                if (it == grid.end())
-                    continue;
-                for (const std::size_t j : it->second) {
-                    if (j == i)
-                        continue;
-                    const float depth = radius[i] + radius[j] - glm::length(p - placeOf(cache.at(f, j)));
-                    if (depth > tolerance)
-                        out[{std::min(i, j), std::max(i, j)}] = depth;
-                }
-            }
+        const glm::vec2 p = placeOf(now[i]);
+        if (inShot(now[i]) && p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y)
+            near.push_back(std::uint32_t(i));
     }
+    layout::CellGrid grid = layout::CellGrid::fitting(lo, hi, cell, near.size());
+    grid.build(now, near);
+    const std::span<const AgentFrame> then = recorded.frame(f);
+    for (const std::uint32_t i : checked) {
+        const glm::vec2 p = placeOf(now[i]);
+        grid.forNear(p, [&](std::size_t j) {
+            if (j == i || (wanted[j] && j < i))  // a pair of wanted agents once, from its lower index
+                return;
+            const float depth = radius[i] + radius[j] - glm::length(p - placeOf(now[j]));
+            if (!(depth > tolerance))
+                return;
+            // The recording's own overlap is the simulation's, not the edits'.
+            if (i < recordedCount && j < recordedCount && inShot(then[i]) && inShot(then[j]) &&
+                radius[i] + radius[j] - glm::length(placeOf(then[i]) - placeOf(then[j])) > tolerance)
+                return;
+            out.push_back({std::min<std::size_t>(i, j), std::max<std::size_t>(i, j), depth});
+        });
+    }
+    std::sort(out.begin(), out.end(),
+              [](const Overlap& a, const Overlap& b) { return std::tie(a.i, a.j) < std::tie(b.i, b.j); });
 }
 
 }  // namespace
@@ -121,17 +141,13 @@ LayoutCheck checkLayout(const Scene& scene, const FrameCache& recorded, const Fr
                              scene.walls[w].name.empty() ? "wall " + std::to_string(w + 1) : scene.walls[w].name});
 
     std::set<std::size_t> clashFrames;
+    std::vector<Overlap> overlaps;
     for (std::size_t f = 0; f < frames; ++f) {
-        std::map<std::pair<std::size_t, std::size_t>, float> now, before;
-        overlapsOn(laid, f, radius, edited, toleranceM, now);
-        if (!now.empty())
-            overlapsOn(recorded, f, radius, edited, toleranceM, before);
-        for (const auto& [pair, depth] : now) {
-            if (before.count(pair))
-                continue;
-            const std::size_t a = edited[pair.first] ? pair.first : pair.second;
-            const std::size_t b = a == pair.first ? pair.second : pair.first;
-            check.overlaps.push_back({f, laid.agents()[a].id, laid.agents()[b].id, {}, depth});
+        newOverlapsOn(laid, recorded, f, radius, edited, toleranceM, overlaps);
+        for (const Overlap& o : overlaps) {
+            const std::size_t a = edited[o.i] ? o.i : o.j;
+            const std::size_t b = a == o.i ? o.j : o.i;
+            check.overlaps.push_back({f, laid.agents()[a].id, laid.agents()[b].id, {}, o.depth});
             clashFrames.insert(f);
         }
         if (f == 0 || walls.empty())

@@ -1,5 +1,7 @@
 #include "simcore/layout/LayoutResolve.h"
 
+#include "simcore/layout/LayoutGrid.h"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -25,55 +27,6 @@ glm::vec2 fallbackDirection(std::size_t i)
     const float angle = 2.39996323f * float(i + 1);
     return {std::cos(angle), std::sin(angle)};
 }
-
-// Agents by grid cell over a box: counts, then one array in cell order (built once per
-// round, searched in constant time per cell). Points outside the box go to its edge cells.
-class CellGrid {
-public:
-    CellGrid(glm::vec2 lo, glm::vec2 hi, float cell)
-        : m_lo(lo), m_cell(cell),
-          m_cols(std::max(1, int(std::ceil((hi.x - lo.x) / cell)))),
-          m_rows(std::max(1, int(std::ceil((hi.y - lo.y) / cell))))
-    {
-    }
-    std::size_t cells() const { return std::size_t(m_cols) * std::size_t(m_rows); }
-    void build(std::span<const AgentFrame> laid, const std::vector<std::uint32_t>& agents)
-    {
-        m_start.assign(cells() + 1, 0);
-        m_cellOf.resize(agents.size());
-        for (std::size_t k = 0; k < agents.size(); ++k) {
-            m_cellOf[k] = cellIndex(xzOf(laid[agents[k]]));
-            ++m_start[m_cellOf[k] + 1];
-        }
-        for (std::size_t c = 0; c < cells(); ++c)
-            m_start[c + 1] += m_start[c];
-        m_items.resize(agents.size());
-        std::vector<std::uint32_t> fill(m_start.begin(), m_start.end() - 1);
-        for (std::size_t k = 0; k < agents.size(); ++k)
-            m_items[fill[m_cellOf[k]]++] = agents[k];
-    }
-    template <class F>
-    void forNear(glm::vec2 p, F f) const
-    {
-        const int cx = column(p.x), cz = row(p.y);
-        for (int z = std::max(0, cz - 1); z <= std::min(m_rows - 1, cz + 1); ++z)
-            for (int x = std::max(0, cx - 1); x <= std::min(m_cols - 1, cx + 1); ++x) {
-                const std::size_t c = std::size_t(z) * std::size_t(m_cols) + std::size_t(x);
-                for (std::uint32_t k = m_start[c]; k < m_start[c + 1]; ++k)
-                    f(std::size_t(m_items[k]));
-            }
-    }
-
-private:
-    int column(float x) const { return std::clamp(int(std::floor((x - m_lo.x) / m_cell)), 0, m_cols - 1); }
-    int row(float z) const { return std::clamp(int(std::floor((z - m_lo.y) / m_cell)), 0, m_rows - 1); }
-    std::uint32_t cellIndex(glm::vec2 p) const { return std::uint32_t(row(p.y) * m_cols + column(p.x)); }
-
-    glm::vec2 m_lo;
-    float m_cell;
-    int m_cols, m_rows;
-    std::vector<std::uint32_t> m_start, m_items, m_cellOf;
-};
 
 }  // namespace
 
@@ -101,13 +54,6 @@ void resolveFrame(const ResolveFrame& frame, float toleranceM)
     const float reach = float(kRounds + 1) * cell;
     lo -= glm::vec2(reach);
     hi += glm::vec2(reach);
-    // Cells no finer than needed to hold the box in a few cells per body near it: movers
-    // kilometres apart make a coarse grid (slower), never a huge one.
-    float gridCell = cell;
-    const double area = double(hi.x - lo.x) * double(hi.y - lo.y);
-    const double cap = 16.0 * double(n) + 4096.0;
-    if (area / (double(cell) * double(cell)) > cap)
-        gridCell = float(std::sqrt(area / cap));
     std::vector<std::uint32_t> staying;
     staying.reserve(n);
     for (std::size_t i = 0; i < n; ++i) {
@@ -117,7 +63,8 @@ void resolveFrame(const ResolveFrame& frame, float toleranceM)
         if (p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y)
             staying.push_back(std::uint32_t(i));
     }
-    CellGrid still(lo, hi, gridCell), moved(lo, hi, gridCell);
+    layout::CellGrid still = layout::CellGrid::fitting(lo, hi, cell, n);
+    layout::CellGrid moved = still;
     still.build(laid, staying);
     // Whether the recording had the pair overlapping: then it is the simulation's, not ours.
     auto recordedOverlap = [&](std::size_t i, std::size_t j) {
