@@ -26,6 +26,7 @@
 #include "editor/viewport/Viewport.h"
 
 #include <QAction>
+#include <QApplication>
 #include <QActionGroup>
 #include <QDockWidget>
 #include <QFileInfo>
@@ -213,6 +214,15 @@ QDockWidget* MainWindow::createLayoutDock(QDockWidget* besides)
     connect(m_layoutCheck, &LayoutCheckWatch::checked, this, [this](const sim::LayoutCheck& check) {
         m_layout->showCheck(check);
         m_viewport->setLayoutCheck(check);
+    });
+    connect(m_layoutCheck, &LayoutCheckWatch::skipped, this, [this](std::size_t agentFrames) {
+        m_layout->showCheckSkipped(agentFrames);
+        m_viewport->setLayoutCheck({});
+    });
+    connect(m_layout, &LayoutPanel::checkRequested, this, [this] {
+        QApplication::setOverrideCursor(Qt::WaitCursor);
+        m_layoutCheck->checkNow();
+        QApplication::restoreOverrideCursor();
     });
     return dock;
 }

@@ -15,7 +15,7 @@ LayoutCheckWatch::LayoutCheckWatch(SceneDocument& document, SimulationController
     m_timer = new QTimer(this);
     m_timer->setSingleShot(true);
     m_timer->setInterval(kSettleMs);
-    connect(m_timer, &QTimer::timeout, this, &LayoutCheckWatch::checkNow);
+    connect(m_timer, &QTimer::timeout, this, &LayoutCheckWatch::checkIfSmall);
     connect(&m_document, &SceneDocument::sceneReset, this, &LayoutCheckWatch::schedule);
     connect(&m_document, &SceneDocument::sceneChanged, this, [this](const SceneChange& change) {
         // The layer itself, or what the check reads of the scene: walls and the types' radii.
@@ -32,6 +32,21 @@ void LayoutCheckWatch::schedule()
     if (!layered && m_last.overlaps.empty() && m_last.wallCrossings.empty() && !m_timer->isActive())
         return;
     m_timer->start();
+}
+
+void LayoutCheckWatch::checkIfSmall()
+{
+    const sim::Scene& scene = m_document.scene();
+    const sim::FrameCache& recorded = m_simulation.cache();
+    if (!scene.layout.ops.empty()) {
+        const std::size_t agentFrames = recorded.agentCount() * recorded.frameCount();
+        if (agentFrames > m_automaticLimit) {
+            m_last = {};
+            emit skipped(agentFrames);
+            return;
+        }
+    }
+    checkNow();
 }
 
 void LayoutCheckWatch::checkNow()

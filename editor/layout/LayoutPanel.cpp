@@ -12,6 +12,8 @@
 #include <QLabel>
 #include <QListWidget>
 #include <QMenu>
+#include <QPushButton>
+#include <QHBoxLayout>
 #include <QSignalBlocker>
 #include <QToolBar>
 #include <QToolButton>
@@ -111,10 +113,19 @@ LayoutPanel::LayoutPanel(SceneDocument& document, QWidget* parent) : QWidget(par
                           "crowd without it. Select one to edit it in Properties."));
     column->addWidget(m_list, 2);
 
+    auto* checkRow = new QHBoxLayout;
     m_checkLabel = new QLabel(this);
     m_checkLabel->setObjectName("layoutCheckLabel");
     m_checkLabel->setWordWrap(true);
-    column->addWidget(m_checkLabel);
+    checkRow->addWidget(m_checkLabel, 1);
+    m_checkButton = new QPushButton(tr("Check"), this);
+    m_checkButton->setObjectName("layoutCheckButton");
+    m_checkButton->setToolTip(tr("Look through the recorded frames for bodies the layout edits pushed into each "
+                                 "other and steps they made through walls (on a large shot this takes a few "
+                                 "seconds, so it waits to be asked)"));
+    connect(m_checkButton, &QPushButton::clicked, this, &LayoutPanel::checkRequested);
+    checkRow->addWidget(m_checkButton, 0, Qt::AlignTop);
+    column->addLayout(checkRow);
     m_clashes = new QTreeWidget(this);
     m_clashes->setObjectName("layoutClashes");
     m_clashes->setRootIsDecorated(false);
@@ -288,6 +299,14 @@ void LayoutPanel::removeSelected()
     auto* command = new DeleteItemsCommand(m_document, ops);
     m_document.setSelection({});
     m_document.undoStack()->push(command);
+}
+
+void LayoutPanel::showCheckSkipped(std::size_t agentFrames)
+{
+    m_clashes->clear();
+    m_clashes->hide();
+    m_checkLabel->setText(tr("The shot is large (%L1 agent-frames): press Check to look for what the layout edits "
+                             "broke.").arg(qulonglong(agentFrames)));
 }
 
 void LayoutPanel::showCheck(const sim::LayoutCheck& check)

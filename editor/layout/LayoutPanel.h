@@ -18,6 +18,7 @@
 class QAction;
 class QCheckBox;
 class QLabel;
+class QPushButton;
 class QListWidget;
 class QListWidgetItem;
 class QTreeWidget;
@@ -51,6 +52,9 @@ public:
     void removeSelected();
     // Shows what the layout check found; an empty check clears the list.
     void showCheck(const sim::LayoutCheck& check);
+    // The shot was too large to check by itself (`agentFrames` laid-out agent-frames): the
+    // panel says so and offers Check.
+    void showCheckSkipped(std::size_t agentFrames);
 
     // As narrow as the right column's docks start (Properties' 330 px): it shares that column.
     QSize sizeHint() const override { return {300, 240}; }
@@ -62,6 +66,8 @@ public:
 signals:
     // The user asked to see a clash: frame `frame`, agent `agent`.
     void clashRequested(std::size_t frame, sim::AgentId agent);
+    // The user asked for the check (Check).
+    void checkRequested();
     void problem(const QString& text);
 
 protected:
@@ -80,6 +86,7 @@ private:
     QListWidget* m_list = nullptr;
     QTreeWidget* m_clashes = nullptr;
     QLabel* m_checkLabel = nullptr;
+    QPushButton* m_checkButton = nullptr;
     QCheckBox* m_clickedOnly = nullptr;
     QAction* m_add[sim::kLayoutKindCount] = {};
     QAction* m_up = nullptr;

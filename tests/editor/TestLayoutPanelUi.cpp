@@ -26,7 +26,9 @@
 #include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QLineEdit>
+#include <QLabel>
 #include <QListWidget>
+#include <QPushButton>
 #include <QSpinBox>
 #include <QTest>
 #include <QTimer>
@@ -511,6 +513,27 @@ private slots:
         const glm::vec3 was = recordedFeet(window, 4, 24);
         dragOnGround(window, {{was.x, was.z}, {was.x + 2.0f, was.z}});
         QVERIFY(glm::length(window.document().scene().layout.ops[0].offset - glm::vec2(2.0f, 0.0f)) < 0.05f);
+    }
+
+    // A shot too large to check in a moment (here: a limit of 10 agent-frames) is not
+    // checked by itself: the panel says so, and Check runs it.
+    void aLargeShotIsCheckedWhenAsked()
+    {
+        MainWindow window;
+        window.layoutCheck().setAutomaticLimit(10);
+        const QByteArray withLayer =
+            kLayoutScene + "layout:\n  - {op: translate, agents: {ids: [1]}, offset: [0, 8]}\n";
+        QVERIFY(showWithYaml(window, m_dir, "large.yaml", withLayer));
+        QVERIFY(playUntilRecorded(window, 24));
+        showLayoutDock(window);
+        auto* label = window.layoutPanel().findChild<QLabel*>("layoutCheckLabel");
+        QTRY_VERIFY2(label->text().contains("press Check"), qPrintable(label->text()));
+        QVERIFY(!hudHasLayoutLine(window));
+        QVERIFY(window.layoutCheck().last().overlaps.empty());
+        QTest::mouseClick(window.layoutPanel().findChild<QPushButton*>("layoutCheckButton"), Qt::LeftButton);
+        QVERIFY(!window.layoutCheck().last().overlaps.empty());
+        QVERIFY(hudHasLayoutLine(window));
+        QVERIFY2(label->text().startsWith("The layout edits make"), qPrintable(label->text()));
     }
 
     void renamingAGroupOrTypeKeepsTheOperationsOnIt()
