@@ -165,7 +165,8 @@ void MainWindow::createDocks()
     m_brains->setObjectName("brainEditor");
     // The brain editor shares the centre with the viewport in its own workspace (Ctrl+B),
     // where the outliner, properties and history give it their room.
-    m_workspace = new WorkspaceLayout(*this, m_viewport, m_brains, {outlinerDock, propertiesDock, historyDock, layoutDock});
+    m_workspace =
+        new WorkspaceLayout(*this, m_viewport, m_brains, {outlinerDock, propertiesDock, historyDock, layoutDock});
     // Room for Properties' fields at 1280 x 800 without a sideways scroll bar, and most of
     // the right column for them (History needs a few lines).
     // The timeline keeps most of the foot for its scrub bar, the messages the rest.
@@ -188,8 +189,9 @@ QDockWidget* MainWindow::createLayoutDock(QDockWidget* besides)
     tabifyDockWidget(besides, dock);
     besides->raise();
     dock->toggleViewAction()->setIcon(themeIcon("action-layout"));
-    dock->toggleViewAction()->setToolTip(tr("Show the Layout Edits panel: edits of the recorded crowd (move, turn, retime, "
-                                            "mirror, delete, spread) without simulating again"));
+    dock->toggleViewAction()->setToolTip(tr("Show the Layout Edits panel: edits of the recorded crowd (move, turn, "
+                                            "retime, mirror, delete, spread, copy, re-dress, re-clip, resolve) "
+                                            "without simulating again"));
     m_layout->setContextSource([this] {
         LayoutContext context;
         context.frame = m_simulation->currentFrame();
