@@ -57,25 +57,14 @@ void LayoutReader::readSwap(const YAML::Node& item, const std::string& key, cons
             m_f.error(item["type"].Mark(), key + ".type", "no agent type named '" + op.type + "'");
     }
     // Out of range for the type it shows (when the file says which): as for a placed agent.
-    auto index = [&](const char* name, int& out, std::size_t count, const char* what) {
-        std::uint32_t v = 0;
-        if (!m_f.readU32(item, name, key, v, false))
-            return;
-        if (type && v >= count) {
-            m_f.error(item[name].Mark(), key + "." + name,
-                      std::string(what) + " " + std::to_string(v) + " is out of range: type '" + op.type + "' has " +
-                          std::to_string(count));
-            return;
-        }
-        out = int(v);
-    };
-    if (item["look"].IsDefined())
-        index("look", op.look, type ? std::max<std::size_t>(1, type->variation.looks.size()) : 0, "look");
+    const std::string known = type ? op.type : std::string();
+    m_f.readIndexOfType(item, "look", key, op.look, type ? std::max<std::size_t>(1, type->variation.looks.size()) : 0,
+                        known);
     if (const YAML::Node tint = item["tint"]; tint.IsDefined()) {
         if (tint.IsScalar() && tint.Scalar() == "none")
             op.tint = -1;
         else
-            index("tint", op.tint, type ? type->variation.tints.size() : 0, "tint");
+            m_f.readIndexOfType(item, "tint", key, op.tint, type ? type->variation.tints.size() : 0, known);
     }
     if (op.type.empty() && op.look < 0 && op.tint == LayoutOp::kKeepTint && !item["look"].IsDefined() &&
         !item["tint"].IsDefined())

@@ -441,20 +441,10 @@ void SceneReader::readAgents(const YAML::Node& node, Scene& scene)
 void SceneReader::readAgentVariation(const YAML::Node& item, const std::string& key, const Scene& scene, Agent& a)
 {
     const AgentType* type = scene.findAgentType(a.type);
-    auto index = [&](const char* name, int& out, std::size_t count, const char* what) {
-        std::uint32_t v = 0;
-        if (!item[name].IsDefined() || !m_f.readU32(item, name, key, v, false))
-            return;
-        if (type && v >= count) {
-            m_f.error(item[name].Mark(), key + "." + name,
-                      std::string(what) + " " + std::to_string(v) + " is out of range: type '" + a.type + "' has " +
-                          std::to_string(count));
-            return;
-        }
-        out = int(v);
-    };
-    index("look", a.look, type ? std::max<std::size_t>(1, type->variation.looks.size()) : 0, "look");
-    index("tint", a.tint, type ? type->variation.tints.size() : 0, "tint");
+    const std::string known = type ? a.type : std::string();
+    m_f.readIndexOfType(item, "look", key, a.look, type ? std::max<std::size_t>(1, type->variation.looks.size()) : 0,
+                        known);
+    m_f.readIndexOfType(item, "tint", key, a.tint, type ? type->variation.tints.size() : 0, known);
     m_f.readFloat(item, "height", key, a.heightScale, false, Range::Positive);
 }
 

@@ -283,6 +283,22 @@ bool YamlFields::readU32(const YAML::Node& map, const char* name, const std::str
     return true;
 }
 
+bool YamlFields::readIndexOfType(const YAML::Node& map, const char* name, const std::string& key, int& out,
+                                 std::size_t count, const std::string& typeName)
+{
+    std::uint32_t v = 0;
+    if (!map[name].IsDefined() || !readU32(map, name, key, v, false))
+        return false;
+    if (!typeName.empty() && v >= count) {
+        error(map[name].Mark(), key + "." + name,
+              std::string(name) + " " + std::to_string(v) + " is out of range: type '" + typeName + "' has " +
+                  std::to_string(count));
+        return false;
+    }
+    out = int(v);
+    return true;
+}
+
 bool YamlFields::readBool(const YAML::Node& map, const char* name, const std::string& key, bool& out, bool required)
 {
     YAML::Node node = find(map, name, key, required);

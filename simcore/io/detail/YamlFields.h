@@ -48,6 +48,11 @@ public:
                   bool required, std::uint64_t maxValue);
     bool readU32(const YAML::Node& map, const char* name, const std::string& key, std::uint32_t& out,
                  bool required);
+    // An optional index into the `count` items (looks, tints) the agent type `typeName`
+    // has, set into `out` when given and in range; out of range is an error naming the
+    // type. An empty typeName (the type is unknown) takes any index.
+    bool readIndexOfType(const YAML::Node& map, const char* name, const std::string& key, int& out,
+                         std::size_t count, const std::string& typeName);
     bool readBool(const YAML::Node& map, const char* name, const std::string& key, bool& out, bool required);
     bool readString(const YAML::Node& map, const char* name, const std::string& key, std::string& out,
                     bool required);
