@@ -17,6 +17,12 @@ namespace throng::sim {
 
 using namespace detail;
 
+namespace {
+// The density sum's unit: 2^-40 of a person per square metre, far below a float's
+// rounding at any density, and 2^23 persons per square metre before it overflows.
+constexpr double kDensityFixedPoint = 1099511627776.0;
+}  // namespace
+
 int StepView::lightState(std::size_t light) const
 {
     return int(lightPhaseAt(set.lights[light], clock.timeS()));
@@ -145,14 +151,16 @@ void CountPhase::samplePeakDensity(const StepView& v)
             if (a.out[i] || v.type(i).kind != AgentKind::Pedestrian)
                 continue;
             const glm::vec2 p = xz(a.pos[i]);
-            float density = 0.0f;
+            // Summed in fixed point, which is exact: the same total in whatever order the
+            // grid offers the neighbours (its cells change size with the crowd).
+            std::int64_t density = 0;
             v.grid.forEachNear(p, kDensityReachM, [&](std::uint32_t j, const glm::vec3& q) {
                 if (v.type(j).kind != AgentKind::Pedestrian)
                     return;
                 const glm::vec2 d = xz(q) - p;
-                density += densityWeight(glm::dot(d, d));
+                density += std::int64_t(densityWeight(glm::dot(d, d)) * kDensityFixedPoint);
             });
-            local = std::max(local, density);
+            local = std::max(local, float(double(density) / double(kDensityFixedPoint)));
         }
         const std::lock_guard<std::mutex> guard(lock);
         peak = std::max(peak, local);
