@@ -20,25 +20,75 @@ std::pair<std::size_t, std::size_t> part(std::size_t n, std::size_t parts, std::
 }
 }  // namespace
 
-void NeighbourGrid::configure(glm::vec2 boundsMin, glm::vec2 boundsMax, float cellM)
+void NeighbourGrid::configure(glm::vec2 boundsMin, glm::vec2 boundsMax, float cellM, float coarseM, GridCells cells)
 {
-    const glm::vec2 size = glm::max(boundsMax - boundsMin, glm::vec2(1.0f));
+    m_min = boundsMin;
+    m_max = boundsMax;
+    m_rebuilds = 0;
+    m_fineM = cappedCellM(cellM);
+    m_coarseM = coarseM > cellM ? cappedCellM(coarseM) : 0.0f;
+    m_choice = m_coarseM > m_fineM ? cells : GridCells::Fine;
+    setCell(m_choice == GridCells::Fine ? m_fineM : m_coarseM);
+    m_sorted.clear();
+    m_sortedPos.clear();
+}
+
+float NeighbourGrid::cappedCellM(float cellM) const
+{
     // Cap the grid so a huge world with tiny agents still fits in memory; agents
     // outside the bounds are clamped into border cells.
-    m_cell = std::max({cellM, size.x / kMaxCellsPerAxis, size.y / kMaxCellsPerAxis, 1e-3f});
+    const glm::vec2 size = glm::max(m_max - m_min, glm::vec2(1.0f));
+    return std::max({cellM, size.x / kMaxCellsPerAxis, size.y / kMaxCellsPerAxis, 1e-3f});
+}
+
+void NeighbourGrid::setCell(float cellM)
+{
+    const glm::vec2 size = glm::max(m_max - m_min, glm::vec2(1.0f));
+    m_cell = cellM;
     m_inv = 1.0f / m_cell;
-    m_min = boundsMin;
     m_cols = std::max(1, int(std::ceil(size.x * m_inv)));
     m_rows = std::max(1, int(std::ceil(size.y * m_inv)));
-    m_start.assign(std::size_t(m_cols) * std::size_t(m_rows) + 1, 0);
+    // A new table, so that one of other cells does not keep the old one's memory.
+    std::vector<std::uint32_t>(std::size_t(m_cols) * std::size_t(m_rows) + 1, 0).swap(m_start);
+}
+
+void NeighbourGrid::rebuild(std::span<const glm::vec3> positions, bool sortByHeight, std::span<const std::uint8_t> skip,
+                            const ThreadTeam* team)
+{
+    // Sorted by height (fliers), a grid keeps its cells: the boids' sweeps are tuned to
+    // them. Otherwise, when configure's choice wants other cells, sort again into them.
+    const bool choose = m_choice == GridCells::ByCrowd && m_coarseM > 0.0f && !sortByHeight &&
+                        m_rebuilds++ % std::uint64_t(kChooseEvery) == 0;
+    sortIntoCells(positions, sortByHeight, skip, team);
+    if (const float wanted = choose ? chosenCellM() : m_cell; wanted != m_cell) {
+        setCell(wanted);
+        sortIntoCells(positions, sortByHeight, skip, team);
+    }
+}
+
+float NeighbourGrid::chosenCellM() const
+{
+    // How many agents share an agent's cell, on average (itself included): the sum over
+    // cells of their counts squared, over the agents. Integers: the same on any thread count.
+    const std::uint64_t agents = m_sorted.size();
+    if (agents == 0)
+        return m_cell;
+    std::uint64_t shared = 0;
+    for (std::size_t c = 0; c + 1 < m_start.size(); ++c) {
+        const std::uint64_t count = m_start[c + 1] - m_start[c];
+        shared += count * count;
+    }
+    if (m_cell == m_coarseM)
+        return shared > 8 * agents ? m_fineM : m_cell;
+    return shared < 2 * agents ? m_coarseM : m_cell;
 }
 
 // A counting sort whose only serial pass is one load and one store per agent: each
 // agent's rank in its cell is the cell's count before it, so indices stay ascending
 // within a cell (the order is the serial stable sort's) and the scatter needs no
 // cursors. Cells, the prefix sums over cells and the scatter run in parallel.
-void NeighbourGrid::rebuild(std::span<const glm::vec3> positions, bool sortByHeight, std::span<const std::uint8_t> skip,
-                            const ThreadTeam* team)
+void NeighbourGrid::sortIntoCells(std::span<const glm::vec3> positions, bool sortByHeight,
+                                  std::span<const std::uint8_t> skip, const ThreadTeam* team)
 {
     const std::size_t n = positions.size();
     const std::size_t cells = m_start.size() - 1;

@@ -18,10 +18,32 @@
 
 namespace throng::sim {
 
+// Which cell edge a grid not sorted by height uses (NeighbourGrid::configure).
+enum class GridCells : std::uint8_t {
+    ByCrowd,  // the coarse one while the crowd is spread out, the fine one once it gathers
+    Fine,     // always configure's
+    Coarse,   // always the coarse one
+};
+
 class NeighbourGrid {
 public:
-    // cellM: cell edge in metres (> 0), usually the largest perception radius.
-    void configure(glm::vec2 boundsMin, glm::vec2 boundsMax, float cellM);
+    // cellM: cell edge in metres (> 0), usually the largest perception radius. A grid not
+    // sorted by height may use cells of edge coarseM (> cellM) where `cells` says. ByCrowd
+    // starts with the coarse ones and measures, at the first rebuild and every
+    // kChooseEvery-th after it, how many agents share an agent's cell on average: with the
+    // coarse cells more than eight (the crowd has gathered, and a query's rows hold many
+    // agents beyond its reach), it takes the fine ones; with those fewer than two (the
+    // crowd lies spread out, and a query reads rows of cells holding almost nobody, in a
+    // table of millions of cells where the ground is wide), the coarse ones again. No
+    // query's answer depends on the cells: the k-nearest searches rank what they are
+    // offered, the others test the distance, and the counts add up the same in any order.
+    // Only the time does.
+    void configure(glm::vec2 boundsMin, glm::vec2 boundsMax, float cellM, float coarseM = 0.0f,
+                   GridCells cells = GridCells::Fine);
+    // The edge of the cells in use now, and configure's.
+    float cellM() const { return m_cell; }
+    float fineCellM() const { return m_fineM; }
+    static constexpr int kChooseEvery = 16;
     // Sorts agent indices into cells by their (x, z); with sortByHeight, each cell is also
     // ordered by y so forEachNear3D can skip the agents far above or below. Reuses its
     // buffers. Agents with skip[i] != 0 (agents that left through an exit) are not indexed;
@@ -304,7 +326,6 @@ public:
     // The position of the k-th agent of order(), from the grid's copy.
     glm::vec3 orderedPosition(std::size_t k) const { return m_sortedPos[k]; }
     bool sortedByHeight() const { return m_byHeight; }
-    float cellM() const { return m_cell; }
     std::size_t memoryBytes() const
     {
         return (m_start.capacity() + m_sorted.capacity() + m_cellOf.capacity() + m_rank.capacity()) *
@@ -348,6 +369,16 @@ private:
     // column first); false when they are too many. Called only when !aimedAt(p, r, sweep).
     bool aimSweep(glm::vec3 p, float r, Sweep& sweep) const;
 
+    // A cell edge, made no smaller than the bounds allow (kMaxCellsPerAxis).
+    float cappedCellM(float cellM) const;
+    // The geometry and an empty table for cells of edge cellM over the configured bounds.
+    void setCell(float cellM);
+    // rebuild's sort, on the cells in use.
+    void sortIntoCells(std::span<const glm::vec3> positions, bool sortByHeight, std::span<const std::uint8_t> skip,
+                       const ThreadTeam* team);
+    // Which cell edge configure's choice wants after this rebuild (the one in use if
+    // none other).
+    float chosenCellM() const;
     // rebuild with one chunk: count, prefix sums and scatter in place.
     void rebuildSerial(std::span<const glm::vec3> positions, std::span<const std::uint8_t> skip);
     // Sorts cells [firstCell, endCell) by height (rebuild's last pass).
@@ -374,8 +405,11 @@ private:
     int cellZ(float z) const { return cellOf((z - m_min.y) * m_inv, m_rows); }
     static int cellOf(float c, int n) { return c >= 0.0f ? int(std::min(c, float(n) - 0.5f)) : 0; }
 
-    glm::vec2 m_min{0.0f};
+    glm::vec2 m_min{0.0f}, m_max{1.0f};
     float m_cell = 1.0f, m_inv = 1.0f;
+    float m_fineM = 1.0f, m_coarseM = 0.0f;  // configure's cells (coarse 0: none)
+    GridCells m_choice = GridCells::Fine;
+    std::uint64_t m_rebuilds = 0;
     int m_cols = 1, m_rows = 1;
     std::vector<std::uint32_t> m_start;   // cols*rows + 1 prefix sums
     std::vector<std::uint32_t> m_sorted;  // agent indices by cell

@@ -58,6 +58,9 @@ struct WorldOptions {
     // false: the boids kernel steers four boids at a time even where the CPU has AVX2,
     // instead of eight (the result is the same; tests compare)
     bool steerEight = true;
+    // The neighbour grid's cells on the ground: by how spread out the crowd is, or always
+    // the fine or the coarse ones (the result is the same; tests compare, benches time)
+    GridCells gridCells = GridCells::ByCrowd;
 };
 
 class World {
@@ -154,6 +157,9 @@ public:
     const StepCounters& counters() const { return m_count.counters(); }
     // Bytes held by the per-agent arrays and the neighbour grid.
     std::size_t memoryBytes() const;
+    // The neighbour grid's cell edge now, m: on the ground it follows how spread out the
+    // crowd is (WorldOptions::gridCells, NeighbourGrid.h).
+    float neighbourCellM() const { return m_grid.cellM(); }
 
     // Light state of a traffic light at the current time: 0 green, 1 yellow, 2 red.
     int lightState(std::size_t light) const;

@@ -161,7 +161,8 @@ void World::restoreDynamicState(const WorldState& s, const std::vector<std::uint
         }
     }
     // A grid of other cells (an edit changed a perception radius) is rebuilt by the next step.
-    const bool sameCells = s.grid.cellM() == m_grid.cellM() && s.grid.sortedByHeight() == m_grid.sortedByHeight();
+    const bool sameCells =
+        s.grid.fineCellM() == m_grid.fineCellM() && s.grid.sortedByHeight() == m_grid.sortedByHeight();
     if (sameCells)
         m_grid = s.grid;
     m_gridCurrent = sameCells && s.gridCurrent;

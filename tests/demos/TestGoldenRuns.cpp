@@ -12,6 +12,7 @@
 
 #include <QTest>
 
+#include <algorithm>
 #include <bit>
 #include <cstdio>
 #include <cstdlib>
@@ -89,9 +90,11 @@ std::uint64_t countersHash(const StepCounters& c)
 }
 
 // "frames-hash counters-hash" of a run, as the golden file holds it.
-std::string runHashes(const GoldenRun& run)
+std::string runHashes(const GoldenRun& run, GridCells cells = GridCells::ByCrowd)
 {
-    World world(run.scene(), threads(2));
+    WorldOptions options = threads(2);
+    options.gridCells = cells;
+    World world(run.scene(), options);
     FrameCache cache;
     world.startRecording(cache);
     std::vector<AgentFrame> frame;
@@ -152,6 +155,57 @@ private slots:
             return;
         }
         QVERIFY2(changed.isEmpty(), qPrintable("runs changed:\n" + changed.join('\n')));
+    }
+
+    // The neighbour grid's cells change no result, only the time: every run gives its
+    // recorded hashes with the fine cells throughout and with the coarse ones throughout
+    // (runsAreUnchanged runs them with the cells the World chooses as it goes).
+    void cellsChangeNoRun()
+    {
+        const std::map<std::string, std::string> golden = readGolden();
+        QStringList changed;
+        for (const GridCells cells : {GridCells::Fine, GridCells::Coarse})
+            for (const GoldenRun& run : goldenRuns()) {
+                const std::string now = runHashes(run, cells);
+                if (golden.at(run.name) != now)
+                    changed << QString::fromStdString(run.name + (cells == GridCells::Fine ? " fine" : " coarse") +
+                                                      " gave " + now + ", recorded " + golden.at(run.name));
+            }
+        QVERIFY2(changed.isEmpty(), qPrintable("runs changed with the cells:\n" + changed.join('\n')));
+    }
+
+    // A crowd that gathers: rings of walkers 3 m apart crossing to the far side through one
+    // middle. While they stand spread out the World's grid has the coarse cells (twice the
+    // fine edge); as they pack into the middle it takes the fine ones, and once they have
+    // passed through and spread again, the coarse ones. The frames and counters are those
+    // of the run on fine cells throughout, and of the one on coarse cells.
+    void cellsFollowTheCrowd()
+    {
+        CrossLayout layout;
+        layout.innerRadiusM = 6.0f;
+        layout.ringGapM = 3.0f;
+        layout.spacingM = 3.0f;
+        const Scene scene = makeCrossScenario(400, 3, layout);
+        const int frames = 24 * 90;  // the fine cells from 11 s, the coarse again from 77 s
+        WorldOptions options = threads(2);
+        World world(scene, options);
+        const float fine = 0.5f * scene.agentTypes.at(0).perceptionM;  // World.cpp: half the perception
+        std::vector<float> cells;
+        for (int f = 0; f < frames; ++f) {
+            cells.push_back(world.neighbourCellM());
+            world.step();
+        }
+        QCOMPARE(cells.front(), 2.0f * fine);
+        const auto firstFine = std::find(cells.begin(), cells.end(), fine);
+        QVERIFY2(firstFine != cells.end(), "the grid never took the fine cells in the packed middle");
+        QVERIFY2(std::find(firstFine, cells.end(), 2.0f * fine) != cells.end(),
+                 "the grid kept the fine cells after the crowd spread again");
+        for (const float c : cells)
+            QVERIFY(c == fine || c == 2.0f * fine);
+        const GoldenRun run{"gathering", [&] { return scene; }, frames};
+        const std::string chosen = runHashes(run);
+        QCOMPARE(runHashes(run, GridCells::Fine), chosen);
+        QCOMPARE(runHashes(run, GridCells::Coarse), chosen);
     }
 
     // The hashes see a change: a spawn area moved by a millimetre, or one more frame,

@@ -143,6 +143,65 @@ private slots:
         QVERIFY(offered.count({7, 8}));
     }
 
+    // A grid allowed coarse cells (twice the fine edge) picks them by how many agents share
+    // an agent's cell: coarse from the start while the agents stand 4 m apart (one each in
+    // the fine cells); fine at the first choice after they pack 0.5 m apart (64 to a coarse
+    // cell), which comes every kChooseEvery-th rebuild, not before; coarse again once
+    // spread. A grid told Fine or Coarse keeps its cells. Whatever the cells, a query
+    // visits every agent within its radius, once.
+    void cellsFollowTheCrowd()
+    {
+        std::vector<glm::vec3> spread, packed;
+        for (int x = 0; x < 40; ++x)
+            for (int z = 0; z < 40; ++z) {
+                spread.push_back({-78.0f + 4.0f * float(x), 0.0f, -78.0f + 4.0f * float(z)});
+                packed.push_back({-10.0f + 0.5f * float(x), 0.0f, -10.0f + 0.5f * float(z)});
+            }
+        auto visitsAll = [](const NeighbourGrid& grid, const std::vector<glm::vec3>& pos) {
+            for (std::size_t q = 0; q < pos.size(); q += 37) {
+                const glm::vec2 p(pos[q].x, pos[q].z);
+                std::set<std::uint32_t> found;
+                bool twice = false;
+                grid.forEachNear(p, 3.0f, [&](std::uint32_t j) { twice = twice || !found.insert(j).second; });
+                if (twice)
+                    return false;
+                for (std::uint32_t j = 0; j < pos.size(); ++j) {
+                    const float dx = pos[j].x - p.x, dz = pos[j].z - p.y;
+                    if (dx * dx + dz * dz <= 9.0f && !found.count(j))
+                        return false;
+                }
+            }
+            return true;
+        };
+        NeighbourGrid grid;
+        grid.configure({-80.0f, -80.0f}, {80.0f, 80.0f}, 2.0f, 4.0f, GridCells::ByCrowd);
+        QCOMPARE(grid.fineCellM(), 2.0f);
+        grid.rebuild(spread);
+        QCOMPARE(grid.cellM(), 4.0f);
+        QVERIFY(visitsAll(grid, spread));
+        for (int k = 1; k < NeighbourGrid::kChooseEvery; ++k) {
+            grid.rebuild(packed);
+            QCOMPARE(grid.cellM(), 4.0f);  // not yet its turn to choose
+        }
+        QVERIFY(visitsAll(grid, packed));
+        grid.rebuild(packed);
+        QCOMPARE(grid.cellM(), 2.0f);
+        QVERIFY(visitsAll(grid, packed));
+        for (int k = 0; k < NeighbourGrid::kChooseEvery; ++k)
+            grid.rebuild(spread);
+        QCOMPARE(grid.cellM(), 4.0f);
+        QVERIFY(visitsAll(grid, spread));
+        for (const GridCells fixed : {GridCells::Fine, GridCells::Coarse}) {
+            NeighbourGrid kept;
+            kept.configure({-80.0f, -80.0f}, {80.0f, 80.0f}, 2.0f, 4.0f, fixed);
+            const float edge = fixed == GridCells::Fine ? 2.0f : 4.0f;
+            for (int k = 0; k <= NeighbourGrid::kChooseEvery; ++k) {
+                kept.rebuild(k % 2 ? spread : packed);
+                QCOMPARE(kept.cellM(), edge);
+            }
+        }
+    }
+
     void rebuildTracksMovement()
     {
         std::vector<glm::vec3> pos{{0, 0, 0}, {10, 0, 10}};
