@@ -26,7 +26,10 @@ void NeighbourGrid::configure(glm::vec2 boundsMin, glm::vec2 boundsMax, float ce
     m_max = boundsMax;
     m_rebuilds = 0;
     m_fineM = cappedCellM(cellM);
-    m_coarseM = coarseM > cellM ? cappedCellM(coarseM) : 0.0f;
+    // The coarse cells: the fine ones times a power of two, at most coarseM.
+    m_coarseM = m_fineM;
+    while (2.0f * m_coarseM <= coarseM)
+        m_coarseM *= 2.0f;
     m_choice = m_coarseM > m_fineM ? cells : GridCells::Fine;
     setCell(m_choice == GridCells::Fine ? m_fineM : m_coarseM);
     m_sorted.clear();
@@ -57,7 +60,7 @@ void NeighbourGrid::rebuild(std::span<const glm::vec3> positions, bool sortByHei
 {
     // Sorted by height (fliers), a grid keeps its cells: the boids' sweeps are tuned to
     // them. Otherwise, when configure's choice wants other cells, sort again into them.
-    const bool choose = m_choice == GridCells::ByCrowd && m_coarseM > 0.0f && !sortByHeight &&
+    const bool choose = m_choice == GridCells::ByCrowd && m_coarseM > m_fineM && !sortByHeight &&
                         m_rebuilds++ % std::uint64_t(kChooseEvery) == 0;
     sortIntoCells(positions, sortByHeight, skip, team);
     if (const float wanted = choose ? chosenCellM() : m_cell; wanted != m_cell) {
@@ -68,8 +71,9 @@ void NeighbourGrid::rebuild(std::span<const glm::vec3> positions, bool sortByHei
 
 float NeighbourGrid::chosenCellM() const
 {
-    // How many agents share an agent's cell, on average (itself included): the sum over
-    // cells of their counts squared, over the agents. Integers: the same on any thread count.
+    // How many others share an agent's cell, on average: the sum over cells of their
+    // counts squared, over the agents, less the agent itself. Integers: the same on any
+    // thread count.
     const std::uint64_t agents = m_sorted.size();
     if (agents == 0)
         return m_cell;
@@ -78,9 +82,15 @@ float NeighbourGrid::chosenCellM() const
         const std::uint64_t count = m_start[c + 1] - m_start[c];
         shared += count * count;
     }
-    if (m_cell == m_coarseM)
-        return shared > 8 * agents ? m_fineM : m_cell;
-    return shared < 2 * agents ? m_coarseM : m_cell;
+    const double others = double(shared) / double(agents) - 1.0;
+    if (others >= kKeepLeast && others <= kKeepMost)
+        return m_cell;
+    // The widest cells (fine, twice, four times) that would hold at most kAimMost others,
+    // the crowd spread over them as it is over these; else the fine ones.
+    for (float edge = m_coarseM; edge > m_fineM; edge *= 0.5f)
+        if (others * double(edge / m_cell) * double(edge / m_cell) <= kAimMost)
+            return edge;
+    return m_fineM;
 }
 
 // A counting sort whose only serial pass is one load and one store per agent: each

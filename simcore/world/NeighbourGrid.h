@@ -20,30 +20,31 @@ namespace throng::sim {
 
 // Which cell edge a grid not sorted by height uses (NeighbourGrid::configure).
 enum class GridCells : std::uint8_t {
-    ByCrowd,  // the coarse one while the crowd is spread out, the fine one once it gathers
-    Fine,     // always configure's
-    Coarse,   // always the coarse one
+    ByCrowd,  // by how many agents share a cell (configure), as the crowd spreads and gathers
+    Fine,     // always configure's cellM
+    Coarse,   // always the coarsest
 };
 
 class NeighbourGrid {
 public:
     // cellM: cell edge in metres (> 0), usually the largest perception radius. A grid not
-    // sorted by height may use cells of edge coarseM (> cellM) where `cells` says. ByCrowd
-    // starts with the coarse ones and measures, at the first rebuild and every
-    // kChooseEvery-th after it, how many agents share an agent's cell on average: with the
-    // coarse cells more than eight (the crowd has gathered, and a query's rows hold many
-    // agents beyond its reach), it takes the fine ones; with those fewer than two (the
-    // crowd lies spread out, and a query reads rows of cells holding almost nobody, in a
-    // table of millions of cells where the ground is wide), the coarse ones again. No
-    // query's answer depends on the cells: the k-nearest searches rank what they are
-    // offered, the others test the distance, and the counts add up the same in any order.
-    // Only the time does.
+    // sorted by height may also use cells wider by powers of two (2, 4, ...), up to
+    // coarseM, where `cells` says. ByCrowd starts with the coarsest and measures, at the first
+    // rebuild and every kChooseEvery-th after it, how many others share an agent's cell on
+    // average. Fewer than kKeepLeast: the crowd lies spread out, and a query reads rows of
+    // cells that hold almost nobody, in a table of millions of cells where the ground is
+    // wide. More than kKeepMost: the crowd has gathered, and a query's rows hold many
+    // agents beyond its reach. Either way it takes the widest cells that would hold no
+    // more than kAimMost others (else the fine ones). No query's answer depends on the
+    // cells: the k-nearest searches rank what they are offered, the others test the
+    // distance, and the counts add up the same in any order. Only the time does.
     void configure(glm::vec2 boundsMin, glm::vec2 boundsMax, float cellM, float coarseM = 0.0f,
                    GridCells cells = GridCells::Fine);
     // The edge of the cells in use now, and configure's.
     float cellM() const { return m_cell; }
     float fineCellM() const { return m_fineM; }
     static constexpr int kChooseEvery = 16;
+    static constexpr double kKeepLeast = 1.0, kKeepMost = 8.0, kAimMost = 4.0;
     // Sorts agent indices into cells by their (x, z); with sortByHeight, each cell is also
     // ordered by y so forEachNear3D can skip the agents far above or below. Reuses its
     // buffers. Agents with skip[i] != 0 (agents that left through an exit) are not indexed;
@@ -407,7 +408,7 @@ private:
 
     glm::vec2 m_min{0.0f}, m_max{1.0f};
     float m_cell = 1.0f, m_inv = 1.0f;
-    float m_fineM = 1.0f, m_coarseM = 0.0f;  // configure's cells (coarse 0: none)
+    float m_fineM = 1.0f, m_coarseM = 1.0f;  // configure's cells, and the coarsest (fine: none)
     GridCells m_choice = GridCells::Fine;
     std::uint64_t m_rebuilds = 0;
     int m_cols = 1, m_rows = 1;

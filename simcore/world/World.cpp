@@ -135,9 +135,9 @@ void World::build(const Scene& scene, const WorldOptions& options)
         m_allFliers = m_allFliers && t.kind == AgentKind::Flier;
         m_maxRadius = std::max(m_maxRadius, t.radius);
     }
-    // On the ground, cells twice as wide while the crowd is spread out (NeighbourGrid.h);
-    // fliers keep theirs (the boids' sweep is tuned to them).
-    m_grid.configure(scene.settings.boundsMin, scene.settings.boundsMax, cell, m_hasFliers ? 0.0f : 2.0f * cell,
+    // On the ground, cells up to four times as wide while the crowd is spread out
+    // (NeighbourGrid.h); fliers keep theirs (the boids' sweep is tuned to them).
+    m_grid.configure(scene.settings.boundsMin, scene.settings.boundsMax, cell, m_hasFliers ? 0.0f : 4.0f * cell,
                      options.gridCells);
     m_grid.rebuild(m_agents.pos, m_hasFliers, m_agents.out, &m_team);
     // Brains change weights and speeds per agent, layers or priorities change whom an

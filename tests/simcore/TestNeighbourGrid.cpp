@@ -143,20 +143,22 @@ private slots:
         QVERIFY(offered.count({7, 8}));
     }
 
-    // A grid allowed coarse cells (twice the fine edge) picks them by how many agents share
-    // an agent's cell: coarse from the start while the agents stand 4 m apart (one each in
-    // the fine cells); fine at the first choice after they pack 0.5 m apart (64 to a coarse
-    // cell), which comes every kChooseEvery-th rebuild, not before; coarse again once
-    // spread. A grid told Fine or Coarse keeps its cells. Whatever the cells, a query
-    // visits every agent within its radius, once.
+    // A grid allowed cells of 1, 2 and 4 m picks them by how many others share an agent's
+    // cell: 4 m from the start while the agents stand 4 m apart (alone in their cells); at
+    // the first choice after they close up to 1 m apart (15 others in a 4 m cell, 3 in a
+    // 2 m one), 2 m; once packed 0.5 m apart, 1 m; 4 m again once spread. The choice comes
+    // every kChooseEvery-th rebuild, not before. A grid told Fine or Coarse keeps its
+    // cells. Whatever the cells, a query visits every agent within its radius, once.
     void cellsFollowTheCrowd()
     {
-        std::vector<glm::vec3> spread, packed;
-        for (int x = 0; x < 40; ++x)
-            for (int z = 0; z < 40; ++z) {
-                spread.push_back({-78.0f + 4.0f * float(x), 0.0f, -78.0f + 4.0f * float(z)});
-                packed.push_back({-10.0f + 0.5f * float(x), 0.0f, -10.0f + 0.5f * float(z)});
-            }
+        auto lattice = [](float spacing) {
+            std::vector<glm::vec3> pos;
+            for (int x = 0; x < 40; ++x)
+                for (int z = 0; z < 40; ++z)
+                    pos.push_back({-78.0f + spacing * float(x), 0.0f, -78.0f + spacing * float(z)});
+            return pos;
+        };
+        const std::vector<glm::vec3> spread = lattice(4.0f), close = lattice(1.0f), packed = lattice(0.5f);
         auto visitsAll = [](const NeighbourGrid& grid, const std::vector<glm::vec3>& pos) {
             for (std::size_t q = 0; q < pos.size(); q += 37) {
                 const glm::vec2 p(pos[q].x, pos[q].z);
@@ -174,18 +176,23 @@ private slots:
             return true;
         };
         NeighbourGrid grid;
-        grid.configure({-80.0f, -80.0f}, {80.0f, 80.0f}, 2.0f, 4.0f, GridCells::ByCrowd);
-        QCOMPARE(grid.fineCellM(), 2.0f);
+        grid.configure({-80.0f, -80.0f}, {80.0f, 80.0f}, 1.0f, 4.0f, GridCells::ByCrowd);
+        QCOMPARE(grid.fineCellM(), 1.0f);
         grid.rebuild(spread);
         QCOMPARE(grid.cellM(), 4.0f);
         QVERIFY(visitsAll(grid, spread));
+        // The crowd closes up: the cells stay until the next choice.
         for (int k = 1; k < NeighbourGrid::kChooseEvery; ++k) {
-            grid.rebuild(packed);
-            QCOMPARE(grid.cellM(), 4.0f);  // not yet its turn to choose
+            grid.rebuild(close);
+            QCOMPARE(grid.cellM(), 4.0f);
         }
-        QVERIFY(visitsAll(grid, packed));
-        grid.rebuild(packed);
+        QVERIFY(visitsAll(grid, close));
+        grid.rebuild(close);
         QCOMPARE(grid.cellM(), 2.0f);
+        QVERIFY(visitsAll(grid, close));
+        for (int k = 0; k < NeighbourGrid::kChooseEvery; ++k)
+            grid.rebuild(packed);
+        QCOMPARE(grid.cellM(), 1.0f);
         QVERIFY(visitsAll(grid, packed));
         for (int k = 0; k < NeighbourGrid::kChooseEvery; ++k)
             grid.rebuild(spread);
@@ -193,9 +200,9 @@ private slots:
         QVERIFY(visitsAll(grid, spread));
         for (const GridCells fixed : {GridCells::Fine, GridCells::Coarse}) {
             NeighbourGrid kept;
-            kept.configure({-80.0f, -80.0f}, {80.0f, 80.0f}, 2.0f, 4.0f, fixed);
-            const float edge = fixed == GridCells::Fine ? 2.0f : 4.0f;
-            for (int k = 0; k <= NeighbourGrid::kChooseEvery; ++k) {
+            kept.configure({-80.0f, -80.0f}, {80.0f, 80.0f}, 1.0f, 4.0f, fixed);
+            const float edge = fixed == GridCells::Fine ? 1.0f : 4.0f;
+            for (int k = 0; k <= 2 * NeighbourGrid::kChooseEvery; ++k) {
                 kept.rebuild(k % 2 ? spread : packed);
                 QCOMPARE(kept.cellM(), edge);
             }
