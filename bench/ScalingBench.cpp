@@ -7,8 +7,10 @@
 // linear in N), and the final state hash of each size (the same for any --grid).
 // --grid fine|coarse|crowd fixes the neighbour grid's cells (WorldOptions::gridCells;
 // default crowd, the World's own choice), so a change can be timed against the old cells.
+// --ground M makes the ground a square of half-size M metres (default: the scenario's,
+// just round the rings): a few walkers on a wide ground.
 // Usage: throng-bench-scaling [--agents N,N,...] [--steps S=10] [--rounds R=3]
-//                             [--threads T=2] [--grid fine|coarse|crowd] [--brain]
+//                             [--threads T=2] [--grid fine|coarse|crowd] [--ground M] [--brain]
 #include "bench/StateHash.h"
 #include "simcore/scenarios/BenchScenarios.h"
 #include "simcore/world/World.h"
@@ -36,9 +38,14 @@ struct Round {
     std::uint64_t hash;
 };
 
-Round timeSize(std::uint32_t agents, int steps, const WorldOptions& options, bool brain)
+Round timeSize(std::uint32_t agents, int steps, const WorldOptions& options, bool brain, float ground)
 {
-    World world(brain ? makeCrossBrainScenario(agents) : makeCrossScenario(agents), options);
+    Scene scene = brain ? makeCrossBrainScenario(agents) : makeCrossScenario(agents);
+    if (ground > 0.0f) {
+        scene.settings.boundsMin = glm::vec2(-ground);
+        scene.settings.boundsMax = glm::vec2(ground);
+    }
+    World world(scene, options);
     world.step();
     std::vector<double> perAgent;
     for (int k = 0; k < steps; ++k) {
@@ -57,6 +64,7 @@ int main(int argc, char** argv)
     std::vector<std::uint32_t> sizes{10000, 100000, 1000000};
     int steps = 10, rounds = 3;
     bool brain = false;
+    float ground = 0.0f;
     std::string grid = "crowd";
     WorldOptions options;
     options.threads = 2;
@@ -78,11 +86,13 @@ int main(int argc, char** argv)
                                               std::string(argv[a + 1]) == "coarse" ||
                                               std::string(argv[a + 1]) == "crowd")) {
             grid = argv[++a];
+        } else if (arg == "--ground" && more) {
+            ground = std::max(0.0f, std::stof(argv[++a]));
         } else if (arg == "--brain") {
             brain = true;
         } else {
             std::fprintf(stderr, "usage: throng-bench-scaling [--agents N,N,...] [--steps S] [--rounds R] "
-                                 "[--threads T] [--grid fine|coarse|crowd] [--brain]\n");
+                                 "[--threads T] [--grid fine|coarse|crowd] [--ground M] [--brain]\n");
             return 2;
         }
     }
@@ -95,13 +105,13 @@ int main(int argc, char** argv)
     std::vector<std::uint64_t> hashes(sizes.size());
     for (int r = 0; r < rounds; ++r)
         for (std::size_t s = 0; s < sizes.size(); ++s) {
-            const Round round = timeSize(sizes[s], steps, options, brain);
+            const Round round = timeSize(sizes[s], steps, options, brain, ground);
             ns[s].push_back(round.nsPerAgentStep);
             hashes[s] = round.hash;
         }
     std::printf("{\"bench\": \"scaling\", \"scenario\": \"%s\", \"steps\": %d, \"rounds\": %d, \"threads\": %d, "
-                "\"grid\": \"%s\", \"sizes\": [",
-                brain ? "cross-brain" : "cross", steps, rounds, options.threads, grid.c_str());
+                "\"grid\": \"%s\", \"ground_half_m\": %.0f, \"sizes\": [",
+                brain ? "cross-brain" : "cross", steps, rounds, options.threads, grid.c_str(), double(ground));
     double lo = 0.0, hi = 0.0;
     for (std::size_t s = 0; s < sizes.size(); ++s) {
         const double m = median(ns[s]);
