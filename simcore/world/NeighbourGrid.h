@@ -49,7 +49,8 @@ public:
     // ordered by y so forEachNear3D can skip the agents far above or below. Reuses its
     // buffers. Agents with skip[i] != 0 (agents that left through an exit) are not indexed;
     // an empty skip indexes everyone. Runs on `team` where given (else on the calling
-    // thread); the order it leaves is the same for any number of threads.
+    // thread); the order it leaves is the same for any number of threads. Where configure
+    // lets it, it may first choose other cells, and then sorts again into those.
     void rebuild(std::span<const glm::vec3> positions, bool sortByHeight = false,
                  std::span<const std::uint8_t> skip = {}, const ThreadTeam* team = nullptr);
 
