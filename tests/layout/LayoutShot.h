@@ -3,11 +3,15 @@
 // heading east, eight runners heading north, one placed agent in a group of its own)
 // recorded for 80 frames, and what the tests read off it. Header only.
 
+#include "export/TrajectoryCsv.h"
+#include "export/UsdExporter.h"
 #include "simcore/io/SceneIO.h"
 #include "simcore/layout/LayoutApply.h"
 #include "simcore/world/FrameCache.h"
 #include "simcore/world/World.h"
 
+#include <QFile>
+#include <QString>
 #include <QtGlobal>
 
 #include <glm/vec2.hpp>
@@ -84,9 +88,13 @@ inline sim::LayoutOp op(sim::LayoutKind kind, std::vector<std::uint32_t> ids)
     return o;
 }
 
-// CSV rows by agent id: frame -> the row's text.
-inline std::map<std::uint32_t, std::map<int, std::string>> csvRows(const std::string& path)
+// The trajectories CSV of `cache`, written to `path` and read back: by agent id, frame ->
+// the row's text.
+inline std::map<std::uint32_t, std::map<int, std::string>> csvRows(const sim::FrameCache& cache,
+                                                                   const std::string& path)
 {
+    if (!exporting::writeTrajectoryCsv(cache, path).ok())
+        qFatal("cannot write %s", path.c_str());
     std::map<std::uint32_t, std::map<int, std::string>> rows;
     std::ifstream in(path);
     std::string line;
@@ -99,6 +107,20 @@ inline std::map<std::uint32_t, std::map<int, std::string>> csvRows(const std::st
         rows[std::uint32_t(std::stoul(agent))][std::stoi(frame)] = line;
     }
     return rows;
+}
+
+// The laid-out shot written as USD (the far characters, no set) and read back as text, as
+// a reader sees it; empty when it could not be written or read.
+inline QString usdText(const sim::Scene& scene, const sim::FrameCache& laid, const QString& path)
+{
+    exporting::UsdOptions usd;
+    usd.path = path.toStdString();
+    usd.lod = exporting::Lod::Far;
+    usd.includeSet = false;
+    if (!exporting::exportUsd(scene, laid, usd).ok())
+        return {};
+    QFile file(path);
+    return file.open(QIODevice::ReadOnly) ? QString::fromUtf8(file.readAll()) : QString();
 }
 
 }  // namespace throng::test::layout

@@ -6,11 +6,8 @@
 #include "LayoutShot.h"
 #include "TestRegistry.h"
 
-#include "export/TrajectoryCsv.h"
-#include "export/UsdExporter.h"
 #include "simcore/layout/LayoutCheck.h"
 
-#include <QFile>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -163,11 +160,8 @@ layout:
         // The CSV: the copy 1 m east and 2 m north of agent 3 on every frame, agent 3 as
         // recorded; agent 1 waving on frames 10 to 20 and as recorded elsewhere.
         QTemporaryDir dir;
-        const std::string before = dir.filePath("before.csv").toStdString();
-        const std::string after = dir.filePath("after.csv").toStdString();
-        QVERIFY(exporting::writeTrajectoryCsv(s.cache, before).ok());
-        QVERIFY(exporting::writeTrajectoryCsv(laid, after).ok());
-        const auto rowsBefore = csvRows(before), rowsAfter = csvRows(after);
+        const auto rowsBefore = csvRows(s.cache, dir.filePath("before.csv").toStdString());
+        const auto rowsAfter = csvRows(laid, dir.filePath("after.csv").toStdString());
         QCOMPARE(rowsAfter.at(3), rowsBefore.at(3));
         QCOMPARE(rowsAfter.at(sim::kFirstCopyId).size(), rowsBefore.at(3).size());
         const std::size_t three = indexOf(s.cache, 3), one = indexOf(s.cache, 1);
@@ -184,14 +178,8 @@ layout:
 
         // USD: agent 1 wears look 1 (the woman) untinted; agent 2 is a runner; the copy is an
         // agent of its own, with a look drawn for its own id.
-        exporting::UsdOptions usd;
-        usd.path = dir.filePath("laid.usda").toStdString();
-        usd.lod = exporting::Lod::Far;
-        usd.includeSet = false;
-        QVERIFY(exporting::exportUsd(s.scene, laid, usd).ok());
-        QFile file(QString::fromStdString(usd.path));
-        QVERIFY(file.open(QIODevice::ReadOnly));
-        const QString text = QString::fromUtf8(file.readAll());
+        const QString text = usdText(s.scene, laid, dir.filePath("laid.usda"));
+        QVERIFY2(!text.isEmpty(), "no USD written");
         auto customData = [&](const QString& prim) {
             const qsizetype at = text.indexOf(QString("def SkelRoot \"%1\"").arg(prim));
             if (at < 0)

@@ -13,10 +13,7 @@
 
 #include "GltfReadBack.h"
 #include "export/GltfExporter.h"
-#include "export/TrajectoryCsv.h"
-#include "export/UsdExporter.h"
 
-#include <QFile>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -48,11 +45,8 @@ private slots:
         QVERIFY2(messages.empty(), messages.empty() ? "" : messages[0].c_str());
 
         QTemporaryDir dir;
-        const std::string before = dir.filePath("before.csv").toStdString();
-        const std::string after = dir.filePath("after.csv").toStdString();
-        QVERIFY(exporting::writeTrajectoryCsv(s.cache, before).ok());
-        QVERIFY(exporting::writeTrajectoryCsv(laid, after).ok());
-        const auto rowsBefore = csvRows(before), rowsAfter = csvRows(after);
+        const auto rowsBefore = csvRows(s.cache, dir.filePath("before.csv").toStdString());
+        const auto rowsAfter = csvRows(laid, dir.filePath("after.csv").toStdString());
         const std::uint32_t first = sim::firstSpawnedId(s.scene);  // eastbound: the first 12 spawned ids
         int moved = 0, kept = 0;
         for (const auto& [id, frames] : rowsBefore) {
@@ -152,21 +146,14 @@ private slots:
         const sim::FrameCache laid = sim::applyLayout(s.scene, s.cache);
         QTemporaryDir dir;
         const std::string path = dir.filePath("laid.csv").toStdString();
-        QVERIFY(exporting::writeTrajectoryCsv(laid, path).ok());
-        const auto rows = csvRows(path);
+        const auto rows = csvRows(laid, path);
         QCOMPARE(int(rows.at(first).size()), 30);
         QCOMPARE(rows.at(first).rbegin()->first, 29);
         QVERIFY(!rows.count(first + 1));
         QCOMPARE(int(rows.size()), 20);
         // In a skinned export they are hidden from those frames: USD's visibility says so.
-        exporting::UsdOptions usd;
-        usd.path = dir.filePath("laid.usda").toStdString();
-        usd.lod = exporting::Lod::Far;
-        usd.includeSet = false;
-        QVERIFY(exporting::exportUsd(s.scene, laid, usd).ok());
-        QFile file(QString::fromStdString(usd.path));
-        QVERIFY(file.open(QIODevice::ReadOnly));
-        const QString text = QString::fromUtf8(file.readAll());
+        const QString text = usdText(s.scene, laid, dir.filePath("laid.usda"));
+        QVERIFY2(!text.isEmpty(), "no USD written");
         auto visibility = [&](std::uint32_t id) {
             const qsizetype at = text.indexOf(QString("def SkelRoot \"agent_%1_walker\"").arg(id));
             const qsizetype samples = text.indexOf("token visibility.timeSamples = {", at);
