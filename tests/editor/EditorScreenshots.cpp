@@ -51,6 +51,16 @@ void defaultViewSettings()
     QSettings().remove("viewport");
 }
 
+// The crossroads demo in a 1280 x 800 window, shown and settled: each picture's start.
+bool showCrossroads(MainWindow& window, const QTemporaryDir& dir)
+{
+    if (!showWithScene(window, dir, "crossroads.yaml"))
+        return false;
+    window.resize(1280, 800);
+    QTest::qWait(100);
+    return true;
+}
+
 void playTo(MainWindow& window, std::size_t frame)
 {
     window.simulation().seek(frame);  // computes up to it, as a click on the timeline does
@@ -106,10 +116,8 @@ int main(int argc, char** argv)
     {
         defaultViewSettings();
         MainWindow window;
-        if (!showWithScene(window, dir, "crossroads.yaml"))
+        if (!showCrossroads(window, dir))
             return 1;
-        window.resize(1280, 800);
-        QTest::qWait(100);
         window.viewport().frameAll();
         playTo(window, 360);
         window.document().setSelection({{ItemKind::Group, 0}});
@@ -134,10 +142,8 @@ int main(int argc, char** argv)
         // the selected group with its trail and steering, the density under the crowd.
         defaultViewSettings();
         MainWindow window;
-        if (!showWithScene(window, dir, "crossroads.yaml"))
+        if (!showCrossroads(window, dir))
             return 1;
-        window.resize(1280, 800);
-        QTest::qWait(100);
         Viewport& viewport = window.viewport();
         viewport.frameAll();
         playTo(window, 300);
@@ -181,10 +187,8 @@ int main(int argc, char** argv)
         // The 3D set: the crossroads' walls, signal poles and striped crossings in 3D.
         defaultViewSettings();
         MainWindow window;
-        if (!showWithScene(window, dir, "crossroads.yaml"))
+        if (!showCrossroads(window, dir))
             return 1;
-        window.resize(1280, 800);
-        QTest::qWait(100);
         Viewport& viewport = window.viewport();
         QTest::keyClick(&viewport, Qt::Key_2, Qt::ControlModifier);
         viewport.frameAll();
@@ -203,10 +207,8 @@ int main(int argc, char** argv)
         // selected operation's agents.
         defaultViewSettings();
         MainWindow window;
-        if (!showWithScene(window, dir, "crossroads.yaml"))
+        if (!showCrossroads(window, dir))
             return 1;
-        window.resize(1280, 800);
-        QTest::qWait(100);
         Viewport& viewport = window.viewport();
         viewport.frameAll();
         playTo(window, 240);

@@ -117,6 +117,15 @@ bool hudHasLayoutLine(MainWindow& window)
     return false;
 }
 
+// The scene `yaml` opened as `name`, played until frame `recorded` is computed, and
+// scrubbed with the arrow keys to frame `shown`: the take a layout edit works on.
+bool openTake(MainWindow& window, const QTemporaryDir& dir, const QString& name, const QByteArray& yaml,
+              std::size_t recorded, std::size_t shown)
+{
+    return showWithYaml(window, dir, name, yaml) && playUntilRecorded(window, recorded) &&
+           scrubWithKeys(window, shown);
+}
+
 }  // namespace
 
 class TestLayoutPanelUi : public QObject {
@@ -129,9 +138,7 @@ private slots:
     void everyLayoutEditIsOneUndoableStepAndUndoingAllRestoresTheFile()
     {
         MainWindow window;
-        QVERIFY(showWithYaml(window, m_dir, "layout.yaml", kLayoutScene));
-        QVERIFY(playUntilRecorded(window, kRecorded - 1));
-        QVERIFY(scrubWithKeys(window, 48));
+        QVERIFY(openTake(window, m_dir, "layout.yaml", kLayoutScene, kRecorded - 1, 48));
         const QByteArray original = sceneYaml(window);
         QUndoStack& undo = *window.document().undoStack();
         const int startIndex = undo.index();
@@ -282,9 +289,7 @@ private slots:
     void onlyTheClickedAgentTakesOneMemberOfAGroup()
     {
         MainWindow window;
-        QVERIFY(showWithYaml(window, m_dir, "clicked.yaml", kLayoutScene));
-        QVERIFY(playUntilRecorded(window, 24));
-        QVERIFY(scrubWithKeys(window, 24));
+        QVERIFY(openTake(window, m_dir, "clicked.yaml", kLayoutScene, 24, 24));
         showLayoutDock(window);
         // A click on a member of the group in the viewport selects the group and
         // focuses the member.
@@ -311,9 +316,7 @@ private slots:
     void layoutMoveDragsTheSelectedAgentsAsOneStep()
     {
         MainWindow window;
-        QVERIFY(showWithYaml(window, m_dir, "move.yaml", kLayoutScene));
-        QVERIFY(playUntilRecorded(window, 48));
-        QVERIFY(scrubWithKeys(window, 24));
+        QVERIFY(openTake(window, m_dir, "move.yaml", kLayoutScene, 48, 24));
         QUndoStack& undo = *window.document().undoStack();
         const int start = undo.index();
         selectInOutliner(window, {{ItemKind::Agent, 0}});
@@ -392,9 +395,7 @@ private slots:
     void duplicateAndSwapFromThePanel()
     {
         MainWindow window;
-        QVERIFY(showWithYaml(window, m_dir, "copies.yaml", kLayoutScene));
-        QVERIFY(playUntilRecorded(window, 24));
-        QVERIFY(scrubWithKeys(window, 24));
+        QVERIFY(openTake(window, m_dir, "copies.yaml", kLayoutScene, 24, 24));
         showLayoutDock(window);
         const std::size_t drawn = window.viewport().agentCount();
         selectInOutliner(window, {{ItemKind::Agent, 1}});
@@ -422,9 +423,7 @@ private slots:
         MainWindow window;
         const QByteArray withLayer =
             kLayoutScene + "layout:\n  - {op: translate, agents: {ids: [1]}, offset: [0, 8]}\n";
-        QVERIFY(showWithYaml(window, m_dir, "resolve.yaml", withLayer));
-        QVERIFY(playUntilRecorded(window, 48));
-        QVERIFY(scrubWithKeys(window, 0));
+        QVERIFY(openTake(window, m_dir, "resolve.yaml", withLayer, 48, 0));
         showLayoutDock(window);
         QTRY_VERIFY(hudHasLayoutLine(window));
         window.document().setSelection({});
@@ -447,9 +446,7 @@ private slots:
         MainWindow window;
         const QByteArray withLayer =
             kLayoutScene + "layout:\n  - {op: time_offset, agents: {ids: [1]}, later: 24}\n";
-        QVERIFY(showWithYaml(window, m_dir, "retime.yaml", withLayer));
-        QVERIFY(playUntilRecorded(window, 60));
-        QVERIFY(scrubWithKeys(window, 48));
+        QVERIFY(openTake(window, m_dir, "retime.yaml", withLayer, 60, 48));
         showLayoutDock(window);
         TimelineRuler* ruler = window.timeline().scrubBar();
         QVERIFY(!ruler->retime());
@@ -478,9 +475,7 @@ private slots:
     void aLassoOnTheShownFrameSelectsTheAgentsInside()
     {
         MainWindow window;
-        QVERIFY(showWithYaml(window, m_dir, "lasso.yaml", kLayoutScene));
-        QVERIFY(playUntilRecorded(window, 30));
-        QVERIFY(scrubWithKeys(window, 24));
+        QVERIFY(openTake(window, m_dir, "lasso.yaml", kLayoutScene, 30, 24));
         QVERIFY(clickToolButton(window, "layoutMove"));
         glm::vec2 lo(1e9f), hi(-1e9f);
         for (const sim::AgentId id : {3u, 4u, 5u}) {
