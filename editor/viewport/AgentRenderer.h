@@ -30,13 +30,6 @@ namespace throng::editor {
 
 struct GlyphVertex;
 
-// One kind of agent to draw: its glyphs and, empty or one per glyph, the characters they
-// wear (see AgentRenderer::setCharacters).
-struct AgentBatch {
-    std::span<const AgentGlyph> glyphs;
-    std::span<const AgentPose> poses;
-};
-
 class AgentRenderer {
 public:
     static constexpr float kMinRadiusPx = 2.0f;

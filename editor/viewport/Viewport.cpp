@@ -1,8 +1,6 @@
 #include "editor/viewport/Viewport.h"
 
 #include "editor/viewport/GroundRay.h"
-#include "editor/viewport/SetGeometryBuilder.h"
-#include "export/set/SetSolids.h"
 #include "editor/viewport/ToolOverlay.h"
 #include "editor/viewport/TrailBuilder.h"
 #include "editor/viewport/ViewportPalette.h"
@@ -21,7 +19,6 @@
 namespace throng::editor {
 
 namespace {
-constexpr float kFallbackRadiusM = 0.3f;
 
 // Whether OpenGL here is a software rasteriser (Mesa's llvmpipe or softpipe: virtual
 // machines, remote desktops, CI). There 4x multisampling triples the cost of a frame
@@ -84,12 +81,12 @@ void Viewport::updateScene(const sim::Scene& scene)
     m_frameOnNextPaint = frameOnNextPaint;
     m_cameraMovedByUser = movedByUser;
     // The shown agents again, coloured and sized by the edited types.
-    setAgents(m_frames, m_agents, m_timeS, m_frameIndex);
+    setAgents(m_crowd.frames(), m_crowd.agents(), m_timeS, m_frameIndex);
 }
 
 std::optional<glm::vec3> Viewport::pixelToGround(QPointF pixel) const
 {
-    return castToGround(renderView().viewProjection, size(), pixel, m_terrain);
+    return castToGround(renderView().viewProjection, size(), pixel, m_set.terrain());
 }
 
 RenderView Viewport::renderView() const
@@ -169,36 +166,12 @@ void Viewport::showFrame(const sim::FrameCache& cache, std::size_t frame)
 
 void Viewport::setSet(const sim::Scene& scene)
 {
-    m_setMesh.clear();
-    SetGeometryBuilder::addSet(scene, m_setMesh);
-    m_solidMesh.clear();
-    exporting::SetSolids::addSet(scene, m_solidMesh);
-    m_setChanged = true;
-    m_traffic = {};
-    m_traffic.lanes = scene.lanes;
-    m_traffic.crosswalks = scene.crosswalks;
-    m_traffic.trafficLights = scene.trafficLights;
-    m_terrain = scene.terrain;
-    m_agentColours.setScene(scene);
+    m_set.setScene(scene);
+    m_crowd.setScene(scene, m_sceneDirectory);
     m_fps = scene.settings.fps;
-    m_typeNames.clear();
-    for (const sim::AgentType& t : scene.agentTypes)
-        m_typeNames.push_back(t.name);
-    m_charactersChanged = m_agentCharacters.setScene(scene, m_sceneDirectory) || m_charactersChanged;
-    m_typeRadiusM.clear();
-    m_typeIsVehicle.clear();
-    m_typeIsFlier.clear();
-    for (const sim::AgentType& t : scene.agentTypes) {
-        m_typeRadiusM.push_back(t.radiusM);
-        m_typeIsVehicle.push_back(t.kind == sim::AgentKind::Vehicle);
-        m_typeIsFlier.push_back(t.kind == sim::AgentKind::Flier);
-    }
-    m_boundsMin = scene.settings.boundsMin;
-    m_boundsMax = scene.settings.boundsMax;
     m_layers.setScene(scene);
     update();
-    m_grid.setBounds(m_boundsMin, m_boundsMax);
-    m_setBox = setExtent(scene);
+    m_grid.setBounds(m_set.boundsMin(), m_set.boundsMax());
     m_frameOnNextPaint = true;
     m_cameraMovedByUser = false;
 }
@@ -206,97 +179,27 @@ void Viewport::setSet(const sim::Scene& scene)
 void Viewport::setAgents(std::span<const sim::AgentFrame> frames, std::span<const sim::AgentInfo> agents,
                          std::optional<double> timeS, std::size_t frameIndex)
 {
-    const std::size_t n = std::min(frames.size(), agents.size());
-    // Kept for colouring again (setColourBy), unless it is the kept frame itself.
-    if (frames.data() != m_frames.data()) {
-        m_frames.assign(frames.begin(), frames.begin() + std::ptrdiff_t(n));
-        m_agents.assign(agents.begin(), agents.begin() + std::ptrdiff_t(n));
-    }
-    m_layers.rebuildDensity(frames.first(n), m_agentColours.colourBy() == ColourBy::Density);
-    const std::vector<glm::vec3>& colours =
-        m_agentColours.coloursFor(frames.first(n), agents.first(n), m_layers.density());
-    // A one-shot (a fall) runs from the frame its agent switched to it: the cache says which.
-    // And the legs cycle, and a horse changes gait, as the export's do (from the recording).
-    m_clipSinceS.clear();
-    m_shownGait.clear();
-    if (m_cache && frameIndex < m_cache->frameCount() && m_cache->agentCount() == n) {
-        clipSinceS(*m_cache, frameIndex, m_clipSinceS);
-        m_agentCharacters.gaitAt(*m_cache, frameIndex, m_shownGait);
-    }
-    m_agentCharacters.posesFor(frames.first(n), agents.first(n), timeS.value_or(0.0), m_shownPoses, m_clipSinceS,
-                               m_shownGait);
-    m_glyphs.clear();
-    m_carGlyphs.clear();
-    m_birdGlyphs.clear();
-    m_glyphPoses.clear();
-    m_carPoses.clear();
-    m_birdPoses.clear();
-    m_glyphs.reserve(n);
-    m_agentBox = {};
-    std::vector<std::size_t> perType(m_typeNames.size(), 0);
-    std::size_t shown = 0, arrived = 0, out = 0;
-    for (std::size_t i = 0; i < n; ++i) {
-        if (!frames[i].present)
-            continue;  // not there on this frame (an edit added or removed it)
-        arrived += frames[i].arrived ? 1 : 0;
-        if (frames[i].out) {
-            ++out;
-            continue;  // left through an exit
-        }
-        const std::size_t type = agents[i].typeIndex;
-        ++shown;
-        if (type < perType.size())
-            ++perType[type];
-        const float radius = type < m_typeRadiusM.size() ? m_typeRadiusM[type] : kFallbackRadiusM;
-        const bool car = type < m_typeIsVehicle.size() && m_typeIsVehicle[type];
-        const bool bird = type < m_typeIsFlier.size() && m_typeIsFlier[type];
-        (car ? m_carGlyphs : bird ? m_birdGlyphs : m_glyphs)
-            .push_back({frames[i].position, frames[i].headingRad, radius, colours[i]});
-        (car ? m_carPoses : bird ? m_birdPoses : m_glyphPoses).push_back(m_shownPoses[i]);
-        m_agentBox.include({frames[i].position.x, frames[i].position.z}, radius);
-    }
-    m_hudCounts.shown = shown;
-    m_hudCounts.arrived = arrived;
-    m_hudCounts.out = out;
-    m_hudCounts.perType.clear();
-    for (std::size_t t = 0; t < perType.size(); ++t)
-        if (perType[t] > 0)
-            m_hudCounts.perType.emplace_back(m_typeNames[t], perType[t]);
-    m_agentsChanged = true;
+    // Kept for colouring again (setColourBy).
+    m_crowd.keep(frames, agents);
+    m_layers.rebuildDensity(m_crowd.frames(), m_crowd.colourBy() == ColourBy::Density);
+    m_crowd.build(m_layers.density(), timeS.value_or(0.0), m_cache, frameIndex);
     m_timeS = timeS;
     m_frameIndex = frameIndex;
-    // Picking and the agents' rings follow them from frame to frame.
-    m_shown.resize(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        const std::size_t type = agents[i].typeIndex;
-        const bool drawn = frames[i].present && !frames[i].out;
-        m_shown.set(i, agents[i].id, frames[i].position, type < m_typeRadiusM.size() ? m_typeRadiusM[type] : kFallbackRadiusM,
-                    drawn);
-    }
     m_marks.showFrame(frameIndex);
     if (m_marks.followsAgents())
         rebuildHighlight();
     if (m_layers.settings().trails)
         rebuildOverlay();
     m_overlay->update();  // the select tool's circles follow the agents too
-    rebuildLights();
+    m_set.light(m_timeS);
     updateHud();
     emit agentsChanged();
     update();
 }
 
-void Viewport::rebuildLights()
-{
-    m_lightMesh.clear();
-    SetGeometryBuilder::addLights(m_traffic, m_timeS, m_lightMesh);
-    m_lampMesh.clear();
-    exporting::SetSolids::addLamps(m_traffic.trafficLights, m_terrain, m_timeS, m_lampMesh);
-    m_lightsChanged = true;
-}
-
 void Viewport::setOverlays(const ViewportOverlays& overlays)
 {
-    if (!m_layers.setSettings(overlays, m_frames, m_agentColours.colourBy() == ColourBy::Density))
+    if (!m_layers.setSettings(overlays, m_crowd.frames(), m_crowd.colourBy() == ColourBy::Density))
         return;
     m_hud->setVisible(overlays.hud);
     rebuildOverlay();
@@ -305,10 +208,10 @@ void Viewport::setOverlays(const ViewportOverlays& overlays)
 
 void Viewport::setColourBy(ColourBy by)
 {
-    if (by == m_agentColours.colourBy())
+    if (by == m_crowd.colourBy())
         return;
-    m_agentColours.setColourBy(by);
-    setAgents(m_frames, m_agents, m_timeS, m_frameIndex);
+    m_crowd.setColourBy(by);
+    setAgents(m_crowd.frames(), m_crowd.agents(), m_timeS, m_frameIndex);
 }
 
 void Viewport::setSteering(std::vector<sim::AgentDebug> agents)
@@ -327,8 +230,9 @@ void Viewport::setSimulationRate(double stepsPerSecond)
 
 void Viewport::rebuildOverlay()
 {
-    const std::vector<std::size_t> followed =
-        m_layers.settings().trails ? m_marks.followed(m_shown, TrailBuilder::kMaxTrails) : std::vector<std::size_t>{};
+    std::vector<std::size_t> followed;
+    if (m_layers.settings().trails)
+        followed = m_marks.followed(m_crowd.shown(), TrailBuilder::kMaxTrails);
     m_layers.rebuildLines(m_cache, m_frameIndex, followed, m_fps);
     update();
 }
@@ -337,13 +241,20 @@ void Viewport::updateHud()
 {
     if (!m_layers.settings().hud)
         return;
-    HudFigures figures = m_hudCounts;
+    HudFigures figures;
+    const ShownCrowd::Counts& counts = m_crowd.counts();
+    figures.shown = counts.shown;
+    figures.arrived = counts.arrived;
+    figures.out = counts.out;
+    figures.perType = counts.perType;
+    figures.layoutOverlaps = m_layoutOverlaps;
+    figures.layoutWallCrossings = m_layoutWallCrossings;
     figures.frame = m_frameIndex;
     figures.timeS = m_timeS;
     figures.fps = double(m_fps);
     figures.stepsPerSecond = m_stepsPerSecond;
     figures.layoutFlagged = m_marks.flaggedCount();
-    ColourLegend colouring = m_agentColours.legend();
+    ColourLegend colouring = m_crowd.legend();
     colouring.title = "Colour by " + colouring.title;
     figures.legends.push_back(std::move(colouring));
     m_layers.addLegends(figures, !m_marks.watchedIds().empty());
@@ -385,8 +296,8 @@ void Viewport::setLayoutCheck(const sim::LayoutCheck& check)
 {
     m_marks.setLayoutClashes(check);
     m_marks.showFrame(m_frameIndex);
-    m_hudCounts.layoutOverlaps = check.overlaps.size();
-    m_hudCounts.layoutWallCrossings = check.wallCrossings.size();
+    m_layoutOverlaps = check.overlaps.size();
+    m_layoutWallCrossings = check.wallCrossings.size();
     rebuildHighlight();
     updateHud();
 }
@@ -402,7 +313,7 @@ void Viewport::marksChanged(const std::vector<sim::AgentId>& watchedBefore)
 
 void Viewport::rebuildHighlight()
 {
-    m_marks.build(m_shown, m_highlightMesh);
+    m_marks.build(m_crowd.shown(), m_highlightMesh);
     m_highlightChanged = true;
     update();
 }
@@ -430,11 +341,11 @@ void Viewport::setViewMode(ViewMode mode)
 
 GroundBox Viewport::framingBox() const
 {
-    GroundBox box = m_setBox;
-    box.include(m_agentBox);
+    GroundBox box = m_set.extent();
+    box.include(m_crowd.extent());
     if (box.empty) {
-        box.include(m_boundsMin);
-        box.include(m_boundsMax);
+        box.include(m_set.boundsMin());
+        box.include(m_set.boundsMax());
     }
     return box;
 }
@@ -452,7 +363,7 @@ void Viewport::frameSelection()
 {
     // A lone agent fills no view: frame it with some ground round it.
     constexpr float kAgentRoomM = 3.0f;
-    const GroundBox box = m_marks.extent(m_shown, kAgentRoomM);
+    const GroundBox box = m_marks.extent(m_crowd.shown(), kAgentRoomM);
     if (box.empty) {
         frameAll();
         return;
@@ -496,7 +407,9 @@ void Viewport::initializeGL()
         releaseGl();
         doneCurrent();
     });
-    m_setChanged = m_lightsChanged = m_agentsChanged = m_highlightChanged = m_charactersChanged = true;
+    m_set.markAllChanged();
+    m_crowd.markAllChanged();
+    m_highlightChanged = true;
     m_layers.markAllChanged();
     m_glReady = true;
 }
@@ -527,20 +440,24 @@ void Viewport::resizeGL(int, int)
 
 void Viewport::uploadChanged()
 {
-    if (m_setChanged) {
-        m_setRenderer.upload(*this, m_setMesh);
-        m_solidRenderer.upload(*this, m_solidMesh);
+    const ShownSet::Changed set = m_set.takeChanged();
+    if (set.set) {
+        m_setRenderer.upload(*this, m_set.shapes());
+        m_solidRenderer.upload(*this, m_set.solids());
     }
-    if (m_lightsChanged) {
-        m_lightRenderer.upload(*this, m_lightMesh);
-        m_lampRenderer.upload(*this, m_lampMesh);
+    if (set.lights) {
+        m_lightRenderer.upload(*this, m_set.lights());
+        m_lampRenderer.upload(*this, m_set.lamps());
     }
-    if (m_charactersChanged)
-        m_agentRenderer.setCharacters(*this, m_agentCharacters.poseTables(), AgentCharacters::kLevels);
-    if (m_agentsChanged)
-        m_agentRenderer.upload(*this, {m_glyphs, m_glyphPoses}, {m_carGlyphs, m_carPoses}, {m_birdGlyphs, m_birdPoses});
+    const ShownCrowd::Changed crowd = m_crowd.takeChanged();
+    if (crowd.characters)
+        m_agentRenderer.setCharacters(*this, m_crowd.poseTables(), AgentCharacters::kLevels);
+    if (crowd.glyphs)
+        m_agentRenderer.upload(*this, m_crowd.batch(ShownCrowd::Walkers), m_crowd.batch(ShownCrowd::Vehicles),
+                               m_crowd.batch(ShownCrowd::Fliers));
     if (m_highlightChanged)
         m_highlightRenderer.upload(*this, m_highlightMesh);
+    m_highlightChanged = false;
     const OverlayLayers::Changed layers = m_layers.takeChanged();
     if (layers.lines)
         m_overlayRenderer.upload(*this, m_layers.lines());
@@ -548,7 +465,6 @@ void Viewport::uploadChanged()
         m_fieldRenderer.upload(*this, m_layers.fields());
     if (layers.heat)
         m_heatRenderer.upload(*this, m_layers.heat());
-    m_setChanged = m_lightsChanged = m_agentsChanged = m_highlightChanged = m_charactersChanged = false;
 }
 
 void Viewport::paintGL()

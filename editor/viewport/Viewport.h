@@ -5,9 +5,8 @@
 
 #include "editor/SceneItem.h"
 #include "editor/tools/ViewportTool.h"
-#include "editor/viewport/AgentCharacters.h"
-#include "editor/viewport/AgentColours.h"
 #include "editor/viewport/AgentRenderer.h"
+#include "editor/viewport/CameraDrag.h"
 #include "editor/viewport/CameraRig.h"
 #include "editor/viewport/GridRenderer.h"
 #include "editor/viewport/GroundBox.h"
@@ -16,9 +15,11 @@
 #include "editor/viewport/ShapeMesh.h"
 #include "editor/viewport/ShapeRenderer.h"
 #include "editor/viewport/ShownAgents.h"
+#include "editor/viewport/ShownCrowd.h"
+#include "editor/viewport/ShownSet.h"
+#include "editor/viewport/SolidRenderer.h"
 #include "editor/viewport/ViewportHud.h"
 #include "editor/viewport/ViewportOverlays.h"
-#include "editor/viewport/SolidRenderer.h"
 #include "simcore/scene/Scene.h"
 #include "simcore/world/DebugSink.h"
 #include "simcore/world/FrameCache.h"
@@ -70,7 +71,7 @@ public:
     void setOverlays(const ViewportOverlays& overlays);
     const ViewportOverlays& overlays() const { return m_layers.settings(); }
     void setColourBy(ColourBy by);
-    ColourBy colourBy() const { return m_agentColours.colourBy(); }
+    ColourBy colourBy() const { return m_crowd.colourBy(); }
     // The watched agents' steering annotations on the shown frame (steering overlay).
     void setSteering(std::vector<sim::AgentDebug> agents);
     // The simulation's steps per second, for the HUD (0 while idle).
@@ -105,7 +106,7 @@ public:
     // frame has them, into the view; everything when nothing selected has a place.
     void frameSelection();
 
-    std::size_t agentCount() const { return m_glyphs.size() + m_carGlyphs.size() + m_birdGlyphs.size(); }
+    std::size_t agentCount() const { return m_crowd.glyphCount(); }
     std::size_t frameIndex() const { return m_frameIndex; }
     // Simulation time of the shown moment (0 for a scene just set); empty before any scene.
     std::optional<double> timeS() const { return m_timeS; }
@@ -117,7 +118,7 @@ public:
     // The current camera at the widget's size.
     RenderView renderView() const;
     // The agents as the shown frame draws them.
-    const ShownAgents& shownAgents() const { return m_shown; }
+    const ShownAgents& shownAgents() const { return m_crowd.shown(); }
 
     // The tool that receives left-button input and draws the overlay; null = navigation only.
     void setTool(ViewportTool* tool);
@@ -172,13 +173,12 @@ protected:
 
 private:
     void setSet(const sim::Scene& scene);
+    // Shows `frames` of `agents` (the first of the two's length) as frame `frameIndex`, at
+    // `timeS`; the kept frame itself may be given again, to show it anew.
     void setAgents(std::span<const sim::AgentFrame> frames, std::span<const sim::AgentInfo> agents,
                    std::optional<double> timeS, std::size_t frameIndex);
-    // The lights and lamps as they are at m_timeS.
-    void rebuildLights();
     GroundBox framingBox() const;
     void forwardToTool(QMouseEvent* event, void (ViewportTool::*handler)(const ToolMouse&));
-    void dragCamera(QPointF delta, Qt::KeyboardModifiers modifiers);
     void cameraMovedByUser();
     void uploadChanged();
     void rebuildHighlight();
@@ -202,53 +202,26 @@ private:
     SolidRenderer m_solidRenderer, m_lampRenderer;  // the 3D set, and its lamps relit every frame
 
     // What is shown, kept on the CPU until the next paint uploads it.
-    ShapeMesh m_setMesh;
-    ShapeMesh m_lightMesh;
-    ShapeMesh m_highlightMesh;
+    ShownSet m_set;
+    ShownCrowd m_crowd;
     OverlayLayers m_layers;  // trails, steering, fields and density, and what is on
-    exporting::SolidMesh m_solidMesh, m_lampMesh;
     SelectionMarks m_marks;
-    ShownAgents m_shown;  // the shown frame's agents, by World index
-    std::vector<AgentGlyph> m_glyphs;     // walkers
-    std::vector<AgentGlyph> m_carGlyphs;  // vehicles, drawn as cars
-    std::vector<AgentGlyph> m_birdGlyphs;  // fliers, drawn as birds
-    std::vector<AgentPose> m_glyphPoses, m_carPoses, m_birdPoses;  // the characters they wear, one per glyph
-    std::vector<AgentPose> m_shownPoses;              // scratch: one per shown agent
-    std::vector<float> m_clipSinceS;                  // scratch: per agent, s since its clip began
-    std::vector<exporting::GaitFrame> m_shownGait;    // scratch: per agent, its gait as exported
-    bool m_charactersChanged = true;
-    bool m_setChanged = true, m_lightsChanged = true, m_agentsChanged = true, m_highlightChanged = true;
-
-    sim::Scene m_traffic;               // lanes, crosswalks and lights only: relit every frame
-    sim::Terrain m_terrain;
-    std::vector<float> m_typeRadiusM;   // by Scene::agentTypes index
-    std::vector<bool> m_typeIsVehicle;  // by Scene::agentTypes index
-    std::vector<bool> m_typeIsFlier;    // by Scene::agentTypes index
-    AgentColours m_agentColours;
-    AgentCharacters m_agentCharacters;
+    ShapeMesh m_highlightMesh;
+    bool m_highlightChanged = true;
     std::string m_sceneDirectory;
-    glm::vec2 m_boundsMin{-50.0f}, m_boundsMax{50.0f};
-    GroundBox m_setBox, m_agentBox;
     std::optional<double> m_timeS;
     std::size_t m_frameIndex = 0;
-    float m_fps = 24.0f;  // the scene's
-
-    // The shown frame as given (colours are made again from it when the colouring changes).
-    std::vector<sim::AgentFrame> m_frames;
-    std::vector<sim::AgentInfo> m_agents;
+    float m_fps = 24.0f;                       // the scene's
     const sim::FrameCache* m_cache = nullptr;  // the recording shown, null for a World's state
-    std::vector<std::string> m_typeNames;      // by Scene::agentTypes index
-    double m_stepsPerSecond = 0.0;
+
     ViewportHud* m_hud = nullptr;
-    HudFigures m_hudCounts;  // the shown frame's counts
+    double m_stepsPerSecond = 0.0;
+    std::size_t m_layoutOverlaps = 0, m_layoutWallCrossings = 0;  // what the layout check found
 
     bool m_frameOnNextPaint = true;     // until the user moves the camera, resizing re-frames
     bool m_frameWhenAgentsCome = false;  // a new scene's first agents have not been shown yet
     bool m_cameraMovedByUser = false;
-    Qt::MouseButton m_dragButton = Qt::NoButton;
-    bool m_altDrag = false;  // the drag began with Alt held: the DCC bindings
-    QPointF m_lastMousePos, m_pressPos;
-    std::optional<glm::vec3> m_pressGround;  // the ground under an Alt+right drag's start
+    CameraDrag m_drag;
 
     ViewportTool* m_tool = nullptr;
     ToolOverlay* m_overlay = nullptr;

@@ -13,6 +13,7 @@
 #include "editor/commands/NameReferences.h"
 #include "editor/layout/LayoutCheckWatch.h"
 #include "editor/layout/LayoutPanel.h"
+#include "editor/panels/OutlinerPanel.h"
 #include "editor/panels/TimelinePanel.h"
 #include "editor/panels/TimelineRuler.h"
 #include "editor/simulation/SimulationController.h"
@@ -32,6 +33,7 @@
 #include <QSpinBox>
 #include <QTest>
 #include <QTimer>
+#include <QToolBar>
 #include <QToolButton>
 #include <QTreeWidget>
 #include <QUndoStack>
