@@ -192,6 +192,28 @@ private slots:
         QCOMPARE(r.scene.agents[0].id, 1u);  // ids are assigned when omitted
         QCOMPARE(r.scene.agents[1].id, 2u);
     }
+
+    void idsNotGivenFollowTheHighestGiven()
+    {
+        // Placed agents, then vehicles, then heroes take the ids after the highest given
+        // anywhere (a vehicle's 40 here), in file order; a leader may be any of them.
+        const LoadResult r = parseScene("throng: 1\nagent_types:\n  - {name: w}\n  - {name: car, kind: vehicle}\n"
+                                        "lanes:\n  - {name: main, points: [[0, 0], [50, 0]]}\n"
+                                        "agents:\n  - {id: 7, type: w, position: [0, 0]}\n"
+                                        "  - {type: w, position: [1, 0], leader: 40}\n"
+                                        "  - {type: w, position: [2, 0]}\n"
+                                        "vehicles:\n  - {type: car, lane: main}\n  - {id: 40, type: car, lane: main}\n"
+                                        "heroes:\n  - {name: h, type: w, keyframes: [{time: 0, position: [0, 5]}]}\n",
+                                        "ids.yaml", "");
+        QVERIFY2(r.ok(), r.diagnostics.empty() ? "" : r.diagnostics.front().format().c_str());
+        QCOMPARE(r.scene.agents[0].id, 7u);
+        QCOMPARE(r.scene.agents[1].id, 41u);
+        QCOMPARE(r.scene.agents[2].id, 42u);
+        QCOMPARE(r.scene.vehicles[0].id, 43u);
+        QCOMPARE(r.scene.vehicles[1].id, 40u);
+        QCOMPARE(r.scene.heroes[0].id, 44u);
+        QCOMPARE(r.scene.agents[1].leader, 40u);
+    }
 };
 
 THRONG_REGISTER_TEST(TestSceneRoundTrip)

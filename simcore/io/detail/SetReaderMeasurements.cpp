@@ -1,12 +1,12 @@
 // Measurements (`measurements`): lines and areas the analysis of a run reads (Scene.h,
 // Measurement); they change nothing in the simulation.
-#include "simcore/io/detail/SceneReader.h"
+#include "simcore/io/detail/SetReader.h"
 
 #include "simcore/scene/GroundPolygon.h"
 
 namespace throng::sim::detail {
 
-void SceneReader::readMeasurements(const YAML::Node& node, Scene& scene)
+void SetReader::readMeasurements(const YAML::Node& node, Scene& scene)
 {
     if (!m_f.expectSequence(node, "measurements"))
         return;
@@ -18,7 +18,7 @@ void SceneReader::readMeasurements(const YAML::Node& node, Scene& scene)
         m_f.checkKeys(item, key, {"name", "line", "area"});
         Measurement m;
         if (m_f.readName(item, "name", key, m.name, true))
-            claimName(item, key, m.name, "measurement");
+            m_names.claim(item, key, m.name, "measurement");
         const YAML::Node line = item["line"], area = item["area"];
         if (line.IsDefined() == area.IsDefined()) {
             m_f.error(item.Mark(), key, "give a 'line: [[x, z], [x, z]]' or an 'area: [[x, z], [x, z], [x, z], ...]'");

@@ -1,6 +1,6 @@
 // Sources (`sources`): streams of agents that enter the scene during the run (Scene.h,
 // Source).
-#include "simcore/io/detail/SceneReader.h"
+#include "simcore/io/detail/CrowdReader.h"
 
 namespace throng::sim::detail {
 
@@ -10,7 +10,7 @@ constexpr double kMaxSourceAgents = 10'000'000;
 
 }  // namespace
 
-void SceneReader::readSources(const YAML::Node& node, Scene& scene)
+void CrowdReader::readSources(const YAML::Node& node, Scene& scene)
 {
     if (!m_f.expectSequence(node, "sources"))
         return;
@@ -23,7 +23,7 @@ void SceneReader::readSources(const YAML::Node& node, Scene& scene)
                                   "path", "cap", "heading", "exits"});
         Source s;
         if (m_f.readName(item, "name", key, s.name, true))
-            claimName(item, key, s.name, "source");
+            m_names.claim(item, key, s.name, "source");
         readSourceTypes(item, key, s);
         readSourcePlace(item, key, s);
         m_f.readFloat(item, "rate", key, s.rate, true, Range::Positive);
@@ -36,9 +36,9 @@ void SceneReader::readSources(const YAML::Node& node, Scene& scene)
         }
         readSourceWindows(item, key, s);
         if (m_f.readName(item, "goal", key, s.goal, false) && !s.goal.empty())
-            checkRef(item, "goal", key, s.goal, known("goal", s.goal), "goal");
+            m_names.checkKnown(item, "goal", key, s.goal, "goal");
         if (m_f.readName(item, "path", key, s.path, false) && !s.path.empty())
-            checkRef(item, "path", key, s.path, known("path", s.path), "path");
+            m_names.checkKnown(item, "path", key, s.path, "path");
         if (!s.goal.empty() && !s.path.empty())
             m_f.error(item.Mark(), key, "give a goal or a path, not both");
         readExits(item, key, s.exits, !s.goal.empty() || !s.path.empty(), "goal or path", scene);
@@ -62,7 +62,7 @@ void SceneReader::readSources(const YAML::Node& node, Scene& scene)
 }
 
 // `type: NAME`, or `types: {NAME: weight, ...}` for a mix.
-void SceneReader::readSourceTypes(const YAML::Node& item, const std::string& key, Source& s)
+void CrowdReader::readSourceTypes(const YAML::Node& item, const std::string& key, Source& s)
 {
     const YAML::Node one = item["type"], mix = item["types"];
     if (one.IsDefined() == mix.IsDefined()) {
@@ -72,7 +72,7 @@ void SceneReader::readSourceTypes(const YAML::Node& item, const std::string& key
     if (one.IsDefined()) {
         SourceType t;
         if (m_f.readName(item, "type", key, t.type, true) &&
-            checkRef(item, "type", key, t.type, known("agent type", t.type), "agent type"))
+            m_names.checkKnown(item, "type", key, t.type, "agent type"))
             s.types.push_back(std::move(t));
         return;
     }
@@ -85,7 +85,7 @@ void SceneReader::readSourceTypes(const YAML::Node& item, const std::string& key
         SourceType t;
         t.type = it->first.Scalar();
         const std::string tk = key + ".types." + t.type;
-        if (!known("agent type", t.type)) {
+        if (!m_names.known("agent type", t.type)) {
             m_f.error(it->first.Mark(), tk, "no agent type named '" + t.type + "'");
             continue;
         }
@@ -95,7 +95,7 @@ void SceneReader::readSourceTypes(const YAML::Node& item, const std::string& key
 }
 
 // `line: [[x, z], [x, z]]` or `rect: {min: [x, z], max: [x, z]}`.
-void SceneReader::readSourcePlace(const YAML::Node& item, const std::string& key, Source& s)
+void CrowdReader::readSourcePlace(const YAML::Node& item, const std::string& key, Source& s)
 {
     const YAML::Node line = item["line"], rect = item["rect"];
     if (line.IsDefined() == rect.IsDefined()) {
@@ -122,7 +122,7 @@ void SceneReader::readSourcePlace(const YAML::Node& item, const std::string& key
 }
 
 // `windows: [[start, end], ...]` in seconds, in order, each start before its end.
-void SceneReader::readSourceWindows(const YAML::Node& item, const std::string& key, Source& s)
+void CrowdReader::readSourceWindows(const YAML::Node& item, const std::string& key, Source& s)
 {
     const YAML::Node windows = item["windows"];
     if (!windows.IsDefined())

@@ -1,10 +1,10 @@
 // Sound: the scene's fixed sound sources (`sound_sources`) and what an agent type emits
 // (`emits`). Brains hear both through the sound_* sensors on the named channel.
-#include "simcore/io/detail/SceneReader.h"
+#include "simcore/io/detail/SetReader.h"
 
 namespace throng::sim::detail {
 
-void SceneReader::readSoundSources(const YAML::Node& node, Scene& scene)
+void SetReader::readSoundSources(const YAML::Node& node, Scene& scene)
 {
     if (!m_f.expectSequence(node, "sound_sources"))
         return;
@@ -16,7 +16,7 @@ void SceneReader::readSoundSources(const YAML::Node& node, Scene& scene)
         m_f.checkKeys(item, key, {"name", "channel", "position", "strength", "radius"});
         SoundSource s;
         if (m_f.readName(item, "name", key, s.name, true))
-            claimName(item, key, s.name, "sound source");
+            m_names.claim(item, key, s.name, "sound source");
         m_f.readName(item, "channel", key, s.channel, true);
         m_f.readVec2(item, "position", key, s.position, true);
         m_f.readFloat(item, "strength", key, s.strength, false, Range::Positive);
@@ -25,14 +25,14 @@ void SceneReader::readSoundSources(const YAML::Node& node, Scene& scene)
     }
 }
 
-void SceneReader::readEmission(const YAML::Node& node, const std::string& key, SoundEmission& e)
+void readEmission(YamlFields& f, const YAML::Node& node, const std::string& key, SoundEmission& e)
 {
-    if (!m_f.expectMap(node, key))
+    if (!f.expectMap(node, key))
         return;
-    m_f.checkKeys(node, key, {"channel", "strength", "radius"});
-    m_f.readName(node, "channel", key, e.channel, true);
-    m_f.readFloat(node, "strength", key, e.strength, false, Range::Positive);
-    m_f.readFloat(node, "radius", key, e.radiusM, false, Range::Positive);
+    f.checkKeys(node, key, {"channel", "strength", "radius"});
+    f.readName(node, "channel", key, e.channel, true);
+    f.readFloat(node, "strength", key, e.strength, false, Range::Positive);
+    f.readFloat(node, "radius", key, e.radiusM, false, Range::Positive);
 }
 
 }  // namespace throng::sim::detail

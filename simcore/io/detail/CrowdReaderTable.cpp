@@ -1,6 +1,6 @@
 // The compact form of `agents` for painted crowds: one text row per agent inside a
 // literal block, parsed here without building a YAML node per value.
-#include "simcore/io/detail/SceneReader.h"
+#include "simcore/io/detail/CrowdReader.h"
 
 #include <algorithm>
 #include <array>
@@ -35,7 +35,7 @@ struct LineIndex {
 
 }  // namespace
 
-void SceneReader::readAgentTable(const YAML::Node& node, const std::string& key, Scene& scene)
+void CrowdReader::readAgentTable(const YAML::Node& node, const std::string& key, Scene& scene)
 {
     m_f.checkKeys(node, key, {"columns", "rows"});
     std::vector<std::string> columns;
@@ -149,24 +149,24 @@ void SceneReader::readAgentTable(const YAML::Node& node, const std::string& key,
                 m_f.errorAtLine(line1, col1(kId), rk + ".id",
                                 "must be a whole number >= 1, got '" + std::string(t) + "'");
                 ok = false;
-            } else if (!m_ids.insert(a.id).second) {
+            } else if (!m_names.takeId(a.id)) {
                 m_f.errorAtLine(line1, col1(kId), rk + ".id",
                                 "id " + std::to_string(a.id) + " is already used by another agent, vehicle or hero");
                 ok = false;
             }
         }
         std::string_view typeTok = tok[std::size_t(at[kType])];
-        name(kType, a.type, known("agent type", std::string(typeTok)), "agent type");
+        name(kType, a.type, m_names.known("agent type", std::string(typeTok)), "agent type");
         number(kX, a.position.x);
         number(kY, a.position.y);
         number(kZ, a.position.z);
         number(kHeading, a.headingDeg);
         if (at[kGoal] >= 0)
-            name(kGoal, a.goal, known("goal", std::string(tok[std::size_t(at[kGoal])])), "goal");
+            name(kGoal, a.goal, m_names.known("goal", std::string(tok[std::size_t(at[kGoal])])), "goal");
         if (at[kPath] >= 0)
-            name(kPath, a.path, known("path", std::string(tok[std::size_t(at[kPath])])), "path");
+            name(kPath, a.path, m_names.known("path", std::string(tok[std::size_t(at[kPath])])), "path");
         if (at[kBrain] >= 0)
-            name(kBrain, a.brain, known("brain", std::string(tok[std::size_t(at[kBrain])])), "brain");
+            name(kBrain, a.brain, m_names.known("brain", std::string(tok[std::size_t(at[kBrain])])), "brain");
         if (at[kGroup] >= 0)
             name(kGroup, a.group, true, "group");
         if (at[kLeader] >= 0 && ok) {
@@ -178,9 +178,10 @@ void SceneReader::readAgentTable(const YAML::Node& node, const std::string& key,
                                     "must be an agent id >= 1 or '-', got '" + std::string(t) + "'");
                     ok = false;
                 } else {
-                    m_leaderRefs.push_back({YAML::Mark(), rk + ".leader", a.leader});
-                    m_leaderRefs.back().at.line = line1 - 1;
-                    m_leaderRefs.back().at.column = col1(kLeader) - 1;
+                    YAML::Mark place;
+                    place.line = line1 - 1;
+                    place.column = col1(kLeader) - 1;
+                    m_names.leads(place, rk + ".leader", a.leader);
                 }
             }
         }

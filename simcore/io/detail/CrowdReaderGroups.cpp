@@ -1,7 +1,7 @@
 // Spawn groups (`groups`): their type and count, their area (a rectangle, a circle or a
 // polygon), their route (a goal, a path or a leader) and the exits they may choose among
 // instead (Scene.h, SpawnGroup); sources read their exits and rectangles here too.
-#include "simcore/io/detail/SceneReader.h"
+#include "simcore/io/detail/CrowdReader.h"
 
 #include "simcore/scene/GroundPolygon.h"
 
@@ -18,7 +18,7 @@ constexpr double kMinPolygonAreaM2 = 1e-6;  // a spawn polygon smaller than a sq
 
 }  // namespace
 
-void SceneReader::readGroups(const YAML::Node& node, Scene& scene)
+void CrowdReader::readGroups(const YAML::Node& node, Scene& scene)
 {
     if (!m_f.expectSequence(node, "groups"))
         return;
@@ -33,18 +33,18 @@ void SceneReader::readGroups(const YAML::Node& node, Scene& scene)
              "exits", "formation", "companions"});
         SpawnGroup g;
         if (m_f.readName(item, "name", key, g.name, true))
-            claimName(item, key, g.name, "group");
+            m_names.claim(item, key, g.name, "group");
         if (m_f.readName(item, "type", key, g.type, true))
-            checkRef(item, "type", key, g.type, known("agent type", g.type), "agent type");
+            m_names.checkKnown(item, "type", key, g.type, "agent type");
         if (m_f.readU32(item, "count", key, g.count, true) && g.count > kMaxSpawnCount)
             m_f.error(item["count"].Mark(), key + ".count", "at most 10,000,000 agents per group");
         readGroupArea(item, key, g);
         if (m_f.readName(item, "goal", key, g.goal, false) && !g.goal.empty())
-            checkRef(item, "goal", key, g.goal, known("goal", g.goal), "goal");
+            m_names.checkKnown(item, "goal", key, g.goal, "goal");
         if (m_f.readName(item, "path", key, g.path, false) && !g.path.empty())
-            checkRef(item, "path", key, g.path, known("path", g.path), "path");
+            m_names.checkKnown(item, "path", key, g.path, "path");
         if (m_f.readU32(item, "leader", key, g.leader, false) && item["leader"].IsDefined())
-            m_leaderRefs.push_back({item["leader"].Mark(), key + ".leader", g.leader});
+            m_names.leads(item["leader"].Mark(), key + ".leader", g.leader);
         readExits(item, key, g.exits, !g.goal.empty() || !g.path.empty() || g.leader != 0, "goal, path or leader",
                   scene);
         if (!g.exits.empty() && scene.brainPicksGoals(g.type))
@@ -66,7 +66,7 @@ void SceneReader::readGroups(const YAML::Node& node, Scene& scene)
 
 // `formation: {shape, spacing, width}` or `companions: [min, max]` (Formations.h): walkers
 // only, one of the two, and a group that walks to one place (no exits to choose among).
-void SceneReader::readKeepingTogether(const YAML::Node& item, const std::string& key, const Scene& scene,
+void CrowdReader::readKeepingTogether(const YAML::Node& item, const std::string& key, const Scene& scene,
                                       SpawnGroup& g)
 {
     const YAML::Node formation = item["formation"], companions = item["companions"];
@@ -144,7 +144,7 @@ void SceneReader::readKeepingTogether(const YAML::Node& item, const std::string&
         m_f.warning(formation.Mark(), fk, "has no goal, path or leader: the formation forms where it stands");
 }
 
-void SceneReader::readExits(const YAML::Node& item, const std::string& key, std::vector<std::string>& names,
+void CrowdReader::readExits(const YAML::Node& item, const std::string& key, std::vector<std::string>& names,
                             bool routed, const char* route, const Scene& scene)
 {
     if (!item["exits"].IsDefined() || !m_f.readStringList(item, "exits", key, names, false))
@@ -167,7 +167,7 @@ void SceneReader::readExits(const YAML::Node& item, const std::string& key, std:
     }
 }
 
-void SceneReader::readRect(const YAML::Node& rect, const std::string& key, glm::vec2& min, glm::vec2& max)
+void CrowdReader::readRect(const YAML::Node& rect, const std::string& key, glm::vec2& min, glm::vec2& max)
 {
     m_f.checkKeys(rect, key, {"min", "max"});
     if (m_f.readVec2(rect, "min", key, min, true) && m_f.readVec2(rect, "max", key, max, true) &&
@@ -175,7 +175,7 @@ void SceneReader::readRect(const YAML::Node& rect, const std::string& key, glm::
         m_f.error(rect.Mark(), key, "min must not exceed max");
 }
 
-void SceneReader::readGroupArea(const YAML::Node& item, const std::string& key, SpawnGroup& g)
+void CrowdReader::readGroupArea(const YAML::Node& item, const std::string& key, SpawnGroup& g)
 {
     const YAML::Node rect = item["rect"], circle = item["circle"], shape = item["shape"], points = item["points"];
     const bool polygon = shape.IsDefined() || points.IsDefined();
@@ -196,7 +196,7 @@ void SceneReader::readGroupArea(const YAML::Node& item, const std::string& key, 
 
 // A polygon is given by a shape key (not a map like rect and circle) so that its corners
 // read as every other list of points in the file does.
-void SceneReader::readGroupPolygon(const YAML::Node& item, const std::string& key, SpawnGroup& g)
+void CrowdReader::readGroupPolygon(const YAML::Node& item, const std::string& key, SpawnGroup& g)
 {
     std::string shape;
     if (!m_f.readString(item, "shape", key, shape, true))

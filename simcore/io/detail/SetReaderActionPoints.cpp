@@ -1,6 +1,6 @@
 // Action points (`action_points`): places where walkers stop, turn and play an action
 // for a time (Scene.h, ActionPoint).
-#include "simcore/io/detail/SceneReader.h"
+#include "simcore/io/detail/SetReader.h"
 
 #include "simcore/scene/Clip.h"
 
@@ -19,7 +19,7 @@ std::string actionNames()
 
 }  // namespace
 
-void SceneReader::readActionPoints(const YAML::Node& node, Scene& scene)
+void SetReader::readActionPoints(const YAML::Node& node, Scene& scene)
 {
     if (!m_f.expectSequence(node, "action_points"))
         return;
@@ -31,7 +31,7 @@ void SceneReader::readActionPoints(const YAML::Node& node, Scene& scene)
         m_f.checkKeys(item, key, {"name", "position", "radius", "action", "duration", "facing", "chance", "types"});
         ActionPoint p;
         if (m_f.readName(item, "name", key, p.name, true))
-            claimName(item, key, p.name, "action point");
+            m_names.claim(item, key, p.name, "action point");
         m_f.readVec2(item, "position", key, p.position, true);
         m_f.readFloat(item, "radius", key, p.radiusM, false, Range::Positive);
         if (m_f.readName(item, "action", key, p.action, true)) {
@@ -46,7 +46,7 @@ void SceneReader::readActionPoints(const YAML::Node& node, Scene& scene)
         m_f.readFloat(item, "chance", key, p.chance, false, Range::Unit);
         if (m_f.readStringList(item, "types", key, p.types, false))
             for (std::size_t t = 0; t < p.types.size(); ++t)
-                if (!known("agent type", p.types[t]))
+                if (!m_names.known("agent type", p.types[t]))
                     m_f.error(item["types"][t].Mark(), indexKey(key + ".types", t),
                               "no agent type named '" + p.types[t] + "'");
         scene.actionPoints.push_back(std::move(p));
