@@ -32,6 +32,7 @@
 #include <QFileInfo>
 #include <QLabel>
 #include <QMenuBar>
+#include <QScrollArea>
 #include <QSettings>
 #include <QStatusBar>
 #include <QTimer>
@@ -39,6 +40,8 @@
 #include <QToolButton>
 #include <QUndoView>
 #include <QVBoxLayout>
+
+#include <algorithm>
 
 namespace throng::editor {
 
@@ -145,14 +148,37 @@ void MainWindow::createDocks()
     history->setEmptyLabel(tr("<opened>"));
     QDockWidget* historyDock = addDock(tr("History"), "historyDock", history, Qt::RightDockWidgetArea);
     m_timeline = new TimelinePanel(*m_simulation, this);
-    addDock(tr("Timeline"), "timelineDock", m_timeline, Qt::BottomDockWidgetArea);
+    QDockWidget* timelineDock = addDock(tr("Timeline"), "timelineDock", m_timeline, Qt::BottomDockWidgetArea);
     m_messages = new MessagesPanel(this);
     m_messagesDock = addDock(tr("Messages"), "messagesDock", m_messages, Qt::BottomDockWidgetArea);
     // The analysis shares the bottom with the messages, behind them until asked for.
     m_analysis = new AnalysisPanel(m_document, *m_simulation, this);
-    QDockWidget* analysisDock = addDock(tr("Analysis"), "analysisDock", m_analysis, Qt::BottomDockWidgetArea);
+    // In a scroll area: its charts and tabs would otherwise hold the whole foot of the
+    // window (the timeline's and the messages') at their height, over the viewport's.
+    auto* analysisScroll = new QScrollArea(this);
+    analysisScroll->setObjectName("analysisScroll");
+    analysisScroll->setWidget(m_analysis);
+    analysisScroll->setWidgetResizable(true);
+    analysisScroll->setFrameShape(QFrame::NoFrame);
+    QDockWidget* analysisDock = addDock(tr("Analysis"), "analysisDock", analysisScroll, Qt::BottomDockWidgetArea);
     tabifyDockWidget(m_messagesDock, analysisDock);
     m_messagesDock->raise();
+    // Brought forward, it takes the height its tabs and charts need, if the foot is lower.
+    // (A tabbed dock cannot be resized itself: the timeline beside it sets the row's height.)
+    connect(analysisDock, &QDockWidget::visibilityChanged, this, [this, analysisDock, timelineDock](bool visible) {
+        if (!visible || analysisDock->isFloating() || dockWidgetArea(timelineDock) != dockWidgetArea(analysisDock))
+            return;
+        QTimer::singleShot(0, this, [this, analysisDock, timelineDock] {
+            // As the scroll area measures it: its wrapped status line needs more height
+            // the narrower it is.
+            const int width = analysisDock->widget()->width();
+            const int panel = std::max(m_analysis->minimumSizeHint().height(),
+                                       m_analysis->hasHeightForWidth() ? m_analysis->heightForWidth(width) : 0);
+            const int wanted = panel + analysisDock->height() - analysisDock->widget()->height();
+            if (analysisDock->height() < wanted)
+                resizeDocks({timelineDock}, {timelineDock->height() + wanted - analysisDock->height()}, Qt::Vertical);
+        });
+    });
     analysisDock->toggleViewAction()->setIcon(themeIcon("action-analyse"));
     analysisDock->toggleViewAction()->setToolTip(tr("Show the Analysis panel: flows, densities and speeds of the "
                                                     "recorded run, and its HTML report"));
@@ -169,10 +195,13 @@ void MainWindow::createDocks()
         new WorkspaceLayout(*this, m_viewport, m_brains, {outlinerDock, propertiesDock, historyDock, layoutDock});
     // Room for Properties' fields at 1280 x 800 without a sideways scroll bar, and most of
     // the right column for them (History needs a few lines).
-    // The timeline keeps most of the foot for its scrub bar, the messages the rest.
+    // The timeline keeps most of the foot for its scrub bar, the messages the rest; the
+    // foot is as tall as the timeline needs, not as the analysis behind the messages asks,
+    // so the viewport keeps the height.
     m_workspace->setDefaultDockSizes({{"outlinerDock", QSize(220, 0)},
                                       {"propertiesDock", QSize(330, 440)},
-                                      {"messagesDock", QSize(380, 0)}});
+                                      {"messagesDock", QSize(380, 0)},
+                                      {"timelineDock", QSize(0, timelineDock->sizeHint().height())}});
     connect(m_brains, &BrainEditorPanel::brainMessages, m_messages, &MessagesPanel::showDiagnostics);
     connect(properties, &PropertiesPanel::problem, this, [this](const QString& text) {
         m_messages->showNote(text);

@@ -53,6 +53,9 @@ TimelinePanel::TimelinePanel(SimulationController& controller, QWidget* parent)
                            "With a layout time offset selected: Shift+drag to shift its agents by the frames dragged"));
     column->addWidget(m_scrub);
     column->addWidget(makeControls());
+    // A dock taller than the panel (beside a taller one in the bottom row) keeps the
+    // controls right under the ruler, not at the bottom of an empty strip.
+    column->addStretch(1);
 
     auto goTo = [this](int frame) {
         m_controller.pause();

@@ -30,6 +30,8 @@
 #include <QFile>
 #include <QLabel>
 #include <QPushButton>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QTabBar>
 #include <QTabWidget>
 #include <QTableWidget>
@@ -192,8 +194,14 @@ private slots:
 
         auto* dock = window.findChild<QDockWidget*>("analysisDock");
         QVERIFY(dock);
+        // The foot is as low as the timeline needs until the analysis is brought forward;
+        // then it grows to show the whole panel, without scrolling.
+        auto* scroll = window.findChild<QScrollArea*>("analysisScroll");
+        QVERIFY(scroll);
         QVERIFY(clickDockTab(window, "Analysis"));
         QTRY_VERIFY(!dock->visibleRegion().isEmpty());
+        QTRY_VERIFY(!scroll->verticalScrollBar()->isVisible());
+        QVERIFY(scroll->viewport()->height() >= window.analysis().minimumSizeHint().height());
         auto* status = window.findChild<QLabel*>("analysisStatus");
         QVERIFY(status->text().contains("press Analyse"));
         auto* analyse = window.findChild<QPushButton*>("analyseButton");

@@ -8,6 +8,7 @@
 
 #include "editor/WorkspaceLayout.h"
 #include "editor/brain/BrainEditorPanel.h"
+#include "editor/panels/AnalysisPanel.h"
 #include "editor/panels/OutlinerPanel.h"
 #include "editor/panels/TimelinePanel.h"
 
@@ -230,6 +231,29 @@ private slots:
             ++checked;
         }
         QVERIFY2(checked >= 10, qPrintable(QString::number(checked)));
+    }
+
+    void theFootIsAsLowAsTheTimelineNeeds()
+    {
+        // At 1280 x 800 the bottom row (timeline, messages, and the analysis behind them)
+        // is as tall as the timeline's controls ask, not as the analysis' charts: the
+        // viewport keeps the height.
+        MainWindow window;
+        QVERIFY(openAt(window, m_dir, {1280, 800}));
+        auto* timeline = window.findChild<QDockWidget*>("timelineDock");
+        QVERIFY(timeline && shown(window, "timelineDock"));
+        // (The messages' own minimum and the tab bar under them set it, a little above the
+        // timeline's 80-odd px; the analysis would ask for 190.)
+        QVERIFY2(timeline->height() < window.analysis().minimumSizeHint().height(),
+                 qPrintable(QString("%1 px, the analysis asks %2")
+                                .arg(timeline->height())
+                                .arg(window.analysis().minimumSizeHint().height())));
+        QVERIFY2(window.viewport().height() >= 560, qPrintable(QString::number(window.viewport().height())));
+        // The transport controls stay under the ruler, whatever the dock's height.
+        auto* ruler = window.findChild<QWidget*>("scrubBar");
+        auto* play = window.findChild<QAbstractButton*>("playButton");
+        QVERIFY(ruler && play);
+        QVERIFY(play->mapTo(&window, QPoint(0, 0)).y() - ruler->mapTo(&window, QPoint(0, ruler->height())).y() < 12);
     }
 };
 
