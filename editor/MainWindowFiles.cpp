@@ -114,7 +114,8 @@ void MainWindow::createFileMenu()
     add(tr("Save &As..."), "action-save-as", QKeySequence(tr("Ctrl+Shift+S")), tr("Save the scene to a new file"), &MainWindow::saveAsWithDialog);
     add(tr("Re&vert"), "action-revert", QKeySequence(), tr("Throw away the changes and read the file again"), &MainWindow::revert);
     menu->addSeparator();
-    add(tr("&Export..."), "action-export", QKeySequence(tr("Ctrl+Shift+E")), tr("Export the simulation as glTF or CSV"),
+    add(tr("&Export..."), "action-export", QKeySequence(tr("Ctrl+Shift+E")),
+        tr("Export the recorded run: glTF, USD, FBX, trajectories CSV, PedPy text, or per-agent caches (text, Maya)"),
         &MainWindow::showExportDialog);
     menu->addSeparator();
     add(tr("&Quit"), "action-quit", QKeySequence(tr("Ctrl+Q")), tr("Close Throng"), &QWidget::close);
