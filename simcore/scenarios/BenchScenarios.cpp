@@ -111,7 +111,7 @@ Scene makeCorridorScenario(std::uint32_t agents, std::uint64_t seed)
     return s;
 }
 
-Scene makeFlockScenario(std::uint32_t agents, std::uint64_t seed)
+Scene makeFlockScenario(std::uint32_t agents, std::uint64_t seed, FlockNumbering numbering)
 {
     // Boids (Reynolds 1987) in 3D: separation, alignment and cohesion, and a loose pursuit
     // of a lead bird that flies a closed circuit, so the flock migrates. Density about
@@ -161,12 +161,18 @@ Scene makeFlockScenario(std::uint32_t agents, std::uint64_t seed)
     const auto side = std::uint32_t(std::ceil(std::cbrt(double(agents))));
     const float spacing = 2.0f * half / float(side);
     for (std::uint32_t i = 1; i < agents; ++i) {
+        // The lattice point: along x first, or up first (then the bird at each point is
+        // the one RowByRow puts there: the same id and jitter).
+        const std::uint32_t first = i % side, second = (i / side) % side, zi = i / (side * side);
+        const std::uint32_t xi = numbering == FlockNumbering::ByColumn ? second : first,
+                            yi = numbering == FlockNumbering::ByColumn ? first : second;
+        const std::uint32_t point = xi + side * (yi + side * zi);  // RowByRow's i
         Agent a;
-        a.id = i + 1;
+        a.id = point + 1;
         a.type = bird.name;
-        const float x = float(i % side), y = float((i / side) % side), z = float(i / (side * side));
+        const float x = float(xi), y = float(yi), z = float(zi);
         // A lattice, jittered by a fixed pattern so no two birds start in lock-step.
-        const float jx = 0.3f * std::sin(float(i) * 12.9898f), jz = 0.3f * std::cos(float(i) * 78.233f);
+        const float jx = 0.3f * std::sin(float(point) * 12.9898f), jz = 0.3f * std::cos(float(point) * 78.233f);
         a.position = glm::vec3(2.0f * half + (x - 0.5f * float(side)) * spacing + jx, 20.0f + y * spacing * 0.5f,
                                (z - 0.5f * float(side)) * spacing + jz);
         a.headingDeg = 90.0f;

@@ -32,8 +32,14 @@ Scene makeCrossScenario(std::uint32_t agents, std::uint64_t seed = 1, const Cros
 Scene makeCrossBrainScenario(std::uint32_t agents, std::uint64_t seed = 1);
 // One line naming the layout's numbers, for the bench JSON.
 std::string crossLayoutDescription(const CrossLayout& layout = {});
-// `flock`: 3D boids migrating around a closed circuit.
-Scene makeFlockScenario(std::uint32_t agents, std::uint64_t seed = 1);
+// `flock`: 3D boids migrating around a closed circuit. They start on a lattice, numbered
+// along x, then up, then along z (RowByRow, the scenario), or up each column first
+// (ByColumn): the order the World's neighbour grid visits them in, cell by cell. Each bird
+// keeps its id, place and heading either way, so the two differ only in the order the World
+// stores them in (exactly, when `agents` is a cube; else the lattice's last points differ).
+enum class FlockNumbering { RowByRow, ByColumn };
+Scene makeFlockScenario(std::uint32_t agents, std::uint64_t seed = 1,
+                        FlockNumbering numbering = FlockNumbering::RowByRow);
 // `army`: two masses charge each other across a field.
 Scene makeArmyScenario(std::uint32_t agents, std::uint64_t seed = 1);
 // `corridor`: two groups walk in opposite directions between two long walls.
