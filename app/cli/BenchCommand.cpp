@@ -2,6 +2,7 @@
 #include "Progress.h"
 
 #include "simcore/scenarios/BenchScenarios.h"
+#include "simcore/world/GridOrder.h"
 #include "simcore/world/RunStats.h"
 #include "simcore/world/World.h"
 
@@ -36,6 +37,8 @@ int benchCommand(const CliArguments& args, std::ostream& out, std::ostream& err)
         return 2;
     }
     const std::uint64_t memoryBefore = peakResidentBytes();
+    // As `run` does: a big crowd of fliers stored in the order the World steps it in.
+    const bool ordered = sim::orderPlacedForGrid(scene);
     sim::WorldOptions options;
     options.threads = args.threads;
     sim::World world(scene, options);
@@ -63,7 +66,8 @@ int benchCommand(const CliArguments& args, std::ostream& out, std::ostream& err)
     if (name == "cross" || name == "cross-brain")
         j << "\"layout\": \"" << sim::crossLayoutDescription() << "\", ";
     j << "\"agents\": " << world.agentCount() << ", \"steps\": " << steps
-      << ", \"threads\": " << world.threads() << ", \"seconds\": " << seconds
+      << ", \"threads\": " << world.threads() << ", \"placed_in_grid_order\": " << (ordered ? "true" : "false")
+      << ", \"seconds\": " << seconds
       << ", \"agent_steps_per_second\": " << stats.agentStepsPerSecond
       << ", \"ms_per_step\": " << (steps ? seconds * 1000.0 / double(steps) : 0.0)
       << ", \"steps_per_second\": " << (seconds > 0.0 ? double(steps) / seconds : 0.0)

@@ -5,6 +5,7 @@
 #include "simcore/io/SceneIO.h"
 #include "simcore/io/SceneOverrides.h"
 #include "simcore/world/FrameCache.h"
+#include "simcore/world/GridOrder.h"
 #include "simcore/world/RunStats.h"
 #include "simcore/world/World.h"
 
@@ -26,13 +27,16 @@ int runCommand(const CliArguments& args, std::ostream& out, std::ostream& err)
         }
         overrides.push_back(*o);
     }
-    const sim::LoadResult loaded = sim::loadScene(args.scene, overrides);
+    sim::LoadResult loaded = sim::loadScene(args.scene, overrides);
     for (const sim::Diagnostic& d : loaded.diagnostics)
         err << d.format() << '\n';
     if (!loaded.ok()) {
         err << "throng-cli: " << args.scene << " is not a valid scene; nothing was run\n";
         return 1;
     }
+    // A big crowd of fliers is stored in the order the World steps it in: every agent keeps
+    // its id and does the same, but the steps read and write memory in order (GridOrder.h).
+    sim::orderPlacedForGrid(loaded.scene);
     const sim::Scene& scene = loaded.scene;
     const std::uint64_t frames =
         args.frames ? *args.frames

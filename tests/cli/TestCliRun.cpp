@@ -5,9 +5,11 @@
 
 #include <QDir>
 #include <QFile>
+#include <QHash>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QSet>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -222,6 +224,75 @@ private slots:
                                 "wall_penetrations"})
             QVERIFY2(o.contains(key), key);
         QCOMPARE(o["agents_with_brain"].toInt(), 0);
+        QCOMPARE(o["placed_in_grid_order"].toBool(), false);  // walkers keep their order
+    }
+
+    // `run` stores 70,000 placed birds (at least kGridOrderFrom) in the grid's order, and
+    // each bird still starts where the file puts it and keeps its id: frame 0 of the
+    // trajectories holds every id at its own place, and every frame holds every bird.
+    void runStoresABigFlockInTheGridsOrderAndKeepsEachBird()
+    {
+        QTemporaryDir dir;
+        QString text = "throng: 1\n"
+                       "settings: {fps: 24, duration: 1, seed: 2, bounds: {min: [-300, -300], max: [300, 300]}}\n"
+                       "agent_types: [{name: bird, kind: flier, radius: 0.2, max_speed: 12, min_speed: 4, "
+                       "perception: 3, behaviours: {separation: 2, alignment: 1, cohesion: 1, wander: 0.2}}]\n"
+                       "agents:\n  columns: [id, type, x, y, z]\n  rows: |\n";
+        constexpr int kBirds = 70000, kSide = 41;  // a 41 x 41 x 42 lattice, 5 m apart, numbered along x first
+        QHash<int, QString> at;
+        for (int i = 0; i < kBirds; ++i) {
+            const int x = i % kSide, y = (i / kSide) % kSide, z = i / (kSide * kSide);
+            const QString place = QString("%1,%2,%3").arg(x * 5 - 100).arg(20 + y * 2).arg(z * 5 - 100);
+            at[i + 1] = place;
+            text += QString("    %1 bird %2 %3 %4\n").arg(i + 1).arg(x * 5 - 100).arg(20 + y * 2).arg(z * 5 - 100);
+        }
+        const QString scene = dir.filePath("birds.yaml"), csv = dir.filePath("birds.csv");
+        QFile f(scene);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(text.toUtf8());
+        f.close();
+        const auto r =
+            runCli({"run", scene.toStdString(), "--frames", "3", "--trajectories", csv.toStdString(), "--quiet"});
+        QVERIFY2(r.status == 0, r.err.c_str());
+        const QStringList lines = readLines(csv);
+        QCOMPARE(lines.size(), 1 + 3 * kBirds);  // the header, then frames 0 to 2
+        QSet<int> seen;
+        QList<int> firstIds;
+        for (int k = 1; k <= kBirds; ++k) {
+            const QStringList v = lines[k].split(',');  // frame,agent,x,y,z,...
+            QCOMPARE(v[0], QString("0"));
+            const int id = v[1].toInt();
+            if (k <= 3)
+                firstIds << id;
+            QVERIFY(!seen.contains(id));
+            seen.insert(id);
+            const QString place = QString("%1,%2,%3").arg(v[2].toDouble()).arg(v[3].toDouble()).arg(v[4].toDouble());
+            QCOMPARE(place, at[id]);
+        }
+        QCOMPARE(seen.size(), kBirds);
+        // The rows come in the grid's order, not the file's: bird 1, then the birds above
+        // it (up its column first), not birds 2 and 3 beside it.
+        QCOMPARE(firstIds, (QList<int>{1, 1 + kSide, 1 + 2 * kSide}));
+        for (int frame = 1; frame <= 2; ++frame) {
+            QSet<int> ids;
+            for (int k = 1 + frame * kBirds; k <= (frame + 1) * kBirds; ++k)
+                ids.insert(lines[k].section(',', 1, 1).toInt());
+            QCOMPARE(ids, seen);
+        }
+    }
+
+    // A flock of 70,000 placed birds (at least kGridOrderFrom) is stored in the grid's
+    // order before it runs; 2,000 keep the scenario's.
+    void benchStoresABigFlockInTheGridsOrder()
+    {
+        for (const auto& [agents, ordered] : {std::pair{"70000", true}, std::pair{"2000", false}}) {
+            const auto r = runCli({"bench", "--agents", agents, "--steps", "2", "--scenario", "flock", "--quiet"});
+            QCOMPARE(r.status, 0);
+            const QJsonObject o = QJsonDocument::fromJson(QByteArray::fromStdString(r.out)).object();
+            QCOMPARE(o["agents"].toInt(), std::stoi(agents));
+            QCOMPARE(o["placed_in_grid_order"].toBool(), ordered);
+            QCOMPARE(o["non_finite_values"].toInt(), 0);
+        }
     }
 
     // The scenario of issue 27's million walkers with brains: every walker of `cross` runs

@@ -8,14 +8,17 @@
 #include "TestRegistry.h"
 
 #include "simcore/scenarios/BenchScenarios.h"
+#include "simcore/world/GridOrder.h"
 #include "simcore/world/World.h"
 
 #include <QTest>
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <map>
 #include <random>
+#include <tuple>
 #include <vector>
 
 using namespace throng;
@@ -113,6 +116,53 @@ private slots:
         QVERIFY2(moved > kBirds * 9 / 10, "the two orders should differ for almost every bird");
         QVERIFY(World(rows).usesBoidKernel(0));
         QVERIFY(compareRuns(rows, columns, {1, 24, 120, 240}) > int(kBirds) * 9 / 10);
+    }
+
+    void fliersPutInTheGridsOrderFlyAsPlaced()
+    {
+        // What throng-cli run and bench do to a scene of 65,536 placed agents or more
+        // with fliers, here from 1,000 on.
+        const Scene flock = makeFlockScenario(8000, 3);
+        Scene ordered = flock;
+        QVERIFY(orderPlacedForGrid(ordered, 1000));
+        QCOMPARE(ordered.agents.size(), flock.agents.size());
+        // Every agent is still there, with all it had, and now in the grid's order: rows
+        // of 3 m cells (the birds' perception) along z, cells along x, then up.
+        std::map<AgentId, const Agent*> placed;
+        for (const Agent& a : flock.agents)
+            placed[a.id] = &a;
+        const glm::vec2 min = flock.settings.boundsMin;
+        auto key = [&](const Agent& a) {
+            return std::tuple(std::floor((a.position.z - min.y) / 3.0f), std::floor((a.position.x - min.x) / 3.0f),
+                              a.position.y);
+        };
+        std::size_t moved = 0, outOfOrderBefore = 0;
+        for (std::size_t k = 0; k < ordered.agents.size(); ++k) {
+            const Agent& a = ordered.agents[k];
+            QVERIFY(placed.count(a.id));
+            const Agent& was = *placed[a.id];
+            QVERIFY(a.position == was.position && a.headingDeg == was.headingDeg && a.leader == was.leader &&
+                    a.type == was.type);
+            placed.erase(a.id);
+            moved += flock.agents[k].id != a.id;
+            if (k > 0) {
+                QVERIFY2(!(key(a) < key(ordered.agents[k - 1])), qPrintable(QString("agent %1 out of order").arg(k)));
+                outOfOrderBefore += key(flock.agents[k]) < key(flock.agents[k - 1]);
+            }
+        }
+        QVERIFY(placed.empty());
+        QVERIFY2(moved > 7000 && outOfOrderBefore > 1000,
+                 qPrintable(QString("%1 moved, %2 out of order before").arg(moved).arg(outOfOrderBefore)));
+        QVERIFY(compareRuns(flock, ordered, {1, 24, 120}) > 7000);
+
+        // Below the threshold, and without fliers, a scene keeps its order.
+        Scene small = flock;
+        QVERIFY(!orderPlacedForGrid(small));
+        QVERIFY(small.agents == flock.agents);
+        const Scene cross = makeCrossScenario(2000, 7);
+        Scene walkers = cross;
+        QVERIFY(!orderPlacedForGrid(walkers, 1000));
+        QVERIFY(walkers.agents == cross.agents);
     }
 
     void shuffledWalkersWalkAsPlaced()
