@@ -273,6 +273,17 @@ void NeighbourGrid::sortCellsByHeight(std::span<const glm::vec3> positions, std:
             }
             continue;
         }
+        // A flock keeps its order from step to step, and the counting sort keeps indices
+        // ascending: a column of birds stored from the ground up comes out already sorted.
+        // Then the sort below would give the same order again (it is a total order), so
+        // it is skipped.
+        bool sorted = true;
+        for (std::uint32_t k = b + 1; sorted && k < e; ++k) {
+            const float below = m_sortedPos[k - 1].y, y = m_sortedPos[k].y;
+            sorted = below < y || (below == y && m_sorted[k - 1] < m_sorted[k]);
+        }
+        if (sorted)
+            continue;
         scratch.clear();
         for (std::uint32_t k = b; k < e; ++k)
             scratch.push_back({m_sortedPos[k].y, m_sorted[k]});

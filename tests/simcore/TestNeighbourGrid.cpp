@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <iterator>
 #include <optional>
+#include <numeric>
 #include <random>
 #include <set>
 #include <tuple>
@@ -222,6 +223,57 @@ private slots:
         grid.rebuild(pos);
         grid.forEachNear({10, 10}, 1.0f, [&](std::uint32_t j) { near += j == 0; });
         QCOMPARE(near, 1);
+    }
+
+    // A cell of more than the insertion sort takes is sorted by height, ties by index,
+    // whether its agents come already in that order (a flock stored from the ground up:
+    // the sort is skipped), the other way up, with equal heights, or with one out of place.
+    void crowdedCellsSortByHeightWhateverTheirOrder_data()
+    {
+        QTest::addColumn<QString>("arrangement");
+        for (const char* a : {"ground up", "top down", "equal heights", "one out of place", "ground up, one tie"})
+            QTest::newRow(a) << QString(a);
+    }
+
+    void crowdedCellsSortByHeightWhateverTheirOrder()
+    {
+        QFETCH(QString, arrangement);
+        constexpr std::size_t kColumn = 200;  // in one 3 m cell
+        std::vector<glm::vec3> pos;
+        for (std::size_t i = 0; i < kColumn; ++i) {
+            float y = float(i) * 0.5f;
+            if (arrangement == "top down")
+                y = float(kColumn - i) * 0.5f;
+            else if (arrangement == "equal heights")
+                y = float(i / 10);
+            else if (arrangement == "one out of place" && i == 120)
+                y = 3.25f;
+            else if (arrangement == "ground up, one tie" && i == 121)
+                y = float(i - 1) * 0.5f;
+            pos.push_back({1.0f + 0.001f * float(i % 7), y, 1.0f});
+        }
+        pos.push_back({10.0f, 5.0f, 1.0f});  // and an agent in a cell of its own
+        NeighbourGrid grid;
+        grid.configure({0.0f, 0.0f}, {30.0f, 30.0f}, 3.0f);
+        grid.rebuild(pos, true);
+        std::vector<std::uint32_t> expected(kColumn);
+        std::iota(expected.begin(), expected.end(), 0u);
+        std::sort(expected.begin(), expected.end(),
+                  [&](std::uint32_t a, std::uint32_t b) { return std::pair(pos[a].y, a) < std::pair(pos[b].y, b); });
+        expected.push_back(std::uint32_t(kColumn));
+        const std::span<const std::uint32_t> order = grid.order();
+        QVERIFY(std::vector<std::uint32_t>(order.begin(), order.end()) == expected);
+        for (std::size_t k = 0; k < order.size(); ++k)
+            QCOMPARE(grid.orderedPosition(k), pos[order[k]]);
+        // And the heights a query reads are the sorted ones: a slice finds exactly its agents.
+        std::vector<std::uint32_t> slice;
+        grid.forEachNear3D({1.0f, 40.0f, 1.0f}, 1.0f, [&](std::uint32_t j, const glm::vec3&) { slice.push_back(j); });
+        std::vector<std::uint32_t> within;
+        for (std::uint32_t j = 0; j < kColumn; ++j)
+            if (pos[j].y >= 39.0f && pos[j].y <= 41.0f)
+                within.push_back(j);
+        std::sort(slice.begin(), slice.end());
+        QVERIFY(slice == within);
     }
 
     // The parallel rebuild leaves the serial one's order (so every neighbour sum, and with
