@@ -15,8 +15,8 @@ namespace throng::sim {
 inline constexpr std::size_t kGridOrderFrom = 65'536;
 
 // Puts a scene's placed agents in the order its World's grid steps them in, when the scene
-// has fliers (walkers step in the stored order, which a placed crowd already keeps as it
-// was laid out) and at least `from` placed agents; true when it reordered them. Each agent
+// has fliers (without them the World steps agents in the stored order) and at least `from`
+// placed agents; true when it reordered them. Each agent
 // keeps everything it has, id included. For a scene run headless (throng-cli run and
 // bench): the editor's outliner, checkpoints and resume read placed agents by their place
 // in the scene, so the document's own scene is never reordered.
