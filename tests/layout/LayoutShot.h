@@ -88,6 +88,16 @@ inline sim::LayoutOp op(sim::LayoutKind kind, std::vector<std::uint32_t> ids)
     return o;
 }
 
+// Expand (factor > 1) or squeeze (< 1) the members of `group` about their centre.
+inline sim::LayoutOp expandGroup(const std::string& group, float factor)
+{
+    sim::LayoutOp o;
+    o.kind = sim::LayoutKind::Expand;
+    o.agents.groups = {group};
+    o.factor = factor;
+    return o;
+}
+
 // The trajectories CSV of `cache`, written to `path` and read back: by agent id, frame ->
 // the row's text.
 inline std::map<std::uint32_t, std::map<int, std::string>> csvRows(const sim::FrameCache& cache,

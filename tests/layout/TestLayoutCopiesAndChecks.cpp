@@ -271,10 +271,7 @@ layout:
         QVERIFY2(largestStep <= 0.25f, qPrintable(QString::number(largestStep)));  // at 10 fps
 
         // A squeezed group: both bodies of a pair move, so it settles; the runners stay.
-        sim::LayoutOp squeeze;
-        squeeze.kind = sim::LayoutKind::Expand;
-        squeeze.agents.groups = {"eastbound"};
-        squeeze.factor = 0.1f;
+        const sim::LayoutOp squeeze = expandGroup("eastbound", 0.1f);
         s.scene.layout.ops = {squeeze};
         const sim::FrameCache squeezed = sim::applyLayout(s.scene, s.cache);
         const std::size_t before = sim::checkLayout(s.scene, s.cache, squeezed).overlaps.size();

@@ -221,10 +221,7 @@ private slots:
     void expandSpreadsTheGroupAboutItsCentre()
     {
         Shot s = record(kSquare);
-        sim::LayoutOp expand;
-        expand.kind = sim::LayoutKind::Expand;
-        expand.agents.groups = {"northbound"};
-        expand.factor = 2.0f;
+        const sim::LayoutOp expand = expandGroup("northbound", 2.0f);
         s.scene.layout.ops = {expand};
         const sim::FrameCache laid = sim::applyLayout(s.scene, s.cache);
         std::vector<std::size_t> runners;
