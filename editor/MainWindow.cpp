@@ -2,6 +2,7 @@
 
 #include "editor/AgentTypePresets.h"
 #include "editor/AutosaveRecovery.h"
+#include "editor/FootHeight.h"
 #include "editor/HelpMenu.h"
 #include "editor/Icons.h"
 #include "editor/MessagesPanel.h"
@@ -163,22 +164,8 @@ void MainWindow::createDocks()
     QDockWidget* analysisDock = addDock(tr("Analysis"), "analysisDock", analysisScroll, Qt::BottomDockWidgetArea);
     tabifyDockWidget(m_messagesDock, analysisDock);
     m_messagesDock->raise();
-    // Brought forward, it takes the height its tabs and charts need, if the foot is lower.
-    // (A tabbed dock cannot be resized itself: the timeline beside it sets the row's height.)
-    connect(analysisDock, &QDockWidget::visibilityChanged, this, [this, analysisDock, timelineDock](bool visible) {
-        if (!visible || analysisDock->isFloating() || dockWidgetArea(timelineDock) != dockWidgetArea(analysisDock))
-            return;
-        QTimer::singleShot(0, this, [this, analysisDock, timelineDock] {
-            // As the scroll area measures it: its wrapped status line needs more height
-            // the narrower it is.
-            const int width = analysisDock->widget()->width();
-            const int panel = std::max(m_analysis->minimumSizeHint().height(),
-                                       m_analysis->hasHeightForWidth() ? m_analysis->heightForWidth(width) : 0);
-            const int wanted = panel + analysisDock->height() - analysisDock->widget()->height();
-            if (analysisDock->height() < wanted)
-                resizeDocks({timelineDock}, {timelineDock->height() + wanted - analysisDock->height()}, Qt::Vertical);
-        });
-    });
+    // Brought forward, it takes the height its tabs and charts need; the messages give it back.
+    new FootHeight(*this, *timelineDock, *m_messagesDock, *analysisDock, *m_analysis);
     analysisDock->toggleViewAction()->setIcon(themeIcon("action-analyse"));
     analysisDock->toggleViewAction()->setToolTip(tr("Show the Analysis panel: flows, densities and speeds of the "
                                                     "recorded run, and its HTML report"));

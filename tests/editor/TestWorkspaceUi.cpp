@@ -1,7 +1,8 @@
 // The window's workspaces driven like a user: Ctrl+B gives the brain editor room of its
 // own beside the viewport and gives it back; each workspace keeps its arrangement; View >
 // Reset Layout restores the default; a layout that no longer fits does not come back at
-// the next launch; Properties needs no horizontal scroll bar at 1280 x 800.
+// the next launch; Properties needs no horizontal scroll bar at 1280 x 800; the foot is as
+// low as the timeline needs, and the messages give back the height the analysis took.
 #include "EditorTestSupport.h"
 #include "EditorUiDriver.h"
 #include "TestRegistry.h"
@@ -63,6 +64,18 @@ bool clickViewMenuItem(MainWindow& window, const QString& text)
         QTest::qWait(20);
     QCoreApplication::processEvents();
     return clicked;
+}
+
+// Clicks the tab titled `title` in the dock tab bars, as a user would.
+bool clickDockTab(MainWindow& window, const QString& title)
+{
+    for (QTabBar* bar : window.findChildren<QTabBar*>())
+        for (int t = 0; t < bar->count(); ++t)
+            if (bar->tabText(t).remove('&') == title && bar->isVisible()) {
+                QTest::mouseClick(bar, Qt::LeftButton, Qt::NoModifier, bar->tabRect(t).center());
+                return true;
+            }
+    return false;
 }
 
 bool openAt(MainWindow& window, const QTemporaryDir& dir, QSize size)
@@ -254,6 +267,46 @@ private slots:
         auto* play = window.findChild<QAbstractButton*>("playButton");
         QVERIFY(ruler && play);
         QVERIFY(play->mapTo(&window, QPoint(0, 0)).y() - ruler->mapTo(&window, QPoint(0, ruler->height())).y() < 12);
+    }
+
+    void theMessagesGiveBackTheHeightTheAnalysisTook()
+    {
+        MainWindow window;
+        QVERIFY(openAt(window, m_dir, {1280, 800}));
+        QDockWidget* timeline = dock(window, "timelineDock");
+        QDockWidget* analysis = dock(window, "analysisDock");
+        auto* scroll = window.findChild<QScrollArea*>("analysisScroll");
+        QVERIFY(timeline && analysis && scroll);
+        const int low = timeline->height(), viewport = window.viewport().height();
+
+        // The analysis brought forward takes the height it needs...
+        QVERIFY(clickDockTab(window, "Analysis"));
+        QTRY_VERIFY(timeline->height() > low + 40);
+        QTRY_VERIFY(!scroll->verticalScrollBar()->isVisible());
+        QVERIFY(window.viewport().height() < viewport);
+        // ...and the messages give it back.
+        QVERIFY(clickDockTab(window, "Messages"));
+        QTRY_COMPARE(timeline->height(), low);
+        QCOMPARE(window.viewport().height(), viewport);
+
+        // A height the user sets while the analysis is forward stays.
+        QVERIFY(clickDockTab(window, "Analysis"));
+        QTRY_VERIFY(timeline->height() > low + 40);
+        const int grown = timeline->height();
+        // The separator between the viewport and the row: drag it 60 px up.
+        const int gap = timeline->mapTo(&window, QPoint(0, 0)).y() - 3;
+        const QPoint from(window.width() / 2, gap), to(window.width() / 2, gap - 60);
+        QTest::mousePress(window.windowHandle(), Qt::LeftButton, Qt::NoModifier, from);
+        for (int step = 1; step <= 6; ++step)
+            QTest::mouseMove(window.windowHandle(), from + (to - from) * step / 6);
+        QTest::mouseRelease(window.windowHandle(), Qt::LeftButton, Qt::NoModifier, to);
+        QTRY_VERIFY2(timeline->height() >= grown + 40, qPrintable(QString("%1 px after the drag, %2 before")
+                                                                      .arg(timeline->height())
+                                                                      .arg(grown)));
+        const int set = timeline->height();
+        QVERIFY(clickDockTab(window, "Messages"));
+        QTest::qWait(100);
+        QCOMPARE(timeline->height(), set);
     }
 };
 
