@@ -3,6 +3,8 @@
 #include "simcore/analysis/RecordedPositions.h"
 #include "simcore/scene/GroundPolygon.h"
 
+#include <glm/common.hpp>
+
 #include <algorithm>
 #include <cmath>
 

@@ -105,7 +105,7 @@ void BoidKernel::build(const AgentTypes& types, float dt, std::size_t agents, bo
 }
 
 BoidPass::BoidPass(BoidKernel& kernel, const StepView& v, AgentColumns& agents)
-    : m_types(v.types), m_set(v.set), m_clock(v.clock), m_grid(v.grid), m_agents(agents),
+    : m_types(v.types), m_set(v.set), m_clock(v.clock), m_grid(v.grid), m_ties(v.ties), m_agents(agents),
       m_boidTypes(kernel.m_boidTypes), m_collideFree(kernel.m_collideFree.data()), m_boidSlackM(kernel.m_slackM),
       m_steerEight(kernel.m_steerEight), m_neighbourSweep(v.warmSearch), m_seed(v.seed)
 {
@@ -129,20 +129,33 @@ void BoidPass::senseBoid(std::size_t i, NeighbourGrid::Sweep* sweep, BoidSense& 
     // depends on the guess.
     const float guess2 = m_neighbourSweep ? lastNearestBound(m_agents, i, m_agents.pos[i], perception2) : perception2;
     BoidNearest best;
-    searchBoid(i, sweep, guess2, best);
-    if (!best.full() && guess2 < perception2)
-        searchBoid(i, sweep, perception2, best);
+    searchBoid(i, sweep, guess2, best, false);
+    finishSearch(i, sweep, guess2, perception2, best);
     sumBoid(i, best, out);
 }
 
-void BoidPass::searchBoid(std::size_t i, NeighbourGrid::Sweep* sweep, float startBound, BoidNearest& best) const
+void BoidPass::finishSearch(std::size_t i, NeighbourGrid::Sweep* sweep, float guess2, float perception2,
+                            BoidNearest& best) const
+{
+    if (!best.full() && guess2 < perception2)
+        searchBoid(i, sweep, perception2, best, best.byRank);
+    if (!best.byRank && !m_ties.byIndex() && best.sawTie()) {
+        searchBoid(i, sweep, guess2, best, true);
+        finishSearch(i, sweep, guess2, perception2, best);
+    }
+}
+
+void BoidPass::searchBoid(std::size_t i, NeighbourGrid::Sweep* sweep, float startBound, BoidNearest& best,
+                          bool byRank) const
 {
     const TypeParams& t = m_types.params[m_agents.info[i].typeIndex];
     const glm::vec3 p = m_agents.pos[i], fwd = m_agents.fwd[i];
     const float radius = m_agents.radius[i];
     // Sense: the k nearest in the perception radius and view cone, nearest first, ties by
-    // index (as gatherNeighbours, without the layers and priorities a boid world lacks).
+    // id (as gatherNeighbours, without the layers and priorities a boid world lacks).
     best.clear();
+    best.byRank = byRank;
+    const bool watch = !m_ties.byIndex();
     float bound = startBound;
     const float c = t.cosHalfView;
     const auto self = std::uint32_t(i);
@@ -156,7 +169,8 @@ void BoidPass::searchBoid(std::size_t i, NeighbourGrid::Sweep* sweep, float star
             if (d2 > contact * contact)
                 return;
         }
-        if (best.insert(nearestKey(d2, j)) && best.full())
+        const std::uint64_t key = nearestKey(d2, byRank ? m_ties.rank(j) : j);
+        if ((watch ? best.insertWatchingTies(key) : best.insert(key)) && best.full())
             bound = best.worstDistance2();
     };
     if (sweep)
@@ -182,7 +196,7 @@ void BoidPass::sumBoid(std::size_t i, const BoidNearest& best, BoidSense& out)
     float* keepOut = out.keepOut;
     behave::SeparationFloor floor;
     for (std::size_t n = 0; n < count; ++n) {
-        const auto j = best.index(n);
+        const auto j = best.index(n, m_ties);
         nearIndex[n] = j;
         const glm::vec3 q = m_agents.pos[j], vj = m_agents.vel[j];
         headings += m_agents.fwd[j];

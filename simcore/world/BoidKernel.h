@@ -95,8 +95,14 @@ private:
     using BoidType = BoidKernel::BoidType;
     using BoidNearest = NearestList<kMaxNeighbours>;
     void senseBoid(std::size_t i, NeighbourGrid::Sweep* sweep, BoidSense& out);
-    // senseBoid's two parts: the k nearest within a squared bound, then the sums over them.
-    void searchBoid(std::size_t i, NeighbourGrid::Sweep* sweep, float startBound, BoidNearest& best) const;
+    // senseBoid's two parts: the k nearest within a squared bound (keyed by index, or by
+    // rank: TieOrder.h), then the sums over them.
+    void searchBoid(std::size_t i, NeighbourGrid::Sweep* sweep, float startBound, BoidNearest& best,
+                    bool byRank) const;
+    // After a search within guess2: within the whole perception when fewer than k lay in
+    // it, and again by rank should two candidates have come at the same distance.
+    void finishSearch(std::size_t i, NeighbourGrid::Sweep* sweep, float guess2, float perception2,
+                      BoidNearest& best) const;
     void sumBoid(std::size_t i, const BoidNearest& best, BoidSense& out);
     // The steering and integration (BoidKernelLanes.cpp), written once as steerLanes over
     // a lane type F of one, four or eight floats, for boid[0, width).
@@ -115,6 +121,7 @@ private:
     const StaticSet& m_set;
     const StepClock& m_clock;
     const NeighbourGrid& m_grid;
+    const TieOrder& m_ties;
     AgentColumns& m_agents;
     const std::vector<BoidType>& m_boidTypes;
     std::uint8_t* m_collideFree;

@@ -60,6 +60,7 @@ void BoidPass::senseFourBoids(const std::uint32_t* boid, int count, NeighbourGri
     // test: not d2 > bound), with the view cone's test (outsideViewCone's operations) and
     // the contact distance's for all four at once; then ranked one lane at a time.
     const F4 cone2 = cone * cone;
+    const bool watch = !m_ties.byIndex();  // for ties, as searchBoid
     const M4 allRound = cone <= -1.0f, coneAhead = cone >= 0.0f;
     auto consider = [&](std::uint32_t j, const glm::vec3& q) {
         const F4 dx = q.x - px, dy = q.y - py, dz = q.z - pz;
@@ -76,7 +77,8 @@ void BoidPass::senseFourBoids(const std::uint32_t* boid, int count, NeighbourGri
         }
         for (unsigned lanes = bitsOf(take); lanes != 0; lanes &= lanes - 1) {
             const int l = std::countr_zero(lanes);
-            if (best[l].insert(nearestKey(d2[l], j)) && best[l].full())
+            const std::uint64_t key = nearestKey(d2[l], j);
+            if ((watch ? best[l].insertWatchingTies(key) : best[l].insert(key)) && best[l].full())
                 bound[l] = best[l].worstDistance2();
         }
     };
@@ -87,9 +89,9 @@ void BoidPass::senseFourBoids(const std::uint32_t* boid, int count, NeighbourGri
     }
     for (int l = 0; l < count; ++l) {
         const std::size_t i = boid[l];
-        // As senseBoid: fewer than k within the guess, so search the whole radius.
-        if (!best[l].full() && guess2[l] < perception2)
-            searchBoid(i, &sweep, perception2, best[l]);
+        // As senseBoid: fewer than k within the guess, so search the whole radius; and
+        // again by rank after a tie (TieOrder.h).
+        finishSearch(i, &sweep, guess2[l], perception2, best[l]);
         sumBoid(i, best[l], out[l]);
     }
 }

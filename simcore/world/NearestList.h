@@ -3,7 +3,13 @@
 // kernel), and the view-cone test of Reynolds (1987) both apply. Keys sort nearest first:
 // the squared distance's bits in the high word (an optional flag in bit 63 sorts flagged
 // candidates after the others), the agent index in the low word, so ties go by index and
-// the result never depends on the order the grid visits candidates in.
+// the result never depends on the order the grid visits candidates in. Where the World's
+// ids do not rise with the index, a search watches for candidates at equal distances
+// (insertWatchingTies) and, should it meet one, searches again with the agents' ranks in
+// the low word instead (TieOrder.h): ties then go by id, and the result never depends on
+// the order the World stores its agents in either.
+
+#include "simcore/world/TieOrder.h"
 
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
@@ -15,8 +21,8 @@
 
 namespace throng::sim {
 
-// The sort key of candidate j at squared distance d2 (>= 0); `late` sorts it after every
-// candidate without the flag.
+// The sort key of candidate j (its index, or its rank: TieOrder::rank) at squared distance
+// d2 (>= 0); `late` sorts it after every candidate without the flag.
 inline std::uint64_t nearestKey(float d2, std::uint32_t j, bool late = false)
 {
     const std::uint64_t flag = late ? std::uint64_t(1) << 63 : 0;
@@ -39,15 +45,24 @@ template <std::size_t K>
 struct NearestList {
     std::array<std::uint64_t, K> keys;  // the first `count` are valid, ascending; the rest all ones
     std::size_t count = 0;
+    // The keys' low words are ranks (TieOrder::rank), not indices; set by the search.
+    bool byRank = false;
+    // (insertWatchingTies) A candidate came at the distance of the farthest kept.
+    bool tied = false;
 
     NearestList() { clear(); }
     void clear()
     {
         count = 0;
+        tied = false;
         keys.fill(~std::uint64_t(0));
     }
     bool full() const { return count == K; }
-    std::uint32_t index(std::size_t n) const { return std::uint32_t(keys[n]); }
+    // The n-th nearest's index.
+    std::uint32_t index(std::size_t n, const TieOrder& ties) const
+    {
+        return byRank ? ties.index(std::uint32_t(keys[n])) : std::uint32_t(keys[n]);
+    }
     // The squared distance of the farthest kept candidate (its flag masked off).
     float worstDistance2() const { return std::bit_cast<float>(std::uint32_t(keys[K - 1] >> 32) & 0x7fffffffu); }
 
@@ -66,6 +81,30 @@ struct NearestList {
         keys[0] = key < keys[0] ? key : keys[0];
         count += count < K ? 1 : 0;
         return true;
+    }
+    // insert, noting a candidate that meets the farthest kept at the same distance (and
+    // flag: the same high word), whether it is turned away or pushes that one out.
+    bool insertWatchingTies(std::uint64_t key)
+    {
+        const std::uint64_t last = keys[K - 1];
+        if (!(key < last)) {
+            tied |= (key >> 32) == (last >> 32);
+            return false;
+        }
+        insert(key);
+        tied |= last != ~std::uint64_t(0) && (last >> 32) == (keys[K - 1] >> 32);
+        return true;
+    }
+    // After a search by insertWatchingTies: whether two candidates met at the same
+    // distance where it decided anything, among the kept (they lie side by side) or at
+    // the farthest kept (a candidate turned away or pushed out there has its distance, or
+    // it would be farther than a kept one, and so turned away without a tie).
+    bool sawTie() const
+    {
+        bool same = tied;
+        for (std::size_t a = 1; a < K; ++a)  // all K, without a branch: past count, a < count masks
+            same |= (a < count) & ((keys[a] >> 32) == (keys[a - 1] >> 32));
+        return same;
     }
 };
 

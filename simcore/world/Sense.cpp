@@ -57,10 +57,10 @@ std::size_t gatherNeighbours(const StepView& v, std::size_t i, Neighbour* out, s
     const TypeParams& t = v.types.params[v.agents.info[i].typeIndex];
     const glm::vec3 p = v.agents.pos[i], fwd = v.agents.fwd[i];
     const float r2 = t.perception * t.perception;
-    // The k nearest, ties by index, kept sorted by insertion; once k are known the search
-    // radius shrinks to the k-th distance, so farther candidates and cells are skipped.
-    // A candidate is one 64-bit key: the bits of d2 (>= 0, so they order like the
-    // floats) above the index, so a comparison is one integer compare. A neighbour of
+    // The k nearest, ties by id (TieOrder.h), kept sorted by insertion; once k are known
+    // the search radius shrinks to the k-th distance, so farther candidates and cells are
+    // skipped. A candidate is one 64-bit key: the bits of d2 (>= 0, so they order like the
+    // floats) above the index (or rank), so a comparison is one integer compare. A neighbour of
     // higher priority ranks before every other (its top bit is clear), so a dense crowd
     // never loses sight of the ambulance among its nearest neighbours; with priorities
     // in the scene the radius therefore does not shrink.
@@ -68,6 +68,10 @@ std::size_t gatherNeighbours(const StepView& v, std::size_t i, Neighbour* out, s
     NearestList<kMaxNeighbours> best;
     float bound = r2;
     const float c = t.cosHalfView;
+    // Where ids do not rise with the index, watch for ties, and should one come, search
+    // again with ranks for indices (TieOrder.h).
+    const bool watch = !v.ties.byIndex();
+    bool byRank = false;
     auto consider = [&](std::uint32_t j, const glm::vec3& q) {
         if (v.types.makingWay && !collide(mine, v.collision(j)))
             return;  // agents on layers that do not collide do not perceive each other
@@ -80,13 +84,20 @@ std::size_t gatherNeighbours(const StepView& v, std::size_t i, Neighbour* out, s
         if (outsideViewCone(d, d2, fwd, c) && d2 > contact * contact)
             return;
         const bool urgent = v.types.makingWay && v.collision(j).priority > mine.priority;
-        if (best.insert(nearestKey(d2, j, !urgent)) && best.full() && !v.types.makingWay)
+        const std::uint64_t key = nearestKey(d2, byRank ? v.ties.rank(j) : j, !urgent);
+        if ((watch ? best.insertWatchingTies(key) : best.insert(key)) && best.full() && !v.types.makingWay)
             bound = best.worstDistance2();
     };
     // Nearest rows first: once the k best are found, farther cells are skipped.
     v.grid.forEachNearest(p, t.perception, [&] { return bound; }, consider);
+    if (watch && best.sawTie()) {
+        best.clear();
+        best.byRank = byRank = true;
+        bound = r2;
+        v.grid.forEachNearest(p, t.perception, [&] { return bound; }, consider);
+    }
     for (std::size_t n = 0; n < best.count; ++n) {
-        const auto j = best.index(n);
+        const auto j = best.index(n, v.ties);
         out[n] = {v.agents.pos[j], v.agents.vel[j], v.agents.fwd[j], v.agents.radius[j], v.agents.info[j].id};
         indices[n] = j;
     }

@@ -11,6 +11,7 @@
 #include "simcore/world/NeighbourGrid.h"
 #include "simcore/world/StaticSet.h"
 #include "simcore/world/StepClock.h"
+#include "simcore/world/TieOrder.h"
 #include "simcore/world/WorldNav.h"
 #include "simcore/world/WorldTraffic.h"
 
@@ -37,6 +38,7 @@ struct StepView {
     // Sense.h) instead of the perception radius: the same result, fewer cells (WorldOptions).
     bool warmSearch;
     const Formations& formations;  // who walks on a slot round whom (Formations.h)
+    const TieOrder& ties;          // neighbours at equal distances go by id (TieOrder.h)
 
     const TypeParams& type(std::size_t i) const { return types.params[agents.info[i].typeIndex]; }
     const TypeCollision& collision(std::size_t i) const { return types.collision[agents.info[i].typeIndex]; }

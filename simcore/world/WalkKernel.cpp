@@ -122,14 +122,18 @@ void WalkKernel::step(const StepView& view, const BrainPhase& brains, AgentColum
     const AgentId id = agents.info[i].id;
 
     // Sense: the k nearest in the perception radius and view cone, nearest first, ties by
-    // index (gatherNeighbours, without the layers and priorities this world lacks).
+    // id (gatherNeighbours, without the layers and priorities this world lacks).
     constexpr std::size_t k = kMaxNeighbours;
     NearestList<k> best;
     const float perception2 = t.perception * t.perception;
     float bound = perception2;
     const float c = t.cosHalfView;
-    auto search = [&](float startBound) {
+    // Where ids do not rise with the index, watch for ties, and should one come, search
+    // again with ranks for indices (TieOrder.h).
+    const bool watch = !view.ties.byIndex();
+    auto search = [&](float startBound, bool byRank) {
         best.clear();
+        best.byRank = byRank;
         bound = startBound;
         view.grid.forEachNearest(p, t.perception, [&] { return bound; }, [&](std::uint32_t j, const glm::vec3& q) {
             const glm::vec3 d = q - p;
@@ -141,16 +145,22 @@ void WalkKernel::step(const StepView& view, const BrainPhase& brains, AgentColum
                 if (d2 > contact * contact)
                     return;
             }
-            if (best.insert(nearestKey(d2, j)) && best.full())
+            const std::uint64_t key = nearestKey(d2, byRank ? view.ties.rank(j) : j);
+            if ((watch ? best.insertWatchingTies(key) : best.insert(key)) && best.full())
                 bound = best.worstDistance2();
         });
     };
     // As in the boids kernel: start from last step's k nearest, and search in full only
     // when fewer than k lie within them (the result is the same either way).
     const float guess2 = view.warmSearch ? lastNearestBound(agents, i, p, perception2) : perception2;
-    search(guess2);
-    if (!best.full() && guess2 < perception2)
-        search(perception2);
+    auto sense = [&](bool byRank) {
+        search(guess2, byRank);
+        if (!best.full() && guess2 < perception2)
+            search(perception2, byRank);
+    };
+    sense(false);
+    if (watch && best.sawTie())
+        sense(true);
     const std::size_t count = best.count;
     agents.nearCount[i] = std::uint8_t(count);
 
@@ -172,7 +182,7 @@ void WalkKernel::step(const StepView& view, const BrainPhase& brains, AgentColum
     const glm::vec2 fwd2 = xz(fwd), p2 = xz(p);
     std::uint32_t* nearIndex = &agents.nearIndex[i * k];
     for (std::size_t n = 0; n < count; ++n) {
-        const auto j = best.index(n);
+        const auto j = best.index(n, view.ties);
         nearIndex[n] = j;
         const glm::vec3 q = agents.pos[j], vj = agents.vel[j];
         const float rj = agents.radius[j];

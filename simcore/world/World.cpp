@@ -115,6 +115,7 @@ void World::build(const Scene& scene, const WorldOptions& options)
     buildStatics(scene);
     buildAgents(scene);
     addTrafficAgents(scene);
+    m_ties.build(m_agents.info);  // every agent is in: placed, spawned, sources', vehicles, heroes
     m_brains.build(scene, view());
     findEscapes();  // before the plans: one that starts inside an obstacle plans from outside it
     m_agents.out.assign(m_agents.size(), 0);  // nobody has left yet

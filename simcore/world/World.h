@@ -21,6 +21,7 @@
 #include "simcore/world/StartPhase.h"
 #include "simcore/world/StaticSet.h"
 #include "simcore/world/StepClock.h"
+#include "simcore/world/TieOrder.h"
 #include "simcore/world/StepCounters.h"
 #include "simcore/world/TypeSteering.h"
 #include "simcore/world/WorldNav.h"
@@ -241,7 +242,7 @@ private:
     {
         return {m_agents, m_types,  m_set,       m_clock,      m_grid,      m_traffic,
                 m_nav,    m_team,   m_hasFliers, m_allFliers, m_maxRadius, m_seed, m_neighbourSweep,
-                m_formations};
+                m_formations, m_ties};
     }
     const TypeCollision& collision(std::size_t i) const { return m_types.collision[m_agents.info[i].typeIndex]; }
 
@@ -257,6 +258,7 @@ private:
     AgentColumns m_agents;  // the agents' state, a column per attribute
 
     NeighbourGrid m_grid;
+    TieOrder m_ties;  // the order of neighbours at equal distances: by id (TieOrder.h)
     bool m_gridCurrent = false;  // the grid indexes the current positions
     bool m_hasFliers = false;    // then the grid also sorts by height for 3D queries
     bool m_allFliers = true;     // no obstacles or crosswalks to count for anyone

@@ -10,6 +10,7 @@
 #include "simcore/scenarios/BenchScenarios.h"
 #include "simcore/world/NearestList.h"
 #include "simcore/world/NeighbourGrid.h"
+#include "simcore/world/TieOrder.h"
 #include "simcore/world/World.h"
 
 #include <QTest>
@@ -77,6 +78,67 @@ private slots:
                 QVERIFY(std::equal(expected.begin(), expected.end(), best.keys.begin()));
             }
             QVERIFY(best.full());
+        }
+    }
+
+    void aTieThatDecidesIsSeen()
+    {
+        // Keys at coarse distances, so ties are common. When the list says it saw no tie
+        // that decides anything, breaking ties the other way round (as another storage
+        // order would) must keep the same candidates in the same order; and ties must be
+        // seen in some rounds and not in others.
+        std::mt19937 gen(5);
+        std::uniform_real_distribution<float> u(0.0f, 4.0f);
+        int seen = 0, unseen = 0;
+        for (int round = 0; round < 400; ++round) {
+            NearestList<kK> best;
+            std::vector<std::uint64_t> all;
+            const int candidates = 4 + round % 24;
+            for (std::uint32_t j = 0; j < std::uint32_t(candidates); ++j) {
+                const std::uint64_t key = nearestKey(std::floor(u(gen) * 8.0f) * 0.5f, j);
+                all.push_back(key);
+                best.insertWatchingTies(key);
+            }
+            // The other way round: the low word reversed.
+            std::vector<std::uint64_t> other = all;
+            for (std::uint64_t& k : other)
+                k = (k & ~std::uint64_t(0xffffffffu)) | (0xffffffffu - std::uint32_t(k));
+            std::sort(other.begin(), other.end());
+            other.resize(std::min(other.size(), kK));
+            bool same = other.size() == best.count;
+            for (std::size_t n = 0; same && n < best.count; ++n)
+                same = 0xffffffffu - std::uint32_t(other[n]) == std::uint32_t(best.keys[n]);
+            if (best.sawTie()) {
+                ++seen;
+            } else {
+                ++unseen;
+                QVERIFY2(same, qPrintable(QString("round %1: a tie decided the list unseen").arg(round)));
+            }
+        }
+        QVERIFY2(seen > 50 && unseen > 50, qPrintable(QString("%1 rounds saw ties, %2 none").arg(seen).arg(unseen)));
+    }
+
+    void ranksFollowIds()
+    {
+        // Ids rising with the index: ranks are the indices, and nothing is kept.
+        std::vector<AgentInfo> agents(5);
+        for (std::size_t i = 0; i < agents.size(); ++i)
+            agents[i].id = AgentId(10 + 3 * i);
+        TieOrder ties;
+        ties.build(agents);
+        QVERIFY(ties.byIndex());
+        QCOMPARE(ties.rank(3), 3u);
+        QCOMPARE(ties.index(4), 4u);
+        // Out of order: each agent's rank is its place by id, and back.
+        const AgentId ids[] = {40, 7, 19, 3, 25};
+        for (std::size_t i = 0; i < 5; ++i)
+            agents[i].id = ids[i];
+        ties.build(agents);
+        QVERIFY(!ties.byIndex());
+        const std::uint32_t ranks[] = {4, 1, 2, 0, 3};
+        for (std::uint32_t i = 0; i < 5; ++i) {
+            QCOMPARE(ties.rank(i), ranks[i]);
+            QCOMPARE(ties.index(ranks[i]), i);
         }
     }
 

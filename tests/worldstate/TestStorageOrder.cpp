@@ -2,9 +2,11 @@
 // numbered row by row or up each column (the grid's own order), and the cross's walkers,
 // with and without their 40-node brains, placed in a shuffled order, end every checked
 // frame bit for bit where they did, agent by agent (matched by id), with the same
-// counters. The grid's order in memory is worth a quarter of the flock's step at a
-// million birds (throng-bench-flock --by-column); this is what lets a World store its
-// agents in any order it likes.
+// counters; so do birds and walkers on exact lattices, stored in reverse, where
+// neighbours at equal distances must be chosen among by id (TieOrder.h). The grid's
+// order in memory is worth a quarter of the flock's step at a million birds
+// (throng-bench-flock --by-column); this is what lets a World store its agents in any
+// order it likes.
 #include "TestRegistry.h"
 
 #include "simcore/scenarios/BenchScenarios.h"
@@ -163,6 +165,48 @@ private slots:
         Scene walkers = cross;
         QVERIFY(!orderPlacedForGrid(walkers, 1000));
         QVERIFY(walkers.agents == cross.agents);
+    }
+
+    void birdsOnAnExactLatticeChooseAmongEqualNeighboursById()
+    {
+        // 4,096 birds on an exact lattice 1.5 m apart, all heading the same way: each has 6
+        // neighbours 1.5 m off and 12 at 2.12 m in its 3 m perception, so which 2 of the 12
+        // complete its 8 nearest is a choice among equal distances. Stored in reverse,
+        // the birds must choose as they do stored in order: by id, not by where they lie
+        // in memory (TieOrder.h).
+        Scene lattice = makeFlockScenario(4096, 3);
+        std::size_t k = 0;
+        for (Agent& a : lattice.agents) {
+            const int x = int(k % 16), y = int(k / 16 % 16), z = int(k / 256);
+            a.position = glm::vec3(-12.0f + 1.5f * float(x), 20.0f + 1.5f * float(y), -12.0f + 1.5f * float(z));
+            a.headingDeg = 0.0f;
+            ++k;
+        }
+        Scene reversed = lattice;
+        std::reverse(reversed.agents.begin(), reversed.agents.end());
+        QVERIFY(World(lattice).usesBoidKernel(0));
+        QVERIFY(compareRuns(lattice, reversed, {1, 2, 24, 120}) > 4000);
+    }
+
+    void walkersOnAnExactLatticeChooseAmongEqualNeighboursById()
+    {
+        // 400 walkers on a square lattice 1.5 m apart, each bound for its own goal across
+        // the middle: neighbours at equal distances on every side. Stored in reverse, they
+        // walk as stored in order, through the walker kernel and, with brains, through the
+        // general path's search (gatherNeighbours).
+        for (const bool brains : {false, true}) {
+            Scene lattice = brains ? makeCrossBrainScenario(400, 5) : makeCrossScenario(400, 5);
+            std::size_t k = 0;
+            for (Agent& a : lattice.agents) {
+                a.position = glm::vec3(-14.25f + 1.5f * float(k % 20), 0.0f, -14.25f + 1.5f * float(k / 20));
+                a.headingDeg = 90.0f * float(k % 4);
+                ++k;
+            }
+            Scene reversed = lattice;
+            std::reverse(reversed.agents.begin(), reversed.agents.end());
+            QCOMPARE(World(lattice).usesWalkKernel(0), !brains);
+            QVERIFY(compareRuns(lattice, reversed, {1, 2, 24, 120}) > 350);
+        }
     }
 
     void shuffledWalkersWalkAsPlaced()
