@@ -60,11 +60,11 @@ private:
     bool m_neighbourSweep;
 };
 
-void MovePhase::build(const AgentTypes& types, const StaticSet& set, float dt, std::size_t agents, bool plain,
-                      const Kernels& kernels)
+void MovePhase::build(const AgentTypes& types, const StaticSet& set, float dt, std::size_t agents,
+                      const Plain& plain, const Kernels& kernels)
 {
-    m_boids.build(types, dt, agents, kernels.boids, plain, kernels.collideShortcut, kernels.steerEight);
-    m_walk.build(types, set, dt, kernels.walkers, plain);
+    m_boids.build(types, dt, agents, kernels.boids, plain.boids, kernels.collideShortcut, kernels.steerEight);
+    m_walk.build(types, set, dt, kernels.walkers, plain.walkers);
 }
 
 void MovePhase::run(const StepView& v, const BrainPhase& brains, WorldTraffic& traffic, AgentColumns& agents,

@@ -26,9 +26,14 @@ public:
     struct Kernels {
         bool boids = true, walkers = true, collideShortcut = true, steerEight = true;
     };
-    // Once per World, after its agents are added. `plain`: the World has no brains,
-    // layers, priorities or signals, so the kernels may run.
-    void build(const AgentTypes& types, const StaticSet& set, float dt, std::size_t agents, bool plain,
+    // Which kernels the World allows: the boids kernel where it has no brains, layers,
+    // priorities or signals; the walker kernel where it has no layers, priorities or
+    // signals (it takes up brains' weights, turns and speeds).
+    struct Plain {
+        bool boids = true, walkers = true;
+    };
+    // Once per World, after its agents are added.
+    void build(const AgentTypes& types, const StaticSet& set, float dt, std::size_t agents, const Plain& plain,
                const Kernels& kernels);
     // An agent added after build.
     void addAgent() { m_boids.addAgent(); }

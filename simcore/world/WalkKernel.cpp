@@ -4,7 +4,8 @@
 // avoidance (those of `cross`, `corridor` and of an ordinary crowd), fused. It computes
 // what steer, avoidReciprocally (Steer.h) and integrateVehicle compute for such an
 // agent, operation for operation in the same order, so the result is bit-identical to
-// the general path (TestWalkKernel checks it); but in one pass over the neighbours, read
+// the general path (TestWalkKernel checks it, with brains and without); but in one pass
+// over the neighbours, read
 // by index (no Neighbour copies, no request list), with the squared distances the search
 // already has and the type's constants made usable once instead of per agent.
 #include "simcore/world/WalkKernel.h"
@@ -68,9 +69,9 @@ bool fitsWalkKernel(const TypeSteering& s)
 
 void WalkKernel::build(const AgentTypes& types, const StaticSet& set, float dt, bool enabled, bool plain)
 {
-    // Brains change weights and speeds per agent, layers or priorities change whom an agent
-    // perceives and avoids, and signals hold agents back: those worlds keep the general path.
-    // Walls and obstacles the kernel steers round and constrains against as steer and
+    // Layers or priorities change whom an agent perceives and avoids, and signals hold
+    // agents back: those worlds keep the general path. Brains the kernel takes up as the
+    // general path does (step, below). Walls and obstacles the kernel steers round and constrains against as steer and
     // the general path do (MovePhase.cpp), through the same functions (steerAroundStatics, constrain).
     plain = plain && enabled;
     const bool walls = !set.walls.segments().empty(), obstacles = !set.circles.empty() || !set.boxes.empty();
@@ -158,10 +159,15 @@ void WalkKernel::step(const StepView& view, const BrainPhase& brains, AgentColum
         if (!best.full() && guess2 < perception2)
             search(perception2, byRank);
     };
-    sense(false);
-    if (watch && best.sawTie())
-        sense(true);
-    const std::size_t count = best.count;
+    // A brain's sense phase may have found them this step (gatherNeighbours), as the general
+    // path then takes them (MovePhase.cpp).
+    const bool gathered = brains.gatheredNeighbours(i);
+    if (!gathered) {
+        sense(false);
+        if (watch && best.sawTie())
+            sense(true);
+    }
+    const std::size_t count = gathered ? agents.nearCount[i] : best.count;
     agents.nearCount[i] = std::uint8_t(count);
 
     // One pass over the neighbours: separation's push (separate), the soonest threat
@@ -182,14 +188,16 @@ void WalkKernel::step(const StepView& view, const BrainPhase& brains, AgentColum
     const glm::vec2 fwd2 = xz(fwd), p2 = xz(p);
     std::uint32_t* nearIndex = &agents.nearIndex[i * k];
     for (std::size_t n = 0; n < count; ++n) {
-        const auto j = best.index(n, view.ties);
+        const auto j = gathered ? nearIndex[n] : best.index(n, view.ties);
         nearIndex[n] = j;
         const glm::vec3 q = agents.pos[j], vj = agents.vel[j];
         const float rj = agents.radius[j];
         if (w.wSeparation > 0.0f) {
             // The squared distance is the search key's (the same dot product, negated offset).
             const float contact = r + nonNegative(rj);
-            const float d = std::sqrt(std::bit_cast<float>(std::uint32_t(best.keys[n] >> 32)));
+            const glm::vec3 offset = q - p;
+            const float d = std::sqrt(gathered ? glm::dot(offset, offset) + 0.0f
+                                               : std::bit_cast<float>(std::uint32_t(best.keys[n] >> 32)));
             if (d < contact + range)
                 push += behave::separationPush(p - q, d, contact, range, maxForce, w.damping, v - vj,
                                                [&] { return separationAxis(id, agents.info[j].id); }, floor);
@@ -218,14 +226,17 @@ void WalkKernel::step(const StepView& view, const BrainPhase& brains, AgentColum
         }
     }
 
-    // Steer: steer's (Steer.h) requests in its order, blended (blendWeighted).
+    // Steer: steer's (Steer.h) requests in its order, blended (blendWeighted), each weighted
+    // by the type and the agent's brain (requestBehaviours, Steer.cpp).
     const bool hasGoal = agents.goal[i] >= 0;
+    const bool brain = brains.active();
     glm::vec3 sum(0.0f);
     auto add = [&](glm::vec3 force, float weight) {
         const glm::vec3 f = force * weight;
         if (isFinite(f))
             sum += f;
     };
+    auto brainWeight = [&](Behaviour b) { return brain ? brains.weight(i, b) : 1.0f; };
     // Where seek and arrival aim: the goal's spot for this agent, or its navigation target (navGoal).
     const glm::vec3 goal = !hasGoal ? p + fwd
                            : view.nav.active && view.nav.hasTarget[i]
@@ -236,7 +247,8 @@ void WalkKernel::step(const StepView& view, const BrainPhase& brains, AgentColum
         const float probe = s.containment.probeMinM + s.containment.probeLookaheadS * speedNow + radius;
         const glm::vec3 lo = p - view.set.bounds.min, hi = view.set.bounds.max - p;
         if (std::min({lo.x, lo.z, hi.x, hi.z}) < probe)
-            add(stayInside(steeringAgent(agents, view.types, i), view.set.bounds, s.containment), w.wContainment);
+            add(stayInside(steeringAgent(agents, view.types, i), view.set.bounds, s.containment),
+                w.wContainment * brainWeight(Behaviour::Containment));
     }
     if (w.aroundStatics) {
         // Wall following and obstacle avoidance: steer's own requests (Steer.cpp).
@@ -246,7 +258,7 @@ void WalkKernel::step(const StepView& view, const BrainPhase& brains, AgentColum
             add(request.force, request.weight);
     }
     if (w.wSeparation > 0.0f)
-        add(push, w.wSeparation);
+        add(push, w.wSeparation * brainWeight(Behaviour::Separation));
     if (w.wUnaligned > 0.0f) {
         glm::vec3 force(0.0f);
         if (threatT >= 0.0f) {
@@ -262,7 +274,7 @@ void WalkKernel::step(const StepView& view, const BrainPhase& brains, AgentColum
             force = behave::unalignedAvoidance(h, right, threatOffset, threatT, horizon, headOn, w.brake, w.lateral,
                                                v != glm::vec3(0.0f), maxForce);
         }
-        add(force, w.wUnaligned);
+        add(force, w.wUnaligned * brainWeight(Behaviour::UnalignedCollisionAvoidance));
     }
     if (hasGoal && w.wArrival > 0.0f) {
         // Arrival: the desired speed falls linearly to zero at the goal (arrivalVelocity).
@@ -275,12 +287,12 @@ void WalkKernel::step(const StepView& view, const BrainPhase& brains, AgentColum
         const float slowing = throughExit ? 1e-6f : w.slowingM;
         if (!(dist <= w.toleranceM || dist <= kTiny))
             desired = behave::arrivalVelocity(offset, dist, nonNegative(maxSpeed), slowing);
-        add(towardsVelocity(v, desired, w.gainArrival, maxForce), w.wArrival);
+        add(towardsVelocity(v, desired, w.gainArrival, maxForce), w.wArrival * brainWeight(Behaviour::Arrival));
     }
     if (hasGoal && w.wSeek > 0.0f)
         add(towardsVelocity(v, behave::seekVelocity(finiteOrZero(goal - p), nonNegative(maxSpeed)), w.gainSeek,
                             maxForce),
-            w.wSeek);
+            w.wSeek * brainWeight(Behaviour::Seek));
     WanderState wanderNext = agents.wander[i];
     if (w.wWander > 0.0f) {
         const std::uint64_t key = rngKey(view.seed, id, view.clock.step);
@@ -288,12 +300,14 @@ void WalkKernel::step(const StepView& view, const BrainPhase& brains, AgentColum
                                rngRangeOf(key, kWanderZ, -1.0f, 1.0f));
         const WanderResult result = wander(steeringAgent(agents, view.types, i), agents.wander[i], random, s.wander);
         wanderNext = result.state;
-        add(result.force, w.wWander);
+        add(result.force, w.wWander * brainWeight(Behaviour::Wander));
     }
     // A walker with nowhere to go comes to rest (as in steer, Steer.h).
     if (!hasGoal && agents.leader[i] < 0 && !(w.wWander > 0.0f))
         add(-v * (t.mass / kStandStillResponseS), 1.0f);
-    glm::vec3 force = truncate(sum, t.maxForce) + glm::vec3(0.0f);  // + the brain's turn: none
+    // The brain's turn, as the general path adds it (MovePhase.cpp).
+    const glm::vec3 turn = brain ? brains.turnForce(i, steeringAgent(agents, view.types, i)) : glm::vec3(0.0f);
+    glm::vec3 force = truncate(sum, t.maxForce) + turn;
     if (oncomingInTheWayAhead)
         force += keepRightForce(fwd, t.maxForce, w.keepRight);
 
@@ -339,6 +353,14 @@ void WalkKernel::step(const StepView& view, const BrainPhase& brains, AgentColum
     } else {
         const glm::vec3 unit = normalizeOr(fwd, glm::vec3(0.0f, 0.0f, 1.0f));
         nextFwd = normalizeOr(glm::vec3(unit.x, 0.0f, unit.z), glm::vec3(0.0f, 0.0f, 1.0f));
+    }
+    // The brain's speed caps the step (BrainPhase::capToSpeed), after the frame is set.
+    if (brain) {
+        SteeringAgent next;
+        next.position = pos;
+        next.velocity = vel;
+        brains.capToSpeed(view, i, steeringAgent(agents, view.types, i), next);
+        pos = next.position;
     }
     // Constrain: out of walls and obstacles, never through a wall (constrain, Constraints.h).
     if (w.constrained)

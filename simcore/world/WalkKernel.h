@@ -22,8 +22,8 @@ class BrainPhase;
 class WalkKernel {
 public:
     // Which types step through the kernel and their constants, once per World. `plain`:
-    // the World has no brains, layers, priorities or signals (those keep the general
-    // path); dt: the step's length, s.
+    // the World has no layers, priorities or signals (those keep the general path; its
+    // agents' brains the kernel takes up); dt: the step's length, s.
     void build(const AgentTypes& types, const StaticSet& set, float dt, bool enabled, bool plain);
     // Walkers of this type without a path step through the kernel.
     bool runs(std::size_t typeIndex) const { return m_runs[typeIndex] != 0; }

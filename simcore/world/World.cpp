@@ -141,11 +141,11 @@ void World::build(const Scene& scene, const WorldOptions& options)
     m_grid.configure(scene.settings.boundsMin, scene.settings.boundsMax, cell, m_hasFliers ? 0.0f : 4.0f * cell,
                      options.gridCells);
     m_grid.rebuild(m_agents.pos, m_hasFliers, m_agents.out, &m_team);
-    // Brains change weights and speeds per agent, layers or priorities change whom an
-    // agent perceives and avoids, and signals hold agents back: those worlds keep the
-    // general path.
-    const bool plain = !m_brains.active() && !m_types.makingWay && m_traffic.signal.empty();
-    m_move.build(m_types, m_set, m_clock.dt, m_agents.size(), plain,
+    // Layers or priorities change whom an agent perceives and avoids, and signals hold
+    // agents back: those worlds keep the general path. Brains change weights, turns and
+    // speeds per agent: the walker kernel takes them up, the boids kernel does not.
+    const bool open = !m_types.makingWay && m_traffic.signal.empty();
+    m_move.build(m_types, m_set, m_clock.dt, m_agents.size(), {!m_brains.active() && open, open},
                  {options.boidKernel, options.walkKernel, options.collideShortcut, options.steerEight});
 }
 

@@ -234,6 +234,37 @@ private slots:
         QCOMPARE(kernel.counters().overlappingPairs, general.counters().overlappingPairs);
     }
 
+    void brainWalkersAreBitIdenticalToTheGeneralPath()
+    {
+        // The cross's walkers with the 40-node bench brain: it sets their speed, their
+        // turn and the weights of separation and arrival each step, and senses their
+        // neighbours itself. The kernel takes all of that up as the general path does.
+        const Scene s = makeCrossBrainScenario(600, 3);
+        World kernel = makeWorld(s, true), general = makeWorld(s, false);
+        QVERIFY(kernel.usesWalkKernel(0));
+        QVERIFY(!general.usesWalkKernel(0));
+        QVERIFY(kernel.agentBrainEvaluator(0) != nullptr);
+        Scene brainless = s;
+        brainless.agentTypes[0].brain.clear();
+        World plain = makeWorld(brainless, true);
+        std::size_t capped = 0;
+        for (int k = 0; k < 24 * 25; ++k) {
+            kernel.step();
+            general.step();
+            plain.step();
+            QVERIFY2(sameState(kernel, general), qPrintable(QString("the paths differ after step %1").arg(k)));
+            // Walking well below their speed: the brain's cap (its noise alone takes 0-10 %).
+            for (std::size_t i = 0; i < kernel.agentCount(); ++i)
+                capped += glm::length(kernel.velocities()[i]) < 0.8f * s.agentTypes[0].maxSpeed &&
+                          glm::length(plain.velocities()[i]) > 0.95f * s.agentTypes[0].maxSpeed;
+        }
+        qInfo("cross-brain 600, 600 steps: identical; %zu agent-steps held well below the speed the brainless walk",
+              capped);
+        QVERIFY(!sameState(kernel, plain));  // the brain changed the walk
+        QVERIFY(capped > 1000);
+        QCOMPARE(kernel.counters().overlappingPairs, general.counters().overlappingPairs);
+    }
+
     void mixedCrowdIsBitIdenticalToTheGeneralPath()
     {
         const Scene s = mixedCrowd();

@@ -192,8 +192,8 @@ private slots:
     {
         // 400 walkers on a square lattice 1.5 m apart, each bound for its own goal across
         // the middle: neighbours at equal distances on every side. Stored in reverse, they
-        // walk as stored in order, through the walker kernel and, with brains, through the
-        // general path's search (gatherNeighbours).
+        // walk as stored in order, through the walker kernel's search and, with brains,
+        // through the brain's (gatherNeighbours).
         for (const bool brains : {false, true}) {
             Scene lattice = brains ? makeCrossBrainScenario(400, 5) : makeCrossScenario(400, 5);
             std::size_t k = 0;
@@ -204,7 +204,7 @@ private slots:
             }
             Scene reversed = lattice;
             std::reverse(reversed.agents.begin(), reversed.agents.end());
-            QCOMPARE(World(lattice).usesWalkKernel(0), !brains);
+            QVERIFY(World(lattice).usesWalkKernel(0));
             QVERIFY(compareRuns(lattice, reversed, {1, 2, 24, 120}) > 350);
         }
     }
