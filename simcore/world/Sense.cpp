@@ -60,10 +60,10 @@ std::size_t gatherNeighbours(const StepView& v, std::size_t i, Neighbour* out, s
     // The k nearest, ties by id (TieOrder.h), kept sorted by insertion; once k are known
     // the search radius shrinks to the k-th distance, so farther candidates and cells are
     // skipped. A candidate is one 64-bit key: the bits of d2 (>= 0, so they order like the
-    // floats) above the index (or rank), so a comparison is one integer compare. A neighbour of
-    // higher priority ranks before every other (its top bit is clear), so a dense crowd
-    // never loses sight of the ambulance among its nearest neighbours; with priorities
-    // in the scene the radius therefore does not shrink.
+    // floats) above the index (or rank), so a comparison is one integer compare. A
+    // neighbour of higher priority ranks before every other (its top bit is clear), so a
+    // dense crowd never loses sight of the ambulance among its nearest neighbours; with
+    // priorities in the scene the radius therefore does not shrink.
     const TypeCollision& mine = v.collision(i);
     NearestList<kMaxNeighbours> best;
     float bound = r2;
@@ -88,14 +88,24 @@ std::size_t gatherNeighbours(const StepView& v, std::size_t i, Neighbour* out, s
         if ((watch ? best.insertWatchingTies(key) : best.insert(key)) && best.full() && !v.types.makingWay)
             bound = best.worstDistance2();
     };
-    // Nearest rows first: once the k best are found, farther cells are skipped.
-    v.grid.forEachNearest(p, t.perception, [&] { return bound; }, consider);
-    if (watch && best.sawTie()) {
-        best.clear();
-        best.byRank = byRank = true;
-        bound = r2;
-        v.grid.forEachNearest(p, t.perception, [&] { return bound; }, consider);
-    }
+    // Nearest rows first: once the k best are found, farther cells are skipped. As the
+    // kernels do, start from last step's k nearest (lastNearestBound) and search in full
+    // only when fewer than k lie within them: the result is the same either way. (Not when
+    // types make way: the bound then never shrinks.)
+    const float guess2 = v.warmSearch && !v.types.makingWay ? lastNearestBound(v.agents, i, p, r2) : r2;
+    auto search = [&](bool ranked) {
+        for (const float start : {guess2, r2}) {
+            best.clear();
+            best.byRank = byRank = ranked;
+            bound = start;
+            v.grid.forEachNearest(p, t.perception, [&] { return bound; }, consider);
+            if (best.full() || !(guess2 < r2))
+                return;
+        }
+    };
+    search(false);
+    if (watch && best.sawTie())
+        search(true);
     for (std::size_t n = 0; n < best.count; ++n) {
         const auto j = best.index(n, v.ties);
         out[n] = {v.agents.pos[j], v.agents.vel[j], v.agents.fwd[j], v.agents.radius[j], v.agents.info[j].id};
