@@ -31,6 +31,9 @@ public:
     void step(const StepView& v, const BrainPhase& brains, AgentColumns& agents, std::size_t i) const;
 
 private:
+    // step, for a World with brains (kBrain) and with ids out of index order (kWatch).
+    template <bool kBrain, bool kWatch>
+    void stepAgent(const StepView& v, const BrainPhase& brains, AgentColumns& agents, std::size_t i) const;
     // Per type, the kernel's parameters made usable once.
     struct WalkType {
         float wContainment, wSeparation, wUnaligned, wArrival, wSeek, wWander;
