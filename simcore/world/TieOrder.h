@@ -23,7 +23,7 @@ public:
     // From the World's agents (their ids are unique).
     void build(std::span<const AgentInfo> agents);
 
-    // The low word of agent j's search key, and back from it to the agent's index.
+    // Agent j's rank (the low word of its key in a search by rank), and back to its index.
     std::uint32_t rank(std::uint32_t j) const { return m_rank.empty() ? j : m_rank[j]; }
     std::uint32_t index(std::uint32_t rank) const { return m_index.empty() ? rank : m_index[rank]; }
     // Whether ranks are the indices (ids rise with the index).

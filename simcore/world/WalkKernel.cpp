@@ -5,9 +5,9 @@
 // what steer, avoidReciprocally (Steer.h) and integrateVehicle compute for such an
 // agent, operation for operation in the same order, so the result is bit-identical to
 // the general path (TestWalkKernel checks it, with brains and without); but in one pass
-// over the neighbours, read
-// by index (no Neighbour copies, no request list), with the squared distances the search
-// already has and the type's constants made usable once instead of per agent.
+// over the neighbours, read by index (no Neighbour copies, no request list), with the
+// squared distances the search already has and the type's constants made usable once
+// instead of per agent.
 #include "simcore/world/WalkKernel.h"
 
 #include "simcore/world/BrainPhase.h"
@@ -71,8 +71,9 @@ void WalkKernel::build(const AgentTypes& types, const StaticSet& set, float dt, 
 {
     // Layers or priorities change whom an agent perceives and avoids, and signals hold
     // agents back: those worlds keep the general path. Brains the kernel takes up as the
-    // general path does (step, below). Walls and obstacles the kernel steers round and constrains against as steer and
-    // the general path do (MovePhase.cpp), through the same functions (steerAroundStatics, constrain).
+    // general path does (step, below). Walls and obstacles the kernel steers round and
+    // constrains against as steer and the general path do (MovePhase.cpp), through the same
+    // functions (steerAroundStatics, constrain).
     plain = plain && enabled;
     const bool walls = !set.walls.segments().empty(), obstacles = !set.circles.empty() || !set.boxes.empty();
     m_runs.assign(types.steering.size(), 0);
