@@ -170,8 +170,9 @@ private slots:
     void birdsOnAnExactLatticeChooseAmongEqualNeighboursById()
     {
         // 4,096 birds on an exact lattice 1.5 m apart, all heading the same way: each has 6
-        // neighbours 1.5 m off and 12 at 2.12 m in its 3 m perception, so which 2 of the 12
-        // complete its 8 nearest is a choice among equal distances. Stored in reverse,
+        // neighbours 1.5 m off and 12 at 2.12 m in its 3 m perception, so which of the 12
+        // (those in its view cone) complete its 8 nearest is a choice among equal
+        // distances. Stored in reverse,
         // the birds must choose as they do stored in order: by id, not by where they lie
         // in memory (TieOrder.h).
         Scene lattice = makeFlockScenario(4096, 3);
