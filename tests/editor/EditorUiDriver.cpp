@@ -5,6 +5,7 @@
 
 #include <QDir>
 #include <QFile>
+#include <QTabBar>
 #include <QTest>
 #include <QToolButton>
 
@@ -65,6 +66,17 @@ bool clickToolButton(MainWindow& window, const QString& key)
         return false;
     QTest::mouseClick(button, Qt::LeftButton);
     return window.viewport().tool() && window.viewport().tool()->objectKey() == key;
+}
+
+bool clickDockTab(MainWindow& window, const QString& title)
+{
+    for (QTabBar* bar : window.findChildren<QTabBar*>())
+        for (int t = 0; t < bar->count(); ++t)
+            if (bar->tabText(t).remove('&') == title && bar->isVisible()) {
+                QTest::mouseClick(bar, Qt::LeftButton, Qt::NoModifier, bar->tabRect(t).center());
+                return true;
+            }
+    return false;
 }
 
 void dragOnGround(MainWindow& window, const std::vector<glm::vec2>& points)

@@ -24,6 +24,9 @@ bool showWithSceneFile(MainWindow& window, const QString& path);
 QPoint pixelOf(MainWindow& window, glm::vec2 ground);
 // Clicks the tool bar button of the tool with this key ("crowdBrush").
 bool clickToolButton(MainWindow& window, const QString& key);
+// Clicks the tab titled `title` among the docks' tab bars ("Analysis"); false when no
+// shown tab bar has it.
+bool clickDockTab(MainWindow& window, const QString& title);
 // A left drag on the viewport through these ground points, with moves between them.
 void dragOnGround(MainWindow& window, const std::vector<glm::vec2>& points);
 void clickOnGround(MainWindow& window, glm::vec2 point);

@@ -70,18 +70,6 @@ QString figure(QTreeWidget* tree, const QString& section, const QString& label)
     return {};
 }
 
-// Clicks the tab titled `title` among the docks tabified at the window's bottom.
-bool clickDockTab(MainWindow& window, const QString& title)
-{
-    for (QTabBar* bar : window.findChildren<QTabBar*>())
-        for (int t = 0; t < bar->count(); ++t)
-            if (bar->tabText(t).remove('&') == title && bar->isVisible()) {
-                QTest::mouseClick(bar, Qt::LeftButton, Qt::NoModifier, bar->tabRect(t).center());
-                return true;
-            }
-    return false;
-}
-
 }  // namespace
 
 class TestAnalysisUi : public QObject {

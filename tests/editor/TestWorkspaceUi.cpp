@@ -66,18 +66,6 @@ bool clickViewMenuItem(MainWindow& window, const QString& text)
     return clicked;
 }
 
-// Clicks the tab titled `title` in the dock tab bars, as a user would.
-bool clickDockTab(MainWindow& window, const QString& title)
-{
-    for (QTabBar* bar : window.findChildren<QTabBar*>())
-        for (int t = 0; t < bar->count(); ++t)
-            if (bar->tabText(t).remove('&') == title && bar->isVisible()) {
-                QTest::mouseClick(bar, Qt::LeftButton, Qt::NoModifier, bar->tabRect(t).center());
-                return true;
-            }
-    return false;
-}
-
 bool openAt(MainWindow& window, const QTemporaryDir& dir, QSize size)
 {
     if (!showWithScene(window, dir, "crossroads.yaml"))
