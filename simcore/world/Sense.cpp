@@ -71,7 +71,6 @@ std::size_t gatherNeighbours(const StepView& v, std::size_t i, Neighbour* out, s
     // Where ids do not rise with the index, watch for ties, and should one come, search
     // again with ranks for indices (TieOrder.h).
     const bool watch = !v.ties.byIndex();
-    bool byRank = false;
     auto consider = [&](std::uint32_t j, const glm::vec3& q) {
         if (v.types.makingWay && !collide(mine, v.collision(j)))
             return;  // agents on layers that do not collide do not perceive each other
@@ -84,7 +83,7 @@ std::size_t gatherNeighbours(const StepView& v, std::size_t i, Neighbour* out, s
         if (outsideViewCone(d, d2, fwd, c) && d2 > contact * contact)
             return;
         const bool urgent = v.types.makingWay && v.collision(j).priority > mine.priority;
-        const std::uint64_t key = nearestKey(d2, byRank ? v.ties.rank(j) : j, !urgent);
+        const std::uint64_t key = nearestKey(d2, best.byRank ? v.ties.rank(j) : j, !urgent);
         if ((watch ? best.insertWatchingTies(key) : best.insert(key)) && best.full() && !v.types.makingWay)
             bound = best.worstDistance2();
     };
@@ -96,7 +95,7 @@ std::size_t gatherNeighbours(const StepView& v, std::size_t i, Neighbour* out, s
     auto search = [&](bool ranked) {
         for (const float start : {guess2, r2}) {
             best.clear();
-            best.byRank = byRank = ranked;
+            best.byRank = ranked;
             bound = start;
             v.grid.forEachNearest(p, t.perception, [&] { return bound; }, consider);
             if (best.full() || !(guess2 < r2))

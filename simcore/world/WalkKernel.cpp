@@ -316,8 +316,12 @@ void WalkKernel::stepAgent(const StepView& view, const BrainPhase& brains, Agent
     // A walker with nowhere to go comes to rest (as in steer, Steer.h).
     if (!hasGoal && agents.leader[i] < 0 && !(w.wWander > 0.0f))
         add(-v * (t.mass / kStandStillResponseS), 1.0f);
-    // The brain's turn, as the general path adds it (MovePhase.cpp).
-    const glm::vec3 turn = kBrain ? brains.turnForce(i, steeringAgent(agents, view.types, i)) : glm::vec3(0.0f);
+    // The brain's turn, as the general path adds it (MovePhase.cpp); its speed cap reads the
+    // same old state below.
+    SteeringAgent self;
+    if constexpr (kBrain)
+        self = steeringAgent(agents, view.types, i);
+    const glm::vec3 turn = kBrain ? brains.turnForce(i, self) : glm::vec3(0.0f);
     glm::vec3 force = truncate(sum, t.maxForce) + turn;
     if (oncomingInTheWayAhead)
         force += keepRightForce(fwd, t.maxForce, w.keepRight);
@@ -370,7 +374,7 @@ void WalkKernel::stepAgent(const StepView& view, const BrainPhase& brains, Agent
         SteeringAgent next;
         next.position = pos;
         next.velocity = vel;
-        brains.capToSpeed(view, i, steeringAgent(agents, view.types, i), next);
+        brains.capToSpeed(view, i, self, next);
         pos = next.position;
     }
     // Constrain: out of walls and obstacles, never through a wall (constrain, Constraints.h).
