@@ -234,12 +234,21 @@ private slots:
         QCOMPARE(kernel.counters().overlappingPairs, general.counters().overlappingPairs);
     }
 
+    void brainWalkersAreBitIdenticalToTheGeneralPath_data()
+    {
+        QTest::addColumn<float>("fps");
+        QTest::newRow("24 fps: a decision every step") << 24.0f;
+        QTest::newRow("60 fps: forces held between decisions") << 60.0f;
+    }
+
     void brainWalkersAreBitIdenticalToTheGeneralPath()
     {
         // The cross's walkers with the 40-node bench brain: it sets their speed, their
         // turn and the weights of separation and arrival each step, and senses their
         // neighbours itself. The kernel takes all of that up as the general path does.
-        const Scene s = makeCrossBrainScenario(600, 3);
+        QFETCH(float, fps);
+        Scene s = makeCrossBrainScenario(600, 3);
+        s.settings.fps = fps;
         World kernel = makeWorld(s, true), general = makeWorld(s, false);
         QVERIFY(kernel.usesWalkKernel(0));
         QVERIFY(!general.usesWalkKernel(0));
@@ -248,7 +257,8 @@ private slots:
         brainless.agentTypes[0].brain.clear();
         World plain = makeWorld(brainless, true);
         std::size_t capped = 0;
-        for (int k = 0; k < 24 * 25; ++k) {
+        const int steps = int(std::lround(25.0f * fps));  // 25 s
+        for (int k = 0; k < steps; ++k) {
             kernel.step();
             general.step();
             plain.step();
@@ -258,8 +268,9 @@ private slots:
                 capped += glm::length(kernel.velocities()[i]) < 0.8f * s.agentTypes[0].maxSpeed &&
                           glm::length(plain.velocities()[i]) > 0.95f * s.agentTypes[0].maxSpeed;
         }
-        qInfo("cross-brain 600, 600 steps: identical; %zu agent-steps held well below the speed the brainless walk",
-              capped);
+        qInfo("cross-brain 600 at %g fps, %d steps: identical; %zu agent-steps held well below the speed the "
+              "brainless walk",
+              double(fps), steps, capped);
         QVERIFY(!sameState(kernel, plain));  // the brain changed the walk
         QVERIFY(capped > 1000);
         QCOMPARE(kernel.counters().overlappingPairs, general.counters().overlappingPairs);
