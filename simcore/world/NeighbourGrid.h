@@ -124,9 +124,7 @@ public:
                 const int x0 = cellX(p.x - reach), x1 = cellX(p.x + reach);
                 const std::size_t row = std::size_t(z) * std::size_t(m_cols);
                 if (!m_byHeight) {
-                    const std::uint32_t end = m_start[row + std::size_t(x1) + 1];
-                    for (std::uint32_t k = m_start[row + std::size_t(x0)]; k < end; ++k)
-                        f(m_sorted[k], m_sortedPos[k]);
+                    offerWithin(p, m_start[row + std::size_t(x0)], m_start[row + std::size_t(x1) + 1], boundSq, f);
                     continue;
                 }
                 const float yLo = p.y - reach, yHi = p.y + reach;
@@ -336,6 +334,35 @@ public:
     }
 
 private:
+    // forEachNearest's run [begin, end) of a row of cells: offers f, in order, those whose
+    // squared distance from p is not above boundSq() (read again every four, as it only
+    // shrinks), four at a time, and the last few of the run unsifted. Sifting is what a
+    // caller does first itself (the distance the same dot product, here a hair wider), so
+    // the agents the caller keeps, and the order it meets them in, are the same; the rows
+    // a walker reads hold mostly agents beyond its bound, and this drops them without a
+    // call and a branch each.
+    template <typename B, typename F>
+    [[gnu::always_inline]] void offerWithin(glm::vec3 p, std::uint32_t begin, std::uint32_t end, B& boundSq,
+                                            F& f) const
+    {
+        using simd::F4;
+        const F4 px{p.x, p.x, p.x, p.x}, py{p.y, p.y, p.y, p.y}, pz{p.z, p.z, p.z, p.z};
+        std::uint32_t k = begin;
+        for (; k + 4 <= end; k += 4) {
+            const glm::vec3* q = &m_sortedPos[k];
+            const F4 dx = F4{q[0].x, q[1].x, q[2].x, q[3].x} - px;
+            const F4 dy = F4{q[0].y, q[1].y, q[2].y, q[3].y} - py;
+            const F4 dz = F4{q[0].z, q[1].z, q[2].z, q[3].z} - pz;
+            const F4 d2 = dx * dx + dy * dy + dz * dz;
+            // Not above the bound (a NaN is offered, as the caller's own test lets it by).
+            for (unsigned bits = simd::bitsOf(!(d2 > boundSq() * 1.0002f)); bits != 0; bits &= bits - 1) {
+                const std::uint32_t at = k + std::uint32_t(__builtin_ctz(bits));
+                f(m_sorted[at], m_sortedPos[at]);
+            }
+        }
+        for (; k < end; ++k)
+            f(m_sorted[k], m_sortedPos[k]);
+    }
     // The sweep's k-th column from height yLo to yHi: its window moved from where the last
     // query left it (queries come at rising heights, so a few steps), then f for each agent.
     template <typename F>

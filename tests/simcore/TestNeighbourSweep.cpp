@@ -201,6 +201,71 @@ private slots:
         QVERIFY(full > pos.size() / 3);  // the dense part fills its lists and shrinks the bound
     }
 
+    // The walkers' search (forEachNearest on a grid not sorted by height) sifts each row's
+    // run by the bound four at a time before offering. It must drop only agents beyond the
+    // bound and keep the order: on a lattice, where many lie at exactly the bound (whole
+    // metres, so the distances are exact) and some stand higher (terrain), each query
+    // offers, within the bound, exactly the sequence that an unbounded query offers less
+    // those beyond it; and the sift does drop some. Then the k-nearest searches with a
+    // shrinking bound find what brute force finds.
+    void walkersSearchSiftsOnlyBeyondTheBound()
+    {
+        std::vector<glm::vec3> pos;
+        for (int z = -12; z <= 12; ++z)
+            for (int x = -12; x <= 12; ++x)
+                pos.push_back({float(x), (x + z) % 5 == 0 ? 1.0f : 0.0f, float(z)});
+        NeighbourGrid grid;
+        grid.configure({-12.0f, -12.0f}, {12.0f, 12.0f}, 3.0f);
+        grid.rebuild(pos);
+        const float r = 3.0f;
+        std::size_t unbounded = 0, bounded = 0, atTheBound = 0;
+        for (std::size_t i = 0; i < pos.size(); ++i) {
+            auto within = [&](std::uint32_t j, float bound) {
+                const glm::vec3 d = pos[j] - pos[i];
+                return glm::dot(d, d) <= bound;
+            };
+            std::vector<std::uint32_t> all, sifted;
+            grid.forEachNearest(pos[i], r, [] { return INFINITY; }, [&](std::uint32_t j, const glm::vec3&) {
+                all.push_back(j);
+            });
+            const float bound = 4.0f;
+            grid.forEachNearest(pos[i], r, [&] { return bound; }, [&](std::uint32_t j, const glm::vec3& q) {
+                QCOMPARE(q, pos[j]);
+                sifted.push_back(j);
+            });
+            std::vector<std::uint32_t> expected, kept;
+            for (const std::uint32_t j : all)
+                if (within(j, bound))
+                    expected.push_back(j);
+            for (const std::uint32_t j : sifted)
+                if (within(j, bound))
+                    kept.push_back(j);
+            QCOMPARE(kept, expected);
+            unbounded += all.size();
+            bounded += sifted.size();
+            for (const std::uint32_t j : expected) {
+                const glm::vec3 d = pos[j] - pos[i];
+                atTheBound += glm::dot(d, d) == bound;
+            }
+            // The nearest 8 with the bound shrinking as the list fills.
+            NearestList<kK> best;
+            float shrinking = r * r;
+            grid.forEachNearest(pos[i], r, [&] { return shrinking; }, [&](std::uint32_t j, const glm::vec3& q) {
+                const glm::vec3 d = q - pos[i];
+                const float d2 = glm::dot(d, d);
+                if (j == i || d2 > shrinking)
+                    return;
+                if (best.insert(nearestKey(d2, j)) && best.full())
+                    shrinking = best.worstDistance2();
+            });
+            const std::vector<std::uint64_t> nearest = bruteNearest(pos, i, r);
+            QCOMPARE(best.count, nearest.size());
+            QVERIFY(std::equal(nearest.begin(), nearest.end(), best.keys.begin()));
+        }
+        QVERIFY(atTheBound > pos.size());  // most agents have neighbours at exactly the bound
+        QVERIFY2(bounded < unbounded / 2, qPrintable(QString("%1 of %2 offered").arg(bounded).arg(unbounded)));
+    }
+
     void flockIsUnchanged_data()
     {
         QTest::addColumn<float>("spacing");
