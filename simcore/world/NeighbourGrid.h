@@ -230,16 +230,21 @@ public:
     // whose cell overlaps the square of half-size r around it and, once sorted by height,
     // whose height lies within r of its. So every pair within r of each other on each
     // axis is offered once, from the earlier of the two. (Cells round monotonically, so
-    // the later one's cell lies in the earlier one's square.)
+    // the later one's cell lies in the earlier one's square.) Not sorted by height, the
+    // agents farther than r are mostly left out (offerWithin): every pair within r of each
+    // other is still offered once.
     template <typename F>
     void forEachLaterNear(std::size_t k, float r, F&& f) const
     {
         const glm::vec3 p = m_sortedPos[k];
         const int xc = cellX(p.x), zc = cellZ(p.z);
         const int x0 = cellX(p.x - r), x1 = cellX(p.x + r), z1 = cellZ(p.z + r);
-        const float yLo = p.y - r, yHi = p.y + r;
+        const float yLo = p.y - r, yHi = p.y + r, r2 = r * r;
+        auto within = [r2] { return r2; };
         auto visit = [&](std::uint32_t from, std::uint32_t end) {
-            for (std::uint32_t j = from; j < end && (!m_byHeight || m_sortedPos[j].y <= yHi); ++j)
+            if (!m_byHeight)
+                return offerWithin(p, from, end, within, f);
+            for (std::uint32_t j = from; j < end && m_sortedPos[j].y <= yHi; ++j)
                 f(m_sorted[j], m_sortedPos[j]);
         };
         const std::size_t own = std::size_t(zc) * std::size_t(m_cols) + std::size_t(xc);
@@ -334,13 +339,13 @@ public:
     }
 
 private:
-    // forEachNearest's run [begin, end) of a row of cells: offers f, in order, those whose
-    // squared distance from p is not above boundSq() (read again every four, as it only
-    // shrinks), four at a time, and the last few of the run unsifted. Sifting is what a
-    // caller does first itself (the distance the same dot product, here a hair wider), so
-    // the agents the caller keeps, and the order it meets them in, are the same; the rows
-    // a walker reads hold mostly agents beyond its bound, and this drops them without a
-    // call and a branch each.
+    // A run [begin, end) of the sorted agents, such as forEachNearest's row of cells:
+    // offers f, in order, those whose squared distance from p is not above boundSq() (read
+    // again every four, as it may shrink), four at a time, and the last few of the run
+    // unsifted. Sifting is what a caller does first itself (the distance the same dot
+    // product, here a hair wider), so the agents the caller keeps, and the order it meets
+    // them in, are the same; the rows a walker reads hold mostly agents beyond its bound,
+    // and this drops them without a call and a branch each.
     template <typename B, typename F>
     [[gnu::always_inline]] void offerWithin(glm::vec3 p, std::uint32_t begin, std::uint32_t end, B& boundSq,
                                             F& f) const

@@ -69,6 +69,7 @@ private slots:
         QTest::addColumn<bool>("mixedReach");  // every third agent's reach half the radius
         QTest::newRow("walkers") << false << 0.8f << false << false;
         QTest::newRow("walkers, in runs") << false << 0.8f << true << false;
+        QTest::newRow("walkers, mixed reaches") << false << 0.8f << false << true;
         QTest::newRow("fliers") << true << 0.8f << false << false;
         QTest::newRow("fliers, in runs") << true << 0.8f << true << false;
         QTest::newRow("fliers, mixed reaches, in runs") << true << 0.8f << true << true;
