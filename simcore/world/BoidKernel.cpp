@@ -137,12 +137,8 @@ void BoidPass::senseBoid(std::size_t i, NeighbourGrid::Sweep* sweep, BoidSense& 
 void BoidPass::finishSearch(std::size_t i, NeighbourGrid::Sweep* sweep, float guess2, float perception2,
                             BoidNearest& best) const
 {
-    if (!best.full() && guess2 < perception2)
-        searchBoid(i, sweep, perception2, best, best.byRank);
-    if (!best.byRank && !m_ties.byIndex() && best.sawTie()) {
-        searchBoid(i, sweep, guess2, best, true);
-        finishSearch(i, sweep, guess2, perception2, best);
-    }
+    finishNearest(best, guess2, perception2, !m_ties.byIndex(),
+                  [&](float startBound, bool byRank) { searchBoid(i, sweep, startBound, best, byRank); });
 }
 
 void BoidPass::searchBoid(std::size_t i, NeighbourGrid::Sweep* sweep, float startBound, BoidNearest& best,

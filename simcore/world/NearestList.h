@@ -108,4 +108,23 @@ struct NearestList {
     }
 };
 
+// The end of a k-nearest search that began within guess2, last step's bound (Sense.h's
+// lastNearestBound): search(startBound, byRank) clears `best`, sets its byRank and offers
+// it the candidates within startBound. Searches again within the whole perception (whole2)
+// when fewer than k lay within the guess, so the result is the same either way; and, where
+// ids do not rise with the index (watch), again by rank should two candidates have met at
+// one distance where it decided anything (TieOrder.h). Every k-nearest search ends here.
+template <std::size_t K, class Search>
+[[gnu::always_inline]] inline void finishNearest(NearestList<K>& best, float guess2, float whole2, bool watch,
+                                                 Search&& search)
+{
+    if (!best.full() && guess2 < whole2)
+        search(whole2, best.byRank);
+    if (watch && !best.byRank && best.sawTie()) {
+        search(guess2, true);
+        if (!best.full() && guess2 < whole2)
+            search(whole2, true);
+    }
+}
+
 }  // namespace throng::sim

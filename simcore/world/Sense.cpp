@@ -92,19 +92,14 @@ std::size_t gatherNeighbours(const StepView& v, std::size_t i, Neighbour* out, s
     // only when fewer than k lie within them: the result is the same either way. (Not when
     // types make way: the bound then never shrinks.)
     const float guess2 = v.warmSearch && !v.types.makingWay ? lastNearestBound(v.agents, i, p, r2) : r2;
-    auto search = [&](bool ranked) {
-        for (const float start : {guess2, r2}) {
-            best.clear();
-            best.byRank = ranked;
-            bound = start;
-            v.grid.forEachNearest(p, t.perception, [&] { return bound; }, consider);
-            if (best.full() || !(guess2 < r2))
-                return;
-        }
+    auto search = [&](float start, bool ranked) {
+        best.clear();
+        best.byRank = ranked;
+        bound = start;
+        v.grid.forEachNearest(p, t.perception, [&] { return bound; }, consider);
     };
-    search(false);
-    if (watch && best.sawTie())
-        search(true);
+    search(guess2, false);
+    finishNearest(best, guess2, r2, watch, search);
     for (std::size_t n = 0; n < best.count; ++n) {
         const auto j = best.index(n, v.ties);
         out[n] = {v.agents.pos[j], v.agents.vel[j], v.agents.fwd[j], v.agents.radius[j], v.agents.info[j].id};

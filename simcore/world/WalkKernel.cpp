@@ -166,18 +166,12 @@ void WalkKernel::stepAgent(const StepView& view, const BrainPhase& brains, Agent
     // As in the boids kernel: start from last step's k nearest, and search in full only
     // when fewer than k lie within them (the result is the same either way).
     const float guess2 = view.warmSearch ? lastNearestBound(agents, i, p, perception2) : perception2;
-    auto sense = [&](bool byRank) {
-        search(guess2, byRank);
-        if (!best.full() && guess2 < perception2)
-            search(perception2, byRank);
-    };
     // A brain's sense phase may have found them this step (gatherNeighbours), as the general
     // path then takes them (MovePhase.cpp).
     const bool gathered = kBrain && brains.gatheredNeighbours(i);
     if (!gathered) {
-        sense(false);
-        if (kWatch && best.sawTie())
-            sense(true);
+        search(guess2, false);
+        finishNearest(best, guess2, perception2, kWatch, search);
     }
     const std::size_t count = gathered ? agents.nearCount[i] : best.count;
     agents.nearCount[i] = std::uint8_t(count);
