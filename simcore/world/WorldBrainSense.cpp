@@ -30,13 +30,6 @@ constexpr float kWallReachM = 10.0f;  // wall_distance looks this far at most
 constexpr float kStopLineSideM = 1.0f;  // a crosswalk's stop line reaches this far beyond its width
 constexpr float kAlongCos = 0.5f;       // wanting to go within 60 degrees of a crosswalk's axis: onto it
 
-// Angle of d from the heading f (both on the ground), degrees, + = left.
-float bearingDeg(glm::vec2 f, glm::vec2 d)
-{
-    const glm::vec2 left(f.y, -f.x);
-    return glm::degrees(std::atan2(glm::dot(d, left), glm::dot(d, f)));
-}
-
 // Distance along a ray (unit dir) to segment ab, or `length` when it misses.
 float rayToSegment(glm::vec2 o, glm::vec2 dir, float length, glm::vec2 a, glm::vec2 b)
 {
@@ -97,6 +90,27 @@ void BrainPhase::sense(const StepView& view, AgentColumns& agents, TypeBrain& tb
         if (needNeighbours)
             agents.nearCount[i] = std::uint8_t(count);
         tb.neighbourCount[k] = std::uint8_t(std::min<std::size_t>(count, kBrainNeighbours));
+        // The neighbours' bearings (bearingDeg), four at a time, once for every sensor that
+        // reads them.
+        std::array<float, kMaxNeighbours> nearBearing;
+        bool bearingsFound = false;
+        auto bearings = [&]() -> const std::array<float, kMaxNeighbours>& {
+            if (!bearingsFound) {
+                for (std::size_t j = 0; j < count; j += 4) {
+                    simd::F4 dx, dy;
+                    for (std::size_t l = 0; l < 4; ++l) {
+                        const glm::vec2 d = j + l < count ? xz(near[j + l].position) - p : glm::vec2(0.0f);
+                        dx[l] = d.x;
+                        dy[l] = d.y;
+                    }
+                    const simd::F4 b = bearingsDeg(f, dx, dy);
+                    for (std::size_t l = 0; l < 4 && j + l < count; ++l)
+                        nearBearing[j + l] = b[l];
+                }
+                bearingsFound = true;
+            }
+            return nearBearing;
+        };
         std::array<float, 3> feeler{};  // left, centre, right
         if (needFeelers) {
             const float length = steering.obstacles.minLengthM + steering.obstacles.lookaheadS * speed;
@@ -168,13 +182,13 @@ void BrainPhase::sense(const StepView& view, AgentColumns& agents, TypeBrain& tb
             case SensorFill::NearestDistance:
                 v = count ? glm::distance(p, xz(near[0].position)) : type.perception;
                 break;
-            case SensorFill::NearestBearing: v = count ? bearingDeg(f, xz(near[0].position) - p) : 0.0f; break;
+            case SensorFill::NearestBearing: v = count ? bearings()[0] : 0.0f; break;
             case SensorFill::VisionLeft:
             case SensorFill::VisionCentre:
             case SensorFill::VisionRight: {
                 int seen[3] = {0, 0, 0};
                 for (std::size_t j = 0; j < count; ++j) {
-                    const float b = bearingDeg(f, xz(near[j].position) - p);
+                    const float b = bearings()[j];
                     ++seen[b > third ? 0 : (b < -third ? 2 : 1)];
                 }
                 v = float(seen[int(tb.fills[s]) - int(SensorFill::VisionLeft)]);
@@ -298,7 +312,7 @@ void BrainPhase::sense(const StepView& view, AgentColumns& agents, TypeBrain& tb
                         const glm::vec2 q = xz(near[j].position);
                         switch (tb.fills[s]) {
                         case SensorFill::NeighbourDistance: x = glm::distance(p, q); break;
-                        case SensorFill::NeighbourBearing: x = bearingDeg(f, q - p); break;
+                        case SensorFill::NeighbourBearing: x = bearings()[j]; break;
                         case SensorFill::NeighbourSpeed: x = glm::length(near[j].velocity); break;
                         case SensorFill::NeighbourTag:
                             x = m_brains->tagValues[tb.fillTag[s]][view.agents.nearIndex[i * kMaxNeighbours + j]];

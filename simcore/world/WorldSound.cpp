@@ -3,8 +3,9 @@
 // s (1 - d / r): full at the source, silent at its radius (docs/brains.md).
 #include "simcore/world/detail/WorldSound.h"
 
+#include "simcore/world/detail/StepGeometry.h"
+
 #include <glm/geometric.hpp>
-#include <glm/trigonometric.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -126,11 +127,8 @@ std::size_t hearChannel(const WorldBrains& wb, std::uint32_t c, const NeighbourG
     } else if (channel.agentReachM > 0.0f) {
         grid.forEachNear(p, channel.agentReachM, emitter);
     }
-    const glm::vec2 left(f.y, -f.x);
     for (std::size_t k = 0; k < count; ++k) {
-        const glm::vec2 d = best[k].offset;
-        const float bearing =
-            best[k].distanceM > 0.0f ? glm::degrees(std::atan2(glm::dot(d, left), glm::dot(d, f))) : 0.0f;
+        const float bearing = best[k].distanceM > 0.0f ? bearingDeg(f, best[k].offset) : 0.0f;
         out[k] = {best[k].strength, best[k].distanceM, bearing};
     }
     return count;

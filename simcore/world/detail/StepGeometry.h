@@ -6,6 +6,7 @@
 #error "a detail/ header, private to throng::simcore: include the module's public headers instead"
 #endif
 
+#include "simcore/base/Atan2.h"
 #include "simcore/base/detail/PlanarSegments.h"
 #include "simcore/steering/detail/SteeringMath.h"
 #include "simcore/world/detail/StepConstants.h"
@@ -33,6 +34,21 @@ inline glm::vec2 goalSpot(glm::vec2 centre, float radiusM, bool exit, float body
     const float r = 0.8f * reach * std::sqrt(u);
     const float a = 6.28318531f * v;
     return centre + r * glm::vec2(std::cos(a), std::sin(a));
+}
+
+// The bearings of offsets (dx, dy) on the ground from the unit heading f, in degrees, + =
+// to the left: dot(d, left) and dot(d, f) with left = (f.y, -f.x), in glm::dot's order, and
+// the angle by Throng's own atan2 (base/Atan2.h), lane by lane. bearingDeg for one offset
+// gives what its lane does.
+template <class F>
+[[gnu::always_inline]] inline F bearingsDeg(glm::vec2 f, F dx, F dy)
+{
+    const F side = dx * f.y + dy * -f.x, ahead = dx * f.x + dy * f.y;
+    return simd::atan2Of(side, ahead) * 57.295779513082320876798154814105f;  // glm::degrees
+}
+inline float bearingDeg(glm::vec2 f, glm::vec2 d)
+{
+    return bearingsDeg(f, simd::F4{d.x, d.x, d.x, d.x}, simd::F4{d.y, d.y, d.y, d.y})[0];  // as atan2Of (Atan2.h)
 }
 
 }  // namespace throng::sim::detail
