@@ -21,22 +21,49 @@ BrainEvaluator::BrainEvaluator(std::shared_ptr<const BrainProgram> program) : m_
 
 void BrainEvaluator::resize(std::size_t agentCount)
 {
-    const BrainProgram& p = *m_program;
     m_agents = agentCount;
+    layOut();
+    for (std::size_t c = 0; c < m_state.size(); ++c)
+        m_state[c].resize(agentCount, m_program->stateInitial[c]);
+}
+
+void BrainEvaluator::keepOnlyOutputs()
+{
+    m_keepEvery = false;
+    layOut();
+}
+
+// Which slots are kept for every agent, and where each slot's values go; constants are
+// written once, where they are kept or into each thread's scratch.
+void BrainEvaluator::layOut()
+{
+    const BrainProgram& p = *m_program;
+    m_kept.assign(p.valueSlots.size(), m_keepEvery ? 1 : 0);
+    for (const BrainOutputSlot& o : p.outputs)
+        m_kept[o.slot] = 1;
+    if (p.action.used)
+        m_kept[p.action.slot] = 1;
+    if (p.goal.used)
+        m_kept[p.goal.slot] = 1;
+    for (const BrainProbe& probe : p.probes)
+        m_kept[probe.slot] = 1;
     m_offset.assign(p.valueSlots.size(), 0);
-    std::size_t total = 0;
+    std::size_t kept = 0;
+    m_scratchFloats = 0;
     for (std::size_t s = 0; s < p.valueSlots.size(); ++s) {
         if (p.valueSlots[s].source == SlotSource::Sensor)
             continue;
+        const std::size_t width = p.valueSlots[s].perNeighbour ? kBrainNeighbours : 1;
+        std::size_t& total = m_kept[s] ? kept : m_scratchFloats;
         m_offset[s] = total;
-        total += p.valueSlots[s].perNeighbour ? agentCount * kBrainNeighbours : agentCount;
+        total += width * (m_kept[s] ? m_agents : kBlock);
     }
-    m_values.assign(total, 0.0f);
+    m_values.assign(kept, 0.0f);
     for (std::size_t s = 0; s < p.valueSlots.size(); ++s)
-        if (p.valueSlots[s].source == SlotSource::Constant)
-            std::fill_n(m_values.begin() + std::ptrdiff_t(m_offset[s]), agentCount, p.valueSlots[s].constant);
-    for (std::size_t c = 0; c < m_state.size(); ++c)
-        m_state[c].resize(agentCount, p.stateInitial[c]);
+        if (p.valueSlots[s].source == SlotSource::Constant && m_kept[s])
+            std::fill_n(m_values.begin() + std::ptrdiff_t(m_offset[s]),
+                        m_agents * (p.valueSlots[s].perNeighbour ? kBrainNeighbours : 1), p.valueSlots[s].constant);
+    m_blocks.clear();  // made again, with the new scratch, as the threads need them
 }
 
 void BrainEvaluator::moveAgentState(std::size_t from, std::size_t to)
@@ -89,58 +116,87 @@ bool BrainEvaluator::evaluate(const BrainInputs& inputs, std::string* error, con
     if (p.usesRandomKeys && !inputs.agentKey && m_agents > 0)
         return fail("random and noise nodes need agent keys");
 
-    m_reads.assign(p.valueSlots.size(), nullptr);
-    m_writes.assign(p.valueSlots.size(), nullptr);
-    for (std::size_t s = 0; s < p.valueSlots.size(); ++s) {
-        if (p.valueSlots[s].source == SlotSource::Sensor) {
-            m_reads[s] = inputs.sensors[p.valueSlots[s].sensor];
-        } else {
-            m_writes[s] = m_values.data() + m_offset[s];
-            m_reads[s] = m_writes[s];
-        }
+    // Every instruction over one block of agents, blocks in parallel; the picked agent's
+    // values are taken in its block, while the sensor columns and the scratch hold them.
+    const std::size_t threads = team ? std::size_t(std::max(1, team->size())) : 1;
+    while (m_blocks.size() < threads) {
+        Block& block = m_blocks.emplace_back();
+        block.scratch.assign(m_scratchFloats, 0.0f);
+        for (std::size_t s = 0; s < p.valueSlots.size(); ++s)
+            if (p.valueSlots[s].source == SlotSource::Constant && !m_kept[s])
+                std::fill_n(block.scratch.begin() + std::ptrdiff_t(m_offset[s]),
+                            kBlock * (p.valueSlots[s].perNeighbour ? kBrainNeighbours : 1),
+                            p.valueSlots[s].constant);
+        block.in.resize(p.valueSlots.size());
+        block.out.resize(p.valueSlots.size());
+        block.state.resize(m_state.size());
+        block.itemCounts.resize(p.itemSets.size());
     }
-    std::vector<float*> state(m_state.size());
-    for (std::size_t c = 0; c < m_state.size(); ++c)
-        state[c] = m_state[c].data();
-    detail::BrainFrame frame;
-    frame.in = m_reads.data();
-    frame.out = m_writes.data();
-    frame.state = state.data();
-    frame.itemCounts = inputs.itemCounts.data();
-    frame.agentKey = inputs.agentKey;
-    frame.timeS = inputs.timeS;
-    frame.dtS = inputs.dtS;
-
-    // Evaluate: every instruction over one block of agents, blocks in parallel.
-    auto evaluateBlock = [&](std::size_t b, std::size_t e, int) {
-        for (const BrainInstr& in : p.code)
-            detail::runInstr(p, in, frame, b, e);
+    m_pickedValues.clear();
+    auto run = [&](std::size_t b, std::size_t e, int slot) {
+        evaluateBlock(inputs, b, e, m_blocks[std::size_t(slot)]);
     };
     if (team) {
-        team->forChunks(m_agents, kBlock, evaluateBlock);
+        team->forChunks(m_agents, kBlock, run);
     } else {
         for (std::size_t b = 0; b < m_agents; b += kBlock)
-            evaluateBlock(b, std::min(m_agents, b + kBlock), 0);
-    }
-
-    // Live view: copy the picked agent's values while the sensor columns are valid.
-    m_pickedValues.clear();
-    if (m_picked >= 0 && std::size_t(m_picked) < m_agents) {
-        const auto i = std::size_t(m_picked);
-        for (const BrainNodeSlot& ns : p.nodeSlots) {
-            BrainNodeValue v{ns.node, ns.port, {}};
-            const float* col = m_reads[ns.slot];
-            const BrainSlot& slot = p.valueSlots[ns.slot];
-            const std::size_t count =
-                slot.perNeighbour ? std::min<std::size_t>(inputs.itemCounts[slot.itemSet][i], kBrainNeighbours) : 0;
-            if (slot.perNeighbour)
-                v.values.assign(col + i * kBrainNeighbours, col + i * kBrainNeighbours + count);
-            else
-                v.values.push_back(col[i]);
-            m_pickedValues.push_back(std::move(v));
-        }
+            run(b, std::min(m_agents, b + kBlock), 0);
     }
     return true;
+}
+
+// Agents [begin, end), at most kBlock: every column the block reads or writes starts at
+// agent `begin` (the kept ones and the caller's where that agent's values begin, the
+// scratch as it is), so the instructions run over [0, end - begin).
+void BrainEvaluator::evaluateBlock(const BrainInputs& inputs, std::size_t begin, std::size_t end, Block& block)
+{
+    const BrainProgram& p = *m_program;
+    for (std::size_t s = 0; s < p.valueSlots.size(); ++s) {
+        const BrainSlot& slot = p.valueSlots[s];
+        const std::size_t first = begin * (slot.perNeighbour ? kBrainNeighbours : 1);
+        if (slot.source == SlotSource::Sensor) {
+            block.in[s] = inputs.sensors[slot.sensor] + first;
+            block.out[s] = nullptr;
+        } else {
+            block.out[s] = m_kept[s] ? m_values.data() + m_offset[s] + first : block.scratch.data() + m_offset[s];
+            block.in[s] = block.out[s];
+        }
+    }
+    for (std::size_t c = 0; c < m_state.size(); ++c)
+        block.state[c] = m_state[c].data() + begin;
+    for (std::size_t s = 0; s < p.itemSets.size(); ++s)
+        block.itemCounts[s] = inputs.itemCounts[s] + begin;
+    detail::BrainFrame frame;
+    frame.in = block.in.data();
+    frame.out = block.out.data();
+    frame.state = block.state.data();
+    frame.itemCounts = block.itemCounts.data();
+    frame.agentKey = inputs.agentKey ? inputs.agentKey + begin : nullptr;
+    frame.timeS = inputs.timeS;
+    frame.dtS = inputs.dtS;
+    for (const BrainInstr& in : p.code)
+        detail::runInstr(p, in, frame, 0, end - begin);
+    if (m_picked >= 0 && std::size_t(m_picked) >= begin && std::size_t(m_picked) < end)
+        keepPicked(block, std::size_t(m_picked) - begin);
+}
+
+// The live view: the picked agent's value of every node, from its block's columns.
+void BrainEvaluator::keepPicked(const Block& block, std::size_t inBlock)
+{
+    const BrainProgram& p = *m_program;
+    for (const BrainNodeSlot& ns : p.nodeSlots) {
+        BrainNodeValue v{ns.node, ns.port, {}};
+        const float* col = block.in[ns.slot];
+        const BrainSlot& slot = p.valueSlots[ns.slot];
+        if (slot.perNeighbour) {
+            const std::size_t count =
+                std::min<std::size_t>(block.itemCounts[slot.itemSet][inBlock], kBrainNeighbours);
+            v.values.assign(col + inBlock * kBrainNeighbours, col + inBlock * kBrainNeighbours + count);
+        } else {
+            v.values.push_back(col[inBlock]);
+        }
+        m_pickedValues.push_back(std::move(v));
+    }
 }
 
 BrainOutputs BrainEvaluator::outputs() const
@@ -173,7 +229,8 @@ const float* BrainEvaluator::nodeValues(NodeId node, std::uint32_t port) const
 {
     for (const BrainNodeSlot& ns : m_program->nodeSlots)
         if (ns.node == node && ns.port == port)
-            return m_program->valueSlots[ns.slot].source == SlotSource::Sensor ? nullptr : column(ns.slot);
+            return m_program->valueSlots[ns.slot].source == SlotSource::Sensor || !m_kept[ns.slot] ? nullptr
+                                                                                                : column(ns.slot);
     return nullptr;
 }
 

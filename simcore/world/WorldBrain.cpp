@@ -160,6 +160,7 @@ void BrainPhase::build(const Scene& scene, const StepView& v)
             continue;
         const std::size_t n = tb.agents.size();
         tb.evaluator = std::make_unique<BrainEvaluator>(tb.program);
+        tb.evaluator->keepOnlyOutputs();  // the World reads outputs(), probes and pickedValues
         tb.evaluator->resize(n);
         for (const BrainSensorUse& use : tb.program->sensors)
             tb.columns.emplace_back(use.perNeighbour ? n * kBrainNeighbours : n, 0.0f);
