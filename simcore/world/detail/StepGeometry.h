@@ -48,7 +48,7 @@ template <class F>
 }
 inline float bearingDeg(glm::vec2 f, glm::vec2 d)
 {
-    return bearingsDeg(f, simd::F4{d.x, d.x, d.x, d.x}, simd::F4{d.y, d.y, d.y, d.y})[0];  // as atan2Of (Atan2.h)
+    return bearingsDeg(f, d.x, d.y);
 }
 
 }  // namespace throng::sim::detail
