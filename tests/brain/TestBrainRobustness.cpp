@@ -26,6 +26,21 @@ sim::BrainGraph loadShipped(const std::string& name)
     return r.ok() ? r.scene.brains[0] : sim::BrainGraph{};
 }
 
+// Every sensor column at random (seeded), and 0 to kBrainNeighbours neighbours an agent.
+void fillSensors(BrainRig& rig, std::size_t agents, unsigned seed)
+{
+    std::mt19937 gen(seed);
+    std::uniform_real_distribution<float> u(-3.0f, 40.0f);
+    for (const sim::BrainSensorUse& s : rig.eval->program().sensors) {
+        std::vector<float> c(agents * (s.perNeighbour ? sim::kBrainNeighbours : 1));
+        for (float& v : c)
+            v = u(gen);
+        rig.set(s.sensor, c, s.argument);
+    }
+    for (std::size_t i = 0; i < agents; ++i)
+        rig.counts[i] = std::uint8_t(i % (sim::kBrainNeighbours + 1));
+}
+
 // Every computed node value of every agent after `steps` steps on `team`, as raw bytes;
 // `chunks` gets how many blocks of agents each thread evaluated in this run.
 std::vector<float> runAll(const sim::BrainGraph& g, std::unique_ptr<sim::ThreadTeam>& team, std::size_t agents,
@@ -36,16 +51,7 @@ std::vector<float> runAll(const sim::BrainGraph& g, std::unique_ptr<sim::ThreadT
         return {};
     const std::vector<std::uint64_t> before = team->chunksRun();
     rig.team = std::move(team);
-    std::mt19937 gen(17);
-    std::uniform_real_distribution<float> u(-3.0f, 40.0f);
-    for (const sim::BrainSensorUse& s : rig.eval->program().sensors) {
-        std::vector<float> c(agents * (s.perNeighbour ? sim::kBrainNeighbours : 1));
-        for (float& v : c)
-            v = u(gen);
-        rig.set(s.sensor, c, s.argument);
-    }
-    for (std::size_t i = 0; i < agents; ++i)
-        rig.counts[i] = std::uint8_t(i % (sim::kBrainNeighbours + 1));
+    fillSensors(rig, agents, 17);
     std::vector<float> all;
     for (int s = 0; s < steps; ++s) {
         rig.step(0.05f);
@@ -81,16 +87,7 @@ Read runReading(const sim::BrainGraph& g, const std::vector<sim::BrainGraph>& li
         rig.eval->keepOnlyOutputs();
     rig.team = std::make_unique<sim::ThreadTeam>(2);
     rig.eval->setPickedAgent(std::ptrdiff_t(picked));
-    std::mt19937 gen(23);
-    std::uniform_real_distribution<float> u(-3.0f, 40.0f);
-    for (const sim::BrainSensorUse& s : rig.eval->program().sensors) {
-        std::vector<float> c(agents * (s.perNeighbour ? sim::kBrainNeighbours : 1));
-        for (float& v : c)
-            v = u(gen);
-        rig.set(s.sensor, c, s.argument);
-    }
-    for (std::size_t i = 0; i < agents; ++i)
-        rig.counts[i] = std::uint8_t(i % (sim::kBrainNeighbours + 1));
+    fillSensors(rig, agents, 23);
     std::vector<float>& all = read.values;
     const auto column = [&](const float* c, std::size_t width) {
         if (c)
