@@ -31,10 +31,12 @@ void BrainEvaluator::keepOnlyOutputs()
 {
     m_keepEvery = false;
     layOut();
+    m_blocks.clear();  // made again, with the new scratch, as the threads need them
 }
 
-// Which slots are kept for every agent, and where each slot's values go; constants are
-// written once, where they are kept or into each thread's scratch.
+// Which slots are kept for every agent, and where each slot's values go; the kept
+// constants are written here, the others once into each thread's scratch (evaluate). The
+// scratch's layout does not depend on the agent count, so resizing keeps the blocks.
 void BrainEvaluator::layOut()
 {
     const BrainProgram& p = *m_program;
@@ -63,7 +65,6 @@ void BrainEvaluator::layOut()
         if (p.valueSlots[s].source == SlotSource::Constant && m_kept[s])
             std::fill_n(m_values.begin() + std::ptrdiff_t(m_offset[s]),
                         m_agents * (p.valueSlots[s].perNeighbour ? kBrainNeighbours : 1), p.valueSlots[s].constant);
-    m_blocks.clear();  // made again, with the new scratch, as the threads need them
 }
 
 void BrainEvaluator::moveAgentState(std::size_t from, std::size_t to)

@@ -76,7 +76,7 @@ public:
     // and after keepOnlyOutputs for a node whose values are not kept.
     const float* nodeValues(NodeId node, std::uint32_t port) const;
     // Keeps every agent's values only where they are read after evaluate: outputs() and
-    // the probes. Every other value lives in a block of kBlock agents' scratch per thread
+    // the probes. Every other value lives in a scratch of one block (1,024 agents) per thread
     // while its block is worked out: a few hundred kilobytes in all instead of a float per
     // agent and value (about 300 bytes an agent for a brain of 40 nodes), and it stays in
     // cache. The results are the same to the bit; pickedValues is taken from the scratch.
