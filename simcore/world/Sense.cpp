@@ -102,7 +102,8 @@ std::size_t gatherNeighbours(const StepView& v, std::size_t i, Neighbour* out, s
     finishNearest(best, guess2, r2, watch, search);
     for (std::size_t n = 0; n < best.count; ++n) {
         const auto j = best.index(n, v.ties);
-        out[n] = {v.agents.pos[j], v.agents.vel[j], v.agents.fwd[j], v.agents.radius[j], v.agents.info[j].id};
+        if (out)
+            out[n] = {v.agents.pos[j], v.agents.vel[j], v.agents.fwd[j], v.agents.radius[j], v.agents.info[j].id};
         indices[n] = j;
     }
     return best.count;

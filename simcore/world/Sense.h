@@ -22,8 +22,8 @@ SteeringAgent steeringAgent(const AgentColumns& agents, const AgentTypes& types,
 // The nearest kMaxNeighbours agents within agent i's perception radius and view cone
 // (Reynolds 1987; a touching one is always felt), nearest first, ties by id (TieOrder.h),
 // so the choice depends neither on the grid's order nor on the World's; those of higher
-// priority first when types make way (WorldPriority.h). Writes them to out and their
-// indices to indices; returns how many.
+// priority first when types make way (WorldPriority.h). Writes their indices to indices,
+// and them (their state) to out unless it is null; returns how many.
 std::size_t gatherNeighbours(const StepView& v, std::size_t i, Neighbour* out, std::uint32_t* indices);
 // The kernels' first search bound: agents move little in a step, so last step's k
 // nearest of agent i, where they are now, bound its k-th nearest from above (squared;

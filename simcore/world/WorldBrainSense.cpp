@@ -83,10 +83,12 @@ void BrainPhase::sense(const StepView& view, AgentColumns& agents, TypeBrain& tb
         f = glm::dot(f, f) > 1e-12f ? glm::normalize(f) : glm::vec2(1.0f, 0.0f);
         const float speed = glm::length(view.agents.vel[i]);
         // The neighbours go into the agent's own view.agents.nearIndex row, where the steer phase
-        // of this step finds them instead of querying the grid a second time.
-        std::array<Neighbour, kMaxNeighbours> near;
+        // of this step finds them instead of querying the grid a second time; the sensors read
+        // from it only what they need of each.
+        const std::uint32_t* near = &agents.nearIndex[i * kMaxNeighbours];
         const std::size_t count =
-            needNeighbours ? gatherNeighbours(view, i, near.data(), &agents.nearIndex[i * kMaxNeighbours]) : 0;
+            needNeighbours ? gatherNeighbours(view, i, nullptr, &agents.nearIndex[i * kMaxNeighbours]) : 0;
+        auto nearPos = [&](std::size_t j) { return xz(view.agents.pos[near[j]]); };
         if (needNeighbours)
             agents.nearCount[i] = std::uint8_t(count);
         tb.neighbourCount[k] = std::uint8_t(std::min<std::size_t>(count, kBrainNeighbours));
@@ -99,7 +101,7 @@ void BrainPhase::sense(const StepView& view, AgentColumns& agents, TypeBrain& tb
                 for (std::size_t j = 0; j < count; j += 4) {
                     simd::F4 dx, dy;
                     for (std::size_t l = 0; l < 4; ++l) {
-                        const glm::vec2 d = j + l < count ? xz(near[j + l].position) - p : glm::vec2(0.0f);
+                        const glm::vec2 d = j + l < count ? nearPos(j + l) - p : glm::vec2(0.0f);
                         dx[l] = d.x;
                         dy[l] = d.y;
                     }
@@ -180,7 +182,7 @@ void BrainPhase::sense(const StepView& view, AgentColumns& agents, TypeBrain& tb
                 v = float(count) / (3.14159265f * type.perception * type.perception * tb.viewDeg / 360.0f);
                 break;
             case SensorFill::NearestDistance:
-                v = count ? glm::distance(p, xz(near[0].position)) : type.perception;
+                v = count ? glm::distance(p, nearPos(0)) : type.perception;
                 break;
             case SensorFill::NearestBearing: v = count ? bearings()[0] : 0.0f; break;
             case SensorFill::VisionLeft:
@@ -309,15 +311,15 @@ void BrainPhase::sense(const StepView& view, AgentColumns& agents, TypeBrain& tb
                 for (std::size_t j = 0; j < kBrainNeighbours; ++j) {
                     float x = 0.0f;
                     if (j < count) {
-                        const glm::vec2 q = xz(near[j].position);
+                        const glm::vec2 q = nearPos(j);
                         switch (tb.fills[s]) {
                         case SensorFill::NeighbourDistance: x = glm::distance(p, q); break;
                         case SensorFill::NeighbourBearing: x = bearings()[j]; break;
-                        case SensorFill::NeighbourSpeed: x = glm::length(near[j].velocity); break;
+                        case SensorFill::NeighbourSpeed: x = glm::length(view.agents.vel[near[j]]); break;
                         case SensorFill::NeighbourTag:
-                            x = m_brains->tagValues[tb.fillTag[s]][view.agents.nearIndex[i * kMaxNeighbours + j]];
+                            x = m_brains->tagValues[tb.fillTag[s]][near[j]];
                             break;
-                        default: x = bearingDeg(f, xz(near[j].forward)); break;
+                        default: x = bearingDeg(f, xz(view.agents.fwd[near[j]])); break;
                         }
                     }
                     (&v)[j] = x;
