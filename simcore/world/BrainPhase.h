@@ -50,15 +50,17 @@ public:
     bool gatheredNeighbours(std::size_t i) const;
     // m/s: its max speed, or less where its brain asks.
     float speedCap(const StepView& v, std::size_t i) const;
-    // The brain's speed as a cap on the next state's velocity (and position).
-    void capToSpeed(const StepView& v, std::size_t i, const SteeringAgent& self, SteeringAgent& next) const;
+    // The brain's speed as a cap on agent i's next velocity; its next position, reached
+    // from `from` (where it stood at the step's start), moves with it.
+    void capToSpeed(const StepView& v, std::size_t i, glm::vec3 from, glm::vec3& position, glm::vec3& velocity) const;
     // A move `move` over `seconds` kept within the brain's speed: along the way a walker
     // wants to go at most that, sideways and back at most `aside` (m/s).
     glm::vec3 limited(const StepView& v, std::size_t i, glm::vec3 move, float aside, float seconds) const;
     // Multiplies the type's weight of behaviour b.
     float weight(std::size_t i, Behaviour b) const;
-    // The brain's turn (degrees/s) as a sideways force.
-    glm::vec3 turnForce(std::size_t i, const SteeringAgent& self) const;
+    // The brain's turn (degrees/s) as a sideways force on agent i, of that heading,
+    // velocity and mass at the step's start.
+    glm::vec3 turnForce(std::size_t i, glm::vec3 forward, glm::vec3 velocity, float mass) const;
     // The clip of the action the brain chose, else `bySpeed`.
     Clip clip(std::size_t i, Clip bySpeed) const;
 

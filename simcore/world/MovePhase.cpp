@@ -196,7 +196,8 @@ void MovePhase::Pass::stepAgent(std::size_t i, bool hasStatics, NeighbourGrid::S
     const std::size_t count = neighboursThisStep(i, near.data());
     // Steer: the type's behaviours, combined.
     WanderState wanderNext;
-    glm::vec3 force = steer(m_view, m_brains, i, self, {near.data(), count}, wanderNext) + m_brains.turnForce(i, self);
+    glm::vec3 force = steer(m_view, m_brains, i, self, {near.data(), count}, wanderNext) +
+                      m_brains.turnForce(i, self.forward, self.velocity, self.mass);
     // A walker that only keeps its distance, with an oncoming walker in its way, steps to its
     // right (KeepRight.h), as people do: two crowds meeting head-on form lanes instead of
     // pressing face to face for good.
@@ -236,7 +237,7 @@ void MovePhase::Pass::stepAgent(std::size_t i, bool hasStatics, NeighbourGrid::S
     // Integrate: the simple vehicle model (Reynolds 1999).
     SteeringAgent next = integrateVehicle(self, force, m_clock.dt, s.vehicle);
     if (m_brains.active())
-        m_brains.capToSpeed(m_view, i, self, next);
+        m_brains.capToSpeed(m_view, i, self.position, next.position, next.velocity);
     m_traffic.holdAtSignal(i, next.position);
     // Constrain: no agent ends a step inside a wall or obstacle; walkers stand on the ground.
     if (!s.vehicle.flying) {

@@ -312,10 +312,7 @@ void WalkKernel::stepAgent(const StepView& view, const BrainPhase& brains, Agent
         add(-v * (t.mass / kStandStillResponseS), 1.0f);
     // The brain's turn, as the general path adds it (MovePhase.cpp); its speed cap reads the
     // same old state below.
-    SteeringAgent self;
-    if constexpr (kBrain)
-        self = steeringAgent(agents, view.types, i);
-    const glm::vec3 turn = kBrain ? brains.turnForce(i, self) : glm::vec3(0.0f);
+    const glm::vec3 turn = kBrain ? brains.turnForce(i, fwd, v, t.mass) : glm::vec3(0.0f);
     glm::vec3 force = truncate(sum, t.maxForce) + turn;
     if (oncomingInTheWayAhead)
         force += keepRightForce(fwd, t.maxForce, w.keepRight);
@@ -365,11 +362,8 @@ void WalkKernel::stepAgent(const StepView& view, const BrainPhase& brains, Agent
     }
     // The brain's speed caps the step (BrainPhase::capToSpeed), after the frame is set.
     if constexpr (kBrain) {
-        SteeringAgent next;
-        next.position = pos;
-        next.velocity = vel;
-        brains.capToSpeed(view, i, self, next);
-        pos = next.position;
+        glm::vec3 capped = vel;  // the position follows it; the velocity is the move's (below)
+        brains.capToSpeed(view, i, p, pos, capped);
     }
     // Constrain: out of walls and obstacles, never through a wall (constrain, Constraints.h).
     if (w.constrained)

@@ -275,15 +275,16 @@ float BrainPhase::speedCap(const StepView& v, std::size_t i) const
 // For a walker it caps progress (the velocity along the way it wants to go), not making
 // way: sideways and back it may still move at kYieldSpeedMps, so one its brain holds (at
 // a light, for a hero) steps aside for those who pass instead of standing as a post.
-void BrainPhase::capToSpeed(const StepView& v, std::size_t i, const SteeringAgent& self, SteeringAgent& next) const
+void BrainPhase::capToSpeed(const StepView& v, std::size_t i, glm::vec3 from, glm::vec3& position,
+                            glm::vec3& velocity) const
 {
     if (!m_brains || m_brains->local[i] < 0)
         return;
     const float cap = speedCap(v, i);
-    if (glm::length(next.velocity) <= cap)
+    if (glm::length(velocity) <= cap)
         return;
-    next.velocity = limited(v, i, next.velocity, std::max(cap, std::min(kYieldSpeedMps, v.agents.maxSpeed[i])), 1.0f);
-    next.position = self.position + next.velocity * v.clock.dt;
+    velocity = limited(v, i, velocity, std::max(cap, std::min(kYieldSpeedMps, v.agents.maxSpeed[i])), 1.0f);
+    position = from + velocity * v.clock.dt;
 }
 
 // Agent i's move v over `seconds` (a velocity for 1) within its brain's speed: along the
@@ -327,7 +328,7 @@ float BrainPhase::weight(std::size_t i, Behaviour b) const
 
 // Turn (degrees/s, + = left) as a sideways force: the centripetal acceleration v·ω of a
 // turn at that rate, toward the agent's left.
-glm::vec3 BrainPhase::turnForce(std::size_t i, const SteeringAgent& self) const
+glm::vec3 BrainPhase::turnForce(std::size_t i, glm::vec3 forward, glm::vec3 velocity, float mass) const
 {
     if (!m_brains || m_brains->local[i] < 0)
         return glm::vec3(0.0f);
@@ -335,8 +336,8 @@ glm::vec3 BrainPhase::turnForce(std::size_t i, const SteeringAgent& self) const
     if (!tb.turn)
         return glm::vec3(0.0f);
     const float omega = glm::radians(tb.turn[m_brains->local[i]]);
-    const glm::vec3 left(self.forward.z, 0.0f, -self.forward.x);
-    return left * (omega * std::max(self.speed(), 0.1f) * self.mass);
+    const glm::vec3 left(forward.z, 0.0f, -forward.x);
+    return left * (omega * std::max(glm::length(velocity), 0.1f) * mass);
 }
 
 Clip BrainPhase::clip(std::size_t i, Clip bySpeed) const
