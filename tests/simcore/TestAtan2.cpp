@@ -32,8 +32,8 @@ struct Pair {
     float y, x;
 };
 
-// Angles all round at magnitudes from 1e-30 to 1e30, the axes and diagonals, and points
-// on either side of the reduction's switch at tan(pi/8).
+// Angles all round at magnitudes from 1e-30 to 1e30, the axes and diagonals, and ratios
+// y/x on either side of t = 1e-4 (below it atan(t) is taken as t) and of 1 (the diagonal).
 std::vector<Pair> samples(std::size_t count)
 {
     std::mt19937 gen(27);
@@ -54,13 +54,14 @@ std::vector<Pair> samples(std::size_t count)
                 out.push_back({0.0f * sy, sx * m});
             }
     }
-    const float switchAt = 0.41421357f;
-    float t = switchAt;
-    for (int k = 0; k < 64; ++k, t = std::nextafter(t, 0.0f))
-        out.push_back({t, 1.0f});
-    t = switchAt;
-    for (int k = 0; k < 64; ++k, t = std::nextafter(t, 1.0f))
-        out.push_back({-t, -1.0f});
+    for (const float at : {1e-4f, 1.0f}) {
+        float t = at;
+        for (int k = 0; k < 64; ++k, t = std::nextafter(t, 0.0f))
+            out.push_back({t, 1.0f});
+        t = at;
+        for (int k = 0; k < 64; ++k, t = std::nextafter(t, 2.0f))
+            out.push_back({-t, -1.0f});
+    }
     return out;
 }
 
