@@ -8,7 +8,6 @@
 // agent columns it writes (WorldBrain.cpp, WorldBrainSense.cpp).
 
 #include "simcore/steering/Neighbour.h"
-#include "simcore/steering/SteeringAgent.h"
 #include "simcore/world/AgentColumns.h"
 #include "simcore/world/FrameCache.h"
 
