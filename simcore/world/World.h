@@ -15,6 +15,7 @@
 #include "simcore/world/MovePhase.h"
 #include "simcore/world/NearestList.h"
 #include "simcore/world/NeighbourGrid.h"
+#include "simcore/world/PhaseTimes.h"
 #include "simcore/world/ExitChoice.h"
 #include "simcore/world/Formations.h"
 #include "simcore/world/Sources.h"
@@ -89,6 +90,8 @@ public:
     int threads() const { return m_team.size(); }
     // The threads that step this World (tests ask it which threads did work).
     const ThreadTeam& team() const { return m_team; }
+    // The wall-clock time the steps so far spent in each phase (PhaseTimes.h).
+    const PhaseTimes& phaseTimes() const { return m_phaseTimes; }
 
     // Positions are relative to origin(): add it (in double) for the scene's coordinates.
     std::span<const glm::vec3> positions() const { return m_agents.pos; }
@@ -267,6 +270,7 @@ private:
     CountPhase m_count;  // the run's figures (StepCounters.h)
     std::uint64_t m_seed = 1;
     StepClock m_clock;
+    PhaseTimes m_phaseTimes;  // wall-clock time per phase of the steps so far
     ThreadTeam m_team;
     WorldTraffic m_traffic;
     WorldNav m_nav;
