@@ -77,7 +77,14 @@ int benchCommand(const CliArguments& args, std::ostream& out, std::ostream& err)
       << ", \"overlapping_pairs_per_step\": " << (steps ? double(stats.counters.overlappingPairs) / double(steps) : 0.0)
       << ", \"fraction_arrived\": " << (stats.withGoal ? double(stats.arrived) / double(stats.withGoal) : 0.0)
       << ", \"wall_penetrations\": " << stats.counters.wallPenetrations
-      << ", \"non_finite_values\": " << stats.counters.nonFiniteValues << "}\n";
+      << ", \"non_finite_values\": " << stats.counters.nonFiniteValues;
+    // Where the steps' time went, phase by phase (World::phaseTimes): ms per step.
+    const sim::PhaseTimes& times = world.phaseTimes();
+    j << ", \"phase_ms_per_step\": {";
+    for (std::size_t p = 0; p < sim::kStepPhaseCount; ++p)
+        j << (p ? ", " : "") << '"' << sim::kStepPhaseNames[p] << "\": "
+          << (steps ? times.seconds(sim::StepPhase(p)) * 1000.0 / double(steps) : 0.0);
+    j << "}}\n";
     out << j.str();
     return 0;
 }

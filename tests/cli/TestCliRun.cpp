@@ -225,6 +225,18 @@ private slots:
             QVERIFY2(o.contains(key), key);
         QCOMPARE(o["agents_with_brain"].toInt(), 0);
         QCOMPARE(o["placed_in_grid_order"].toBool(), false);  // walkers keep their order
+        // Where the steps' time went: every phase, none negative, the move phase's above
+        // zero and the brains' zero (the corridor has none), together within a step's time.
+        const QJsonObject phases = o["phase_ms_per_step"].toObject();
+        QCOMPARE(phases.size(), 9);
+        double sum = 0.0;
+        for (const char* key : {"enter", "grid", "navigate", "brain", "traffic", "move", "collide", "commit", "count"}) {
+            QVERIFY2(phases.contains(key) && phases[key].toDouble() >= 0.0, key);
+            sum += phases[key].toDouble();
+        }
+        QVERIFY(phases["move"].toDouble() > 0.0);
+        QCOMPARE(phases["brain"].toDouble(), 0.0);
+        QVERIFY2(sum <= o["ms_per_step"].toDouble(), qPrintable(QString::number(sum)));
     }
 
     // `run` stores 70,000 placed birds (at least kGridOrderFrom) in the grid's order, and
@@ -306,6 +318,7 @@ private slots:
         QCOMPARE(o["agents"].toInt(), 400);
         QCOMPARE(o["agents_with_brain"].toInt(), 400);
         QVERIFY(o["steps_per_second"].toDouble() > 0.0);
+        QVERIFY(o["phase_ms_per_step"].toObject()["brain"].toDouble() > 0.0);
         QCOMPARE(o["non_finite_values"].toInt(), 0);
     }
 };
