@@ -81,6 +81,10 @@ void CountPhase::countGround(const StepView& v, std::vector<std::uint8_t>& onCro
 {
     const AgentColumns& a = v.agents;
     const StaticSet& set = v.set;
+    // Nothing to stand in or step onto (an open field like `cross`): no agent's flag can
+    // be set, so all are as they were, clear.
+    if (set.circles.empty() && set.boxes.empty() && set.crosswalks.empty())
+        return;
     std::atomic<std::uint64_t> inObstacleAll{0}, redAll{0};
     v.team.forChunks(a.size(), 1024, [&](std::size_t begin, std::size_t end, int) {
         std::uint64_t inObstacle = 0, red = 0;
