@@ -9,9 +9,13 @@
 
 #include "simcore/steering/BehaviourKey.h"
 
+#include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 
+#include <algorithm>
 #include <array>
+#include <cstddef>
 #include <span>
 #include <string_view>
 
@@ -41,6 +45,33 @@ struct PlanarBody {
 // (they part within one step). At most 16 neighbours are considered (the nearest first).
 glm::vec2 avoidReciprocally(const PlanarBody& self, glm::vec2 preferred, std::span<const PlanarNeighbour> neighbours,
                             float dt, const ReciprocalAvoidanceParams& params = {});
+
+// The force that makes a walker's velocity the one avoidReciprocally chooses by the time
+// of its next decision, decideDt from now (> 0; mass > 0): the velocity its steering
+// `force` would reach, capped at body.maxSpeed, is the one it prefers, turned right of the
+// way (turns[min(oncoming, 3) - 1]: cosine and sine) while `oncoming` walkers come the
+// other way and params.keepRightRad > 0. The general path (Steer.h) and the walker
+// kernel (WalkKernel.h) both call it.
+inline glm::vec3 reciprocalForce(const PlanarBody& body, float mass, glm::vec3 force,
+                                 std::span<const PlanarNeighbour> neighbours, std::size_t oncoming,
+                                 const std::array<glm::vec2, 3>& turns, float decideDt,
+                                 const ReciprocalAvoidanceParams& params)
+{
+    glm::vec2 preferred = body.velocity + glm::vec2(force.x, force.z) * (decideDt / mass);
+    const float speed = glm::length(preferred);
+    if (speed > body.maxSpeed && speed > 0.0f)
+        preferred *= body.maxSpeed / speed;
+    // Keep to the right of oncoming walkers (the pedestrians' convention), more the more
+    // of them come: opposing streams then pass side by side instead of meeting head-on.
+    if (oncoming > 0 && params.keepRightRad > 0.0f) {
+        const glm::vec2 turn = turns[std::min<std::size_t>(oncoming, 3) - 1];
+        const glm::vec2 right(-preferred.y, preferred.x);
+        preferred = preferred * turn.x + right * turn.y;
+    }
+    const glm::vec2 change = (avoidReciprocally(body, preferred, neighbours, decideDt, params) - body.velocity) *
+                             (mass / decideDt);
+    return glm::vec3(change.x, 0.0f, change.y);
+}
 
 // Reciprocal avoidance's entry in the behaviour list (BehaviourTable.h). It asks for no
 // force: it filters what the others ask for (Steer.h, avoidReciprocally).

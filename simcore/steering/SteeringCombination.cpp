@@ -3,6 +3,7 @@
 #include "simcore/steering/SteeringCombination.h"
 
 #include "simcore/steering/detail/SteeringMath.h"
+#include "simcore/steering/detail/WeightedBlend.h"
 
 #include <glm/geometric.hpp>
 
@@ -12,9 +13,7 @@ using namespace detail;
 
 namespace {
 
-// A request counts when its weighted force is finite. That alone also rules out a
-// non-finite weight or force: any infinity or NaN among them makes some product an
-// infinity or a NaN (0 * inf is NaN), so one test does what three did.
+// A request counts when its weighted force is finite (as WeightedBlend::add).
 bool usable(const SteeringRequest& r, glm::vec3& weighted)
 {
     weighted = r.force * r.weight;
@@ -25,13 +24,10 @@ bool usable(const SteeringRequest& r, glm::vec3& weighted)
 
 glm::vec3 blendWeighted(std::span<const SteeringRequest> requests, float maxForce)
 {
-    glm::vec3 sum(0.0f);
-    for (const SteeringRequest& r : requests) {
-        glm::vec3 f(0.0f);
-        if (usable(r, f))
-            sum += f;
-    }
-    return truncate(sum, maxForce);
+    WeightedBlend blend;
+    for (const SteeringRequest& r : requests)
+        blend.add(r.force, r.weight);
+    return blend.total(maxForce);
 }
 
 glm::vec3 allocateByPriority(std::span<const SteeringRequest> requests, float maxForce)

@@ -2,6 +2,7 @@
 // fliers as in OpenSteer's SimpleVehicle::applySteeringForce.
 #include "simcore/steering/VehicleModel.h"
 
+#include "simcore/steering/detail/GroundMove.h"
 #include "simcore/steering/detail/SteeringConstants.h"
 #include "simcore/steering/detail/SteeringMath.h"
 
@@ -25,22 +26,6 @@ SteeringAgent sanitised(const SteeringAgent& s)
     out.up = normalizeOr(s.up, kWorldUp);
     out.side = normalizeOr(s.side, rightOfForward(out.forward));
     return out;
-}
-
-// The ground frame rebuilt from the velocity; `forward` is the unsanitised previous one,
-// read only when standing (then made unit as sanitised() would, before flattening).
-void groundFrame(SteeringAgent& s, glm::vec3 forward)
-{
-    s.velocity.y = 0.0f;
-    const float speed = glm::length(s.velocity);
-    if (speed > kStoppedSpeed) {
-        s.forward = s.velocity / speed;
-    } else {
-        const glm::vec3 unit = normalizeOr(forward, glm::vec3(0.0f, 0.0f, 1.0f));
-        s.forward = normalizeOr(glm::vec3(unit.x, 0.0f, unit.z), glm::vec3(0.0f, 0.0f, 1.0f));
-    }
-    s.up = kWorldUp;
-    s.side = rightOfForward(s.forward);
 }
 
 void flyingFrame(SteeringAgent& s, glm::vec3 acceleration, float dt, const VehicleParams& params)
@@ -72,33 +57,33 @@ SteeringAgent integrateVehicle(const SteeringAgent& state, glm::vec3 force, floa
 {
     if (!(std::isfinite(dt) && dt > 0.0f))
         return sanitised(state);
-    // A walker's frame is rebuilt from scratch below, so only its position and velocity
-    // need sanitising first (the old forward matters only when it stands: groundFrame).
-    SteeringAgent s = state;
-    if (params.flying) {
-        s = sanitised(state);
-    } else {
-        s.position = finiteOrZero(state.position);
-        s.velocity = finiteOrZero(state.velocity);
+    // A walker's frame is rebuilt from scratch, so only its position and velocity need
+    // sanitising first (the old forward matters only when it stands: groundMove, the
+    // walker kernel's step too).
+    if (!params.flying) {
+        SteeringAgent s = state;
+        const GroundMove move =
+            groundMove(finiteOrZero(state.position), finiteOrZero(state.velocity), state.forward, force,
+                       state.maxForce, dt / effectiveMass(state.mass), nonNegative(state.maxSpeed), dt);
+        s.position = move.position;
+        s.velocity = move.velocity;
+        s.forward = move.forward;
+        s.up = kWorldUp;
+        s.side = rightOfForward(s.forward);
+        return s;
     }
+    SteeringAgent s = sanitised(state);
     const float maxSpeed = nonNegative(s.maxSpeed);
     const glm::vec3 f = truncate(finiteOrZero(force), s.maxForce);
     const glm::vec3 before = s.velocity;
     glm::vec3 v = truncate(before + f * (dt / effectiveMass(s.mass)), maxSpeed);
-    if (!params.flying) {
-        v.y = 0.0f;
-    } else {
-        const float minSpeed = std::min(nonNegative(params.minSpeed), maxSpeed);
-        const float speed = glm::length(v);
-        if (speed < minSpeed)
-            v = (speed > kStoppedSpeed ? v / speed : s.forward) * minSpeed;
-    }
+    const float minSpeed = std::min(nonNegative(params.minSpeed), maxSpeed);
+    const float speed = glm::length(v);
+    if (speed < minSpeed)
+        v = (speed > kStoppedSpeed ? v / speed : s.forward) * minSpeed;
     s.velocity = finiteOrZero(v);
     s.position = finiteOrZero(s.position + s.velocity * dt);
-    if (params.flying)
-        flyingFrame(s, (s.velocity - before) / dt, dt, params);
-    else
-        groundFrame(s, state.forward);
+    flyingFrame(s, (s.velocity - before) / dt, dt, params);
     return s;
 }
 

@@ -162,11 +162,6 @@ glm::vec3 avoidReciprocally(const StepView& v, std::size_t i, const SteeringAgen
     // Decided for the time until the next decision (StepRate.h), v.clock.decideDt.
     if (self.mass <= 0.0f || v.clock.decideDt <= 0.0f)
         return force;
-    const glm::vec3 wanted = self.velocity + force * (v.clock.decideDt / self.mass);
-    glm::vec2 preferred(wanted.x, wanted.z);
-    const float speed = glm::length(preferred);
-    if (speed > self.maxSpeed && speed > 0.0f)
-        preferred *= self.maxSpeed / speed;
     UninitialisedArray<PlanarNeighbour, kMaxNeighbours> others;  // the first `count` are written, and read
     const std::uint32_t* index = &v.agents.nearIndex[i * kMaxNeighbours];
     const glm::vec2 fwd = xz(self.forward);
@@ -185,18 +180,9 @@ glm::vec3 avoidReciprocally(const StepView& v, std::size_t i, const SteeringAgen
             glm::dot(o.position - xz(self.position), fwd) > 0.0f)
             ++oncoming;
     }
-    // Keep to the right of oncoming walkers (the pedestrians' convention), more the more
-    // of them come: opposing streams then pass side by side instead of meeting head-on.
-    if (oncoming > 0 && s.reciprocal.keepRightRad > 0.0f) {
-        const glm::vec2 turn = s.keepRightTurn[std::min<std::size_t>(oncoming, 3) - 1];
-        const glm::vec2 right(-preferred.y, preferred.x);
-        preferred = preferred * turn.x + right * turn.y;
-    }
     const PlanarBody body{xz(self.position), xz(self.velocity), self.radius, self.maxSpeed};
-    const glm::vec2 chosen =
-        sim::avoidReciprocally(body, preferred, {others.data(), count}, v.clock.decideDt, s.reciprocal);
-    return (glm::vec3(chosen.x, 0.0f, chosen.y) - glm::vec3(self.velocity.x, 0.0f, self.velocity.z)) *
-           (self.mass / v.clock.decideDt);
+    return reciprocalForce(body, self.mass, force, {others.data(), count}, oncoming, s.keepRightTurn,
+                           v.clock.decideDt, s.reciprocal);
 }
 
 }  // namespace throng::sim

@@ -22,7 +22,9 @@
 #include "simcore/steering/UninitialisedArray.h"
 #include "simcore/steering/detail/SteeringConstants.h"
 #include "simcore/steering/detail/BehaviourMath.h"
+#include "simcore/steering/detail/GroundMove.h"
 #include "simcore/steering/detail/SteeringMath.h"
+#include "simcore/steering/detail/WeightedBlend.h"
 #include "simcore/base/Rng.h"
 #include "simcore/world/detail/StepConstants.h"
 
@@ -235,12 +237,8 @@ void WalkKernel::stepAgent(const StepView& view, const BrainPhase& brains, Agent
     // Steer: steer's (Steer.h) requests in its order, blended (blendWeighted), each weighted
     // by the type and the agent's brain (requestBehaviours, Steer.cpp).
     const bool hasGoal = agents.goal[i] >= 0;
-    glm::vec3 sum(0.0f);
-    auto add = [&](glm::vec3 force, float weight) {
-        const glm::vec3 f = force * weight;
-        if (isFinite(f))
-            sum += f;
-    };
+    WeightedBlend blend;  // blendWeighted's sum (SteeringCombination.h), request by request
+    auto add = [&](glm::vec3 force, float weight) { blend.add(force, weight); };
     auto brainWeight = [&](Behaviour b) { return kBrain ? brains.weight(i, b) : 1.0f; };
     // Where seek and arrival aim: the goal's spot for this agent, or its navigation target (navGoal).
     const glm::vec3 goal = !hasGoal ? p + fwd
@@ -313,29 +311,16 @@ void WalkKernel::stepAgent(const StepView& view, const BrainPhase& brains, Agent
     // The brain's turn, as the general path adds it (MovePhase.cpp); its speed cap reads the
     // same old state below.
     const glm::vec3 turn = kBrain ? brains.turnForce(i, fwd, v, t.mass) : glm::vec3(0.0f);
-    glm::vec3 force = truncate(sum, t.maxForce) + turn;
+    glm::vec3 force = blend.total(t.maxForce) + turn;
     if (oncomingInTheWayAhead)
         force += keepRightForce(fwd, t.maxForce, w.keepRight);
 
     // Avoid: the velocity the blend asks for becomes the nearest that touches no neighbour
     // within the horizon (avoidReciprocally (Steer.h) between equals).
     // (Between decisions the force held replaces it below: no avoidance is worked out.)
-    if (w.reciprocal && view.clock.decide && t.mass > 0.0f && view.clock.decideDt > 0.0f) {
-        const glm::vec3 wanted = v + force * (view.clock.decideDt / t.mass);
-        glm::vec2 preferred(wanted.x, wanted.z);
-        const float speed = glm::length(preferred);
-        if (speed > maxSpeed && speed > 0.0f)
-            preferred *= maxSpeed / speed;
-        if (oncoming > 0 && s.reciprocal.keepRightRad > 0.0f) {
-            const glm::vec2 turn = s.keepRightTurn[std::min<std::size_t>(oncoming, 3) - 1];
-            const glm::vec2 right(-preferred.y, preferred.x);
-            preferred = preferred * turn.x + right * turn.y;
-        }
-        const PlanarBody body{p2, xz(v), radius, maxSpeed};
-        const glm::vec2 chosen =
-            sim::avoidReciprocally(body, preferred, {others.data(), count}, view.clock.decideDt, s.reciprocal);
-        force = (glm::vec3(chosen.x, 0.0f, chosen.y) - glm::vec3(v.x, 0.0f, v.z)) * (t.mass / view.clock.decideDt);
-    }
+    if (w.reciprocal && view.clock.decide && t.mass > 0.0f && view.clock.decideDt > 0.0f)
+        force = reciprocalForce({p2, xz(v), radius, maxSpeed}, t.mass, force, {others.data(), count}, oncoming,
+                                s.keepRightTurn, view.clock.decideDt, s.reciprocal);
     // Between decisions (StepRate.h) the force decided last holds, and wander stands still.
     if (view.clock.decide) {
         agents.heldForce[i] = force;
@@ -344,25 +329,15 @@ void WalkKernel::stepAgent(const StepView& view, const BrainPhase& brains, Agent
         wanderNext = agents.wander[i];
     }
 
-    // Integrate: integrateVehicle's walker step (VehicleModel.cpp) on a finite state, then
-    // stand on the ground (as the general path, MovePhase.cpp).
-    const glm::vec3 f = truncate(finiteOrZero(force), t.maxForce);
-    glm::vec3 vel = truncate(v + f * w.dtOverMass, nonNegative(maxSpeed));
-    vel.y = 0.0f;
-    vel = finiteOrZero(vel);
-    glm::vec3 pos = finiteOrZero(p + vel * view.clock.dt);
-    vel.y = 0.0f;
-    const float speed = glm::length(vel);
-    glm::vec3 nextFwd;
-    if (speed > kStoppedSpeed) {
-        nextFwd = vel / speed;
-    } else {
-        const glm::vec3 unit = normalizeOr(fwd, glm::vec3(0.0f, 0.0f, 1.0f));
-        nextFwd = normalizeOr(glm::vec3(unit.x, 0.0f, unit.z), glm::vec3(0.0f, 0.0f, 1.0f));
-    }
+    // Integrate: integrateVehicle's walker step (groundMove, VehicleModel.cpp) on a finite
+    // state, then stand on the ground (as the general path, MovePhase.cpp).
+    const GroundMove move =
+        groundMove(p, v, fwd, force, t.maxForce, w.dtOverMass, nonNegative(maxSpeed), view.clock.dt);
+    glm::vec3 pos = move.position;
+    const glm::vec3 nextFwd = move.forward;
     // The brain's speed caps the step (BrainPhase::capToSpeed), after the frame is set.
     if constexpr (kBrain) {
-        glm::vec3 capped = vel;  // the position follows it; the velocity is the move's (below)
+        glm::vec3 capped = move.velocity;  // the position follows it; the velocity is the move's (below)
         brains.capToSpeed(view, i, p, pos, capped);
     }
     // Constrain: out of walls and obstacles, never through a wall (constrain, Constraints.h).
