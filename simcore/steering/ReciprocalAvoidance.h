@@ -46,6 +46,16 @@ struct PlanarBody {
 glm::vec2 avoidReciprocally(const PlanarBody& self, glm::vec2 preferred, std::span<const PlanarNeighbour> neighbours,
                             float dt, const ReciprocalAvoidanceParams& params = {});
 
+// Whether a neighbour counts among the oncoming walkers of reciprocalForce's turn to the
+// right: it walks (has not stopped), faces more than 120 degrees away from this walker's
+// heading `forward` (on the ground plane), and stands ahead of it.
+inline bool comesTheOtherWay(glm::vec2 position, glm::vec2 forward, glm::vec2 otherPosition, glm::vec2 otherForward,
+                             bool otherStopped)
+{
+    return !otherStopped && glm::dot(otherForward, forward) < -0.5f &&
+           glm::dot(otherPosition - position, forward) > 0.0f;
+}
+
 // The force that makes a walker's velocity the one avoidReciprocally chooses by the time
 // of its next decision, decideDt from now (> 0; mass > 0): the velocity its steering
 // `force` would reach, capped at body.maxSpeed, is the one it prefers, turned right of the

@@ -176,9 +176,7 @@ glm::vec3 avoidReciprocally(const StepView& v, std::size_t i, const SteeringAgen
             continue;
         PlanarNeighbour& o = others[count++];
         o = {xz(near[k].position), xz(near[k].velocity), near[k].radius, share};
-        if (!stopped && glm::dot(xz(near[k].forward), fwd) < -0.5f &&
-            glm::dot(o.position - xz(self.position), fwd) > 0.0f)
-            ++oncoming;
+        oncoming += comesTheOtherWay(xz(self.position), fwd, o.position, xz(near[k].forward), stopped);
     }
     const PlanarBody body{xz(self.position), xz(self.velocity), self.radius, self.maxSpeed};
     return reciprocalForce(body, self.mass, force, {others.data(), count}, oncoming, s.keepRightTurn,

@@ -229,8 +229,7 @@ void WalkKernel::stepAgent(const StepView& view, const BrainPhase& brains, Agent
             const bool stopped = agents.stopped[j] != 0;
             PlanarNeighbour& o = others[n];
             o = {xz(q), xz(vj), rj, stopped ? 1.0f : 0.5f};
-            if (!stopped && glm::dot(xz(agents.fwd[j]), fwd2) < -0.5f && glm::dot(o.position - p2, fwd2) > 0.0f)
-                ++oncoming;
+            oncoming += comesTheOtherWay(p2, fwd2, o.position, xz(agents.fwd[j]), stopped);
         }
     }
 
