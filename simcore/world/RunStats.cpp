@@ -44,6 +44,8 @@ RunStats RunStats::from(const World& world, std::uint64_t frames, double wallSec
     s.wallSeconds = wallSeconds;
     s.counters = world.counters();
     s.agentStepsPerSecond = wallSeconds > 0.0 ? double(s.counters.agentSteps) / wallSeconds : 0.0;
+    for (std::size_t p = 0; p < kStepPhaseCount; ++p)
+        s.phaseSeconds[p] = world.phaseTimes().seconds(StepPhase(p));
     for (std::size_t i = 0; i < world.agentCount(); ++i)
         if (world.hasArrived(i))
             ++s.arrived;
@@ -111,6 +113,10 @@ std::string RunStats::toJson() const
     field("simulated_seconds", number(simulatedSeconds));
     field("wall_seconds", number(wallSeconds));
     field("agent_steps_per_second", number(agentStepsPerSecond));
+    std::string phases;
+    for (std::size_t p = 0; p < kStepPhaseCount; ++p)
+        phases += (p ? ", \"" : "\"") + std::string(kStepPhaseNames[p]) + "\": " + number(phaseSeconds[p]);
+    field("phase_seconds", "{" + phases + "}");
     field("arrived", std::to_string(arrived));
     field("agents_with_goal", std::to_string(withGoal));
     field("agents_in_scene", std::to_string(inScene));

@@ -2,8 +2,10 @@
 // The figures of one run, as the CLI's --stats JSON carries them (DESIGN.md).
 
 #include "simcore/world/NavStats.h"
+#include "simcore/world/PhaseTimes.h"
 #include "simcore/world/StepCounters.h"
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -31,6 +33,8 @@ struct RunStats {
     double simulatedSeconds = 0.0;
     double wallSeconds = 0.0;
     double agentStepsPerSecond = 0.0;
+    // Wall-clock seconds the steps spent in each phase (World::phaseTimes, PhaseTimes.h).
+    std::array<double, kStepPhaseCount> phaseSeconds{};
     std::uint64_t arrived = 0;
     std::uint64_t withGoal = 0;
     StepCounters counters;  // counters.redLightViolations: pedestrians only

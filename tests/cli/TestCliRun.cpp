@@ -77,6 +77,18 @@ private slots:
         QCOMPARE(o["non_finite_values"].toInt(), 0);
         for (const char* key : {"obstacle_penetrations", "overlapping_pairs", "red_light_violations", "arrived"})
             QVERIFY2(o.contains(key), key);
+        // Where the run's time went: every phase, the move phase's above zero, the brains'
+        // zero (this scene has none), together no more than the run's wall time.
+        const QJsonObject phases = o["phase_seconds"].toObject();
+        QCOMPARE(phases.size(), 9);
+        double sum = 0.0;
+        for (const QString& key : phases.keys()) {
+            QVERIFY2(phases[key].toDouble() >= 0.0, qPrintable(key));
+            sum += phases[key].toDouble();
+        }
+        QVERIFY(phases["move"].toDouble() > 0.0 && phases["count"].toDouble() > 0.0);
+        QCOMPARE(phases["brain"].toDouble(), 0.0);
+        QVERIFY2(sum <= o["wall_seconds"].toDouble(), qPrintable(QString::number(sum)));
     }
 
     void crossroadsStatsCarryTrafficFigures()
@@ -162,7 +174,8 @@ private slots:
         QVERIFY2(chunks[0].toDouble() > 0 && chunks[1].toDouble() > 0, "the second thread did no work");
         QVERIFY(csv[1] == csv[0]);
         for (const QString& key : stats[0].keys())
-            if (key != "wall_seconds" && key != "agent_steps_per_second" && key != "threads" && key != "chunks_per_thread")
+            if (key != "wall_seconds" && key != "agent_steps_per_second" && key != "threads" &&
+                key != "chunks_per_thread" && key != "phase_seconds")
                 QVERIFY2(stats[1][key] == stats[0][key], qPrintable(key));
     }
 
