@@ -92,27 +92,40 @@ void BrainPhase::sense(const StepView& view, AgentColumns& agents, TypeBrain& tb
         if (needNeighbours)
             agents.nearCount[i] = std::uint8_t(count);
         tb.neighbourCount[k] = std::uint8_t(std::min<std::size_t>(count, kBrainNeighbours));
-        // The neighbours' bearings (bearingDeg), four at a time, once for every sensor that
+        // The neighbours' bearings (bearingDeg) and distances (glm::distance: the square
+        // root of the same sum of squares), four at a time, once for every sensor that
         // reads them.
-        std::array<float, kMaxNeighbours> nearBearing;
-        bool bearingsFound = false;
-        auto bearings = [&]() -> const std::array<float, kMaxNeighbours>& {
-            if (!bearingsFound) {
-                for (std::size_t j = 0; j < count; j += 4) {
-                    simd::F4 dx, dy;
-                    for (std::size_t l = 0; l < 4; ++l) {
-                        const glm::vec2 d = j + l < count ? nearPos(j + l) - p : glm::vec2(0.0f);
-                        dx[l] = d.x;
-                        dy[l] = d.y;
-                    }
-                    const simd::F4 b = bearingsDeg(f, dx, dy);
-                    for (std::size_t l = 0; l < 4 && j + l < count; ++l)
-                        nearBearing[j + l] = b[l];
+        std::array<float, kMaxNeighbours> nearBearing, nearDistance;
+        bool geometryFound = false;
+        auto findGeometry = [&] {
+            if (geometryFound)
+                return;
+            for (std::size_t j = 0; j < count; j += 4) {
+                simd::F4 dx, dy;
+                for (std::size_t l = 0; l < 4; ++l) {
+                    const glm::vec2 d = j + l < count ? nearPos(j + l) - p : glm::vec2(0.0f);
+                    dx[l] = d.x;
+                    dy[l] = d.y;
                 }
-                bearingsFound = true;
+                const simd::F4 b = bearingsDeg(f, dx, dy), d = simd::sqrtOf(dx * dx + dy * dy);
+                for (std::size_t l = 0; l < 4 && j + l < count; ++l) {
+                    nearBearing[j + l] = b[l];
+                    nearDistance[j + l] = d[l];
+                }
             }
+            geometryFound = true;
+        };
+        auto bearings = [&]() -> const std::array<float, kMaxNeighbours>& {
+            findGeometry();
             return nearBearing;
         };
+        auto distances = [&]() -> const std::array<float, kMaxNeighbours>& {
+            findGeometry();
+            return nearDistance;
+        };
+        // The stop line ahead and its light (both sensors' answer, found once).
+        float stopGap = kNoneM, stopLight = 0.0f;
+        bool stopLineFound = false;
         std::array<float, 3> feeler{};  // left, centre, right
         if (needFeelers) {
             const float length = steering.obstacles.minLengthM + steering.obstacles.lookaheadS * speed;
@@ -181,9 +194,7 @@ void BrainPhase::sense(const StepView& view, AgentColumns& agents, TypeBrain& tb
             case SensorFill::NeighbourDensity:
                 v = float(count) / (3.14159265f * type.perception * type.perception * tb.viewDeg / 360.0f);
                 break;
-            case SensorFill::NearestDistance:
-                v = count ? glm::distance(p, nearPos(0)) : type.perception;
-                break;
+            case SensorFill::NearestDistance: v = count ? distances()[0] : type.perception; break;
             case SensorFill::NearestBearing: v = count ? bearings()[0] : 0.0f; break;
             case SensorFill::VisionLeft:
             case SensorFill::VisionCentre:
@@ -209,6 +220,10 @@ void BrainPhase::sense(const StepView& view, AgentColumns& agents, TypeBrain& tb
             }
             case SensorFill::LightState:
             case SensorFill::StopLineDistance: {
+                if (stopLineFound) {
+                    v = tb.fills[s] == SensorFill::LightState ? stopLight : stopGap;
+                    break;
+                }
                 float gap = kNoneM, light = 0.0f;
                 if (const std::int32_t vehicle = m_brains->vehicleOf[i]; vehicle >= 0) {
                     // A vehicle's stop line is the next one on its lane, from its front.
@@ -224,8 +239,9 @@ void BrainPhase::sense(const StepView& view, AgentColumns& agents, TypeBrain& tb
                     // or goal, not its facing, which wobbles while it waits) within 60
                     // degrees of the crosswalk's axis, so a walker passing the end of a
                     // crosswalk along the sidewalk is not held at it.
-                    glm::vec2 w = wantedHeading(view, i);
-                    w = glm::dot(w, w) > 1e-12f ? glm::normalize(w) : f;
+                    // The way it wants to go, worked out only where a lit crosswalk is near.
+                    glm::vec2 w(0.0f);
+                    bool wanted = false;
                     for (const CrosswalkBox& c : view.set.crosswalks) {
                         if (c.light < 0)
                             continue;
@@ -237,6 +253,11 @@ void BrainPhase::sense(const StepView& view, AgentColumns& agents, TypeBrain& tb
                         const float along = glm::dot(p - c.a, dir), across = std::fabs(cross(dir, p - c.a));
                         if (across > c.halfWidth + kStopLineSideM)
                             continue;
+                        if (!wanted) {
+                            w = wantedHeading(view, i);
+                            w = glm::dot(w, w) > 1e-12f ? glm::normalize(w) : f;
+                            wanted = true;
+                        }
                         float d = kNoneM;
                         if (along < 0.0f && glm::dot(w, dir) > kAlongCos)
                             d = -along - view.agents.radius[i];
@@ -248,6 +269,9 @@ void BrainPhase::sense(const StepView& view, AgentColumns& agents, TypeBrain& tb
                         }
                     }
                 }
+                stopGap = gap;
+                stopLight = light;
+                stopLineFound = true;
                 v = tb.fills[s] == SensorFill::LightState ? light : gap;
                 break;
             }
@@ -311,9 +335,8 @@ void BrainPhase::sense(const StepView& view, AgentColumns& agents, TypeBrain& tb
                 for (std::size_t j = 0; j < kBrainNeighbours; ++j) {
                     float x = 0.0f;
                     if (j < count) {
-                        const glm::vec2 q = nearPos(j);
                         switch (tb.fills[s]) {
-                        case SensorFill::NeighbourDistance: x = glm::distance(p, q); break;
+                        case SensorFill::NeighbourDistance: x = distances()[j]; break;
                         case SensorFill::NeighbourBearing: x = bearings()[j]; break;
                         case SensorFill::NeighbourSpeed: x = glm::length(view.agents.vel[near[j]]); break;
                         case SensorFill::NeighbourTag:
