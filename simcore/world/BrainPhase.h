@@ -13,7 +13,9 @@
 
 #include <glm/vec3.hpp>
 
+#include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -57,6 +59,20 @@ public:
     glm::vec3 limited(const StepView& v, std::size_t i, glm::vec3 move, float aside, float seconds) const;
     // Multiplies the type's weight of behaviour b.
     float weight(std::size_t i, Behaviour b) const;
+    // Agent i's weights looked up once, for a caller that reads several of them (the
+    // walker kernel): weights(i).of(b) is weight(i, b).
+    struct Weights {
+        const float* const* columns = nullptr;  // per behaviour: its brain's column, or null
+        std::int32_t local = -1;                // the agent's row in them; -1: no brain
+        float of(Behaviour b) const
+        {
+            if (local < 0)
+                return 1.0f;
+            const float* w = columns[std::size_t(b)];
+            return w ? std::max(0.0f, w[local]) : 1.0f;
+        }
+    };
+    Weights weights(std::size_t i) const;
     // The brain's turn (degrees/s) as a sideways force on agent i, of that heading,
     // velocity and mass at the step's start.
     glm::vec3 turnForce(std::size_t i, glm::vec3 forward, glm::vec3 velocity, float mass) const;

@@ -238,7 +238,8 @@ void WalkKernel::stepAgent(const StepView& view, const BrainPhase& brains, Agent
     const bool hasGoal = agents.goal[i] >= 0;
     WeightedBlend blend;  // blendWeighted's sum (SteeringCombination.h), request by request
     auto add = [&](glm::vec3 force, float weight) { blend.add(force, weight); };
-    auto brainWeight = [&](Behaviour b) { return kBrain ? brains.weight(i, b) : 1.0f; };
+    const BrainPhase::Weights weights = kBrain ? brains.weights(i) : BrainPhase::Weights{};
+    auto brainWeight = [&](Behaviour b) { return kBrain ? weights.of(b) : 1.0f; };
     // Where seek and arrival aim: the goal's spot for this agent, or its navigation target (navGoal).
     const glm::vec3 goal = !hasGoal ? p + fwd
                            : view.nav.active && view.nav.hasTarget[i]

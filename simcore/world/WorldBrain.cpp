@@ -320,10 +320,14 @@ glm::vec3 BrainPhase::limited(const StepView& view, std::size_t i, glm::vec3 v, 
 
 float BrainPhase::weight(std::size_t i, Behaviour b) const
 {
+    return weights(i).of(b);
+}
+
+BrainPhase::Weights BrainPhase::weights(std::size_t i) const
+{
     if (!m_brains || m_brains->local[i] < 0)
-        return 1.0f;
-    const float* w = m_brains->types[std::size_t(m_brains->batch[i])].weight[std::size_t(b)];
-    return w ? std::max(0.0f, w[m_brains->local[i]]) : 1.0f;
+        return {};
+    return {m_brains->types[std::size_t(m_brains->batch[i])].weight.data(), m_brains->local[i]};
 }
 
 // Turn (degrees/s, + = left) as a sideways force: the centripetal acceleration v·ω of a
