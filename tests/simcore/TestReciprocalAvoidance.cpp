@@ -1,5 +1,6 @@
 // Reciprocal velocity obstacles (ORCA) as a pure function, as RVO2's users check it: a
-// symmetric circle swaps without contact, and a boxed-in body stands still.
+// symmetric circle swaps without contact, and a boxed-in body stands still. And the force
+// a walker steers by from it (reciprocalForce), with its turn right of oncoming walkers.
 #include "TestRegistry.h"
 
 #include "simcore/steering/ReciprocalAvoidance.h"
@@ -9,6 +10,7 @@
 #include <QTest>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -95,6 +97,68 @@ private slots:
         const glm::vec2 free = avoidReciprocally(self, {3.0f, 0.0f}, {}, 1.0f / 24.0f);
         QCOMPARE(free.x, 1.4f);
         QCOMPARE(free.y, 0.0f);
+    }
+
+    // reciprocalForce, which the general path and the walker kernel both steer by: with
+    // nobody about, the force takes the walker in one decision to the velocity its steering
+    // asks for, capped at its top speed; with walkers coming the other way, that velocity
+    // turns right by the type's turn for one, two, or three and more of them, and keeps
+    // its speed; with keep_right off, no turn.
+    void reciprocalForceReachesThePreferredVelocityTurnedRightOfOncomingWalkers()
+    {
+        const float mass = 70.0f, decideDt = 1.0f / 24.0f;
+        const PlanarBody body{{0.0f, 0.0f}, {1.0f, 0.0f}, 0.3f, 1.4f};
+        float upward = 0.0f;  // the largest |y| of a force: a walker is never lifted
+        auto chosen = [&](glm::vec3 force, std::size_t oncoming, const std::array<glm::vec2, 3>& turns,
+                          const ReciprocalAvoidanceParams& params) {
+            const glm::vec3 f = reciprocalForce(body, mass, force, {}, oncoming, turns, decideDt, params);
+            upward = std::max(upward, std::fabs(f.y));
+            return body.velocity + glm::vec2(f.x, f.z) * (decideDt / mass);
+        };
+        const ReciprocalAvoidanceParams params;  // keep_right 0.5 rad
+        std::array<glm::vec2, 3> turns;  // as TypeSteering.cpp makes them
+        for (std::size_t n = 0; n < 3; ++n) {
+            const float angle = params.keepRightRad * float(n + 1) / 3.0f;
+            turns[n] = {std::cos(angle), std::sin(angle)};
+        }
+        // 0.2 m/s more along x: 1.2 m/s, within the top speed.
+        const glm::vec3 gentle(0.2f * mass / decideDt, 0.0f, 0.0f);
+        glm::vec2 v = chosen(gentle, 0, turns, params);
+        QVERIFY2(glm::distance(v, glm::vec2(1.2f, 0.0f)) < 1e-4f, qPrintable(QString("%1 %2").arg(v.x).arg(v.y)));
+        // Pushed far harder: capped at 1.4 m/s, still along x.
+        v = chosen(gentle * 10.0f, 0, turns, params);
+        QVERIFY(std::fabs(glm::length(v) - 1.4f) < 1e-4f && std::fabs(v.y) < 1e-5f);
+        // Walkers coming the other way: turned right (toward +y here, (-v.y, v.x) is right
+        // in the planar frame), more for more of them, the speed kept.
+        float last = 0.0f;
+        for (std::size_t oncoming = 1; oncoming <= 4; ++oncoming) {
+            v = chosen(gentle, oncoming, turns, params);
+            const float angle = std::atan2(v.y, v.x);
+            const float expected = params.keepRightRad * float(std::min<std::size_t>(oncoming, 3)) / 3.0f;
+            QVERIFY2(std::fabs(angle - expected) < 1e-4f,
+                     qPrintable(QString("%1 walkers: %2 rad").arg(oncoming).arg(angle)));
+            QVERIFY(std::fabs(glm::length(v) - 1.2f) < 1e-4f);
+            QVERIFY(angle >= last);
+            last = angle;
+        }
+        // keep_right off: no turn, whoever comes.
+        ReciprocalAvoidanceParams straight;
+        straight.keepRightRad = 0.0f;
+        v = chosen(gentle, 3, turns, straight);
+        QVERIFY(std::fabs(v.y) < 1e-5f);
+        QCOMPARE(upward, 0.0f);
+    }
+
+    // comesTheOtherWay: a walker ahead facing back at this one counts; one behind, one
+    // walking the same way, one crossing at right angles or one that has stopped does not.
+    void comesTheOtherWayCountsOnlyWalkersAheadFacingBack()
+    {
+        const glm::vec2 p(0.0f), f(1.0f, 0.0f);
+        QVERIFY(comesTheOtherWay(p, f, {2.0f, 0.5f}, {-1.0f, 0.0f}, false));
+        QVERIFY(!comesTheOtherWay(p, f, {2.0f, 0.5f}, {-1.0f, 0.0f}, true));   // stopped
+        QVERIFY(!comesTheOtherWay(p, f, {-2.0f, 0.0f}, {-1.0f, 0.0f}, false));  // behind
+        QVERIFY(!comesTheOtherWay(p, f, {2.0f, 0.0f}, {1.0f, 0.0f}, false));    // the same way
+        QVERIFY(!comesTheOtherWay(p, f, {2.0f, 0.0f}, {0.0f, 1.0f}, false));    // crossing
     }
 };
 
