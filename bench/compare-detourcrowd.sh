@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Runs DetourCrowd (../shared/peers, Debian's librecast-dev) and Throng on the same
 # `cross` scenario in one go, several times, and prints one JSON object with the medians
-# and the ratio. Same agents, same goals: throng-bench-cross writes the layout
+# and the ratio; and the ratio without Throng's count phase (its overlap and density
+# figures, which the peer works out outside its timing), from each run's phase times. Same agents, same goals: throng-bench-cross writes the layout
 # (BenchScenarios.h: concentric rings, antipodal goals) and the peer, patched with
 # bench/peers/detourcrowd-layout.patch (its --layout option), reads it.
 # Usage: bench/compare-detourcrowd.sh [AGENTS] [STEPS] [RUNS]; THREADS=N in the environment
@@ -32,25 +33,33 @@ fi
 "$cross" --write-layout "$layout" "$agents"
 
 threads=(); [ -n "${THREADS:-}" ] && threads=(--threads "$THREADS")
-throng=() detour=()
+throng=() uncounted=() detour=()
 for ((r = 0; r < runs; ++r)); do
   # Alternate the two so machine noise hits both alike.
   # Each run's output is read only after it ends: a reader starting up beside a
   # half-second run on two cores takes one of them from it.
   out=$("$cli" bench --scenario cross --agents "$agents" --steps "$steps" "${threads[@]}" --quiet)
   t=$(python3 -c 'import json,sys; print(json.load(sys.stdin)["agent_steps_per_second"])' <<< "$out")
+  # The same run less its count phase (phase_ms_per_step), which the peer does outside
+  # its timing: the two measured with equal work in that respect.
+  u=$(python3 -c 'import json,sys
+o = json.load(sys.stdin)
+print(o["agents"] * o["steps"] / (o["seconds"] - o["phase_ms_per_step"]["count"] * o["steps"] / 1000))' <<< "$out")
   out=$("$peer_bin" --layout "$layout" --steps "$steps")
   d=$(sed -n 's/.*agent_steps_per_s=\([0-9.e+]*\).*/\1/p' <<< "$out")
-  throng+=("$t") detour+=("$d")
+  throng+=("$t") uncounted+=("$u") detour+=("$d")
 done
-python3 - "$agents" "$steps" "${throng[*]}" "${detour[*]}" <<'PY'
+python3 - "$agents" "$steps" "${throng[*]}" "${detour[*]}" "${uncounted[*]}" <<'PY'
 import json, statistics, sys
 agents, steps = int(sys.argv[1]), int(sys.argv[2])
 t = [float(x) for x in sys.argv[3].split()]
 d = [float(x) for x in sys.argv[4].split()]
+u = [float(x) for x in sys.argv[5].split()]
 print(json.dumps({"bench": "cross_vs_detourcrowd", "agents": agents, "steps": steps, "runs": len(t),
                   "throng_agent_steps_per_second": statistics.median(t),
                   "detourcrowd_agent_steps_per_second": statistics.median(d),
                   "ratio": statistics.median(t) / statistics.median(d),
-                  "throng_runs": t, "detourcrowd_runs": d}))
+                  "throng_without_count_phase_agent_steps_per_second": statistics.median(u),
+                  "ratio_without_count_phase": statistics.median(u) / statistics.median(d),
+                  "throng_runs": t, "detourcrowd_runs": d, "throng_without_count_phase_runs": u}))
 PY
