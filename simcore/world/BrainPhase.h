@@ -11,6 +11,8 @@
 #include "simcore/world/AgentColumns.h"
 #include "simcore/world/FrameCache.h"
 
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 #include <glm/vec3.hpp>
 
 #include <algorithm>
@@ -59,20 +61,39 @@ public:
     glm::vec3 limited(const StepView& v, std::size_t i, glm::vec3 move, float aside, float seconds) const;
     // Multiplies the type's weight of behaviour b.
     float weight(std::size_t i, Behaviour b) const;
-    // Agent i's weights looked up once, for a caller that reads several of them (the
-    // walker kernel): weights(i).of(b) is weight(i, b).
-    struct Weights {
-        const float* const* columns = nullptr;  // per behaviour: its brain's column, or null
+    // Agent i's brain looked up once, for a caller that reads several of its answers (the
+    // walker kernel): row(i).weight(b) is weight(i, b), row(i).turnForce(...) is
+    // turnForce(i, ...), row(i).gathered() is gatheredNeighbours(i).
+    struct Row {
+        const float* const* weights = nullptr;  // per behaviour: its brain's column, or null
+        const float* turn = nullptr;            // degrees/s, or null
+        const float* speed = nullptr;           // m/s, or null
         std::int32_t local = -1;                // the agent's row in them; -1: no brain
-        float of(Behaviour b) const
+        bool gathers = false;                   // its senses gathered its neighbours this step
+
+        bool gathered() const { return local >= 0 && gathers; }
+        float weight(Behaviour b) const
         {
             if (local < 0)
                 return 1.0f;
-            const float* w = columns[std::size_t(b)];
+            const float* w = weights[std::size_t(b)];
             return w ? std::max(0.0f, w[local]) : 1.0f;
         }
+        // Turn (degrees/s, + = left) as a sideways force: the centripetal acceleration v·ω
+        // of a turn at that rate, toward the agent's left.
+        glm::vec3 turnForce(glm::vec3 forward, glm::vec3 velocity, float mass) const
+        {
+            if (local < 0 || !turn)
+                return glm::vec3(0.0f);
+            const float omega = glm::radians(turn[local]);
+            const glm::vec3 left(forward.z, 0.0f, -forward.x);
+            return left * (omega * std::max(glm::length(velocity), 0.1f) * mass);
+        }
     };
-    Weights weights(std::size_t i) const;
+    Row row(std::size_t i) const;
+    // capToSpeed with agent i's row looked up already.
+    void capToSpeed(const StepView& v, const Row& row, std::size_t i, glm::vec3 from, glm::vec3& position,
+                    glm::vec3& velocity) const;
     // The brain's turn (degrees/s) as a sideways force on agent i, of that heading,
     // velocity and mass at the step's start.
     glm::vec3 turnForce(std::size_t i, glm::vec3 forward, glm::vec3 velocity, float mass) const;

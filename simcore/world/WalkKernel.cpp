@@ -170,7 +170,8 @@ void WalkKernel::stepAgent(const StepView& view, const BrainPhase& brains, Agent
     const float guess2 = view.warmSearch ? lastNearestBound(agents, i, p, perception2) : perception2;
     // A brain's sense phase may have found them this step (gatherNeighbours), as the general
     // path then takes them (MovePhase.cpp).
-    const bool gathered = kBrain && brains.gatheredNeighbours(i);
+    const BrainPhase::Row brain = kBrain ? brains.row(i) : BrainPhase::Row{};  // looked up once
+    const bool gathered = kBrain && brain.gathered();
     if (!gathered) {
         search(guess2, false);
         finishNearest(best, guess2, perception2, kWatch, search);
@@ -238,8 +239,7 @@ void WalkKernel::stepAgent(const StepView& view, const BrainPhase& brains, Agent
     const bool hasGoal = agents.goal[i] >= 0;
     WeightedBlend blend;  // blendWeighted's sum (SteeringCombination.h), request by request
     auto add = [&](glm::vec3 force, float weight) { blend.add(force, weight); };
-    const BrainPhase::Weights weights = kBrain ? brains.weights(i) : BrainPhase::Weights{};
-    auto brainWeight = [&](Behaviour b) { return kBrain ? weights.of(b) : 1.0f; };
+    auto brainWeight = [&](Behaviour b) { return kBrain ? brain.weight(b) : 1.0f; };
     // Where seek and arrival aim: the goal's spot for this agent, or its navigation target (navGoal).
     const glm::vec3 goal = !hasGoal ? p + fwd
                            : view.nav.active && view.nav.hasTarget[i]
@@ -310,7 +310,7 @@ void WalkKernel::stepAgent(const StepView& view, const BrainPhase& brains, Agent
         add(-v * (t.mass / kStandStillResponseS), 1.0f);
     // The brain's turn, as the general path adds it (MovePhase.cpp); its speed cap reads the
     // same old state below.
-    const glm::vec3 turn = kBrain ? brains.turnForce(i, fwd, v, t.mass) : glm::vec3(0.0f);
+    const glm::vec3 turn = kBrain ? brain.turnForce(fwd, v, t.mass) : glm::vec3(0.0f);
     glm::vec3 force = blend.total(t.maxForce) + turn;
     if (oncomingInTheWayAhead)
         force += keepRightForce(fwd, t.maxForce, w.keepRight);
@@ -338,7 +338,7 @@ void WalkKernel::stepAgent(const StepView& view, const BrainPhase& brains, Agent
     // The brain's speed caps the step (BrainPhase::capToSpeed), after the frame is set.
     if constexpr (kBrain) {
         glm::vec3 capped = move.velocity;  // the position follows it; the velocity is the move's (below)
-        brains.capToSpeed(view, i, p, pos, capped);
+        brains.capToSpeed(view, brain, i, p, pos, capped);
     }
     // Constrain: out of walls and obstacles, never through a wall (constrain, Constraints.h).
     if (w.constrained)

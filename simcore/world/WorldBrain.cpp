@@ -255,7 +255,15 @@ void BrainPhase::run(const StepView& v, AgentColumns& agents, WorldTraffic& traf
 
 bool BrainPhase::gatheredNeighbours(std::size_t i) const
 {
-    return m_brains && m_brains->local[i] >= 0 && m_brains->types[std::size_t(m_brains->batch[i])].gathersNeighbours;
+    return row(i).gathered();
+}
+
+BrainPhase::Row BrainPhase::row(std::size_t i) const
+{
+    if (!m_brains || m_brains->local[i] < 0)
+        return {};
+    const detail::TypeBrain& tb = m_brains->types[std::size_t(m_brains->batch[i])];
+    return {tb.weight.data(), tb.turn, tb.speed, m_brains->local[i], tb.gathersNeighbours};
 }
 
 float BrainPhase::speedCap(const StepView& v, std::size_t i) const
@@ -278,9 +286,17 @@ float BrainPhase::speedCap(const StepView& v, std::size_t i) const
 void BrainPhase::capToSpeed(const StepView& v, std::size_t i, glm::vec3 from, glm::vec3& position,
                             glm::vec3& velocity) const
 {
-    if (!m_brains || m_brains->local[i] < 0)
+    capToSpeed(v, row(i), i, from, position, velocity);
+}
+
+void BrainPhase::capToSpeed(const StepView& v, const Row& row, std::size_t i, glm::vec3 from, glm::vec3& position,
+                            glm::vec3& velocity) const
+{
+    if (row.local < 0)
         return;
-    const float cap = speedCap(v, i);
+    // speedCap, from the row.
+    const float maxSpeed = v.agents.maxSpeed[i];
+    const float cap = v.traffic.isDriven(i) || !row.speed ? maxSpeed : std::clamp(row.speed[row.local], 0.0f, maxSpeed);
     if (glm::length(velocity) <= cap)
         return;
     velocity = limited(v, i, velocity, std::max(cap, std::min(kYieldSpeedMps, v.agents.maxSpeed[i])), 1.0f);
@@ -320,28 +336,12 @@ glm::vec3 BrainPhase::limited(const StepView& view, std::size_t i, glm::vec3 v, 
 
 float BrainPhase::weight(std::size_t i, Behaviour b) const
 {
-    return weights(i).of(b);
+    return row(i).weight(b);
 }
 
-BrainPhase::Weights BrainPhase::weights(std::size_t i) const
-{
-    if (!m_brains || m_brains->local[i] < 0)
-        return {};
-    return {m_brains->types[std::size_t(m_brains->batch[i])].weight.data(), m_brains->local[i]};
-}
-
-// Turn (degrees/s, + = left) as a sideways force: the centripetal acceleration v·ω of a
-// turn at that rate, toward the agent's left.
 glm::vec3 BrainPhase::turnForce(std::size_t i, glm::vec3 forward, glm::vec3 velocity, float mass) const
 {
-    if (!m_brains || m_brains->local[i] < 0)
-        return glm::vec3(0.0f);
-    const detail::TypeBrain& tb = m_brains->types[std::size_t(m_brains->batch[i])];
-    if (!tb.turn)
-        return glm::vec3(0.0f);
-    const float omega = glm::radians(tb.turn[m_brains->local[i]]);
-    const glm::vec3 left(forward.z, 0.0f, -forward.x);
-    return left * (omega * std::max(glm::length(velocity), 0.1f) * mass);
+    return row(i).turnForce(forward, velocity, mass);
 }
 
 Clip BrainPhase::clip(std::size_t i, Clip bySpeed) const
