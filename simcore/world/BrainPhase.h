@@ -113,6 +113,8 @@ public:
     const detail::WorldBrains* runtime() const { return m_brains.get(); }
 
 private:
+    // speedCap with agent i's row looked up already.
+    float speedCap(const StepView& v, const Row& row, std::size_t i) const;
     // Fills the sensor columns of one batch of agents (WorldBrainSense.cpp).
     void sense(const StepView& v, AgentColumns& agents, detail::TypeBrain& brain) const;
 

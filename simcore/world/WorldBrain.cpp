@@ -268,13 +268,15 @@ BrainPhase::Row BrainPhase::row(std::size_t i) const
 
 float BrainPhase::speedCap(const StepView& v, std::size_t i) const
 {
+    return speedCap(v, row(i), i);
+}
+
+float BrainPhase::speedCap(const StepView& v, const Row& row, std::size_t i) const
+{
     // A driven vehicle's brain speed went to the TrafficSystem, which moves it.
-    if (!m_brains || m_brains->local[i] < 0 || v.traffic.isDriven(i))
+    if (row.local < 0 || !row.speed || v.traffic.isDriven(i))
         return v.agents.maxSpeed[i];
-    const detail::TypeBrain& tb = m_brains->types[std::size_t(m_brains->batch[i])];
-    if (!tb.speed)
-        return v.agents.maxSpeed[i];
-    return std::clamp(tb.speed[m_brains->local[i]], 0.0f, v.agents.maxSpeed[i]);
+    return std::clamp(row.speed[row.local], 0.0f, v.agents.maxSpeed[i]);
 }
 
 // The brain's speed is a cap applied after steering, not a lower max speed for the
@@ -294,9 +296,7 @@ void BrainPhase::capToSpeed(const StepView& v, const Row& row, std::size_t i, gl
 {
     if (row.local < 0)
         return;
-    // speedCap, from the row.
-    const float maxSpeed = v.agents.maxSpeed[i];
-    const float cap = v.traffic.isDriven(i) || !row.speed ? maxSpeed : std::clamp(row.speed[row.local], 0.0f, maxSpeed);
+    const float cap = speedCap(v, row, i);
     if (glm::length(velocity) <= cap)
         return;
     velocity = limited(v, i, velocity, std::max(cap, std::min(kYieldSpeedMps, v.agents.maxSpeed[i])), 1.0f);
