@@ -56,7 +56,6 @@ public:
             sum += ns;
         return double(sum) * 1e-9;
     }
-    void reset() { *this = PhaseTimes{}; }
 
 private:
     std::array<std::uint64_t, kStepPhaseCount> m_nanoseconds{};
