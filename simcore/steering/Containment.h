@@ -48,12 +48,20 @@ struct ContainmentBehaviour {
     static void request(const Step& step, const ContainmentParams& p, Emit&& emit)
     {
         const SteeringAgent& self = step.self;
-        const float probe = p.probeMinM + p.probeLookaheadS * self.speed() + self.radius;
-        const glm::vec3 lo = self.position - step.bounds().min, hi = step.bounds().max - self.position;
-        const float nearest = step.flying ? std::min({lo.x, lo.y, lo.z, hi.x, hi.y, hi.z})
-                                          : std::min({lo.x, lo.z, hi.x, hi.z});  // walkers ignore height
-        if (nearest < probe)
+        if (probesReach(self.position, self.speed(), self.radius, step.bounds(), p, step.flying))
             emit(stayInside(self, step.bounds(), p));
+    }
+    // Whether an agent at `position`, moving at `speed`, lies nearer a face of the bounds
+    // than its probe and body reach (else it asks nothing: every probe is inside). The
+    // walker kernel asks the same.
+    static bool probesReach(glm::vec3 position, float speed, float radius, const WalkableBox& bounds,
+                            const ContainmentParams& p, bool flying)
+    {
+        const float probe = p.probeMinM + p.probeLookaheadS * speed + radius;
+        const glm::vec3 lo = position - bounds.min, hi = bounds.max - position;
+        const float nearest = flying ? std::min({lo.x, lo.y, lo.z, hi.x, hi.y, hi.z})
+                                     : std::min({lo.x, lo.z, hi.x, hi.z});  // walkers ignore height
+        return nearest < probe;
     }
 };
 

@@ -48,10 +48,8 @@ glm::vec3 separate(const SteeringAgent& agent, std::span<const Neighbour> neighb
         const glm::vec3 rel = p - finiteOrZero(n.position);
         const float d = glm::length(rel);
         const float contact = nonNegative(agent.radius) + nonNegative(n.radius);
-        if (!(d < contact + range))
-            continue;
-        push += behave::separationPush(rel, d, contact, range, maxForce, damping, v - finiteOrZero(n.velocity),
-                                       [&] { return separationAxis(agent.id, n.id); }, floor);
+        behave::addSeparation(push, floor, rel, d, contact, range, maxForce, damping, v - finiteOrZero(n.velocity),
+                              [&] { return separationAxis(agent.id, n.id); });
     }
     return push;
 }

@@ -30,12 +30,7 @@ glm::vec3 flee(const SteeringAgent& agent, glm::vec3 threat, const FleeParams& p
 
 glm::vec3 arrivalVelocity(const SteeringAgent& agent, glm::vec3 target, float slowingDistanceM, float toleranceM)
 {
-    const glm::vec3 offset = finiteOrZero(target - agent.position);
-    const float dist = glm::length(offset);
-    if (dist <= nonNegative(toleranceM) || dist <= kTiny)
-        return glm::vec3(0.0f);
-    const float slowing = std::max(nonNegative(slowingDistanceM), kTiny);
-    return behave::arrivalVelocity(offset, dist, nonNegative(agent.maxSpeed), slowing);
+    return behave::arrivalDesired(target - agent.position, agent.maxSpeed, slowingDistanceM, toleranceM);
 }
 
 glm::vec3 arrive(const SteeringAgent& agent, glm::vec3 target, const ArrivalParams& params)

@@ -97,9 +97,11 @@ struct ArrivalBehaviour {
             return;
         }
         ArrivalParams through = p;
-        through.slowingDistanceM = 1e-6f;
+        through.slowingDistanceM = kThroughSlowingM;
         emit(arrive(step.self, step.goal, through));
     }
+    // The slowing distance through an exit: none to speak of (the walker kernel takes it too).
+    static constexpr float kThroughSlowingM = 1e-6f;
 };
 
 struct SeekBehaviour {

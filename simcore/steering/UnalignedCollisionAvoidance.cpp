@@ -14,17 +14,6 @@ namespace throng::sim {
 
 using namespace detail;
 
-namespace {
-
-struct Approach {
-    float timeS = -1.0f;  // < 0: none
-    std::uint32_t id = 0;
-    glm::vec3 offsetAtApproach{0.0f};  // threat minus agent at the time of nearest approach
-    glm::vec3 forward{0.0f};
-};
-
-}  // namespace
-
 glm::vec3 avoidUnalignedCollisions(const SteeringAgent& agent, std::span<const Neighbour> neighbours,
                                    const UnalignedAvoidanceParams& params)
 {
@@ -32,32 +21,19 @@ glm::vec3 avoidUnalignedCollisions(const SteeringAgent& agent, std::span<const N
     if (!(horizon > kTiny))
         return glm::vec3(0.0f);
     const glm::vec3 p = finiteOrZero(agent.position), v = finiteOrZero(agent.velocity);
-    Approach threat;
+    behave::SoonestApproach threat;
     const float margin = nonNegative(params.marginM);
-    for (const Neighbour& n : neighbours) {
-        const float clear = nonNegative(agent.radius) + nonNegative(n.radius) + margin;
-        float t;
-        glm::vec3 offset;
-        if (!behave::approachesWithin(finiteOrZero(n.position) - p, finiteOrZero(n.velocity) - v, horizon, clear, t,
-                                      offset))
-            continue;
-        if (threat.timeS < 0.0f || t < threat.timeS || (t == threat.timeS && n.id < threat.id)) {
-            threat.timeS = t;
-            threat.id = n.id;
-            threat.offsetAtApproach = offset;
-            threat.forward = normalizeOr(n.velocity, normalizeOr(n.forward, glm::vec3(0.0f)));
-        }
+    for (std::size_t k = 0; k < neighbours.size(); ++k) {
+        const Neighbour& n = neighbours[k];
+        threat.consider(finiteOrZero(n.position) - p, finiteOrZero(n.velocity) - v, horizon,
+                        nonNegative(agent.radius) + nonNegative(n.radius) + margin, n.id, std::uint32_t(k));
     }
-    if (threat.timeS < 0.0f)
+    if (!threat.found())
         return glm::vec3(0.0f);
-
-    const glm::vec3 h = heading(agent);
-    const glm::vec3 right = normalizeOr(glm::cross(h, normalizeOr(agent.up, kWorldUp)), rightOfForward(h));
-    const bool headOn = glm::dot(h, threat.forward) < params.headOnCosine;
-    const float brake = std::clamp(finiteOr(params.brakeFraction, 0.0f), 0.0f, 1.0f);
-    return behave::unalignedAvoidance(h, right, threat.offsetAtApproach, threat.timeS, horizon, headOn, brake,
-                                      std::sqrt(1.0f - brake * brake), v != glm::vec3(0.0f),
-                                      nonNegative(agent.maxForce));
+    const Neighbour& n = neighbours[threat.who];
+    return behave::avoidSoonest(agent.velocity, agent.forward, agent.up, threat, n.velocity, n.forward, horizon,
+                                params.headOnCosine, std::clamp(finiteOr(params.brakeFraction, 0.0f), 0.0f, 1.0f),
+                                nonNegative(agent.maxForce));
 }
 
 }  // namespace throng::sim

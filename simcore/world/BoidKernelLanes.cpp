@@ -24,7 +24,6 @@
 #include "simcore/steering/detail/SteeringConstants.h"
 #include "simcore/steering/detail/BehaviourMath.h"
 #include "simcore/steering/detail/SteeringMath.h"
-#include "simcore/base/Rng.h"
 #include "simcore/base/Lanes.h"
 #include "simcore/world/detail/StepConstants.h"
 
@@ -148,10 +147,7 @@ template <class F>
         prevTarget[l] = m_agents.wander[i].target;
         jitter[l] = glm::vec3(0.0f);
         if (wanders[l]) {
-            const std::uint64_t key = rngKey(m_seed, m_agents.info[i].id, m_clock.step);
-            jitter[l] = glm::vec3(rngRangeOf(key, kWanderX, -1.0f, 1.0f), rngRangeOf(key, kWanderY, -1.0f, 1.0f),
-                                  rngRangeOf(key, kWanderZ, -1.0f, 1.0f)) *
-                        b.jitterM;
+            jitter[l] = wanderDraws(m_seed, m_agents.info[i].id, m_clock.step) * b.jitterM;
         }
     }
     // A type's parameter in each lane (one load when the lanes share their type, as a

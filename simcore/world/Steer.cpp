@@ -131,7 +131,7 @@ glm::vec3 steer(const StepView& v, const BrainPhase& brains, std::size_t i, cons
     const bool goesSomewhere =
         hasGoal || v.agents.path[i] >= 0 || leaderIndex >= 0 || leadsSomewhere(BehaviourList{}, step, s);
     if (!goesSomewhere && !s.vehicle.flying)
-        requests.add(-self.velocity * (self.mass / kStandStillResponseS), 1.0f);
+        requests.add(standStillForce(self.velocity, self.mass), 1.0f);
     return s.priority ? allocateByPriority(requests, self.maxForce) : blendWeighted(requests, self.maxForce);
 }
 

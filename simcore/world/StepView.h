@@ -42,6 +42,12 @@ struct StepView {
 
     const TypeParams& type(std::size_t i) const { return types.params[agents.info[i].typeIndex]; }
     const TypeCollision& collision(std::size_t i) const { return types.collision[agents.info[i].typeIndex]; }
+    // Agent i's goal (it has one) is an exit walked through, not stopped at: no navigation
+    // target leads there (arrival, TargetBehaviours.h; the walker kernel).
+    bool walksThroughGoal(std::size_t i) const
+    {
+        return set.goals[std::size_t(agents.goal[i])].exit && !(nav.active && nav.hasTarget[i]);
+    }
     // A traffic light's state now: 0 green, 1 yellow, 2 red.
     int lightState(std::size_t light) const;
 };

@@ -25,7 +25,6 @@
 #include "simcore/steering/detail/GroundMove.h"
 #include "simcore/steering/detail/SteeringMath.h"
 #include "simcore/steering/detail/WeightedBlend.h"
-#include "simcore/base/Rng.h"
 #include "simcore/world/detail/StepConstants.h"
 
 #include <glm/geometric.hpp>
@@ -106,9 +105,6 @@ void WalkKernel::build(const AgentTypes& types, const StaticSet& set, float dt, 
         w.horizonS = nonNegative(s.unaligned.horizonS);
         w.marginM = nonNegative(s.unaligned.marginM);
         w.brake = std::clamp(finiteOr(s.unaligned.brakeFraction, 0.0f), 0.0f, 1.0f);
-        w.lateral = std::sqrt(1.0f - w.brake * w.brake);
-        w.toleranceM = nonNegative(s.arrival.toleranceM);
-        w.slowingM = std::max(nonNegative(s.arrival.slowingDistanceM), kTiny);
         w.gainArrival = responseGain(mass, s.arrival.responseTimeS);
         w.gainSeek = responseGain(mass, s.seek.responseTimeS);
         w.dtOverMass = dt / mass;
@@ -187,10 +183,7 @@ void WalkKernel::stepAgent(const StepView& view, const BrainPhase& brains, Agent
     const bool unaligned = w.wUnaligned > 0.0f && horizon > kTiny;
     glm::vec3 push(0.0f);
     behave::SeparationFloor floor;
-    float threatT = -1.0f;
-    AgentId threatId = 0;
-    std::uint32_t threatJ = 0;
-    glm::vec3 threatOffset(0.0f);
+    behave::SoonestApproach threat;  // its `who`: the neighbour's index
     UninitialisedArray<PlanarNeighbour, kMaxNeighbours> others;  // the first `count` are written, and read
     std::size_t oncoming = 0;
     bool oncomingInTheWayAhead = false;  // keeping right (KeepRight.h), as the general path (MovePhase.cpp)
@@ -207,23 +200,11 @@ void WalkKernel::stepAgent(const StepView& view, const BrainPhase& brains, Agent
             const glm::vec3 offset = q - p;
             const float d = std::sqrt(gathered ? glm::dot(offset, offset) + 0.0f
                                                : std::bit_cast<float>(std::uint32_t(best.keys[n] >> 32)));
-            if (d < contact + range)
-                push += behave::separationPush(p - q, d, contact, range, maxForce, w.damping, v - vj,
-                                               [&] { return separationAxis(id, agents.info[j].id); }, floor);
+            behave::addSeparation(push, floor, p - q, d, contact, range, maxForce, w.damping, v - vj,
+                                  [&] { return separationAxis(id, agents.info[j].id); });
         }
-        if (unaligned) {
-            float tc;
-            glm::vec3 offset;
-            if (behave::approachesWithin(q - p, vj - v, horizon, r + nonNegative(rj) + w.marginM, tc, offset)) {
-                const AgentId other = agents.info[j].id;
-                if (threatT < 0.0f || tc < threatT || (tc == threatT && other < threatId)) {
-                    threatT = tc;
-                    threatId = other;
-                    threatJ = j;
-                    threatOffset = offset;
-                }
-            }
-        }
+        if (unaligned)
+            threat.consider(q - p, vj - v, horizon, r + nonNegative(rj) + w.marginM, agents.info[j].id, j);
         if (w.keepRight > 0.0f && !oncomingInTheWayAhead)
             oncomingInTheWayAhead = oncomingInTheWay(p, fwd, radius, q, agents.fwd[j], vj, rj);
         if (w.reciprocal) {
@@ -246,13 +227,10 @@ void WalkKernel::stepAgent(const StepView& view, const BrainPhase& brains, Agent
                                ? glm::vec3(view.nav.target[i].x, p.y, view.nav.target[i].y)
                                : glm::vec3(agents.goalSpot[i].x, p.y, agents.goalSpot[i].y);
     const float speedNow = glm::length(v);
-    if (w.wContainment > 0.0f) {
-        const float probe = s.containment.probeMinM + s.containment.probeLookaheadS * speedNow + radius;
-        const glm::vec3 lo = p - view.set.bounds.min, hi = view.set.bounds.max - p;
-        if (std::min({lo.x, lo.z, hi.x, hi.z}) < probe)
-            add(stayInside(steeringAgent(agents, view.types, i), view.set.bounds, s.containment),
-                w.wContainment * brainWeight(Behaviour::Containment));
-    }
+    if (w.wContainment > 0.0f &&
+        ContainmentBehaviour::probesReach(p, speedNow, radius, view.set.bounds, s.containment, false))
+        add(stayInside(steeringAgent(agents, view.types, i), view.set.bounds, s.containment),
+            w.wContainment * brainWeight(Behaviour::Containment));
     if (w.aroundStatics) {
         // Wall following and obstacle avoidance: steer's own requests (Steer.cpp).
         SteeringRequestList around;
@@ -263,33 +241,17 @@ void WalkKernel::stepAgent(const StepView& view, const BrainPhase& brains, Agent
     if (w.wSeparation > 0.0f)
         add(push, w.wSeparation * brainWeight(Behaviour::Separation));
     if (w.wUnaligned > 0.0f) {
-        glm::vec3 force(0.0f);
-        if (threatT >= 0.0f) {
-            // heading(agent), the agent's right, and the side and brake of the avoidance.
-            const glm::vec3 h = speedNow > kTiny && speedNow < kInfinity
-                                    ? v * (1.0f / speedNow)
-                                    : normalizeOr(fwd, glm::vec3(0.0f, 0.0f, 1.0f));
-            const glm::vec3 right =
-                normalizeOr(glm::cross(h, normalizeOr(agents.up[i], kWorldUp)), rightOfForward(h));
-            const glm::vec3 threatForward =
-                normalizeOr(agents.vel[threatJ], normalizeOr(agents.fwd[threatJ], glm::vec3(0.0f)));
-            const bool headOn = glm::dot(h, threatForward) < s.unaligned.headOnCosine;
-            force = behave::unalignedAvoidance(h, right, threatOffset, threatT, horizon, headOn, w.brake, w.lateral,
-                                               v != glm::vec3(0.0f), maxForce);
-        }
+        const glm::vec3 force = threat.found() ? behave::avoidSoonest(v, fwd, agents.up[i], threat,
+                                                                      agents.vel[threat.who], agents.fwd[threat.who],
+                                                                      horizon, s.unaligned.headOnCosine, w.brake,
+                                                                      maxForce)
+                                               : glm::vec3(0.0f);
         add(force, w.wUnaligned * brainWeight(Behaviour::UnalignedCollisionAvoidance));
     }
     if (hasGoal && w.wArrival > 0.0f) {
-        // Arrival: the desired speed falls linearly to zero at the goal (arrivalVelocity).
-        const glm::vec3 offset = finiteOrZero(goal - p);
-        const float dist = glm::length(offset);
-        glm::vec3 desired(0.0f);
-        // Through an exit at full speed: it is walked through, not stopped at (steer, Steer.h).
-        const bool throughExit =
-            view.set.goals[std::size_t(agents.goal[i])].exit && !(view.nav.active && view.nav.hasTarget[i]);
-        const float slowing = throughExit ? 1e-6f : w.slowingM;
-        if (!(dist <= w.toleranceM || dist <= kTiny))
-            desired = behave::arrivalVelocity(offset, dist, nonNegative(maxSpeed), slowing);
+        // Arrival (ArrivalBehaviour): through an exit at full speed, it is walked through.
+        const float slowing = view.walksThroughGoal(i) ? ArrivalBehaviour::kThroughSlowingM : s.arrival.slowingDistanceM;
+        const glm::vec3 desired = behave::arrivalDesired(goal - p, maxSpeed, slowing, s.arrival.toleranceM);
         add(towardsVelocity(v, desired, w.gainArrival, maxForce), w.wArrival * brainWeight(Behaviour::Arrival));
     }
     if (hasGoal && w.wSeek > 0.0f)
@@ -298,16 +260,14 @@ void WalkKernel::stepAgent(const StepView& view, const BrainPhase& brains, Agent
             w.wSeek * brainWeight(Behaviour::Seek));
     WanderState wanderNext = agents.wander[i];
     if (w.wWander > 0.0f) {
-        const std::uint64_t key = rngKey(view.seed, id, view.clock.step);
-        const glm::vec3 random(rngRangeOf(key, kWanderX, -1.0f, 1.0f), rngRangeOf(key, kWanderY, -1.0f, 1.0f),
-                               rngRangeOf(key, kWanderZ, -1.0f, 1.0f));
-        const WanderResult result = wander(steeringAgent(agents, view.types, i), agents.wander[i], random, s.wander);
+        const WanderResult result = wander(steeringAgent(agents, view.types, i), agents.wander[i],
+                                           wanderDraws(view.seed, id, view.clock.step), s.wander);
         wanderNext = result.state;
         add(result.force, w.wWander * brainWeight(Behaviour::Wander));
     }
     // A walker with nowhere to go comes to rest (as in steer, Steer.h).
     if (!hasGoal && agents.leader[i] < 0 && !(w.wWander > 0.0f))
-        add(-v * (t.mass / kStandStillResponseS), 1.0f);
+        add(standStillForce(v, t.mass), 1.0f);
     // The brain's turn, as the general path adds it (MovePhase.cpp); its speed cap reads the
     // same old state below.
     const glm::vec3 turn = kBrain ? brain.turnForce(fwd, v, t.mass) : glm::vec3(0.0f);

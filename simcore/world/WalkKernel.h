@@ -41,8 +41,8 @@ private:
         float keepRight;     // as AgentTypes::keepRight
         bool aroundStatics;  // wall following or obstacle avoidance, and walls or obstacles to steer round
         bool constrained;    // walls or circles to hold the body out of (constrain, Constraints.h)
-        float maxForce, range, damping, horizonS, marginM, brake, lateral;
-        float toleranceM, slowingM, gainArrival, gainSeek, dtOverMass;
+        float maxForce, range, damping, horizonS, marginM, brake;
+        float gainArrival, gainSeek, dtOverMass;
     };
     std::vector<std::uint8_t> m_runs;  // per type
     std::vector<WalkType> m_walkTypes;

@@ -410,6 +410,56 @@ private slots:
         QVERIFY2(doneAt > 0, "the two never both reached their goals");
         QVERIFY2(minDistance > a.radius + b.radius, qPrintable(QString("bodies overlapped: %1 m").arg(minDistance)));
     }
+
+    // Unaligned collision avoidance dodges the soonest threat, and of two that come at the
+    // same moment the one of the lower id, whatever the order the neighbours come in (the
+    // walker kernel meets them in another order than the general path, and takes the same
+    // choice, behave::SoonestApproach). Two walkers come head on, 0.2 m to the agent's left
+    // and right: it steps away from the one it dodges, so the force's side tells which.
+    void unalignedDodgesTheSoonestThreatTiesById()
+    {
+        const SteeringAgent a = walker({0, 0, 0}, {0, 0, 1.4f}, 1);
+        auto oncoming = [](float x, float z, std::uint32_t id) {
+            return Neighbour{{x, 0.0f, z}, {0.0f, 0.0f, -1.4f}, {0.0f, 0.0f, -1.0f}, 0.3f, id};
+        };
+        // The agent's right is -x (heading +z): dodging the walker on its left (x < 0) is a
+        // push to +x, dodging the one on its right a push to -x.
+        auto sideOf = [&](std::vector<Neighbour> near) {
+            const glm::vec3 f = avoidUnalignedCollisions(a, near);
+            return f.x > 0.0f ? +1 : f.x < 0.0f ? -1 : 0;
+        };
+        const Neighbour left7 = oncoming(-0.2f, 4.0f, 7), right3 = oncoming(0.2f, 4.0f, 3);
+        QCOMPARE(sideOf({left7, right3}), -1);  // the same moment: id 3, on the right
+        QCOMPARE(sideOf({right3, left7}), -1);
+        const Neighbour left2 = oncoming(-0.2f, 4.0f, 2);
+        QCOMPARE(sideOf({left2, right3}), +1);  // now the left one has the lower id
+        QCOMPARE(sideOf({right3, left2}), +1);
+        const Neighbour left9Sooner = oncoming(-0.2f, 3.0f, 9);
+        QCOMPARE(sideOf({right3, left9Sooner}), +1);  // sooner beats a lower id
+        QCOMPARE(sideOf({left9Sooner, right3}), +1);
+        // One that passes wide of the body and margin is no threat.
+        QCOMPARE(sideOf({oncoming(2.0f, 4.0f, 1)}), 0);
+    }
+
+    // Containment asks only where a probe can reach the bounds: from 0.5 m plus 1 m per m/s
+    // plus the body (0.3 m) from a face. The walker kernel takes the same test.
+    void containmentAsksOnlyWhereAProbeReachesTheBounds()
+    {
+        const WalkableBox box{{-10.0f, 0.0f, -10.0f}, {10.0f, 5.0f, 10.0f}};
+        const ContainmentParams p;
+        QVERIFY(!ContainmentBehaviour::probesReach({0, 0, 0}, 1.4f, 0.3f, box, p, false));
+        QVERIFY(!ContainmentBehaviour::probesReach({7.7f, 0, 0}, 1.4f, 0.3f, box, p, false));  // 2.3 m from the face
+        QVERIFY(ContainmentBehaviour::probesReach({7.9f, 0, 0}, 1.4f, 0.3f, box, p, false));   // 2.1 m
+        QVERIFY(!ContainmentBehaviour::probesReach({9.0f, 0, 0}, 0.0f, 0.3f, box, p, false));  // standing: 0.8 m
+        QVERIFY(ContainmentBehaviour::probesReach({0, 0, -9.5f}, 0.0f, 0.3f, box, p, false));
+        // A walker ignores the height; a flier 0.5 m under the ceiling reaches it.
+        QVERIFY(!ContainmentBehaviour::probesReach({0, 4.5f, 0}, 0.0f, 0.3f, box, p, false));
+        QVERIFY(ContainmentBehaviour::probesReach({0, 4.5f, 0}, 0.0f, 0.3f, box, p, true));
+        // And where it asks, a walker probing past the face is pushed back in.
+        SteeringAgent w = walker({9.0f, 0, 0}, {1.4f, 0, 0}, 1);
+        w.forward = {1, 0, 0};
+        QVERIFY(stayInside(w, box, p).x < 0.0f);
+    }
 };
 
 THRONG_REGISTER_TEST(TestSteeringAvoidance)

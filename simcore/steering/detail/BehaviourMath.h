@@ -26,7 +26,9 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <type_traits>
 
 namespace throng::sim::behave {
@@ -123,6 +125,20 @@ template <class F, class V3 = Vec3Of<F>>
 [[gnu::always_inline]] inline V3 arrivalVelocity(V3 offset, F dist, F maxSpeed, F slowingM)
 {
     return offset * (maxSpeed * minOf(splat<F>(1.0f), dist / slowingM) / dist);
+}
+
+// Arrival's desired velocity for one agent, `offset` = target - position: zero within the
+// tolerance (or kTiny) of the target, else arrivalVelocity with the limits made usable
+// (SteeringMath.h). TargetBehaviours.cpp's arrivalVelocity and the walker kernel call it.
+[[gnu::always_inline]] inline glm::vec3 arrivalDesired(glm::vec3 offset, float maxSpeed, float slowingM,
+                                                       float toleranceM)
+{
+    offset = detail::finiteOrZero(offset);
+    const float dist = glm::length(offset);
+    if (dist <= detail::nonNegative(toleranceM) || dist <= detail::kTiny)
+        return glm::vec3(0.0f);
+    return arrivalVelocity(offset, dist, detail::nonNegative(maxSpeed),
+                           std::max(detail::nonNegative(slowingM), detail::kTiny));
 }
 
 // Pursuit (Reynolds 1999): seek where the quarry will be after distance / max speed,
@@ -242,6 +258,19 @@ template <class F, class V3 = Vec3Of<F>, class Axis>
     return away * (fade * (maxForce * w - damping * opening));
 }
 
+// Separation's push from one neighbour, added to `push` where the bodies' gap (`d` apart,
+// `contact` = the sum of their radii) is within range; `rel` = the agent - the neighbour,
+// relVelocity likewise. One agent at a time, as separate (FlockingBehaviours.cpp) and the
+// walker kernel sum it.
+template <class Axis>
+[[gnu::always_inline]] inline void addSeparation(glm::vec3& push, SeparationFloor& floor, glm::vec3 rel, float d,
+                                                 float contact, float rangeM, float maxForce, float damping,
+                                                 glm::vec3 relVelocity, Axis&& axis)
+{
+    if (d < contact + rangeM)
+        push += separationPush(rel, d, contact, rangeM, maxForce, damping, relVelocity, axis, floor);
+}
+
 // --- Unaligned collision avoidance ------------------------------------------------------
 // (Reynolds 1999.) One agent at a time: no lane kernel runs it yet.
 
@@ -261,6 +290,33 @@ template <class F, class V3 = Vec3Of<F>, class Axis>
     return glm::length(offset) < clear;
 }
 
+// The soonest threat among the neighbours (the earliest nearest approach, ties by id),
+// considered one neighbour at a time. `who` is the caller's name for the neighbour (its
+// place in a list, or its index), so the caller can read the threat's motion afterwards.
+struct SoonestApproach {
+    float timeS = -1.0f;  // < 0: none yet
+    std::uint32_t id = 0;
+    std::uint32_t who = 0;
+    glm::vec3 offset{0.0f};  // the threat minus the agent at the time of nearest approach
+
+    // The neighbour `dp` away, at `dv` relative, of radius clear - the agent's radius - the margin.
+    [[gnu::always_inline]] void consider(glm::vec3 dp, glm::vec3 dv, float horizonS, float clear, std::uint32_t idOf,
+                                         std::uint32_t whoOf)
+    {
+        float t;
+        glm::vec3 at;
+        if (!approachesWithin(dp, dv, horizonS, clear, t, at))
+            return;
+        if (timeS < 0.0f || t < timeS || (t == timeS && idOf < id)) {
+            timeS = t;
+            id = idOf;
+            who = whoOf;
+            offset = at;
+        }
+    }
+    bool found() const { return timeS >= 0.0f; }
+};
+
 // The force that avoids the soonest threat: to the side away from where it will be (right
 // when it comes dead ahead), harder the sooner it comes. Head on, the agent also brakes
 // with `brake` of the budget (when moving along its heading h) and steers with `lateral`
@@ -275,6 +331,30 @@ template <class F, class V3 = Vec3Of<F>, class Axis>
     const glm::vec3 lateralPart = right * (sideSign * (headOn ? lateral : 1.0f));
     const glm::vec3 brakePart = moving ? -h * braking : glm::vec3(0.0f);
     return (lateralPart + brakePart) * (maxForce * urgency);
+}
+
+// Unaligned collision avoidance's force from the soonest threat (found()): the agent's
+// heading (its velocity when moving, else its forward) and right (with its up), whether the
+// threat, moving at threatVelocity with forward threatForward, comes head on (its heading
+// within headOnCosine of the opposite), and unalignedAvoidance. brake is clamped to [0, 1],
+// horizonS > kTiny; maxForce >= 0.
+[[gnu::always_inline]] inline glm::vec3 avoidSoonest(glm::vec3 velocity, glm::vec3 forward, glm::vec3 up,
+                                                     const SoonestApproach& threat, glm::vec3 threatVelocity,
+                                                     glm::vec3 threatForward, float horizonS, float headOnCosine,
+                                                     float brake, float maxForce)
+{
+    const float speed = glm::length(velocity);
+    const glm::vec3 h = speed > detail::kTiny && speed < detail::kInfinity
+                            ? velocity * (1.0f / speed)
+                            : detail::normalizeOr(forward, glm::vec3(0.0f, 0.0f, 1.0f));  // heading (SteeringMath.h)
+    const glm::vec3 right =
+        detail::normalizeOr(glm::cross(h, detail::normalizeOr(up, detail::kWorldUp)), detail::rightOfForward(h));
+    const glm::vec3 threatHeading =
+        detail::normalizeOr(threatVelocity, detail::normalizeOr(threatForward, glm::vec3(0.0f)));
+    const bool headOn = glm::dot(h, threatHeading) < headOnCosine;
+    return unalignedAvoidance(h, right, threat.offset, threat.timeS, horizonS, headOn, brake,
+                              std::sqrt(1.0f - brake * brake), detail::finiteOrZero(velocity) != glm::vec3(0.0f),
+                              maxForce);
 }
 
 }  // namespace throng::sim::behave

@@ -7,7 +7,6 @@
 #error "a detail/ header, private to throng::simcore: include the module's public headers instead"
 #endif
 
-#include "simcore/base/Rng.h"
 #include "simcore/steering/Neighbour.h"
 #include "simcore/steering/SteeringAgent.h"
 #include "simcore/steering/Wander.h"
@@ -46,10 +45,7 @@ struct BehaviourStep {
     }
     float pathProgressM() const { return v.agents.pathAlong[i]; }
     // Its goal is an exit walked through, not stopped at (no navigation target leads there).
-    bool walksThroughGoal() const
-    {
-        return v.set.goals[std::size_t(v.agents.goal[i])].exit && !(v.nav.active && v.nav.hasTarget[i]);
-    }
+    bool walksThroughGoal() const { return v.walksThroughGoal(i); }
     const WalkableBox& bounds() const { return v.set.bounds; }
     bool hasFlow() const { return !v.set.flow.empty(); }
     glm::vec3 flowAt(glm::vec3 p) const { return flowDirection(v, p); }
@@ -95,12 +91,7 @@ struct BehaviourStep {
     const WanderState& wanderState() const { return v.agents.wander[i]; }
     void setWanderState(const WanderState& s) const { *wanderOut = s; }
     // This step's three seeded draws in [-1, 1] for wander.
-    glm::vec3 wanderRandom() const
-    {
-        const std::uint64_t key = rngKey(v.seed, v.agents.info[i].id, v.clock.step);
-        return {rngRangeOf(key, kWanderX, -1.0f, 1.0f), rngRangeOf(key, kWanderY, -1.0f, 1.0f),
-                rngRangeOf(key, kWanderZ, -1.0f, 1.0f)};
-    }
+    glm::vec3 wanderRandom() const { return wanderDraws(v.seed, v.agents.info[i].id, v.clock.step); }
 };
 
 }  // namespace throng::sim::detail
