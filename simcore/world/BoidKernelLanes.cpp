@@ -24,6 +24,7 @@
 #include "simcore/steering/detail/SteeringConstants.h"
 #include "simcore/steering/detail/BehaviourMath.h"
 #include "simcore/steering/detail/SteeringMath.h"
+#include "simcore/steering/detail/WeightedBlend.h"
 #include "simcore/base/Lanes.h"
 #include "simcore/world/detail/StepConstants.h"
 
@@ -187,31 +188,30 @@ template <class F>
             const int l = std::countr_zero(bits);
             const std::size_t i = boid[l];
             contain[l] = stayInside(steeringAgent(m_agents, m_types, i), m_set.bounds,
-                                    m_types.steering[m_agents.info[i].typeIndex].containment) *
-                         types[l]->wContainment;
+                                    m_types.steering[m_agents.info[i].typeIndex].containment);
         }
     }
 
     // Steer, in steer's (Steer.h) order: containment, separation, pursuit, alignment,
     // cohesion, wander, each behaviour's formula from BehaviourMath.h.
     const V3 heading = select(speedNow > kTiny, V * (1.0f / speedNow), Fwd);
-    V3 sum = select(contained, lanes<F>(contain), V3{});
-    sum = select(wSep > 0.0f, sum + lanes<F>(push) * wSep, sum);
+    // The blend (WeightedBlend.h, blendWeighted's sum), each behaviour in the lanes that run it.
+    WeightedBlendOf<F> blend;
+    blend.add(lanes<F>(contain), wContain, contained);
+    blend.add(lanes<F>(push), wSep, wSep > 0.0f);
     {
         const V3 desired = behave::pursuitVelocity(P, lanes<F>(quarry), lanes<F>(quarryVel), maxSpeed, cap);
-        sum = select(pursues, sum + behave::towards(V, desired, gPur, maxForce) * wPur, sum);
+        blend.add(behave::towards(V, desired, gPur, maxForce), wPur, pursues);
     }
     const M some = n > 0.0f;
     {
         const behave::Alignment<F> a =
             behave::alignmentVelocity(lanes<F>(headings), lanes<F>(velocities), n, speedNow, maxSpeed, matchSpeed);
-        const V3 force = behave::towards(V, a.desired, gAli, maxForce) * wAli;
-        sum = select(some & (wAli > 0.0f) & a.aligned, sum + force, sum);
+        blend.add(behave::towards(V, a.desired, gAli, maxForce), wAli, some & (wAli > 0.0f) & a.aligned);
     }
     {
         const V3 desired = behave::cohesionVelocity(P, lanes<F>(centre), n, maxSpeed, slowing);
-        const V3 force = behave::towards(V, desired, gCoh, maxForce) * wCoh;
-        sum = select(some & (wCoh > 0.0f), sum + force, sum);
+        blend.add(behave::towards(V, desired, gCoh, maxForce), wCoh, some & (wCoh > 0.0f));
     }
     V3 target = lanes<F>(prevTarget);
     if (any(wanders)) {
@@ -234,10 +234,9 @@ template <class F>
             }
         }
         const V3 aim = behave::wanderAim(heading, right, up, target, wanderR, wanderD);
-        const V3 force = behave::towards(V, behave::seekVelocity(aim, maxSpeed), gWan, maxForce) * wWan;
-        sum = select(wanders, sum + force, sum);
+        blend.add(behave::towards(V, behave::seekVelocity(aim, maxSpeed), gWan, maxForce), wWan, wanders);
     }
-    const V3 force = truncate(sum, maxForce);
+    const V3 force = blend.total(maxForce);
 
     // Integrate: steerBoid's flier step.
     V3 vel = truncate(V + force * (splat<F>(m_clock.dt) / mass), maxSpeed);
