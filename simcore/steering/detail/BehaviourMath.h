@@ -299,7 +299,9 @@ struct SoonestApproach {
     std::uint32_t who = 0;
     glm::vec3 offset{0.0f};  // the threat minus the agent at the time of nearest approach
 
-    // The neighbour `dp` away, at `dv` relative, of radius clear - the agent's radius - the margin.
+    // A neighbour `dp` away (its position - the agent's), moving at `dv` relative to the
+    // agent: a threat where it comes nearer than `clear` (both radii and the margin) within
+    // horizonS (approachesWithin).
     [[gnu::always_inline]] void consider(glm::vec3 dp, glm::vec3 dv, float horizonS, float clear, std::uint32_t idOf,
                                          std::uint32_t whoOf)
     {
