@@ -2,6 +2,7 @@
 // fliers as in OpenSteer's SimpleVehicle::applySteeringForce.
 #include "simcore/steering/VehicleModel.h"
 
+#include "simcore/steering/detail/BehaviourMath.h"
 #include "simcore/steering/detail/GroundMove.h"
 #include "simcore/steering/detail/SteeringConstants.h"
 #include "simcore/steering/detail/SteeringMath.h"
@@ -34,8 +35,6 @@ void flyingFrame(SteeringAgent& s, glm::vec3 acceleration, float dt, const Vehic
     if (speed > kStoppedSpeed)
         s.forward = s.velocity / speed;
     // Bank: up leans toward the lateral acceleration, smoothed so a step change of force tilts gradually.
-    const glm::vec3 lateral = acceleration - s.forward * glm::dot(acceleration, s.forward);
-    const glm::vec3 bankedUp = normalizeOr(kWorldUp + lateral * nonNegative(params.bankingGainS2PerM), kWorldUp);
     const float response = std::max(nonNegative(params.bankingResponseS), kMinResponseTimeS);
     // The same for every agent of a type each step: remembered, not recomputed.
     thread_local float lastDt = 0.0f, lastResponse = 0.0f, lastBlend = 0.0f;
@@ -44,8 +43,8 @@ void flyingFrame(SteeringAgent& s, glm::vec3 acceleration, float dt, const Vehic
         lastResponse = response;
         lastBlend = 1.0f - std::exp(-dt / response);
     }
-    const float blend = lastBlend;
-    const glm::vec3 up = normalizeOr(s.up + (bankedUp - s.up) * blend, kWorldUp);
+    const glm::vec3 up =
+        behave::bankedUp(s.up, s.forward, acceleration, nonNegative(params.bankingGainS2PerM), lastBlend);
     // Orthonormalise; a forward parallel to up keeps the previous side.
     s.side = normalizeOr(glm::cross(s.forward, up), s.side);
     s.up = normalizeOr(glm::cross(s.side, s.forward), kWorldUp);
@@ -76,11 +75,8 @@ SteeringAgent integrateVehicle(const SteeringAgent& state, glm::vec3 force, floa
     const float maxSpeed = nonNegative(s.maxSpeed);
     const glm::vec3 f = truncate(finiteOrZero(force), s.maxForce);
     const glm::vec3 before = s.velocity;
-    glm::vec3 v = truncate(before + f * (dt / effectiveMass(s.mass)), maxSpeed);
-    const float minSpeed = std::min(nonNegative(params.minSpeed), maxSpeed);
-    const float speed = glm::length(v);
-    if (speed < minSpeed)
-        v = (speed > kStoppedSpeed ? v / speed : s.forward) * minSpeed;
+    const glm::vec3 v = behave::flierVelocity(before, f, dt / effectiveMass(s.mass), maxSpeed,
+                                              std::min(nonNegative(params.minSpeed), maxSpeed), s.forward);
     s.velocity = finiteOrZero(v);
     s.position = finiteOrZero(s.position + s.velocity * dt);
     flyingFrame(s, (s.velocity - before) / dt, dt, params);

@@ -107,7 +107,6 @@ template <class F>
     constexpr int kLanes = kWidth<F>;
     using M = MaskOf<F>;
     using V3 = Lanes3<F>;
-    const V3 kUp{F{}, splat<F>(1.0f), F{}};
     // Gather: each lane's state, its type's parameters and its neighbours' sums, and the
     // parts that take a branch of their own (containment, pursuit's quarry, wander's
     // random jitter). Every lane of each is written below.
@@ -238,25 +237,17 @@ template <class F>
     }
     const V3 force = blend.total(maxForce);
 
-    // Integrate: steerBoid's flier step.
-    V3 vel = truncate(V + force * (splat<F>(m_clock.dt) / mass), maxSpeed);
-    const F minSpeed = minOf(minSpeedType, maxSpeed);
-    F speed = length(vel);
-    {
-        const M slow = speed < minSpeed;
-        const V3 lifted = select(speed > kStoppedSpeed, vel / speed, Fwd) * minSpeed;
-        vel = select(slow, lifted, vel);
-        speed = select(slow, length(vel), speed);
-    }
+    // Integrate: integrateVehicle's flier step (VehicleModel.cpp), its velocity and banking
+    // the same functions; the frame made square below.
+    V3 vel =
+        behave::flierVelocity(V, force, splat<F>(m_clock.dt) / mass, maxSpeed, minOf(minSpeedType, maxSpeed), Fwd);
+    const F speed = length(vel);
     vel = select(finite(vel), vel, V3{});
     V3 pos = P + vel * splat<F>(m_clock.dt);
     pos = select(finite(pos), pos, V3{});
     const V3 nextFwd = select(speed > kStoppedSpeed, vel / speed, Fwd);
     const V3 acceleration = (vel - V) / splat<F>(m_clock.dt);
-    const V3 lateral = acceleration - nextFwd * dot(acceleration, nextFwd);
-    const V3 bankedUp = normalizeOr(kUp + lateral * bankGain, kUp, kTiny);
-    const V3 upNow = lanes<F>(up0);
-    const V3 up = normalizeOr(upNow + (bankedUp - upNow) * bankBlend, kUp, kTiny);
+    const V3 up = behave::bankedUp(lanes<F>(up0), nextFwd, acceleration, bankGain, bankBlend);
     const V3 sideRaw = cross(nextFwd, up);
     const F sideLen = length(sideRaw);
     V3 side = sideRaw * (1.0f / sideLen);

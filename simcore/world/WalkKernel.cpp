@@ -250,7 +250,8 @@ void WalkKernel::stepAgent(const StepView& view, const BrainPhase& brains, Agent
     }
     if (hasGoal && w.wArrival > 0.0f) {
         // Arrival (ArrivalBehaviour): through an exit at full speed, it is walked through.
-        const float slowing = view.walksThroughGoal(i) ? ArrivalBehaviour::kThroughSlowingM : s.arrival.slowingDistanceM;
+        const float slowing =
+            view.walksThroughGoal(i) ? ArrivalBehaviour::kThroughSlowingM : s.arrival.slowingDistanceM;
         const glm::vec3 desired = behave::arrivalDesired(goal - p, maxSpeed, slowing, s.arrival.toleranceM);
         add(towardsVelocity(v, desired, w.gainArrival, maxForce), w.wArrival * brainWeight(Behaviour::Arrival));
     }

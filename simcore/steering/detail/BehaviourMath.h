@@ -271,6 +271,40 @@ template <class Axis>
         push += separationPush(rel, d, contact, rangeM, maxForce, damping, relVelocity, axis, floor);
 }
 
+// --- A flier's step of the vehicle model --------------------------------------------------
+// (Reynolds 1999, banking as OpenSteer's SimpleVehicle.) integrateVehicle (VehicleModel.cpp)
+// steps one flier with these, the boids kernel four or eight at once.
+
+// The velocity the force (truncated already) gives over the step: within maxSpeed, and
+// lifted to minSpeed (<= maxSpeed) along itself or, all but stopped, along forward.
+template <class F, class V3 = Vec3Of<F>>
+[[gnu::always_inline]] inline V3 flierVelocity(V3 velocity, V3 force, F dtOverMass, F maxSpeed, F minSpeed,
+                                               V3 forward)
+{
+    const V3 v = truncate(velocity + force * dtOverMass, maxSpeed);
+    const F speed = length(v);
+    if constexpr (kScalar<F>)
+        return speed < minSpeed ? (speed > detail::kStoppedSpeed ? v / speed : forward) * minSpeed : v;
+    else
+        return select(speed < minSpeed, select(speed > detail::kStoppedSpeed, v / speed, forward) * minSpeed, v);
+}
+
+// The flier's new up: from `up`, `blend` of the way (the banking response over the step)
+// toward the world's up leant by its lateral acceleration (bankGain >= 0, s^2/m), the part
+// of `acceleration` across its new `forward`.
+template <class F, class V3 = Vec3Of<F>>
+[[gnu::always_inline]] inline V3 bankedUp(V3 up, V3 forward, V3 acceleration, F bankGain, F blend)
+{
+    V3 worldUp;
+    if constexpr (kScalar<F>)
+        worldUp = detail::kWorldUp;
+    else
+        worldUp = V3{F{}, splat<F>(1.0f), F{}};
+    const V3 lateral = acceleration - forward * dot(acceleration, forward);
+    const V3 target = normalizeOr(worldUp + lateral * bankGain, worldUp);
+    return normalizeOr(up + (target - up) * blend, worldUp);
+}
+
 // --- Unaligned collision avoidance ------------------------------------------------------
 // (Reynolds 1999.) One agent at a time: no lane kernel runs it yet.
 
