@@ -2,7 +2,8 @@
 # Runs DetourCrowd (../shared/peers, Debian's librecast-dev) and Throng on the same
 # `cross` scenario in one go, several times, and prints one JSON object with the medians
 # and the ratio; and the ratio without Throng's count phase (its overlap and density
-# figures, which the peer works out outside its timing), from each run's phase times. Same agents, same goals: throng-bench-cross writes the layout
+# figures, which the peer works out outside its timing), from each run's phase times.
+# Same agents, same goals: throng-bench-cross writes the layout
 # (BenchScenarios.h: concentric rings, antipodal goals) and the peer, patched with
 # bench/peers/detourcrowd-layout.patch (its --layout option), reads it.
 # Usage: bench/compare-detourcrowd.sh [AGENTS] [STEPS] [RUNS]; THREADS=N in the environment
