@@ -1,8 +1,9 @@
 // The fused walker kernel (WalkKernel.cpp) against the general steering path. The kernel
 // calls the general path's functions for each behaviour and runs them in its own way (one
 // pass over the neighbours, the blend's terms in the behaviour list's order, each type's
-// gains worked out once), so the two must agree to the bit: on `cross` through its dense middle (arrival, separation, unaligned collision and
-// reciprocal avoidance with keep-right), and on a crowd that also wanders, is held in by
+// gains worked out once), so the two must agree to the bit: on `cross` through its dense
+// middle (arrival, separation, unaligned collision and reciprocal avoidance with
+// keep-right), and on a crowd that also wanders, is held in by
 // containment, stands still with nowhere to go, leaves by an exit and follows a path
 // (which the kernel hands back to the general path), and on a two-way crowd between
 // walls round pillars and a box (wall following, lateral and repulsive obstacle avoidance,
