@@ -1,6 +1,7 @@
 // Flow-field following (Reynolds 1999, "Flow Field Following").
 #include "simcore/steering/FlowFollowing.h"
 
+#include "simcore/steering/detail/BehaviourMath.h"
 #include "simcore/steering/detail/SteeringMath.h"
 
 namespace throng::sim {

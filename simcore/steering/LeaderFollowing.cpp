@@ -2,6 +2,7 @@
 #include "simcore/steering/LeaderFollowing.h"
 
 #include "simcore/steering/PursuitBehaviours.h"
+#include "simcore/steering/detail/BehaviourMath.h"
 #include "simcore/steering/detail/SteeringMath.h"
 
 #include <glm/geometric.hpp>

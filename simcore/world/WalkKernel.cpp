@@ -39,7 +39,7 @@ using namespace detail;
 
 namespace {
 
-// steerTowards (SteeringMath.h) with its gain (mass / response time) made once per type.
+// steerTowards (BehaviourMath.h) with its gain (mass / response time) made once per type.
 [[gnu::always_inline]] inline glm::vec3 towardsVelocity(glm::vec3 velocity, glm::vec3 desired, float gain,
                                                         float maxForce)
 {

@@ -119,6 +119,35 @@ private slots:
         QVERIFY(reachedAt * kDt < budgetS);
     }
 
+    // The force toward a desired velocity (behave::towards, which every path calls): none at
+    // all, +0 in every component, for an agent already at that velocity, even where the
+    // difference of the two is a zero of negative sign; none for one so fast that the force
+    // would overflow; else the difference over the response time, at most the agent's force.
+    void steeringForceTowardsADesiredVelocity()
+    {
+        // Straight at a target across x = -0: seek asks for (-0, 0, 1.4) m/s, which it has.
+        const SteeringAgent there = walker({0, 0, 0}, {0.0f, 0.0f, 1.4f});
+        const glm::vec3 none = seek(there, {-0.0f, 0.0f, 10.0f});
+        QCOMPARE(none, glm::vec3(0.0f));
+        QVERIFY(!std::signbit(none.x) && !std::signbit(none.y) && !std::signbit(none.z));
+
+        const SteeringAgent wild = walker({0, 0, 0}, {3e37f, 0.0f, 0.0f});
+        const glm::vec3 overflow = seek(wild, {0.0f, 0.0f, 10.0f});
+        QCOMPARE(overflow, glm::vec3(0.0f));
+        QVERIFY(!std::signbit(overflow.x));  // nothing asked, not a force scaled down to a zero
+
+        // 0.5 m/s short of the desired velocity, with a response time of 0.5 s and a mass of
+        // 1 kg: 1 N, within the 3 N it may use; 4 m/s off: truncated to 3 N, the same way.
+        const SeekParams params{0.5f};
+        const SteeringAgent slow = walker({0, 0, 0}, {0.0f, 0.0f, 0.9f});
+        const glm::vec3 gentle = seek(slow, {0.0f, 0.0f, 10.0f}, params);
+        QCOMPARE(gentle.z, 1.0f);
+        QCOMPARE(gentle.x, 0.0f);
+        const SteeringAgent backwards = walker({0, 0, 0}, {0.0f, 0.0f, -2.6f});
+        const glm::vec3 hard = seek(backwards, {0.0f, 0.0f, 10.0f}, params);
+        QCOMPARE(hard.z, 3.0f);
+    }
+
     void fleeIncreasesDistanceMonotonically()
     {
         const glm::vec3 threat(0, 0, 0);

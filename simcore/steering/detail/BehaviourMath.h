@@ -96,16 +96,23 @@ using simd::truncate;
 
 // Reynolds 1999's steering = desired velocity - velocity, as the force that reaches it in
 // the response time (gain = mass / response time: responseGain), truncated to maxForce
-// (>= 0). For finite input what steerTowards (SteeringMath.h) gives.
+// (>= 0). One agent that already moves at the desired velocity, or whose force overflows,
+// is asked for no force (+0 in every component); lanes keep what the formula gives there,
+// which differs only in the sign of a zero or for a velocity past any speed. The general
+// path's behaviours call it through steerTowards (below), the kernels directly.
 template <class F, class V3 = Vec3Of<F>>
 [[gnu::always_inline]] inline V3 towards(V3 velocity, V3 desired, F gain, F maxForce)
 {
-    const V3 f = (desired - velocity) * gain;
+    const V3 dv = desired - velocity;
+    const V3 f = dv * gain;
     const F f2 = dot(f, f);
-    if constexpr (kScalar<F>)
+    if constexpr (kScalar<F>) {
+        if (dv == glm::vec3(0.0f) || !(f2 < detail::kInfinity))
+            return glm::vec3(0.0f);
         return f2 > maxForce * maxForce ? f * (maxForce / sqrtOf(f2)) : f;
-    else
+    } else {
         return select(f2 > maxForce * maxForce, f * (maxForce / sqrtOf(f2)), f);
+    }
 }
 
 // --- Desired velocities ---------------------------------------------------------------
@@ -394,3 +401,16 @@ struct SoonestApproach {
 }
 
 }  // namespace throng::sim::behave
+
+namespace throng::sim::detail {
+
+// An agent's steering force towards a desired velocity (behave::towards), from a state and
+// request made finite, with the agent's own mass, response time and force.
+inline glm::vec3 steerTowards(const SteeringAgent& agent, glm::vec3 desiredVelocity, float responseTimeS)
+{
+    return behave::towards(finiteOrZero(agent.velocity), finiteOrZero(desiredVelocity),
+                           responseGain(effectiveMass(agent.mass), responseTimeS), nonNegative(agent.maxForce));
+}
+
+}  // namespace throng::sim::detail
+

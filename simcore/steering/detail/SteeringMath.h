@@ -106,15 +106,4 @@ inline float responseGain(float mass, float responseTimeS)
     return mass / (std::isfinite(responseTimeS) ? std::max(responseTimeS, kMinResponseTimeS) : kMinResponseTimeS);
 }
 
-// Reynolds 1999: steering = desired velocity - current velocity, here made a force by the mass
-// and the time the agent should take to reach the desired velocity, truncated to maxForce.
-inline glm::vec3 steerTowards(const SteeringAgent& agent, glm::vec3 desiredVelocity, float responseTimeS)
-{
-    const glm::vec3 v = finiteOrZero(agent.velocity);
-    const glm::vec3 dv = finiteOrZero(desiredVelocity) - v;
-    if (dv == glm::vec3(0.0f))
-        return glm::vec3(0.0f);
-    return truncate(dv * responseGain(effectiveMass(agent.mass), responseTimeS), agent.maxForce);
-}
-
 }  // namespace throng::sim::detail
