@@ -70,22 +70,14 @@ bool GridRenderer::initialize(QOpenGLFunctions_3_3_Core& gl)
     m_program = buildShaderProgram("grid", kGridVertexShader, kGridFragmentShader);
     if (!m_program)
         return false;
-    gl.glGenVertexArrays(1, &m_vao);
-    gl.glGenBuffers(1, &m_vbo);
-    gl.glBindVertexArray(m_vao);
-    gl.glBindBuffer(GL_ARRAY_BUFFER, m_vbo);
-    gl.glEnableVertexAttribArray(0);
-    gl.glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, sizeof(glm::vec2), nullptr);
-    gl.glBindVertexArray(0);
+    m_quad.create(gl, sizeof(glm::vec2), {{2, 0}});
     m_dirty = true;
     return true;
 }
 
 void GridRenderer::destroy(QOpenGLFunctions_3_3_Core& gl)
 {
-    gl.glDeleteBuffers(1, &m_vbo);
-    gl.glDeleteVertexArrays(1, &m_vao);
-    m_vbo = m_vao = 0;
+    m_quad.destroy(gl);
     m_program.reset();
 }
 
@@ -107,8 +99,7 @@ void GridRenderer::draw(QOpenGLFunctions_3_3_Core& gl, const RenderView& view)
         const std::array<glm::vec2, 6> quad{c + glm::vec2(-reach, -reach), c + glm::vec2(reach, -reach),
                                             c + glm::vec2(reach, reach),   c + glm::vec2(-reach, -reach),
                                             c + glm::vec2(reach, reach),   c + glm::vec2(-reach, reach)};
-        gl.glBindBuffer(GL_ARRAY_BUFFER, m_vbo);
-        gl.glBufferData(GL_ARRAY_BUFFER, sizeof(quad), quad.data(), GL_STATIC_DRAW);
+        m_quad.upload(gl, quad.data(), quad.size());
         m_dirty = false;
     }
     m_program->bind();
@@ -120,9 +111,7 @@ void GridRenderer::draw(QOpenGLFunctions_3_3_Core& gl, const RenderView& view)
     setColour(*m_program, "u_outside", palette::kBackground);
     setColour(*m_program, "u_minor", palette::kGridMinor);
     setColour(*m_program, "u_major", palette::kGridMajor);
-    gl.glBindVertexArray(m_vao);
-    gl.glDrawArrays(GL_TRIANGLES, 0, 6);
-    gl.glBindVertexArray(0);
+    m_quad.drawTriangles(gl);
     m_program->release();
 }
 

@@ -4,6 +4,7 @@
 // Owns its GL objects; must be created, drawn and destroyed with the context current.
 
 #include "editor/viewport/RenderView.h"
+#include "editor/viewport/VertexBuffer.h"
 
 #include <glm/vec2.hpp>
 
@@ -25,7 +26,7 @@ public:
 
 private:
     std::unique_ptr<QOpenGLShaderProgram> m_program;
-    unsigned m_vao = 0, m_vbo = 0;
+    VertexBuffer m_quad;  // the ground: two triangles, remade when the bounds change
     glm::vec2 m_boundsMin{-50.0f}, m_boundsMax{50.0f};
     bool m_dirty = true;
 };

@@ -46,58 +46,34 @@ bool ShapeRenderer::initialize(QOpenGLFunctions_3_3_Core& gl)
     m_program = buildShaderProgram("shape", kShapeVertexShader, kShapeFragmentShader);
     if (!m_program)
         return false;
-    gl.glGenVertexArrays(1, &m_vao);
-    gl.glGenBuffers(1, &m_vbo);
-    gl.glBindVertexArray(m_vao);
-    gl.glBindBuffer(GL_ARRAY_BUFFER, m_vbo);
-    constexpr GLsizei stride = sizeof(ShapeVertex);
-    gl.glEnableVertexAttribArray(0);
-    gl.glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride,
-                             reinterpret_cast<const void*>(offsetof(ShapeVertex, position)));
-    gl.glEnableVertexAttribArray(1);
-    gl.glVertexAttribPointer(1, 2, GL_FLOAT, GL_FALSE, stride,
-                             reinterpret_cast<const void*>(offsetof(ShapeVertex, normal)));
-    gl.glEnableVertexAttribArray(2);
-    gl.glVertexAttribPointer(2, 1, GL_FLOAT, GL_FALSE, stride,
-                             reinterpret_cast<const void*>(offsetof(ShapeVertex, halfWidthM)));
-    gl.glEnableVertexAttribArray(3);
-    gl.glVertexAttribPointer(3, 4, GL_FLOAT, GL_FALSE, stride,
-                             reinterpret_cast<const void*>(offsetof(ShapeVertex, colour)));
-    gl.glBindVertexArray(0);
+    m_vertices.create(gl, sizeof(ShapeVertex),
+                      {{3, offsetof(ShapeVertex, position)},
+                       {2, offsetof(ShapeVertex, normal)},
+                       {1, offsetof(ShapeVertex, halfWidthM)},
+                       {4, offsetof(ShapeVertex, colour)}});
     return true;
 }
 
 void ShapeRenderer::destroy(QOpenGLFunctions_3_3_Core& gl)
 {
-    gl.glDeleteBuffers(1, &m_vbo);
-    gl.glDeleteVertexArrays(1, &m_vao);
-    m_vbo = m_vao = 0;
-    m_vertexCount = 0;
+    m_vertices.destroy(gl);
     m_program.reset();
 }
 
 void ShapeRenderer::upload(QOpenGLFunctions_3_3_Core& gl, const ShapeMesh& mesh)
 {
-    if (!m_program)
-        return;
-    const auto& vertices = mesh.vertices();
-    gl.glBindBuffer(GL_ARRAY_BUFFER, m_vbo);
-    gl.glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices.size() * sizeof(ShapeVertex)), vertices.data(),
-                    GL_STATIC_DRAW);
-    m_vertexCount = int(vertices.size());
+    m_vertices.upload(gl, mesh.vertices());
 }
 
 void ShapeRenderer::draw(QOpenGLFunctions_3_3_Core& gl, const RenderView& view)
 {
-    if (!m_program || m_vertexCount == 0)
+    if (!m_program || m_vertices.vertexCount() == 0)
         return;
     m_program->bind();
     gl.glUniformMatrix4fv(m_program->uniformLocation("u_viewProjection"), 1, GL_FALSE,
                           glm::value_ptr(view.viewProjection));
     m_program->setUniformValue("u_minHalfWidthAtW1", kMinHalfWidthPx * view.metresPerPixel);
-    gl.glBindVertexArray(m_vao);
-    gl.glDrawArrays(GL_TRIANGLES, 0, m_vertexCount);
-    gl.glBindVertexArray(0);
+    m_vertices.drawTriangles(gl);
     m_program->release();
 }
 

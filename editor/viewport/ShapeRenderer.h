@@ -5,6 +5,7 @@
 
 #include "editor/viewport/RenderView.h"
 #include "editor/viewport/ShapeMesh.h"
+#include "editor/viewport/VertexBuffer.h"
 
 #include <QOpenGLShaderProgram>
 
@@ -26,8 +27,7 @@ public:
 
 private:
     std::unique_ptr<QOpenGLShaderProgram> m_program;
-    unsigned m_vao = 0, m_vbo = 0;
-    int m_vertexCount = 0;
+    VertexBuffer m_vertices;
 };
 
 }  // namespace throng::editor

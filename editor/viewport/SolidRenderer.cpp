@@ -51,57 +51,34 @@ bool SolidRenderer::initialize(QOpenGLFunctions_3_3_Core& gl)
     m_program = buildShaderProgram("solid", kSolidVertexShader, kSolidFragmentShader);
     if (!m_program)
         return false;
-    gl.glGenVertexArrays(1, &m_vao);
-    gl.glGenBuffers(1, &m_vbo);
-    gl.glBindVertexArray(m_vao);
-    gl.glBindBuffer(GL_ARRAY_BUFFER, m_vbo);
-    constexpr GLsizei stride = sizeof(exporting::SolidVertex);
-    gl.glEnableVertexAttribArray(0);
-    gl.glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride,
-                             reinterpret_cast<const void*>(offsetof(exporting::SolidVertex, position)));
-    gl.glEnableVertexAttribArray(1);
-    gl.glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride,
-                             reinterpret_cast<const void*>(offsetof(exporting::SolidVertex, normal)));
-    gl.glEnableVertexAttribArray(2);
-    gl.glVertexAttribPointer(2, 4, GL_FLOAT, GL_FALSE, stride,
-                             reinterpret_cast<const void*>(offsetof(exporting::SolidVertex, colour)));
-    gl.glEnableVertexAttribArray(3);
-    gl.glVertexAttribPointer(3, 1, GL_FLOAT, GL_FALSE, stride,
-                             reinterpret_cast<const void*>(offsetof(exporting::SolidVertex, glow)));
-    gl.glBindVertexArray(0);
+    using exporting::SolidVertex;
+    m_vertices.create(gl, sizeof(SolidVertex),
+                      {{3, offsetof(SolidVertex, position)},
+                       {3, offsetof(SolidVertex, normal)},
+                       {4, offsetof(SolidVertex, colour)},
+                       {1, offsetof(SolidVertex, glow)}});
     return true;
 }
 
 void SolidRenderer::destroy(QOpenGLFunctions_3_3_Core& gl)
 {
-    gl.glDeleteBuffers(1, &m_vbo);
-    gl.glDeleteVertexArrays(1, &m_vao);
-    m_vbo = m_vao = 0;
-    m_vertexCount = 0;
+    m_vertices.destroy(gl);
     m_program.reset();
 }
 
 void SolidRenderer::upload(QOpenGLFunctions_3_3_Core& gl, const exporting::SolidMesh& mesh)
 {
-    if (!m_program)
-        return;
-    const auto& vertices = mesh.vertices();
-    gl.glBindBuffer(GL_ARRAY_BUFFER, m_vbo);
-    gl.glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices.size() * sizeof(exporting::SolidVertex)), vertices.data(),
-                    GL_STATIC_DRAW);
-    m_vertexCount = int(vertices.size());
+    m_vertices.upload(gl, mesh.vertices());
 }
 
 void SolidRenderer::draw(QOpenGLFunctions_3_3_Core& gl, const RenderView& view)
 {
-    if (!m_program || m_vertexCount == 0 || !view.perspective)
+    if (!m_program || m_vertices.vertexCount() == 0 || !view.perspective)
         return;
     m_program->bind();
     gl.glUniformMatrix4fv(m_program->uniformLocation("u_viewProjection"), 1, GL_FALSE,
                           glm::value_ptr(view.viewProjection));
-    gl.glBindVertexArray(m_vao);
-    gl.glDrawArrays(GL_TRIANGLES, 0, m_vertexCount);
-    gl.glBindVertexArray(0);
+    m_vertices.drawTriangles(gl);
     m_program->release();
 }
 
