@@ -8,6 +8,7 @@
 
 #include <glm/vec2.hpp>
 
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -57,6 +58,22 @@ public:
     // True when the points a quarter and a half cell from p along the unit direction d lie
     // in walkable cells: d does not lead into a blocked cell (the test every field passes).
     bool clearAhead(glm::vec2 p, glm::vec2 d) const;
+    // The bilinear blend at p of a vector each cell holds at its centre, value(NavCell),
+    // over the four centres round p (the fields' sample: FlowField, SketchField). Cells
+    // outside the grid are asked too: value answers for them.
+    template <class Value>
+    glm::vec2 blendAtCentres(glm::vec2 p, Value&& value) const
+    {
+        const glm::vec2 q = (p - m_origin) / m_cellM - 0.5f;
+        const int x0 = int(std::floor(q.x)), z0 = int(std::floor(q.y));
+        const float fx = q.x - float(x0), fz = q.y - float(z0);
+        glm::vec2 sum(0.0f);
+        for (int k = 0; k < 4; ++k) {
+            const float w = ((k & 1) ? fx : 1.0f - fx) * ((k >> 1) ? fz : 1.0f - fz);
+            sum += w * value(NavCell{x0 + (k & 1), z0 + (k >> 1)});
+        }
+        return sum;
+    }
 
     // Marks one cell; a change gives the grid a new generation() so cached plans and fields
     // know to re-plan (the scene changed). Generations are unique across grids; copies share

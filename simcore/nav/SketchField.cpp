@@ -116,14 +116,7 @@ glm::vec2 SketchField::sample(glm::vec2 p) const
     const NavCell own = m_grid.cellOf(p);
     if (!m_grid.walkable(own))
         return glm::vec2(0.0f);
-    const glm::vec2 q = (p - m_grid.origin()) / m_grid.cellM() - 0.5f;
-    const int x0 = int(std::floor(q.x)), z0 = int(std::floor(q.y));
-    const float fx = q.x - float(x0), fz = q.y - float(z0);
-    glm::vec2 sum(0.0f);
-    for (int k = 0; k < 4; ++k) {
-        const float w = ((k & 1) ? fx : 1.0f - fx) * ((k >> 1) ? fz : 1.0f - fz);
-        sum += w * direction({x0 + (k & 1), z0 + (k >> 1)});
-    }
+    const glm::vec2 sum = m_grid.blendAtCentres(p, [&](NavCell c) { return direction(c); });
     const float len = glm::length(sum);
     if (len > 1e-6f && m_grid.clearAhead(p, sum / len))
         return sum / len;
