@@ -39,8 +39,7 @@ glm::vec3 separate(const SteeringAgent& agent, std::span<const Neighbour> neighb
 {
     const glm::vec3 p = finiteOrZero(agent.position);
     const glm::vec3 v = finiteOrZero(agent.velocity);
-    const float range = nonNegative(params.rangeM);
-    const float damping = effectiveMass(agent.mass) / std::max(nonNegative(params.dampingTimeS), kMinResponseTimeS);
+    const auto [range, damping] = behave::separationGains(params, effectiveMass(agent.mass));
     const float maxForce = nonNegative(agent.maxForce);
     glm::vec3 push(0.0f);
     behave::SeparationFloor floor;

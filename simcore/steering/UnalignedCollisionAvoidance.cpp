@@ -17,12 +17,13 @@ using namespace detail;
 glm::vec3 avoidUnalignedCollisions(const SteeringAgent& agent, std::span<const Neighbour> neighbours,
                                    const UnalignedAvoidanceParams& params)
 {
-    const float horizon = nonNegative(params.horizonS);
+    const behave::UnalignedGains gains = behave::unalignedGains(params);
+    const float horizon = gains.horizonS;
     if (!(horizon > kTiny))
         return glm::vec3(0.0f);
     const glm::vec3 p = finiteOrZero(agent.position), v = finiteOrZero(agent.velocity);
     behave::SoonestApproach threat;
-    const float margin = nonNegative(params.marginM);
+    const float margin = gains.marginM;
     for (std::size_t k = 0; k < neighbours.size(); ++k) {
         const Neighbour& n = neighbours[k];
         threat.consider(finiteOrZero(n.position) - p, finiteOrZero(n.velocity) - v, horizon,
@@ -32,7 +33,7 @@ glm::vec3 avoidUnalignedCollisions(const SteeringAgent& agent, std::span<const N
         return glm::vec3(0.0f);
     const Neighbour& n = neighbours[threat.who];
     return behave::avoidSoonest(agent.velocity, agent.forward, agent.up, threat, n.velocity, n.forward, horizon,
-                                params.headOnCosine, std::clamp(finiteOr(params.brakeFraction, 0.0f), 0.0f, 1.0f),
+                                params.headOnCosine, gains.brake,
                                 nonNegative(agent.maxForce));
 }
 

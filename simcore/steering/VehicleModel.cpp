@@ -35,13 +35,12 @@ void flyingFrame(SteeringAgent& s, glm::vec3 acceleration, float dt, const Vehic
     if (speed > kStoppedSpeed)
         s.forward = s.velocity / speed;
     // Bank: up leans toward the lateral acceleration, smoothed so a step change of force tilts gradually.
-    const float response = std::max(nonNegative(params.bankingResponseS), kMinResponseTimeS);
-    // The same for every agent of a type each step: remembered, not recomputed.
+    // The blend is the same for every agent of a type each step: remembered, not recomputed.
     thread_local float lastDt = 0.0f, lastResponse = 0.0f, lastBlend = 0.0f;
-    if (dt != lastDt || response != lastResponse) {
+    if (dt != lastDt || params.bankingResponseS != lastResponse) {
         lastDt = dt;
-        lastResponse = response;
-        lastBlend = 1.0f - std::exp(-dt / response);
+        lastResponse = params.bankingResponseS;
+        lastBlend = behave::bankingBlend(params.bankingResponseS, dt);
     }
     const glm::vec3 up =
         behave::bankedUp(s.up, s.forward, acceleration, nonNegative(params.bankingGainS2PerM), lastBlend);

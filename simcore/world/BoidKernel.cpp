@@ -84,8 +84,9 @@ void BoidKernel::build(const AgentTypes& types, float dt, std::size_t agents, bo
         b.wWander = s.weightIfOn(Behaviour::Wander);
         b.mass = mass;
         b.maxForce = nonNegative(types.params[t].maxForce);
-        b.range = nonNegative(s.separation.rangeM);
-        b.damping = mass / std::max(nonNegative(s.separation.dampingTimeS), kMinResponseTimeS);
+        const behave::SeparationGains separation = behave::separationGains(s.separation, mass);
+        b.range = separation.range;
+        b.damping = separation.damping;
         b.gainPursuit = responseGain(mass, s.pursuit.responseTimeS);
         b.gainAlignment = responseGain(mass, s.alignment.responseTimeS);
         b.gainCohesion = responseGain(mass, s.cohesion.responseTimeS);
@@ -97,8 +98,7 @@ void BoidKernel::build(const AgentTypes& types, float dt, std::size_t agents, bo
         b.wanderDistanceM = nonNegative(s.wander.distanceM);
         b.minSpeed = nonNegative(s.vehicle.minSpeed);
         b.bankGain = nonNegative(s.vehicle.bankingGainS2PerM);
-        const float response = std::max(nonNegative(s.vehicle.bankingResponseS), kMinResponseTimeS);
-        b.bankBlend = 1.0f - std::exp(-dt / response);
+        b.bankBlend = behave::bankingBlend(s.vehicle.bankingResponseS, dt);
     }
     const float slack = 2.0f * accelMax * dt * dt;
     m_slackM = collideShortcut && anyKernel && std::isfinite(slack) ? slack : 0.0f;

@@ -100,11 +100,13 @@ void WalkKernel::build(const AgentTypes& types, const StaticSet& set, float dt, 
             (walls && s.on(Behaviour::WallFollowing)) || (obstacles && s.on(Behaviour::ObstacleAvoidance));
         w.constrained = walls || !set.circles.empty();  // as the move phase's hasStatics
         w.maxForce = nonNegative(types.params[t].maxForce);
-        w.range = nonNegative(s.separation.rangeM);
-        w.damping = mass / std::max(nonNegative(s.separation.dampingTimeS), kMinResponseTimeS);
-        w.horizonS = nonNegative(s.unaligned.horizonS);
-        w.marginM = nonNegative(s.unaligned.marginM);
-        w.brake = std::clamp(finiteOr(s.unaligned.brakeFraction, 0.0f), 0.0f, 1.0f);
+        const behave::SeparationGains separation = behave::separationGains(s.separation, mass);
+        w.range = separation.range;
+        w.damping = separation.damping;
+        const behave::UnalignedGains unaligned = behave::unalignedGains(s.unaligned);
+        w.horizonS = unaligned.horizonS;
+        w.marginM = unaligned.marginM;
+        w.brake = unaligned.brake;
         w.gainArrival = responseGain(mass, s.arrival.responseTimeS);
         w.gainSeek = responseGain(mass, s.seek.responseTimeS);
         w.dtOverMass = dt / mass;

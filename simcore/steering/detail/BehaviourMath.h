@@ -20,6 +20,7 @@
 
 #include "simcore/base/Lanes.h"
 #include "simcore/steering/FlockingBehaviours.h"
+#include "simcore/steering/UnalignedCollisionAvoidance.h"
 #include "simcore/steering/detail/SteeringConstants.h"
 #include "simcore/steering/detail/SteeringMath.h"
 
@@ -219,6 +220,18 @@ template <class F, class V3 = Vec3Of<F>>
 
 // --- Separation ------------------------------------------------------------------------
 
+// Separation's parameters as its push takes them (addSeparation): the range, >= 0, and
+// the damping gain, the agent's mass (effectiveMass) over the damping time of at least
+// kMinResponseTimeS. separate works them out per agent, the kernels once per type.
+struct SeparationGains {
+    float range = 0.0f, damping = 0.0f;
+};
+inline SeparationGains separationGains(const SeparationParams& params, float mass)
+{
+    return {detail::nonNegative(params.rangeM),
+            mass / std::max(detail::nonNegative(params.dampingTimeS), detail::kMinResponseTimeS)};
+}
+
 // The floor of separation's weight, reference / kMaxSeparationWeight, kept between the
 // neighbours of one agent: it is the same for every neighbour of the same contact
 // distance (all of them, where a crowd has one radius), and a division per neighbour
@@ -312,8 +325,27 @@ template <class F, class V3 = Vec3Of<F>>
     return normalizeOr(up + (target - up) * blend, worldUp);
 }
 
+// bankedUp's blend for a step of dt (s): 1 - e^(-dt / response), the banking's response
+// time at least kMinResponseTimeS.
+inline float bankingBlend(float bankingResponseS, float dt)
+{
+    const float response = std::max(detail::nonNegative(bankingResponseS), detail::kMinResponseTimeS);
+    return 1.0f - std::exp(-dt / response);
+}
+
 // --- Unaligned collision avoidance ------------------------------------------------------
 // (Reynolds 1999.) One agent at a time: no lane kernel runs it yet.
+
+// Its parameters as the formulas take them: the horizon (s) and the margin (m), both
+// >= 0, and the share of the force that brakes, in [0, 1] (0 where it is not a number).
+struct UnalignedGains {
+    float horizonS = 0.0f, marginM = 0.0f, brake = 0.0f;
+};
+inline UnalignedGains unalignedGains(const UnalignedAvoidanceParams& params)
+{
+    return {detail::nonNegative(params.horizonS), detail::nonNegative(params.marginM),
+            std::clamp(detail::finiteOr(params.brakeFraction, 0.0f), 0.0f, 1.0f)};
+}
 
 // Whether a neighbour `dp` away (its position - the agent's), moving at `dv` relative to
 // the agent, comes nearer than `clear` within horizonS: then the time of nearest approach
