@@ -4,6 +4,7 @@
 // filled and drawn the same way (GridRenderer, ShapeRenderer, SolidRenderer). Knows
 // nothing of shaders; create, fill, draw and destroy it with its GL context current.
 
+#include <cassert>
 #include <cstddef>
 #include <initializer_list>
 #include <vector>
@@ -31,6 +32,7 @@ public:
     template <class Vertex>
     void upload(QOpenGLFunctions_3_3_Core& gl, const std::vector<Vertex>& vertices)
     {
+        assert(sizeof(Vertex) == m_stride || !created());  // the layout create was given
         upload(gl, vertices.data(), vertices.size());
     }
     int vertexCount() const { return m_count; }

@@ -445,4 +445,3 @@ inline glm::vec3 steerTowards(const SteeringAgent& agent, glm::vec3 desiredVeloc
 }
 
 }  // namespace throng::sim::detail
-
