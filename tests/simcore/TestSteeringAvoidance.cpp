@@ -5,10 +5,12 @@
 #include "TestRegistry.h"
 
 #include "simcore/steering/Containment.h"
+#include "simcore/steering/FlockingBehaviours.h"
 #include "simcore/steering/ObstacleAvoidance.h"
 #include "simcore/steering/SteeringCombination.h"
 #include "simcore/steering/TargetBehaviours.h"
 #include "simcore/steering/UnalignedCollisionAvoidance.h"
+#include "simcore/steering/VehicleModel.h"
 #include "simcore/steering/WallAvoidance.h"
 #include "simcore/steering/Wander.h"
 
@@ -439,6 +441,49 @@ private slots:
         QCOMPARE(sideOf({left9Sooner, right3}), +1);
         // One that passes wide of the body and margin is no threat.
         QCOMPARE(sideOf({oncoming(2.0f, 4.0f, 1)}), 0);
+    }
+
+    // Out-of-range parameters are read the same way on every path (separationGains,
+    // unalignedGains, bankingBlend, which the kernels share with these functions): a
+    // negative range as none, a damping time below 1 ms as 1 ms, a banking time that is not
+    // a number as 1 ms, a brake share that is not a number as 0 and one above 1 as 1.
+    void parametersOutOfRangeReadAsTheirLimits()
+    {
+        const SteeringAgent a = walker({0, 0, 0}, {0, 0, 1.0f}, 1);
+        const Neighbour near{{0.0f, 0.0f, 0.7f}, {0.0f, 0.0f, -0.5f}, {0.0f, 0.0f, -1.0f}, 0.3f, 2};  // 0.1 m apart
+        auto push = [&](float range, float damping) {
+            SeparationParams p;
+            p.rangeM = range;
+            p.dampingTimeS = damping;
+            return separate(a, std::vector<Neighbour>{near}, p);
+        };
+        QVERIFY(push(0.5f, 0.5f) != glm::vec3(0.0f));  // in range: pushed
+        QCOMPARE(push(-1.0f, 0.5f), glm::vec3(0.0f));   // no range: not touching, no push
+        QCOMPARE(push(-1.0f, 0.5f), push(0.0f, 0.5f));
+        QVERIFY(push(0.5f, 0.0f) == push(0.5f, 1e-3f));
+        QVERIFY(push(0.5f, -2.0f) == push(0.5f, 1e-3f));
+        QVERIFY(push(0.5f, 0.0f) != push(0.5f, 0.5f));  // the damping does count
+
+        const Neighbour headOn{{0.0f, 0.0f, 3.0f}, {0.0f, 0.0f, -1.0f}, {0.0f, 0.0f, -1.0f}, 0.3f, 3};
+        auto dodge = [&](float brake) {
+            UnalignedAvoidanceParams p;
+            p.brakeFraction = brake;
+            return avoidUnalignedCollisions(a, std::vector<Neighbour>{headOn}, p);
+        };
+        QVERIFY(dodge(0.0f) != dodge(0.5f));  // the brake share does count
+        QVERIFY(dodge(NAN) == dodge(0.0f));
+        QVERIFY(dodge(2.0f) == dodge(1.0f));
+
+        SteeringAgent bird = walker({0, 10, 0}, {5.0f, 0.0f, 0.0f}, 4);
+        auto banked = [&](float response) {
+            VehicleParams p;
+            p.flying = true;
+            p.bankingGainS2PerM = 0.1f;
+            p.bankingResponseS = response;
+            return integrateVehicle(bird, {0.0f, 0.0f, 3.0f}, 1.0f / 24.0f, p).up;  // a turn: it banks
+        };
+        QVERIFY(banked(0.5f) != banked(0.05f));  // the response does count
+        QVERIFY(banked(NAN) == banked(1e-3f));  // (below 1 ms any time levels up in one step)
     }
 
     // Containment asks only where a probe can reach the bounds: from 0.5 m plus 1 m per m/s
