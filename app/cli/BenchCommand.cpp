@@ -78,6 +78,10 @@ int benchCommand(const CliArguments& args, std::ostream& out, std::ostream& err)
       << ", \"fraction_arrived\": " << (stats.withGoal ? double(stats.arrived) / double(stats.withGoal) : 0.0)
       << ", \"wall_penetrations\": " << stats.counters.wallPenetrations
       << ", \"non_finite_values\": " << stats.counters.nonFiniteValues;
+    // Of the agents the contact rounds went through, the share they passed by (Collide.h).
+    const sim::ContactRounds& rounds = world.contactRounds();
+    j << ", \"contact_rounds_passed_by\": "
+      << (rounds.agents ? double(rounds.passedBy) / double(rounds.agents) : 0.0);
     // Where the steps' time went, phase by phase (World::phaseTimes): ms per step.
     const sim::PhaseTimes& times = world.phaseTimes();
     j << ", \"phase_ms_per_step\": {";

@@ -23,9 +23,21 @@ struct StepView;
 // result is the same either way).
 inline constexpr std::uint8_t kCollideFree = 1;
 
+// The contact rounds' shortcut: a round passes by the agents it would leave where they are
+// (Collide.cpp: settleContacts). The same result either way; `shortcut` false works out
+// every agent in every round (WorldOptions::contactShortcut, for the tests that compare).
+// agents: the agents the rounds have gone through, round by round, in all; passedBy: of
+// those, the ones the shortcut passed by; marginBroken: the decisions whose first round
+// went through every agent, as the collide pass had moved some body too far for its
+// proofs (kClearMarginM, Collide.cpp).
+struct ContactRounds {
+    bool shortcut = true;
+    std::uint64_t agents = 0, passedBy = 0, marginBroken = 0;
+};
+
 // Moves agents.nextPos to where the phase puts each body (writes nextPos, nextVel,
-// resolvedPos and contactMoved).
+// resolvedPos and contactMoved), and counts the contact rounds' work in `rounds`.
 void collide(const StepView& v, const BrainPhase& brains, AgentColumns& agents,
-             std::span<const std::uint8_t> collideFree, float boidSlackM, bool hasStatics);
+             std::span<const std::uint8_t> collideFree, float boidSlackM, bool hasStatics, ContactRounds& rounds);
 
 }  // namespace throng::sim

@@ -147,6 +147,7 @@ void World::build(const Scene& scene, const WorldOptions& options)
     const bool open = !m_types.makingWay && m_traffic.signal.empty();
     m_move.build(m_types, m_set, m_clock.dt, m_agents.size(), {!m_brains.active() && open, open},
                  {options.boidKernel, options.walkKernel, options.collideShortcut, options.steerEight});
+    m_contactRounds.shortcut = options.contactShortcut;
 }
 
 void World::buildStatics(const Scene& scene)

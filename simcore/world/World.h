@@ -10,6 +10,7 @@
 #include "simcore/world/AgentColumns.h"
 #include "simcore/world/AgentTypes.h"
 #include "simcore/world/BrainPhase.h"
+#include "simcore/world/Collide.h"
 #include "simcore/world/CountPhase.h"
 #include "simcore/world/FrameCache.h"
 #include "simcore/world/MovePhase.h"
@@ -52,6 +53,9 @@ struct WorldOptions {
     // false: the collide pass searches every boid's neighbours for overlaps, instead of
     // trusting what the boids kernel found (tests compare)
     bool collideShortcut = true;
+    // false: the contact rounds work out every agent in every round, instead of passing by
+    // those they would leave where they are (Collide.h; the result is the same; tests compare)
+    bool contactShortcut = true;
     bool walkKernel = true;     // false: walkers take the general steering path too (tests compare the two)
     // false: agents step in index order and the kernels' neighbour searches start from the
     // perception radius, instead of in the grid's order (fliers) from last step's
@@ -92,6 +96,8 @@ public:
     const ThreadTeam& team() const { return m_team; }
     // The wall-clock time the steps so far spent in each phase (PhaseTimes.h).
     const PhaseTimes& phaseTimes() const { return m_phaseTimes; }
+    // The contact rounds' work so far: the agents they went through, and those passed by.
+    const ContactRounds& contactRounds() const { return m_contactRounds; }
 
     // Positions are relative to origin(): add it (in double) for the scene's coordinates.
     std::span<const glm::vec3> positions() const { return m_agents.pos; }
@@ -271,6 +277,7 @@ private:
     std::uint64_t m_seed = 1;
     StepClock m_clock;
     PhaseTimes m_phaseTimes;  // wall-clock time per phase of the steps so far
+    ContactRounds m_contactRounds;  // the contact rounds' shortcut, and its work so far (Collide.h)
     ThreadTeam m_team;
     WorldTraffic m_traffic;
     WorldNav m_nav;

@@ -79,7 +79,8 @@ void World::stepOnce()
 
     // Collide: bodies still overlapping move apart, and on each decision the contact
     // rounds part those still pressed together (Collide.h).
-    collide(view(), m_brains, m_agents, m_move.boids().collideFree(), m_move.boids().slackM(), hasStatics);
+    collide(view(), m_brains, m_agents, m_move.boids().collideFree(), m_move.boids().slackM(), hasStatics,
+            m_contactRounds);
     m_phaseTimes.lap(StepPhase::Collide);
     // Traffic: walkers out of the heroes' way, behind their stop lines, off red crosswalks.
     m_traffic.afterCollide(view(), m_agents);

@@ -238,6 +238,10 @@ private slots:
             QVERIFY2(o.contains(key), key);
         QCOMPARE(o["agents_with_brain"].toInt(), 0);
         QCOMPARE(o["placed_in_grid_order"].toBool(), false);  // walkers keep their order
+        // Two-way walkers 0.6 m across, most of them not touching: the contact rounds pass
+        // most by, and not all (those meeting head-on).
+        const double passed = o["contact_rounds_passed_by"].toDouble(-1.0);
+        QVERIFY2(passed > 0.5 && passed < 1.0, qPrintable(QString::number(passed)));
         // Where the steps' time went: every phase, none negative, the move phase's above
         // zero and the brains' zero (the corridor has none), together within a step's time.
         const QJsonObject phases = o["phase_ms_per_step"].toObject();
