@@ -1,7 +1,7 @@
 #pragma once
 // A World stepped to its end state, and whether two such runs agree bit for bit, and a
 // packed flock to run: for the tests that prove a fast path changes nothing
-// (TestCollideShortcut, TestNeighbourSweep).
+// (TestCollideShortcut, TestContactShortcut, TestNeighbourSweep).
 
 #include "simcore/world/World.h"
 
@@ -41,16 +41,22 @@ inline void packOnLattice(sim::Scene& s, float spacingM, float jitterM = 0.0f, f
     }
 }
 
+// A World's state now, and the overlaps it has counted.
+inline RunBits bitsOf(const sim::World& w)
+{
+    return {{w.positions().begin(), w.positions().end()},
+            {w.velocities().begin(), w.velocities().end()},
+            {w.ups().begin(), w.ups().end()},
+            w.counters().overlappingPairs};
+}
+
 // The scene stepped `steps` times with these options.
 inline RunBits runToEnd(const sim::Scene& s, const sim::WorldOptions& options, int steps)
 {
     sim::World w(s, options);
     for (int k = 0; k < steps; ++k)
         w.step();
-    return {{w.positions().begin(), w.positions().end()},
-            {w.velocities().begin(), w.velocities().end()},
-            {w.ups().begin(), w.ups().end()},
-            w.counters().overlappingPairs};
+    return bitsOf(w);
 }
 
 }  // namespace throng::test

@@ -97,11 +97,7 @@ Run run(const Scene& s, bool shortcut, int threads, int steps)
     World w(s, o);
     for (int k = 0; k < steps; ++k)
         w.step();
-    return {{{w.positions().begin(), w.positions().end()},
-             {w.velocities().begin(), w.velocities().end()},
-             {w.ups().begin(), w.ups().end()},
-             w.counters().overlappingPairs},
-            w.contactRounds()};
+    return {throng::test::bitsOf(w), w.contactRounds()};
 }
 
 // Runs the scene without the shortcut (1 thread) and with it (1 and 2 threads): all three
