@@ -99,6 +99,10 @@ public:
     // The contact rounds' work so far: the agents they went through, and those passed by.
     const ContactRounds& contactRounds() const { return m_contactRounds; }
 
+    // How many neighbours each agent listed in its last step (at most kMaxNeighbours; 0 for
+    // one that had stopped): what its steering and avoidance, and the collide phase, went
+    // through.
+    std::span<const std::uint8_t> neighbourCounts() const { return m_agents.nearCount; }
     // Positions are relative to origin(): add it (in double) for the scene's coordinates.
     std::span<const glm::vec3> positions() const { return m_agents.pos; }
     // Where this World's coordinates start in the scene's: (0, 0, 0) unless the scene lies

@@ -6,6 +6,7 @@
 
 #include "simcore/scenarios/BenchScenarios.h"
 #include "simcore/world/World.h"
+#include "simcore/world/WorldState.h"
 
 #include <glm/geometric.hpp>
 
@@ -88,6 +89,49 @@ private slots:
         QCOMPARE(b.threads(), 2);
         QVERIFY(std::memcmp(a.positions().data(), b.positions().data(), a.agentCount() * sizeof(glm::vec3)) == 0);
         QVERIFY(std::memcmp(a.velocities().data(), b.velocities().data(), a.agentCount() * sizeof(glm::vec3)) == 0);
+    }
+
+    // World::neighbourCounts (what `bench --window` averages) against a recount from the
+    // state the step began with: each walker lists the others within its perception, at
+    // most 8, and one that had stopped on its goal lists none. On the rings at the start a
+    // walker has only its two ring neighbours within 4 m; in the middle it has 8; by the end
+    // some stand on their goals.
+    void neighbourCountsAreTheOthersWithinPerception()
+    {
+        const Scene scene = makeCrossScenario(1000);
+        const float perception = scene.agentTypes[0].perceptionM;
+        WorldOptions options;
+        options.threads = 2;
+        World world(scene, options);
+        const std::size_t n = world.agentCount();
+        std::uint64_t stepped = 0;
+        bool sawRing = false, sawCrowd = false, sawStopped = false;
+        for (const std::uint64_t at : {1, 480, 960, 3500}) {
+            for (; stepped + 1 < at; ++stepped)
+                world.step();
+            const WorldState state = world.saveState();
+            const std::vector<glm::vec3>& before = state.pos;
+            world.step();
+            ++stepped;
+            double sum = 0.0;
+            for (std::size_t i = 0; i < n; ++i) {
+                int within = 0;
+                for (std::size_t j = 0; j < n; ++j) {
+                    const glm::vec3 d = before[j] - before[i];
+                    within += j != i && glm::dot(d, d) <= perception * perception;
+                }
+                const int expected = state.stopped[i] ? 0 : std::min(within, int(World::kMaxNeighbours));
+                QVERIFY2(world.neighbourCounts()[i] == expected,
+                         qPrintable(QString("step %1, agent %2: listed %3, %4 within %5 m")
+                                        .arg(at).arg(i).arg(world.neighbourCounts()[i]).arg(within).arg(perception)));
+                sum += expected;
+                sawStopped = sawStopped || state.stopped[i];
+            }
+            sawRing = sawRing || (at == 1 && sum / double(n) < 2.5);
+            sawCrowd = sawCrowd || sum / double(n) > 6.0;
+            qInfo("step %llu: %.2f neighbours listed on average", (unsigned long long)at, sum / double(n));
+        }
+        QVERIFY2(sawRing && sawCrowd && sawStopped, "the checked steps missed the rings, the crowd or the stopped");
     }
 };
 
