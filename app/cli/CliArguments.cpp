@@ -86,7 +86,9 @@ std::string usageText()
            "                              DIR/wedge.json, and plot NAME (default arrived) in\n"
            "                              DIR/wedge.png; a failed variant's row says why\n"
            "  bench [--agents N] [--steps S] [--scenario flock|cross|cross-brain|army|corridor] [--threads T]\n"
-           "                              run a built-in scenario and print figures as JSON\n"
+           "        [--window W]          run a built-in scenario and print figures as JSON; with\n"
+           "                              --window, those of every W steps too (how the cost of a\n"
+           "                              step changes as the crowd gathers or spreads)\n"
            "  validate [DIR] [--json]     run the RiMEA tests (docs/validation.md) on the scenes in DIR\n"
            "                              (default: the source tree's resources/validation); exit 1\n"
            "                              when one fails\n"
@@ -162,6 +164,7 @@ ParseOutcome parseArguments(const std::vector<std::string>& argv)
         else if (arg == "--seed") count(a.seed, true);
         else if (arg == "--agents") count(a.agents, false);
         else if (arg == "--steps") count(a.steps, false);
+        else if (arg == "--window") count(a.window, false);
         else if (arg == "--threads") {
             std::optional<std::uint64_t> t;
             count(t, false);
@@ -261,6 +264,8 @@ ParseOutcome parseArguments(const std::vector<std::string>& argv)
     } else {
         out.error = "unknown command '" + a.command + "'";
     }
+    if (out.error.empty() && a.window && a.command != "bench")
+        out.error = "--window belongs to 'bench'";
     const bool wedge = a.command == "wedge" || a.command == "wedge-collect";
     if (out.error.empty() && !wedge &&
         (!a.seeds.empty() || !a.outDir.empty() || a.jobs > 0 || !a.metric.empty() || a.slurm))

@@ -24,6 +24,7 @@ struct CliArguments {
     std::string scene;    // check, run, wedge: the scene; validate: the folder of validation scenes;
                           // wedge-collect: the wedge's folder
     std::optional<std::uint64_t> frames, seed, agents, steps;
+    std::optional<std::uint64_t> window;  // bench: the figures of every `window` steps as well
     int threads = 0;
     std::string statsPath, scenario;
     std::string reportPath;  // run: the analysis as one HTML file (report/HtmlReport.h)

@@ -13,6 +13,9 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <algorithm>
+#include <cmath>
+
 using throng::test::runCli;
 
 namespace {
@@ -254,6 +257,53 @@ private slots:
         QVERIFY(phases["move"].toDouble() > 0.0);
         QCOMPARE(phases["brain"].toDouble(), 0.0);
         QVERIFY2(sum <= o["ms_per_step"].toDouble(), qPrintable(QString::number(sum)));
+        QVERIFY(!o.contains("windows"));  // only with --window
+    }
+
+    // bench --window: the run cut into windows of steps, each with its own figures, which
+    // add up to the run's. The cross's walkers start with their two ring neighbours within
+    // perception, and list more as the rings close in on the middle.
+    void benchPrintsWindows()
+    {
+        const auto r = runCli({"bench", "--agents", "2000", "--steps", "500", "--window", "120", "--scenario", "cross",
+                               "--threads", "2", "--quiet"});
+        QCOMPARE(r.status, 0);
+        const QJsonObject o = QJsonDocument::fromJson(QByteArray::fromStdString(r.out)).object();
+        const QJsonArray windows = o["windows"].toArray();
+        QCOMPARE(windows.size(), 5);  // 4 x 120 steps and the last 20
+        int next = 0;
+        double seconds = 0.0, overlaps = 0.0, firstNeighbours = 0.0, lastNeighbours = 0.0;
+        for (const QJsonValue& value : windows) {
+            const QJsonObject w = value.toObject();
+            QCOMPARE(w["first_step"].toInt(), next);
+            const int steps = w["steps"].toInt();
+            QCOMPARE(steps, std::min(120, 500 - next));
+            next += steps;
+            const double ms = w["ms_per_step"].toDouble();
+            QVERIFY(ms > 0.0);
+            seconds += ms * steps / 1000.0;
+            overlaps += w["overlapping_pairs_per_step"].toDouble() * steps;
+            const QJsonObject phases = w["phase_ms_per_step"].toObject();
+            QCOMPARE(phases.size(), 9);
+            double sum = 0.0;
+            for (const QString& key : phases.keys()) {
+                QVERIFY2(phases[key].toDouble() >= 0.0, qPrintable(key));
+                sum += phases[key].toDouble();
+            }
+            QVERIFY(phases["move"].toDouble() > 0.0);
+            QVERIFY2(sum <= ms, qPrintable(QString("%1 > %2").arg(sum).arg(ms)));
+            const double neighbours = w["mean_neighbours"].toDouble(-1.0);
+            QVERIFY2(neighbours >= 0.0 && neighbours <= 8.0, qPrintable(QString::number(neighbours)));
+            firstNeighbours = next == steps ? neighbours : firstNeighbours;
+            lastNeighbours = neighbours;
+        }
+        QCOMPARE(next, 500);
+        // The windows' time is the run's (the run's leaves out what the windows' figures took).
+        QVERIFY2(std::abs(seconds - o["seconds"].toDouble()) <= 0.05 * o["seconds"].toDouble(),
+                 qPrintable(QString("%1 against %2").arg(seconds).arg(o["seconds"].toDouble())));
+        QVERIFY(std::abs(overlaps - o["overlapping_pairs_per_step"].toDouble() * 500) < 1e-6);
+        QVERIFY2(firstNeighbours > 1.9 && firstNeighbours < 2.5, qPrintable(QString::number(firstNeighbours)));
+        QVERIFY2(lastNeighbours > firstNeighbours + 1.0, qPrintable(QString::number(lastNeighbours)));
     }
 
     // `run` stores 70,000 placed birds (at least kGridOrderFrom) in the grid's order, and
