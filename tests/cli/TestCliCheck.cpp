@@ -160,8 +160,10 @@ agents: [{type: w, position: [0, 0]}]
         QTest::newRow("two scenes") << QStringList{"check", "a.yaml", "b.yaml"} << "exactly one SCENE";
         QTest::newRow("run option on check") << QStringList{"check", "a.yaml", "--stats", "s.json"} << "belong to 'run'";
         QTest::newRow("unknown scenario") << QStringList{"bench", "--scenario", "zoo", "--quiet"} << "unknown scenario";
-        QTest::newRow("window of 0") << QStringList{"bench", "--window", "0", "--quiet"} << "--window needs a whole number >= 1";
-        QTest::newRow("window on run") << QStringList{"run", "x.yaml", "--window", "10"} << "--window belongs to 'bench'";
+        QTest::newRow("window of 0") << QStringList{"bench", "--window", "0", "--quiet"}
+                                     << "--window needs a whole number >= 1";
+        QTest::newRow("window on run") << QStringList{"run", "x.yaml", "--window", "10"}
+                                       << "--window belongs to 'bench'";
     }
 
     void usageErrors()
