@@ -177,119 +177,122 @@ void WalkKernel::stepAgent(const StepView& view, const BrainPhase& brains, Agent
     const std::size_t count = gathered ? agents.nearCount[i] : best.count;
     agents.nearCount[i] = std::uint8_t(count);
 
-    // One pass over the neighbours: separation's push (separate), the soonest threat
-    // (avoidUnalignedCollisions), and the planar neighbours and oncoming walkers of
-    // reciprocal avoidance (avoidReciprocally (Steer.h)).
-    const float r = nonNegative(radius), range = w.range, maxForce = w.maxForce;
-    const float horizon = w.horizonS;
-    const bool unaligned = w.wUnaligned > 0.0f && horizon > kTiny;
-    glm::vec3 push(0.0f);
-    behave::SeparationFloor floor;
-    behave::SoonestApproach threat;  // its `who`: the neighbour's index
-    UninitialisedArray<PlanarNeighbour, kMaxNeighbours> others;  // the first `count` are written, and read
-    std::size_t oncoming = 0;
-    bool oncomingInTheWayAhead = false;  // keeping right (KeepRight.h), as the general path (MovePhase.cpp)
-    const glm::vec2 fwd2 = xz(fwd), p2 = xz(p);
     std::uint32_t* nearIndex = &agents.nearIndex[i * k];
-    for (std::size_t n = 0; n < count; ++n) {
-        const auto j = gathered ? nearIndex[n] : best.index(n, view.ties);
-        nearIndex[n] = j;
-        const glm::vec3 q = agents.pos[j], vj = agents.vel[j];
-        const float rj = agents.radius[j];
-        if (w.wSeparation > 0.0f) {
-            // The squared distance is the search key's (the same dot product, negated offset).
-            const float contact = r + nonNegative(rj);
-            const glm::vec3 offset = q - p;
-            const float d = std::sqrt(gathered ? glm::dot(offset, offset) + 0.0f
-                                               : std::bit_cast<float>(std::uint32_t(best.keys[n] >> 32)));
-            behave::addSeparation(push, floor, p - q, d, contact, range, maxForce, w.damping, v - vj,
-                                  [&] { return separationAxis(id, agents.info[j].id); });
-        }
-        if (unaligned)
-            threat.consider(q - p, vj - v, horizon, r + nonNegative(rj) + w.marginM, agents.info[j].id, j);
-        if (w.keepRight > 0.0f && !oncomingInTheWayAhead)
-            oncomingInTheWayAhead = oncomingInTheWay(p, fwd, radius, q, agents.fwd[j], vj, rj);
-        if (w.reciprocal) {
-            const bool stopped = agents.stopped[j] != 0;
-            PlanarNeighbour& o = others[n];
-            o = {xz(q), xz(vj), rj, stopped ? 1.0f : 0.5f};
-            oncoming += comesTheOtherWay(p2, fwd2, o.position, xz(agents.fwd[j]), stopped);
-        }
-    }
-
-    // Steer: steer's (Steer.h) requests in its order, blended (blendWeighted), each weighted
-    // by the type and the agent's brain (requestBehaviours, Steer.cpp).
-    const bool hasGoal = agents.goal[i] >= 0;
-    WeightedBlend blend;  // blendWeighted's sum (SteeringCombination.h), request by request
-    auto add = [&](glm::vec3 force, float weight) { blend.add(force, weight); };
-    auto brainWeight = [&](Behaviour b) { return kBrain ? brain.weight(b) : 1.0f; };
-    // Where seek and arrival aim: the goal's spot for this agent, or its navigation target (navGoal).
-    const glm::vec3 goal = !hasGoal ? p + fwd
-                           : view.nav.active && view.nav.hasTarget[i]
-                               ? glm::vec3(view.nav.target[i].x, p.y, view.nav.target[i].y)
-                               : glm::vec3(agents.goalSpot[i].x, p.y, agents.goalSpot[i].y);
-    const float speedNow = glm::length(v);
-    if (w.wContainment > 0.0f &&
-        ContainmentBehaviour::probesReach(p, speedNow, radius, view.set.bounds, s.containment, false))
-        add(stayInside(steeringAgent(agents, view.types, i), view.set.bounds, s.containment),
-            w.wContainment * brainWeight(Behaviour::Containment));
-    if (w.aroundStatics) {
-        // Wall following and obstacle avoidance: steer's own requests (Steer.cpp).
-        SteeringRequestList around;
-        steerAroundStatics(view, brains, i, steeringAgent(agents, view.types, i), goal, around);
-        for (const SteeringRequest& request : around.requests())
-            add(request.force, request.weight);
-    }
-    if (w.wSeparation > 0.0f)
-        add(push, w.wSeparation * brainWeight(Behaviour::Separation));
-    if (w.wUnaligned > 0.0f) {
-        const glm::vec3 force = threat.found() ? behave::avoidSoonest(v, fwd, agents.up[i], threat,
-                                                                      agents.vel[threat.who], agents.fwd[threat.who],
-                                                                      horizon, s.unaligned.headOnCosine, w.brake,
-                                                                      maxForce)
-                                               : glm::vec3(0.0f);
-        add(force, w.wUnaligned * brainWeight(Behaviour::UnalignedCollisionAvoidance));
-    }
-    if (hasGoal && w.wArrival > 0.0f) {
-        // Arrival (ArrivalBehaviour): through an exit at full speed, it is walked through.
-        const float slowing =
-            view.walksThroughGoal(i) ? ArrivalBehaviour::kThroughSlowingM : s.arrival.slowingDistanceM;
-        const glm::vec3 desired = behave::arrivalDesired(goal - p, maxSpeed, slowing, s.arrival.toleranceM);
-        add(towardsVelocity(v, desired, w.gainArrival, maxForce), w.wArrival * brainWeight(Behaviour::Arrival));
-    }
-    if (hasGoal && w.wSeek > 0.0f)
-        add(towardsVelocity(v, behave::seekVelocity(finiteOrZero(goal - p), nonNegative(maxSpeed)), w.gainSeek,
-                            maxForce),
-            w.wSeek * brainWeight(Behaviour::Seek));
+    // Between decisions (StepRate.h) the force decided last holds and wander stands still:
+    // nothing is steered or avoided, and of the neighbours only the list is kept, which the
+    // collide pass reads (Collide.cpp).
+    glm::vec3 force = agents.heldForce[i];
     WanderState wanderNext = agents.wander[i];
-    if (w.wWander > 0.0f) {
-        const WanderResult result = wander(steeringAgent(agents, view.types, i), agents.wander[i],
-                                           wanderDraws(view.seed, id, view.clock.step), s.wander);
-        wanderNext = result.state;
-        add(result.force, w.wWander * brainWeight(Behaviour::Wander));
-    }
-    // A walker with nowhere to go comes to rest (as in steer, Steer.h).
-    if (!hasGoal && agents.leader[i] < 0 && !(w.wWander > 0.0f))
-        add(standStillForce(v, t.mass), 1.0f);
-    // The brain's turn, as the general path adds it (MovePhase.cpp); its speed cap reads the
-    // same old state below.
-    const glm::vec3 turn = kBrain ? brain.turnForce(fwd, v, t.mass) : glm::vec3(0.0f);
-    glm::vec3 force = blend.total(t.maxForce) + turn;
-    if (oncomingInTheWayAhead)
-        force += keepRightForce(fwd, t.maxForce, w.keepRight);
-
-    // Avoid: the velocity the blend asks for becomes the nearest that touches no neighbour
-    // within the horizon (avoidReciprocally (Steer.h) between equals).
-    // (Between decisions the force held replaces it below: no avoidance is worked out.)
-    if (w.reciprocal && view.clock.decide && t.mass > 0.0f && view.clock.decideDt > 0.0f)
-        force = reciprocalForce({p2, xz(v), radius, maxSpeed}, t.mass, force, {others.data(), count}, oncoming,
-                                s.keepRightTurn, view.clock.decideDt, s.reciprocal);
-    // Between decisions (StepRate.h) the force decided last holds, and wander stands still.
-    if (view.clock.decide) {
-        agents.heldForce[i] = force;
+    if (!view.clock.decide) {
+        if (!gathered)
+            for (std::size_t n = 0; n < count; ++n)
+                nearIndex[n] = best.index(n, view.ties);
     } else {
-        force = agents.heldForce[i];
-        wanderNext = agents.wander[i];
+        // One pass over the neighbours: separation's push (separate), the soonest threat
+        // (avoidUnalignedCollisions), and the planar neighbours and oncoming walkers of
+        // reciprocal avoidance (avoidReciprocally (Steer.h)).
+        const float r = nonNegative(radius), range = w.range, maxForce = w.maxForce;
+        const float horizon = w.horizonS;
+        const bool unaligned = w.wUnaligned > 0.0f && horizon > kTiny;
+        glm::vec3 push(0.0f);
+        behave::SeparationFloor floor;
+        behave::SoonestApproach threat;  // its `who`: the neighbour's index
+        UninitialisedArray<PlanarNeighbour, kMaxNeighbours> others;  // the first `count` are written, and read
+        std::size_t oncoming = 0;
+        bool oncomingInTheWayAhead = false;  // keeping right (KeepRight.h), as the general path (MovePhase.cpp)
+        const glm::vec2 fwd2 = xz(fwd), p2 = xz(p);
+        for (std::size_t n = 0; n < count; ++n) {
+            const auto j = gathered ? nearIndex[n] : best.index(n, view.ties);
+            nearIndex[n] = j;
+            const glm::vec3 q = agents.pos[j], vj = agents.vel[j];
+            const float rj = agents.radius[j];
+            if (w.wSeparation > 0.0f) {
+                // The squared distance is the search key's (the same dot product, negated offset).
+                const float contact = r + nonNegative(rj);
+                const glm::vec3 offset = q - p;
+                const float d = std::sqrt(gathered ? glm::dot(offset, offset) + 0.0f
+                                                   : std::bit_cast<float>(std::uint32_t(best.keys[n] >> 32)));
+                behave::addSeparation(push, floor, p - q, d, contact, range, maxForce, w.damping, v - vj,
+                                      [&] { return separationAxis(id, agents.info[j].id); });
+            }
+            if (unaligned)
+                threat.consider(q - p, vj - v, horizon, r + nonNegative(rj) + w.marginM, agents.info[j].id, j);
+            if (w.keepRight > 0.0f && !oncomingInTheWayAhead)
+                oncomingInTheWayAhead = oncomingInTheWay(p, fwd, radius, q, agents.fwd[j], vj, rj);
+            if (w.reciprocal) {
+                const bool stopped = agents.stopped[j] != 0;
+                PlanarNeighbour& o = others[n];
+                o = {xz(q), xz(vj), rj, stopped ? 1.0f : 0.5f};
+                oncoming += comesTheOtherWay(p2, fwd2, o.position, xz(agents.fwd[j]), stopped);
+            }
+        }
+
+        // Steer: steer's (Steer.h) requests in its order, blended (blendWeighted), each weighted
+        // by the type and the agent's brain (requestBehaviours, Steer.cpp).
+        const bool hasGoal = agents.goal[i] >= 0;
+        WeightedBlend blend;  // blendWeighted's sum (SteeringCombination.h), request by request
+        auto add = [&](glm::vec3 request, float weight) { blend.add(request, weight); };
+        auto brainWeight = [&](Behaviour b) { return kBrain ? brain.weight(b) : 1.0f; };
+        // Where seek and arrival aim: the goal's spot for this agent, or its navigation target (navGoal).
+        const glm::vec3 goal = !hasGoal ? p + fwd
+                               : view.nav.active && view.nav.hasTarget[i]
+                                   ? glm::vec3(view.nav.target[i].x, p.y, view.nav.target[i].y)
+                                   : glm::vec3(agents.goalSpot[i].x, p.y, agents.goalSpot[i].y);
+        const float speedNow = glm::length(v);
+        if (w.wContainment > 0.0f &&
+            ContainmentBehaviour::probesReach(p, speedNow, radius, view.set.bounds, s.containment, false))
+            add(stayInside(steeringAgent(agents, view.types, i), view.set.bounds, s.containment),
+                w.wContainment * brainWeight(Behaviour::Containment));
+        if (w.aroundStatics) {
+            // Wall following and obstacle avoidance: steer's own requests (Steer.cpp).
+            SteeringRequestList around;
+            steerAroundStatics(view, brains, i, steeringAgent(agents, view.types, i), goal, around);
+            for (const SteeringRequest& request : around.requests())
+                add(request.force, request.weight);
+        }
+        if (w.wSeparation > 0.0f)
+            add(push, w.wSeparation * brainWeight(Behaviour::Separation));
+        if (w.wUnaligned > 0.0f) {
+            const glm::vec3 dodge =
+                threat.found() ? behave::avoidSoonest(v, fwd, agents.up[i], threat, agents.vel[threat.who],
+                                                      agents.fwd[threat.who], horizon, s.unaligned.headOnCosine,
+                                                      w.brake, maxForce)
+                               : glm::vec3(0.0f);
+            add(dodge, w.wUnaligned * brainWeight(Behaviour::UnalignedCollisionAvoidance));
+        }
+        if (hasGoal && w.wArrival > 0.0f) {
+            // Arrival (ArrivalBehaviour): through an exit at full speed, it is walked through.
+            const float slowing =
+                view.walksThroughGoal(i) ? ArrivalBehaviour::kThroughSlowingM : s.arrival.slowingDistanceM;
+            const glm::vec3 desired = behave::arrivalDesired(goal - p, maxSpeed, slowing, s.arrival.toleranceM);
+            add(towardsVelocity(v, desired, w.gainArrival, maxForce), w.wArrival * brainWeight(Behaviour::Arrival));
+        }
+        if (hasGoal && w.wSeek > 0.0f)
+            add(towardsVelocity(v, behave::seekVelocity(finiteOrZero(goal - p), nonNegative(maxSpeed)), w.gainSeek,
+                                maxForce),
+                w.wSeek * brainWeight(Behaviour::Seek));
+        if (w.wWander > 0.0f) {
+            const WanderResult result = wander(steeringAgent(agents, view.types, i), agents.wander[i],
+                                               wanderDraws(view.seed, id, view.clock.step), s.wander);
+            wanderNext = result.state;
+            add(result.force, w.wWander * brainWeight(Behaviour::Wander));
+        }
+        // A walker with nowhere to go comes to rest (as in steer, Steer.h).
+        if (!hasGoal && agents.leader[i] < 0 && !(w.wWander > 0.0f))
+            add(standStillForce(v, t.mass), 1.0f);
+        // The brain's turn, as the general path adds it (MovePhase.cpp); its speed cap reads the
+        // same old state below.
+        const glm::vec3 turn = kBrain ? brain.turnForce(fwd, v, t.mass) : glm::vec3(0.0f);
+        force = blend.total(t.maxForce) + turn;
+        if (oncomingInTheWayAhead)
+            force += keepRightForce(fwd, t.maxForce, w.keepRight);
+
+        // Avoid: the velocity the blend asks for becomes the nearest that touches no neighbour
+        // within the horizon (avoidReciprocally (Steer.h) between equals).
+        if (w.reciprocal && t.mass > 0.0f && view.clock.decideDt > 0.0f)
+            force = reciprocalForce({p2, xz(v), radius, maxSpeed}, t.mass, force, {others.data(), count}, oncoming,
+                                    s.keepRightTurn, view.clock.decideDt, s.reciprocal);
+        agents.heldForce[i] = force;
     }
 
     // Integrate: integrateVehicle's walker step (groundMove, VehicleModel.cpp) on a finite
