@@ -32,16 +32,6 @@ namespace {
 using detail::AssimpScene;
 using detail::toAssimp;
 
-std::string checkFbxInput(const sim::Scene& scene, const sim::FrameCache& cache, const FbxOptions& options)
-{
-    if (std::string error = detail::checkCrowdInput(scene, cache, options.path, {".fbx"}, options.jointFrameStep);
-        !error.empty())
-        return error;
-    if (!(options.positionToleranceM >= 0.0f))
-        return "cannot export '" + options.path + "': key tolerances must be >= 0";
-    return {};
-}
-
 glm::mat4 trs(glm::vec3 t, glm::quat r, glm::vec3 s)
 {
     return glm::translate(glm::mat4(1.0f), t) * glm::mat4_cast(r) * glm::scale(glm::mat4(1.0f), s);
@@ -167,42 +157,26 @@ void FbxAgents::add(std::size_t i, const detail::AgentWork& w)
 ExportResult exportFbx(const sim::Scene& scene, const sim::FrameCache& cache, const FbxOptions& options,
                        const ProgressFn& progress)
 {
+    detail::CrowdStart start;
+    if (std::optional<ExportResult> ended = detail::startCrowd(
+            detail::checkCrowdInput(scene, cache, options.path, {".fbx"}, options.jointFrameStep,
+                                    {options.positionToleranceM}),
+            scene, cache, options, progress, start))
+        return *ended;
     ExportResult result;
-    if (std::string error = checkFbxInput(scene, cache, options); !error.empty()) {
-        result.error = std::move(error);
-        return result;
-    }
-    if (detail::cancelledAt(progress, 0.0f))
-        return detail::cancelledExport(options.path);
-
-    CharacterLibrary library;
-    result.error = detail::resolveCharacters(scene, cache, options.lod, options.sceneDirectory, options.path, library);
-    if (!result.error.empty())
-        return result;
-    const std::uint64_t seed = options.seed.value_or(scene.settings.seed);
     const std::size_t frames = cache.frameCount(), agents = cache.agentCount();
-    const std::vector<float> times = detail::frameTimes(cache);
-    const detail::JointClock jointClock = detail::jointFrames(times, options.jointFrameStep);
     // Rotations are keyed on every joint frame (Euler angles do not interpolate): the
     // tolerances only decide what the baker keeps, which this writer does not read.
-    const detail::AgentBaker baker(scene, cache, library, seed, times, jointClock,
+    const detail::AgentBaker baker(scene, cache, start.library, start.seed, start.times, start.jointClock,
                                    {.compact = false, .positionToleranceM = options.positionToleranceM});
 
     AssimpScene out;
     const glm::dvec3 origin = cache.origin();
     aiNode* crowd = out.addNode(nullptr, "Crowd", toAssimp(glm::translate(glm::mat4(1.0f), glm::vec3(origin))));
-    FbxAgents writer(out, crowd, scene, cache, library, seed, jointClock);
-    const sim::ThreadTeam team(options.threads);
-    constexpr std::size_t kBlock = 256;
-    std::vector<detail::AgentWork> work(kBlock);
-    for (std::size_t begin = 0; begin < agents; begin += kBlock) {
-        if (detail::cancelledAt(progress, 0.6f * static_cast<float>(begin) / static_cast<float>(agents)))
-            return detail::cancelledExport(options.path);
-        const std::size_t count = std::min(kBlock, agents - begin);
-        team.forEach(count, 4, [&](std::size_t k) { baker.prepare(begin + k, work[k], true); });
-        for (std::size_t k = 0; k < count; ++k)
-            writer.add(begin + k, work[k]);
-    }
+    FbxAgents writer(out, crowd, scene, cache, start.library, start.seed, start.jointClock);
+    if (!detail::bakeInOrder(baker, agents, true, sim::ThreadTeam(options.threads), progress, 0.0f, 0.6f,
+                             [&](std::size_t i, const detail::AgentWork& w) { writer.add(i, w); }))
+        return detail::cancelledExport(options.path);
     if (options.includeSet)
         detail::addAssimpSet(out, crowd, scene, glm::dvec2(origin.x, origin.z), frames, cache.fps(),
                              options.firstFrame);

@@ -34,8 +34,6 @@ static_assert(std::endian::native == std::endian::little, "glTF buffers are litt
 
 constexpr float kDegToRad = 3.14159265358979f / 180.0f;
 
-using detail::failedExport;
-
 using detail::AgentWork;
 
 tinygltf::Value runExtras(const sim::FrameCache& cache, const GltfOptions& options, std::uint64_t seed)
@@ -71,17 +69,6 @@ tinygltf::Value agentExtras(const sim::AgentInfo& info, const std::string& type,
     if (!worn.empty())
         extras["wears"] = tinygltf::Value(std::move(worn));
     return tinygltf::Value(std::move(extras));
-}
-
-std::string checkInput(const sim::Scene& scene, const sim::FrameCache& cache, const GltfOptions& options)
-{
-    if (std::string error = detail::checkCrowdInput(scene, cache, options.path, {}, options.jointFrameStep);
-        !error.empty())
-        return error;
-    if (!(options.positionToleranceM >= 0.0f) || !(options.rotationToleranceDeg >= 0.0f) ||
-        !(options.rootRotationToleranceDeg >= 0.0f))
-        return "cannot export '" + options.path + "': key tolerances must be >= 0";
-    return {};
 }
 
 detail::Clock makeClock(detail::GltfBuilder& b, std::vector<float> times)
@@ -154,18 +141,15 @@ void moveRootsToOrigin(tinygltf::Model& model, glm::dvec3 origin)
 ExportResult exportGltf(const sim::Scene& scene, const sim::FrameCache& cache, const GltfOptions& options,
                         const ProgressFn& progress, GltfExportStats* stats)
 {
-    if (std::string error = checkInput(scene, cache, options); !error.empty())
-        return failedExport(std::move(error));
-    if (detail::cancelledAt(progress, 0.0f))
-        return detail::cancelledExport(options.path);
-
-    CharacterLibrary library;
-    if (std::string error =
-            detail::resolveCharacters(scene, cache, options.lod, options.sceneDirectory, options.path, library);
-        !error.empty())
-        return failedExport(std::move(error));
-
-    const std::uint64_t seed = options.seed.value_or(scene.settings.seed);
+    detail::CrowdStart start;
+    if (std::optional<ExportResult> ended = detail::startCrowd(
+            detail::checkCrowdInput(scene, cache, options.path, {}, options.jointFrameStep,
+                                    {options.positionToleranceM, options.rotationToleranceDeg,
+                                     options.rootRotationToleranceDeg}),
+            scene, cache, options, progress, start))
+        return *ended;
+    const CharacterLibrary& library = start.library;
+    const std::uint64_t seed = start.seed;
     const std::size_t frames = cache.frameCount(), agents = cache.agentCount();
     const float fps = cache.fps();
     // One frame leaves nothing to window: the exact bake serves it.
@@ -187,11 +171,11 @@ ExportResult exportGltf(const sim::Scene& scene, const sim::FrameCache& cache, c
 
     builder.beginAnimationData();
     builder.setUse(detail::GltfBuilder::Use::Clocks);
-    const std::vector<float> allTimes = detail::frameTimes(cache);
+    const std::vector<float>& allTimes = start.times;
     const detail::Clock frameClock = makeClock(builder, allTimes);
     const detail::Clock pairClock =
         frames >= 2 ? makeClock(builder, {0.0f, allTimes.back()}) : frameClock;
-    detail::JointClock jointClock = detail::jointFrames(allTimes, options.jointFrameStep);
+    detail::JointClock& jointClock = start.jointClock;
     jointClock.clock = jointClock.frames.size() == frames ? frameClock
                                                           : makeClock(builder, std::move(jointClock.clock.times));
 
@@ -220,85 +204,71 @@ ExportResult exportGltf(const sim::Scene& scene, const sim::FrameCache& cache, c
                                     .rotationToleranceRad = options.rotationToleranceDeg * kDegToRad,
                                     .rootRotationToleranceRad = options.rootRotationToleranceDeg * kDegToRad});
     const sim::ThreadTeam team(options.threads);
-    auto forBlock = [&](std::size_t begin, std::size_t count, std::vector<AgentWork>& work, bool bakeJoints) {
-        team.forEach(count, 4, [&](std::size_t k) { baker.prepare(begin + k, work[k], bakeJoints); });
-    };
-    constexpr std::size_t kBlock = 256;
-    std::vector<AgentWork> work(kBlock);
 
     std::vector<detail::CompactPlan> plans;
     if (compact) {
         plans.reserve(agents);
         builder.setUse(detail::GltfBuilder::Use::Joints);
-        for (std::size_t begin = 0; begin < agents; begin += kBlock) {
-            if (detail::cancelledAt(progress, 0.2f * static_cast<float>(begin) / static_cast<float>(agents)))
-                return detail::cancelledExport(options.path);
-            const std::size_t count = std::min(kBlock, agents - begin);
-            forBlock(begin, count, work, false);
-            for (std::size_t k = 0; k < count; ++k)
-                plans.push_back(cycles.plan(work[k].character, work[k].positions, work[k].gait, work[k].variation, fps));
-        }
+        if (!detail::bakeInOrder(baker, agents, false, team, progress, 0.0f, 0.2f,
+                                 [&](std::size_t, const AgentWork& w) {
+                                     plans.push_back(cycles.plan(w.character, w.positions, w.gait, w.variation, fps));
+                                 }))
+            return detail::cancelledExport(options.path);
         cycles.writeBanks();
     }
 
-    const float start = compact ? 0.2f : 0.0f;
-    for (std::size_t begin = 0; begin < agents; begin += kBlock) {
-        if (detail::cancelledAt(progress, start + (0.8f - start) * static_cast<float>(begin) / static_cast<float>(agents)))
-            return detail::cancelledExport(options.path);
-        const std::size_t count = std::min(kBlock, agents - begin);
-        forBlock(begin, count, work, true);
-        for (std::size_t k = 0; k < count; ++k) {
-            const std::size_t i = begin + k;
-            const AgentWork& w = work[k];
-            const sim::AgentInfo& info = cache.agents()[i];
-            const sim::AgentType& type = scene.agentTypes[info.typeIndex];
-            const Character& character = library.character(w.character);
-            if (!assets.count(w.character)) {
-                builder.setUse(detail::GltfBuilder::Use::Geometry);
-                assets[w.character] = detail::writeCharacterAssets(builder, character);
-            }
-            detail::AgentRigSpec spec;
-            spec.name = "agent_" + std::to_string(info.id) + "_" + type.name;
-            for (const MeshPart& part : partsOf(character.mesh)) {
-                const auto colour = static_cast<int>(w.variation.colour[static_cast<std::size_t>(part.slot)]);
-                if (!wearsPart(part, seed, info.id))
-                    spec.partMaterials.push_back(-1);
-                else if (slotPalette(part.slot).empty())  // the top and a whole body wear the tint
-                    spec.partMaterials.push_back(materialFor(model, materials, type, info.typeIndex, w.variation.tint));
-                else
-                    spec.partMaterials.push_back(slotMaterial(model, slotMaterials, part.slot, colour));
-            }
-            spec.heightScale = w.variation.heightScale;
-            spec.translation = w.positions[0];
-            spec.rotation = w.yaw[0];
-            spec.extras = agentExtras(info, type.name, character, w.variation, seed);
-            const detail::AgentRig rig = detail::addAgentRig(model, character, assets[w.character], spec, w.firstPose);
-
-            channels.nextAgent();
-            builder.setUse(detail::GltfBuilder::Use::RootMotion);
-            channels.vec3Channel(rig.root, "translation", frameClock, w.positions, w.positionKept);
-            channels.rotationChannel(rig.root, w.yaw, frameClock, w.yawKept);
-            if (std::find(w.hidden.begin(), w.hidden.end(), 1) != w.hidden.end()) {
-                // Gone through an exit or not present: the whole character scales to
-                // nothing on those frames (STEP, so it never shrinks visibly on the way).
-                const glm::vec3 shown(w.variation.heightScale);
-                std::vector<float> times;
-                std::vector<glm::vec3> scales;
-                for (std::size_t f = 0; f < frames; ++f) {
-                    if (f > 0 && w.hidden[f] == w.hidden[f - 1])
-                        continue;
-                    times.push_back(frameClock.times[f]);
-                    scales.push_back(w.hidden[f] ? glm::vec3(0.0f) : shown);
-                }
-                channels.addSampler(rig.root, "scale", builder.addTimes(times), builder.addVec3Keys(scales), "STEP");
-            }
-            builder.setUse(detail::GltfBuilder::Use::Joints);
-            if (compact)
-                cycles.bakeAgent(channels, plans[i], rig, pairClock.accessor);
-            else
-                detail::writeJoints(channels, jointClock, w.joints, rig);
+    // Each agent's rig, materials, root motion and joints, in agent order.
+    auto writeAgent = [&](std::size_t i, const AgentWork& w) {
+        const sim::AgentInfo& info = cache.agents()[i];
+        const sim::AgentType& type = scene.agentTypes[info.typeIndex];
+        const Character& character = library.character(w.character);
+        if (!assets.count(w.character)) {
+            builder.setUse(detail::GltfBuilder::Use::Geometry);
+            assets[w.character] = detail::writeCharacterAssets(builder, character);
         }
-    }
+        detail::AgentRigSpec spec;
+        spec.name = "agent_" + std::to_string(info.id) + "_" + type.name;
+        for (const MeshPart& part : partsOf(character.mesh)) {
+            const auto colour = static_cast<int>(w.variation.colour[static_cast<std::size_t>(part.slot)]);
+            if (!wearsPart(part, seed, info.id))
+                spec.partMaterials.push_back(-1);
+            else if (slotPalette(part.slot).empty())  // the top and a whole body wear the tint
+                spec.partMaterials.push_back(materialFor(model, materials, type, info.typeIndex, w.variation.tint));
+            else
+                spec.partMaterials.push_back(slotMaterial(model, slotMaterials, part.slot, colour));
+        }
+        spec.heightScale = w.variation.heightScale;
+        spec.translation = w.positions[0];
+        spec.rotation = w.yaw[0];
+        spec.extras = agentExtras(info, type.name, character, w.variation, seed);
+        const detail::AgentRig rig = detail::addAgentRig(model, character, assets[w.character], spec, w.firstPose);
+
+        channels.nextAgent();
+        builder.setUse(detail::GltfBuilder::Use::RootMotion);
+        channels.vec3Channel(rig.root, "translation", frameClock, w.positions, w.positionKept);
+        channels.rotationChannel(rig.root, w.yaw, frameClock, w.yawKept);
+        if (std::find(w.hidden.begin(), w.hidden.end(), 1) != w.hidden.end()) {
+            // Gone through an exit or not present: the whole character scales to
+            // nothing on those frames (STEP, so it never shrinks visibly on the way).
+            const glm::vec3 shown(w.variation.heightScale);
+            std::vector<float> times;
+            std::vector<glm::vec3> scales;
+            for (std::size_t f = 0; f < frames; ++f) {
+                if (f > 0 && w.hidden[f] == w.hidden[f - 1])
+                    continue;
+                times.push_back(frameClock.times[f]);
+                scales.push_back(w.hidden[f] ? glm::vec3(0.0f) : shown);
+            }
+            channels.addSampler(rig.root, "scale", builder.addTimes(times), builder.addVec3Keys(scales), "STEP");
+        }
+        builder.setUse(detail::GltfBuilder::Use::Joints);
+        if (compact)
+            cycles.bakeAgent(channels, plans[i], rig, pairClock.accessor);
+        else
+            detail::writeJoints(channels, jointClock, w.joints, rig);
+    };
+    if (!detail::bakeInOrder(baker, agents, true, team, progress, compact ? 0.2f : 0.0f, 0.8f, writeAgent))
+        return detail::cancelledExport(options.path);
     if (options.includeSet) {
         builder.setUse(detail::GltfBuilder::Use::Geometry);
         detail::addSetNodes(builder, channels, scene, glm::dvec2(cache.origin().x, cache.origin().z), frameClock, fps,

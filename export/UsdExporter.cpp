@@ -38,17 +38,6 @@ const std::string kCrowd = "/Crowd";
 const std::string kCharacters = kCrowd + "/Characters";
 const std::string kMaterials = kCrowd + "/Materials";
 
-std::string checkUsdInput(const sim::Scene& scene, const sim::FrameCache& cache, const UsdOptions& options)
-{
-    if (std::string error = detail::checkCrowdInput(scene, cache, options.path, {".usda"}, options.jointFrameStep);
-        !error.empty())
-        return error;
-    if (!(options.positionToleranceM >= 0.0f) || !(options.rotationToleranceDeg >= 0.0f) ||
-        !(options.rootRotationToleranceDeg >= 0.0f))
-        return "cannot export '" + options.path + "': key tolerances must be >= 0";
-    return {};
-}
-
 // The clips layer's file name beside the stage: its stem and ".clips.usda", keeping only
 // [A-Za-z0-9._~-] (the stage names it in an asset path).
 std::string usdClipsFileName(const std::string& stagePath)
@@ -374,23 +363,17 @@ void writeHeader(std::string& out, const sim::FrameCache& cache, std::uint64_t s
 ExportResult exportUsd(const sim::Scene& scene, const sim::FrameCache& cache, const UsdOptions& options,
                        const ProgressFn& progress)
 {
+    detail::CrowdStart start;
+    if (std::optional<ExportResult> ended = detail::startCrowd(
+            detail::checkCrowdInput(scene, cache, options.path, {".usda"}, options.jointFrameStep,
+                                    {options.positionToleranceM, options.rotationToleranceDeg,
+                                     options.rootRotationToleranceDeg}),
+            scene, cache, options, progress, start))
+        return *ended;
     ExportResult result;
-    if (std::string error = checkUsdInput(scene, cache, options); !error.empty()) {
-        result.error = std::move(error);
-        return result;
-    }
-    if (detail::cancelledAt(progress, 0.0f))
-        return detail::cancelledExport(options.path);
-
-    CharacterLibrary library;
-    result.error = detail::resolveCharacters(scene, cache, options.lod, options.sceneDirectory, options.path, library);
-    if (!result.error.empty())
-        return result;
-    const std::uint64_t seed = options.seed.value_or(scene.settings.seed);
+    const std::uint64_t seed = start.seed;
     const std::size_t frames = cache.frameCount(), agents = cache.agentCount();
-    const std::vector<float> times = detail::frameTimes(cache);
-    const detail::JointClock jointClock = detail::jointFrames(times, options.jointFrameStep);
-    const detail::AgentBaker baker(scene, cache, library, seed, times, jointClock,
+    const detail::AgentBaker baker(scene, cache, start.library, seed, start.times, start.jointClock,
                                    {.compact = options.compact,
                                     .positionToleranceM = options.positionToleranceM,
                                     .rotationToleranceRad = options.rotationToleranceDeg * kUsdDegToRad,
@@ -414,24 +397,17 @@ ExportResult exportUsd(const sim::Scene& scene, const sim::FrameCache& cache, co
     std::string text;
     writeHeader(text, cache, seed, options);
     detail::UsdMaterials materials(kMaterials);
-    AgentWriter writer(scene, cache, library, seed, jointClock, materials);
+    AgentWriter writer(scene, cache, start.library, seed, start.jointClock, materials);
     if (options.compact)
         writer.shareCycles("./" + clipsName);
     text += "    def Xform \"Agents\"\n    {\n";
 
-    const sim::ThreadTeam team(options.threads);
-    constexpr std::size_t kBlock = 256;
-    std::vector<detail::AgentWork> work(kBlock);
-    for (std::size_t begin = 0; begin < agents; begin += kBlock) {
-        if (detail::cancelledAt(progress, 0.95f * static_cast<float>(begin) / static_cast<float>(agents)))
-            return detail::cancelledExport(options.path);
-        const std::size_t count = std::min(kBlock, agents - begin);
-        team.forEach(count, 4, [&](std::size_t k) { baker.prepare(begin + k, work[k], true); });
-        for (std::size_t k = 0; k < count; ++k) {
-            writer.write(text, begin + k, work[k]);
-            flush(text, false);
-        }
-    }
+    if (!detail::bakeInOrder(baker, agents, true, sim::ThreadTeam(options.threads), progress, 0.0f, 0.95f,
+                             [&](std::size_t i, const detail::AgentWork& w) {
+                                 writer.write(text, i, w);
+                                 flush(text, false);
+                             }))
+        return detail::cancelledExport(options.path);
     text += "    }\n";
     writer.writeCharacters(text, 1);
     if (options.includeSet)

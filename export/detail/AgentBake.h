@@ -12,9 +12,12 @@
 #include "export/character/CharacterLibrary.h"
 #include "export/character/Gait.h"
 #include "export/detail/ExactBake.h"
+#include "export/detail/ExportCancel.h"
+#include "simcore/base/ThreadTeam.h"
 #include "simcore/scene/Scene.h"
 #include "simcore/world/FrameCache.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <map>
 #include <vector>
@@ -65,5 +68,26 @@ private:
     BakeSettings m_settings;
     std::map<std::uint32_t, const sim::Agent*> m_placed;  // agents with a hand-set look, tint or height
 };
+
+// Prepares the cache's first `agents` agents on `team`, a block of 256 at a time, and hands
+// each to take(i, work) in agent order, on the calling thread. Before each block it tells
+// `progress` how far it is, from `from` to `to` of the whole export; false, having
+// stopped, when progress asks it to cancel.
+template <class Take>
+bool bakeInOrder(const AgentBaker& baker, std::size_t agents, bool withKeys, const sim::ThreadTeam& team,
+                 const ProgressFn& progress, float from, float to, Take&& take)
+{
+    constexpr std::size_t kBlock = 256;
+    std::vector<AgentWork> work(std::min(kBlock, agents));
+    for (std::size_t begin = 0; begin < agents; begin += kBlock) {
+        if (cancelledAt(progress, from + (to - from) * static_cast<float>(begin) / static_cast<float>(agents)))
+            return false;
+        const std::size_t count = std::min(kBlock, agents - begin);
+        team.forEach(count, 4, [&](std::size_t k) { baker.prepare(begin + k, work[k], withKeys); });
+        for (std::size_t k = 0; k < count; ++k)
+            take(begin + k, work[k]);
+    }
+    return true;
+}
 
 }  // namespace throng::exporting::detail

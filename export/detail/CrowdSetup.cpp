@@ -35,6 +35,18 @@ std::string checkCrowdInput(const sim::Scene& scene, const sim::FrameCache& cach
     return {};
 }
 
+std::string checkCrowdInput(const sim::Scene& scene, const sim::FrameCache& cache, const std::string& path,
+                            const std::vector<std::string_view>& suffixes, int jointFrameStep,
+                            std::initializer_list<float> tolerances)
+{
+    if (std::string error = checkCrowdInput(scene, cache, path, suffixes, jointFrameStep); !error.empty())
+        return error;
+    for (const float tolerance : tolerances)
+        if (!(tolerance >= 0.0f))
+            return "cannot export '" + path + "': key tolerances must be >= 0";
+    return {};
+}
+
 std::vector<float> frameTimes(const sim::FrameCache& cache)
 {
     std::vector<float> times(cache.frameCount());

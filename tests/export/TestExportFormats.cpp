@@ -6,6 +6,9 @@
 #include "TestRegistry.h"
 
 #include "export/ExportFormats.h"
+#include "export/FbxExporter.h"
+#include "export/GltfExporter.h"
+#include "export/UsdExporter.h"
 
 #include <QDir>
 #include <QFile>
@@ -17,6 +20,8 @@
 #include <assimp/scene.h>
 
 #include <cmath>
+#include <functional>
+#include <limits>
 #include <set>
 
 using namespace throng;
@@ -215,6 +220,66 @@ private slots:
             QVERIFY2(!result.ok() && result.writtenPaths.empty(), f.key.c_str());
             QVERIFY2(entries(dir.path()).isEmpty(), qPrintable(f.key.c_str() + (": " + entries(dir.path()).join(' '))));
         }
+    }
+
+    // Every skinned-crowd writer refuses a key tolerance below 0 or not a number, with a
+    // message that names the file, before it asks for progress or writes anything.
+    void badToleranceIsRefused_data()
+    {
+        QTest::addColumn<QString>("format");
+        QTest::addColumn<int>("which");  // position, rotation, root rotation
+        QTest::addColumn<float>("value");
+        const float nan = std::numeric_limits<float>::quiet_NaN();
+        QTest::newRow("gltf position -0.1") << "gltf" << 0 << -0.1f;
+        QTest::newRow("gltf rotation NaN") << "gltf" << 1 << nan;
+        QTest::newRow("gltf root rotation -1") << "gltf" << 2 << -1.0f;
+        QTest::newRow("usd position NaN") << "usd" << 0 << nan;
+        QTest::newRow("usd rotation -2") << "usd" << 1 << -2.0f;
+        QTest::newRow("usd root rotation NaN") << "usd" << 2 << nan;
+        QTest::newRow("fbx position -0.001") << "fbx" << 0 << -0.001f;
+        QTest::newRow("fbx position NaN") << "fbx" << 0 << nan;
+    }
+    void badToleranceIsRefused()
+    {
+        QFETCH(QString, format);
+        QFETCH(int, which);
+        QFETCH(float, value);
+        const CrowdFixture fx = CrowdFixture::make();
+        QTemporaryDir dir;
+        int progressCalls = 0;
+        const exporting::ProgressFn progress = [&](float) { return ++progressCalls > 0; };
+        auto set = [&](auto& options) {
+            float* tolerances[] = {&options.positionToleranceM, nullptr, nullptr};
+            if constexpr (requires { options.rotationToleranceDeg; }) {
+                tolerances[1] = &options.rotationToleranceDeg;
+                tolerances[2] = &options.rootRotationToleranceDeg;
+            }
+            *tolerances[which] = value;
+        };
+        exporting::ExportResult result;
+        std::string path;
+        if (format == "gltf") {
+            exporting::GltfOptions options;
+            options.path = path = dir.filePath("shot.glb").toStdString();
+            set(options);
+            result = exporting::exportGltf(fx.scene, fx.cache, options, progress);
+        } else if (format == "usd") {
+            exporting::UsdOptions options;
+            options.path = path = dir.filePath("shot.usda").toStdString();
+            set(options);
+            result = exporting::exportUsd(fx.scene, fx.cache, options, progress);
+        } else {
+            exporting::FbxOptions options;
+            options.path = path = dir.filePath("shot.fbx").toStdString();
+            set(options);
+            result = exporting::exportFbx(fx.scene, fx.cache, options, progress);
+        }
+        QVERIFY(!result.ok() && !result.cancelled);
+        QCOMPARE(QString::fromStdString(result.error),
+                 QString::fromStdString("cannot export '" + path + "': key tolerances must be >= 0"));
+        QCOMPARE(progressCalls, 0);
+        QVERIFY(result.writtenPaths.empty());
+        QVERIFY2(entries(dir.path()).isEmpty(), qPrintable(entries(dir.path()).join(' ')));
     }
 };
 
