@@ -1,6 +1,7 @@
 // The table of export formats that the CLI and the editor offer: suffixes name one format
 // each, a path finds its format, and every row's writer writes what that format's reader
-// accepts, or, cancelled, nothing at all.
+// accepts, or, cancelled, nothing at all; and the skinned-crowd writers (glTF, USD, FBX)
+// refuse bad key tolerances before they start.
 #include "CrowdFixture.h"
 #include "GltfReadBack.h"
 #include "TestRegistry.h"
@@ -254,6 +255,7 @@ private slots:
                 tolerances[1] = &options.rotationToleranceDeg;
                 tolerances[2] = &options.rootRotationToleranceDeg;
             }
+            QVERIFY(tolerances[which]);
             *tolerances[which] = value;
         };
         exporting::ExportResult result;
