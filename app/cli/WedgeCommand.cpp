@@ -96,7 +96,11 @@ std::vector<std::string> variantArguments(const WedgePlan& plan, const WedgeVari
         a.push_back("--frames");
         a.push_back(std::to_string(*args.frames));
     }
-    a.insert(a.end(), {"--stats", (folder / "stats.json").string(), "--threads", std::to_string(threads), "--quiet"});
+    a.insert(a.end(), {"--stats", (folder / "stats.json").string(), "--quiet"});
+    if (threads > 0) {  // else the run's own default, every core
+        a.push_back("--threads");
+        a.push_back(std::to_string(threads));
+    }
     return a;
 }
 

@@ -250,6 +250,25 @@ private slots:
         QCOMPARE(fromFarm[3].split(',')[header.indexOf("agents_out")], QString("10"));
     }
 
+    // One variant at a time, each on the run's own threads (every core): all run, with
+    // --threads given (each on that many) and without it.
+    void aWedgeOneVariantAtATimeRunsThemAll()
+    {
+        QTemporaryDir tmp;
+        const QString scene = throng::test::writeText(tmp.filePath("room.yaml"), kRoom);
+        for (const QStringList& threads : {QStringList{}, QStringList{"--threads", "2"}}) {
+            const QString dir = tmp.filePath(threads.isEmpty() ? "w" : "w2");
+            const ProcessRun r = cli(QStringList{"wedge", scene, "--seeds", "1..2", "--out", dir, "--jobs", "1",
+                                                 "--metric", "agents_out"} + threads);
+            QVERIFY2(r.status == 0, qPrintable(r.err + r.out));
+            QVERIFY2(r.out.contains("wedge: 2 of 2 variants ran"), qPrintable(r.out));
+            for (const char* v : {"v000", "v001"}) {
+                QCOMPARE(linesIn(QDir(dir).filePath(QString(v) + "/status")), QStringList{"0"});
+                QVERIFY(QFile::exists(QDir(dir).filePath(QString(v) + "/stats.json")));
+            }
+        }
+    }
+
     void badWedgesStopBeforeAnythingRuns()
     {
         QTemporaryDir tmp;
