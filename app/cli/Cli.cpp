@@ -2,6 +2,7 @@
 
 #include "CliArguments.h"
 #include "CliCommands.h"
+#include "Interrupt.h"
 
 #include <ostream>
 
@@ -25,12 +26,16 @@ int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
     }
     if (a.command == "check")
         return checkCommand(a, out, err);
-    if (a.command == "run")
+    if (a.command == "run") {
+        const InterruptWatch watch;  // Ctrl-C stops the run and its exports cleanly
         return runCommand(a, out, err);
+    }
     if (a.command == "validate")
         return validateCommand(a, out, err);
-    if (a.command == "wedge")
+    if (a.command == "wedge") {
+        const InterruptWatch watch;  // Ctrl-C stops the variants running and starts no more
         return wedgeCommand(a, out, err);
+    }
     if (a.command == "wedge-collect")
         return wedgeCollectCommand(a, out, err);
     return benchCommand(a, out, err);

@@ -38,4 +38,10 @@ void Progress::finish()
         m_err << '\n' << std::flush;
 }
 
+void Progress::stop()
+{
+    if (m_enabled && m_tty && m_lastShown >= 0)
+        m_err << '\n' << std::flush;
+}
+
 }  // namespace throng::cli

@@ -13,6 +13,9 @@ public:
     Progress(std::ostream& err, std::string label, std::uint64_t total, bool enabled);
     void update(std::uint64_t done);
     void finish();
+    // Ends the bar where it stands (work stopped short): on a terminal, the next message
+    // starts on a line of its own.
+    void stop();
 
 private:
     std::ostream& m_err;

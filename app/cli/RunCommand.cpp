@@ -1,4 +1,5 @@
 #include "CliCommands.h"
+#include "Interrupt.h"
 #include "Progress.h"
 #include "RunOutputs.h"
 
@@ -71,6 +72,12 @@ int runCommand(const CliArguments& args, std::ostream& out, std::ostream& err)
     std::vector<std::uint64_t> inScene;
     sim::RunStats::sampleInScene(world, inScene);
     for (std::uint64_t f = 1; f < frames; ++f) {
+        if (InterruptWatch::requested()) {
+            progress.stop();
+            err << "throng-cli: stopped by " << InterruptWatch::signalName() << " at frame " << f << " of " << frames
+                << "; nothing was written\n";
+            return InterruptWatch::exitStatus();
+        }
         world.step();
         sim::RunStats::sampleInScene(world, inScene);
         if (record) {
@@ -87,7 +94,7 @@ int runCommand(const CliArguments& args, std::ostream& out, std::ostream& err)
     out << "simulated " << stats.agents << " agents for " << frames << " frames (" << world.timeS()
         << " s at " << scene.settings.fps << " fps) in " << seconds << " s: " << stats.agentStepsPerSecond
         << " agent-steps/s\n";
-    return writeRunOutputs(args, scene, cache, stats, out, err) ? 0 : 1;
+    return writeRunOutputs(args, scene, cache, stats, out, err);
 }
 
 }  // namespace throng::cli

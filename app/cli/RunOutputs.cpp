@@ -1,5 +1,6 @@
 #include "RunOutputs.h"
 
+#include "Interrupt.h"
 #include "Progress.h"
 
 #include "export/ExportFormats.h"
@@ -25,10 +26,18 @@ constexpr std::size_t kProgressAgentFrames = 500'000;
 
 }  // namespace
 
-bool writeRunOutputs(const CliArguments& args, const sim::Scene& scene, const sim::FrameCache& cache,
-                     const sim::RunStats& stats, std::ostream& out, std::ostream& err)
+int writeRunOutputs(const CliArguments& args, const sim::Scene& scene, const sim::FrameCache& cache,
+                    const sim::RunStats& stats, std::ostream& out, std::ostream& err)
 {
     bool ok = true;
+    // Stopped by a signal before `what`: say what was not written.
+    auto stopped = [&](const std::string& what) {
+        if (!InterruptWatch::requested())
+            return false;
+        err << "throng-cli: stopped by " << InterruptWatch::signalName() << "; " << what
+            << " and the outputs after it were not written\n";
+        return true;
+    };
     auto report = [&](const char* what, bool success, const std::string& path, const std::string& error) {
         if (success)
             out << what << ": " << path << '\n';
@@ -62,16 +71,22 @@ bool writeRunOutputs(const CliArguments& args, const sim::Scene& scene, const si
     }
     const sim::FrameCache& frames = laidOut ? *laidOut : cache;
     for (const ExportOutput& output : args.exports) {
+        if (stopped(output.path))
+            return InterruptWatch::exitStatus();
         request.path = output.path;
         // Progress on stderr, as the run's own, for an export of half a million agent-frames or more.
         Progress progress(err, "exporting " + output.path, 1000,
                           !args.quiet && frames.agentCount() * frames.frameCount() >= kProgressAgentFrames);
         const exporting::ExportResult r = output.format->write(scene, frames, request, [&](float done) {
             progress.update(std::uint64_t(std::clamp(done, 0.0f, 1.0f) * 1000.0f));
-            return true;
+            return !InterruptWatch::requested();  // the writer stops and leaves nothing
         });
         if (r.ok())
             progress.finish();
+        else
+            progress.stop();
+        if (r.cancelled && stopped(output.path))
+            return InterruptWatch::exitStatus();
         // A directory holds a file per agent: name the directory, not thousands of files.
         std::string written;
         if (output.format->writesDirectory)
@@ -82,6 +97,8 @@ bool writeRunOutputs(const CliArguments& args, const sim::Scene& scene, const si
         report(output.flag.c_str(), r.ok(), written, r.error);
     }
     if (!args.reportPath.empty()) {
+        if (stopped(args.reportPath))
+            return InterruptWatch::exitStatus();
 #ifdef THRONG_HAS_REPORT
         sim::AnalysisOptions options;
         options.densityCellM = args.reportCellM.value_or(options.densityCellM);
@@ -97,10 +114,12 @@ bool writeRunOutputs(const CliArguments& args, const sim::Scene& scene, const si
     }
     // Stats last, so a pipeline that sees the stats file knows the other outputs are done.
     if (!args.statsPath.empty()) {
+        if (stopped(args.statsPath))
+            return InterruptWatch::exitStatus();
         const sim::SaveResult r = sim::writeFileAtomically(args.statsPath, stats.toJson());
         report("stats", r.ok, args.statsPath, r.error);
     }
-    return ok;
+    return ok ? 0 : 1;
 }
 
 }  // namespace throng::cli

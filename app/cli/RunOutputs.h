@@ -12,8 +12,10 @@
 
 namespace throng::cli {
 
-// False when any requested output could not be written (the reason is on `err`).
-bool writeRunOutputs(const CliArguments& args, const sim::Scene& scene, const sim::FrameCache& cache,
+// The command's exit status: 0; 1 when any requested output could not be written (the
+// reason is on `err`); 128 + the signal when stopped by one (InterruptWatch): the outputs
+// written before it are complete, the one it stopped and those after it are not written.
+int writeRunOutputs(const CliArguments& args, const sim::Scene& scene, const sim::FrameCache& cache,
                      const sim::RunStats& stats, std::ostream& out, std::ostream& err);
 
 }  // namespace throng::cli

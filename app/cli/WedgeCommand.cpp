@@ -1,6 +1,7 @@
 // throng-cli wedge: every variant of a scene run in parallel processes, and the table of
 // their figures (wedge collect). See WedgePlan.h for the variants, docs/wedges.md for use.
 #include "CliCommands.h"
+#include "Interrupt.h"
 #include "WedgePlan.h"
 
 #include "simcore/io/SceneIO.h"
@@ -13,6 +14,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <fcntl.h>
+#include <signal.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -373,7 +375,10 @@ int wedgeCommand(const CliArguments& args, std::ostream& out, std::ostream& err)
         const fs::path submitted = dir / "sbatch.out";
         const pid_t pid = spawn("/usr/bin/env", {"sbatch", "--parsable", script.string()}, submitted);
         int status = 0;
-        if (pid < 0 || waitpid(pid, &status, 0) < 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+        pid_t waited = pid;
+        while (pid >= 0 && (waited = waitpid(pid, &status, 0)) < 0 && errno == EINTR) {
+        }  // a signal (InterruptWatch) does not stop the submission half-way
+        if (pid < 0 || waited < 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
             err << "throng-cli: sbatch did not take " << script.string() << ": "
                 << (pid < 0 ? std::string("it could not be started") : readText(submitted)) << '\n';
             return 1;
@@ -396,8 +401,20 @@ int wedgeCommand(const CliArguments& args, std::ostream& out, std::ostream& err)
             err << "wedge: " << done << " of " << plan.variants.size() << " variants done"
                 << (failed ? " (" + std::to_string(failed) + " failed)" : std::string()) << '\n';
     };
+    bool forwarded = false;
     while (done < plan.variants.size()) {
-        while (next < plan.variants.size() && int(running.size()) < jobs) {
+        // Stopped (Ctrl-C, SIGTERM): start no more, and stop those running. SIGTERM, not the
+        // signal itself: after a Ctrl-C from the terminal, which the variants got too, the
+        // same signal again would end them at once, their outputs half-written.
+        if (InterruptWatch::requested()) {
+            if (!forwarded)
+                for (const auto& [pid, variant] : running)
+                    kill(pid, SIGTERM);
+            forwarded = true;
+            if (running.empty())
+                break;
+        }
+        while (!InterruptWatch::requested() && next < plan.variants.size() && int(running.size()) < jobs) {
             const WedgeVariant& v = plan.variants[next++];
             const pid_t pid =
                 spawn(self, variantArguments(plan, v, dir / v.folder, args, threads), dir / v.folder / "run.log");
@@ -421,6 +438,12 @@ int wedgeCommand(const CliArguments& args, std::ostream& out, std::ostream& err)
             finish(*it->second, WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status));
             running.erase(it);
         }
+    }
+    if (InterruptWatch::requested()) {
+        err << "throng-cli: stopped by " << InterruptWatch::signalName() << "; " << done << " of "
+            << plan.variants.size() << " variants ended (a stopped one's status is 128 + its signal), the rest "
+            << "were not started; nothing was collected\n";
+        return InterruptWatch::exitStatus();
     }
     CliArguments collect = args;
     collect.scene = dir.string();
