@@ -1,11 +1,14 @@
 // throng-bench-export: export time and size of skinned glTF crowds, exact and compact,
-// against a naive float bake of the same data. Prints one JSON object. Not a test.
+// against a naive float bake of the same data, and of skinned FBX crowds (a mesh of their
+// own per agent). Prints one JSON object. Not a test.
 //
 // usage: throng-bench-export [OUT_DIR] [--quick] [--only NAME]
 //   OUT_DIR (default: the system's temp folder) receives the .glb files, removed after.
 //   --quick: 200 agents x 120 frames only, to check the program runs.
 //   --only NAME: just that case (e.g. a10000_f240_compact, a10000_f240_exact_actions: half
-//   the agents playing brain actions over a third of the shot).
+//   the agents playing brain actions over a third of the shot; a200_f24_fbx). With it,
+//   peak_rss_bytes is that case's peak memory; without, the process's so far.
+#include "export/FbxExporter.h"
 #include "export/GltfExporter.h"
 
 #include <chrono>
@@ -14,6 +17,8 @@
 #include <filesystem>
 #include <string>
 #include <vector>
+
+#include <sys/resource.h>
 
 using namespace throng;
 
@@ -111,6 +116,37 @@ void run(const char* name, std::size_t agents, std::size_t frames, exporting::Gl
     first = false;
 }
 
+// The process's peak resident memory so far.
+std::size_t peakRssBytes()
+{
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return std::size_t(usage.ru_maxrss) * 1024;
+}
+
+void runFbx(const char* name, std::size_t agents, std::size_t frames, const std::filesystem::path& dir, bool& first)
+{
+    if (!g_only.empty() && g_only != name)
+        return;
+    sim::Scene scene;
+    sim::FrameCache cache;
+    makeCrowd(agents, frames, scene, cache);
+    exporting::FbxOptions options;
+    options.path = (dir / (std::string("throng-bench-") + name + ".fbx")).string();
+    const auto start = std::chrono::steady_clock::now();
+    const exporting::ExportResult result = exporting::exportFbx(scene, cache, options, {});
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::error_code ec;
+    const std::uintmax_t bytes = std::filesystem::file_size(options.path, ec);
+    std::filesystem::remove(options.path, ec);
+    std::printf("%s\n    \"%s\": {\"ok\": %s, \"error\": \"%s\", \"agents\": %zu, \"frames\": %zu, \"format\": \"fbx\", "
+                "\"export_seconds\": %.3f, \"file_bytes\": %ju, \"bytes_per_agent\": %.0f, \"peak_rss_bytes\": %zu}",
+                first ? "" : ",", name, result.ok() ? "true" : "false", result.error.c_str(), agents, frames, seconds,
+                bytes, static_cast<double>(bytes) / static_cast<double>(agents), peakRssBytes());
+    std::fflush(stdout);
+    first = false;
+}
+
 }  // namespace
 
 int main(int argc, char** argv)
@@ -135,6 +171,7 @@ int main(int argc, char** argv)
     if (quick) {
         run("quick_exact", 200, 120, GltfMode::Exact, 1, dir, first);
         run("quick_compact", 200, 120, GltfMode::Compact, 1, dir, first);
+        runFbx("quick_fbx", 10, 24, dir, first);
     } else {
         run("a1000_f600_exact", 1000, 600, GltfMode::Exact, 1, dir, first);
         run("a1000_f600_exact_joints_every_2", 1000, 600, GltfMode::Exact, 2, dir, first);
@@ -142,6 +179,7 @@ int main(int argc, char** argv)
         run("a10000_f240_exact", 10000, 240, GltfMode::Exact, 1, dir, first);
         run("a10000_f240_exact_actions", 10000, 240, GltfMode::Exact, 1, dir, first, true);
         run("a10000_f240_compact", 10000, 240, GltfMode::Compact, 1, dir, first);
+        runFbx("a200_f24_fbx", 200, 24, dir, first);
     }
     std::printf("\n}}\n");
     return 0;

@@ -22,7 +22,6 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <map>
 
 namespace throng::exporting {
@@ -180,7 +179,7 @@ ExportResult exportFbx(const sim::Scene& scene, const sim::FrameCache& cache, co
     if (options.includeSet)
         detail::addAssimpSet(out, crowd, scene, glm::dvec2(origin.x, origin.z), frames, cache.fps(),
                              options.firstFrame);
-    const std::unique_ptr<aiScene> assimpScene = out.release(double(frames - 1) / double(cache.fps()));
+    std::unique_ptr<aiScene> assimpScene = out.release(double(frames - 1) / double(cache.fps()));
     if (detail::cancelledAt(progress, 0.6f))
         return detail::cancelledExport(options.path);
 
@@ -189,29 +188,29 @@ ExportResult exportFbx(const sim::Scene& scene, const sim::FrameCache& cache, co
         result.error = staging.error();
         return result;
     }
+    // Into memory, not through assimp's file stream: that writes each value with a seek
+    // and a write of its own, which took over half the export's time.
     Assimp::Exporter exporter;
-    if (exporter.Export(assimpScene.get(), "fbx", staging.filePath("crowd.fbx")) != aiReturn_SUCCESS) {
+    const aiExportDataBlob* blob = exporter.ExportToBlob(assimpScene.get(), "fbx");
+    if (blob == nullptr) {
         result.error = "cannot export '" + options.path + "': assimp: " + exporter.GetErrorString();
         return result;
     }
+    assimpScene.reset();  // the file's size again, no longer needed
     // assimp's binary writer leaves out the null records every reader needs: put them in.
-    const std::string written = staging.filePath("crowd.fbx");
-    std::vector<unsigned char> bytes;
-    {
-        std::ifstream in(written, std::ios::binary);
-        bytes.assign(std::istreambuf_iterator<char>(in), {});
-    }
     std::string error;
-    const std::vector<unsigned char> mended = detail::mendFbxFraming(
-        bytes, {.fps = cache.fps(), .durationS = double(frames - 1) / double(cache.fps())}, error);
+    const std::vector<unsigned char> mended =
+        detail::mendFbxFraming({static_cast<unsigned char*>(blob->data), blob->size},
+                               {.fps = cache.fps(), .durationS = double(frames - 1) / double(cache.fps())}, error);
+    exporter.FreeBlob();
     if (mended.empty()) {
         result.error = "cannot export '" + options.path + "': assimp wrote " + error;
         return result;
     }
     {
-        std::ofstream out(written, std::ios::binary | std::ios::trunc);
-        out.write(reinterpret_cast<const char*>(mended.data()), static_cast<std::streamsize>(mended.size()));
-        if (!out.flush()) {
+        std::ofstream file(staging.filePath("crowd.fbx"), std::ios::binary | std::ios::trunc);
+        file.write(reinterpret_cast<const char*>(mended.data()), static_cast<std::streamsize>(mended.size()));
+        if (!file.flush()) {
             result.error = "cannot write '" + options.path + "': " + std::strerror(errno);
             return result;
         }

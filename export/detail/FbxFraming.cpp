@@ -27,7 +27,7 @@ struct Record {
 
 class Reader {
 public:
-    Reader(const std::vector<unsigned char>& b, bool wide, bool sentinels)
+    Reader(std::span<const unsigned char> b, bool wide, bool sentinels)
         : m_b(b), m_wide(wide), m_sentinels(sentinels)
     {
     }
@@ -69,6 +69,7 @@ public:
             if (!readList(at, childEnd, r.children, false) || at != childEnd)
                 return false;
             out.push_back(std::move(r));
+            ++m_records;
             pos = end;
         }
         return pos == limit;
@@ -76,6 +77,8 @@ public:
 
     std::size_t offsetBytes() const { return m_wide ? 8 : 4; }
     std::size_t sentinelBytes() const { return 3 * offsetBytes() + 1; }
+    // The records read, at every depth.
+    std::size_t records() const { return m_records; }
 
 private:
     bool word(std::size_t at, std::uint64_t& value) const
@@ -93,8 +96,9 @@ private:
                                                    [](unsigned char c) { return c == 0; });
     }
 
-    const std::vector<unsigned char>& m_b;
+    std::span<const unsigned char> m_b;
     bool m_wide, m_sentinels;
+    std::size_t m_records = 0;
 };
 
 // FBX's TimeMode for a frame rate: its own for the common ones, else "custom" (14) with
@@ -111,7 +115,7 @@ int timeModeFor(double fps)
 
 // Sets the last value of the Properties70 entry `name` (a P record: name, type, label,
 // flags, value) when it holds one of type `type` ('I', 'D' or 'L').
-void setProperty(std::vector<unsigned char>& b, const Record& p, const char* name, char type, const void* value)
+void setProperty(std::span<unsigned char> b, const Record& p, const char* name, char type, const void* value)
 {
     std::size_t at = p.propsAt;
     const std::size_t end = p.propsAt + p.propsBytes;
@@ -132,7 +136,7 @@ void setProperty(std::vector<unsigned char>& b, const Record& p, const char* nam
     }
 }
 
-void setShotTime(std::vector<unsigned char>& b, const std::vector<Record>& top, const FbxShotTime& time)
+void setShotTime(std::span<unsigned char> b, const std::vector<Record>& top, const FbxShotTime& time)
 {
     const std::int32_t mode = timeModeFor(time.fps);
     const double rate = time.fps;
@@ -165,7 +169,7 @@ void setShotTime(std::vector<unsigned char>& b, const std::vector<Record>& top, 
 
 // assimp connects scale curves to "Lcl Scale", a property no model has: readers then drop
 // every scale animation. The property is "Lcl Scaling".
-void renameScaleConnections(const std::vector<unsigned char>& b, std::vector<Record>& top)
+void renameScaleConnections(std::span<const unsigned char> b, std::vector<Record>& top)
 {
     static const std::string kWrong = "Lcl Scale", kRight = "Lcl Scaling";
     for (Record& r : top) {
@@ -193,7 +197,7 @@ void renameScaleConnections(const std::vector<unsigned char>& b, std::vector<Rec
 
 class Writer {
 public:
-    Writer(const std::vector<unsigned char>& source, bool wide) : m_src(source), m_wide(wide) {}
+    Writer(std::span<const unsigned char> source, bool wide) : m_src(source), m_wide(wide) {}
 
     // `scoped`: each record gets a list of children, empty or not (what assimp's reader asks
     // of the objects: an AnimationLayer without one is refused).
@@ -233,16 +237,15 @@ private:
         put(start, out.size());
     }
 
-    const std::vector<unsigned char>& m_src;
+    std::span<const unsigned char> m_src;
     bool m_wide;
 };
 
 }  // namespace
 
-std::vector<unsigned char> mendFbxFraming(const std::vector<unsigned char>& source, const FbxShotTime& time,
+std::vector<unsigned char> mendFbxFraming(std::span<unsigned char> bytes, const FbxShotTime& time,
                                           std::string& error)
 {
-    std::vector<unsigned char> bytes = source;
     if (bytes.size() < kHeaderBytes || std::memcmp(bytes.data(), kMagic, sizeof kMagic - 1) != 0) {
         error = "not a binary FBX file";
         return {};
@@ -253,12 +256,15 @@ std::vector<unsigned char> mendFbxFraming(const std::vector<unsigned char>& sour
     const bool wide = version >= 7500;
     std::vector<Record> records;
     bool read = false;
+    std::size_t recordCount = 0, sentinelBytes = 0;
     for (const bool sentinels : {true, false}) {  // well formed first, then as assimp 5.2 writes
         records.clear();
         Reader reader(bytes, wide, sentinels);
         std::size_t pos = kHeaderBytes;
         if (reader.readList(pos, bytes.size(), records, true) && !records.empty()) {
             read = true;
+            recordCount = reader.records();
+            sentinelBytes = reader.sentinelBytes();
             break;
         }
     }
@@ -269,6 +275,10 @@ std::vector<unsigned char> mendFbxFraming(const std::vector<unsigned char>& sour
     setShotTime(bytes, records, time);
     renameScaleConnections(bytes, records);
     Writer writer(bytes, wide);
+    // At most: the records as they are, a null record after each and after the file's
+    // list, each renamed connection 2 bytes longer, and the footer (172 bytes): one
+    // allocation, never a copy of what is written so far.
+    writer.out.reserve(bytes.size() + recordCount * (sentinelBytes + 2) + sentinelBytes + 256);
     writer.out.assign(bytes.begin(), bytes.begin() + kHeaderBytes);
     writer.list(records);
     writer.nullRecord();

@@ -11,6 +11,7 @@
 #error "a detail/ header, private to throng::export: include the module's public headers instead"
 #endif
 
+#include <span>
 #include <string>
 #include <vector>
 
@@ -22,10 +23,11 @@ struct FbxShotTime {
     double durationS = 0.0;  // the last frame's time
 };
 
-// `bytes`: a whole binary FBX file (version 7100 to 7500). Returns the mended file, its
-// GlobalSettings' TimeMode, CustomFrameRate and TimeSpanStop set to `time`; or an empty
-// vector with `error` saying what in the file could not be read.
-std::vector<unsigned char> mendFbxFraming(const std::vector<unsigned char>& bytes, const FbxShotTime& time,
+// `bytes`: a whole binary FBX file (version 7100 to 7500), whose settings are set in place
+// (no copy of a file that may be gigabytes). Returns the mended file, its GlobalSettings'
+// TimeMode, CustomFrameRate and TimeSpanStop set to `time`; or an empty vector with
+// `error` saying what in the file could not be read.
+std::vector<unsigned char> mendFbxFraming(std::span<unsigned char> bytes, const FbxShotTime& time,
                                           std::string& error);
 
 }  // namespace throng::exporting::detail
