@@ -139,8 +139,9 @@ void runFbx(const char* name, std::size_t agents, std::size_t frames, const std:
     std::error_code ec;
     const std::uintmax_t bytes = std::filesystem::file_size(options.path, ec);
     std::filesystem::remove(options.path, ec);
-    std::printf("%s\n    \"%s\": {\"ok\": %s, \"error\": \"%s\", \"agents\": %zu, \"frames\": %zu, \"format\": \"fbx\", "
-                "\"export_seconds\": %.3f, \"file_bytes\": %ju, \"bytes_per_agent\": %.0f, \"peak_rss_bytes\": %zu}",
+    std::printf("%s\n    \"%s\": {\"ok\": %s, \"error\": \"%s\", \"agents\": %zu, \"frames\": %zu, "
+                "\"format\": \"fbx\", \"export_seconds\": %.3f, \"file_bytes\": %ju, \"bytes_per_agent\": %.0f, "
+                "\"peak_rss_bytes\": %zu}",
                 first ? "" : ",", name, result.ok() ? "true" : "false", result.error.c_str(), agents, frames, seconds,
                 bytes, static_cast<double>(bytes) / static_cast<double>(agents), peakRssBytes());
     std::fflush(stdout);

@@ -16,6 +16,6 @@ namespace throng::cli {
 // reason is on `err`); 128 + the signal when stopped by one (InterruptWatch): the outputs
 // written before it are complete, the one it stopped and those after it are not written.
 int writeRunOutputs(const CliArguments& args, const sim::Scene& scene, const sim::FrameCache& cache,
-                     const sim::RunStats& stats, std::ostream& out, std::ostream& err);
+                    const sim::RunStats& stats, std::ostream& out, std::ostream& err);
 
 }  // namespace throng::cli
