@@ -11,9 +11,6 @@
 #include <QTemporaryDir>
 #include <QTest>
 
-#include <csignal>
-#include <string>
-
 #include <signal.h>
 #include <sys/types.h>
 
