@@ -33,6 +33,22 @@ QString writeFarCrowd(const QString& path, int count)
     return path;
 }
 
+// Starts `throng-cli run` on a crowd of `walkers` (in `tmp`) for `frames` frames, each
+// output (flag, file name) into the folder tmp/out, which it makes. Returns the folder.
+QString startRun(QProcess& p, const QTemporaryDir& tmp, int walkers, int frames,
+                 const QList<QPair<QString, QString>>& outputs)
+{
+    const QString scene = writeFarCrowd(tmp.filePath("crowd.yaml"), walkers);
+    const QString out = tmp.filePath("out");
+    if (!QDir().mkpath(out))
+        qFatal("cannot make %s", qPrintable(out));
+    QStringList args{"run", scene, "--frames", QString::number(frames)};
+    for (const auto& [flag, name] : outputs)
+        args << flag << out + "/" + name;
+    p.start(QStringLiteral(THRONG_CLI_PATH), args);
+    return out;
+}
+
 // Reads `p`'s standard error until it holds `marker` (true), the process ends or 60 s pass.
 bool waitForStderr(QProcess& p, QString& err, const QString& marker)
 {
@@ -95,12 +111,9 @@ private slots:
     void ctrlCWhileSimulatingWritesNothing()
     {
         QTemporaryDir tmp;
-        const QString scene = writeFarCrowd(tmp.filePath("crowd.yaml"), 2000);
-        const QString out = tmp.filePath("out");
-        QVERIFY(QDir().mkpath(out));
         QProcess p;
-        p.start(QStringLiteral(THRONG_CLI_PATH), {"run", scene, "--frames", "100000", "--export", out + "/a.glb",
-                                                 "--export", out + "/b.csv", "--stats", out + "/s.json"});
+        const QString out =
+            startRun(p, tmp, 2000, 100000, {{"--export", "a.glb"}, {"--export", "b.csv"}, {"--stats", "s.json"}});
         QString err;
         // Its progress says it is stepping (two thousand walkers for 100,000 frames: hours).
         QVERIFY2(waitForStderr(p, err, "simulating: 0%"), qPrintable(err));
@@ -120,13 +133,10 @@ private slots:
     void sigtermWhileExportingKeepsOnlyWhatWasDone()
     {
         QTemporaryDir tmp;
-        const QString scene = writeFarCrowd(tmp.filePath("crowd.yaml"), 5000);
-        const QString out = tmp.filePath("out");
-        QVERIFY(QDir().mkpath(out));
         QProcess p;
         // 5,000 walkers for 120 frames: an export with progress (half a million agent-frames).
-        p.start(QStringLiteral(THRONG_CLI_PATH), {"run", scene, "--frames", "120", "--export", out + "/a.csv",
-                                                 "--export", out + "/b.glb", "--stats", out + "/s.json"});
+        const QString out =
+            startRun(p, tmp, 5000, 120, {{"--export", "a.csv"}, {"--export", "b.glb"}, {"--stats", "s.json"}});
         QString err;
         QVERIFY2(waitForStderr(p, err, "exporting " + out + "/b.glb: 0%"), qPrintable(err));
         QCOMPARE(::kill(pid_t(p.processId()), SIGTERM), 0);
