@@ -80,6 +80,9 @@ void Viewport::updateScene(const sim::Scene& scene)
     setSet(scene);
     m_frameOnNextPaint = frameOnNextPaint;
     m_cameraMovedByUser = movedByUser;
+    // An edit is made in the view as it stands: the agents it brings (a new scene's first
+    // spawn group or brush stroke) must not pull the camera away from where the user works.
+    m_frameWhenAgentsCome = false;
     // The shown agents again, coloured and sized by the edited types.
     setAgents(m_crowd.frames(), m_crowd.agents(), m_timeS, m_frameIndex);
 }

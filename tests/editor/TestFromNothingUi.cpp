@@ -213,6 +213,42 @@ private slots:
         QCOMPARE(scene.groups.size(), std::size_t(1));
     }
 
+    // A new scene's first spawn group must not move the camera: the user aims the next click
+    // at the ground as the view showed it. (The view used to frame the group once its
+    // agents came, as it frames a scene just opened, and the goal clicked beside the group
+    // landed inside it.)
+    void theFirstGroupDrawnKeepsTheViewWhereTheUserWorks()
+    {
+        MainWindow window;
+        showNewWindow(window);
+        QTest::keyClick(&window, Qt::Key_N, Qt::ControlModifier);
+        QTRY_VERIFY(!window.viewport().grabFramebuffer().isNull());  // painted: the new scene framed
+        // Where the goal is to go, seen before any agent is there.
+        const glm::vec2 goalSpot(30.0f, 20.0f);
+        const QPoint goalPixel = pixelOf(window, goalSpot);
+        const QPoint cornerA = pixelOf(window, {-30, -20}), cornerB = pixelOf(window, {-20, -10});
+        QVERIFY(window.viewport().rect().contains(goalPixel) && window.viewport().rect().contains(cornerA));
+        QVERIFY(clickToolButton(window, "group"));
+        typeInto(window.findChild<QDoubleSpinBox*>("groupDensity"), "0.5");
+        QTest::mousePress(&window.viewport(), Qt::LeftButton, Qt::NoModifier, cornerA);
+        QTest::mouseMove(&window.viewport(), (cornerA + cornerB) / 2);
+        QTest::mouseMove(&window.viewport(), cornerB);
+        QTest::mouseRelease(&window.viewport(), Qt::LeftButton, Qt::NoModifier, cornerB);
+        QCOMPARE(window.document().scene().groups.size(), std::size_t(1));
+        const std::size_t members = window.document().scene().groups[0].count;
+        QVERIFY(members > 10);
+        // The members come with frame 0 of the edited scene, from the simulation's thread;
+        // the view paints them.
+        QTRY_COMPARE(window.viewport().agentCount(), members);
+        QVERIFY(!window.viewport().grabFramebuffer().isNull());
+        QCOMPARE(pixelOf(window, goalSpot), goalPixel);
+        QVERIFY(clickToolButton(window, "goal"));
+        QTest::mouseClick(&window.viewport(), Qt::LeftButton, Qt::NoModifier, goalPixel);
+        QCOMPARE(window.document().scene().goals.size(), std::size_t(1));
+        const glm::vec2 placed = window.document().scene().goals[0].position;
+        QVERIFY2(glm::length(placed - goalSpot) < 0.5f, qPrintable(QString("%1 %2").arg(placed.x).arg(placed.y)));
+    }
+
     // The whole first hour: New, a type, agents, a wall, a goal, Play, Save, check.
     void fromFileNewToACheckedSceneFile()
     {
