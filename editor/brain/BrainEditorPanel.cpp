@@ -222,6 +222,21 @@ void BrainEditorPanel::refreshList()
         m_types->addItem(QStringLiteral("%1 (%2)").arg(QString::fromStdString(t.name),
                                                       t.brain.empty() ? tr("no brain") : QString::fromStdString(t.brain)));
     m_types->setCurrentIndex(std::clamp(type, 0, m_types->count() - 1));
+    updateHint();
+}
+
+void BrainEditorPanel::updateHint()
+{
+    if (m_document.scene().brains.empty())
+        m_view->setHint(tr("This scene has no brains yet.\n\nPress Tab here and type a node's name, or use Add Node, "
+                           "to start one; New makes an empty brain, and Import... adds a .brain.yaml (Throng's own "
+                           "are in resources/brains). Assign then gives the shown brain to an agent type."));
+    else if (m_model->hasBrain() && m_model->graph().nodes.empty())
+        m_view->setHint(tr("'%1' has no nodes yet.\n\nPress Tab here and type a node's name, or use Add Node. "
+                           "Drag from one node's port to another's to link them.")
+                            .arg(QString::fromStdString(m_model->graph().name)));
+    else
+        m_view->setHint({});
 }
 
 void BrainEditorPanel::recompile()

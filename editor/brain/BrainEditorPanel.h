@@ -80,6 +80,8 @@ protected:
 private:
     QWidget* createBar();
     void refreshList();
+    // The empty graph's hint: how to start a brain, or its first node.
+    void updateHint();
     void recompile();
     void reportErrors();
     void updateLive();

@@ -5,6 +5,7 @@
 
 #include <QGraphicsProxyWidget>
 #include <QKeyEvent>
+#include <QPainter>
 #include <QScrollBar>
 
 #include <algorithm>
@@ -64,6 +65,28 @@ void BrainView::frameSelection()
         if (n->isSelected())
             r |= n->sceneBoundingRect();
     r.isEmpty() ? frameAll() : fit(r);
+}
+
+void BrainView::setHint(const QString& hint)
+{
+    if (hint == m_hint)
+        return;
+    m_hint = hint;
+    viewport()->update();  // the whole view: the hint lies under no item's rectangle
+}
+
+void BrainView::drawForeground(QPainter* painter, const QRectF& rect)
+{
+    QGraphicsView::drawForeground(painter, rect);
+    if (m_hint.isEmpty() || !m_scene->nodeItems().empty())
+        return;
+    painter->save();
+    painter->resetTransform();  // the view's own pixels, whatever the zoom
+    painter->setPen(QColor(160, 165, 172));  // the graph's own dark ground (BrainScene), whatever the theme
+    const int margin = 32;
+    const QRect box = viewport()->rect().adjusted(margin, margin, -margin, -margin);
+    painter->drawText(box, Qt::AlignCenter | Qt::TextWordWrap, m_hint);
+    painter->restore();
 }
 
 void BrainView::zoomBy(double factor)

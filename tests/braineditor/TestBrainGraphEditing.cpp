@@ -14,6 +14,7 @@
 #include "editor/brain/NodePalette.h"
 #include "editor/brain/PortItem.h"
 
+#include <QImage>
 #include <QLineEdit>
 #include <QListWidget>
 #include <QMenu>
@@ -70,6 +71,55 @@ private slots:
         QVERIFY(mathAdd);
         mathAdd->trigger();
         QCOMPARE(ui.panel().model().graph().nodes.back().type, std::string("math.add"));
+    }
+
+    // A scene without brains, or a brain without nodes, is no blank canvas: the view says
+    // how to start, and the first node typed in makes the brain.
+    void anEmptyGraphSaysHowToStart()
+    {
+        QTemporaryDir dir;
+        MainWindow window;
+        BrainUi ui(window);
+        QVERIFY(ui.open(dir, "throng: 1\n"));
+        BrainView& view = ui.panel().view();
+        QVERIFY(window.document().scene().brains.empty());
+        QVERIFY2(view.hint().contains("no brains yet") && view.hint().contains("Tab"), qPrintable(view.hint()));
+        // Drawn where the user looks, and legible: pixels across the middle of the view far
+        // brighter than the graph's ground (its top-left corner).
+        auto hintPixels = [&] {
+            const QImage image = view.viewport()->grab().toImage();
+            const int ground = qGray(image.pixel(0, 0));
+            int count = 0;
+            for (int y = image.height() / 3; y < 2 * image.height() / 3; ++y)
+                for (int x = 0; x < image.width(); ++x)
+                    count += qGray(image.pixel(x, y)) > ground + 80;
+            return count;
+        };
+        QVERIFY2(hintPixels() > 200, qPrintable(QString::number(hintPixels())));
+        // Tab and a node's name: a new brain holds the node, and the hint is gone.
+        QVERIFY(ui.addByTyping({0, 0}, "triang") != 0);
+        QCOMPARE(window.document().scene().brains.size(), std::size_t(1));
+        QCOMPARE(ui.nodeCount(), 1);
+        QVERIFY(view.hint().isEmpty());
+        // Its last node deleted, the brain says it has none.
+        NodeItem* node = ui.panel().scene().nodeItems().front();
+        ui.click(node->mapToScene(node->boundingRect().center()));
+        QVERIFY(node->isSelected());
+        ui.key(Qt::Key_Delete);
+        QCOMPARE(ui.nodeCount(), 0);
+        const QString name = QString::fromStdString(window.document().scene().brains[0].name);
+        QVERIFY2(view.hint().contains("'" + name + "' has no nodes yet"), qPrintable(view.hint()));
+        QVERIFY(hintPixels() > 200);
+        // Undone step by step (the delete, the node, the new brain), the hints follow.
+        QTest::keyClick(&window, Qt::Key_Z, Qt::ControlModifier);
+        QCOMPARE(ui.nodeCount(), 1);
+        QVERIFY(view.hint().isEmpty());
+        QTest::keyClick(&window, Qt::Key_Z, Qt::ControlModifier);
+        QCOMPARE(ui.nodeCount(), 0);
+        QVERIFY(view.hint().contains("has no nodes yet"));
+        QTest::keyClick(&window, Qt::Key_Z, Qt::ControlModifier);
+        QVERIFY(window.document().scene().brains.empty());
+        QVERIFY2(view.hint().contains("no brains yet"), qPrintable(view.hint()));
     }
 
     void draggingFromPortToPortLinksThem()
