@@ -76,7 +76,10 @@ ExportDialog::ExportDialog(SceneDocument& document, SimulationController& simula
     range->addWidget(m_last);
     form->addRow(tr("Frames"), range);
     m_pretty = new QCheckBox(tr("Indented JSON (.gltf)"), this);
+    m_pretty->setObjectName("exportIndented");
     m_pretty->setChecked(true);
+    m_pretty->setToolTip(tr("Write a .gltf's JSON indented, one value a line, for reading and diffing; clear it for "
+                            "a smaller file. A .glb is binary and has no text to indent"));
     m_set = new QCheckBox(tr("The set: ground, lanes, crosswalks, walls, obstacles, lights"), this);
     m_set->setObjectName("exportSet");
     m_set->setChecked(true);
@@ -128,6 +131,7 @@ ExportDialog::ExportDialog(SceneDocument& document, SimulationController& simula
     m_poll->setInterval(30);
     connect(m_poll, &QTimer::timeout, this, &ExportDialog::poll);
     connect(m_format, &QComboBox::currentIndexChanged, this, &ExportDialog::formatChanged);
+    connect(m_path, &QLineEdit::textChanged, this, &ExportDialog::updateOptions);
     connect(browse, &QPushButton::clicked, this, &ExportDialog::browse);
     connect(m_export, &QPushButton::clicked, this, &ExportDialog::start);
     connect(m_cancel, &QPushButton::clicked, this, &ExportDialog::cancelOrClose);
@@ -160,7 +164,14 @@ void ExportDialog::formatChanged()
         m_path->setText(stem);
     else if (std::find(f.suffixes.begin(), f.suffixes.end(), suffix) == f.suffixes.end())
         m_path->setText(stem + QString::fromStdString(f.suffixes.front()));
-    m_pretty->setEnabled(f.readsIndentedText);
+    updateOptions();
+}
+
+void ExportDialog::updateOptions()
+{
+    const exporting::ExportFormat& f = format();
+    const bool binary = QFileInfo(m_path->text().trimmed()).suffix().toLower() == QLatin1String("glb");
+    m_pretty->setEnabled(f.readsIndentedText && !binary);
     m_set->setEnabled(f.writesSet);
     m_bake->setEnabled(f.sharesCycles);
     m_lod->setEnabled(f.writesCharacters);

@@ -42,6 +42,8 @@ signals:
 
 private:
     void formatChanged();
+    // Greys out the options the format, or the file's suffix, does not use.
+    void updateOptions();
     void browse();
     void poll();
     void cancelOrClose();

@@ -147,8 +147,15 @@ private slots:
         QTRY_VERIFY(dialog->isVisible());
         auto* path = dialog->findChild<QLineEdit*>("exportPath");
         const QString out = m_dir.filePath("crowd.glb");
+        // Indenting is for a .gltf's JSON: a .glb has none, and its box greys out.
+        auto* indented = dialog->findChild<QCheckBox*>("exportIndented");
+        QVERIFY(indented && !indented->isEnabled());
+        path->selectAll();
+        QTest::keyClicks(path, m_dir.filePath("crowd.gltf"));
+        QVERIFY(indented->isEnabled());
         path->selectAll();
         QTest::keyClicks(path, out);
+        QVERIFY(!indented->isEnabled());
         auto* last = dialog->findChild<QSpinBox*>("exportLastFrame");
         last->selectAll();
         QTest::keyClicks(last, "24");
