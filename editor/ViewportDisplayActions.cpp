@@ -143,9 +143,8 @@ void ViewportDisplayActions::watch()
 
 void ViewportDisplayActions::showSteering()
 {
-    const std::vector<sim::AgentDebug>* steering =
-        m_steering->isChecked() ? m_simulation.steering(m_simulation.currentFrame()) : nullptr;
-    m_viewport.setSteering(steering ? *steering : std::vector<sim::AgentDebug>{});
+    m_viewport.setSteering(m_steering->isChecked() ? m_simulation.steering(m_simulation.currentFrame())
+                                                   : std::vector<sim::AgentDebug>{});
 }
 
 }  // namespace throng::editor

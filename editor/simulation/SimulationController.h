@@ -103,8 +103,9 @@ public:
     // frames computed from now on carry them, and a shown frame recorded without them is
     // computed again in the background (steeringChanged() tells when it arrives).
     void watchAgents(std::vector<sim::AgentId> ids);
-    // The watched agents' annotations on frame `frame`; null when none were recorded.
-    const std::vector<sim::AgentDebug>* steering(std::size_t frame) const { return m_steering.at(frame); }
+    // The watched agents' annotations on frame `frame`; empty when none were recorded, or
+    // only for agents no longer watched.
+    std::vector<sim::AgentDebug> steering(std::size_t frame) const { return m_steering.watchedAt(frame); }
     // The edit frame of the last resumed run the runner handed frames of (0: none yet), and
     // how many runs have started over from frame 0 (for tests and the status).
     std::size_t lastResumedAt() const { return m_lastResumedAt; }

@@ -23,10 +23,16 @@ void SteeringRecord::take(std::vector<SimulationRunner::FrameSteering>&& steerin
         m_frames[s.frame] = std::move(s.agents);
 }
 
-const std::vector<sim::AgentDebug>* SteeringRecord::at(std::size_t frame) const
+std::vector<sim::AgentDebug> SteeringRecord::watchedAt(std::size_t frame) const
 {
+    std::vector<sim::AgentDebug> out;
     const auto it = m_frames.find(frame);
-    return it == m_frames.end() ? nullptr : &it->second;
+    if (it == m_frames.end())
+        return out;
+    for (const sim::AgentDebug& a : it->second)
+        if (std::find(m_watched.begin(), m_watched.end(), a.id) != m_watched.end())
+            out.push_back(a);
+    return out;
 }
 
 void SteeringRecord::setWatched(std::vector<sim::AgentId> ids)

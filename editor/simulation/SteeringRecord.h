@@ -18,8 +18,10 @@ public:
     // An edit recomputes the frames from `frame` on: their annotations go.
     void dropFrom(std::size_t frame);
     void take(std::vector<SimulationRunner::FrameSteering>&& steering);
-    // The annotations recorded with frame `frame`; null when none were.
-    const std::vector<sim::AgentDebug>* at(std::size_t frame) const;
+    // The annotations recorded with frame `frame` of the agents watched now, in the
+    // order recorded; empty when none were. A frame recorded for agents no longer watched
+    // (the selection changed since) shows only those still watched.
+    std::vector<sim::AgentDebug> watchedAt(std::size_t frame) const;
     // The agents watched from now on: frames recorded for others need describing again.
     void setWatched(std::vector<sim::AgentId> ids);
     // Whether frame `frame` lacks the watched agents' annotations and was not asked for

@@ -395,7 +395,7 @@ private slots:
         SimulationController& sim = window.simulation();
         // Frames computed before anyone is watched carry nothing.
         goToFrame(window, 40);
-        QVERIFY(!sim.steering(40));
+        QVERIFY(sim.steering(40).empty());
 
         QTest::keyClick(&viewport, Qt::Key_Q);
         const glm::vec3 at40 = sim.cache().at(40, cacheIndex(window, 1)).position;
@@ -405,8 +405,8 @@ private slots:
         QVERIFY(viewport.overlays().steering);
         const std::size_t recordedAtWatch = sim.recordedFrames();
         // The shown frame is computed again in the background for the watched agent.
-        QTRY_VERIFY_WITH_TIMEOUT(sim.steering(40) && !sim.steering(40)->empty(), 20000);
-        const sim::AgentDebug a = sim.steering(40)->front();
+        QTRY_VERIFY_WITH_TIMEOUT(!sim.steering(40).empty(), 20000);
+        const sim::AgentDebug a = sim.steering(40).front();
         QCOMPARE(a.id, sim::AgentId(1));
         // What was published is the recorded frame's state.
         QVERIFY(glm::distance(a.position, at40) < 1e-4f);
@@ -449,7 +449,29 @@ private slots:
         const std::size_t last = sim.recordedFrames() - 1;
         QVERIFY(last >= from + 24);
         for (std::size_t f = from; f <= last; ++f)
-            QVERIFY2(sim.steering(f) && sim.steering(f)->size() == 1, qPrintable(QString("frame %1").arg(f)));
+            QVERIFY2(sim.steering(f).size() == 1, qPrintable(QString("frame %1").arg(f)));
+        // Deselected (a click on empty ground), the agent's steering goes from the frame
+        // recorded for it: the HUD asks for an agent and no arrow of it is drawn. (Before,
+        // a frame recorded while it was watched kept showing it.) A frame where it walks.
+        const std::size_t walking = from + 12;
+        goToFrame(window, walking);
+        QTRY_VERIFY(viewport.hud().lines().join('\n').contains("Agent 1:"));
+        const sim::AgentDebug watched = sim.steering(walking).front();
+        QVERIFY(glm::length(watched.velocity) > 0.5f);
+        const glm::vec2 ahead =
+            glm::vec2(watched.position.x, watched.position.z) +
+            0.7f * SteeringOverlay::kMetresPerMps * glm::vec2(watched.velocity.x, watched.velocity.z);
+        QTest::qWait(50);
+        QVERIFY2(pixelsOf(window, viewport.grabFramebuffer(), ahead, 0.12f, palette::kVelocity, 40) >= 2,
+                 "the velocity arrow while selected");
+        QTest::mouseClick(&viewport, Qt::LeftButton, Qt::NoModifier, viewport.worldToPixel({-17, 0, -17}).toPoint());
+        QVERIFY(window.document().selection().empty());
+        QCOMPARE(viewport.focusedAgent(), sim::AgentId(0));
+        QVERIFY(sim.steering(walking).empty());
+        QTRY_VERIFY(viewport.hud().lines().join('\n').contains("select an agent to see its steering"));
+        QVERIFY(!viewport.hud().lines().join('\n').contains("Agent 1:"));
+        QTest::qWait(50);
+        QCOMPARE(pixelsOf(window, viewport.grabFramebuffer(), ahead, 0.12f, palette::kVelocity, 40), 0);
         // Off: nobody is watched any more.
         QTest::keyClick(&viewport, Qt::Key_D);
         QVERIFY(sim.runner().watchedAgents().empty());
