@@ -28,6 +28,11 @@ int runCommand(const CliArguments& args, std::ostream& out, std::ostream& err)
         }
         overrides.push_back(*o);
     }
+    // Before loading (a million agents take seconds) and long before the last frame.
+    if (!outputsWritable(args, err)) {
+        err << "throng-cli: nothing was run\n";
+        return 1;
+    }
     sim::LoadResult loaded = sim::loadScene(args.scene, overrides);
     for (const sim::Diagnostic& d : loaded.diagnostics)
         err << d.format() << '\n';

@@ -18,13 +18,59 @@
 #include <ostream>
 #include <string>
 
+#include <unistd.h>
+
 namespace throng::cli {
 
 namespace {
 
 constexpr std::size_t kProgressAgentFrames = 500'000;
 
+// Why `path` cannot be written, or empty when it can (as far as can be told before writing).
+std::string unwritable(const std::string& path, bool directory)
+{
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    const fs::path p(path);
+    if (directory) {
+        if (fs::exists(p, ec) && !fs::is_directory(p, ec))
+            return "it is a file, not a folder";
+    } else if (fs::is_directory(p, ec)) {
+        return "it is a folder";
+    }
+    // The folder it goes in (the nearest that exists, for a directory the writer makes).
+    fs::path folder = p.parent_path().empty() ? fs::path(".") : p.parent_path();
+    if (directory)
+        while (!fs::exists(folder, ec) && folder.has_parent_path() && folder.parent_path() != folder)
+            folder = folder.parent_path();
+    if (!fs::exists(folder, ec))
+        return "the folder '" + folder.string() + "' does not exist";
+    if (!fs::is_directory(folder, ec))
+        return "'" + folder.string() + "' is not a folder";
+    if (::access(folder.c_str(), W_OK) != 0)
+        return "the folder '" + folder.string() + "' is not writable";
+    return {};
+}
+
 }  // namespace
+
+bool outputsWritable(const CliArguments& args, std::ostream& err)
+{
+    bool ok = true;
+    auto check = [&](const std::string& flag, const std::string& path, bool directory) {
+        if (const std::string why = unwritable(path, directory); !why.empty()) {
+            err << "throng-cli: --" << flag << ' ' << path << ": cannot be written: " << why << '\n';
+            ok = false;
+        }
+    };
+    for (const ExportOutput& output : args.exports)
+        check(output.flag, output.path, output.format->writesDirectory);
+    if (!args.reportPath.empty())
+        check("report", args.reportPath, false);
+    if (!args.statsPath.empty())
+        check("stats", args.statsPath, false);
+    return ok;
+}
 
 int writeRunOutputs(const CliArguments& args, const sim::Scene& scene, const sim::FrameCache& cache,
                     const sim::RunStats& stats, std::ostream& out, std::ostream& err)

@@ -221,13 +221,31 @@ private slots:
         QVERIFY(!QFile::exists(tmp.filePath("s.json")));
     }
 
+    // An output that cannot be written is refused before the run, not after hours of it:
+    // every such output named with the reason, nothing simulated, nothing written.
     void unwritableOutputFailsClearly()
     {
         QTemporaryDir tmp;
         const QString scene = throng::test::writeText(tmp.filePath("s.yaml"), kScene);
-        const auto r = runCli({"run", scene.toStdString(), "--frames", "2", "--stats", "/no/such/dir/s.json"});
+        const std::string file = throng::test::writeText(tmp.filePath("plain.txt"), "x").toStdString();
+        const std::string good = tmp.filePath("good.csv").toStdString();
+        const auto r = runCli({"run", scene.toStdString(), "--frames", "2", "--stats", "/no/such/dir/s.json",
+                               "--export", good, "--export", file + "/cache/", "--report", tmp.path().toStdString(),
+                               "--quiet"});
         QCOMPARE(r.status, 1);
-        QVERIFY2(r.err.find("/no/such/dir/s.json") != std::string::npos, r.err.c_str());
+        for (const std::string& line :
+             {std::string("--stats /no/such/dir/s.json: cannot be written: the folder '/no/such/dir' does not exist"),
+              "--export " + file + "/cache/: cannot be written: '" + file + "' is not a folder",
+              "--report " + tmp.path().toStdString() + ": cannot be written: it is a folder",
+              std::string("throng-cli: nothing was run")})
+            QVERIFY2(r.err.find(line) != std::string::npos, (line + "\nin:\n" + r.err).c_str());
+        QVERIFY2(r.out.find("simulated") == std::string::npos, r.out.c_str());
+        QVERIFY(!QFile::exists(QString::fromStdString(good)));
+        // A directory output whose folders do not exist yet is made by its writer.
+        const std::string cache = tmp.filePath("new/deeper/cache/").toStdString();
+        const auto made = runCli({"run", scene.toStdString(), "--frames", "2", "--export", cache, "--quiet"});
+        QVERIFY2(made.status == 0, made.err.c_str());
+        QVERIFY(QFile::exists(tmp.filePath("new/deeper/cache/agent_1.txt")));
     }
 
     void progressOnStderrUnlessQuiet()
