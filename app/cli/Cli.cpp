@@ -12,7 +12,13 @@ int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
 {
     const ParseOutcome parsed = parseArguments(args);
     if (!parsed.error.empty()) {
-        err << "throng-cli: " << parsed.error << "\n\n" << usageText();
+        // The whole usage only for a bare `throng-cli`; after a mistake in a command line, the
+        // one line that says what is wrong stays in view.
+        err << "throng-cli: " << parsed.error << '\n';
+        if (args.empty())
+            err << '\n' << usageText();
+        else
+            err << "throng-cli: 'throng-cli --help' lists the commands and their options\n";
         return 2;
     }
     const CliArguments& a = parsed.args;

@@ -175,9 +175,27 @@ agents: [{type: w, position: [0, 0]}]
             a.push_back(s.toStdString());
         const auto r = runCli(a);
         QCOMPARE(r.status, 2);
-        QVERIFY2(QString::fromStdString(r.err).contains(message), r.err.c_str());
+        const QString err = QString::fromStdString(r.err);
+        QVERIFY2(err.contains(message), r.err.c_str());
+        // The mistake stays in view: its line and where help is, not the whole usage. A bare
+        // throng-cli gets the usage.
+        if (a.empty()) {
+            QVERIFY2(err.contains("commands:") && err.contains("run SCENE"), r.err.c_str());
+        } else {
+            QVERIFY2(err.trimmed().split('\n').size() <= 2 && !err.contains("commands:"), r.err.c_str());
+            QVERIFY2(err.startsWith("throng-cli: "), r.err.c_str());
+        }
     }
 
+    // A mistyped option: the line that says so and where help is, nothing else.
+    void aMistakeStaysInView()
+    {
+        const auto r = runCli({"run", "x.yaml", "--fast"});
+        QCOMPARE(r.status, 2);
+        QCOMPARE(QString::fromStdString(r.err),
+                 QString("throng-cli: unknown option '--fast'\n"
+                         "throng-cli: 'throng-cli --help' lists the commands and their options\n"));
+    }
 };
 
 THRONG_REGISTER_TEST(TestCliCheck)
