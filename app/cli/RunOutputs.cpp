@@ -41,8 +41,12 @@ std::string unwritable(const std::string& path, bool directory)
     // The folder it goes in (the nearest that exists, for a directory the writer makes).
     fs::path folder = p.parent_path().empty() ? fs::path(".") : p.parent_path();
     if (directory)
-        while (!fs::exists(folder, ec) && folder.has_parent_path() && folder.parent_path() != folder)
-            folder = folder.parent_path();
+        while (!fs::exists(folder, ec)) {
+            const fs::path up = folder.parent_path();
+            if (up == folder)
+                break;  // a root that does not exist
+            folder = up.empty() ? fs::path(".") : up;  // a relative path's first folder lies in "."
+        }
     if (!fs::exists(folder, ec))
         return "the folder '" + folder.string() + "' does not exist";
     if (!fs::is_directory(folder, ec))

@@ -246,6 +246,14 @@ private slots:
         const auto made = runCli({"run", scene.toStdString(), "--frames", "2", "--export", cache, "--quiet"});
         QVERIFY2(made.status == 0, made.err.c_str());
         QVERIFY(QFile::exists(tmp.filePath("new/deeper/cache/agent_1.txt")));
+        // And given relative to the working folder, none of its folders there yet.
+        const QString before = QDir::currentPath();
+        QVERIFY(QDir::setCurrent(tmp.path()));
+        const auto relative =
+            runCli({"run", scene.toStdString(), "--frames", "2", "--export", "fresh/cache/", "--quiet"});
+        QVERIFY(QDir::setCurrent(before));
+        QVERIFY2(relative.status == 0, relative.err.c_str());
+        QVERIFY(QFile::exists(tmp.filePath("fresh/cache/agent_1.txt")));
     }
 
     void progressOnStderrUnlessQuiet()
