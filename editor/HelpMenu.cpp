@@ -1,5 +1,6 @@
 #include "editor/HelpMenu.h"
 
+#include "editor/GuideBrowser.h"
 #include "editor/Icons.h"
 
 #include <QAction>
@@ -11,7 +12,6 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QTableWidget>
-#include <QTextBrowser>
 #include <QVBoxLayout>
 
 #include <map>
@@ -135,7 +135,7 @@ QDialog* HelpMenu::showGuide()
         m_guide->setObjectName("userGuideDialog");
         m_guide->setWindowTitle(tr("Throng User Guide"));
         m_guide->resize(900, 760);
-        auto* browser = new QTextBrowser(m_guide);
+        auto* browser = new GuideBrowser(m_guide);
         browser->setObjectName("userGuideBrowser");
         browser->setOpenExternalLinks(false);
         browser->setSource(QUrl("qrc:/guide/editor.md"), QTextDocument::MarkdownResource);

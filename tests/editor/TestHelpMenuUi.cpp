@@ -18,7 +18,12 @@
 #include <functional>
 #include <QTableWidget>
 #include <QTest>
+#include <QScrollBar>
+#include <QTextBlock>
 #include <QTextBrowser>
+#include <QTextDocument>
+
+#include <vector>
 
 using namespace throng;
 using namespace throng::editor;
@@ -39,6 +44,28 @@ private slots:
         const QString text = guide->findChild<QTextBrowser*>("userGuideBrowser")->toPlainText();
         QVERIFY2(text.contains("The Throng editor"), qPrintable(text.left(200)));
         QVERIFY2(text.size() > 2000, qPrintable(QString::number(text.size())));
+        // Its screenshots fit the reader's width, as the window is made narrower too: no
+        // picture hides behind a sideways scroll bar.
+        auto* browser = guide->findChild<QTextBrowser*>("userGuideBrowser");
+        auto pictures = [&] {
+            std::vector<double> widths;
+            for (QTextBlock b = browser->document()->begin(); b.isValid(); b = b.next())
+                for (QTextBlock::iterator it = b.begin(); !it.atEnd(); ++it)
+                    if (it.fragment().charFormat().isImageFormat())
+                        widths.push_back(it.fragment().charFormat().toImageFormat().width());
+            return widths;
+        };
+        for (const int width : {900, 560}) {
+            guide->resize(width, 700);
+            QTRY_COMPARE(guide->width(), width);
+            QCoreApplication::processEvents();
+            const std::vector<double> widths = pictures();
+            QVERIFY2(widths.size() >= 8, qPrintable(QString::number(widths.size())));
+            for (const double w : widths)
+                QVERIFY2(w > 0.0 && w <= browser->viewport()->width(),
+                         qPrintable(QString("%1 in %2").arg(w).arg(browser->viewport()->width())));
+            QCOMPARE(browser->horizontalScrollBar()->maximum(), 0);
+        }
     }
 
     void theShortcutSheetListsEveryActionAndTool()
