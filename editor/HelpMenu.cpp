@@ -47,6 +47,20 @@ QString plainText(QString text)
     return text.remove('&');
 }
 
+// What an action does, for the sheet: its name, then its tooltip without what the sheet
+// shows already (the keys, in their column; the name, where the tooltip starts with it).
+QString sheetText(const QAction& action, const QStringList& keys)
+{
+    const QString name = plainText(action.text());
+    QString tip = action.toolTip();
+    for (const QString& k : keys)
+        tip.remove(" (" + k + ")");
+    tip = tip.trimmed();
+    if (tip.isEmpty() || tip == name)
+        return name;
+    return tip.startsWith(name) ? tip : name + " - " + tip;
+}
+
 }  // namespace
 
 HelpMenu::HelpMenu(QMainWindow& window) : QObject(&window), m_window(window)
@@ -88,6 +102,9 @@ QDialog* HelpMenu::showShortcuts()
         table->setHorizontalHeaderLabels({tr("Where"), tr("Keys"), tr("What it does")});
         table->horizontalHeader()->setStretchLastSection(true);
         table->verticalHeader()->hide();
+        // Each description whole, on as many lines as the width leaves it, as the sheet is resized.
+        table->setWordWrap(true);
+        table->verticalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
         table->setEditTriggers(QAbstractItemView::NoEditTriggers);
         table->setSortingEnabled(false);
         auto* layout = new QVBoxLayout(m_shortcuts);
@@ -113,8 +130,7 @@ QDialog* HelpMenu::showShortcuts()
             QStringList keys;
             for (const QKeySequence& k : a->shortcuts())
                 keys << k.toString(QKeySequence::NativeText);
-            const QString tip = a->toolTip() == plainText(a->text()) ? QString() : a->toolTip();
-            addRow(where, keys.join(", "), plainText(a->text()) + (tip.isEmpty() ? QString() : " - " + tip));
+            addRow(where, keys.join(", "), sheetText(*a, keys));
         }
     };
     for (QAction* top : m_window.menuBar()->actions())
@@ -122,7 +138,8 @@ QDialog* HelpMenu::showShortcuts()
             walk(top->menu(), plainText(top->text()));
     for (const GestureRow& g : kGestures)
         addRow(tr(g.where), tr(g.keys), tr(g.what));
-    table->resizeColumnsToContents();
+    table->resizeColumnToContents(0);
+    table->resizeColumnToContents(1);  // the descriptions take the rest, wrapped
     m_shortcuts->show();
     m_shortcuts->raise();
     return m_shortcuts;

@@ -94,6 +94,22 @@ private slots:
         QVERIFY(listed("Space", "Play"));
         QVERIFY(listed("F1", "User Guide"));
         QVERIFY(listed("Alt + left drag", "Orbit"));
+        // Each description says a thing once, whole: not its keys again (they have their
+        // column), not its name twice ("Select - Select (Q): ..."), and on as many lines as
+        // it needs instead of cut short.
+        for (int r = 0; r < table->rowCount(); ++r) {
+            const QString keys = table->item(r, 1)->text(), what = table->item(r, 2)->text();
+            for (const QString& k : keys.split(", "))
+                QVERIFY2(!what.contains("(" + k + ")"), qPrintable(keys + " | " + what));
+            const QString name = what.section(" - ", 0, 0);
+            QVERIFY2(!what.contains(" - ") || !what.section(" - ", 1).startsWith(name), qPrintable(what));
+            // (The item's text margins: 3 pixels a side in Qt's styles.)
+            const int needs = table->fontMetrics()
+                                  .boundingRect(QRect(0, 0, table->columnWidth(2) - 6, 100000), Qt::TextWordWrap, what)
+                                  .height();
+            QVERIFY2(table->rowHeight(r) >= needs,
+                     qPrintable(QString("%1 < %2: %3").arg(table->rowHeight(r)).arg(needs).arg(what)));
+        }
     }
 
     void everyTooltipNamesItsShortcut()
