@@ -102,7 +102,7 @@ const std::vector<ExportFormat>& exportFormats()
         {.key = "gltf",
          .label = "glTF 2.0 animated crowd (.glb, or .gltf + .bin)",
          .suffixes = {".glb", ".gltf"},
-         .readsIndentedText = true,
+         .indentedSuffixes = {".gltf"},
          .writesSet = true,
          .writesCharacters = true,
          .sharesCycles = true,
@@ -162,6 +162,13 @@ const ExportFormat* formatByKey(const std::string& key)
         if (f.key == key)
             return &f;
     return nullptr;
+}
+
+bool indentsText(const ExportFormat& format, const std::string& path)
+{
+    const std::string suffix = lowerCase(std::filesystem::path(path).extension().string());
+    return std::find(format.indentedSuffixes.begin(), format.indentedSuffixes.end(), suffix) !=
+           format.indentedSuffixes.end();
 }
 
 std::string pathForms(const ExportFormat& format)

@@ -47,7 +47,9 @@ struct ExportFormat {
     std::string label;                  // what the editor's format list shows
     std::vector<std::string> suffixes;  // lower case, with the dot; the first is the default; empty for a directory
     bool writesDirectory = false;       // the path is a directory the format fills
-    bool readsIndentedText = false;     // honours ExportRequest::indentedText
+    // The suffixes whose files honour ExportRequest::indentedText (a .gltf's JSON; a .glb is
+    // binary); empty for a format that does not.
+    std::vector<std::string> indentedSuffixes{};
     bool writesSet = false;             // honours ExportRequest::includeSet
     bool writesCharacters = false;      // skinned characters: honours lod and jointFrameStep
     bool sharesCycles = false;          // honours jointBake (Compact: each look's cycles shared)
@@ -62,6 +64,8 @@ const std::vector<ExportFormat>& exportFormats();
 // key: the CLI's --maya-cache, the editor's format list). nullptr when none.
 const ExportFormat* formatForPath(const std::string& path);
 const ExportFormat* formatByKey(const std::string& key);
+// Whether a file of `format` at `path` honours ExportRequest::indentedText (by its suffix).
+bool indentsText(const ExportFormat& format, const std::string& path);
 
 // How a path names `format`: ".glb, .gltf" or "DIR/".
 std::string pathForms(const ExportFormat& format);

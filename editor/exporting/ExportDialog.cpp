@@ -170,8 +170,7 @@ void ExportDialog::formatChanged()
 void ExportDialog::updateOptions()
 {
     const exporting::ExportFormat& f = format();
-    const bool binary = QFileInfo(m_path->text().trimmed()).suffix().toLower() == QLatin1String("glb");
-    m_pretty->setEnabled(f.readsIndentedText && !binary);
+    m_pretty->setEnabled(exporting::indentsText(f, m_path->text().trimmed().toStdString()));
     m_set->setEnabled(f.writesSet);
     m_bake->setEnabled(f.sharesCycles);
     m_lod->setEnabled(f.writesCharacters);

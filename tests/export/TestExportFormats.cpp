@@ -98,6 +98,9 @@ private slots:
         QCOMPARE(exporting::formatForPath("walkers.TXT"), exporting::formatByKey("pedpy"));
         QCOMPARE(exporting::formatForPath("shot.USDA"), exporting::formatByKey("usd"));
         QCOMPARE(exporting::knownPathForms(), std::string(".glb, .gltf, .usda, .fbx, .csv, .txt, DIR/"));
+        // Only a .gltf's JSON is indented: a .glb is binary, a CSV has no such choice.
+        QVERIFY(exporting::indentsText(*gltf, "out/shot.gltf") && exporting::indentsText(*gltf, "SHOT.GLTF"));
+        QVERIFY(!exporting::indentsText(*gltf, "shot.glb") && !exporting::indentsText(*csv, "run.csv"));
     }
 
     // Each row writes the fixture's 3 agents x 49 frames; a row without a check here fails,
