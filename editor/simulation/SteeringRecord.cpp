@@ -30,7 +30,7 @@ std::vector<sim::AgentDebug> SteeringRecord::watchedAt(std::size_t frame) const
     if (it == m_frames.end())
         return out;
     for (const sim::AgentDebug& a : it->second)
-        if (std::find(m_watched.begin(), m_watched.end(), a.id) != m_watched.end())
+        if (watched(a.id))
             out.push_back(a);
     return out;
 }
@@ -50,9 +50,14 @@ bool SteeringRecord::covers(std::size_t frame) const
         return false;
     // Described for exactly the watched agents (those the frame's World held).
     for (const sim::AgentDebug& a : it->second)
-        if (std::find(m_watched.begin(), m_watched.end(), a.id) == m_watched.end())
+        if (!watched(a.id))
             return false;
     return it->second.size() == m_watched.size();
+}
+
+bool SteeringRecord::watched(sim::AgentId id) const
+{
+    return std::find(m_watched.begin(), m_watched.end(), id) != m_watched.end();
 }
 
 bool SteeringRecord::wantsDescribing(std::size_t frame)

@@ -30,6 +30,7 @@ public:
 
 private:
     bool covers(std::size_t frame) const;
+    bool watched(sim::AgentId id) const;
 
     std::map<std::size_t, std::vector<sim::AgentDebug>> m_frames;
     std::vector<sim::AgentId> m_watched;
