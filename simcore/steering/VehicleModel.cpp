@@ -45,8 +45,11 @@ void flyingFrame(SteeringAgent& s, glm::vec3 acceleration, float dt, const Vehic
     const glm::vec3 up =
         behave::bankedUp(s.up, s.forward, acceleration, nonNegative(params.bankingGainS2PerM), lastBlend);
     // Orthonormalise; a forward parallel to up keeps the previous side.
-    s.side = normalizeOr(glm::cross(s.forward, up), s.side);
-    s.up = normalizeOr(glm::cross(s.side, s.forward), kWorldUp);
+    behave::SquareFrame<float> frame = behave::squareFrame<float>(s.forward, up);
+    if (!frame.square)
+        frame = behave::squareFrameAlong(s.forward, up, s.side);
+    s.side = frame.side;
+    s.up = frame.up;
 }
 
 }  // namespace

@@ -237,8 +237,8 @@ template <class F>
     }
     const V3 force = blend.total(maxForce);
 
-    // Integrate: integrateVehicle's flier step (VehicleModel.cpp), its velocity and banking
-    // the same functions; the frame made square below.
+    // Integrate: integrateVehicle's flier step (VehicleModel.cpp), its velocity, banking and
+    // square frame the same functions.
     V3 vel =
         behave::flierVelocity(V, force, splat<F>(m_clock.dt) / mass, maxSpeed, minOf(minSpeedType, maxSpeed), Fwd);
     const F speed = length(vel);
@@ -248,17 +248,15 @@ template <class F>
     const V3 nextFwd = select(speed > kStoppedSpeed, vel / speed, Fwd);
     const V3 acceleration = (vel - V) / splat<F>(m_clock.dt);
     const V3 up = behave::bankedUp(lanes<F>(up0), nextFwd, acceleration, bankGain, bankBlend);
-    const V3 sideRaw = cross(nextFwd, up);
-    const F sideLen = length(sideRaw);
-    V3 side = sideRaw * (1.0f / sideLen);
-    V3 nextUp = cross(side, nextFwd);
-    if (const M fallback = ~((sideLen > 0.5f) & (sideLen < kLaneInfinity)); any(fallback)) {
+    behave::SquareFrame<F> frame = behave::squareFrame<F>(nextFwd, up);
+    if (const M fallback = ~frame.square; any(fallback)) {
         for (int l = 0; l < kLanes; ++l) {
             if (!fallback[l])
                 continue;
-            const glm::vec3 s = normalizeOr(lane(sideRaw, l), m_agents.side[boid[l]]);
-            setLane(side, l, s);
-            setLane(nextUp, l, normalizeOr(glm::cross(s, lane(nextFwd, l)), kWorldUp));
+            const behave::SquareFrame<float> one =
+                behave::squareFrameAlong(lane(nextFwd, l), lane(up, l), m_agents.side[boid[l]]);
+            setLane(frame.side, l, one.side);
+            setLane(frame.up, l, one.up);
         }
     }
 
@@ -275,7 +273,7 @@ template <class F>
             groundBoid(i, at, velocity, lane(nextFwd, l));
         const BoidSense& in = sensed[l];
         const bool free = collideFree<F>(at, in.driftX, in.driftY, in.driftZ, in.keepOut, in.count, m_boidSlackM);
-        storeBoid(i, free, at, velocity, lane(nextFwd, l), lane(side, l), lane(nextUp, l), wanderNext);
+        storeBoid(i, free, at, velocity, lane(nextFwd, l), lane(frame.side, l), lane(frame.up, l), wanderNext);
     }
 }
 

@@ -91,7 +91,7 @@ private slots:
     {
         const Scene s = denseFlock();
         World a = makeWorld(s, true), b = makeWorld(s, false);
-        float posDiff = 0.0f, velDiff = 0.0f, fwdDiff = 0.0f, moved = 0.0f, turned = 0.0f;
+        float posDiff = 0.0f, velDiff = 0.0f, fwdDiff = 0.0f, upDiff = 0.0f, moved = 0.0f, turned = 0.0f;
         for (int k = 0; k < 3; ++k) {
             const std::vector<glm::vec3> before = throng::test::crowd::copyPositions(b);
             const std::vector<glm::vec3> velBefore(b.velocities().begin(), b.velocities().end());
@@ -101,18 +101,21 @@ private slots:
                 posDiff = std::max(posDiff, glm::distance(a.positions()[i], b.positions()[i]));
                 velDiff = std::max(velDiff, glm::distance(a.velocities()[i], b.velocities()[i]));
                 fwdDiff = std::max(fwdDiff, glm::distance(a.forwards()[i], b.forwards()[i]));
+                upDiff = std::max(upDiff, glm::distance(a.ups()[i], b.ups()[i]));
                 moved = std::max(moved, glm::distance(before[i], b.positions()[i]));
                 turned = std::max(turned, glm::distance(velBefore[i], b.velocities()[i]));
             }
         }
-        qInfo("3 steps: largest difference kernel vs general: position %.2e m, velocity %.2e m/s, forward %.2e "
-              "(largest move %.3f m, velocity change %.3f m/s)",
-              double(posDiff), double(velDiff), double(fwdDiff), double(moved), double(turned));
+        qInfo("3 steps: largest difference kernel vs general: position %.2e m, velocity %.2e m/s, forward %.2e, "
+              "up %.2e (largest move %.3f m, velocity change %.3f m/s)",
+              double(posDiff), double(velDiff), double(fwdDiff), double(upDiff), double(moved), double(turned));
         // The birds do move and turn, and both paths move them the same way to rounding.
         QVERIFY(moved > 0.1f && turned > 0.1f);
         QVERIFY2(posDiff < 1e-4f, qPrintable(QString("positions differ by %1 m").arg(posDiff)));
         QVERIFY2(velDiff < 1e-3f, qPrintable(QString("velocities differ by %1 m/s").arg(velDiff)));
         QVERIFY2(fwdDiff < 1e-4f, qPrintable(QString("headings differ by %1").arg(fwdDiff)));
+        // The same banking and square frame: up leans the same way.
+        QVERIFY2(upDiff < 1e-4f, qPrintable(QString("ups differ by %1").arg(upDiff)));
     }
 
     void qualityFiguresMatchTheGeneralPath()

@@ -164,6 +164,31 @@ private slots:
         QVERIFY2(maxLeanStep < 0.06f, "banking jumped instead of easing in");
     }
 
+    void aFlierClimbingStraightUpKeepsItsSide()
+    {
+        // Heading along its up, a flier's frame cannot be made square by forward x up: it
+        // keeps the side it had and takes the up square to that side and its new forward.
+        VehicleParams flier;
+        flier.flying = true;
+        flier.minSpeed = 1.0f;
+        flier.bankingGainS2PerM = 0.2f;
+        SteeringAgent bird = walker({0, 10, 0}, {0, 2, 0});
+        bird.maxSpeed = 5.0f;
+        bird.forward = {0, 0, 1};
+        bird.side = glm::cross(bird.forward, bird.up);
+        const glm::vec3 side = bird.side;
+        QCOMPARE(side, glm::vec3(-1, 0, 0));
+        for (int step = 0; step < 12; ++step) {
+            bird = advance(bird, {0, 0, 0}, flier);
+            QCOMPARE(bird.forward, glm::vec3(0, 1, 0));
+            QVERIFY(glm::distance(bird.side, side) < 1e-6f);
+            QVERIFY(orthonormal(bird));
+            QVERIFY2(glm::distance(bird.up, glm::cross(side, bird.forward)) < 1e-6f,
+                     qPrintable(QString("up (%1, %2, %3)").arg(bird.up.x).arg(bird.up.y).arg(bird.up.z)));
+        }
+        QVERIFY(std::abs(bird.position.y - 10.0f - 12 * 2.0f * kDt) < 1e-4f);  // still climbing at 2 m/s
+    }
+
     void nothingGoesNonFiniteWithExtremeInput()
     {
         const std::vector<WallSegment> walls{{{-2, 0, 0}, {2, 0, 0}}, {{3, 0, 3}, {3, 0, 3}}};

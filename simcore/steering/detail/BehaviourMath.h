@@ -61,6 +61,8 @@ using simd::sqrtOf;
 using simd::dot;
 [[gnu::always_inline]] inline float length(glm::vec3 v) { return glm::length(v); }
 using simd::length;
+[[gnu::always_inline]] inline glm::vec3 cross(glm::vec3 a, glm::vec3 b) { return glm::cross(a, b); }
+using simd::cross;
 template <class F>
 [[gnu::always_inline]] inline F splat(float x)
 {
@@ -331,6 +333,37 @@ inline float bankingBlend(float bankingResponseS, float dt)
 {
     const float response = std::max(detail::nonNegative(bankingResponseS), detail::kMinResponseTimeS);
     return 1.0f - std::exp(-dt / response);
+}
+
+// The flier's frame made square to its new `forward` (unit) from its banked `up` (unit):
+// side = forward x up made unit, then up = side x forward, unit already (both unit and
+// square to each other; not normalised again, which would cost the boids kernel a square
+// root a lane for a change in the last bits). `square` holds where that is so; elsewhere
+// (forward along up, or a value not finite) each agent takes squareFrameAlong's frame.
+template <class F>
+struct SquareFrame {
+    Vec3Of<F> side, up;
+    simd::MaskOf<F> square;
+};
+template <class F, class V3 = Vec3Of<F>>
+[[gnu::always_inline]] inline SquareFrame<F> squareFrame(V3 forward, V3 up)
+{
+    const V3 sideRaw = cross(forward, up);
+    const F sideLen = length(sideRaw);
+    const V3 side = sideRaw * (1.0f / sideLen);
+    if constexpr (kScalar<F>)
+        return {side, cross(side, forward), sideLen > 0.5f && sideLen < detail::kInfinity};
+    else
+        return {side, cross(side, forward), (sideLen > 0.5f) & (sideLen < simd::kLaneInfinity)};
+}
+
+// squareFrame for one agent where it is not square: side from forward x up where that has
+// a length, else the agent's last side; up square to both, else the world's.
+[[gnu::always_inline]] inline SquareFrame<float> squareFrameAlong(glm::vec3 forward, glm::vec3 up,
+                                                                   glm::vec3 lastSide)
+{
+    const glm::vec3 side = normalizeOr(glm::cross(forward, up), lastSide);
+    return {side, normalizeOr(glm::cross(side, forward), detail::kWorldUp), true};
 }
 
 // --- Unaligned collision avoidance ------------------------------------------------------
