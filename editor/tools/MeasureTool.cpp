@@ -61,8 +61,7 @@ void MeasureTool::place()
         m.points = {lo, {hi.x, lo.y}, hi, {lo.x, hi.y}};
     }
     const QString text = tr("Add measurement %1").arg(QString::fromStdString(m.name));
-    document().undoStack()->push(
-        new AddSceneItemCommand<sim::Measurement>(document(), &sim::Scene::measurements, std::move(m), text));
+    addAndSelect(document(), &sim::Scene::measurements, std::move(m), text);
 }
 
 void MeasureTool::cancel()
@@ -99,7 +98,7 @@ QWidget* MeasureTool::createOptionsWidget(QWidget* parent)
     shape->setToolTip(tr("Line: counts the walkers crossing it, each way, and the flow over time. Area: the density "
                          "of the walkers inside and their speed, for the speed-density diagram"));
     connect(shape, &QComboBox::currentIndexChanged, this, [this](int i) { m_shape = sim::MeasurementShape(i); });
-    row->addWidget(new QLabel(tr("Measure"), box));
+    row->addWidget(new QLabel(tr("Shape"), box));
     row->addWidget(shape);
     return box;
 }
