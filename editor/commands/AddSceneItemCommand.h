@@ -1,6 +1,7 @@
 #pragma once
 // Appends one item (a wall, path, obstacle, traffic light, ...) to one of the scene's
-// lists; undo removes it again. Structural edits of the set drawn by the tools.
+// lists; undo removes it again. Structural edits of the set drawn by the tools, which add
+// and select what they draw with addAndSelect.
 
 #include "editor/SceneDocument.h"
 #include "simcore/scene/Scene.h"
@@ -71,5 +72,14 @@ private:
     List m_list;
     Item m_item;
 };
+
+// Adds `item` to `list` as one undo step and selects it, so Properties shows what was just
+// drawn or made, ready for its goal, name or values. The selection is not part of the step.
+template <class Item>
+void addAndSelect(SceneDocument& document, std::vector<Item> sim::Scene::*list, Item item, const QString& text)
+{
+    document.undoStack()->push(new AddSceneItemCommand<Item>(document, list, std::move(item), text));
+    document.setSelection({{listKind<Item>(), (document.scene().*list).size() - 1}});
+}
 
 }  // namespace throng::editor

@@ -44,11 +44,8 @@ std::size_t AgentTypeActions::create(TypePreset preset)
 {
     sim::AgentType type = makeTypePreset(preset, m_document.scene());
     const QString text = tr("Add agent type %1").arg(QString::fromStdString(type.name));
-    m_document.undoStack()->push(
-        new AddSceneItemCommand<sim::AgentType>(m_document, &sim::Scene::agentTypes, std::move(type), text));
-    const std::size_t index = m_document.scene().agentTypes.size() - 1;
-    m_document.setSelection({{ItemKind::AgentType, index}});
-    return index;
+    addAndSelect(m_document, &sim::Scene::agentTypes, std::move(type), text);
+    return m_document.scene().agentTypes.size() - 1;
 }
 
 void AgentTypeActions::duplicateSelected()

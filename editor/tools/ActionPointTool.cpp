@@ -28,8 +28,7 @@ void ActionPointTool::place(glm::vec2 centre, float radiusM)
         point.facingDeg = std::round(*heading);  // whole degrees: what a user would type
     }
     const QString text = tr("Add action point %1").arg(QString::fromStdString(point.name));
-    document().undoStack()->push(
-        new AddSceneItemCommand<sim::ActionPoint>(document(), &sim::Scene::actionPoints, std::move(point), text));
+    addAndSelect(document(), &sim::Scene::actionPoints, std::move(point), text);
 }
 
 QWidget* ActionPointTool::createOptionsWidget(QWidget* parent)

@@ -48,8 +48,7 @@ void FlowStrokeTool::mouseReleased(const ToolMouse& mouse)
     setState(State::Idle);
     if (points.size() >= 2) {
         sim::FlowStroke stroke{std::move(points), m_widthM};
-        document().undoStack()->push(new AddSceneItemCommand<sim::FlowStroke>(
-            document(), &sim::Scene::flowStrokes, std::move(stroke), tr("Add flow stroke")));
+        addAndSelect(document(), &sim::Scene::flowStrokes, std::move(stroke), tr("Add flow stroke"));
     }
     emit overlayChanged();
 }

@@ -17,7 +17,7 @@ void GoalTool::place(glm::vec2 centre, float radiusM)
     goal.position = centre;
     goal.radiusM = radiusM;
     const QString text = tr("Add goal %1").arg(QString::fromStdString(goal.name));
-    document().undoStack()->push(new AddSceneItemCommand<sim::Goal>(document(), &sim::Scene::goals, std::move(goal), text));
+    addAndSelect(document(), &sim::Scene::goals, std::move(goal), text);
 }
 
 QWidget* GoalTool::createOptionsWidget(QWidget* parent)

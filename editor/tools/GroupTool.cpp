@@ -157,9 +157,7 @@ void GroupTool::closePolygon()
 void GroupTool::pushGroup(sim::SpawnGroup group)
 {
     const QString text = tr("Add spawn group %1 (%2 agents)").arg(QString::fromStdString(group.name)).arg(group.count);
-    document().undoStack()->push(
-        new AddSceneItemCommand<sim::SpawnGroup>(document(), &sim::Scene::groups, std::move(group), text));
-    document().setSelection({{ItemKind::Group, document().scene().groups.size() - 1}});
+    addAndSelect(document(), &sim::Scene::groups, std::move(group), text);
     emit overlayChanged();
 }
 

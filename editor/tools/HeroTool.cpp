@@ -38,7 +38,7 @@ sim::Hero HeroTool::newHero() const
     return hero;
 }
 
-QUndoCommand* HeroTool::makeCommand(const std::vector<glm::vec2>& points)
+void HeroTool::add(const std::vector<glm::vec2>& points)
 {
     sim::Hero hero = newHero();
     const sim::Terrain& terrain = document().scene().terrain;
@@ -50,7 +50,7 @@ QUndoCommand* HeroTool::makeCommand(const std::vector<glm::vec2>& points)
         hero.keyframes.push_back({timeS, {p.x, terrainHeight(terrain, p.x, p.y), p.y}});
     }
     const QString text = tr("Add hero %1").arg(QString::fromStdString(hero.name));
-    return new AddSceneItemCommand<sim::Hero>(document(), &sim::Scene::heroes, std::move(hero), text);
+    addAndSelect(document(), &sim::Scene::heroes, std::move(hero), text);
 }
 
 QString HeroTool::importFile(const QString& path)
@@ -68,7 +68,7 @@ QString HeroTool::importFile(const QString& path)
                                                            : QDir(sceneDir).relativeFilePath(path))
                              .toStdString();
     const QString text = tr("Import hero %1").arg(QString::fromStdString(hero.name));
-    document().undoStack()->push(new AddSceneItemCommand<sim::Hero>(document(), &sim::Scene::heroes, std::move(hero), text));
+    addAndSelect(document(), &sim::Scene::heroes, std::move(hero), text);
     return {};
 }
 

@@ -30,7 +30,7 @@ public:
     QString importFile(const QString& path);
 
 protected:
-    QUndoCommand* makeCommand(const std::vector<glm::vec2>& points) override;
+    void add(const std::vector<glm::vec2>& points) override;
     QColor previewColour() const override { return QColor(255, 120, 60); }
 
 private:

@@ -9,7 +9,7 @@
 
 namespace throng::editor {
 
-QUndoCommand* LaneTool::makeCommand(const std::vector<glm::vec2>& points)
+void LaneTool::add(const std::vector<glm::vec2>& points)
 {
     sim::Lane lane;
     lane.name = uniqueName(document().scene().lanes, "lane");
@@ -17,7 +17,7 @@ QUndoCommand* LaneTool::makeCommand(const std::vector<glm::vec2>& points)
     lane.widthM = m_widthM;
     lane.speedLimit = m_speedLimit;
     const QString text = tr("Add lane %1").arg(QString::fromStdString(lane.name));
-    return new AddSceneItemCommand<sim::Lane>(document(), &sim::Scene::lanes, std::move(lane), text);
+    addAndSelect(document(), &sim::Scene::lanes, std::move(lane), text);
 }
 
 QWidget* LaneTool::createOptionsWidget(QWidget* parent)

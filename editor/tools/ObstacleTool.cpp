@@ -13,8 +13,7 @@ void ObstacleTool::place(glm::vec2 centre, float radiusM)
     obstacle.center = centre;
     obstacle.radiusM = radiusM;
     const QString text = tr("Add obstacle %1").arg(QString::fromStdString(obstacle.name));
-    document().undoStack()->push(
-        new AddSceneItemCommand<sim::Obstacle>(document(), &sim::Scene::obstacles, std::move(obstacle), text));
+    addAndSelect(document(), &sim::Scene::obstacles, std::move(obstacle), text);
 }
 
 }  // namespace throng::editor

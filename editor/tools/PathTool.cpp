@@ -9,11 +9,11 @@
 
 namespace throng::editor {
 
-QUndoCommand* PathTool::makeCommand(const std::vector<glm::vec2>& points)
+void PathTool::add(const std::vector<glm::vec2>& points)
 {
     sim::Path path{uniqueName(document().scene().paths, "path"), points, m_radiusM, false};
     const QString text = tr("Add path %1").arg(QString::fromStdString(path.name));
-    return new AddSceneItemCommand<sim::Path>(document(), &sim::Scene::paths, std::move(path), text);
+    addAndSelect(document(), &sim::Scene::paths, std::move(path), text);
 }
 
 QWidget* PathTool::createOptionsWidget(QWidget* parent)

@@ -22,7 +22,7 @@ public:
     QWidget* createOptionsWidget(QWidget* parent) override;
 
 protected:
-    QUndoCommand* makeCommand(const std::vector<glm::vec2>& points) override;
+    void add(const std::vector<glm::vec2>& points) override;
     QColor previewColour() const override { return QColor(250, 200, 60); }
 
 private:

@@ -62,7 +62,7 @@ void PolylineTool::finish()
     while (points.size() >= 2 && points[points.size() - 1] == points[points.size() - 2])
         points.pop_back();
     if (points.size() >= 2)
-        document().undoStack()->push(makeCommand(points));
+        add(points);
     emit overlayChanged();
 }
 

@@ -34,8 +34,8 @@ public:
     void finish();
 
 protected:
-    // The command adding the finished polyline (>= 2 points) to the scene.
-    virtual QUndoCommand* makeCommand(const std::vector<glm::vec2>& points) = 0;
+    // Adds the finished polyline (>= 2 points) to the scene, as one undo step, and selects it.
+    virtual void add(const std::vector<glm::vec2>& points) = 0;
     virtual QColor previewColour() const = 0;
 
 private:

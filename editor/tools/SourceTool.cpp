@@ -82,8 +82,7 @@ void SourceTool::place(glm::vec2 from, glm::vec2 to)
     source.rate = m_rate;
     source.arrivals = m_arrivals;
     const QString text = tr("Add source %1").arg(QString::fromStdString(source.name));
-    document().undoStack()->push(
-        new AddSceneItemCommand<sim::Source>(document(), &sim::Scene::sources, std::move(source), text));
+    addAndSelect(document(), &sim::Scene::sources, std::move(source), text);
 }
 
 void SourceTool::cancel()

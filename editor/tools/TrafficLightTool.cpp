@@ -86,9 +86,9 @@ void TrafficLightTool::placeLight(glm::vec2 at)
         if (dist <= kReachM && !controlledBy(scene, lane.name, ""))
             light.stopLines.push_back({lane.name, std::max(0.0f, along - kReachM), ""});
     }
-    const QString text = tr("Add traffic light %1").arg(QString::fromStdString(light.name));
-    document().undoStack()->push(new AddSceneItemCommand<sim::TrafficLight>(document(), &sim::Scene::trafficLights,
-                                                                            std::move(light), text));
+    const QString name = QString::fromStdString(light.name);
+    addAndSelect(document(), &sim::Scene::trafficLights, std::move(light), tr("Add traffic light %1").arg(name));
+    m_status = tr("%1 placed and selected: Ctrl+click a lane or crosswalk to attach or detach a stop line").arg(name);
 }
 
 void TrafficLightTool::toggleStopLine(std::size_t light, glm::vec2 at)

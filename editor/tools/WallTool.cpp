@@ -5,11 +5,11 @@
 
 namespace throng::editor {
 
-QUndoCommand* WallTool::makeCommand(const std::vector<glm::vec2>& points)
+void WallTool::add(const std::vector<glm::vec2>& points)
 {
     sim::Wall wall{uniqueName(document().scene().walls, "wall"), points};
     const QString text = tr("Add wall %1").arg(QString::fromStdString(wall.name));
-    return new AddSceneItemCommand<sim::Wall>(document(), &sim::Scene::walls, std::move(wall), text);
+    addAndSelect(document(), &sim::Scene::walls, std::move(wall), text);
 }
 
 }  // namespace throng::editor

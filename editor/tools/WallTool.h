@@ -20,7 +20,7 @@ public:
     QString objectKey() const override { return QStringLiteral("wall"); }
 
 protected:
-    QUndoCommand* makeCommand(const std::vector<glm::vec2>& points) override;
+    void add(const std::vector<glm::vec2>& points) override;
     QColor previewColour() const override { return QColor(240, 240, 240); }
 };
 

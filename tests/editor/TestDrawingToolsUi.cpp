@@ -1,9 +1,12 @@
 // The lane, flow-stroke, hero, goal and traffic-light tools driven like a user: pick the
 // tool on the tool bar, click or drag on the viewport, and check what was drawn (points,
-// direction, timing, radius, stop lines), the outliner, and that undo takes it back.
+// direction, timing, radius, stop lines), the outliner, and that undo takes it back. And
+// every tool that adds to the set selects what it drew, for Properties.
+#include "EditorTestSupport.h"
 #include "EditorUiDriver.h"
 #include "TestRegistry.h"
 
+#include "editor/SceneItem.h"
 #include "editor/panels/OutlinerPanel.h"
 #include "editor/viewport/Viewport.h"
 
@@ -12,6 +15,7 @@
 #include <QDoubleSpinBox>
 #include <QFile>
 #include <QFileDialog>
+#include <QLabel>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QTest>
@@ -191,6 +195,70 @@ private slots:
         QCOMPARE(window.outliner().kindRow(ItemKind::Goal)->text(0), QString("Goals (%1)").arg(before + 2));
         QTest::keyClick(&window.viewport(), Qt::Key_Z, Qt::ControlModifier);
         QCOMPARE(goals.size(), before + 1);
+    }
+
+    void whatAToolDrawsIsSelectedForItsProperties()
+    {
+        // Each tool that adds to the set selects what it drew, so Properties shows it at
+        // once: a source just drawn is given its goal there, with no change of tool.
+        MainWindow window;
+        QVERIFY(showWithScene(window, m_dir, "crossroads.yaml"));
+        const auto* title = window.findChild<QLabel*>("propertiesTitle");
+        QVERIFY(title);
+        const QString nothing = title->text();
+        QVERIFY2(nothing.startsWith("Nothing selected"), qPrintable(nothing));
+        const sim::Scene& scene = window.document().scene();
+        struct Drawing {
+            QString tool;
+            ItemKind kind;
+            std::vector<glm::vec2> points;
+            bool clicked;  // clicked point by point (and Return after two or more); else dragged
+        };
+        const std::vector<Drawing> drawings{
+            {"wall", ItemKind::Wall, {{-44, -44}, {-36, -44}}, true},
+            {"path", ItemKind::Path, {{-44, -40}, {-36, -40}}, true},
+            {"lane", ItemKind::Lane, {{-44, -36}, {-36, -36}}, true},
+            {"hero", ItemKind::Hero, {{-44, -32}, {-36, -32}}, true},
+            {"obstacle", ItemKind::Obstacle, {{-44, -26}, {-43, -26}}, false},
+            {"goal", ItemKind::Goal, {{-38, -26}, {-36, -26}}, false},
+            {"actionPoint", ItemKind::ActionPoint, {{-32, -26}, {-31, -26}}, false},
+            {"source", ItemKind::Source, {{-44, -20}, {-40, -20}}, false},
+            {"flowStroke", ItemKind::FlowStroke, {{-44, -16}, {-36, -16}}, false},
+            {"measure", ItemKind::Measurement, {{-44, -12}, {-38, -12}}, false},
+            {"trafficLight", ItemKind::TrafficLight, {{-30, -40}}, true},
+        };
+        for (const Drawing& d : drawings) {
+            QVERIFY2(clickToolButton(window, d.tool), qPrintable(d.tool));
+            const std::size_t before = itemCount(scene, d.kind);
+            if (d.clicked) {
+                for (glm::vec2 p : d.points)
+                    clickOnGround(window, p);
+                if (d.points.size() > 1)
+                    QTest::keyClick(&window.viewport(), Qt::Key_Return);
+            } else {
+                dragOnGround(window, d.points);
+            }
+            QVERIFY2(itemCount(scene, d.kind) == before + 1, qPrintable(d.tool + " drew nothing"));
+            const SceneItem made{d.kind, before};
+            QVERIFY2(window.document().selection() == Selection{made},
+                     qPrintable(d.tool + ": " + QString::number(window.document().selection().size()) + " selected"));
+            QCOMPARE(title->text(), itemLabel(scene, made));
+            QVERIFY(!title->text().isEmpty());
+            if (d.kind == ItemKind::Source) {
+                // Its agents need somewhere to go: the goal drawn a moment ago.
+                const QString goal = QString::fromStdString(scene.goals.back().name);
+                pick(window, "goal", goal, Scroll::ToWidget);
+                QCOMPARE(QString::fromStdString(scene.sources.back().goal), goal);
+            }
+        }
+        // The light is selected, so a Ctrl+click on a crosswalk attaches it at once.
+        QVERIFY(window.document().selection() == (Selection{{ItemKind::TrafficLight, scene.trafficLights.size() - 1}}));
+        // Undo takes the last drawing back, and its selection with it.
+        const std::size_t lights = scene.trafficLights.size();
+        QTest::keyClick(&window.viewport(), Qt::Key_Z, Qt::ControlModifier);
+        QCOMPARE(scene.trafficLights.size(), lights - 1);
+        QVERIFY(window.document().selection().empty());
+        QCOMPARE(title->text(), nothing);
     }
 
     void stopLinesMoveBetweenSignalsAndPhasesAreEdited()
