@@ -225,6 +225,9 @@ private:
     // adoptState once the checkpoint is in this World's order; previous(i) as above.
     bool adoptMatched(const WorldState& state, const Scene& stateScene, const Scene& thisScene,
                       const std::function<std::int32_t(std::size_t)>& previous);
+    // adoptMatched's heroes: a new one, or one with new keyframes, to where its track puts it now.
+    void placeEditedHeroes(const Scene& stateScene, const Scene& thisScene,
+                           const std::function<std::int32_t(std::size_t)>& previous);
     // keepBrain: per agent, 0 = its brain memory starts afresh (empty: all keep theirs).
     void restoreDynamicState(const WorldState& state, const std::vector<std::uint8_t>& keepBrain);
 

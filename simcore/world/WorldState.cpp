@@ -4,6 +4,7 @@
 // renamed or new array is added here.
 #include "simcore/world/WorldState.h"
 
+#include "simcore/hero/HeroTrack.h"
 #include "simcore/world/World.h"
 #include "simcore/world/detail/WorldBrains.h"
 #include "simcore/world/detail/WorldStateColumns.h"
@@ -273,6 +274,31 @@ bool World::adoptState(const WorldState& stateIn, const Scene& stateScene, const
     return adoptMatched(s, stateScene, thisScene, before);
 }
 
+void World::placeEditedHeroes(const Scene& stateScene, const Scene& thisScene,
+                              const std::function<std::int32_t(std::size_t)>& previous)
+{
+    // A hero the edit added, or whose keyframes it changed, stands where its track puts
+    // it now, as the traffic phase leaves every hero after a step (WorldTraffic::drive);
+    // a hero kept as it was is where its checkpoint says, which is the same place.
+    const double now = double(m_clock.step) * double(m_clock.dt);
+    std::size_t k = 0;
+    for (const Hero& h : thisScene.heroes) {
+        if (h.keyframes.empty())
+            continue;  // as built: only heroes with keyframes are agents
+        const HeroTrack& track = m_traffic.heroes[k];
+        const std::size_t i = m_traffic.heroAgent[k++];
+        const auto was = std::find_if(stateScene.heroes.begin(), stateScene.heroes.end(),
+                                      [&](const Hero& o) { return o.id == h.id; });
+        if (previous(i) >= 0 && was != stateScene.heroes.end() && was->keyframes == h.keyframes)
+            continue;
+        const glm::vec2 f = track.forwardAt(now);
+        m_agents.pos[i] = m_agents.nextPos[i] = m_agents.resolvedPos[i] = track.positionAt(now);
+        m_agents.vel[i] = track.velocityAt(now);
+        m_agents.fwd[i] = glm::vec3(f.x, 0.0f, f.y);
+        m_agents.side[i] = glm::vec3(-f.y, 0.0f, f.x);
+    }
+}
+
 bool World::adoptMatched(const WorldState& s, const Scene& stateScene, const Scene& thisScene,
                          const std::function<std::int32_t(std::size_t)>& previous)
 {
@@ -318,6 +344,7 @@ bool World::adoptMatched(const WorldState& s, const Scene& stateScene, const Sce
             m_agents.side[i] = glm::vec3(-f.y, 0.0f, f.x);
         }
     }
+    placeEditedHeroes(stateScene, thisScene, previous);
     m_agents.radius = radius;
     m_agents.maxSpeed = maxSpeed;
     m_agents.stride = stride;
@@ -370,8 +397,9 @@ bool World::adoptMatched(const WorldState& s, const Scene& stateScene, const Sce
             m_agents.pointLeftS[i] = 0.0f;
         }
         m_agents.pointAt[i] = at;
-        // One still standing out its reaction time goes on standing, whatever its leg.
-        if (m_agents.unstarted[i])
+        // One still standing out its reaction time goes on standing, whatever its leg; so
+        // does a vehicle or hero, new ones too: they are driven, never steered (as built).
+        if (m_agents.unstarted[i] || m_traffic.isDriven(i))
             m_agents.stopped[i] = m_agents.stoppedBefore[i] = 1;
         m_agents.pointLast[i] = remapByName(s.pointLast[i], stateScene.actionPoints, thisScene.actionPoints);
         if (i >= mode.size() || i >= m_nav.mode.size() || i >= m_nav.plan.size())

@@ -6,6 +6,7 @@
 #include "StateScenes.h"
 #include "TestRegistry.h"
 
+#include "simcore/hero/HeroTrack.h"
 #include "simcore/traffic/LightPhase.h"
 #include "simcore/world/WorldState.h"
 
@@ -104,6 +105,42 @@ private slots:
 
         // Bit-identical on 1 and 2 threads, and again from the resumed run's own checkpoint.
         checkResumeIsDeterministic(scene, [&](const World&) { return edited; }, 12);
+    }
+
+    void aHeroAddedMidRunWalksItsKeyframes()
+    {
+        // A hero drawn at the edit frame goes where its keyframes say from there on (its
+        // keyframes count from the start of the shot, like every hero's).
+        const Scene scene = crossroads();
+        World straight(scene);
+        for (std::size_t s = 0; s < kEditStep; ++s)
+            straight.step();
+        Scene edited = scene;
+        Hero hero;
+        hero.name = "late";
+        hero.type = "hero";
+        hero.id = 1;
+        for (const Agent& a : scene.agents) hero.id = std::max(hero.id, a.id + 1);
+        for (const Vehicle& v : scene.vehicles) hero.id = std::max(hero.id, v.id + 1);
+        for (const Hero& h : scene.heroes) hero.id = std::max(hero.id, h.id + 1);
+        hero.keyframes = {{0.0f, {-40, 0, -30}}, {8.0f, {-30, 0, -30}}, {16.0f, {-30, 0, -20}}};
+        edited.heroes.push_back(hero);
+        World resumed(edited);
+        QVERIFY(resumed.adoptState(straight.saveState(), scene, edited));
+        const FrameCache after = record(resumed, 24);
+        std::size_t index = after.agentCount();
+        for (std::size_t i = 0; i < after.agentCount(); ++i)
+            if (after.agents()[i].id == hero.id)
+                index = i;
+        QVERIFY(index < after.agentCount());
+        const HeroTrack track(hero);
+        const double dt = 1.0 / double(after.fps());
+        for (std::size_t f = 0; f <= 24; ++f) {
+            const glm::vec3 at = after.at(f, index).position, want = track.positionAt(double(kEditStep + f) * dt);
+            QVERIFY2(glm::distance(glm::vec2(at.x, at.z), glm::vec2(want.x, want.z)) < 1e-3f,
+                     qPrintable(QString("frame %1 after the edit: (%2, %3), its way (%4, %5)")
+                                    .arg(f).arg(at.x).arg(at.z).arg(want.x).arg(want.z)));
+        }
     }
 
     void erasedAgentsAreGoneAndTheOthersCarryOn()

@@ -190,6 +190,15 @@ private slots:
         QCOMPARE(at.vehicleCollisions, std::uint64_t(0));
         QCOMPARE(at.vehicleRedLightViolations, std::uint64_t(0));
         QVERIFY(now.counters().vehicleSteps > at.vehicleSteps + 600 * (now.vehicleCount() - 1));
+        // And every vehicle, the added one too, still stands where the traffic drove it:
+        // driven, never steered or pushed by the walkers.
+        for (std::size_t v = 0; v < now.vehicleCount(); ++v) {
+            const std::size_t i = resumed.traffic().vehicleAgent[v];
+            const glm::vec2 at(resumed.positions()[i].x, resumed.positions()[i].z);
+            QVERIFY2(glm::distance(at, now.position(v)) < 1e-3f,
+                     qPrintable(QString("vehicle %1 stands %2 m from its lane state")
+                                    .arg(now.id(v)).arg(glm::distance(at, now.position(v)))));
+        }
     }
 
     void networkEditsAreTheSameOnOneAndTwoThreads()
